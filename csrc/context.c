@@ -1,0 +1,502 @@
+/*
+** context.c -- context lifetime, enables, simple state and the state query.
+** Owns: GlesContext creation with the spec's initial state (ES 1.1 §6.2),
+**       error recording, Enable/Disable, viewport, depth range, clear
+**       values, masks, and gles_get, the one table every Get* is built on.
+** Never does: arithmetic on vertices or fragments.
+*/
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "state.h"
+#include "matrix.h"
+#include "array.h"
+
+const char *gles_numeric_name(void) { return NUM_NAME; }
+
+int ctx_message(GlesContext *ctx, int status, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(ctx->message, sizeof ctx->message, fmt, ap);
+    va_end(ap);
+    return status;
+}
+
+const char *gles_last_message(GlesContext *ctx) { return ctx->message; }
+void *gles_color_buffer(GlesContext *ctx) { return ctx->color; }
+void *gles_depth_buffer(GlesContext *ctx) { return ctx->depth; }
+void *gles_stencil_buffer(GlesContext *ctx) { return ctx->stencil; }
+int gles_width(GlesContext *ctx) { return ctx->width; }
+int gles_height(GlesContext *ctx) { return ctx->height; }
+const char *gles_last_span_name(GlesContext *ctx) { return ctx->span_name ? ctx->span_name : ""; }
+
+void gles_debug_set(GlesContext *ctx, int flags)
+{
+    ctx->debug = flags;
+    ctx->dirty |= DIRTY_SPAN;
+}
+
+void gles_set_error(GlesContext *ctx, unsigned int err) { ctx_error(ctx, err); }
+
+GlesContext *gles_context_create(int width, int height, int color_format,
+                                 int depth_bits, int stencil_bits, int profile)
+{
+    if (width < 1 || height < 1 || width > GLES_MAX_FRAMEBUFFER_DIM || height > GLES_MAX_FRAMEBUFFER_DIM)
+        return NULL;
+    if (color_format != GLES_COLOR_RGBA8888 && color_format != GLES_COLOR_RGB565)
+        return NULL;
+    if (depth_bits != 0 && depth_bits != 16 && depth_bits != 24)
+        return NULL;
+    if (stencil_bits != 0 && stencil_bits != 8)
+        return NULL;
+    GlesContext *ctx = calloc(1, sizeof *ctx);
+    if (!ctx)
+        return NULL;
+    size_t npix = (size_t)width * (size_t)height;
+    ctx->width = width;
+    ctx->height = height;
+    ctx->color_format = color_format;
+    ctx->depth_bits = depth_bits;
+    ctx->stencil_bits = stencil_bits;
+    ctx->depth_max = depth_bits ? (uint32_t)((1ull << depth_bits) - 1) : 0;
+    ctx->profile = profile;
+    ctx->color = calloc(npix, color_format == GLES_COLOR_RGB565 ? 2 : 4);
+    ctx->depth = depth_bits ? calloc(npix, sizeof(uint32_t)) : NULL;
+    ctx->stencil = stencil_bits ? calloc(npix, 1) : NULL;
+    if (!ctx->color || (depth_bits && !ctx->depth) || (stencil_bits && !ctx->stencil)) {
+        gles_context_destroy(ctx);
+        return NULL;
+    }
+
+    /* initial state, ES 1.1 Tables 6.1-6.19 */
+    ctx->viewport[2] = width;
+    ctx->viewport[3] = height;
+    ctx->scissor[2] = width;
+    ctx->scissor[3] = height;
+    ctx->depth_range[1] = 1.0;
+    ctx->clear_depth = 1.0;
+    memset(ctx->color_mask, 1, 4);
+    ctx->depth_mask = 1;
+    ctx->depth_func = GL_LESS;
+    ctx->cull_mode = GL_BACK;
+    ctx->front_face = GL_CCW;
+    ctx->shade_model = GL_SMOOTH;
+    for (int i = 0; i < 4; i++)
+        ctx->hints[i] = GL_DONT_CARE;
+    ctx->hint_generate_mipmap = GL_DONT_CARE;
+    ctx->pack_alignment = ctx->unpack_alignment = 4;
+    ctx->active_texture = ctx->client_active_texture = GL_TEXTURE0;
+
+    matrix_stack_init(&ctx->modelview, GLES_MODELVIEW_STACK_DEPTH);
+    matrix_stack_init(&ctx->projection, GLES_PROJECTION_STACK_DEPTH);
+    for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
+        matrix_stack_init(&ctx->texture[u], GLES_TEXTURE_STACK_DEPTH);
+    ctx->matrix_mode = GL_MODELVIEW;
+    ctx->current_stack = &ctx->modelview;
+
+    ctx->cur_color[0] = ctx->cur_color[1] = ctx->cur_color[2] = ctx->cur_color[3] = 1.0;
+    ctx->cur_normal[2] = 1.0;
+    for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
+        ctx->cur_tex[u][3] = 1.0;
+    for (int i = 0; i < 4; i++)
+        ctx->cur_color_n[i] = NUM_ONE;
+    ctx->cur_normal_n[2] = NUM_ONE;
+    for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
+        ctx->cur_tex_n[u][3] = NUM_ONE;
+
+    array_init(ctx);
+    ctx->dirty = DIRTY_ALL;
+    return ctx;
+}
+
+void gles_context_destroy(GlesContext *ctx)
+{
+    if (!ctx)
+        return;
+    array_free(ctx);
+    free(ctx->color);
+    free(ctx->depth);
+    free(ctx->stencil);
+    free(ctx->verts);
+    free(ctx->vert_stamp);
+    free(ctx);
+}
+
+unsigned int gles_GetError(GlesContext *ctx)
+{
+    unsigned int e = ctx->error;
+    ctx->error = GL_NO_ERROR;
+    return e;
+}
+
+/* {====================================================================
+** enables */
+
+/* Capabilities whose stage is in a later part of the pipeline are accepted
+** and remembered (IsEnabled answers) without effect until that stage exists.
+** Each has a bit in enable_bits; the order is fixed by this table. */
+static const unsigned int cap_table[] = {
+    GL_ALPHA_TEST, GL_BLEND, GL_COLOR_LOGIC_OP, GL_COLOR_MATERIAL, GL_CULL_FACE,
+    GL_DEPTH_TEST, GL_DITHER, GL_FOG, GL_LIGHTING, GL_LINE_SMOOTH, GL_MULTISAMPLE,
+    GL_NORMALIZE, GL_POINT_SMOOTH, GL_POLYGON_OFFSET_FILL, GL_RESCALE_NORMAL,
+    GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_ALPHA_TO_ONE, GL_SAMPLE_COVERAGE,
+    GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_2D, GL_POINT_SPRITE_OES,
+    GL_MATRIX_PALETTE_OES,
+};
+enum { CAP_COUNT = sizeof cap_table / sizeof cap_table[0] };
+
+static int cap_index(unsigned int cap)
+{
+    for (int i = 0; i < CAP_COUNT; i++)
+        if (cap_table[i] == cap)
+            return i;
+    return -1;
+}
+
+static void set_enable(GlesContext *ctx, unsigned int cap, int on)
+{
+    if (cap >= GL_CLIP_PLANE0 && cap < GL_CLIP_PLANE0 + GLES_MAX_CLIP_PLANES) {
+        ctx->clip_plane_enabled[cap - GL_CLIP_PLANE0] = on;
+        ctx->dirty |= DIRTY_CLIP;
+        return;
+    }
+    if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + 8) {
+        /* lights are state of the lighting stage; remembered for IsEnabled */
+        unsigned int bit = 1u << (cap - GL_LIGHT0 + 24);
+        ctx->enable_bits = on ? (ctx->enable_bits | bit) : (ctx->enable_bits & ~bit);
+        return;
+    }
+    int i = cap_index(cap);
+    if (i < 0) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    unsigned int bit = 1u << i;
+    ctx->enable_bits = on ? (ctx->enable_bits | bit) : (ctx->enable_bits & ~bit);
+    switch (cap) {
+    case GL_CULL_FACE: ctx->cull_enabled = on; break;
+    case GL_DEPTH_TEST: ctx->depth_test = on; break;
+    case GL_SCISSOR_TEST: ctx->scissor_test = on; break;
+    default: break;
+    }
+    ctx->dirty |= DIRTY_SPAN;
+}
+
+void gles_Enable(GlesContext *ctx, unsigned int cap) { set_enable(ctx, cap, 1); }
+void gles_Disable(GlesContext *ctx, unsigned int cap) { set_enable(ctx, cap, 0); }
+
+unsigned char gles_IsEnabled(GlesContext *ctx, unsigned int cap)
+{
+    if (cap >= GL_CLIP_PLANE0 && cap < GL_CLIP_PLANE0 + GLES_MAX_CLIP_PLANES)
+        return (unsigned char)ctx->clip_plane_enabled[cap - GL_CLIP_PLANE0];
+    if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + 8)
+        return (ctx->enable_bits >> (cap - GL_LIGHT0 + 24)) & 1;
+    int i = cap_index(cap);
+    if (i >= 0)
+        return (ctx->enable_bits >> i) & 1;
+    int a = array_index_of_cap(ctx, cap);
+    if (a >= 0)
+        return (unsigned char)ctx->arrays[a].enabled;
+    ctx_error(ctx, GL_INVALID_ENUM);
+    return 0;
+}
+
+/* {====================================================================
+** simple state */
+
+void gles_Viewport(GlesContext *ctx, int x, int y, int width, int height)
+{
+    if (width < 0 || height < 0) {
+        ctx_error(ctx, GL_INVALID_VALUE);
+        return;
+    }
+    /* §2.11.1: sizes are silently clamped to MAX_VIEWPORT_DIMS */
+    ctx->viewport[0] = x;
+    ctx->viewport[1] = y;
+    ctx->viewport[2] = width > GLES_MAX_VIEWPORT_DIM ? GLES_MAX_VIEWPORT_DIM : width;
+    ctx->viewport[3] = height > GLES_MAX_VIEWPORT_DIM ? GLES_MAX_VIEWPORT_DIM : height;
+}
+
+void gles_Scissor(GlesContext *ctx, int x, int y, int width, int height)
+{
+    if (width < 0 || height < 0) {
+        ctx_error(ctx, GL_INVALID_VALUE);
+        return;
+    }
+    ctx->scissor[0] = x;
+    ctx->scissor[1] = y;
+    ctx->scissor[2] = width;
+    ctx->scissor[3] = height;
+}
+
+static double clamp01(double v) { return !(v > 0.0) ? 0.0 : (v > 1.0 ? 1.0 : v); }
+
+void gles_DepthRange(GlesContext *ctx, double n, double f)
+{
+    ctx->depth_range[0] = clamp01(n);
+    ctx->depth_range[1] = clamp01(f);
+}
+
+void gles_ClearColor(GlesContext *ctx, double r, double g, double b, double a)
+{
+    ctx->clear_color[0] = clamp01(r);
+    ctx->clear_color[1] = clamp01(g);
+    ctx->clear_color[2] = clamp01(b);
+    ctx->clear_color[3] = clamp01(a);
+}
+
+void gles_ClearDepth(GlesContext *ctx, double d) { ctx->clear_depth = clamp01(d); }
+void gles_ClearStencil(GlesContext *ctx, int s) { ctx->clear_stencil = s; }
+
+void gles_ColorMask(GlesContext *ctx, unsigned char r, unsigned char g, unsigned char b, unsigned char a)
+{
+    ctx->color_mask[0] = r != 0;
+    ctx->color_mask[1] = g != 0;
+    ctx->color_mask[2] = b != 0;
+    ctx->color_mask[3] = a != 0;
+    ctx->dirty |= DIRTY_SPAN;
+}
+
+void gles_DepthMask(GlesContext *ctx, unsigned char flag)
+{
+    ctx->depth_mask = flag != 0;
+    ctx->dirty |= DIRTY_SPAN;
+}
+
+void gles_DepthFunc(GlesContext *ctx, unsigned int func)
+{
+    if (func < GL_NEVER || func > GL_ALWAYS) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    ctx->depth_func = func;
+    ctx->dirty |= DIRTY_SPAN;
+}
+
+void gles_CullFace(GlesContext *ctx, unsigned int mode)
+{
+    if (mode != GL_FRONT && mode != GL_BACK && mode != GL_FRONT_AND_BACK) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    ctx->cull_mode = mode;
+}
+
+void gles_FrontFace(GlesContext *ctx, unsigned int mode)
+{
+    if (mode != GL_CW && mode != GL_CCW) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    ctx->front_face = mode;
+}
+
+void gles_ShadeModel(GlesContext *ctx, unsigned int mode)
+{
+    if (mode != GL_FLAT && mode != GL_SMOOTH) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    ctx->shade_model = mode;
+    ctx->dirty |= DIRTY_SPAN;
+}
+
+void gles_Hint(GlesContext *ctx, unsigned int target, unsigned int mode)
+{
+    if (mode != GL_FASTEST && mode != GL_NICEST && mode != GL_DONT_CARE) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    switch (target) {
+    case GL_PERSPECTIVE_CORRECTION_HINT: ctx->hints[0] = mode; break;
+    case GL_POINT_SMOOTH_HINT: ctx->hints[1] = mode; break;
+    case GL_LINE_SMOOTH_HINT: ctx->hints[2] = mode; break;
+    case GL_FOG_HINT: ctx->hints[3] = mode; break;
+    case GL_GENERATE_MIPMAP_HINT: ctx->hint_generate_mipmap = mode; break;
+    default: ctx_error(ctx, GL_INVALID_ENUM); break;
+    }
+}
+
+void gles_PixelStorei(GlesContext *ctx, unsigned int pname, int param)
+{
+    if (pname != GL_PACK_ALIGNMENT && pname != GL_UNPACK_ALIGNMENT) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    if (param != 1 && param != 2 && param != 4 && param != 8) {
+        ctx_error(ctx, GL_INVALID_VALUE);
+        return;
+    }
+    if (pname == GL_PACK_ALIGNMENT)
+        ctx->pack_alignment = param;
+    else
+        ctx->unpack_alignment = param;
+}
+
+void gles_ActiveTexture(GlesContext *ctx, unsigned int texture)
+{
+    if (texture < GL_TEXTURE0 || texture >= GL_TEXTURE0 + GLES_MAX_TEXTURE_UNITS) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    ctx->active_texture = texture;
+    if (ctx->matrix_mode == GL_TEXTURE)
+        ctx->current_stack = &ctx->texture[texture - GL_TEXTURE0];
+}
+
+void gles_ClientActiveTexture(GlesContext *ctx, unsigned int texture)
+{
+    if (texture < GL_TEXTURE0 || texture >= GL_TEXTURE0 + GLES_MAX_TEXTURE_UNITS) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    ctx->client_active_texture = texture;
+}
+
+void gles_Finish(GlesContext *ctx) { (void)ctx; }
+void gles_Flush(GlesContext *ctx) { (void)ctx; }
+
+/* {====================================================================
+** current values */
+
+void gles_Color4(GlesContext *ctx, double r, double g, double b, double a)
+{
+    double v[4] = { r, g, b, a };
+    for (int i = 0; i < 4; i++) {
+        ctx->cur_color[i] = v[i];
+        ctx->cur_color_n[i] = num_from_double(v[i]);
+    }
+}
+
+void gles_Normal3(GlesContext *ctx, double x, double y, double z)
+{
+    double v[3] = { x, y, z };
+    for (int i = 0; i < 3; i++) {
+        ctx->cur_normal[i] = v[i];
+        ctx->cur_normal_n[i] = num_from_double(v[i]);
+    }
+}
+
+void gles_MultiTexCoord4(GlesContext *ctx, unsigned int target, double s, double t, double r, double q)
+{
+    if (target < GL_TEXTURE0 || target >= GL_TEXTURE0 + GLES_MAX_TEXTURE_UNITS) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    unsigned int u = target - GL_TEXTURE0;
+    double v[4] = { s, t, r, q };
+    for (int i = 0; i < 4; i++) {
+        ctx->cur_tex[u][i] = v[i];
+        ctx->cur_tex_n[u][i] = num_from_double(v[i]);
+    }
+}
+
+/* {====================================================================
+** gles_get: the state table behind GetBooleanv/Integerv/Fixedv/Floatv */
+
+static int put(double *out, int *kind, int k, int n, const double *v)
+{
+    for (int i = 0; i < n; i++)
+        out[i] = v[i];
+    *kind = k;
+    return n;
+}
+
+static int put1(double *out, int *kind, int k, double v) { return put(out, kind, k, 1, &v); }
+
+int gles_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)
+{
+    double v[16];
+    switch (pname) {
+    /* implementation limits */
+    case GL_MAX_MODELVIEW_STACK_DEPTH: return put1(out, kind, GLES_KIND_INT, GLES_MODELVIEW_STACK_DEPTH);
+    case GL_MAX_PROJECTION_STACK_DEPTH: return put1(out, kind, GLES_KIND_INT, GLES_PROJECTION_STACK_DEPTH);
+    case GL_MAX_TEXTURE_STACK_DEPTH: return put1(out, kind, GLES_KIND_INT, GLES_TEXTURE_STACK_DEPTH);
+    case GL_MAX_CLIP_PLANES: return put1(out, kind, GLES_KIND_INT, GLES_MAX_CLIP_PLANES);
+    case GL_MAX_TEXTURE_UNITS: return put1(out, kind, GLES_KIND_INT, GLES_MAX_TEXTURE_UNITS);
+    case GL_MAX_VIEWPORT_DIMS:
+        v[0] = v[1] = GLES_MAX_VIEWPORT_DIM;
+        return put(out, kind, GLES_KIND_INT, 2, v);
+    case GL_SUBPIXEL_BITS: return put1(out, kind, GLES_KIND_INT, GLES_SUBPIXEL_BITS);
+    case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: {
+        static const int bits8888[4] = { 8, 8, 8, 8 }, bits565[4] = { 5, 6, 5, 0 };
+        const int *b = ctx->color_format == GLES_COLOR_RGB565 ? bits565 : bits8888;
+        return put1(out, kind, GLES_KIND_INT, b[pname - GL_RED_BITS]);
+    }
+    case GL_DEPTH_BITS: return put1(out, kind, GLES_KIND_INT, ctx->depth_bits);
+    case GL_STENCIL_BITS: return put1(out, kind, GLES_KIND_INT, ctx->stencil_bits);
+    case GL_IMPLEMENTATION_COLOR_READ_FORMAT_OES:
+        return put1(out, kind, GLES_KIND_ENUM, ctx->color_format == GLES_COLOR_RGB565 ? GL_RGB : GL_RGBA);
+    case GL_IMPLEMENTATION_COLOR_READ_TYPE_OES:
+        return put1(out, kind, GLES_KIND_ENUM,
+                    ctx->color_format == GLES_COLOR_RGB565 ? GL_UNSIGNED_SHORT_5_6_5 : GL_UNSIGNED_BYTE);
+
+    /* transformation */
+    case GL_MATRIX_MODE: return put1(out, kind, GLES_KIND_ENUM, ctx->matrix_mode);
+    case GL_MODELVIEW_MATRIX: return put(out, kind, GLES_KIND_FLOAT, 16, ctx->modelview.top->d);
+    case GL_PROJECTION_MATRIX: return put(out, kind, GLES_KIND_FLOAT, 16, ctx->projection.top->d);
+    case GL_TEXTURE_MATRIX:
+        return put(out, kind, GLES_KIND_FLOAT, 16, ctx->texture[ctx->active_texture - GL_TEXTURE0].top->d);
+    case GL_MODELVIEW_STACK_DEPTH: return put1(out, kind, GLES_KIND_INT, ctx->modelview.depth);
+    case GL_PROJECTION_STACK_DEPTH: return put1(out, kind, GLES_KIND_INT, ctx->projection.depth);
+    case GL_TEXTURE_STACK_DEPTH:
+        return put1(out, kind, GLES_KIND_INT, ctx->texture[ctx->active_texture - GL_TEXTURE0].depth);
+    case GL_VIEWPORT:
+        for (int i = 0; i < 4; i++)
+            v[i] = ctx->viewport[i];
+        return put(out, kind, GLES_KIND_INT, 4, v);
+    case GL_DEPTH_RANGE: return put(out, kind, GLES_KIND_NORM, 2, ctx->depth_range);
+    case GL_ACTIVE_TEXTURE: return put1(out, kind, GLES_KIND_ENUM, ctx->active_texture);
+    case GL_CLIENT_ACTIVE_TEXTURE: return put1(out, kind, GLES_KIND_ENUM, ctx->client_active_texture);
+
+    /* rasterization and fragments */
+    case GL_CULL_FACE_MODE: return put1(out, kind, GLES_KIND_ENUM, ctx->cull_mode);
+    case GL_FRONT_FACE: return put1(out, kind, GLES_KIND_ENUM, ctx->front_face);
+    case GL_SHADE_MODEL: return put1(out, kind, GLES_KIND_ENUM, ctx->shade_model);
+    case GL_SCISSOR_BOX:
+        for (int i = 0; i < 4; i++)
+            v[i] = ctx->scissor[i];
+        return put(out, kind, GLES_KIND_INT, 4, v);
+    case GL_COLOR_CLEAR_VALUE: return put(out, kind, GLES_KIND_NORM, 4, ctx->clear_color);
+    case GL_DEPTH_CLEAR_VALUE: return put1(out, kind, GLES_KIND_NORM, ctx->clear_depth);
+    case GL_STENCIL_CLEAR_VALUE: return put1(out, kind, GLES_KIND_INT, ctx->clear_stencil);
+    case GL_COLOR_WRITEMASK:
+        for (int i = 0; i < 4; i++)
+            v[i] = ctx->color_mask[i];
+        return put(out, kind, GLES_KIND_BOOL, 4, v);
+    case GL_DEPTH_WRITEMASK: return put1(out, kind, GLES_KIND_BOOL, ctx->depth_mask);
+    case GL_DEPTH_FUNC: return put1(out, kind, GLES_KIND_ENUM, ctx->depth_func);
+    case GL_PACK_ALIGNMENT: return put1(out, kind, GLES_KIND_INT, ctx->pack_alignment);
+    case GL_UNPACK_ALIGNMENT: return put1(out, kind, GLES_KIND_INT, ctx->unpack_alignment);
+    case GL_PERSPECTIVE_CORRECTION_HINT: return put1(out, kind, GLES_KIND_ENUM, ctx->hints[0]);
+    case GL_POINT_SMOOTH_HINT: return put1(out, kind, GLES_KIND_ENUM, ctx->hints[1]);
+    case GL_LINE_SMOOTH_HINT: return put1(out, kind, GLES_KIND_ENUM, ctx->hints[2]);
+    case GL_FOG_HINT: return put1(out, kind, GLES_KIND_ENUM, ctx->hints[3]);
+    case GL_GENERATE_MIPMAP_HINT: return put1(out, kind, GLES_KIND_ENUM, ctx->hint_generate_mipmap);
+
+    /* current values */
+    case GL_CURRENT_COLOR: return put(out, kind, GLES_KIND_NORM, 4, ctx->cur_color);
+    case GL_CURRENT_NORMAL: return put(out, kind, GLES_KIND_NORM, 3, ctx->cur_normal);
+    case GL_CURRENT_TEXTURE_COORDS:
+        return put(out, kind, GLES_KIND_FLOAT, 4, ctx->cur_tex[ctx->active_texture - GL_TEXTURE0]);
+
+    /* buffer bindings */
+    case GL_ARRAY_BUFFER_BINDING:
+        return put1(out, kind, GLES_KIND_INT, ctx->array_buffer ? ctx->array_buffer->name : 0);
+    case GL_ELEMENT_ARRAY_BUFFER_BINDING:
+        return put1(out, kind, GLES_KIND_INT, ctx->element_buffer ? ctx->element_buffer->name : 0);
+    default:
+        break;
+    }
+    int n = array_get(ctx, pname, out, kind);
+    if (n > 0)
+        return n;
+    /* an enable queried through Get*v answers like IsEnabled */
+    if (cap_index(pname) >= 0 || (pname >= GL_CLIP_PLANE0 && pname < GL_CLIP_PLANE0 + GLES_MAX_CLIP_PLANES)
+        || (pname >= GL_LIGHT0 && pname < GL_LIGHT0 + 8))
+        return put1(out, kind, GLES_KIND_BOOL, gles_IsEnabled(ctx, pname));
+    ctx_error(ctx, GL_INVALID_ENUM);
+    return 0;
+}

@@ -1,0 +1,15 @@
+/*
+** core_all.c -- the whole core as one translation unit, compiled once per
+** numeric build (the build defines GLES_NUM_FIXED, _FLOAT or _DOUBLE).
+** One unit lets the compiler inline across stages, and lets the three
+** builds share no object files.
+*/
+#include "context.c"
+#include "matrix.c"
+#include "array.c"
+#include "vertex.c"
+#include "clip.c"
+#include "raster.c"
+#include "span.c"
+#include "draw.c"
+#include "framebuffer.c"

@@ -1,0 +1,137 @@
+/*
+** framebuffer.c -- Clear and ReadPixels (ES 1.1 §4.2.3, §4.3.1).
+** Owns: writing clear values through the scissor box and the masks, and
+**       reading the colour buffer in RGBA/UNSIGNED_BYTE or the buffer's own
+**       OES_read_format pair, honouring PACK_ALIGNMENT.
+*/
+#include <string.h>
+#include "state.h"
+#include "raster.h"
+
+/* the clear rectangle: the framebuffer, cut by the scissor box when enabled */
+static void clear_rect(const GlesContext *ctx, int *x0, int *y0, int *x1, int *y1)
+{
+    *x0 = 0; *y0 = 0; *x1 = ctx->width; *y1 = ctx->height;
+    if (ctx->scissor_test) {
+        int64_t sx = ctx->scissor[0], sy = ctx->scissor[1];
+        int64_t ex = sx + ctx->scissor[2], ey = sy + ctx->scissor[3];
+        if (sx > *x0) *x0 = (int)i64_clamp(sx, 0, ctx->width);
+        if (sy > *y0) *y0 = (int)i64_clamp(sy, 0, ctx->height);
+        if (ex < *x1) *x1 = (int)i64_clamp(ex, 0, ctx->width);
+        if (ey < *y1) *y1 = (int)i64_clamp(ey, 0, ctx->height);
+    }
+}
+
+int gles_Clear(GlesContext *ctx, unsigned int mask)
+{
+    const unsigned int legal = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT;
+    if (mask & ~legal) {
+        ctx_error(ctx, GL_INVALID_VALUE);
+        return GLES_OK;
+    }
+    int x0, y0, x1, y1;
+    clear_rect(ctx, &x0, &y0, &x1, &y1);
+    if (x0 >= x1 || y0 >= y1)
+        return GLES_OK;
+    size_t w = (size_t)ctx->width;
+    if (mask & GL_COLOR_BUFFER_BIT) {
+        NUM c[4];
+        for (int i = 0; i < 4; i++)
+            c[i] = num_from_double(ctx->clear_color[i]);
+        uint32_t packed = span_pack_color(ctx, c);
+        uint32_t keep = 0;
+        if (ctx->color_format == GLES_COLOR_RGB565) {
+            static const uint32_t m565[3] = { 0xF800, 0x07E0, 0x001F };
+            for (int i = 0; i < 3; i++)
+                if (!ctx->color_mask[i])
+                    keep |= m565[i];
+            for (int y = y0; y < y1; y++) {
+                uint16_t *row = (uint16_t *)ctx->color + (size_t)y * w;
+                for (int x = x0; x < x1; x++)
+                    row[x] = (uint16_t)((row[x] & keep) | (packed & ~keep));
+            }
+        } else {
+            for (int i = 0; i < 4; i++)
+                if (!ctx->color_mask[i])
+                    keep |= 0xFFu << (8 * i);
+            for (int y = y0; y < y1; y++) {
+                uint32_t *row = (uint32_t *)ctx->color + (size_t)y * w;
+                for (int x = x0; x < x1; x++)
+                    row[x] = (row[x] & keep) | (packed & ~keep);
+            }
+        }
+    }
+    if ((mask & GL_DEPTH_BUFFER_BIT) && ctx->depth && ctx->depth_mask) {
+        uint32_t z = (uint32_t)dbl_to_i64(ctx->clear_depth * ctx->depth_max, 0, ctx->depth_max);
+        for (int y = y0; y < y1; y++) {
+            uint32_t *row = ctx->depth + (size_t)y * w;
+            for (int x = x0; x < x1; x++)
+                row[x] = z;
+        }
+    }
+    if ((mask & GL_STENCIL_BUFFER_BIT) && ctx->stencil) {
+        /* the stencil write mask arrives with the stencil stage; all bits now */
+        uint8_t s = (uint8_t)(ctx->clear_stencil & 0xFF);
+        for (int y = y0; y < y1; y++)
+            memset(ctx->stencil + (size_t)y * w + x0, s, (size_t)(x1 - x0));
+    }
+    return GLES_OK;
+}
+
+/* expand a 5- or 6-bit channel to 8 bits exactly as c * 255 / max rounds */
+static uint8_t expand(uint32_t c, uint32_t max) { return (uint8_t)((c * 255 + max / 2) / max); }
+
+int gles_ReadPixels(GlesContext *ctx, int x, int y, int width, int height,
+                    unsigned int format, unsigned int type, void *out, int64_t nbytes)
+{
+    if (width < 0 || height < 0) {
+        ctx_error(ctx, GL_INVALID_VALUE);
+        return GLES_OK;
+    }
+    int rgba = format == GL_RGBA && type == GL_UNSIGNED_BYTE;
+    int impl565 = ctx->color_format == GLES_COLOR_RGB565 && format == GL_RGB && type == GL_UNSIGNED_SHORT_5_6_5;
+    if (!rgba && !impl565) {
+        /* §4.3.1: a legal token pair that is not one of the two supported
+        ** pairs is INVALID_OPERATION; an unknown token INVALID_ENUM */
+        int fmt_known = format == GL_RGBA || format == GL_RGB || format == GL_ALPHA
+                     || format == GL_LUMINANCE || format == GL_LUMINANCE_ALPHA;
+        int type_known = type == GL_UNSIGNED_BYTE || type == GL_UNSIGNED_SHORT_5_6_5
+                      || type == GL_UNSIGNED_SHORT_4_4_4_4 || type == GL_UNSIGNED_SHORT_5_5_5_1;
+        ctx_error(ctx, fmt_known && type_known ? GL_INVALID_OPERATION : GL_INVALID_ENUM);
+        return GLES_OK;
+    }
+    int bpp = rgba ? 4 : 2;
+    int64_t rowbytes = (int64_t)width * bpp;
+    int64_t stride = (rowbytes + ctx->pack_alignment - 1) / ctx->pack_alignment * ctx->pack_alignment;
+    int64_t need = height ? stride * (height - 1) + rowbytes : 0;
+    if (need > nbytes)
+        return ctx_message(ctx, GLES_EVALUE, "ReadPixels needs %lld bytes, the buffer holds %lld",
+                           (long long)need, (long long)nbytes);
+    uint8_t *dst = out;
+    for (int j = 0; j < height; j++) {
+        int64_t fy = (int64_t)y + j;
+        uint8_t *row = dst + stride * j;
+        for (int i = 0; i < width; i++) {
+            int64_t fx = (int64_t)x + i;
+            int inside = fx >= 0 && fy >= 0 && fx < ctx->width && fy < ctx->height;
+            size_t at = inside ? (size_t)fy * (size_t)ctx->width + (size_t)fx : 0;
+            if (rgba) {
+                uint8_t px[4] = { 0, 0, 0, 0 };
+                if (inside && ctx->color_format == GLES_COLOR_RGBA8888) {
+                    uint32_t v = ((uint32_t *)ctx->color)[at];
+                    px[0] = (uint8_t)v; px[1] = (uint8_t)(v >> 8); px[2] = (uint8_t)(v >> 16); px[3] = (uint8_t)(v >> 24);
+                } else if (inside) {
+                    uint16_t v = ((uint16_t *)ctx->color)[at];
+                    px[0] = expand(v >> 11, 31); px[1] = expand((v >> 5) & 63, 63); px[2] = expand(v & 31, 31);
+                    px[3] = 255;
+                }
+                memcpy(row + 4 * i, px, 4);
+            } else {
+                /* pixels outside the window are undefined (§4.3.1); we give 0 */
+                uint16_t v = inside ? ((uint16_t *)ctx->color)[at] : 0;
+                memcpy(row + 2 * i, &v, 2);
+            }
+        }
+    }
+    return GLES_OK;
+}

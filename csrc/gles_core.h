@@ -1,0 +1,143 @@
+/*
+** gles_core.h -- the core's whole public C API, the only header cffi parses.
+** Every GL command takes the context first; there is no global state, so
+** contexts in different threads never interact. Value arguments that the
+** Common profile gives as floats arrive as double in every build: the x forms
+** are converted exactly by the caller (x / 65536), and each build rounds the
+** double once into its NUM type. The API state keeps the double, so queries
+** return what the application set.
+** Draw, clear and read commands return a status: 0, or a negative GLES_E*
+** code for Python-level misuse (the message is in gles_last_message).
+** Keep this file free of preprocessor logic: cffi parses it as it is.
+*/
+#ifndef GLES_CORE_H
+#define GLES_CORE_H
+
+#include <stdint.h>
+
+typedef struct GlesContext GlesContext;
+
+/* status codes of the commands that return one */
+#define GLES_OK 0
+#define GLES_EVALUE -1   /* array or buffer too short, index out of range */
+#define GLES_EMEMORY -2  /* allocation failed (also sets OUT_OF_MEMORY) */
+
+/* framebuffer colour formats */
+#define GLES_COLOR_RGBA8888 0
+#define GLES_COLOR_RGB565 1
+
+/* profiles */
+#define GLES_PROFILE_COMMON 0
+#define GLES_PROFILE_COMMON_LITE 1
+
+/* kinds of values returned by gles_get (the caller applies the spec's
+** conversion rules for each Get command from the kind) */
+#define GLES_KIND_INT 1     /* integers: sizes, counts, names */
+#define GLES_KIND_ENUM 2    /* enums: never scaled */
+#define GLES_KIND_BOOL 3    /* booleans */
+#define GLES_KIND_FLOAT 4   /* plain real values */
+#define GLES_KIND_NORM 5    /* colours, depth values, normals: [-1,1] maps
+                               to the whole integer range in GetIntegerv */
+
+/* {====================================================================
+** context */
+const char *gles_numeric_name(void);
+GlesContext *gles_context_create(int width, int height, int color_format,
+                                 int depth_bits, int stencil_bits, int profile);
+void gles_context_destroy(GlesContext *ctx);
+const char *gles_last_message(GlesContext *ctx);
+void *gles_color_buffer(GlesContext *ctx);     /* bottom row first */
+void *gles_depth_buffer(GlesContext *ctx);     /* uint32 per pixel */
+void *gles_stencil_buffer(GlesContext *ctx);   /* uint8 per pixel */
+int gles_width(GlesContext *ctx);
+int gles_height(GlesContext *ctx);
+/* debug switches for tests: 1 forces the generic span path; 2 and 4 break
+** the rasterizer on purpose (flip the fill rule's tie, drop the last pixel of
+** every span) so that tests can show the suite catches it */
+void gles_debug_set(GlesContext *ctx, int flags);
+/* name of the span function the last triangle used (for path tests) */
+const char *gles_last_span_name(GlesContext *ctx);
+
+/* {====================================================================
+** state queries: up to 16 values into out; returns the count, 0 for an
+** unknown pname (INVALID_ENUM is set); *kind receives a GLES_KIND_* */
+int gles_get(GlesContext *ctx, unsigned int pname, double *out, int *kind);
+unsigned int gles_GetError(GlesContext *ctx);
+unsigned char gles_IsEnabled(GlesContext *ctx, unsigned int cap);
+void gles_set_error(GlesContext *ctx, unsigned int err);
+
+/* {====================================================================
+** simple state */
+void gles_Enable(GlesContext *ctx, unsigned int cap);
+void gles_Disable(GlesContext *ctx, unsigned int cap);
+void gles_EnableClientState(GlesContext *ctx, unsigned int array);
+void gles_DisableClientState(GlesContext *ctx, unsigned int array);
+void gles_Viewport(GlesContext *ctx, int x, int y, int width, int height);
+void gles_Scissor(GlesContext *ctx, int x, int y, int width, int height);
+void gles_DepthRange(GlesContext *ctx, double n, double f);
+void gles_ClearColor(GlesContext *ctx, double r, double g, double b, double a);
+void gles_ClearDepth(GlesContext *ctx, double d);
+void gles_ClearStencil(GlesContext *ctx, int s);
+void gles_ColorMask(GlesContext *ctx, unsigned char r, unsigned char g, unsigned char b, unsigned char a);
+void gles_DepthMask(GlesContext *ctx, unsigned char flag);
+void gles_DepthFunc(GlesContext *ctx, unsigned int func);
+void gles_CullFace(GlesContext *ctx, unsigned int mode);
+void gles_FrontFace(GlesContext *ctx, unsigned int mode);
+void gles_ShadeModel(GlesContext *ctx, unsigned int mode);
+void gles_Hint(GlesContext *ctx, unsigned int target, unsigned int mode);
+void gles_PixelStorei(GlesContext *ctx, unsigned int pname, int param);
+void gles_ActiveTexture(GlesContext *ctx, unsigned int texture);
+void gles_ClientActiveTexture(GlesContext *ctx, unsigned int texture);
+
+/* {====================================================================
+** matrices (m is 16 values, column-major) */
+void gles_MatrixMode(GlesContext *ctx, unsigned int mode);
+void gles_LoadIdentity(GlesContext *ctx);
+void gles_LoadMatrix(GlesContext *ctx, const double *m);
+void gles_MultMatrix(GlesContext *ctx, const double *m);
+void gles_PushMatrix(GlesContext *ctx);
+void gles_PopMatrix(GlesContext *ctx);
+void gles_Translate(GlesContext *ctx, double x, double y, double z);
+void gles_Scale(GlesContext *ctx, double x, double y, double z);
+void gles_Rotate(GlesContext *ctx, double angle, double x, double y, double z);
+void gles_Frustum(GlesContext *ctx, double l, double r, double b, double t, double n, double f);
+void gles_Ortho(GlesContext *ctx, double l, double r, double b, double t, double n, double f);
+void gles_ClipPlane(GlesContext *ctx, unsigned int plane, const double *eq);
+void gles_GetClipPlane(GlesContext *ctx, unsigned int plane, double *eq);
+
+/* {====================================================================
+** current values */
+void gles_Color4(GlesContext *ctx, double r, double g, double b, double a);
+void gles_Normal3(GlesContext *ctx, double x, double y, double z);
+void gles_MultiTexCoord4(GlesContext *ctx, unsigned int target, double s, double t, double r, double q);
+
+/* {====================================================================
+** vertex arrays and buffer objects; nbytes is the length of a client
+** array (-1 when unknown), ignored while a buffer object is bound */
+void gles_VertexPointer(GlesContext *ctx, int size, unsigned int type, int stride, const void *ptr, int64_t nbytes);
+void gles_ColorPointer(GlesContext *ctx, int size, unsigned int type, int stride, const void *ptr, int64_t nbytes);
+void gles_NormalPointer(GlesContext *ctx, unsigned int type, int stride, const void *ptr, int64_t nbytes);
+void gles_TexCoordPointer(GlesContext *ctx, int size, unsigned int type, int stride, const void *ptr, int64_t nbytes);
+void gles_PointSizePointerOES(GlesContext *ctx, unsigned int type, int stride, const void *ptr, int64_t nbytes);
+/* the pointer (or offset) last given for an array, for GetPointerv */
+uintptr_t gles_GetPointer(GlesContext *ctx, unsigned int pname);
+void gles_GenBuffers(GlesContext *ctx, int n, unsigned int *names);
+void gles_DeleteBuffers(GlesContext *ctx, int n, const unsigned int *names);
+void gles_BindBuffer(GlesContext *ctx, unsigned int target, unsigned int buffer);
+int gles_BufferData(GlesContext *ctx, unsigned int target, int64_t size, const void *data, unsigned int usage);
+void gles_BufferSubData(GlesContext *ctx, unsigned int target, int64_t offset, int64_t size, const void *data);
+unsigned char gles_IsBuffer(GlesContext *ctx, unsigned int buffer);
+void gles_GetBufferParameteriv(GlesContext *ctx, unsigned int target, unsigned int pname, int *params);
+
+/* {====================================================================
+** drawing and pixels */
+int gles_DrawArrays(GlesContext *ctx, unsigned int mode, int first, int count);
+int gles_DrawElements(GlesContext *ctx, unsigned int mode, int count, unsigned int type,
+                      const void *indices, int64_t nbytes);
+int gles_Clear(GlesContext *ctx, unsigned int mask);
+int gles_ReadPixels(GlesContext *ctx, int x, int y, int width, int height,
+                    unsigned int format, unsigned int type, void *out, int64_t nbytes);
+void gles_Finish(GlesContext *ctx);
+void gles_Flush(GlesContext *ctx);
+
+#endif

@@ -1,0 +1,619 @@
+/*
+** num.h -- the numeric layer: one switchboard for the three builds.
+** Owns: the NUM type and every arithmetic operation the pipeline uses on it,
+**       plus the few wider types the rasterizer needs (weights, depth values).
+** Build: exactly one of GLES_NUM_FIXED, GLES_NUM_FLOAT, GLES_NUM_DOUBLE is
+**        defined by the compiler command line. No other file tests which.
+**
+** Fixed build (the product). NUM is s15.16 in an int32_t. Every product and
+** quotient uses a 64-bit intermediate, rounds to nearest (ties away from
+** zero) and saturates to [NUM_MIN, NUM_MAX]: overflow never wraps. Negative
+** values are never shifted left (undefined in C11); we multiply instead.
+**
+** Float and double builds. NUM is the IEEE type; operations are the plain
+** operators. Conversions to integers (window coordinates, colour and depth
+** values) go through num_to_i64 / *_sat helpers that map NaN to 0 and clamp
+** infinities, because a float-to-int conversion out of range is undefined.
+**
+** Rasterizer weights. Barycentric weights are WGT: in the fixed build an
+** int32 in 0.30 (1.0 = 2^30), elsewhere NUM. Depth values per vertex are
+** DEPTHV: depth-buffer units with 16 fraction bits in an int64 (fixed), or
+** NUM. Both are evaluated with the helpers at the end of this file.
+*/
+#ifndef GLES_NUM_H
+#define GLES_NUM_H
+
+#include <stdint.h>
+#include <math.h>
+
+#if defined(GLES_NUM_FIXED) + defined(GLES_NUM_FLOAT) + defined(GLES_NUM_DOUBLE) != 1
+#error "define exactly one of GLES_NUM_FIXED, GLES_NUM_FLOAT, GLES_NUM_DOUBLE"
+#endif
+
+/* {==================================================================== */
+/* Integer helpers shared by every build */
+
+static inline int64_t i64_clamp(int64_t v, int64_t lo, int64_t hi)
+{
+    return v < lo ? lo : (v > hi ? hi : v);
+}
+
+/* floor(n / d) and ceil(n / d) for d > 0 */
+static inline int64_t i64_floor_div(int64_t n, int64_t d)
+{
+    int64_t q = n / d;
+    return (n % d != 0 && n < 0) ? q - 1 : q;
+}
+
+static inline int64_t i64_ceil_div(int64_t n, int64_t d)
+{
+    int64_t q = n / d;
+    return (n % d != 0 && n > 0) ? q + 1 : q;
+}
+
+/* n / d rounded to nearest, ties away from zero; d != 0 */
+static inline int64_t i64_round_div(int64_t n, int64_t d)
+{
+    uint64_t an = n < 0 ? (uint64_t)0 - (uint64_t)n : (uint64_t)n;
+    uint64_t ad = d < 0 ? (uint64_t)0 - (uint64_t)d : (uint64_t)d;
+    uint64_t q = (an + ad / 2) / ad;
+    if (an > UINT64_MAX - ad / 2) /* cannot happen for our ranges; stay defined */
+        q = an / ad;
+    if (q > (uint64_t)INT64_MAX)
+        q = (uint64_t)INT64_MAX;
+    return ((n < 0) != (d < 0)) ? -(int64_t)q : (int64_t)q;
+}
+
+/* number of significant bits of a non-negative value (0 for 0) */
+static inline int u64_bits(uint64_t v)
+{
+    return v ? 64 - __builtin_clzll(v) : 0;
+}
+
+/* Double to int64, NaN to 0, clamped to [lo, hi], rounded to nearest. */
+static inline int64_t dbl_to_i64(double v, int64_t lo, int64_t hi)
+{
+    if (!(v == v))
+        return 0;
+    if (v <= (double)lo)
+        return lo;
+    if (v >= (double)hi)
+        return hi;
+    return (int64_t)floor(v + 0.5);
+}
+
+/* }==================================================================== */
+
+#if defined(GLES_NUM_FIXED)
+/* {==================================================================== */
+/* Fixed build: s15.16 */
+
+typedef int32_t NUM;
+#define NUM_NAME "fixed"
+#define NUM_IS_FIXED 1
+#define NUM_ONE ((NUM)65536)
+#define NUM_HALF ((NUM)32768)
+#define NUM_ZERO ((NUM)0)
+#define NUM_MAX ((NUM)INT32_MAX)
+#define NUM_MIN ((NUM)INT32_MIN)
+#define NUM_EPS ((NUM)1) /* the smallest positive value, 2^-16 */
+#define NUM_FRAC_BITS 16
+
+static inline NUM num_sat(int64_t v)
+{
+    return (NUM)i64_clamp(v, INT32_MIN, INT32_MAX);
+}
+
+/* round a value with `bits` fraction bits to 16.16 */
+static inline NUM num_from_scaled(int64_t v, int bits)
+{
+    if (bits <= 16)
+        return num_sat(v * ((int64_t)1 << (16 - bits)));
+    int s = bits - 16;
+    int64_t half = (int64_t)1 << (s - 1);
+    /* ties away from zero, symmetric for negative values */
+    int64_t r = v >= 0 ? (v + half) >> s : -((-v + half) >> s);
+    return num_sat(r);
+}
+
+static inline NUM num_from_int(int64_t i) { return num_sat(i * 65536); }
+static inline NUM num_from_fixed(int32_t x) { return x; }
+static inline NUM num_from_double(double d) { return (NUM)dbl_to_i64(d * 65536.0, INT32_MIN, INT32_MAX); }
+static inline double num_to_double(NUM a) { return a / 65536.0; }
+static inline int32_t num_to_fixed(NUM a) { return a; }
+
+static inline NUM num_add(NUM a, NUM b) { return num_sat((int64_t)a + b); }
+static inline NUM num_sub(NUM a, NUM b) { return num_sat((int64_t)a - b); }
+static inline NUM num_neg(NUM a) { return num_sat(-(int64_t)a); }
+static inline NUM num_abs(NUM a) { return num_sat(a < 0 ? -(int64_t)a : a); }
+
+static inline NUM num_mul(NUM a, NUM b)
+{
+    return num_from_scaled((int64_t)a * b, 32);
+}
+
+/* a * b + c * d with one rounding */
+static inline NUM num_mul2(NUM a, NUM b, NUM c, NUM d)
+{
+    return num_from_scaled((int64_t)a * b + (int64_t)c * d, 32);
+}
+
+static inline NUM num_div(NUM a, NUM b)
+{
+    if (b == 0)
+        return a > 0 ? NUM_MAX : (a < 0 ? NUM_MIN : 0);
+    return num_sat(i64_round_div((int64_t)a * 65536, b));
+}
+
+static inline NUM num_recip(NUM a) { return num_div(NUM_ONE, a); }
+
+/* floor(sqrt(v)) for v >= 0, exact */
+static inline uint64_t u64_isqrt(uint64_t v)
+{
+    uint64_t r = (uint64_t)sqrt((double)v); /* close; then correct exactly */
+    while (r > 0 && r * r > v)
+        r--;
+    while ((r + 1) * (r + 1) <= v)
+        r++;
+    return r;
+}
+
+/* sqrt rounded to nearest: the 16.16 result is sqrt(a * 2^16) for raw a */
+static inline NUM num_sqrt(NUM a)
+{
+    if (a <= 0)
+        return 0;
+    uint64_t v = (uint64_t)a << 16;   /* a / 2^16 * 2^32 */
+    uint64_t r = u64_isqrt(v);
+    /* round: r + 1 if (r + 0.5)^2 <= v, i.e. r^2 + r < v */
+    if (r * r + r < v)
+        r++;
+    return num_sat((int64_t)r);
+}
+
+/* 1 / sqrt(a): via a 0.62 numerator so small inputs keep their precision */
+static inline NUM num_rsqrt(NUM a)
+{
+    if (a <= 0)
+        return NUM_MAX;
+    /* 1/sqrt(a/2^16) * 2^16 = 2^24 / sqrt(a) = sqrt(2^48 / a) */
+    uint64_t q = ((uint64_t)1 << 62) / (uint64_t)a;   /* 2^62/a */
+    uint64_t r = u64_isqrt(q);                        /* 2^31/sqrt(a) */
+    return num_sat((int64_t)((r + 64) >> 7));         /* 2^24/sqrt(a) */
+}
+
+#define NUM_LIT(d) ((NUM)((d) * 65536.0 + ((d) >= 0 ? 0.5 : -0.5)))
+
+/* }==================================================================== */
+#else
+/* {==================================================================== */
+/* Float and double builds */
+
+#if defined(GLES_NUM_FLOAT)
+typedef float NUM;
+#define NUM_NAME "float"
+#define NUM_MAX ((NUM)3.402823466e38f)
+#define NUM_SQRT sqrtf
+#define NUM_FLOOR floorf
+#else
+typedef double NUM;
+#define NUM_NAME "double"
+#define NUM_MAX ((NUM)1.7976931348623157e308)
+#define NUM_SQRT sqrt
+#define NUM_FLOOR floor
+#endif
+#define NUM_IS_FIXED 0
+#define NUM_ONE ((NUM)1)
+#define NUM_HALF ((NUM)0.5)
+#define NUM_ZERO ((NUM)0)
+#define NUM_MIN (-NUM_MAX)
+#define NUM_EPS ((NUM)(1.0 / 65536.0)) /* same guard values as the fixed build */
+#define NUM_LIT(d) ((NUM)(d))
+
+static inline NUM num_from_int(int64_t i) { return (NUM)i; }
+static inline NUM num_from_fixed(int32_t x) { return (NUM)(x / 65536.0); }
+static inline NUM num_from_double(double d) { return (NUM)d; }
+static inline NUM num_from_scaled(int64_t v, int bits) { return (NUM)ldexp((double)v, -bits); }
+static inline double num_to_double(NUM a) { return (double)a; }
+static inline int32_t num_to_fixed(NUM a) { return (int32_t)dbl_to_i64((double)a * 65536.0, INT32_MIN, INT32_MAX); }
+
+static inline NUM num_add(NUM a, NUM b) { return a + b; }
+static inline NUM num_sub(NUM a, NUM b) { return a - b; }
+static inline NUM num_neg(NUM a) { return -a; }
+static inline NUM num_abs(NUM a) { return a < 0 ? -a : a; }
+static inline NUM num_mul(NUM a, NUM b) { return a * b; }
+static inline NUM num_mul2(NUM a, NUM b, NUM c, NUM d) { return a * b + c * d; }
+static inline NUM num_div(NUM a, NUM b) { return a / b; }
+static inline NUM num_recip(NUM a) { return NUM_ONE / a; }
+static inline NUM num_sqrt(NUM a) { return a > 0 ? NUM_SQRT(a) : 0; }
+static inline NUM num_rsqrt(NUM a) { return a > 0 ? NUM_ONE / NUM_SQRT(a) : NUM_MAX; }
+
+/* }==================================================================== */
+#endif
+
+static inline NUM num_min(NUM a, NUM b) { return a < b ? a : b; }
+static inline NUM num_max(NUM a, NUM b) { return a > b ? a : b; }
+static inline NUM num_clamp01(NUM a) { return a < NUM_ZERO ? NUM_ZERO : (a > NUM_ONE ? NUM_ONE : a); }
+
+/* a * b where b is an integer (counts, sizes): exact in every build */
+static inline NUM num_mul_int(NUM a, int64_t b)
+{
+#if NUM_IS_FIXED
+    return num_sat((int64_t)a * b);
+#else
+    return a * (NUM)b;
+#endif
+}
+
+/* value in [0,1] to an integer in [0, maxval], rounded to nearest */
+static inline uint32_t num_to_unorm(NUM a, uint32_t maxval)
+{
+#if NUM_IS_FIXED
+    if (a <= 0)
+        return 0;
+    if (a >= NUM_ONE)
+        return maxval;
+    return (uint32_t)(((int64_t)a * maxval + 32768) >> 16);
+#else
+    if (!(a > 0))
+        return 0; /* also NaN */
+    if (a >= NUM_ONE)
+        return maxval;
+    return (uint32_t)((double)a * maxval + 0.5);
+#endif
+}
+
+/* c / maxval, the spec's unsigned normalised conversion (Table 2.7) */
+static inline NUM num_from_unorm(uint32_t c, uint32_t maxval)
+{
+#if NUM_IS_FIXED
+    return (NUM)i64_round_div((int64_t)c * 65536, maxval);
+#else
+    return (NUM)((double)c / maxval);
+#endif
+}
+
+/* (2c + 1) / (2^bits - 1), the spec's signed normalised conversion */
+static inline NUM num_from_snorm(int32_t c, uint32_t maxval)
+{
+#if NUM_IS_FIXED
+    return (NUM)i64_round_div(((int64_t)c * 2 + 1) * 65536, maxval);
+#else
+    return (NUM)(((double)c * 2 + 1) / maxval);
+#endif
+}
+
+/* {==================================================================== */
+/* Dot products with one rounding (matrix and vector work) */
+
+/* sum of a[i*as] * b[i*bs] for i < n, rounded once */
+static inline NUM num_dot(const NUM *a, int as, const NUM *b, int bs, int n)
+{
+#if NUM_IS_FIXED
+    int64_t acc = 0;
+    for (int i = 0; i < n; i++)
+        acc += (int64_t)a[i * as] * b[i * bs];
+    return num_from_scaled(acc, 32);
+#else
+    NUM acc = 0;
+    for (int i = 0; i < n; i++)
+        acc += a[i * as] * b[i * bs];
+    return acc;
+#endif
+}
+
+/* Normalise v in place. The fixed build first divides by the largest
+** component so the sum of squares stays in range whatever the length.
+** Returns 0 (v unchanged) for a zero vector. */
+static inline int num_normalize3(NUM *v)
+{
+    NUM m = num_max(num_abs(v[0]), num_max(num_abs(v[1]), num_abs(v[2])));
+    if (m == NUM_ZERO)
+        return 0;
+#if NUM_IS_FIXED
+    for (int i = 0; i < 3; i++)
+        v[i] = num_div(v[i], m);
+#endif
+    NUM inv = num_rsqrt(num_dot(v, 1, v, 1, 3));
+    for (int i = 0; i < 3; i++)
+        v[i] = num_mul(v[i], inv);
+    return 1;
+}
+/* }==================================================================== */
+
+/* {==================================================================== */
+/* Sine and cosine of an angle in degrees (glRotate) */
+
+#if NUM_IS_FIXED
+/* sin(pi/2 * t) for t in [0,1] in 0.30: the degree-11 Taylor polynomial in
+** 64-bit integers; truncation error below 2^-24, far under the 2^-17 that
+** the final rounding to 16.16 adds. */
+static inline int64_t fx_sin_quarter(int64_t t30)
+{
+    /* coefficients of sin(pi/2 t) = sum c_k t^(2k+1), in 0.30 */
+    static const int64_t c[6] = {
+        1686629713LL,   /*  pi/2          */
+        -693598668LL,   /* -(pi/2)^3/3!   */
+        85569306LL,     /*  (pi/2)^5/5!   */
+        -5026995LL,     /* -(pi/2)^7/7!   */
+        172272LL,       /*  (pi/2)^9/9!   */
+        -3864LL,        /* -(pi/2)^11/11! */
+    };
+    int64_t t2 = (t30 * t30) >> 30;
+    int64_t acc = c[5];
+    for (int k = 4; k >= 0; k--)
+        acc = c[k] + ((acc * t2) >> 30);
+    return (acc * t30) >> 30;
+}
+
+/* sin and cos of `deg` degrees (16.16) */
+static inline void num_sincos_deg(NUM deg, NUM *s, NUM *co)
+{
+    /* reduce exactly: 360 degrees = 360 * 65536 units */
+    int64_t full = (int64_t)360 * 65536;
+    int64_t a = deg % full;
+    if (a < 0)
+        a += full;
+    int64_t quarter = (int64_t)90 * 65536;
+    int q = (int)(a / quarter);
+    int64_t r = a - (int64_t)q * quarter;          /* [0, 90) degrees */
+    int64_t t = (r * ((int64_t)1 << 30)) / quarter; /* 0.30 fraction of a quarter */
+    int64_t sn = fx_sin_quarter(t);
+    int64_t cs = fx_sin_quarter(((int64_t)1 << 30) - t);
+    int64_t sv, cv;
+    switch (q) {
+    case 0: sv = sn; cv = cs; break;
+    case 1: sv = cs; cv = -sn; break;
+    case 2: sv = -sn; cv = -cs; break;
+    default: sv = -cs; cv = sn; break;
+    }
+    *s = num_from_scaled(sv, 30);
+    *co = num_from_scaled(cv, 30);
+}
+#else
+static inline void num_sincos_deg(NUM deg, NUM *s, NUM *co)
+{
+    /* reduce in degrees first so that multiples of 90 are exact */
+    double a = fmod((double)deg, 360.0);
+    if (a < 0)
+        a += 360.0;
+    const double pi = 3.14159265358979323846;
+    if (a == 0.0) { *s = 0; *co = 1; return; }
+    if (a == 90.0) { *s = 1; *co = 0; return; }
+    if (a == 180.0) { *s = 0; *co = -1; return; }
+    if (a == 270.0) { *s = -1; *co = 0; return; }
+    *s = (NUM)sin(a * pi / 180.0);
+    *co = (NUM)cos(a * pi / 180.0);
+}
+#endif
+/* }==================================================================== */
+
+/* {==================================================================== */
+/* Rasterizer weights and depth values */
+
+#if NUM_IS_FIXED
+typedef int32_t WGT;           /* 0.30 */
+typedef int64_t DEPTHV;        /* depth units, 16 fraction bits */
+#define WGT_BITS 30
+#define WGT_ONE ((WGT)1 << 30)
+
+/* a0*w0 + a1*w1 + a2*w2 with w in 0.30 summing to one */
+static inline NUM wgt_lerp3(NUM a0, NUM a1, NUM a2, WGT w0, WGT w1, WGT w2)
+{
+    int64_t acc = (int64_t)a0 * w0 + (int64_t)a1 * w1 + (int64_t)a2 * w2;
+    return num_from_scaled(acc, 46);
+}
+
+/* depth from vertex depths and linear weights, as an integer depth value */
+static inline uint32_t wgt_depth3(DEPTHV z0, DEPTHV z1, DEPTHV z2, WGT w0, WGT w1, WGT w2, uint32_t maxval)
+{
+    /* z < 2^40 (24 integer + 16 fraction bits), w <= 2^30: one term < 2^70
+    ** would overflow, so drop 12 fraction bits of z first (still 4 left). */
+    int64_t acc = (z0 >> 12) * w0 + (z1 >> 12) * w1 + (z2 >> 12) * w2;
+    int64_t v = (acc + ((int64_t)1 << 33)) >> 34;
+    return (uint32_t)i64_clamp(v, 0, maxval);
+}
+
+static inline DEPTHV depthv_from_num(NUM z01, uint32_t maxval)
+{
+    /* z01 in [0,1] (16.16) times maxval, keeping 16 fraction bits */
+    int64_t z = z01 < 0 ? 0 : (z01 > NUM_ONE ? NUM_ONE : z01);
+    return z * (int64_t)maxval;
+}
+#else
+typedef NUM WGT;
+typedef NUM DEPTHV;
+#define WGT_ONE ((NUM)1)
+
+static inline NUM wgt_lerp3(NUM a0, NUM a1, NUM a2, WGT w0, WGT w1, WGT w2)
+{
+    return a0 * w0 + a1 * w1 + a2 * w2;
+}
+
+static inline uint32_t wgt_depth3(DEPTHV z0, DEPTHV z1, DEPTHV z2, WGT w0, WGT w1, WGT w2, uint32_t maxval)
+{
+    NUM v = z0 * w0 + z1 * w1 + z2 * w2;
+    return (uint32_t)dbl_to_i64((double)v, 0, maxval);
+}
+
+static inline DEPTHV depthv_from_num(NUM z01, uint32_t maxval)
+{
+    NUM z = z01 < 0 ? 0 : (z01 > 1 ? 1 : z01);
+    return z * (NUM)maxval;
+}
+#endif
+/* }==================================================================== */
+
+/* {==================================================================== */
+/* Clipping, projection and triangle weights */
+
+#if NUM_IS_FIXED
+typedef int64_t CLIPT;         /* intersection parameter in 0.30 */
+
+/* t = dp / (dp - dq) for dp, dq of opposite signs (or one zero) */
+static inline CLIPT num_clip_t(NUM dp, NUM dq)
+{
+    int64_t den = (int64_t)dp - dq;
+    if (den == 0)
+        return 0;
+    return i64_clamp(i64_round_div((int64_t)dp * ((int64_t)1 << 30), den), 0, (int64_t)1 << 30);
+}
+
+static inline NUM num_lerp(NUM a, NUM b, CLIPT t)
+{
+    return num_sat((int64_t)a + num_from_scaled(((int64_t)b - a) * t, 46));
+}
+
+/* round(x / w * scale) for w > 0, as a 64-bit integer */
+static inline int64_t num_proj(NUM x, NUM w, int64_t scale)
+{
+    return i64_round_div((int64_t)x * scale, w);
+}
+
+/* window depth of clip z, w: (n + (f - n) * (z/w + 1) / 2) * maxval */
+static inline DEPTHV depthv_from_clip(NUM z, NUM w, NUM n, NUM f, uint32_t maxval)
+{
+    int64_t one = (int64_t)1 << 30;
+    int64_t zs = i64_clamp(i64_round_div((int64_t)z * one, w), -one, one);      /* 0.30 */
+    int64_t n30 = (int64_t)n * 16384, f30 = (int64_t)f * 16384;                 /* 0.30 */
+    int64_t d30 = n30 + (f30 - n30) * (zs + one) / (2 * one);
+    d30 = i64_clamp(d30, 0, one);
+    return (d30 * (int64_t)maxval + 8192) >> 14;                               /* 16 fraction bits */
+}
+
+/* Perspective-correct and linear barycentric weights from exact edge values.
+** The linear weight of vertex i is e_i / area; the perspective one is
+** (e_i / w_i) / sum_j (e_j / w_j). Only ratios of 1/w matter, so each 1/w is
+** kept as a 30-bit mantissa and a shift, and products are aligned to the
+** largest: no 16.16 reciprocal ever underflows near the far plane. */
+typedef struct WgtSetup {
+    int eshift;          /* e_i >> eshift fits in 31 bits */
+    int64_t lin_recip;   /* 2^61 / (area >> eshift) */
+    int64_t mant[3];     /* 1/w_i ~ mant_i * 2^-qshift_i (relative) */
+    int qshift[3];
+    int affine;          /* all w equal: perspective weights are linear */
+} WgtSetup;
+
+static inline void wgt_setup(WgtSetup *s, int64_t area2, const NUM w[3])
+{
+    int b = u64_bits((uint64_t)area2);
+    s->eshift = b > 31 ? b - 31 : 0;
+    s->lin_recip = ((int64_t)1 << 61) / (area2 >> s->eshift);
+    s->affine = (w[0] == w[1] && w[1] == w[2]);
+    int smax = -1000;
+    int sh[3];
+    for (int i = 0; i < 3; i++) {
+        int64_t r = ((int64_t)1 << 62) / (w[i] > 0 ? w[i] : 1);     /* 2^62 / w_raw */
+        int rb = u64_bits((uint64_t)r) - 30;
+        sh[i] = rb;
+        s->mant[i] = rb > 0 ? r >> rb : r;
+        if (rb > smax)
+            smax = rb;
+    }
+    for (int i = 0; i < 3; i++)
+        s->qshift[i] = smax - sh[i];
+}
+
+static inline void wgt_linear(const WgtSetup *s, const int64_t e[3], WGT out[3])
+{
+    int64_t l1 = ((e[1] >> s->eshift) * s->lin_recip + ((int64_t)1 << 30)) >> 31;
+    int64_t l2 = ((e[2] >> s->eshift) * s->lin_recip + ((int64_t)1 << 30)) >> 31;
+    out[1] = (WGT)l1;
+    out[2] = (WGT)l2;
+    out[0] = (WGT)(WGT_ONE - l1 - l2);
+}
+
+static inline void wgt_persp(const WgtSetup *s, const int64_t e[3], WGT out[3])
+{
+    if (s->affine) {
+        wgt_linear(s, e, out);
+        return;
+    }
+    int64_t n[3], den = 0;
+    for (int i = 0; i < 3; i++) {
+        int sh = s->qshift[i];
+        n[i] = sh < 63 ? ((e[i] >> s->eshift) * s->mant[i]) >> sh : 0;
+        den += n[i];
+    }
+    if (den <= 0) {
+        wgt_linear(s, e, out);
+        return;
+    }
+    int sh = u64_bits((uint64_t)den) - 32;
+    if (sh > 0) {
+        den >>= sh;
+        n[1] >>= sh;
+        n[2] >>= sh;
+    }
+    int64_t p1 = (n[1] * ((int64_t)1 << 30) + den / 2) / den;
+    int64_t p2 = (n[2] * ((int64_t)1 << 30) + den / 2) / den;
+    out[1] = (WGT)p1;
+    out[2] = (WGT)p2;
+    out[0] = (WGT)(WGT_ONE - p1 - p2);
+}
+
+#else
+typedef NUM CLIPT;
+
+static inline CLIPT num_clip_t(NUM dp, NUM dq)
+{
+    NUM den = dp - dq;
+    if (den == 0)
+        return 0;
+    NUM t = dp / den;
+    return t < 0 ? 0 : (t > 1 ? 1 : t);
+}
+
+static inline NUM num_lerp(NUM a, NUM b, CLIPT t) { return a + (b - a) * t; }
+
+static inline int64_t num_proj(NUM x, NUM w, int64_t scale)
+{
+    return dbl_to_i64((double)((x / w) * (NUM)scale), -((int64_t)1 << 40), (int64_t)1 << 40);
+}
+
+static inline DEPTHV depthv_from_clip(NUM z, NUM w, NUM n, NUM f, uint32_t maxval)
+{
+    NUM zs = z / w;
+    zs = zs < -1 ? -1 : (zs > 1 ? 1 : zs);
+    NUM d = n + (f - n) * (zs + 1) * (NUM)0.5;
+    d = d < 0 ? 0 : (d > 1 ? 1 : d);
+    return d * (NUM)maxval;
+}
+
+typedef struct WgtSetup {
+    NUM inv_area;
+    NUM q[3];
+    int affine;
+} WgtSetup;
+
+static inline void wgt_setup(WgtSetup *s, int64_t area2, const NUM w[3])
+{
+    s->inv_area = (NUM)1 / (NUM)area2;
+    s->affine = (w[0] == w[1] && w[1] == w[2]);
+    for (int i = 0; i < 3; i++)
+        s->q[i] = (NUM)1 / w[i];
+}
+
+static inline void wgt_linear(const WgtSetup *s, const int64_t e[3], WGT out[3])
+{
+    out[1] = (NUM)e[1] * s->inv_area;
+    out[2] = (NUM)e[2] * s->inv_area;
+    out[0] = 1 - out[1] - out[2];
+}
+
+static inline void wgt_persp(const WgtSetup *s, const int64_t e[3], WGT out[3])
+{
+    if (s->affine) {
+        wgt_linear(s, e, out);
+        return;
+    }
+    NUM n0 = (NUM)e[0] * s->q[0], n1 = (NUM)e[1] * s->q[1], n2 = (NUM)e[2] * s->q[2];
+    NUM inv = (NUM)1 / (n0 + n1 + n2);
+    out[1] = n1 * inv;
+    out[2] = n2 * inv;
+    out[0] = 1 - out[1] - out[2];
+}
+#endif
+/* }==================================================================== */
+
+#endif

@@ -1,0 +1,116 @@
+/*
+** raster.c -- triangle setup and scan conversion (ES 1.1 §3.5.1).
+** Consumes: three vertices with window x, y in subpixels (GLES_SUBPIXEL_BITS
+**       fraction bits; integers, the same in every build) and window depth.
+** Produces: calls of the chosen span function for each row's run of pixels.
+**
+** The fill rule. A pixel belongs to a triangle when its centre is strictly
+** inside every edge, or exactly on an edge that is a "top" or "left" edge.
+** With the vertices made counter-clockwise (y up, GL window coordinates), an
+** edge from P to Q is left when it goes down (Qy < Py) and top when it is
+** horizontal and goes left (Qx < Px). An edge shared by two triangles runs
+** in opposite directions in each, so exactly one of them owns the pixels on
+** it: no gaps, no double hits.
+**
+** Scan conversion is exact and per row: for each pixel row the three edge
+** inequalities E_i(px) = alpha_i * px + beta_i > 0 (or >= 0) are solved for
+** px with integer division, giving the covered run directly. There is no
+** per-pixel inside test, so every pixel a span function receives is covered;
+** this does the work a block rasterizer does for fully covered blocks on
+** every pixel, and never tests a pixel outside the triangle. Edge functions
+** are in int64: window coordinates stay within +-2^21 subpixels (draw.c
+** skips drawing when the viewport misses the framebuffer), so products stay
+** below 2^44.
+*/
+#include "raster.h"
+
+int64_t raster_area2(const Vertex *a, const Vertex *b, const Vertex *c)
+{
+    return (b->wx - a->wx) * (c->wy - a->wy) - (c->wx - a->wx) * (b->wy - a->wy);
+}
+
+/* Set up edge i from P to Q in pixel-index form. Pixel (px, py) has its
+** centre at subpixel (px * ONE + ONE/2, py * ONE + ONE/2). */
+static void edge_setup(TriSetup *t, int i, const Vertex *p, const Vertex *q, int *tie)
+{
+    int64_t A = -(q->wy - p->wy); /* E = A (X - Px) + B (Y - Py) */
+    int64_t B = q->wx - p->wx;
+    const int64_t one = GLES_SUBPIXEL_ONE, half = GLES_SUBPIXEL_ONE / 2;
+    t->ea[i] = A * one;
+    t->eb[i] = B * one;
+    t->ec[i] = A * (half - p->wx) + B * (half - p->wy);
+    /* top-left: left edges go down (A > 0), top edges go left (A == 0, B < 0) */
+    tie[i] = A > 0 || (A == 0 && B < 0);
+}
+
+void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const Vertex *c, const Vertex *pv)
+{
+    int64_t area2 = raster_area2(a, b, c);
+    if (area2 == 0)
+        return;
+    if (area2 < 0) {
+        const Vertex *tmp = b;
+        b = c;
+        c = tmp;
+        area2 = -area2;
+    }
+    TriSetup t;
+    int tie[3];
+    t.v[0] = a;
+    t.v[1] = b;
+    t.v[2] = c;
+    edge_setup(&t, 0, b, c, tie);
+    edge_setup(&t, 1, c, a, tie);
+    edge_setup(&t, 2, a, b, tie);
+    if (ctx->debug & GLES_DEBUG_FLIP_TIE_RULE)
+        for (int i = 0; i < 3; i++)
+            tie[i] = !tie[i]; /* shared edges now double-hit or gap */
+    NUM w[3] = { a->clip[3], b->clip[3], c->clip[3] };
+    wgt_setup(&t.wgt, area2, w);
+    for (int k = 0; k < 4; k++)
+        t.flat[k] = pv->color[k];
+    t.flat_packed = span_pack_color(ctx, t.flat);
+
+    /* rows whose centres lie within the vertical extent, clipped to the
+    ** framebuffer and the scissor box */
+    int64_t miny = a->wy, maxy = a->wy;
+    if (b->wy < miny) miny = b->wy;
+    if (c->wy < miny) miny = c->wy;
+    if (b->wy > maxy) maxy = b->wy;
+    if (c->wy > maxy) maxy = c->wy;
+    const int64_t one = GLES_SUBPIXEL_ONE, half = GLES_SUBPIXEL_ONE / 2;
+    int64_t y0 = i64_ceil_div(miny - half, one);
+    int64_t y1 = i64_floor_div(maxy - half, one); /* inclusive */
+    int64_t cx0 = 0, cx1 = ctx->width, cy0 = 0, cy1 = ctx->height;
+    if (ctx->scissor_test) {
+        if (ctx->scissor[0] > cx0) cx0 = ctx->scissor[0];
+        if (ctx->scissor[1] > cy0) cy0 = ctx->scissor[1];
+        if ((int64_t)ctx->scissor[0] + ctx->scissor[2] < cx1) cx1 = (int64_t)ctx->scissor[0] + ctx->scissor[2];
+        if ((int64_t)ctx->scissor[1] + ctx->scissor[3] < cy1) cy1 = (int64_t)ctx->scissor[1] + ctx->scissor[3];
+    }
+    if (y0 < cy0) y0 = cy0;
+    if (y1 > cy1 - 1) y1 = cy1 - 1;
+    int drop_last = (ctx->debug & GLES_DEBUG_DROP_LAST_PIXEL) != 0;
+
+    for (int64_t py = y0; py <= y1; py++) {
+        int64_t lo = cx0, hi = cx1; /* covered run is [lo, hi) */
+        for (int i = 0; i < 3; i++) {
+            int64_t al = t.ea[i], be = t.eb[i] * py + t.ec[i];
+            if (al > 0) {
+                /* al*px + be > 0  <=>  px > -be/al ; tie: px >= -be/al */
+                int64_t m = tie[i] ? i64_ceil_div(-be, al) : i64_floor_div(-be, al) + 1;
+                if (m > lo) lo = m;
+            } else if (al < 0) {
+                /* px < be/(-al) ; tie: px <= be/(-al) */
+                int64_t m = tie[i] ? i64_floor_div(be, -al) + 1 : i64_ceil_div(be, -al);
+                if (m < hi) hi = m;
+            } else if (!(be > 0 || (be == 0 && tie[i]))) {
+                hi = lo;
+            }
+        }
+        if (drop_last && hi > lo)
+            hi--;
+        if (lo < hi)
+            ctx->span(ctx, &t, (int)py, (int)lo, (int)(hi - lo));
+    }
+}

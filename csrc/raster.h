@@ -1,0 +1,31 @@
+/*
+** raster.h -- triangle setup and scan conversion, and the span interface.
+*/
+#ifndef GLES_RASTER_H
+#define GLES_RASTER_H
+
+#include "state.h"
+
+/* Everything a span function needs about the triangle being drawn. */
+struct TriSetup {
+    const Vertex *v[3];     /* counter-clockwise in window space */
+    /* edge i is opposite vertex i: E_i(px, py) = ea*px + eb*py + ec for
+    ** pixel indices; positive inside, zero on the edge */
+    int64_t ea[3], eb[3], ec[3];
+    WgtSetup wgt;
+    NUM flat[4];            /* colour of the provoking vertex */
+    uint32_t flat_packed;   /* the same in the framebuffer's format */
+};
+
+/* rasterize a triangle whose vertices have window coordinates; `pv` is the
+** provoking vertex (flat shading) */
+void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const Vertex *c, const Vertex *pv);
+/* the signed window-space area (x2) of a triangle, counter-clockwise > 0 */
+int64_t raster_area2(const Vertex *a, const Vertex *b, const Vertex *c);
+
+/* span.c: choose the span function for the current state */
+void span_choose(GlesContext *ctx);
+/* pack a [0,1] colour into the framebuffer's format */
+uint32_t span_pack_color(const GlesContext *ctx, const NUM *c);
+
+#endif

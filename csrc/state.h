@@ -1,0 +1,192 @@
+/*
+** state.h -- the context structure every stage reads, and the limits.
+** Owns: the layout of GlesContext (API state as the application set it,
+**       plus derived state recomputed on validation), dirty bits.
+** Conventions: API values are stored as double (what queries return) beside
+**       their NUM form (what the pipeline computes with).
+*/
+#ifndef GLES_STATE_H
+#define GLES_STATE_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "num.h"
+#include "gles_core.h"
+#include "glenums.h"
+
+/* {====================================================================
+** limits (each at or above the spec's minimum, Tables 6.20-6.22) */
+#define GLES_MAX_TEXTURE_UNITS 4
+#define GLES_MAX_CLIP_PLANES 6
+#define GLES_MODELVIEW_STACK_DEPTH 32
+#define GLES_PROJECTION_STACK_DEPTH 4
+#define GLES_TEXTURE_STACK_DEPTH 4
+#define GLES_MAX_VIEWPORT_DIM 4096
+#define GLES_MAX_FRAMEBUFFER_DIM 4096
+#define GLES_SUBPIXEL_BITS 8
+#define GLES_SUBPIXEL_ONE (1 << GLES_SUBPIXEL_BITS)
+#define GLES_MAX_SPAN 4096 /* the widest span the fragment stage gets */
+
+/* debug flags (gles_debug_set) */
+#define GLES_DEBUG_GENERIC_SPANS 1
+#define GLES_DEBUG_FLIP_TIE_RULE 2
+#define GLES_DEBUG_DROP_LAST_PIXEL 4
+
+/* {====================================================================
+** matrices */
+enum { MAT_GENERAL = 0, MAT_AFFINE, MAT_IDENTITY };
+
+typedef struct Matrix {
+    double d[16];   /* as the application built it, column-major */
+    NUM n[16];      /* the same matrix built in this build's arithmetic */
+    int kind;       /* MAT_*: lets transforms skip work */
+} Matrix;
+
+typedef struct MatrixStack {
+    Matrix *top;
+    int depth;      /* entries in use, 1..capacity */
+    int capacity;
+    Matrix entries[GLES_MODELVIEW_STACK_DEPTH];
+} MatrixStack;
+
+/* {====================================================================
+** vertex arrays and buffer objects */
+typedef struct BufferObject {
+    unsigned int name;
+    uint8_t *data;
+    int64_t size;
+    unsigned int usage;
+} BufferObject;
+
+/* open-addressing map from GL names to objects (buffers now, textures later) */
+typedef struct NameTable {
+    unsigned int *keys;   /* 0 marks an empty slot, ~0u a deleted one */
+    void **values;
+    uint32_t capacity;    /* power of two */
+    uint32_t used;        /* live + deleted slots */
+    unsigned int next_name;
+} NameTable;
+
+enum { ARR_VERTEX = 0, ARR_NORMAL, ARR_COLOR, ARR_POINT_SIZE, ARR_TEXCOORD0,
+       ARR_COUNT = ARR_TEXCOORD0 + GLES_MAX_TEXTURE_UNITS };
+
+typedef struct ArrayState {
+    int enabled;
+    int size;               /* components */
+    unsigned int type;
+    int stride;             /* as given (0 = tightly packed) */
+    int elem_bytes;         /* size * sizeof(type) */
+    int step;               /* effective stride in bytes */
+    const uint8_t *ptr;     /* client pointer, or offset into the buffer */
+    int64_t nbytes;         /* client array length, -1 if unknown */
+    BufferObject *buffer;   /* NULL for client memory */
+    unsigned int buffer_name;
+} ArrayState;
+
+/* {====================================================================
+** vertices after transformation */
+typedef struct Vertex {
+    NUM clip[4];
+    NUM eye[4];
+    NUM color[4];
+    NUM tex[GLES_MAX_TEXTURE_UNITS][4];
+    NUM point_size;
+    unsigned int outcode;   /* bit per violated clip plane */
+    /* window position, valid when outcode == 0 or after clipping */
+    int64_t wx, wy;         /* in subpixels */
+    DEPTHV wz;              /* depth-buffer units */
+} Vertex;
+
+/* {====================================================================
+** the fragment stage's view of a triangle (filled by raster.c) */
+typedef struct TriSetup TriSetup;
+typedef void (*SpanFunc)(struct GlesContext *ctx, const TriSetup *t, int y, int x0, int n);
+
+/* {====================================================================
+** the context */
+struct GlesContext {
+    /* framebuffer */
+    int width, height;
+    int color_format;           /* GLES_COLOR_* */
+    int depth_bits, stencil_bits;
+    uint32_t depth_max;         /* 2^depth_bits - 1 */
+    void *color;                /* uint32 RGBA8888 (R in the low byte) or uint16 565 */
+    uint32_t *depth;
+    uint8_t *stencil;
+    int profile;
+
+    unsigned int error;
+    char message[256];
+
+    /* enables */
+    int cull_enabled, depth_test, scissor_test;
+    int clip_plane_enabled[GLES_MAX_CLIP_PLANES];
+    int other_enables;          /* accepted caps whose stage is not built yet */
+    unsigned int enable_bits;   /* every accepted cap's state, by index */
+
+    /* rasterization and per-fragment state */
+    int viewport[4];
+    double depth_range[2];
+    int scissor[4];
+    double clear_color[4];
+    double clear_depth;
+    int clear_stencil;
+    unsigned char color_mask[4];
+    unsigned char depth_mask;
+    unsigned int depth_func;
+    unsigned int cull_mode, front_face, shade_model;
+    unsigned int hints[4];      /* perspective, point smooth, line smooth, fog */
+    unsigned int hint_generate_mipmap;
+    int pack_alignment, unpack_alignment;
+
+    /* transformation */
+    unsigned int matrix_mode;
+    MatrixStack modelview, projection;
+    MatrixStack texture[GLES_MAX_TEXTURE_UNITS];
+    MatrixStack *current_stack;
+    double clip_plane[GLES_MAX_CLIP_PLANES][4];   /* eye space, as queried */
+    NUM clip_plane_n[GLES_MAX_CLIP_PLANES][4];
+    unsigned int active_texture, client_active_texture;
+
+    /* current values */
+    double cur_color[4], cur_normal[3], cur_tex[GLES_MAX_TEXTURE_UNITS][4];
+    NUM cur_color_n[4], cur_normal_n[3], cur_tex_n[GLES_MAX_TEXTURE_UNITS][4];
+
+    /* arrays */
+    ArrayState arrays[ARR_COUNT];
+    NameTable buffers;
+    BufferObject *array_buffer, *element_buffer;
+
+    /* derived state, valid when dirty == 0 */
+    unsigned int dirty;
+    NUM mvp[16];                /* projection * modelview */
+    int mvp_kind;
+    int need_eye;               /* user clip planes need eye coordinates */
+    unsigned int clip_mask;     /* outcode bits that can be set */
+    SpanFunc span;              /* chosen for the current state */
+    const char *span_name;
+    int debug;
+
+    /* per-draw scratch: transformed vertices and their stamps */
+    Vertex *verts;
+    uint32_t *vert_stamp;
+    int64_t verts_capacity;
+    uint32_t draw_stamp;
+};
+
+/* dirty bits */
+#define DIRTY_MATRIX 1u
+#define DIRTY_SPAN 2u
+#define DIRTY_CLIP 4u
+#define DIRTY_ALL 0xffffffffu
+
+/* set the first error only, as the spec says */
+static inline void ctx_error(GlesContext *ctx, unsigned int err)
+{
+    if (ctx->error == GL_NO_ERROR)
+        ctx->error = err;
+}
+
+int ctx_message(GlesContext *ctx, int status, const char *fmt, ...);
+
+#endif

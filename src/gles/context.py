@@ -1,0 +1,165 @@
+"""gles.Context: one offscreen OpenGL ES 1.1 context and its framebuffer."""
+
+from __future__ import annotations
+
+import threading
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from . import _binding
+from . import constants as C
+from ._png import write_png
+from .gl import GLBase, GLCommon, _set_current
+
+PROFILES = {"common": 0, "common-lite": 1}
+COLOR_FORMATS = {"rgba8888": 0, "rgb565": 1}
+
+VENDOR = "gles"
+EXTENSIONS = {
+    "common": ["GL_OES_byte_coordinates", "GL_OES_fixed_point", "GL_OES_single_precision",
+               "GL_OES_matrix_get", "GL_OES_read_format"],
+    "common-lite": ["GL_OES_byte_coordinates", "GL_OES_fixed_point", "GL_OES_matrix_get",
+                    "GL_OES_read_format"],
+}
+
+
+class Context:
+    """An offscreen OpenGL ES 1.1 context.
+
+    Args:
+        width, height: framebuffer size in pixels (1..4096).
+        profile: "common" (float and fixed commands) or "common-lite"
+            (fixed commands only; FLOAT arrays are rejected).
+        numeric: the core's arithmetic: "fixed" (16.16, the product),
+            "float" or "double" (the accuracy reference).
+        color: "rgba8888" or "rgb565".
+        depth: depth buffer bits, 0, 16 or 24.
+        stencil: stencil buffer bits, 0 or 8.
+
+    Contexts are independent: each has its own lock, and draws release the
+    GIL, so contexts in different threads render at the same time.
+    """
+
+    def __init__(self, width: int, height: int, *, profile: str = "common", numeric: str = "fixed",
+                 color: str = "rgba8888", depth: int = 24, stencil: int = 8) -> None:
+        if profile not in PROFILES:
+            raise ValueError(f"profile must be one of {sorted(PROFILES)}, not {profile!r}")
+        if color not in COLOR_FORMATS:
+            raise ValueError(f"color must be one of {sorted(COLOR_FORMATS)}, not {color!r}")
+        if depth not in (0, 16, 24):
+            raise ValueError(f"depth must be 0, 16 or 24, not {depth!r}")
+        if stencil not in (0, 8):
+            raise ValueError(f"stencil must be 0 or 8, not {stencil!r}")
+        width, height = int(width), int(height)
+        if not (1 <= width <= 4096 and 1 <= height <= 4096):
+            raise ValueError(f"width and height must be in 1..4096, not {width}x{height}")
+        mod = _binding.core(numeric)
+        self._ffi = mod.ffi
+        self._lib = mod.lib
+        ptr = self._lib.gles_context_create(width, height, COLOR_FORMATS[color], depth, stencil,
+                                            PROFILES[profile])
+        if ptr == self._ffi.NULL:
+            raise MemoryError("could not allocate the framebuffer")
+        self._ptr = self._ffi.gc(ptr, self._lib.gles_context_destroy)
+        self._lock = threading.Lock()
+        self.width, self.height = width, height
+        self.profile, self.numeric, self.color = profile, numeric, color
+        self.depth_bits, self.stencil_bits = depth, stencil
+        self.gl: GLBase = GLCommon(self) if profile == "common" else GLBase(self)
+
+    def __repr__(self) -> str:
+        return (f"<gles.Context {self.width}x{self.height} {self.profile} {self.numeric} "
+                f"{self.color} depth={self.depth_bits} stencil={self.stencil_bits}>")
+
+    def make_current(self) -> Context:
+        """Make this the calling thread's current context (for ``gles.gl``)."""
+        _set_current(self.gl)
+        return self
+
+    def _string(self, name: int) -> str | None:
+        if name == C.GL_VENDOR:
+            return VENDOR
+        if name == C.GL_RENDERER:
+            return f"gles software renderer ({self.numeric})"
+        if name == C.GL_VERSION:
+            return "OpenGL ES-CM 1.1" if self.profile == "common" else "OpenGL ES-CL 1.1"
+        if name == C.GL_EXTENSIONS:
+            return " ".join(EXTENSIONS[self.profile])
+        with self._lock:
+            self._lib.gles_set_error(self._ptr, C.GL_INVALID_ENUM)
+        return None
+
+    # {================================================================
+    # pixels
+
+    def color_buffer(self) -> np.ndarray:
+        """The colour buffer as stored, bottom row first: uint8 (h, w, 4) for
+        RGBA8888 or uint16 (h, w) for RGB565. A copy."""
+        with self._lock:
+            if self.color == "rgb565":
+                buf = self._ffi.buffer(self._lib.gles_color_buffer(self._ptr), self.width * self.height * 2)
+                return np.frombuffer(buf, dtype=np.uint16).reshape(self.height, self.width).copy()
+            buf = self._ffi.buffer(self._lib.gles_color_buffer(self._ptr), self.width * self.height * 4)
+            return np.frombuffer(buf, dtype=np.uint8).reshape(self.height, self.width, 4).copy()
+
+    def depth_buffer(self) -> np.ndarray | None:
+        """The depth buffer (uint32 values 0..2^bits-1), bottom row first; None without one."""
+        if not self.depth_bits:
+            return None
+        with self._lock:
+            buf = self._ffi.buffer(self._lib.gles_depth_buffer(self._ptr), self.width * self.height * 4)
+            return np.frombuffer(buf, dtype=np.uint32).reshape(self.height, self.width).copy()
+
+    def stencil_buffer(self) -> np.ndarray | None:
+        """The stencil buffer (uint8), bottom row first; None without one."""
+        if not self.stencil_bits:
+            return None
+        with self._lock:
+            buf = self._ffi.buffer(self._lib.gles_stencil_buffer(self._ptr), self.width * self.height)
+            return np.frombuffer(buf, dtype=np.uint8).reshape(self.height, self.width).copy()
+
+    def image(self) -> np.ndarray:
+        """The colour buffer as uint8 RGBA (h, w, 4), top row first.
+
+        RGB565 channels are expanded to 8 bits (c * 255 / max, rounded) and
+        alpha is 255.
+        """
+        raw = self.color_buffer()
+        if self.color == "rgb565":
+            r = (raw >> 11).astype(np.uint32)
+            g = ((raw >> 5) & 63).astype(np.uint32)
+            b = (raw & 31).astype(np.uint32)
+            out = np.empty(raw.shape + (4,), dtype=np.uint8)
+            out[..., 0] = (r * 255 + 15) // 31
+            out[..., 1] = (g * 255 + 31) // 63
+            out[..., 2] = (b * 255 + 15) // 31
+            out[..., 3] = 255
+            raw = out
+        return raw[::-1].copy()
+
+    def save(self, path: str | Path) -> None:
+        """Write the colour buffer to a PNG file (top row first)."""
+        write_png(path, self.image())
+
+    # {================================================================
+    # introspection for tests
+
+    def debug(self, flags: int) -> None:
+        """Core debug switches: 1 forces the generic span path; 2 flips the
+        fill rule's tie-break, 4 drops the last pixel of every span (both
+        break the rasterizer on purpose, to show tests catch it)."""
+        with self._lock:
+            self._lib.gles_debug_set(self._ptr, int(flags))
+
+    def last_span_path(self) -> str:
+        """Name of the span function the last validated draw chose."""
+        with self._lock:
+            return self._ffi.string(self._lib.gles_last_span_name(self._ptr)).decode()
+
+    def __enter__(self) -> Context:
+        return self.make_current()
+
+    def __exit__(self, *exc: Any) -> None:
+        _set_current(None)

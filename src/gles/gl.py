@@ -1,0 +1,693 @@
+"""The OpenGL ES 1.1 commands, PyOpenGL style.
+
+Two ways to call them:
+
+* ``ctx.gl.glEnable(GL_DEPTH_TEST)``: the commands bound to one context
+  (a :class:`GLCommon` or :class:`GLCommonLite` instance); no current context
+  is needed.
+* ``from gles.gl import *`` then ``glEnable(GL_DEPTH_TEST)``: module-level
+  functions that act on the calling thread's current context
+  (``ctx.make_current()``).
+
+Conventions (those of PyOpenGL's GLES1 bindings):
+
+* Names, argument order and constants are the C API's. ``x`` forms take
+  16.16 ints; ``f`` forms (Common profile only) take floats.
+* Pointer arguments take a numpy array, bytes, a sequence of numbers, or an
+  int byte offset while a buffer object is bound. Arrays given to the
+  ``*Pointer`` commands are kept alive until the pointer is replaced.
+* ``glGen*(n)`` returns an int for n == 1, else a numpy array; ``glGet*v``
+  returns a scalar for a single value, else a numpy array.
+* GL errors are recorded and returned by ``glGetError`` as the spec says.
+  Python-level misuse (wrong dtype, an array shorter than a draw reads, an
+  index out of range) raises TypeError or ValueError before the core reads
+  any memory.
+"""
+
+from __future__ import annotations
+
+import operator
+import threading
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, Any, Union
+
+import numpy as np
+
+from . import constants as C
+from .constants import *  # noqa: F403  (the GL_* names are part of this module's API)
+
+if TYPE_CHECKING:
+    from .context import Context
+
+Pointer = Union[np.ndarray, bytes, bytearray, memoryview, Sequence, int, None]
+
+_DTYPES = {
+    C.GL_BYTE: np.dtype(np.int8),
+    C.GL_UNSIGNED_BYTE: np.dtype(np.uint8),
+    C.GL_SHORT: np.dtype(np.int16),
+    C.GL_UNSIGNED_SHORT: np.dtype(np.uint16),
+    C.GL_FIXED: np.dtype(np.int32),
+    C.GL_FLOAT: np.dtype(np.float32),
+}
+
+_KIND_INT, _KIND_ENUM, _KIND_BOOL, _KIND_FLOAT, _KIND_NORM = 1, 2, 3, 4, 5
+_STATUS_VALUE, _STATUS_MEMORY = -1, -2
+_FIX = 1.0 / 65536.0
+
+# The ES 1.1 commands whose pipeline stage is not built yet. Each exists and
+# raises NotImplementedError naming its stage; README.md lists them.
+_MISSING_BOTH = {
+    "lighting": "glLightx glLightxv glLightModelx glLightModelxv glMaterialx glMaterialxv "
+    "glGetLightxv glGetMaterialxv",
+    "texturing": "glBindTexture glDeleteTextures glGenTextures glIsTexture glTexImage2D "
+    "glTexSubImage2D glCompressedTexImage2D glCompressedTexSubImage2D glCopyTexImage2D "
+    "glCopyTexSubImage2D glTexParameteri glTexParameteriv glTexParameterx glTexParameterxv "
+    "glGetTexParameteriv glGetTexParameterxv glTexEnvi glTexEnviv glTexEnvx glTexEnvxv "
+    "glGetTexEnviv glGetTexEnvxv",
+    "per-fragment operations": "glAlphaFuncx glBlendFunc glLogicOp glStencilFunc glStencilMask "
+    "glStencilOp glSampleCoveragex",
+    "fog": "glFogx glFogxv",
+    "points and lines": "glPointSizex glLineWidthx glPointParameterx glPointParameterxv",
+    "polygon offset": "glPolygonOffsetx",
+}
+_MISSING_COMMON = {
+    "lighting": "glLightf glLightfv glLightModelf glLightModelfv glMaterialf glMaterialfv "
+    "glGetLightfv glGetMaterialfv",
+    "texturing": "glTexParameterf glTexParameterfv glGetTexParameterfv glTexEnvf glTexEnvfv "
+    "glGetTexEnvfv",
+    "per-fragment operations": "glAlphaFunc glSampleCoverage",
+    "fog": "glFogf glFogfv",
+    "points and lines": "glPointSize glLineWidth glPointParameterf glPointParameterfv",
+    "polygon offset": "glPolygonOffset",
+}
+
+
+def _index(v: Any) -> int:
+    """An integer argument; floats are refused rather than truncated."""
+    return operator.index(v)
+
+
+def _fixed(v: Any) -> float:
+    """A 16.16 argument as the exact real it stands for."""
+    return operator.index(v) * _FIX
+
+
+def _values(data: Any, n: int, what: str, dtype: Any = np.float64) -> np.ndarray:
+    arr = np.asarray(data, dtype=dtype).reshape(-1)
+    if arr.size < n:
+        raise ValueError(f"{what} needs {n} values, got {arr.size}")
+    return arr
+
+
+class GLBase:
+    """The Common-Lite command set, bound to one context."""
+
+    def __init__(self, context: Context) -> None:
+        self._context = context
+        self._lib = context._lib
+        self._ffi = context._ffi
+        self._p = context._ptr
+        self._lock: threading.Lock = context._lock
+        self._keep: dict[Any, Any] = {}
+        self._d16 = self._ffi.new("double[16]")
+        self._kind = self._ffi.new("int *")
+
+    # {================================================================
+    # helpers
+
+    def _bound(self, pname: int) -> int:
+        self._lib.gles_get(self._p, pname, self._d16, self._kind)
+        return int(self._d16[0])
+
+    def _pointer(self, data: Pointer, gltype: int | None, binding: int, what: str) -> tuple[Any, int, Any]:
+        """(C pointer, byte length or -1, object to keep alive) for `data`."""
+        ffi = self._ffi
+        if data is None:
+            return ffi.NULL, 0, None
+        if isinstance(data, (int, np.integer)) and not isinstance(data, bool):
+            off = int(data)
+            if off < 0:
+                raise ValueError(f"{what}: negative buffer offset {off}")
+            if self._bound(binding) == 0 and off != 0:
+                raise ValueError(f"{what}: an int is a byte offset and needs a bound buffer object")
+            return ffi.cast("void *", off), -1, None
+        want = _DTYPES.get(gltype) if gltype is not None else None
+        if isinstance(data, np.ndarray):
+            if want is not None and data.dtype != want:
+                raise TypeError(f"{what}: array dtype {data.dtype} does not match {C.NAMES.get(gltype)} ({want})")
+            arr = np.ascontiguousarray(data)
+        elif isinstance(data, (bytes, bytearray, memoryview)):
+            arr = np.frombuffer(data, dtype=np.uint8)
+        else:
+            arr = np.ascontiguousarray(np.asarray(data, dtype=want if want is not None else np.uint8))
+        return ffi.from_buffer(arr), arr.nbytes, arr
+
+    def _status(self, st: int) -> None:
+        if st == 0:
+            return
+        msg = self._ffi.string(self._lib.gles_last_message(self._p)).decode()
+        if st == _STATUS_MEMORY:
+            raise MemoryError(msg)
+        raise ValueError(msg)
+
+    def _get(self, pname: int) -> tuple[list[float], int]:
+        with self._lock:
+            n = self._lib.gles_get(self._p, _index(pname), self._d16, self._kind)
+            return [self._d16[i] for i in range(n)], self._kind[0]
+
+    @staticmethod
+    def _result(vals: list, dtype: Any) -> Any:
+        if not vals:
+            return None
+        if len(vals) == 1:
+            return vals[0]
+        return np.array(vals, dtype=dtype)
+
+    # {================================================================
+    # errors and queries
+
+    def glGetError(self) -> int:
+        """Return and clear the first error recorded since the last call."""
+        with self._lock:
+            return self._lib.gles_GetError(self._p)
+
+    def glGetIntegerv(self, pname: int) -> Any:
+        """Integer state; colours, depth values and normals map [-1, 1] to the int range (§6.1.2)."""
+        vals, kind = self._get(pname)
+        out = []
+        for v in vals:
+            if kind == _KIND_NORM:
+                out.append(int(np.clip(np.floor(((2.0**32 - 1) * v - 1) / 2 + 0.5), -(2**31), 2**31 - 1)))
+            else:
+                out.append(int(np.floor(v + 0.5)))
+        return self._result(out, np.int32)
+
+    def glGetFixedv(self, pname: int) -> Any:
+        """State as 16.16; enums are returned unscaled (§6.1.2)."""
+        vals, kind = self._get(pname)
+        if kind == _KIND_ENUM:
+            out = [int(v) for v in vals]
+        else:
+            out = [int(np.clip(np.floor(v * 65536.0 + 0.5), -(2**31), 2**31 - 1)) for v in vals]
+        return self._result(out, np.int32)
+
+    def glGetBooleanv(self, pname: int) -> Any:
+        """State as booleans: nonzero is True."""
+        vals, _ = self._get(pname)
+        return self._result([bool(v != 0) for v in vals], np.bool_)
+
+    def glIsEnabled(self, cap: int) -> bool:
+        with self._lock:
+            return bool(self._lib.gles_IsEnabled(self._p, _index(cap)))
+
+    def glGetString(self, name: int) -> str | None:
+        """VENDOR, RENDERER, VERSION or EXTENSIONS."""
+        return self._context._string(_index(name))
+
+    def glGetPointerv(self, pname: int) -> int:
+        """The pointer (as an address) or buffer offset last given for an array."""
+        with self._lock:
+            return int(self._lib.gles_GetPointer(self._p, _index(pname)))
+
+    def glGetClipPlanex(self, plane: int) -> np.ndarray:
+        eq = self._ffi.new("double[4]")
+        with self._lock:
+            self._lib.gles_GetClipPlane(self._p, _index(plane), eq)
+        return np.array([int(np.floor(eq[i] * 65536.0 + 0.5)) for i in range(4)], dtype=np.int32)
+
+    def glGetBufferParameteriv(self, target: int, pname: int) -> int:
+        out = self._ffi.new("int[1]")
+        with self._lock:
+            self._lib.gles_GetBufferParameteriv(self._p, _index(target), _index(pname), out)
+        return int(out[0])
+
+    # {================================================================
+    # simple state
+
+    def glEnable(self, cap: int) -> None:
+        with self._lock:
+            self._lib.gles_Enable(self._p, cap)
+
+    def glDisable(self, cap: int) -> None:
+        with self._lock:
+            self._lib.gles_Disable(self._p, cap)
+
+    def glEnableClientState(self, array: int) -> None:
+        with self._lock:
+            self._lib.gles_EnableClientState(self._p, array)
+
+    def glDisableClientState(self, array: int) -> None:
+        with self._lock:
+            self._lib.gles_DisableClientState(self._p, array)
+
+    def glViewport(self, x: int, y: int, width: int, height: int) -> None:
+        with self._lock:
+            self._lib.gles_Viewport(self._p, x, y, width, height)
+
+    def glScissor(self, x: int, y: int, width: int, height: int) -> None:
+        with self._lock:
+            self._lib.gles_Scissor(self._p, x, y, width, height)
+
+    def glDepthRangex(self, n: int, f: int) -> None:
+        with self._lock:
+            self._lib.gles_DepthRange(self._p, _fixed(n), _fixed(f))
+
+    def glClearColorx(self, r: int, g: int, b: int, a: int) -> None:
+        with self._lock:
+            self._lib.gles_ClearColor(self._p, _fixed(r), _fixed(g), _fixed(b), _fixed(a))
+
+    def glClearDepthx(self, depth: int) -> None:
+        with self._lock:
+            self._lib.gles_ClearDepth(self._p, _fixed(depth))
+
+    def glClearStencil(self, s: int) -> None:
+        with self._lock:
+            self._lib.gles_ClearStencil(self._p, s)
+
+    def glColorMask(self, r: bool, g: bool, b: bool, a: bool) -> None:
+        with self._lock:
+            self._lib.gles_ColorMask(self._p, bool(r), bool(g), bool(b), bool(a))
+
+    def glDepthMask(self, flag: bool) -> None:
+        with self._lock:
+            self._lib.gles_DepthMask(self._p, bool(flag))
+
+    def glDepthFunc(self, func: int) -> None:
+        with self._lock:
+            self._lib.gles_DepthFunc(self._p, func)
+
+    def glCullFace(self, mode: int) -> None:
+        with self._lock:
+            self._lib.gles_CullFace(self._p, mode)
+
+    def glFrontFace(self, mode: int) -> None:
+        with self._lock:
+            self._lib.gles_FrontFace(self._p, mode)
+
+    def glShadeModel(self, mode: int) -> None:
+        with self._lock:
+            self._lib.gles_ShadeModel(self._p, mode)
+
+    def glHint(self, target: int, mode: int) -> None:
+        with self._lock:
+            self._lib.gles_Hint(self._p, target, mode)
+
+    def glPixelStorei(self, pname: int, param: int) -> None:
+        with self._lock:
+            self._lib.gles_PixelStorei(self._p, pname, param)
+
+    def glActiveTexture(self, texture: int) -> None:
+        with self._lock:
+            self._lib.gles_ActiveTexture(self._p, texture)
+
+    def glClientActiveTexture(self, texture: int) -> None:
+        with self._lock:
+            self._lib.gles_ClientActiveTexture(self._p, texture)
+
+    def glFinish(self) -> None:
+        with self._lock:
+            self._lib.gles_Finish(self._p)
+
+    def glFlush(self) -> None:
+        with self._lock:
+            self._lib.gles_Flush(self._p)
+
+    # {================================================================
+    # matrices
+
+    def glMatrixMode(self, mode: int) -> None:
+        with self._lock:
+            self._lib.gles_MatrixMode(self._p, mode)
+
+    def glLoadIdentity(self) -> None:
+        with self._lock:
+            self._lib.gles_LoadIdentity(self._p)
+
+    def glPushMatrix(self) -> None:
+        with self._lock:
+            self._lib.gles_PushMatrix(self._p)
+
+    def glPopMatrix(self) -> None:
+        with self._lock:
+            self._lib.gles_PopMatrix(self._p)
+
+    def _matrix(self, m: Any, fixed: bool, what: str) -> Any:
+        if fixed:
+            arr = _values(m, 16, what, np.int64)[:16] * _FIX
+        else:
+            arr = _values(m, 16, what)[:16]
+        buf = self._ffi.new("double[16]", arr.tolist())
+        return buf
+
+    def glLoadMatrixx(self, m: Any) -> None:
+        buf = self._matrix(m, True, "glLoadMatrixx")
+        with self._lock:
+            self._lib.gles_LoadMatrix(self._p, buf)
+
+    def glMultMatrixx(self, m: Any) -> None:
+        buf = self._matrix(m, True, "glMultMatrixx")
+        with self._lock:
+            self._lib.gles_MultMatrix(self._p, buf)
+
+    def glTranslatex(self, x: int, y: int, z: int) -> None:
+        with self._lock:
+            self._lib.gles_Translate(self._p, _fixed(x), _fixed(y), _fixed(z))
+
+    def glScalex(self, x: int, y: int, z: int) -> None:
+        with self._lock:
+            self._lib.gles_Scale(self._p, _fixed(x), _fixed(y), _fixed(z))
+
+    def glRotatex(self, angle: int, x: int, y: int, z: int) -> None:
+        with self._lock:
+            self._lib.gles_Rotate(self._p, _fixed(angle), _fixed(x), _fixed(y), _fixed(z))
+
+    def glFrustumx(self, left: int, right: int, bottom: int, top: int, near: int, far: int) -> None:
+        with self._lock:
+            self._lib.gles_Frustum(
+                self._p, _fixed(left), _fixed(right), _fixed(bottom), _fixed(top), _fixed(near), _fixed(far)
+            )
+
+    def glOrthox(self, left: int, right: int, bottom: int, top: int, near: int, far: int) -> None:
+        with self._lock:
+            self._lib.gles_Ortho(
+                self._p, _fixed(left), _fixed(right), _fixed(bottom), _fixed(top), _fixed(near), _fixed(far)
+            )
+
+    def glClipPlanex(self, plane: int, equation: Any) -> None:
+        eq = _values(equation, 4, "glClipPlanex", np.int64)[:4] * _FIX
+        buf = self._ffi.new("double[4]", eq.tolist())
+        with self._lock:
+            self._lib.gles_ClipPlane(self._p, plane, buf)
+
+    # {================================================================
+    # current values
+
+    def glColor4x(self, r: int, g: int, b: int, a: int) -> None:
+        with self._lock:
+            self._lib.gles_Color4(self._p, _fixed(r), _fixed(g), _fixed(b), _fixed(a))
+
+    def glColor4ub(self, r: int, g: int, b: int, a: int) -> None:
+        # Table 2.7: c / 255
+        vals = [_index(c) & 0xFF for c in (r, g, b, a)]
+        with self._lock:
+            self._lib.gles_Color4(self._p, vals[0] / 255.0, vals[1] / 255.0, vals[2] / 255.0, vals[3] / 255.0)
+
+    def glNormal3x(self, nx: int, ny: int, nz: int) -> None:
+        with self._lock:
+            self._lib.gles_Normal3(self._p, _fixed(nx), _fixed(ny), _fixed(nz))
+
+    def glMultiTexCoord4x(self, target: int, s: int, t: int, r: int, q: int) -> None:
+        with self._lock:
+            self._lib.gles_MultiTexCoord4(self._p, target, _fixed(s), _fixed(t), _fixed(r), _fixed(q))
+
+    # {================================================================
+    # vertex arrays and buffer objects
+
+    def _set_pointer(self, key: Any, fn: Any, args: tuple, gltype: int, pointer: Pointer, what: str) -> None:
+        ptr, nbytes, keep = self._pointer(pointer, gltype, C.GL_ARRAY_BUFFER_BINDING, what)
+        with self._lock:
+            fn(self._p, *args, ptr, nbytes)
+            self._keep[key] = keep
+
+    def glVertexPointer(self, size: int, type: int, stride: int, pointer: Pointer) -> None:
+        self._set_pointer("vertex", self._lib.gles_VertexPointer, (size, type, stride), type, pointer,
+                          "glVertexPointer")
+
+    def glColorPointer(self, size: int, type: int, stride: int, pointer: Pointer) -> None:
+        self._set_pointer("color", self._lib.gles_ColorPointer, (size, type, stride), type, pointer,
+                          "glColorPointer")
+
+    def glNormalPointer(self, type: int, stride: int, pointer: Pointer) -> None:
+        self._set_pointer("normal", self._lib.gles_NormalPointer, (type, stride), type, pointer,
+                          "glNormalPointer")
+
+    def glTexCoordPointer(self, size: int, type: int, stride: int, pointer: Pointer) -> None:
+        unit = self._bound(C.GL_CLIENT_ACTIVE_TEXTURE)
+        self._set_pointer(("texcoord", unit), self._lib.gles_TexCoordPointer, (size, type, stride), type,
+                          pointer, "glTexCoordPointer")
+
+    def glPointSizePointerOES(self, type: int, stride: int, pointer: Pointer) -> None:
+        self._set_pointer("pointsize", self._lib.gles_PointSizePointerOES, (type, stride), type, pointer,
+                          "glPointSizePointerOES")
+
+    def glGenBuffers(self, n: int) -> Any:
+        n = _index(n)
+        if n < 0:
+            with self._lock:
+                self._lib.gles_GenBuffers(self._p, n, self._ffi.NULL)
+            return None
+        out = self._ffi.new("unsigned int[]", max(n, 1))
+        with self._lock:
+            self._lib.gles_GenBuffers(self._p, n, out)
+        names = [int(out[i]) for i in range(n)]
+        return names[0] if n == 1 else np.array(names, dtype=np.uint32)
+
+    def glDeleteBuffers(self, n: int, buffers: Any) -> None:
+        n = _index(n)
+        names = np.atleast_1d(np.asarray(buffers, dtype=np.int64))
+        if n > names.size:
+            raise ValueError(f"glDeleteBuffers: n is {n} but {names.size} names were given")
+        buf = self._ffi.new("unsigned int[]", [int(v) & 0xFFFFFFFF for v in names[: max(n, 0)]] or [0])
+        with self._lock:
+            self._lib.gles_DeleteBuffers(self._p, n, buf)
+
+    def glBindBuffer(self, target: int, buffer: int) -> None:
+        with self._lock:
+            self._lib.gles_BindBuffer(self._p, target, buffer)
+
+    def glIsBuffer(self, buffer: int) -> bool:
+        with self._lock:
+            return bool(self._lib.gles_IsBuffer(self._p, buffer))
+
+    def glBufferData(self, target: int, size: int, data: Pointer, usage: int) -> None:
+        size = _index(size)
+        if data is None:
+            ptr, nbytes = self._ffi.NULL, size
+            keep = None
+        else:
+            ptr, nbytes, keep = self._pointer(data, None, 0, "glBufferData")
+            if nbytes >= 0 and size > nbytes:
+                raise ValueError(f"glBufferData: size is {size} but the data holds {nbytes} bytes")
+        with self._lock:
+            st = self._lib.gles_BufferData(self._p, target, size, ptr, usage)
+        del keep
+        self._status(st)
+
+    def glBufferSubData(self, target: int, offset: int, size: int, data: Pointer) -> None:
+        size = _index(size)
+        ptr, nbytes, keep = self._pointer(data, None, 0, "glBufferSubData")
+        if nbytes >= 0 and size > nbytes:
+            raise ValueError(f"glBufferSubData: size is {size} but the data holds {nbytes} bytes")
+        with self._lock:
+            self._lib.gles_BufferSubData(self._p, target, offset, size, ptr)
+        del keep
+
+    # {================================================================
+    # drawing and pixels
+
+    def glDrawArrays(self, mode: int, first: int, count: int) -> None:
+        with self._lock:
+            st = self._lib.gles_DrawArrays(self._p, mode, first, count)
+        if st:
+            self._status(st)
+
+    def glDrawElements(self, mode: int, count: int, type: int, indices: Pointer) -> None:
+        if type not in (C.GL_UNSIGNED_BYTE, C.GL_UNSIGNED_SHORT):
+            # the core records INVALID_ENUM; nothing is read
+            with self._lock:
+                self._lib.gles_DrawElements(self._p, mode, count, type, self._ffi.NULL, 0)
+            return
+        ptr, nbytes, keep = self._pointer(indices, type, C.GL_ELEMENT_ARRAY_BUFFER_BINDING, "glDrawElements")
+        with self._lock:
+            st = self._lib.gles_DrawElements(self._p, mode, count, type, ptr, nbytes)
+        del keep
+        if st:
+            self._status(st)
+
+    def glClear(self, mask: int) -> None:
+        with self._lock:
+            self._lib.gles_Clear(self._p, mask)
+
+    def glReadPixels(self, x: int, y: int, width: int, height: int, format: int, type: int,
+                     array: Any = None) -> Any:
+        """Read a rectangle, bottom row first as GL defines.
+
+        Returns uint8 (h, w, 4) for GL_RGBA/GL_UNSIGNED_BYTE and uint16 (h, w)
+        for GL_RGB/GL_UNSIGNED_SHORT_5_6_5. With ``array`` (a writable buffer)
+        the raw rows are written into it with PACK_ALIGNMENT padding instead,
+        and None is returned. On a GL error nothing is written and None is
+        returned.
+        """
+        width, height = _index(width), _index(height)
+        if array is not None:
+            buf = self._ffi.from_buffer(array, require_writable=True)
+            with self._lock:
+                st = self._lib.gles_ReadPixels(self._p, x, y, width, height, format, type, buf, len(buf))
+            self._status(st)
+            return None
+        if width < 0 or height < 0:
+            with self._lock:
+                self._lib.gles_ReadPixels(self._p, x, y, width, height, format, type, self._ffi.NULL, 0)
+            return None
+        bpp = 4 if (format, type) == (C.GL_RGBA, C.GL_UNSIGNED_BYTE) else 2
+        align = self._bound(C.GL_PACK_ALIGNMENT)
+        stride = -(-width * bpp // align) * align
+        raw = np.zeros(max(stride * height, 1), dtype=np.uint8)
+        with self._lock:
+            err_before = self._lib.gles_GetError(self._p)
+            st = self._lib.gles_ReadPixels(self._p, x, y, width, height, format, type,
+                                           self._ffi.from_buffer(raw), raw.nbytes)
+            err = self._lib.gles_GetError(self._p)
+            # keep the spec's sticky first error
+            first = err_before or err
+            if first:
+                self._lib.gles_set_error(self._p, first)
+        self._status(st)
+        if err:
+            return None
+        rows = raw[: stride * height].reshape(height, stride)[:, : width * bpp]
+        if bpp == 4:
+            return rows.reshape(height, width, 4).copy()
+        return rows.copy().view(np.uint16).reshape(height, width)
+
+
+class GLCommon(GLBase):
+    """The Common-profile command set: Common-Lite plus the float commands."""
+
+    def glGetFloatv(self, pname: int) -> Any:
+        vals, _ = self._get(pname)
+        return self._result([float(v) for v in vals], np.float32)
+
+    def glGetClipPlanef(self, plane: int) -> np.ndarray:
+        eq = self._ffi.new("double[4]")
+        with self._lock:
+            self._lib.gles_GetClipPlane(self._p, _index(plane), eq)
+        return np.array([eq[i] for i in range(4)], dtype=np.float32)
+
+    def glDepthRangef(self, n: float, f: float) -> None:
+        with self._lock:
+            self._lib.gles_DepthRange(self._p, n, f)
+
+    def glClearColor(self, r: float, g: float, b: float, a: float) -> None:
+        with self._lock:
+            self._lib.gles_ClearColor(self._p, r, g, b, a)
+
+    def glClearDepthf(self, depth: float) -> None:
+        with self._lock:
+            self._lib.gles_ClearDepth(self._p, depth)
+
+    def glLoadMatrixf(self, m: Any) -> None:
+        buf = self._matrix(m, False, "glLoadMatrixf")
+        with self._lock:
+            self._lib.gles_LoadMatrix(self._p, buf)
+
+    def glMultMatrixf(self, m: Any) -> None:
+        buf = self._matrix(m, False, "glMultMatrixf")
+        with self._lock:
+            self._lib.gles_MultMatrix(self._p, buf)
+
+    def glTranslatef(self, x: float, y: float, z: float) -> None:
+        with self._lock:
+            self._lib.gles_Translate(self._p, x, y, z)
+
+    def glScalef(self, x: float, y: float, z: float) -> None:
+        with self._lock:
+            self._lib.gles_Scale(self._p, x, y, z)
+
+    def glRotatef(self, angle: float, x: float, y: float, z: float) -> None:
+        with self._lock:
+            self._lib.gles_Rotate(self._p, angle, x, y, z)
+
+    def glFrustumf(self, left: float, right: float, bottom: float, top: float, near: float, far: float) -> None:
+        with self._lock:
+            self._lib.gles_Frustum(self._p, left, right, bottom, top, near, far)
+
+    def glOrthof(self, left: float, right: float, bottom: float, top: float, near: float, far: float) -> None:
+        with self._lock:
+            self._lib.gles_Ortho(self._p, left, right, bottom, top, near, far)
+
+    def glClipPlanef(self, plane: int, equation: Any) -> None:
+        eq = _values(equation, 4, "glClipPlanef")[:4]
+        buf = self._ffi.new("double[4]", eq.tolist())
+        with self._lock:
+            self._lib.gles_ClipPlane(self._p, plane, buf)
+
+    def glColor4f(self, r: float, g: float, b: float, a: float) -> None:
+        with self._lock:
+            self._lib.gles_Color4(self._p, r, g, b, a)
+
+    def glNormal3f(self, nx: float, ny: float, nz: float) -> None:
+        with self._lock:
+            self._lib.gles_Normal3(self._p, nx, ny, nz)
+
+    def glMultiTexCoord4f(self, target: int, s: float, t: float, r: float, q: float) -> None:
+        with self._lock:
+            self._lib.gles_MultiTexCoord4(self._p, target, s, t, r, q)
+
+
+def _missing(name: str, stage: str) -> Any:
+    def command(self: GLBase, *args: Any) -> None:
+        raise NotImplementedError(f"{name}: {stage} is not implemented yet (see the README's table)")
+
+    command.__name__ = name
+    command.__doc__ = f"Not implemented yet: part of {stage}."
+    return command
+
+
+MISSING: dict[str, str] = {}
+for _stage, _names in _MISSING_BOTH.items():
+    for _n in _names.split():
+        setattr(GLBase, _n, _missing(_n, _stage))
+        MISSING[_n] = _stage
+for _stage, _names in _MISSING_COMMON.items():
+    for _n in _names.split():
+        setattr(GLCommon, _n, _missing(_n, _stage))
+        MISSING[_n] = _stage
+
+COMMON_LITE_COMMANDS = sorted(n for n in dir(GLBase) if n.startswith("gl"))
+COMMON_COMMANDS = sorted(n for n in dir(GLCommon) if n.startswith("gl"))
+FLOAT_COMMANDS = sorted(set(COMMON_COMMANDS) - set(COMMON_LITE_COMMANDS))
+
+# {====================================================================
+# module-level functions on the current context
+
+_current = threading.local()
+
+
+def _set_current(gl: GLBase | None) -> None:
+    _current.gl = gl
+
+
+def current_gl() -> GLBase:
+    """The calling thread's current context's commands."""
+    gl = getattr(_current, "gl", None)
+    if gl is None:
+        raise RuntimeError("no current gles context in this thread: call ctx.make_current() first")
+    return gl
+
+
+def _forwarder(name: str) -> Any:
+    def command(*args: Any) -> Any:
+        gl = getattr(_current, "gl", None)
+        if gl is None:
+            gl = current_gl()
+        try:
+            fn = getattr(gl, name)
+        except AttributeError:
+            raise AttributeError(
+                f"{name} is a Common-profile command; the current context is Common-Lite"
+            ) from None
+        return fn(*args)
+
+    command.__name__ = name
+    command.__qualname__ = name
+    command.__doc__ = getattr(GLCommon, name).__doc__
+    return command
+
+
+for _n in COMMON_COMMANDS:
+    globals()[_n] = _forwarder(_n)
+
+__all__ = list(C.__all__) + COMMON_COMMANDS + ["current_gl", "GLBase", "GLCommon", "GLCommonLite"]
+
+GLCommonLite = GLBase
