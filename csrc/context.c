@@ -40,6 +40,26 @@ void gles_debug_set(GlesContext *ctx, int flags)
 
 void gles_set_error(GlesContext *ctx, unsigned int err) { ctx_error(ctx, err); }
 
+double gles_num_eval(int op, double a, double b)
+{
+    NUM x = num_from_double(a), y = num_from_double(b), s, c;
+    switch (op) {
+    case GLES_NUMOP_FROM: return num_to_double(x);
+    case GLES_NUMOP_ADD: return num_to_double(num_add(x, y));
+    case GLES_NUMOP_SUB: return num_to_double(num_sub(x, y));
+    case GLES_NUMOP_MUL: return num_to_double(num_mul(x, y));
+    case GLES_NUMOP_DIV: return num_to_double(num_div(x, y));
+    case GLES_NUMOP_RECIP: return num_to_double(num_recip(x));
+    case GLES_NUMOP_SQRT: return num_to_double(num_sqrt(x));
+    case GLES_NUMOP_RSQRT: return num_to_double(num_rsqrt(x));
+    case GLES_NUMOP_SIN_DEG: num_sincos_deg(x, &s, &c); return num_to_double(s);
+    case GLES_NUMOP_COS_DEG: num_sincos_deg(x, &s, &c); return num_to_double(c);
+    case GLES_NUMOP_TO_UNORM8: return num_to_unorm(x, 255);
+    case GLES_NUMOP_FROM_UNORM8: return num_to_double(num_from_unorm((uint32_t)dbl_to_i64(a, 0, 255), 255));
+    default: return 0.0;
+    }
+}
+
 GlesContext *gles_context_create(int width, int height, int color_format,
                                  int depth_bits, int stencil_bits, int profile)
 {

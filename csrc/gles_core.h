@@ -58,6 +58,23 @@ void gles_debug_set(GlesContext *ctx, int flags);
 /* name of the span function the last triangle used (for path tests) */
 const char *gles_last_span_name(GlesContext *ctx);
 
+/* the numeric layer, for tests: converts a and b to NUM (exact for
+** multiples of 2^-16 in the fixed build), applies op, returns the result
+** as double; ops are GLES_NUMOP_* */
+#define GLES_NUMOP_FROM 0
+#define GLES_NUMOP_ADD 1
+#define GLES_NUMOP_SUB 2
+#define GLES_NUMOP_MUL 3
+#define GLES_NUMOP_DIV 4
+#define GLES_NUMOP_RECIP 5
+#define GLES_NUMOP_SQRT 6
+#define GLES_NUMOP_RSQRT 7
+#define GLES_NUMOP_SIN_DEG 8
+#define GLES_NUMOP_COS_DEG 9
+#define GLES_NUMOP_TO_UNORM8 10
+#define GLES_NUMOP_FROM_UNORM8 11
+double gles_num_eval(int op, double a, double b);
+
 /* {====================================================================
 ** state queries: up to 16 values into out; returns the count, 0 for an
 ** unknown pname (INVALID_ENUM is set); *kind receives a GLES_KIND_* */

@@ -5,12 +5,14 @@
 ** Produces: calls of the chosen span function for each row's run of pixels.
 **
 ** The fill rule. A pixel belongs to a triangle when its centre is strictly
-** inside every edge, or exactly on an edge that is a "top" or "left" edge.
+** inside every edge, or exactly on an edge that is a "left" or "bottom" edge.
 ** With the vertices made counter-clockwise (y up, GL window coordinates), an
-** edge from P to Q is left when it goes down (Qy < Py) and top when it is
-** horizontal and goes left (Qx < Px). An edge shared by two triangles runs
+** edge from P to Q is left when it goes down (Qy < Py) and bottom when it is
+** horizontal and goes right (Qx > Px). An edge shared by two triangles runs
 ** in opposite directions in each, so exactly one of them owns the pixels on
-** it: no gaps, no double hits.
+** it: no gaps, no double hits. This is the rule Mesa's llvmpipe applies in
+** GL window coordinates (the top-left rule of y-down memory order), so our
+** coverage can be compared with it pixel for pixel.
 **
 ** Scan conversion is exact and per row: for each pixel row the three edge
 ** inequalities E_i(px) = alpha_i * px + beta_i > 0 (or >= 0) are solved for
@@ -22,6 +24,7 @@
 ** skips drawing when the viewport misses the framebuffer), so products stay
 ** below 2^44.
 */
+#include <string.h>
 #include "raster.h"
 
 int64_t raster_area2(const Vertex *a, const Vertex *b, const Vertex *c)
@@ -39,8 +42,8 @@ static void edge_setup(TriSetup *t, int i, const Vertex *p, const Vertex *q, int
     t->ea[i] = A * one;
     t->eb[i] = B * one;
     t->ec[i] = A * (half - p->wx) + B * (half - p->wy);
-    /* top-left: left edges go down (A > 0), top edges go left (A == 0, B < 0) */
-    tie[i] = A > 0 || (A == 0 && B < 0);
+    /* left edges go down (A > 0), bottom edges go right (A == 0, B > 0) */
+    tie[i] = A > 0 || (A == 0 && B > 0);
 }
 
 void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const Vertex *c, const Vertex *pv)
@@ -70,6 +73,11 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
     for (int k = 0; k < 4; k++)
         t.flat[k] = pv->color[k];
     t.flat_packed = span_pack_color(ctx, t.flat);
+    /* smooth shading of three equal colours is that colour: use the
+    ** constant-colour span, which every path agrees on */
+    t.smooth = ctx->shade_model == GL_SMOOTH
+            && memcmp(a->color, b->color, sizeof a->color) | memcmp(a->color, c->color, sizeof a->color);
+    SpanFunc span = t.smooth ? ctx->span : ctx->span_const;
 
     /* rows whose centres lie within the vertical extent, clipped to the
     ** framebuffer and the scissor box */
@@ -111,6 +119,6 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
         if (drop_last && hi > lo)
             hi--;
         if (lo < hi)
-            ctx->span(ctx, &t, (int)py, (int)lo, (int)(hi - lo));
+            span(ctx, &t, (int)py, (int)lo, (int)(hi - lo));
     }
 }

@@ -13,6 +13,7 @@ struct TriSetup {
     ** pixel indices; positive inside, zero on the edge */
     int64_t ea[3], eb[3], ec[3];
     WgtSetup wgt;
+    int smooth;             /* colours vary over the triangle */
     NUM flat[4];            /* colour of the provoking vertex */
     uint32_t flat_packed;   /* the same in the framebuffer's format */
 };

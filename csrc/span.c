@@ -36,7 +36,7 @@ static void span_generic(GlesContext *ctx, const TriSetup *t, int y, int x0, int
 {
     const Vertex *v0 = t->v[0], *v1 = t->v[1], *v2 = t->v[2];
     const int depth = ctx->depth_test && ctx->depth;
-    const int smooth = ctx->shade_model == GL_SMOOTH;
+    const int smooth = t->smooth;
     const size_t row = (size_t)y * (size_t)ctx->width;
     int64_t e[3];
     for (int i = 0; i < 3; i++)
@@ -113,12 +113,14 @@ void span_choose(GlesContext *ctx)
     const int zless = depth && ctx->depth_func == GL_LESS && ctx->depth_mask;
     if (simple && !depth) {
         ctx->span = smooth ? span_smooth : span_flat;
+        ctx->span_const = span_flat;
         ctx->span_name = smooth ? "smooth" : "flat";
     } else if (simple && zless) {
         ctx->span = smooth ? span_smooth_zless : span_flat_zless;
+        ctx->span_const = span_flat_zless;
         ctx->span_name = smooth ? "smooth_zless" : "flat_zless";
     } else {
-        ctx->span = span_generic;
+        ctx->span = ctx->span_const = span_generic;
         ctx->span_name = "generic";
     }
 }

@@ -164,6 +164,7 @@ struct GlesContext {
     int need_eye;               /* user clip planes need eye coordinates */
     unsigned int clip_mask;     /* outcode bits that can be set */
     SpanFunc span;              /* chosen for the current state */
+    SpanFunc span_const;        /* the same state with a constant colour */
     const char *span_name;
     int debug;
 

@@ -28,7 +28,14 @@ Conventions of ``ctx.gl`` (shared with ``gles``):
 * ``glGet*v(...)`` take every argument except the output pointer and return a
   scalar for one value, else a numpy array;
 * ``glReadPixels(x, y, w, h, format, type)`` returns a new unpadded array, bottom
-  row first.
+  row first: uint8 (h, w, 4) for RGBA/UNSIGNED_BYTE, (h, w, 3) for RGB, uint16
+  (h, w) for the packed 16-bit types; for a pair it does not know, GL is still
+  called (so that it records its error) and the result is None;
+* ``glQueryMatrixxOES()`` returns (mantissa[16], exponent[16], status);
+  ``glGetPointerv`` and ``glMapBufferOES`` return addresses as ints;
+* misuse (a float for a GLfixed, a wrong dtype, an array shorter than the
+  command reads, a non-contiguous array) raises TypeError/ValueError before
+  any C code runs.
 
 Each ``ctx.gl`` function is bound to ``ctx``: if another :class:`MesaContext`
 was made current since, the call makes ``ctx`` current again first. The check
@@ -74,6 +81,7 @@ _EGL_CONFIG_ID = 0x3028
 _EGL_SAMPLES = 0x3031
 _EGL_SURFACE_TYPE = 0x3033
 _EGL_NONE = 0x3038
+_EGL_EXTENSIONS = 0x3055
 _EGL_RENDERABLE_TYPE = 0x3040
 _EGL_HEIGHT = 0x3056
 _EGL_WIDTH = 0x3057
@@ -544,6 +552,8 @@ def _from_sequence(obj: Any, dt: np.dtype) -> np.ndarray:
     except Exception as exc:
         raise TypeError(f"expected an array, bytes or a sequence of numbers, got "
                         f"{type(obj).__name__}") from exc
+    if a.size == 0:
+        return np.zeros(0, dt)
     kind = a.dtype.kind
     if kind not in "biuf":
         raise TypeError(f"expected a sequence of numbers, got {a.dtype} data")
@@ -563,8 +573,9 @@ def _vec(obj: Any, dt: np.dtype, need: int | None) -> tuple[int, Any]:
         a = obj
         adt = a.dtype
         # Signed and unsigned integers of the right size share a bit pattern.
-        if adt is not dt and adt != dt and not (adt.kind in "iu" and dt.kind in "iu"
-                              and adt.itemsize == dt.itemsize):
+        if (adt is not dt and adt != dt
+                and not (adt.kind in "iu" and dt.kind in "iu"
+                         and adt.itemsize == dt.itemsize)):
             raise TypeError(f"array of {dt} expected, got {adt}")
         _check_array(a)
     elif isinstance(obj, _BYTES_LIKE):
@@ -730,7 +741,7 @@ _STATE = _State()
 _GEN_GLOBALS: dict[str, Any] = {
     "np": np, "ctypes": ctypes, "_addr": _addr, "_vec": _vec, "_data": _data,
     "_raw": _raw, "_check_image": _check_image, "_check_indices": _check_indices,
-    "_cnt": _COUNTS.get, "_POINTER_QUERY": _POINTER_QUERY,
+    "_cnt": _COUNTS.get,
     "_READ_LAYOUTS": _READ_LAYOUTS, "_TEXTURE0": int(C.GL_TEXTURE0),
     "_PACK_ALIGNMENT": int(C.GL_PACK_ALIGNMENT),
 }
@@ -743,7 +754,7 @@ _ACTIVATE = ("        if _st.current is not _ctx:\n"
              "            _ctx._activate()\n")
 
 
-def _vector_count(proto: _Proto, p: _Param, names: list[str]) -> str:
+def _vector_count(p: _Param, names: list[str]) -> str:
     """Python expression: how many elements a typed input vector must hold."""
     if p.name == "m":
         return "16"
@@ -858,7 +869,7 @@ def _source(proto: _Proto) -> str:
                     "imageSize" if "imageSize" in names else "0")
                 body.append(f"        {n}_a, {n}_k = _raw({n}, {size})\n")
             else:
-                count = _vector_count(proto, p, names)
+                count = _vector_count(p, names)
                 body.append(f"        {n}_a, {n}_k = _vec({n}, _DT_{p.base}, {count})\n")
             call[i] = f"{n}_a"
             if name in ("glTexImage2D", "glTexSubImage2D"):
@@ -932,6 +943,9 @@ class _Libs:
             f = getattr(egl, fname)
             f.restype = res
             f.argtypes = args
+        client_extensions = (egl.eglQueryString(None, _EGL_EXTENSIONS) or b"").split()
+        if b"EGL_MESA_platform_surfaceless" not in client_extensions:
+            raise RuntimeError("EGL lacks EGL_MESA_platform_surfaceless (not Mesa?)")
         addr = egl.eglGetProcAddress(b"eglGetPlatformDisplayEXT")
         if not addr:
             raise RuntimeError("EGL has no eglGetPlatformDisplayEXT")
@@ -999,14 +1013,16 @@ def _acquire_display(libs: _Libs, driver: str) -> _Display:
             if d.driver == driver:
                 d.users += 1
                 return d
-        for d in _DISPLAYS:
-            if d.users == 0:
-                if d.driver is not None:
-                    libs.egl.eglTerminate(d.handle)
-                    d.driver = None
-                _initialise(libs, d, driver)
-                d.users += 1
-                return d
+        # A fresh display first; else re-initialise one nobody uses.
+        idle = [d for d in _DISPLAYS if d.driver is None]
+        idle += [d for d in _DISPLAYS if d.driver is not None and d.users == 0]
+        for d in idle:
+            if d.driver is not None:
+                libs.egl.eglTerminate(d.handle)
+                d.driver = None
+            _initialise(libs, d, driver)
+            d.users += 1
+            return d
     raise RuntimeError(f"cannot open a Mesa display for {driver!r}: every display is "
                        "in use by another driver; use a subprocess")
 
