@@ -35,6 +35,7 @@ static void lerp_vertex(Vertex *r, const Vertex *p, const Vertex *q, CLIPT t)
         for (int i = 0; i < 4; i++)
             r->tex[u][i] = num_lerp(p->tex[u][i], q->tex[u][i], t);
     r->point_size = num_lerp(p->point_size, q->point_size, t);
+    r->outcode = CLIP_NEW_VERTEX;
 }
 
 /* the point where edge (a, b) meets plane `bit`; a and b are on opposite sides */

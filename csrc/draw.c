@@ -125,11 +125,10 @@ static void triangle(Batch *b, int64_t i0, int64_t i1, int64_t i2)
     int n = clip_polygon(ctx, in, 3, codes, poly, scratch);
     if (n < 3)
         return;
-    /* new vertices need window coordinates; originals inside have them */
+    /* an original vertex survives clipping only when it is inside every
+    ** plane, so it has window coordinates; new ones (in scratch) need them */
     for (int i = 0; i < n; i++)
-        if (poly[i] >= scratch && poly[i] < scratch + 2 * CLIP_MAX_VERTS)
-            vertex_window(ctx, (Vertex *)poly[i]);
-        else if (poly[i]->outcode)
+        if (poly[i]->outcode & CLIP_NEW_VERTEX)
             vertex_window(ctx, (Vertex *)poly[i]);
     int64_t area2 = 0;
     for (int i = 1; i + 1 < n; i++)

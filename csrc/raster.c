@@ -46,6 +46,58 @@ static void edge_setup(TriSetup *t, int i, const Vertex *p, const Vertex *q, int
     tie[i] = A > 0 || (A == 0 && B > 0);
 }
 
+/* One edge's covered-run bound, stepped row by row. With
+** E(px) = al * px + be(py), be(py) = eb * py + ec, the bound for
+** al > 0 is the least px with E > 0 (E >= 0 on a tie edge):
+**     tie: ceil(-be / al) = -floor(be / al);  else floor(-be / al) + 1
+** and for al < 0 the exclusive upper bound:
+**     tie: floor(be / -al) + 1;  else ceil(be / -al) = -floor(-be / -al).
+** Each is sign * floor(n / d) + bias with n = +-be, d = |al|; n changes by
+** +-eb per row, so q = floor(n / d) and r = n - q d step exactly. */
+typedef struct EdgeStep {
+    int kind;          /* +1 lower bound, -1 upper bound, 0 horizontal */
+    int inside;        /* horizontal edges: every row is inside */
+    int64_t sign, bias;
+    int64_t q, r, d;   /* n = q d + r, 0 <= r < d */
+    int64_t dq, dr;    /* the per-row step of n, as dq d + dr */
+} EdgeStep;
+
+static void step_init(EdgeStep *e, int64_t al, int64_t eb, int64_t ec, int tie, int64_t y0)
+{
+    int64_t be = eb * y0 + ec;
+    e->kind = al > 0 ? 1 : (al < 0 ? -1 : 0);
+    e->inside = be > 0 || (be == 0 && tie);
+    if (e->kind == 0) {
+        e->d = 1;
+        e->q = e->r = e->dq = e->dr = e->sign = e->bias = 0;
+        return;
+    }
+    int64_t n, s;
+    if (al > 0) {
+        e->d = al;
+        if (tie) { n = be; s = eb; e->sign = -1; e->bias = 0; }
+        else { n = -be; s = -eb; e->sign = 1; e->bias = 1; }
+    } else {
+        e->d = -al;
+        if (tie) { n = be; s = eb; e->sign = 1; e->bias = 1; }
+        else { n = -be; s = -eb; e->sign = -1; e->bias = 0; }
+    }
+    e->q = i64_floor_div(n, e->d);
+    e->r = n - e->q * e->d;
+    e->dq = i64_floor_div(s, e->d);
+    e->dr = s - e->dq * e->d;
+}
+
+static inline void step_next(EdgeStep *e)
+{
+    e->q += e->dq;
+    e->r += e->dr;
+    if (e->r >= e->d) {
+        e->q++;
+        e->r -= e->d;
+    }
+}
+
 void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const Vertex *c, const Vertex *pv)
 {
     int64_t area2 = raster_area2(a, b, c);
@@ -100,22 +152,29 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
     if (y1 > cy1 - 1) y1 = cy1 - 1;
     int drop_last = (ctx->debug & GLES_DEBUG_DROP_LAST_PIXEL) != 0;
 
+    if (y0 > y1)
+        return;
+    /* Per edge, the row's bound is sign * floor(n / d) + bias with n linear
+    ** in the row: one division at the first row, then exact stepping. */
+    EdgeStep st[3];
+    for (int i = 0; i < 3; i++)
+        step_init(&st[i], t.ea[i], t.eb[i], t.ec[i], tie[i], y0);
     for (int64_t py = y0; py <= y1; py++) {
         int64_t lo = cx0, hi = cx1; /* covered run is [lo, hi) */
         for (int i = 0; i < 3; i++) {
-            int64_t al = t.ea[i], be = t.eb[i] * py + t.ec[i];
-            if (al > 0) {
-                /* al*px + be > 0  <=>  px > -be/al ; tie: px >= -be/al */
-                int64_t m = tie[i] ? i64_ceil_div(-be, al) : i64_floor_div(-be, al) + 1;
+            const EdgeStep *e = &st[i];
+            if (e->kind > 0) {
+                int64_t m = e->sign * e->q + e->bias;
                 if (m > lo) lo = m;
-            } else if (al < 0) {
-                /* px < be/(-al) ; tie: px <= be/(-al) */
-                int64_t m = tie[i] ? i64_floor_div(be, -al) + 1 : i64_ceil_div(be, -al);
+            } else if (e->kind < 0) {
+                int64_t m = e->sign * e->q + e->bias;
                 if (m < hi) hi = m;
-            } else if (!(be > 0 || (be == 0 && tie[i]))) {
+            } else if (!e->inside) {
                 hi = lo;
             }
         }
+        for (int i = 0; i < 3; i++)
+            step_next(&st[i]);
         if (drop_last && hi > lo)
             hi--;
         if (lo < hi)

@@ -16,6 +16,9 @@
 #define CLIP_FAR 32u
 #define CLIP_W 64u
 #define CLIP_USER0 128u
+/* not a plane: set on vertices made by clipping, which need window
+** coordinates once clipping is done */
+#define CLIP_NEW_VERTEX 0x80000000u
 
 /* derived state for transformation (composite matrix, clip mask) */
 void vertex_validate(GlesContext *ctx);
