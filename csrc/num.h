@@ -494,24 +494,35 @@ typedef struct WgtSetup {
     int affine;          /* all w equal: perspective weights are linear */
 } WgtSetup;
 
-static inline void wgt_setup(WgtSetup *s, int64_t area2, const NUM w[3])
+/* 1/w of a vertex as mant * 2^exp (relative scale: only ratios are used) */
+typedef struct RecipW {
+    int64_t mant;        /* 30 significant bits */
+    int exp;
+} RecipW;
+
+static inline RecipW recipw_of(NUM w)
+{
+    RecipW q;
+    int64_t r = ((int64_t)1 << 62) / (w > 0 ? w : 1);   /* 2^62 / w_raw */
+    int rb = u64_bits((uint64_t)r) - 30;
+    q.mant = rb > 0 ? r >> rb : r;
+    q.exp = rb;
+    return q;
+}
+
+static inline void wgt_setup(WgtSetup *s, int64_t area2, const NUM w[3], const RecipW q[3])
 {
     int b = u64_bits((uint64_t)area2);
     s->eshift = b > 31 ? b - 31 : 0;
     s->lin_recip = ((int64_t)1 << 61) / (area2 >> s->eshift);
     s->affine = (w[0] == w[1] && w[1] == w[2]);
-    int smax = -1000;
-    int sh[3];
+    int smax = q[0].exp > q[1].exp ? q[0].exp : q[1].exp;
+    if (q[2].exp > smax)
+        smax = q[2].exp;
     for (int i = 0; i < 3; i++) {
-        int64_t r = ((int64_t)1 << 62) / (w[i] > 0 ? w[i] : 1);     /* 2^62 / w_raw */
-        int rb = u64_bits((uint64_t)r) - 30;
-        sh[i] = rb;
-        s->mant[i] = rb > 0 ? r >> rb : r;
-        if (rb > smax)
-            smax = rb;
+        s->mant[i] = q[i].mant;
+        s->qshift[i] = smax - q[i].exp;
     }
-    for (int i = 0; i < 3; i++)
-        s->qshift[i] = smax - sh[i];
 }
 
 static inline void wgt_linear(const WgtSetup *s, const int64_t e[3], WGT out[3])
@@ -586,12 +597,16 @@ typedef struct WgtSetup {
     int affine;
 } WgtSetup;
 
-static inline void wgt_setup(WgtSetup *s, int64_t area2, const NUM w[3])
+typedef NUM RecipW;
+
+static inline RecipW recipw_of(NUM w) { return (NUM)1 / w; }
+
+static inline void wgt_setup(WgtSetup *s, int64_t area2, const NUM w[3], const RecipW q[3])
 {
     s->inv_area = (NUM)1 / (NUM)area2;
     s->affine = (w[0] == w[1] && w[1] == w[2]);
     for (int i = 0; i < 3; i++)
-        s->q[i] = (NUM)1 / w[i];
+        s->q[i] = q[i];
 }
 
 static inline void wgt_linear(const WgtSetup *s, const int64_t e[3], WGT out[3])

@@ -56,7 +56,8 @@ static void edge_setup(TriSetup *t, int i, const Vertex *p, const Vertex *q, int
 ** +-eb per row, so q = floor(n / d) and r = n - q d step exactly. */
 typedef struct EdgeStep {
     int kind;          /* +1 lower bound, -1 upper bound, 0 horizontal */
-    int inside;        /* horizontal edges: every row is inside */
+    int tie;
+    int64_t be, eb;    /* horizontal edges: E of the row, and its step */
     int64_t sign, bias;
     int64_t q, r, d;   /* n = q d + r, 0 <= r < d */
     int64_t dq, dr;    /* the per-row step of n, as dq d + dr */
@@ -66,7 +67,9 @@ static void step_init(EdgeStep *e, int64_t al, int64_t eb, int64_t ec, int tie, 
 {
     int64_t be = eb * y0 + ec;
     e->kind = al > 0 ? 1 : (al < 0 ? -1 : 0);
-    e->inside = be > 0 || (be == 0 && tie);
+    e->tie = tie;
+    e->be = be;
+    e->eb = eb;
     if (e->kind == 0) {
         e->d = 1;
         e->q = e->r = e->dq = e->dr = e->sign = e->bias = 0;
@@ -90,6 +93,10 @@ static void step_init(EdgeStep *e, int64_t al, int64_t eb, int64_t ec, int tie, 
 
 static inline void step_next(EdgeStep *e)
 {
+    if (e->kind == 0) {
+        e->be += e->eb;
+        return;
+    }
     e->q += e->dq;
     e->r += e->dr;
     if (e->r >= e->d) {
@@ -121,7 +128,8 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
         for (int i = 0; i < 3; i++)
             tie[i] = !tie[i]; /* shared edges now double-hit or gap */
     NUM w[3] = { a->clip[3], b->clip[3], c->clip[3] };
-    wgt_setup(&t.wgt, area2, w);
+    RecipW q[3] = { a->rw, b->rw, c->rw };
+    wgt_setup(&t.wgt, area2, w, q);
     for (int k = 0; k < 4; k++)
         t.flat[k] = pv->color[k];
     t.flat_packed = span_pack_color(ctx, t.flat);
@@ -169,8 +177,8 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
             } else if (e->kind < 0) {
                 int64_t m = e->sign * e->q + e->bias;
                 if (m < hi) hi = m;
-            } else if (!e->inside) {
-                hi = lo;
+            } else if (!(e->be > 0 || (e->be == 0 && e->tie))) {
+                hi = lo; /* the row is outside a horizontal edge */
             }
         }
         for (int i = 0; i < 3; i++)

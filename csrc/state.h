@@ -95,6 +95,7 @@ typedef struct Vertex {
     /* window position, valid when outcode == 0 or after clipping */
     int64_t wx, wy;         /* in subpixels */
     DEPTHV wz;              /* depth-buffer units */
+    RecipW rw;              /* 1/w for perspective-correct weights */
 } Vertex;
 
 /* {====================================================================

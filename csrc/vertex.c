@@ -71,6 +71,7 @@ void vertex_window(const GlesContext *ctx, Vertex *v)
     NUM w = v->clip[3];
     v->wx = (int64_t)vp[0] * one + (int64_t)vp[2] * (one / 2) + num_proj(v->clip[0], w, (int64_t)vp[2] * (one / 2));
     v->wy = (int64_t)vp[1] * one + (int64_t)vp[3] * (one / 2) + num_proj(v->clip[1], w, (int64_t)vp[3] * (one / 2));
+    v->rw = recipw_of(w);
     v->wz = depthv_from_clip(v->clip[2], w, num_from_double(ctx->depth_range[0]),
                              num_from_double(ctx->depth_range[1]), ctx->depth_max);
 }
