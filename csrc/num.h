@@ -556,8 +556,10 @@ static inline void wgt_persp(const WgtSetup *s, const int64_t e[3], WGT out[3])
         n[1] >>= sh;
         n[2] >>= sh;
     }
-    int64_t p1 = (n[1] * ((int64_t)1 << 30) + den / 2) / den;
-    int64_t p2 = (n[2] * ((int64_t)1 << 30) + den / 2) / den;
+    /* one division: n_i <= den < 2^32, so n_i * (2^62 / den) <= 2^62 */
+    int64_t recip = (((int64_t)1 << 62) + den / 2) / den;
+    int64_t p1 = (n[1] * recip + ((int64_t)1 << 31)) >> 32;
+    int64_t p2 = (n[2] * recip + ((int64_t)1 << 31)) >> 32;
     out[1] = (WGT)p1;
     out[2] = (WGT)p2;
     out[0] = (WGT)(WGT_ONE - p1 - p2);

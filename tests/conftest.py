@@ -1,0 +1,116 @@
+"""Shared helpers for the rendering tests.
+
+The usual scene is 1:1: ``glViewport(0, 0, w, h)`` with the projection
+``glOrthof(0, w, 0, h, -1, 1)`` and an identity modelview, so object x, y are
+window pixels and pixel (i, j) has its centre at (i + 1/2, j + 1/2). With
+power-of-two framebuffer sizes and vertex coordinates on the 1/256 grid
+(the rasterizer's subpixel grid), every build computes the window positions
+exactly, so expected coverage can be worked out from the input alone.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+import pytest
+
+import gles
+from gles import constants as C
+
+BUILDS = ("fixed", "float", "double")
+
+
+def make_ctx(numeric: str, w: int = 64, h: int = 64, **kw: Any) -> gles.Context:
+    """A context of the given build and size; keyword options go to gles.Context."""
+    return gles.Context(w, h, numeric=numeric, **kw)
+
+
+@pytest.fixture(params=BUILDS)
+def numeric(request: pytest.FixtureRequest) -> str:
+    """Each numeric build in turn."""
+    return request.param
+
+
+def set_ortho(gl: Any, w: int, h: int, near: float = -1.0, far: float = 1.0) -> None:
+    """Object units = window pixels, origin bottom-left; modelview identity."""
+    gl.glViewport(0, 0, w, h)
+    gl.glMatrixMode(C.GL_PROJECTION)
+    gl.glLoadIdentity()
+    gl.glOrthof(0.0, float(w), 0.0, float(h), near, far)
+    gl.glMatrixMode(C.GL_MODELVIEW)
+    gl.glLoadIdentity()
+
+
+def set_frustum(gl: Any, w: int, h: int, near: float = 1.0, far: float = 3.0) -> None:
+    """glFrustumf(-1, 1, -1, 1, near, far) over the whole framebuffer; modelview identity.
+
+    Eye x/(-z) in [-1, 1] maps to window x in [0, w] (and likewise for y).
+    """
+    gl.glViewport(0, 0, w, h)
+    gl.glMatrixMode(C.GL_PROJECTION)
+    gl.glLoadIdentity()
+    gl.glFrustumf(-1.0, 1.0, -1.0, 1.0, near, far)
+    gl.glMatrixMode(C.GL_MODELVIEW)
+    gl.glLoadIdentity()
+
+
+def draw_arrays(gl: Any, verts: np.ndarray, colors: np.ndarray | None = None,
+                mode: int = C.GL_TRIANGLES, indices: np.ndarray | None = None) -> None:
+    """Draw float32 vertices (n, 2|3|4) with optional ubyte RGBA colours (n, 4)
+    under whatever matrices are current."""
+    v = np.ascontiguousarray(verts, dtype=np.float32)
+    gl.glEnableClientState(C.GL_VERTEX_ARRAY)
+    gl.glVertexPointer(v.shape[1], C.GL_FLOAT, 0, v)
+    if colors is not None:
+        col = np.ascontiguousarray(colors, dtype=np.uint8)
+        gl.glEnableClientState(C.GL_COLOR_ARRAY)
+        gl.glColorPointer(4, C.GL_UNSIGNED_BYTE, 0, col)
+    else:
+        gl.glDisableClientState(C.GL_COLOR_ARRAY)
+    if indices is None:
+        gl.glDrawArrays(mode, 0, len(v))
+    else:
+        idx = np.ascontiguousarray(indices, dtype=np.uint16)
+        gl.glDrawElements(mode, len(idx), C.GL_UNSIGNED_SHORT, idx)
+
+
+def draw_tris(gl: Any, verts_xy_window: Any, colors: Any = None, mode: int = C.GL_TRIANGLES,
+              indices: Any = None, w: int | None = None, h: int | None = None) -> None:
+    """Draw triangles given in window pixels (x, y) or (x, y, z) under the 1:1 ortho setup.
+
+    ``w``, ``h`` default to the framebuffer's size (taken from the GL
+    object's context).
+    """
+    if w is None or h is None:
+        ctx = gl._context
+        w, h = ctx.width, ctx.height
+    set_ortho(gl, w, h)
+    draw_arrays(gl, np.asarray(verts_xy_window, dtype=np.float32),
+                None if colors is None else np.asarray(colors, dtype=np.uint8), mode,
+                None if indices is None else np.asarray(indices))
+
+
+def read_rgba(ctx: gles.Context) -> np.ndarray:
+    """The framebuffer as uint8 RGBA (h, w, 4), bottom row first (row index = window y)."""
+    out = ctx.gl.glReadPixels(0, 0, ctx.width, ctx.height, C.GL_RGBA, C.GL_UNSIGNED_BYTE)
+    assert out is not None
+    return out
+
+
+def clear(ctx: gles.Context, rgba: tuple = (0.0, 0.0, 0.0, 0.0), depth: float | None = None) -> None:
+    """Clear colour (and depth when given) with every mask on."""
+    gl = ctx.gl
+    gl.glColorMask(True, True, True, True)
+    gl.glClearColor(*rgba)
+    mask = C.GL_COLOR_BUFFER_BIT
+    if depth is not None:
+        gl.glDepthMask(True)
+        gl.glClearDepthf(depth)
+        mask |= C.GL_DEPTH_BUFFER_BIT
+    gl.glClear(mask)
+
+
+def coverage(ctx: gles.Context) -> np.ndarray:
+    """Boolean (h, w): pixels whose colour is not the cleared zero, bottom row first."""
+    return read_rgba(ctx).any(axis=2)
