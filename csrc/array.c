@@ -142,7 +142,8 @@ void array_init(GlesContext *ctx)
         ArrayState *a = &ctx->arrays[i];
         memset(a, 0, sizeof *a);
         a->size = 4;
-        a->type = GL_FLOAT;
+        /* Table 6.4: FLOAT, or FIXED where FLOAT does not exist (Common-Lite) */
+        a->type = ctx->profile == GLES_PROFILE_COMMON_LITE ? GL_FIXED : GL_FLOAT;
         a->nbytes = -1;
     }
     ctx->arrays[ARR_NORMAL].size = 3;
@@ -218,17 +219,17 @@ static int type_bit(unsigned int type)
     }
 }
 
-static void set_pointer(GlesContext *ctx, int index, int size, int min_size, int max_size,
+static int set_pointer(GlesContext *ctx, int index, int size, int min_size, int max_size,
                         unsigned int type, int types, int stride, const void *ptr, int64_t nbytes)
 {
     if (size < min_size || size > max_size || stride < 0) {
         ctx_error(ctx, GL_INVALID_VALUE);
-        return;
+        return 0;
     }
     /* Common-Lite has no FLOAT arrays (Appendix C) */
     if (!(type_bit(type) & types) || (type == GL_FLOAT && ctx->profile == GLES_PROFILE_COMMON_LITE)) {
         ctx_error(ctx, GL_INVALID_ENUM);
-        return;
+        return 0;
     }
     ArrayState *a = &ctx->arrays[index];
     a->size = size;
@@ -240,32 +241,33 @@ static void set_pointer(GlesContext *ctx, int index, int size, int min_size, int
     a->buffer = ctx->array_buffer;
     a->buffer_name = ctx->array_buffer ? ctx->array_buffer->name : 0;
     a->nbytes = ctx->array_buffer ? -1 : nbytes;
+    return 1;
 }
 
-void gles_VertexPointer(GlesContext *ctx, int size, unsigned int type, int stride, const void *ptr, int64_t nbytes)
+int gles_VertexPointer(GlesContext *ctx, int size, unsigned int type, int stride, const void *ptr, int64_t nbytes)
 {
-    set_pointer(ctx, ARR_VERTEX, size, 2, 4, type, T_BYTE | T_SHORT | T_FIXED | T_FLOAT, stride, ptr, nbytes);
+    return set_pointer(ctx, ARR_VERTEX, size, 2, 4, type, T_BYTE | T_SHORT | T_FIXED | T_FLOAT, stride, ptr, nbytes);
 }
 
-void gles_ColorPointer(GlesContext *ctx, int size, unsigned int type, int stride, const void *ptr, int64_t nbytes)
+int gles_ColorPointer(GlesContext *ctx, int size, unsigned int type, int stride, const void *ptr, int64_t nbytes)
 {
-    set_pointer(ctx, ARR_COLOR, size, 4, 4, type, T_UBYTE | T_FIXED | T_FLOAT, stride, ptr, nbytes);
+    return set_pointer(ctx, ARR_COLOR, size, 4, 4, type, T_UBYTE | T_FIXED | T_FLOAT, stride, ptr, nbytes);
 }
 
-void gles_NormalPointer(GlesContext *ctx, unsigned int type, int stride, const void *ptr, int64_t nbytes)
+int gles_NormalPointer(GlesContext *ctx, unsigned int type, int stride, const void *ptr, int64_t nbytes)
 {
-    set_pointer(ctx, ARR_NORMAL, 3, 3, 3, type, T_BYTE | T_SHORT | T_FIXED | T_FLOAT, stride, ptr, nbytes);
+    return set_pointer(ctx, ARR_NORMAL, 3, 3, 3, type, T_BYTE | T_SHORT | T_FIXED | T_FLOAT, stride, ptr, nbytes);
 }
 
-void gles_TexCoordPointer(GlesContext *ctx, int size, unsigned int type, int stride, const void *ptr, int64_t nbytes)
+int gles_TexCoordPointer(GlesContext *ctx, int size, unsigned int type, int stride, const void *ptr, int64_t nbytes)
 {
     int unit = (int)(ctx->client_active_texture - GL_TEXTURE0);
-    set_pointer(ctx, ARR_TEXCOORD0 + unit, size, 2, 4, type, T_BYTE | T_SHORT | T_FIXED | T_FLOAT, stride, ptr, nbytes);
+    return set_pointer(ctx, ARR_TEXCOORD0 + unit, size, 2, 4, type, T_BYTE | T_SHORT | T_FIXED | T_FLOAT, stride, ptr, nbytes);
 }
 
-void gles_PointSizePointerOES(GlesContext *ctx, unsigned int type, int stride, const void *ptr, int64_t nbytes)
+int gles_PointSizePointerOES(GlesContext *ctx, unsigned int type, int stride, const void *ptr, int64_t nbytes)
 {
-    set_pointer(ctx, ARR_POINT_SIZE, 1, 1, 1, type, T_FIXED | T_FLOAT, stride, ptr, nbytes);
+    return set_pointer(ctx, ARR_POINT_SIZE, 1, 1, 1, type, T_FIXED | T_FLOAT, stride, ptr, nbytes);
 }
 
 static ArrayState *array_of_pointer_pname(GlesContext *ctx, unsigned int pname)

@@ -13,6 +13,8 @@
 #include "matrix.h"
 #include "array.h"
 
+static int cap_index(unsigned int cap);
+
 const char *gles_numeric_name(void) { return NUM_NAME; }
 
 int ctx_message(GlesContext *ctx, int status, const char *fmt, ...)
@@ -126,6 +128,7 @@ GlesContext *gles_context_create(int width, int height, int color_format,
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
         ctx->cur_tex_n[u][3] = NUM_ONE;
 
+    ctx->enable_bits = 1u << cap_index(GL_DITHER); /* §4.1.8: dither starts enabled */
     array_init(ctx);
     ctx->dirty = DIRTY_ALL;
     return ctx;
@@ -163,7 +166,6 @@ static const unsigned int cap_table[] = {
     GL_NORMALIZE, GL_POINT_SMOOTH, GL_POLYGON_OFFSET_FILL, GL_RESCALE_NORMAL,
     GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_ALPHA_TO_ONE, GL_SAMPLE_COVERAGE,
     GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_2D, GL_POINT_SPRITE_OES,
-    GL_MATRIX_PALETTE_OES,
 };
 enum { CAP_COUNT = sizeof cap_table / sizeof cap_table[0] };
 

@@ -130,12 +130,13 @@ void gles_MultiTexCoord4(GlesContext *ctx, unsigned int target, double s, double
 
 /* {====================================================================
 ** vertex arrays and buffer objects; nbytes is the length of a client
-** array (-1 when unknown), ignored while a buffer object is bound */
-void gles_VertexPointer(GlesContext *ctx, int size, unsigned int type, int stride, const void *ptr, int64_t nbytes);
-void gles_ColorPointer(GlesContext *ctx, int size, unsigned int type, int stride, const void *ptr, int64_t nbytes);
-void gles_NormalPointer(GlesContext *ctx, unsigned int type, int stride, const void *ptr, int64_t nbytes);
-void gles_TexCoordPointer(GlesContext *ctx, int size, unsigned int type, int stride, const void *ptr, int64_t nbytes);
-void gles_PointSizePointerOES(GlesContext *ctx, unsigned int type, int stride, const void *ptr, int64_t nbytes);
+** array (-1 when unknown), ignored while a buffer object is bound; the
+** pointer commands return 1 when the array was set, 0 on a GL error */
+int gles_VertexPointer(GlesContext *ctx, int size, unsigned int type, int stride, const void *ptr, int64_t nbytes);
+int gles_ColorPointer(GlesContext *ctx, int size, unsigned int type, int stride, const void *ptr, int64_t nbytes);
+int gles_NormalPointer(GlesContext *ctx, unsigned int type, int stride, const void *ptr, int64_t nbytes);
+int gles_TexCoordPointer(GlesContext *ctx, int size, unsigned int type, int stride, const void *ptr, int64_t nbytes);
+int gles_PointSizePointerOES(GlesContext *ctx, unsigned int type, int stride, const void *ptr, int64_t nbytes);
 /* the pointer (or offset) last given for an array, for GetPointerv */
 uintptr_t gles_GetPointer(GlesContext *ctx, unsigned int pname);
 void gles_GenBuffers(GlesContext *ctx, int n, unsigned int *names);

@@ -406,8 +406,9 @@ class GLBase:
     def _set_pointer(self, key: Any, fn: Any, args: tuple, gltype: int, pointer: Pointer, what: str) -> None:
         ptr, nbytes, keep = self._pointer(pointer, gltype, C.GL_ARRAY_BUFFER_BINDING, what)
         with self._lock:
-            fn(self._p, *args, ptr, nbytes)
-            self._keep[key] = keep
+            # a rejected call leaves the old array in use: keep holding it
+            if fn(self._p, *args, ptr, nbytes):
+                self._keep[key] = keep
 
     def glVertexPointer(self, size: int, type: int, stride: int, pointer: Pointer) -> None:
         self._set_pointer("vertex", self._lib.gles_VertexPointer, (size, type, stride), type, pointer,
