@@ -24,12 +24,14 @@ static int before(const Vertex *a, const Vertex *b)
     return 0;
 }
 
-static void lerp_vertex(Vertex *r, const Vertex *p, const Vertex *q, CLIPT t)
+static void lerp_vertex(Vertex *r, const Vertex *p, const Vertex *q, CLIPT t, int two_sided)
 {
     for (int i = 0; i < 4; i++) {
         r->clip[i] = num_lerp(p->clip[i], q->clip[i], t);
         r->eye[i] = num_lerp(p->eye[i], q->eye[i], t);
         r->color[i] = num_lerp(p->color[i], q->color[i], t);
+        /* back colours exist only with two-sided lighting */
+        r->color_back[i] = two_sided ? num_lerp(p->color_back[i], q->color_back[i], t) : NUM_ZERO;
     }
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
         for (int i = 0; i < 4; i++)
@@ -48,7 +50,7 @@ static void intersect(const GlesContext *ctx, Vertex *r, const Vertex *a, const 
     }
     NUM da = vertex_plane_distance(ctx, a, bit);
     NUM db = vertex_plane_distance(ctx, b, bit);
-    lerp_vertex(r, a, b, num_clip_t(da, db));
+    lerp_vertex(r, a, b, num_clip_t(da, db), ctx->two_sided);
 }
 
 int clip_polygon(const GlesContext *ctx, const Vertex *const *in, int n, unsigned int codes,

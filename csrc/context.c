@@ -12,6 +12,7 @@
 #include "state.h"
 #include "matrix.h"
 #include "array.h"
+#include "light.h"
 
 static int cap_index(unsigned int cap);
 
@@ -57,6 +58,7 @@ double gles_num_eval(int op, double a, double b)
     case GLES_NUMOP_SIN_DEG: num_sincos_deg(x, &s, &c); return num_to_double(s);
     case GLES_NUMOP_COS_DEG: num_sincos_deg(x, &s, &c); return num_to_double(c);
     case GLES_NUMOP_TO_UNORM8: return num_to_unorm(x, 255);
+    case GLES_NUMOP_POW01: return num_to_double(num_pow01(x, y));
     case GLES_NUMOP_FROM_UNORM8: return num_to_double(num_from_unorm((uint32_t)dbl_to_i64(a, 0, 255), 255));
     default: return 0.0;
     }
@@ -129,6 +131,7 @@ GlesContext *gles_context_create(int width, int height, int color_format,
         ctx->cur_tex_n[u][3] = NUM_ONE;
 
     ctx->enable_bits = 1u << cap_index(GL_DITHER); /* §4.1.8: dither starts enabled */
+    light_init(ctx);
     array_init(ctx);
     ctx->dirty = DIRTY_ALL;
     return ctx;
@@ -184,10 +187,9 @@ static void set_enable(GlesContext *ctx, unsigned int cap, int on)
         ctx->dirty |= DIRTY_CLIP;
         return;
     }
-    if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + 8) {
-        /* lights are state of the lighting stage; remembered for IsEnabled */
-        unsigned int bit = 1u << (cap - GL_LIGHT0 + 24);
-        ctx->enable_bits = on ? (ctx->enable_bits | bit) : (ctx->enable_bits & ~bit);
+    if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + GLES_MAX_LIGHTS) {
+        ctx->light_enabled[cap - GL_LIGHT0] = on;
+        ctx->dirty |= DIRTY_LIGHT;
         return;
     }
     int i = cap_index(cap);
@@ -201,6 +203,13 @@ static void set_enable(GlesContext *ctx, unsigned int cap, int on)
     case GL_CULL_FACE: ctx->cull_enabled = on; break;
     case GL_DEPTH_TEST: ctx->depth_test = on; break;
     case GL_SCISSOR_TEST: ctx->scissor_test = on; break;
+    case GL_LIGHTING: ctx->lighting = on; ctx->dirty |= DIRTY_LIGHT | DIRTY_CLIP; break;
+    case GL_NORMALIZE: ctx->normalize = on; break;
+    case GL_RESCALE_NORMAL: ctx->rescale_normal = on; break;
+    case GL_COLOR_MATERIAL:
+        ctx->color_material = on;
+        light_track_color(ctx);
+        break;
     default: break;
     }
     ctx->dirty |= DIRTY_SPAN;
@@ -213,8 +222,8 @@ unsigned char gles_IsEnabled(GlesContext *ctx, unsigned int cap)
 {
     if (cap >= GL_CLIP_PLANE0 && cap < GL_CLIP_PLANE0 + GLES_MAX_CLIP_PLANES)
         return (unsigned char)ctx->clip_plane_enabled[cap - GL_CLIP_PLANE0];
-    if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + 8)
-        return (ctx->enable_bits >> (cap - GL_LIGHT0 + 24)) & 1;
+    if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + GLES_MAX_LIGHTS)
+        return (unsigned char)ctx->light_enabled[cap - GL_LIGHT0];
     int i = cap_index(cap);
     if (i >= 0)
         return (ctx->enable_bits >> i) & 1;
@@ -390,6 +399,7 @@ void gles_Color4(GlesContext *ctx, double r, double g, double b, double a)
         ctx->cur_color[i] = v[i];
         ctx->cur_color_n[i] = num_from_double(v[i]);
     }
+    light_track_color(ctx);
 }
 
 void gles_Normal3(GlesContext *ctx, double x, double y, double z)
@@ -438,6 +448,9 @@ int gles_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)
     case GL_MAX_TEXTURE_STACK_DEPTH: return put1(out, kind, GLES_KIND_INT, GLES_TEXTURE_STACK_DEPTH);
     case GL_MAX_CLIP_PLANES: return put1(out, kind, GLES_KIND_INT, GLES_MAX_CLIP_PLANES);
     case GL_MAX_TEXTURE_UNITS: return put1(out, kind, GLES_KIND_INT, GLES_MAX_TEXTURE_UNITS);
+    case GL_MAX_LIGHTS: return put1(out, kind, GLES_KIND_INT, GLES_MAX_LIGHTS);
+    case GL_LIGHT_MODEL_AMBIENT: return put(out, kind, GLES_KIND_NORM, 4, ctx->light_model_ambient);
+    case GL_LIGHT_MODEL_TWO_SIDE: return put1(out, kind, GLES_KIND_BOOL, ctx->light_model_two_side);
     case GL_MAX_VIEWPORT_DIMS:
         v[0] = v[1] = GLES_MAX_VIEWPORT_DIM;
         return put(out, kind, GLES_KIND_INT, 2, v);

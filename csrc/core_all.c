@@ -7,6 +7,7 @@
 #include "context.c"
 #include "matrix.c"
 #include "array.c"
+#include "light.c"
 #include "vertex.c"
 #include "clip.c"
 #include "raster.c"

@@ -89,13 +89,18 @@ static void attribs(Batch *b, int64_t index, Vertex *v)
 }
 
 /* §3.5.1: facing from the sign of the window-space area */
+static int is_front(const GlesContext *ctx, int64_t area2)
+{
+    return (area2 > 0) == (ctx->front_face == GL_CCW);
+}
+
 static int culled(const GlesContext *ctx, int64_t area2)
 {
     if (!ctx->cull_enabled)
         return 0;
-    int front = (area2 > 0) == (ctx->front_face == GL_CCW);
     if (ctx->cull_mode == GL_FRONT_AND_BACK)
         return 1;
+    int front = is_front(ctx, area2);
     return ctx->cull_mode == GL_FRONT ? front : !front;
 }
 
@@ -113,7 +118,7 @@ static void triangle(Batch *b, int64_t i0, int64_t i1, int64_t i2)
         attribs(b, i0, v0);
         attribs(b, i1, v1);
         attribs(b, i2, v2);
-        raster_triangle(ctx, v0, v1, v2, v2);
+        raster_triangle(ctx, v0, v1, v2, v2, !is_front(ctx, area2));
         return;
     }
     attribs(b, i0, v0);
@@ -136,7 +141,7 @@ static void triangle(Batch *b, int64_t i0, int64_t i1, int64_t i2)
     if (area2 == 0 || culled(ctx, area2))
         return;
     for (int i = 1; i + 1 < n; i++)
-        raster_triangle(ctx, poly[0], poly[i], poly[i + 1], v2);
+        raster_triangle(ctx, poly[0], poly[i], poly[i + 1], v2, !is_front(ctx, area2));
 }
 
 static void line(Batch *b, int64_t i0, int64_t i1)

@@ -73,6 +73,7 @@ const char *gles_last_span_name(GlesContext *ctx);
 #define GLES_NUMOP_COS_DEG 9
 #define GLES_NUMOP_TO_UNORM8 10
 #define GLES_NUMOP_FROM_UNORM8 11
+#define GLES_NUMOP_POW01 12
 double gles_num_eval(int op, double a, double b);
 
 /* {====================================================================
@@ -121,6 +122,16 @@ void gles_Frustum(GlesContext *ctx, double l, double r, double b, double t, doub
 void gles_Ortho(GlesContext *ctx, double l, double r, double b, double t, double n, double f);
 void gles_ClipPlane(GlesContext *ctx, unsigned int plane, const double *eq);
 void gles_GetClipPlane(GlesContext *ctx, unsigned int plane, double *eq);
+
+/* {====================================================================
+** lighting (§2.12): params holds 1 or 4 values as the pname needs; `vector`
+** is 0 for the scalar forms (Lightf...), which accept scalar pnames only.
+** The getters fill out (up to 4) and return the count (0 on a GL error). */
+void gles_Light(GlesContext *ctx, unsigned int light, unsigned int pname, const double *params, int vector);
+void gles_LightModel(GlesContext *ctx, unsigned int pname, const double *params, int vector);
+void gles_Material(GlesContext *ctx, unsigned int face, unsigned int pname, const double *params, int vector);
+int gles_GetLight(GlesContext *ctx, unsigned int light, unsigned int pname, double *out);
+int gles_GetMaterial(GlesContext *ctx, unsigned int face, unsigned int pname, double *out);
 
 /* {====================================================================
 ** current values */

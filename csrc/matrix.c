@@ -31,7 +31,7 @@ int matrix_kind(const NUM *m)
 {
     if (m[3] != NUM_ZERO || m[7] != NUM_ZERO || m[11] != NUM_ZERO || m[15] != NUM_ONE)
         return MAT_GENERAL;
-    for (int i = 0; i < 12; i++)
+    for (int i = 0; i < 15; i++) /* the translation column counts too */
         if (m[i] != ((i % 5 == 0) ? NUM_ONE : NUM_ZERO))
             return MAT_AFFINE;
     return MAT_IDENTITY;

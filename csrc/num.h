@@ -194,12 +194,14 @@ typedef float NUM;
 #define NUM_NAME "float"
 #define NUM_MAX ((NUM)3.402823466e38f)
 #define NUM_SQRT sqrtf
+#define NUM_POW powf
 #define NUM_FLOOR floorf
 #else
 typedef double NUM;
 #define NUM_NAME "double"
 #define NUM_MAX ((NUM)1.7976931348623157e308)
 #define NUM_SQRT sqrt
+#define NUM_POW pow
 #define NUM_FLOOR floor
 #endif
 #define NUM_IS_FIXED 0
@@ -384,6 +386,81 @@ static inline void num_sincos_deg(NUM deg, NUM *s, NUM *co)
     if (a == 270.0) { *s = -1; *co = 0; return; }
     *s = (NUM)sin(a * pi / 180.0);
     *co = (NUM)cos(a * pi / 180.0);
+}
+#endif
+/* }==================================================================== */
+
+/* {==================================================================== */
+/* Powers for lighting: x^s with x in [0,1], s in [0,128] (specular and spot
+** exponents). The fixed build computes exp2(s * log2(x)) in 64-bit integers
+** with 30 fraction bits: log2 by repeated squaring, exp2 by a table of
+** 2^(2^-i), so the error stays near 2^-16 whatever the exponent (a table
+** lookup alone grows with s). 0^0 is 1. */
+
+#if NUM_IS_FIXED
+/* log2(x) for raw x > 0, in 0.30 */
+static inline int64_t fx_log2(int32_t x)
+{
+    int b = u64_bits((uint64_t)x);
+    int64_t result = (int64_t)(b - 17) * ((int64_t)1 << 30);
+    uint64_t m = (uint64_t)x << (31 - b);        /* [2^30, 2^31): 1.30 */
+    for (int i = 1; i <= 30; i++) {
+        m = (m * m + ((uint64_t)1 << 29)) >> 30;  /* [1, 4) in 2.30 */
+        if (m >= ((uint64_t)2 << 30)) {
+            m >>= 1;
+            result += (int64_t)1 << (30 - i);
+        }
+    }
+    return result;
+}
+
+/* 2^y for y <= 0 in 0.30, as 16.16 */
+static inline NUM fx_exp2_neg(int64_t y)
+{
+    static const int64_t pow2_frac[30] = { /* 2^(2^-i) in 2.30, i = 1..30 */
+        1518500250LL, 1276901417LL, 1170923762LL, 1121280436LL,
+        1097253708LL, 1085434106LL, 1079572136LL, 1076653033LL,
+        1075196443LL, 1074468888LL, 1074105294LL, 1073923544LL,
+        1073832680LL, 1073787251LL, 1073764537LL, 1073753181LL,
+        1073747502LL, 1073744663LL, 1073743244LL, 1073742534LL,
+        1073742179LL, 1073742001LL, 1073741913LL, 1073741868LL,
+        1073741846LL, 1073741835LL, 1073741830LL, 1073741827LL,
+        1073741825LL, 1073741825LL,
+    };
+    if (y <= -((int64_t)20 << 30))
+        return 0;                                   /* below 2^-17: rounds to 0 */
+    int64_t ip = y >> 30;                           /* floor: arithmetic shift */
+    int64_t f = y - ip * ((int64_t)1 << 30);        /* [0, 2^30) */
+    int64_t r = (int64_t)1 << 30;
+    for (int i = 1; i <= 30; i++)
+        if (f & ((int64_t)1 << (30 - i)))
+            r = (r * pow2_frac[i - 1] + ((int64_t)1 << 29)) >> 30;
+    int sh = 14 + (int)(-ip);                       /* 2.30 -> 16.16, times 2^ip */
+    return (NUM)((r + ((int64_t)1 << (sh - 1))) >> sh);
+}
+
+static inline NUM num_pow01(NUM x, NUM s)
+{
+    if (s == 0)
+        return NUM_ONE;
+    if (x <= 0)
+        return 0;
+    if (x >= NUM_ONE)
+        return NUM_ONE;
+    int64_t l = fx_log2(x);                         /* < 0, 0.30 */
+    int64_t p = (l * s) / 65536;                    /* 0.30, s in 16.16 */
+    return fx_exp2_neg(p);
+}
+#else
+static inline NUM num_pow01(NUM x, NUM s)
+{
+    if (s == 0)
+        return 1;
+    if (!(x > 0))
+        return 0;
+    if (x >= 1)
+        return 1;
+    return NUM_POW(x, s);
 }
 #endif
 /* }==================================================================== */

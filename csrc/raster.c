@@ -105,7 +105,8 @@ static inline void step_next(EdgeStep *e)
     }
 }
 
-void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const Vertex *c, const Vertex *pv)
+void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const Vertex *c, const Vertex *pv,
+                     int back)
 {
     int64_t area2 = raster_area2(a, b, c);
     if (area2 == 0)
@@ -130,13 +131,17 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
     NUM w[3] = { a->clip[3], b->clip[3], c->clip[3] };
     RecipW q[3] = { a->rw, b->rw, c->rw };
     wgt_setup(&t.wgt, area2, w, q);
+    int use_back = back && ctx->two_sided;
+    for (int i = 0; i < 3; i++)
+        t.col[i] = use_back ? t.v[i]->color_back : t.v[i]->color;
+    const NUM *pc = use_back ? pv->color_back : pv->color;
     for (int k = 0; k < 4; k++)
-        t.flat[k] = pv->color[k];
+        t.flat[k] = pc[k];
     t.flat_packed = span_pack_color(ctx, t.flat);
     /* smooth shading of three equal colours is that colour: use the
     ** constant-colour span, which every path agrees on */
     t.smooth = ctx->shade_model == GL_SMOOTH
-            && memcmp(a->color, b->color, sizeof a->color) | memcmp(a->color, c->color, sizeof a->color);
+            && (memcmp(t.col[0], t.col[1], 4 * sizeof(NUM)) | memcmp(t.col[0], t.col[2], 4 * sizeof(NUM)));
     SpanFunc span = t.smooth ? ctx->span : ctx->span_const;
 
     /* rows whose centres lie within the vertical extent, clipped to the

@@ -13,14 +13,17 @@ struct TriSetup {
     ** pixel indices; positive inside, zero on the edge */
     int64_t ea[3], eb[3], ec[3];
     WgtSetup wgt;
+    const NUM *col[3];      /* each vertex's colour for the visible face */
     int smooth;             /* colours vary over the triangle */
     NUM flat[4];            /* colour of the provoking vertex */
     uint32_t flat_packed;   /* the same in the framebuffer's format */
 };
 
 /* rasterize a triangle whose vertices have window coordinates; `pv` is the
-** provoking vertex (flat shading) */
-void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const Vertex *c, const Vertex *pv);
+** provoking vertex (flat shading); `back` selects the back colours of
+** two-sided lighting */
+void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const Vertex *c, const Vertex *pv,
+                     int back);
 /* the signed window-space area (x2) of a triangle, counter-clockwise > 0 */
 int64_t raster_area2(const Vertex *a, const Vertex *b, const Vertex *c);
 

@@ -69,7 +69,7 @@ static void span_generic(GlesContext *ctx, const TriSetup *t, int y, int x0, int
             NUM c[4];
             wgt_persp(&t->wgt, e, p);
             for (int i = 0; i < 4; i++)
-                c[i] = wgt_lerp3(v0->color[i], v1->color[i], v2->color[i], p[0], p[1], p[2]);
+                c[i] = wgt_lerp3(t->col[0][i], t->col[1][i], t->col[2][i], p[0], p[1], p[2]);
             packed = span_pack_color(ctx, c);
         } else {
             packed = t->flat_packed;

@@ -21,6 +21,8 @@ static void SPAN_NAME(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
     for (int i = 0; i < 3; i++)
         e[i] = t->ea[i] * x0 + t->eb[i] * y + t->ec[i];
     const Vertex *v0 = t->v[0], *v1 = t->v[1], *v2 = t->v[2];
+    const NUM *c0 = t->col[0], *c1 = t->col[1], *c2 = t->col[2];
+    (void)v0; (void)v1; (void)v2; (void)c0; (void)c1; (void)c2;
 #endif
 #if !SPAN_SMOOTH
     const uint32_t packed = t->flat_packed;
@@ -38,10 +40,10 @@ static void SPAN_NAME(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
 #if SPAN_SMOOTH
             WGT p[3];
             wgt_persp(&t->wgt, e, p);
-            uint32_t r = num_to_unorm(wgt_lerp3(v0->color[0], v1->color[0], v2->color[0], p[0], p[1], p[2]), 255);
-            uint32_t g = num_to_unorm(wgt_lerp3(v0->color[1], v1->color[1], v2->color[1], p[0], p[1], p[2]), 255);
-            uint32_t b = num_to_unorm(wgt_lerp3(v0->color[2], v1->color[2], v2->color[2], p[0], p[1], p[2]), 255);
-            uint32_t a = num_to_unorm(wgt_lerp3(v0->color[3], v1->color[3], v2->color[3], p[0], p[1], p[2]), 255);
+            uint32_t r = num_to_unorm(wgt_lerp3(c0[0], c1[0], c2[0], p[0], p[1], p[2]), 255);
+            uint32_t g = num_to_unorm(wgt_lerp3(c0[1], c1[1], c2[1], p[0], p[1], p[2]), 255);
+            uint32_t b = num_to_unorm(wgt_lerp3(c0[2], c1[2], c2[2], p[0], p[1], p[2]), 255);
+            uint32_t a = num_to_unorm(wgt_lerp3(c0[3], c1[3], c2[3], p[0], p[1], p[2]), 255);
             dst[k] = r | (g << 8) | (b << 16) | (a << 24);
 #else
             dst[k] = packed;

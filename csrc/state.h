@@ -84,11 +84,28 @@ typedef struct ArrayState {
 } ArrayState;
 
 /* {====================================================================
+** lighting state (§2.12.1); positions and directions in eye space */
+#define GLES_MAX_LIGHTS 8
+
+typedef struct Light {
+    double ambient[4], diffuse[4], specular[4], position[4], spot_direction[3];
+    double spot_exponent, spot_cutoff, attenuation[3];
+    NUM n_ambient[4], n_diffuse[4], n_specular[4], n_position[4], n_spot_direction[3];
+    NUM n_spot_exponent, n_cos_cutoff, n_attenuation[3];
+} Light;
+
+typedef struct Material {
+    double ambient[4], diffuse[4], specular[4], emission[4], shininess;
+    NUM n_ambient[4], n_diffuse[4], n_specular[4], n_emission[4], n_shininess;
+} Material;
+
+/* {====================================================================
 ** vertices after transformation */
 typedef struct Vertex {
     NUM clip[4];
     NUM eye[4];
-    NUM color[4];
+    NUM color[4];           /* front colour (lit, or the vertex colour) */
+    NUM color_back[4];      /* back colour, with two-sided lighting */
     NUM tex[GLES_MAX_TEXTURE_UNITS][4];
     NUM point_size;
     unsigned int outcode;   /* bit per violated clip plane */
@@ -149,6 +166,15 @@ struct GlesContext {
     NUM clip_plane_n[GLES_MAX_CLIP_PLANES][4];
     unsigned int active_texture, client_active_texture;
 
+    /* lighting */
+    int lighting, color_material, normalize, rescale_normal;
+    int light_enabled[GLES_MAX_LIGHTS];
+    Light lights[GLES_MAX_LIGHTS];
+    Material material;
+    double light_model_ambient[4];
+    NUM n_light_model_ambient[4];
+    int light_model_two_side;
+
     /* current values */
     double cur_color[4], cur_normal[3], cur_tex[GLES_MAX_TEXTURE_UNITS][4];
     NUM cur_color_n[4], cur_normal_n[3], cur_tex_n[GLES_MAX_TEXTURE_UNITS][4];
@@ -162,7 +188,11 @@ struct GlesContext {
     unsigned int dirty;
     NUM mvp[16];                /* projection * modelview */
     int mvp_kind;
-    int need_eye;               /* user clip planes need eye coordinates */
+    int need_eye;               /* user clip planes or lighting need eye coordinates */
+    NUM normal_matrix[9];       /* inverse transpose of the modelview's 3x3, row-major */
+    NUM rescale;                /* RESCALE_NORMAL factor */
+    int two_sided;              /* lighting with LIGHT_MODEL_TWO_SIDE */
+    unsigned int active_lights; /* bit per enabled light */
     unsigned int clip_mask;     /* outcode bits that can be set */
     SpanFunc span;              /* chosen for the current state */
     SpanFunc span_const;        /* the same state with a constant colour */
@@ -180,6 +210,7 @@ struct GlesContext {
 #define DIRTY_MATRIX 1u
 #define DIRTY_SPAN 2u
 #define DIRTY_CLIP 4u
+#define DIRTY_LIGHT 8u
 #define DIRTY_ALL 0xffffffffu
 
 /* set the first error only, as the spec says */

@@ -12,6 +12,7 @@
 #include "vertex.h"
 #include "matrix.h"
 #include "array.h"
+#include "light.h"
 
 void vertex_validate(GlesContext *ctx)
 {
@@ -21,7 +22,7 @@ void vertex_validate(GlesContext *ctx)
     }
     if (ctx->dirty & (DIRTY_CLIP | DIRTY_MATRIX)) {
         unsigned int mask = CLIP_LEFT | CLIP_RIGHT | CLIP_BOTTOM | CLIP_TOP | CLIP_NEAR | CLIP_FAR | CLIP_W;
-        ctx->need_eye = 0;
+        ctx->need_eye = ctx->lighting;
         for (int i = 0; i < GLES_MAX_CLIP_PLANES; i++)
             if (ctx->clip_plane_enabled[i]) {
                 mask |= CLIP_USER0 << i;
@@ -29,6 +30,8 @@ void vertex_validate(GlesContext *ctx)
             }
         ctx->clip_mask = mask;
     }
+    if (ctx->dirty & (DIRTY_LIGHT | DIRTY_MATRIX))
+        light_validate(ctx);
 }
 
 NUM vertex_plane_distance(const GlesContext *ctx, const Vertex *v, unsigned int bit)
@@ -95,14 +98,23 @@ void vertex_position(GlesContext *ctx, int64_t index, Vertex *v)
 void vertex_attribs(GlesContext *ctx, int64_t index, Vertex *v)
 {
     const ArrayState *c = &ctx->arrays[ARR_COLOR];
-    if (c->enabled) {
-        array_fetch(c, array_base(c), index, 1, v->color);
+    NUM color[4];
+    if (c->enabled)
+        array_fetch(c, array_base(c), index, 1, color);
+    else
+        memcpy(color, ctx->cur_color_n, sizeof color);
+    if (ctx->lighting) {
+        const ArrayState *na = &ctx->arrays[ARR_NORMAL];
+        NUM normal[3];
+        if (na->enabled)
+            array_fetch(na, array_base(na), index, 1, normal);
+        else
+            memcpy(normal, ctx->cur_normal_n, sizeof normal);
+        light_vertex(ctx, v->eye, normal, color, v->color, ctx->two_sided ? v->color_back : NULL);
+    } else {
         /* §2.12.6: colours are clamped to [0,1] */
         for (int i = 0; i < 4; i++)
-            v->color[i] = num_clamp01(v->color[i]);
-    } else {
-        for (int i = 0; i < 4; i++)
-            v->color[i] = num_clamp01(ctx->cur_color_n[i]);
+            v->color[i] = num_clamp01(color[i]);
     }
     const ArrayState *ps = &ctx->arrays[ARR_POINT_SIZE];
     if (ps->enabled) {

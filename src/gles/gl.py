@@ -57,8 +57,6 @@ _FIX = 1.0 / 65536.0
 # The ES 1.1 commands whose pipeline stage is not built yet. Each exists and
 # raises NotImplementedError naming its stage; README.md lists them.
 _MISSING_BOTH = {
-    "lighting": "glLightx glLightxv glLightModelx glLightModelxv glMaterialx glMaterialxv "
-    "glGetLightxv glGetMaterialxv",
     "texturing": "glBindTexture glDeleteTextures glGenTextures glIsTexture glTexImage2D "
     "glTexSubImage2D glCompressedTexImage2D glCompressedTexSubImage2D glCopyTexImage2D "
     "glCopyTexSubImage2D glTexParameteri glTexParameteriv glTexParameterx glTexParameterxv "
@@ -71,14 +69,19 @@ _MISSING_BOTH = {
     "polygon offset": "glPolygonOffsetx",
 }
 _MISSING_COMMON = {
-    "lighting": "glLightf glLightfv glLightModelf glLightModelfv glMaterialf glMaterialfv "
-    "glGetLightfv glGetMaterialfv",
     "texturing": "glTexParameterf glTexParameterfv glGetTexParameterfv glTexEnvf glTexEnvfv "
     "glGetTexEnvfv",
     "per-fragment operations": "glAlphaFunc glSampleCoverage",
     "fog": "glFogf glFogfv",
     "points and lines": "glPointSize glLineWidth glPointParameterf glPointParameterfv",
     "polygon offset": "glPolygonOffset",
+}
+
+
+# how many values each lighting pname takes (others take one)
+_PARAM_COUNT = {
+    C.GL_AMBIENT: 4, C.GL_DIFFUSE: 4, C.GL_SPECULAR: 4, C.GL_POSITION: 4, C.GL_EMISSION: 4,
+    C.GL_AMBIENT_AND_DIFFUSE: 4, C.GL_LIGHT_MODEL_AMBIENT: 4, C.GL_SPOT_DIRECTION: 3,
 }
 
 
@@ -401,6 +404,64 @@ class GLBase:
             self._lib.gles_MultiTexCoord4(self._p, target, _fixed(s), _fixed(t), _fixed(r), _fixed(q))
 
     # {================================================================
+    # lighting (§2.12)
+
+    def _params(self, pname: int, params: Any, fixed: bool, what: str) -> Any:
+        n = _PARAM_COUNT.get(int(pname), 1)
+        vals = _values(params, n, what, np.int64 if fixed else np.float64)[:n]
+        out = [0.0, 0.0, 0.0, 0.0]
+        for i in range(n):
+            out[i] = float(vals[i]) * _FIX if fixed else float(vals[i])
+        return self._ffi.new("double[4]", out)
+
+    def _scalar(self, param: Any, fixed: bool) -> Any:
+        return self._ffi.new("double[4]", [_fixed(param) if fixed else float(param), 0.0, 0.0, 0.0])
+
+    def glLightx(self, light: int, pname: int, param: int) -> None:
+        buf = self._scalar(param, True)
+        with self._lock:
+            self._lib.gles_Light(self._p, light, pname, buf, 0)
+
+    def glLightxv(self, light: int, pname: int, params: Any) -> None:
+        buf = self._params(pname, params, True, "glLightxv")
+        with self._lock:
+            self._lib.gles_Light(self._p, light, pname, buf, 1)
+
+    def glLightModelx(self, pname: int, param: int) -> None:
+        buf = self._scalar(param, True)
+        with self._lock:
+            self._lib.gles_LightModel(self._p, pname, buf, 0)
+
+    def glLightModelxv(self, pname: int, params: Any) -> None:
+        buf = self._params(pname, params, True, "glLightModelxv")
+        with self._lock:
+            self._lib.gles_LightModel(self._p, pname, buf, 1)
+
+    def glMaterialx(self, face: int, pname: int, param: int) -> None:
+        buf = self._scalar(param, True)
+        with self._lock:
+            self._lib.gles_Material(self._p, face, pname, buf, 0)
+
+    def glMaterialxv(self, face: int, pname: int, params: Any) -> None:
+        buf = self._params(pname, params, True, "glMaterialxv")
+        with self._lock:
+            self._lib.gles_Material(self._p, face, pname, buf, 1)
+
+    def _get_lm(self, fn: Any, target: int, pname: int) -> list[float]:
+        out = self._ffi.new("double[4]")
+        with self._lock:
+            n = fn(self._p, target, pname, out)
+        return [out[i] for i in range(n)]
+
+    def glGetLightxv(self, light: int, pname: int) -> Any:
+        vals = self._get_lm(self._lib.gles_GetLight, light, pname)
+        return self._result([int(np.floor(v * 65536.0 + 0.5)) for v in vals], np.int32)
+
+    def glGetMaterialxv(self, face: int, pname: int) -> Any:
+        vals = self._get_lm(self._lib.gles_GetMaterial, face, pname)
+        return self._result([int(np.floor(v * 65536.0 + 0.5)) for v in vals], np.int32)
+
+    # {================================================================
     # vertex arrays and buffer objects
 
     def _set_pointer(self, key: Any, fn: Any, args: tuple, gltype: int, pointer: Pointer, what: str) -> None:
@@ -558,6 +619,42 @@ class GLCommon(GLBase):
     def glGetFloatv(self, pname: int) -> Any:
         vals, _ = self._get(pname)
         return self._result([float(v) for v in vals], np.float32)
+
+    def glLightf(self, light: int, pname: int, param: float) -> None:
+        buf = self._scalar(param, False)
+        with self._lock:
+            self._lib.gles_Light(self._p, light, pname, buf, 0)
+
+    def glLightfv(self, light: int, pname: int, params: Any) -> None:
+        buf = self._params(pname, params, False, "glLightfv")
+        with self._lock:
+            self._lib.gles_Light(self._p, light, pname, buf, 1)
+
+    def glLightModelf(self, pname: int, param: float) -> None:
+        buf = self._scalar(param, False)
+        with self._lock:
+            self._lib.gles_LightModel(self._p, pname, buf, 0)
+
+    def glLightModelfv(self, pname: int, params: Any) -> None:
+        buf = self._params(pname, params, False, "glLightModelfv")
+        with self._lock:
+            self._lib.gles_LightModel(self._p, pname, buf, 1)
+
+    def glMaterialf(self, face: int, pname: int, param: float) -> None:
+        buf = self._scalar(param, False)
+        with self._lock:
+            self._lib.gles_Material(self._p, face, pname, buf, 0)
+
+    def glMaterialfv(self, face: int, pname: int, params: Any) -> None:
+        buf = self._params(pname, params, False, "glMaterialfv")
+        with self._lock:
+            self._lib.gles_Material(self._p, face, pname, buf, 1)
+
+    def glGetLightfv(self, light: int, pname: int) -> Any:
+        return self._result(self._get_lm(self._lib.gles_GetLight, light, pname), np.float32)
+
+    def glGetMaterialfv(self, face: int, pname: int) -> Any:
+        return self._result(self._get_lm(self._lib.gles_GetMaterial, face, pname), np.float32)
 
     def glGetClipPlanef(self, plane: int) -> np.ndarray:
         eq = self._ffi.new("double[4]")

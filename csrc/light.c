@@ -1,0 +1,390 @@
+/*
+** light.c -- the lighting equation of ES 1.1 §2.12.1 and its state.
+** Owns: Light, LightModel, Material and their queries; the derived normal
+**       matrix; the per-vertex colour of a lit vertex (front and back).
+** Consumes: eye-space position (vertex.c), the normal, the vertex colour
+**       (COLOR_MATERIAL tracks AMBIENT_AND_DIFFUSE, the only mode in ES).
+** Numbers: light positions and directions are transformed into eye space
+**       with this build's modelview at the call, as a device would. The
+**       normal matrix is the inverse transpose of the build's own modelview
+**       3x3, inverted in double and rounded once (a 16.16 inverse of a
+**       general 3x3 loses most of its bits to the determinant). Vectors are
+**       normalised with num_normalize3, which divides by the largest
+**       component first, so lights far away do not overflow the fixed build.
+*/
+#include <string.h>
+#include "state.h"
+#include "matrix.h"
+#include "light.h"
+
+static void set4(double *d, NUM *n, const double *v, int count)
+{
+    for (int i = 0; i < count; i++) {
+        d[i] = v[i];
+        n[i] = num_from_double(v[i]);
+    }
+}
+
+void light_init(GlesContext *ctx)
+{
+    static const double black[4] = { 0, 0, 0, 1 }, white[4] = { 1, 1, 1, 1 };
+    static const double pos[4] = { 0, 0, 1, 0 }, dir[3] = { 0, 0, -1 };
+    static const double amb[4] = { 0.2, 0.2, 0.2, 1.0 }, dif[4] = { 0.8, 0.8, 0.8, 1.0 };
+    for (int i = 0; i < GLES_MAX_LIGHTS; i++) {
+        Light *l = &ctx->lights[i];
+        set4(l->ambient, l->n_ambient, black, 4);
+        set4(l->diffuse, l->n_diffuse, i == 0 ? white : black, 4);
+        set4(l->specular, l->n_specular, i == 0 ? white : black, 4);
+        set4(l->position, l->n_position, pos, 4);
+        set4(l->spot_direction, l->n_spot_direction, dir, 3);
+        l->spot_exponent = 0;
+        l->n_spot_exponent = 0;
+        l->spot_cutoff = 180;
+        l->n_cos_cutoff = num_neg(NUM_ONE);
+        static const double att[3] = { 1, 0, 0 };
+        set4(l->attenuation, l->n_attenuation, att, 3);
+    }
+    Material *m = &ctx->material;
+    set4(m->ambient, m->n_ambient, amb, 4);
+    set4(m->diffuse, m->n_diffuse, dif, 4);
+    set4(m->specular, m->n_specular, black, 4);
+    set4(m->emission, m->n_emission, black, 4);
+    m->shininess = 0;
+    m->n_shininess = 0;
+    set4(ctx->light_model_ambient, ctx->n_light_model_ambient, amb, 4);
+}
+
+/* {====================================================================
+** commands */
+
+void gles_Light(GlesContext *ctx, unsigned int light, unsigned int pname, const double *p, int vector)
+{
+    if (light < GL_LIGHT0 || light >= GL_LIGHT0 + GLES_MAX_LIGHTS) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    Light *l = &ctx->lights[light - GL_LIGHT0];
+    const Matrix *mv = ctx->modelview.top;
+    switch (pname) {
+    case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_POSITION: case GL_SPOT_DIRECTION:
+        if (!vector) {
+            ctx_error(ctx, GL_INVALID_ENUM);
+            return;
+        }
+        break;
+    default:
+        break;
+    }
+    switch (pname) {
+    case GL_AMBIENT: set4(l->ambient, l->n_ambient, p, 4); break;
+    case GL_DIFFUSE: set4(l->diffuse, l->n_diffuse, p, 4); break;
+    case GL_SPECULAR: set4(l->specular, l->n_specular, p, 4); break;
+    case GL_POSITION: {
+        /* §2.12.1: transformed by the modelview current at the call */
+        NUM obj[4];
+        for (int i = 0; i < 4; i++) {
+            obj[i] = num_from_double(p[i]);
+            l->position[i] = mv->d[i] * p[0] + mv->d[4 + i] * p[1] + mv->d[8 + i] * p[2] + mv->d[12 + i] * p[3];
+        }
+        matrix_xform4(mv->n, mv->kind, obj, l->n_position);
+        break;
+    }
+    case GL_SPOT_DIRECTION: {
+        NUM obj[4] = { num_from_double(p[0]), num_from_double(p[1]), num_from_double(p[2]), NUM_ZERO };
+        NUM eye[4];
+        for (int i = 0; i < 3; i++)
+            l->spot_direction[i] = mv->d[i] * p[0] + mv->d[4 + i] * p[1] + mv->d[8 + i] * p[2];
+        matrix_xform4(mv->n, mv->kind == MAT_IDENTITY ? MAT_IDENTITY : MAT_GENERAL, obj, eye);
+        memcpy(l->n_spot_direction, eye, sizeof l->n_spot_direction);
+        break;
+    }
+    case GL_SPOT_EXPONENT:
+        if (!(p[0] >= 0 && p[0] <= 128)) {
+            ctx_error(ctx, GL_INVALID_VALUE);
+            return;
+        }
+        l->spot_exponent = p[0];
+        l->n_spot_exponent = num_from_double(p[0]);
+        break;
+    case GL_SPOT_CUTOFF: {
+        if (!((p[0] >= 0 && p[0] <= 90) || p[0] == 180)) {
+            ctx_error(ctx, GL_INVALID_VALUE);
+            return;
+        }
+        NUM s, c;
+        num_sincos_deg(num_from_double(p[0]), &s, &c);
+        l->spot_cutoff = p[0];
+        l->n_cos_cutoff = c;
+        break;
+    }
+    case GL_CONSTANT_ATTENUATION: case GL_LINEAR_ATTENUATION: case GL_QUADRATIC_ATTENUATION: {
+        if (!(p[0] >= 0)) {
+            ctx_error(ctx, GL_INVALID_VALUE);
+            return;
+        }
+        int k = (int)(pname - GL_CONSTANT_ATTENUATION);
+        l->attenuation[k] = p[0];
+        l->n_attenuation[k] = num_from_double(p[0]);
+        break;
+    }
+    default:
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    ctx->dirty |= DIRTY_LIGHT;
+}
+
+void gles_LightModel(GlesContext *ctx, unsigned int pname, const double *p, int vector)
+{
+    switch (pname) {
+    case GL_LIGHT_MODEL_AMBIENT:
+        if (!vector) {
+            ctx_error(ctx, GL_INVALID_ENUM);
+            return;
+        }
+        set4(ctx->light_model_ambient, ctx->n_light_model_ambient, p, 4);
+        break;
+    case GL_LIGHT_MODEL_TWO_SIDE:
+        ctx->light_model_two_side = p[0] != 0.0;
+        break;
+    default:
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    ctx->dirty |= DIRTY_LIGHT;
+}
+
+void gles_Material(GlesContext *ctx, unsigned int face, unsigned int pname, const double *p, int vector)
+{
+    /* ES 1.1: materials are set for both faces at once */
+    if (face != GL_FRONT_AND_BACK) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    Material *m = &ctx->material;
+    if (pname != GL_SHININESS && !vector) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    switch (pname) {
+    case GL_AMBIENT: set4(m->ambient, m->n_ambient, p, 4); break;
+    case GL_DIFFUSE: set4(m->diffuse, m->n_diffuse, p, 4); break;
+    case GL_SPECULAR: set4(m->specular, m->n_specular, p, 4); break;
+    case GL_EMISSION: set4(m->emission, m->n_emission, p, 4); break;
+    case GL_AMBIENT_AND_DIFFUSE:
+        set4(m->ambient, m->n_ambient, p, 4);
+        set4(m->diffuse, m->n_diffuse, p, 4);
+        break;
+    case GL_SHININESS:
+        if (!(p[0] >= 0 && p[0] <= 128)) {
+            ctx_error(ctx, GL_INVALID_VALUE);
+            return;
+        }
+        m->shininess = p[0];
+        m->n_shininess = num_from_double(p[0]);
+        break;
+    default:
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    ctx->dirty |= DIRTY_LIGHT;
+}
+
+static int copy_out(double *out, const double *v, int n)
+{
+    memcpy(out, v, (size_t)n * sizeof *v);
+    return n;
+}
+
+int gles_GetLight(GlesContext *ctx, unsigned int light, unsigned int pname, double *out)
+{
+    if (light < GL_LIGHT0 || light >= GL_LIGHT0 + GLES_MAX_LIGHTS) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return 0;
+    }
+    const Light *l = &ctx->lights[light - GL_LIGHT0];
+    switch (pname) {
+    case GL_AMBIENT: return copy_out(out, l->ambient, 4);
+    case GL_DIFFUSE: return copy_out(out, l->diffuse, 4);
+    case GL_SPECULAR: return copy_out(out, l->specular, 4);
+    case GL_POSITION: return copy_out(out, l->position, 4);
+    case GL_SPOT_DIRECTION: return copy_out(out, l->spot_direction, 3);
+    case GL_SPOT_EXPONENT: return copy_out(out, &l->spot_exponent, 1);
+    case GL_SPOT_CUTOFF: return copy_out(out, &l->spot_cutoff, 1);
+    case GL_CONSTANT_ATTENUATION: case GL_LINEAR_ATTENUATION: case GL_QUADRATIC_ATTENUATION:
+        return copy_out(out, &l->attenuation[pname - GL_CONSTANT_ATTENUATION], 1);
+    default:
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return 0;
+    }
+}
+
+int gles_GetMaterial(GlesContext *ctx, unsigned int face, unsigned int pname, double *out)
+{
+    if (face != GL_FRONT && face != GL_BACK) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return 0;
+    }
+    const Material *m = &ctx->material;
+    switch (pname) {
+    case GL_AMBIENT: return copy_out(out, m->ambient, 4);
+    case GL_DIFFUSE: return copy_out(out, m->diffuse, 4);
+    case GL_SPECULAR: return copy_out(out, m->specular, 4);
+    case GL_EMISSION: return copy_out(out, m->emission, 4);
+    case GL_SHININESS: return copy_out(out, &m->shininess, 1);
+    default:
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return 0;
+    }
+}
+
+/* COLOR_MATERIAL: the current colour becomes the material's ambient and
+** diffuse (at glColor and when the mode is enabled) */
+void light_track_color(GlesContext *ctx)
+{
+    if (!ctx->color_material)
+        return;
+    Material *m = &ctx->material;
+    set4(m->ambient, m->n_ambient, ctx->cur_color, 4);
+    set4(m->diffuse, m->n_diffuse, ctx->cur_color, 4);
+    ctx->dirty |= DIRTY_LIGHT;
+}
+
+/* {====================================================================
+** derived state */
+
+void light_validate(GlesContext *ctx)
+{
+    ctx->active_lights = 0;
+    for (int i = 0; i < GLES_MAX_LIGHTS; i++)
+        if (ctx->light_enabled[i])
+            ctx->active_lights |= 1u << i;
+    ctx->two_sided = ctx->lighting && ctx->light_model_two_side;
+    if (!ctx->lighting)
+        return;
+    /* normal matrix: inverse transpose of this build's modelview 3x3 */
+    const NUM *mn = ctx->modelview.top->n;
+    double m[16] = { 0 }, inv[16];
+    for (int c = 0; c < 3; c++)
+        for (int r = 0; r < 3; r++)
+            m[c * 4 + r] = num_to_double(mn[c * 4 + r]);
+    m[15] = 1;
+    if (!matrix_invert_d(inv, m)) {
+        memset(ctx->normal_matrix, 0, sizeof ctx->normal_matrix);
+        ctx->rescale = NUM_ONE;
+        return;
+    }
+    /* n_eye = n^T M^-1: n_eye[j] = sum_i n[i] inv[i][j]; row j of the
+    ** normal matrix is column j of M^-1 */
+    for (int j = 0; j < 3; j++)
+        for (int i = 0; i < 3; i++)
+            ctx->normal_matrix[j * 3 + i] = num_from_double(inv[j * 4 + i]);
+    /* §2.11.3: f = 1 / |third row of M^-1| */
+    double r = sqrt(inv[2] * inv[2] + inv[6] * inv[6] + inv[10] * inv[10]);
+    ctx->rescale = num_from_double(r > 0 ? 1.0 / r : 1.0);
+}
+
+/* {====================================================================
+** the lighting equation, per vertex */
+
+/* |v| robustly: largest component times the length of v / that component */
+static NUM length3(const NUM v[3])
+{
+    NUM m = num_max(num_abs(v[0]), num_max(num_abs(v[1]), num_abs(v[2])));
+    if (m == NUM_ZERO)
+        return NUM_ZERO;
+    NUM u[3] = { num_div(v[0], m), num_div(v[1], m), num_div(v[2], m) };
+    return num_mul(m, num_sqrt(num_dot(u, 1, u, 1, 3)));
+}
+
+static void light_side(const GlesContext *ctx, const NUM n[3], const NUM v[3], const NUM *amb_cm,
+                       const NUM *dif_cm, NUM out[4])
+{
+    const Material *m = &ctx->material;
+    NUM acc[3];
+    for (int k = 0; k < 3; k++)
+        acc[k] = num_add(m->n_emission[k], num_mul(amb_cm[k], ctx->n_light_model_ambient[k]));
+    for (unsigned int bits = ctx->active_lights; bits; bits &= bits - 1) {
+        const Light *l = &ctx->lights[__builtin_ctz(bits)];
+        NUM vp[3], att = NUM_ONE;
+        if (l->n_position[3] != NUM_ZERO) {
+            /* positional: VP = P - V, attenuated by its length */
+            NUM pw = l->n_position[3];
+            for (int k = 0; k < 3; k++)
+                vp[k] = num_sub(pw == NUM_ONE ? l->n_position[k] : num_div(l->n_position[k], pw), v[k]);
+            const NUM *ka = l->n_attenuation;
+            if (ka[1] != NUM_ZERO || ka[2] != NUM_ZERO || ka[0] != NUM_ONE) {
+                NUM d = length3(vp);
+                NUM den = num_add(ka[0], num_add(num_mul(ka[1], d), num_mul(ka[2], num_mul(d, d))));
+                att = num_recip(den);
+            }
+        } else {
+            for (int k = 0; k < 3; k++)
+                vp[k] = l->n_position[k];
+        }
+        if (!num_normalize3(vp))
+            continue; /* the light is at the vertex: no direction */
+        NUM spot = NUM_ONE;
+        if (l->spot_cutoff != 180.0) {
+            NUM sd[3] = { l->n_spot_direction[0], l->n_spot_direction[1], l->n_spot_direction[2] };
+            num_normalize3(sd);
+            NUM cosang = num_neg(num_dot(vp, 1, sd, 1, 3)); /* -VP . s */
+            if (cosang < l->n_cos_cutoff)
+                continue; /* outside the cone: contributes nothing */
+            spot = num_pow01(cosang, l->n_spot_exponent);
+        }
+        NUM scale = num_mul(att, spot);
+        NUM ndotvp = num_dot(n, 1, vp, 1, 3);
+        NUM term[3];
+        for (int k = 0; k < 3; k++)
+            term[k] = num_mul(amb_cm[k], l->n_ambient[k]);
+        if (ndotvp > NUM_ZERO) {
+            for (int k = 0; k < 3; k++)
+                term[k] = num_add(term[k], num_mul(ndotvp, num_mul(dif_cm[k], l->n_diffuse[k])));
+            /* h = VP + (0, 0, 1), no local viewer in ES */
+            NUM h[3] = { vp[0], vp[1], num_add(vp[2], NUM_ONE) };
+            if (num_normalize3(h)) {
+                NUM ndoth = num_dot(n, 1, h, 1, 3);
+                if (ndoth > NUM_ZERO) {
+                    NUM sp = num_pow01(ndoth, m->n_shininess);
+                    for (int k = 0; k < 3; k++)
+                        term[k] = num_add(term[k], num_mul(sp, num_mul(m->n_specular[k], l->n_specular[k])));
+                }
+            }
+        }
+        for (int k = 0; k < 3; k++)
+            acc[k] = num_add(acc[k], num_mul(scale, term[k]));
+    }
+    for (int k = 0; k < 3; k++)
+        out[k] = num_clamp01(acc[k]);
+    out[3] = num_clamp01(dif_cm[3]); /* alpha is the diffuse material's */
+}
+
+void light_vertex(const GlesContext *ctx, const NUM eye[4], const NUM normal[3], const NUM color[4],
+                  NUM front[4], NUM back[4])
+{
+    /* eye-space normal */
+    NUM n[3];
+    for (int r = 0; r < 3; r++)
+        n[r] = num_dot(ctx->normal_matrix + r * 3, 1, normal, 1, 3);
+    if (ctx->rescale_normal)
+        for (int r = 0; r < 3; r++)
+            n[r] = num_mul(n[r], ctx->rescale);
+    if (ctx->normalize)
+        num_normalize3(n);
+    NUM v[3];
+    if (eye[3] == NUM_ONE || eye[3] == NUM_ZERO) {
+        v[0] = eye[0]; v[1] = eye[1]; v[2] = eye[2];
+    } else {
+        for (int k = 0; k < 3; k++)
+            v[k] = num_div(eye[k], eye[3]);
+    }
+    const Material *m = &ctx->material;
+    const NUM *amb = ctx->color_material ? color : m->n_ambient;
+    const NUM *dif = ctx->color_material ? color : m->n_diffuse;
+    light_side(ctx, n, v, amb, dif, front);
+    if (back) {
+        NUM nb[3] = { num_neg(n[0]), num_neg(n[1]), num_neg(n[2]) };
+        light_side(ctx, nb, v, amb, dif, back);
+    }
+}
