@@ -131,8 +131,9 @@ void names_generate(NameTable *t, int n, unsigned int *out)
 /* {====================================================================
 ** array state */
 
-static const unsigned int array_caps[4] = {
+static const unsigned int array_caps[ARR_TEXCOORD0] = {
     GL_VERTEX_ARRAY, GL_NORMAL_ARRAY, GL_COLOR_ARRAY, GL_POINT_SIZE_ARRAY_OES,
+    GL_MATRIX_INDEX_ARRAY_OES, GL_WEIGHT_ARRAY_OES,
 };
 
 void array_init(GlesContext *ctx)
@@ -148,6 +149,10 @@ void array_init(GlesContext *ctx)
     }
     ctx->arrays[ARR_NORMAL].size = 3;
     ctx->arrays[ARR_POINT_SIZE].size = 1;
+    /* OES_matrix_palette: size 0, UNSIGNED_BYTE indices, FLOAT weights */
+    ctx->arrays[ARR_MATRIX_INDEX].size = 0;
+    ctx->arrays[ARR_MATRIX_INDEX].type = GL_UNSIGNED_BYTE;
+    ctx->arrays[ARR_WEIGHT].size = 0;
 }
 
 static void buffer_free(BufferObject *b)
@@ -169,7 +174,7 @@ void array_free(GlesContext *ctx)
 
 int array_index_of_cap(GlesContext *ctx, unsigned int cap)
 {
-    for (int i = 0; i < 4; i++)
+    for (int i = 0; i < ARR_TEXCOORD0; i++)
         if (array_caps[i] == cap)
             return i;
     if (cap == GL_TEXTURE_COORD_ARRAY)
@@ -270,6 +275,16 @@ int gles_PointSizePointerOES(GlesContext *ctx, unsigned int type, int stride, co
     return set_pointer(ctx, ARR_POINT_SIZE, 1, 1, 1, type, T_FIXED | T_FLOAT, stride, ptr, nbytes);
 }
 
+int gles_MatrixIndexPointerOES(GlesContext *ctx, int size, unsigned int type, int stride, const void *ptr, int64_t nbytes)
+{
+    return set_pointer(ctx, ARR_MATRIX_INDEX, size, 1, GLES_MAX_VERTEX_UNITS, type, T_UBYTE, stride, ptr, nbytes);
+}
+
+int gles_WeightPointerOES(GlesContext *ctx, int size, unsigned int type, int stride, const void *ptr, int64_t nbytes)
+{
+    return set_pointer(ctx, ARR_WEIGHT, size, 1, GLES_MAX_VERTEX_UNITS, type, T_FIXED | T_FLOAT, stride, ptr, nbytes);
+}
+
 static ArrayState *array_of_pointer_pname(GlesContext *ctx, unsigned int pname)
 {
     switch (pname) {
@@ -277,6 +292,8 @@ static ArrayState *array_of_pointer_pname(GlesContext *ctx, unsigned int pname)
     case GL_NORMAL_ARRAY_POINTER: return &ctx->arrays[ARR_NORMAL];
     case GL_COLOR_ARRAY_POINTER: return &ctx->arrays[ARR_COLOR];
     case GL_POINT_SIZE_ARRAY_POINTER_OES: return &ctx->arrays[ARR_POINT_SIZE];
+    case GL_MATRIX_INDEX_ARRAY_POINTER_OES: return &ctx->arrays[ARR_MATRIX_INDEX];
+    case GL_WEIGHT_ARRAY_POINTER_OES: return &ctx->arrays[ARR_WEIGHT];
     case GL_TEXTURE_COORD_ARRAY_POINTER:
         return &ctx->arrays[ARR_TEXCOORD0 + (int)(ctx->client_active_texture - GL_TEXTURE0)];
     default: return NULL;
@@ -300,6 +317,10 @@ int array_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)
         { 0, GL_NORMAL_ARRAY_TYPE, GL_NORMAL_ARRAY_STRIDE, GL_NORMAL_ARRAY_BUFFER_BINDING, ARR_NORMAL },
         { GL_COLOR_ARRAY_SIZE, GL_COLOR_ARRAY_TYPE, GL_COLOR_ARRAY_STRIDE, GL_COLOR_ARRAY_BUFFER_BINDING, ARR_COLOR },
         { 0, GL_POINT_SIZE_ARRAY_TYPE_OES, GL_POINT_SIZE_ARRAY_STRIDE_OES, GL_POINT_SIZE_ARRAY_BUFFER_BINDING_OES, ARR_POINT_SIZE },
+        { GL_MATRIX_INDEX_ARRAY_SIZE_OES, GL_MATRIX_INDEX_ARRAY_TYPE_OES, GL_MATRIX_INDEX_ARRAY_STRIDE_OES,
+          GL_MATRIX_INDEX_ARRAY_BUFFER_BINDING_OES, ARR_MATRIX_INDEX },
+        { GL_WEIGHT_ARRAY_SIZE_OES, GL_WEIGHT_ARRAY_TYPE_OES, GL_WEIGHT_ARRAY_STRIDE_OES,
+          GL_WEIGHT_ARRAY_BUFFER_BINDING_OES, ARR_WEIGHT },
         { GL_TEXTURE_COORD_ARRAY_SIZE, GL_TEXTURE_COORD_ARRAY_TYPE, GL_TEXTURE_COORD_ARRAY_STRIDE,
           GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING, -1 },
     };
@@ -329,7 +350,7 @@ const uint8_t *array_base(const ArrayState *a)
 
 static const char *array_label(int i)
 {
-    static const char *names[] = { "vertex", "normal", "color", "point size" };
+    static const char *names[] = { "vertex", "normal", "color", "point size", "matrix index", "weight" };
     return i < ARR_TEXCOORD0 ? names[i] : "texture coordinate";
 }
 

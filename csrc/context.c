@@ -117,6 +117,7 @@ GlesContext *gles_context_create(int width, int height, int color_format,
     matrix_stack_init(&ctx->projection, GLES_PROJECTION_STACK_DEPTH);
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
         matrix_stack_init(&ctx->texture[u], GLES_TEXTURE_STACK_DEPTH);
+    matrix_palette_init(ctx);
     ctx->matrix_mode = GL_MODELVIEW;
     ctx->current_stack = &ctx->modelview;
 
@@ -169,6 +170,7 @@ static const unsigned int cap_table[] = {
     GL_NORMALIZE, GL_POINT_SMOOTH, GL_POLYGON_OFFSET_FILL, GL_RESCALE_NORMAL,
     GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_ALPHA_TO_ONE, GL_SAMPLE_COVERAGE,
     GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_2D, GL_POINT_SPRITE_OES,
+    GL_MATRIX_PALETTE_OES,
 };
 enum { CAP_COUNT = sizeof cap_table / sizeof cap_table[0] };
 
@@ -204,6 +206,7 @@ static void set_enable(GlesContext *ctx, unsigned int cap, int on)
     case GL_DEPTH_TEST: ctx->depth_test = on; break;
     case GL_SCISSOR_TEST: ctx->scissor_test = on; break;
     case GL_LIGHTING: ctx->lighting = on; ctx->dirty |= DIRTY_LIGHT | DIRTY_CLIP; break;
+    case GL_MATRIX_PALETTE_OES: ctx->matrix_palette = on; ctx->dirty |= DIRTY_LIGHT | DIRTY_CLIP; break;
     case GL_NORMALIZE: ctx->normalize = on; break;
     case GL_RESCALE_NORMAL: ctx->rescale_normal = on; break;
     case GL_COLOR_MATERIAL:
@@ -449,6 +452,9 @@ int gles_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)
     case GL_MAX_CLIP_PLANES: return put1(out, kind, GLES_KIND_INT, GLES_MAX_CLIP_PLANES);
     case GL_MAX_TEXTURE_UNITS: return put1(out, kind, GLES_KIND_INT, GLES_MAX_TEXTURE_UNITS);
     case GL_MAX_LIGHTS: return put1(out, kind, GLES_KIND_INT, GLES_MAX_LIGHTS);
+    case GL_MAX_PALETTE_MATRICES_OES: return put1(out, kind, GLES_KIND_INT, GLES_MAX_PALETTE_MATRICES);
+    case GL_MAX_VERTEX_UNITS_OES: return put1(out, kind, GLES_KIND_INT, GLES_MAX_VERTEX_UNITS);
+    case GL_CURRENT_PALETTE_MATRIX_OES: return put1(out, kind, GLES_KIND_INT, ctx->current_palette);
     case GL_LIGHT_MODEL_AMBIENT: return put(out, kind, GLES_KIND_NORM, 4, ctx->light_model_ambient);
     case GL_LIGHT_MODEL_TWO_SIDE: return put1(out, kind, GLES_KIND_BOOL, ctx->light_model_two_side);
     case GL_MAX_VIEWPORT_DIMS:

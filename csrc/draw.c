@@ -239,6 +239,29 @@ static int viewport_visible(const GlesContext *ctx)
         && (int64_t)vp[1] < ctx->height && (int64_t)vp[1] + vp[3] > 0;
 }
 
+/* OES_matrix_palette: nothing is drawn without both palette arrays, and
+** every matrix index a draw reads must name a palette matrix */
+static int palette_check(GlesContext *ctx, int64_t lo, int64_t hi, int *skip)
+{
+    *skip = 0;
+    if (!ctx->matrix_palette)
+        return GLES_OK;
+    const ArrayState *ia = &ctx->arrays[ARR_MATRIX_INDEX];
+    if (!ia->enabled || !ctx->arrays[ARR_WEIGHT].enabled) {
+        *skip = 1;
+        return GLES_OK;
+    }
+    const uint8_t *base = array_base(ia);
+    for (int64_t i = lo; i <= hi; i++) {
+        const uint8_t *p = base + i * ia->step;
+        for (int k = 0; k < ia->size; k++)
+            if (p[k] >= GLES_MAX_PALETTE_MATRICES)
+                return ctx_message(ctx, GLES_EVALUE, "matrix index %d of vertex %lld exceeds MAX_PALETTE_MATRICES_OES - 1 (%d)",
+                                   p[k], (long long)i, GLES_MAX_PALETTE_MATRICES - 1);
+    }
+    return GLES_OK;
+}
+
 int gles_DrawArrays(GlesContext *ctx, unsigned int mode, int first, int count)
 {
     if (!mode_ok(mode)) {
@@ -253,6 +276,9 @@ int gles_DrawArrays(GlesContext *ctx, unsigned int mode, int first, int count)
         return GLES_OK;
     int st = array_check_range(ctx, (int64_t)first + count - 1);
     if (st != GLES_OK)
+        return st;
+    int skip;
+    if ((st = palette_check(ctx, first, (int64_t)first + count - 1, &skip)) != GLES_OK || skip)
         return st;
     if ((st = draw_begin(ctx, count)) != GLES_OK)
         return st;
@@ -304,6 +330,9 @@ int gles_DrawElements(GlesContext *ctx, unsigned int mode, int count, unsigned i
     }
     int st = array_check_range(ctx, hi);
     if (st != GLES_OK)
+        return st;
+    int skip;
+    if ((st = palette_check(ctx, lo, hi, &skip)) != GLES_OK || skip)
         return st;
     if ((st = draw_begin(ctx, hi - lo + 1)) != GLES_OK)
         return st;

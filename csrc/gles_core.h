@@ -121,6 +121,11 @@ void gles_Rotate(GlesContext *ctx, double angle, double x, double y, double z);
 void gles_Frustum(GlesContext *ctx, double l, double r, double b, double t, double n, double f);
 void gles_Ortho(GlesContext *ctx, double l, double r, double b, double t, double n, double f);
 void gles_ClipPlane(GlesContext *ctx, unsigned int plane, const double *eq);
+/* OES_matrix_palette */
+void gles_CurrentPaletteMatrixOES(GlesContext *ctx, unsigned int index);
+void gles_LoadPaletteFromModelViewMatrixOES(GlesContext *ctx);
+int gles_MatrixIndexPointerOES(GlesContext *ctx, int size, unsigned int type, int stride, const void *ptr, int64_t nbytes);
+int gles_WeightPointerOES(GlesContext *ctx, int size, unsigned int type, int stride, const void *ptr, int64_t nbytes);
 void gles_GetClipPlane(GlesContext *ctx, unsigned int plane, double *eq);
 
 /* {====================================================================

@@ -253,6 +253,30 @@ void light_track_color(GlesContext *ctx)
 /* {====================================================================
 ** derived state */
 
+/* the normal matrix (inverse transpose of the 3x3 of `mn`, row-major) and
+** the RESCALE_NORMAL factor */
+static void normal_matrix_of(const NUM *mn, NUM nm[9], NUM *rescale)
+{
+    double m[16] = { 0 }, inv[16];
+    for (int c = 0; c < 3; c++)
+        for (int r = 0; r < 3; r++)
+            m[c * 4 + r] = num_to_double(mn[c * 4 + r]);
+    m[15] = 1;
+    if (!matrix_invert_d(inv, m)) {
+        memset(nm, 0, 9 * sizeof *nm);
+        *rescale = NUM_ONE;
+        return;
+    }
+    /* n_eye = n^T M^-1: n_eye[j] = sum_i n[i] inv[i][j]; row j of the
+    ** normal matrix is column j of M^-1 */
+    for (int j = 0; j < 3; j++)
+        for (int i = 0; i < 3; i++)
+            nm[j * 3 + i] = num_from_double(inv[j * 4 + i]);
+    /* §2.11.3: f = 1 / |third row of M^-1| */
+    double r = sqrt(inv[2] * inv[2] + inv[6] * inv[6] + inv[10] * inv[10]);
+    *rescale = num_from_double(r > 0 ? 1.0 / r : 1.0);
+}
+
 void light_validate(GlesContext *ctx)
 {
     ctx->active_lights = 0;
@@ -262,26 +286,10 @@ void light_validate(GlesContext *ctx)
     ctx->two_sided = ctx->lighting && ctx->light_model_two_side;
     if (!ctx->lighting)
         return;
-    /* normal matrix: inverse transpose of this build's modelview 3x3 */
-    const NUM *mn = ctx->modelview.top->n;
-    double m[16] = { 0 }, inv[16];
-    for (int c = 0; c < 3; c++)
-        for (int r = 0; r < 3; r++)
-            m[c * 4 + r] = num_to_double(mn[c * 4 + r]);
-    m[15] = 1;
-    if (!matrix_invert_d(inv, m)) {
-        memset(ctx->normal_matrix, 0, sizeof ctx->normal_matrix);
-        ctx->rescale = NUM_ONE;
-        return;
-    }
-    /* n_eye = n^T M^-1: n_eye[j] = sum_i n[i] inv[i][j]; row j of the
-    ** normal matrix is column j of M^-1 */
-    for (int j = 0; j < 3; j++)
-        for (int i = 0; i < 3; i++)
-            ctx->normal_matrix[j * 3 + i] = num_from_double(inv[j * 4 + i]);
-    /* §2.11.3: f = 1 / |third row of M^-1| */
-    double r = sqrt(inv[2] * inv[2] + inv[6] * inv[6] + inv[10] * inv[10]);
-    ctx->rescale = num_from_double(r > 0 ? 1.0 / r : 1.0);
+    normal_matrix_of(ctx->modelview.top->n, ctx->normal_matrix, &ctx->rescale);
+    if (ctx->matrix_palette)
+        for (int i = 0; i < GLES_MAX_PALETTE_MATRICES; i++)
+            normal_matrix_of(ctx->palette[i].n, ctx->palette_normal[i], &ctx->palette_rescale[i]);
 }
 
 /* {====================================================================
@@ -360,16 +368,19 @@ static void light_side(const GlesContext *ctx, const NUM n[3], const NUM v[3], c
     out[3] = num_clamp01(dif_cm[3]); /* alpha is the diffuse material's */
 }
 
-void light_vertex(const GlesContext *ctx, const NUM eye[4], const NUM normal[3], const NUM color[4],
-                  NUM front[4], NUM back[4])
+void light_vertex(const GlesContext *ctx, const NUM eye[4], const NUM normal[3], int eye_normal,
+                  const NUM color[4], NUM front[4], NUM back[4])
 {
-    /* eye-space normal */
     NUM n[3];
-    for (int r = 0; r < 3; r++)
-        n[r] = num_dot(ctx->normal_matrix + r * 3, 1, normal, 1, 3);
-    if (ctx->rescale_normal)
+    if (eye_normal) {
+        memcpy(n, normal, sizeof n);
+    } else {
         for (int r = 0; r < 3; r++)
-            n[r] = num_mul(n[r], ctx->rescale);
+            n[r] = num_dot(ctx->normal_matrix + r * 3, 1, normal, 1, 3);
+        if (ctx->rescale_normal)
+            for (int r = 0; r < 3; r++)
+                n[r] = num_mul(n[r], ctx->rescale);
+    }
     if (ctx->normalize)
         num_normalize3(n);
     NUM v[3];

@@ -126,6 +126,7 @@ void gles_MatrixMode(GlesContext *ctx, unsigned int mode)
     case GL_MODELVIEW: ctx->current_stack = &ctx->modelview; break;
     case GL_PROJECTION: ctx->current_stack = &ctx->projection; break;
     case GL_TEXTURE: ctx->current_stack = &ctx->texture[ctx->active_texture - GL_TEXTURE0]; break;
+    case GL_MATRIX_PALETTE_OES: ctx->current_stack = &ctx->palette_stack; break;
     default:
         ctx_error(ctx, GL_INVALID_ENUM);
         return;
@@ -386,4 +387,33 @@ void gles_GetClipPlane(GlesContext *ctx, unsigned int plane, double *eq)
     }
     for (int c = 0; c < 4; c++)
         eq[c] = ctx->clip_plane[plane - GL_CLIP_PLANE0][c];
+}
+
+/* {====================================================================
+** OES_matrix_palette */
+
+void matrix_palette_init(GlesContext *ctx)
+{
+    for (int i = 0; i < GLES_MAX_PALETTE_MATRICES; i++)
+        matrix_set_identity(&ctx->palette[i]);
+    ctx->palette_stack.capacity = 1;
+    ctx->palette_stack.depth = 1;
+    ctx->palette_stack.top = &ctx->palette[0];
+    ctx->current_palette = 0;
+}
+
+void gles_CurrentPaletteMatrixOES(GlesContext *ctx, unsigned int index)
+{
+    if (index >= GLES_MAX_PALETTE_MATRICES) {
+        ctx_error(ctx, GL_INVALID_VALUE);
+        return;
+    }
+    ctx->current_palette = index;
+    ctx->palette_stack.top = &ctx->palette[index];
+}
+
+void gles_LoadPaletteFromModelViewMatrixOES(GlesContext *ctx)
+{
+    ctx->palette[ctx->current_palette] = *ctx->modelview.top;
+    ctx->dirty |= DIRTY_MATRIX;
 }

@@ -7,6 +7,7 @@
 #include "state.h"
 
 void matrix_stack_init(MatrixStack *s, int capacity);
+void matrix_palette_init(GlesContext *ctx);
 /* r = a * b for NUM matrices (column-major), rounding each element once */
 void matrix_mul_num(NUM *r, const NUM *a, const NUM *b);
 /* classify a NUM matrix (identity, affine, general) */

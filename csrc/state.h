@@ -23,6 +23,8 @@
 #define GLES_TEXTURE_STACK_DEPTH 4
 #define GLES_MAX_VIEWPORT_DIM 4096
 #define GLES_MAX_FRAMEBUFFER_DIM 4096
+#define GLES_MAX_PALETTE_MATRICES 32  /* OES_matrix_palette: at least 9 */
+#define GLES_MAX_VERTEX_UNITS 4       /* OES_matrix_palette: at least 3 */
 #define GLES_SUBPIXEL_BITS 8
 #define GLES_SUBPIXEL_ONE (1 << GLES_SUBPIXEL_BITS)
 #define GLES_MAX_SPAN 4096 /* the widest span the fragment stage gets */
@@ -67,8 +69,8 @@ typedef struct NameTable {
     unsigned int next_name;
 } NameTable;
 
-enum { ARR_VERTEX = 0, ARR_NORMAL, ARR_COLOR, ARR_POINT_SIZE, ARR_TEXCOORD0,
-       ARR_COUNT = ARR_TEXCOORD0 + GLES_MAX_TEXTURE_UNITS };
+enum { ARR_VERTEX = 0, ARR_NORMAL, ARR_COLOR, ARR_POINT_SIZE, ARR_MATRIX_INDEX, ARR_WEIGHT,
+       ARR_TEXCOORD0, ARR_COUNT = ARR_TEXCOORD0 + GLES_MAX_TEXTURE_UNITS };
 
 typedef struct ArrayState {
     int enabled;
@@ -162,6 +164,12 @@ struct GlesContext {
     MatrixStack modelview, projection;
     MatrixStack texture[GLES_MAX_TEXTURE_UNITS];
     MatrixStack *current_stack;
+    /* OES_matrix_palette: no stack, so a one-deep MatrixStack whose top is
+    ** the current palette matrix */
+    Matrix palette[GLES_MAX_PALETTE_MATRICES];
+    MatrixStack palette_stack;
+    unsigned int current_palette;
+    int matrix_palette;         /* MATRIX_PALETTE_OES enabled */
     double clip_plane[GLES_MAX_CLIP_PLANES][4];   /* eye space, as queried */
     NUM clip_plane_n[GLES_MAX_CLIP_PLANES][4];
     unsigned int active_texture, client_active_texture;
@@ -191,6 +199,8 @@ struct GlesContext {
     int need_eye;               /* user clip planes or lighting need eye coordinates */
     NUM normal_matrix[9];       /* inverse transpose of the modelview's 3x3, row-major */
     NUM rescale;                /* RESCALE_NORMAL factor */
+    NUM palette_normal[GLES_MAX_PALETTE_MATRICES][9];  /* the same per palette matrix */
+    NUM palette_rescale[GLES_MAX_PALETTE_MATRICES];
     int two_sided;              /* lighting with LIGHT_MODEL_TWO_SIDE */
     unsigned int active_lights; /* bit per enabled light */
     unsigned int clip_mask;     /* outcode bits that can be set */

@@ -22,7 +22,7 @@ void vertex_validate(GlesContext *ctx)
     }
     if (ctx->dirty & (DIRTY_CLIP | DIRTY_MATRIX)) {
         unsigned int mask = CLIP_LEFT | CLIP_RIGHT | CLIP_BOTTOM | CLIP_TOP | CLIP_NEAR | CLIP_FAR | CLIP_W;
-        ctx->need_eye = ctx->lighting;
+        ctx->need_eye = ctx->lighting || ctx->matrix_palette;
         for (int i = 0; i < GLES_MAX_CLIP_PLANES; i++)
             if (ctx->clip_plane_enabled[i]) {
                 mask |= CLIP_USER0 << i;
@@ -79,12 +79,69 @@ void vertex_window(const GlesContext *ctx, Vertex *v)
                              num_from_double(ctx->depth_range[1]), ctx->depth_max);
 }
 
+/* OES_matrix_palette: the vertex's matrix indices and weights (n units) */
+static int palette_units(const GlesContext *ctx, int64_t index, int idx[GLES_MAX_VERTEX_UNITS],
+                         NUM w[GLES_MAX_VERTEX_UNITS])
+{
+    const ArrayState *ia = &ctx->arrays[ARR_MATRIX_INDEX], *wa = &ctx->arrays[ARR_WEIGHT];
+    NUM iv[4] = { 0, 0, 0, 0 }, wv[4] = { 0, 0, 0, 0 };
+    array_fetch(ia, array_base(ia), index, 0, iv);
+    array_fetch(wa, array_base(wa), index, 0, wv);
+    int n = ia->size;
+    for (int i = 0; i < n; i++) {
+        /* indices were range-checked before the draw (draw.c) */
+        idx[i] = (int)num_to_double(iv[i]);
+        w[i] = i < wa->size ? wv[i] : NUM_ZERO;
+    }
+    return n;
+}
+
+/* eye = sum_i w_i * (M[idx_i] * obj) */
+static void palette_eye(const GlesContext *ctx, int64_t index, const NUM obj[4], NUM eye[4])
+{
+    int idx[GLES_MAX_VERTEX_UNITS];
+    NUM w[GLES_MAX_VERTEX_UNITS];
+    int n = palette_units(ctx, index, idx, w);
+    NUM acc[4] = { 0, 0, 0, 0 };
+    for (int i = 0; i < n; i++) {
+        const Matrix *m = &ctx->palette[idx[i]];
+        NUM e[4];
+        matrix_xform4(m->n, m->kind, obj, e);
+        for (int k = 0; k < 4; k++)
+            acc[k] = num_add(acc[k], num_mul(w[i], e[k]));
+    }
+    memcpy(eye, acc, sizeof acc);
+}
+
+/* eye-space normal with the palette: sum_i w_i * n Inv(Mu_i) (the
+** extension's second, per-matrix form) */
+static void palette_normal(const GlesContext *ctx, int64_t index, const NUM n[3], NUM out[3])
+{
+    int idx[GLES_MAX_VERTEX_UNITS];
+    NUM w[GLES_MAX_VERTEX_UNITS];
+    int cnt = palette_units(ctx, index, idx, w);
+    NUM acc[3] = { 0, 0, 0 };
+    for (int i = 0; i < cnt; i++) {
+        const NUM *nm = ctx->palette_normal[idx[i]];
+        for (int r = 0; r < 3; r++) {
+            NUM e = num_dot(nm + r * 3, 1, n, 1, 3);
+            if (ctx->rescale_normal)
+                e = num_mul(e, ctx->palette_rescale[idx[i]]);
+            acc[r] = num_add(acc[r], num_mul(w[i], e));
+        }
+    }
+    memcpy(out, acc, sizeof acc);
+}
+
 void vertex_position(GlesContext *ctx, int64_t index, Vertex *v)
 {
     const ArrayState *a = &ctx->arrays[ARR_VERTEX];
     NUM obj[4] = { NUM_ZERO, NUM_ZERO, NUM_ZERO, NUM_ONE };
     array_fetch(a, array_base(a), index, 0, obj);
-    if (ctx->need_eye) {
+    if (ctx->matrix_palette) {
+        palette_eye(ctx, index, obj, v->eye);
+        matrix_xform4(ctx->projection.top->n, ctx->projection.top->kind, v->eye, v->clip);
+    } else if (ctx->need_eye) {
         matrix_xform4(ctx->modelview.top->n, ctx->modelview.top->kind, obj, v->eye);
         matrix_xform4(ctx->projection.top->n, ctx->projection.top->kind, v->eye, v->clip);
     } else {
@@ -110,7 +167,13 @@ void vertex_attribs(GlesContext *ctx, int64_t index, Vertex *v)
             array_fetch(na, array_base(na), index, 1, normal);
         else
             memcpy(normal, ctx->cur_normal_n, sizeof normal);
-        light_vertex(ctx, v->eye, normal, color, v->color, ctx->two_sided ? v->color_back : NULL);
+        if (ctx->matrix_palette) {
+            NUM eye_n[3];
+            palette_normal(ctx, index, normal, eye_n);
+            light_vertex(ctx, v->eye, eye_n, 1, color, v->color, ctx->two_sided ? v->color_back : NULL);
+        } else {
+            light_vertex(ctx, v->eye, normal, 0, color, v->color, ctx->two_sided ? v->color_back : NULL);
+        }
     } else {
         /* §2.12.6: colours are clamped to [0,1] */
         for (int i = 0; i < 4; i++)

@@ -19,9 +19,9 @@ COLOR_FORMATS = {"rgba8888": 0, "rgb565": 1}
 VENDOR = "gles"
 EXTENSIONS = {
     "common": ["GL_OES_byte_coordinates", "GL_OES_fixed_point", "GL_OES_single_precision",
-               "GL_OES_matrix_get", "GL_OES_read_format"],
-    "common-lite": ["GL_OES_byte_coordinates", "GL_OES_fixed_point", "GL_OES_matrix_get",
-                    "GL_OES_read_format"],
+               "GL_OES_read_format", "GL_OES_matrix_palette"],
+    "common-lite": ["GL_OES_byte_coordinates", "GL_OES_fixed_point",
+                    "GL_OES_read_format", "GL_OES_matrix_palette"],
 }
 
 

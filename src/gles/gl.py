@@ -492,6 +492,26 @@ class GLBase:
         self._set_pointer("pointsize", self._lib.gles_PointSizePointerOES, (type, stride), type, pointer,
                           "glPointSizePointerOES")
 
+    def glMatrixIndexPointerOES(self, size: int, type: int, stride: int, pointer: Pointer) -> None:
+        """OES_matrix_palette: per-vertex palette indices (UNSIGNED_BYTE)."""
+        self._set_pointer("matrixindex", self._lib.gles_MatrixIndexPointerOES, (size, type, stride), type,
+                          pointer, "glMatrixIndexPointerOES")
+
+    def glWeightPointerOES(self, size: int, type: int, stride: int, pointer: Pointer) -> None:
+        """OES_matrix_palette: per-vertex weights (FIXED or FLOAT)."""
+        self._set_pointer("weight", self._lib.gles_WeightPointerOES, (size, type, stride), type, pointer,
+                          "glWeightPointerOES")
+
+    def glCurrentPaletteMatrixOES(self, index: int) -> None:
+        """OES_matrix_palette: the palette matrix that matrix commands change."""
+        with self._lock:
+            self._lib.gles_CurrentPaletteMatrixOES(self._p, index)
+
+    def glLoadPaletteFromModelViewMatrixOES(self) -> None:
+        """OES_matrix_palette: copy the modelview matrix into the current palette matrix."""
+        with self._lock:
+            self._lib.gles_LoadPaletteFromModelViewMatrixOES(self._p)
+
     def glGenBuffers(self, n: int) -> Any:
         n = _index(n)
         if n < 0:
