@@ -37,6 +37,7 @@ static void lerp_vertex(Vertex *r, const Vertex *p, const Vertex *q, CLIPT t, in
         for (int i = 0; i < 4; i++)
             r->tex[u][i] = num_lerp(p->tex[u][i], q->tex[u][i], t);
     r->point_size = num_lerp(p->point_size, q->point_size, t);
+    r->fog = num_lerp(p->fog, q->fog, t);
     r->outcode = CLIP_NEW_VERTEX;
 }
 

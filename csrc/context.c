@@ -13,6 +13,7 @@
 #include "matrix.h"
 #include "array.h"
 #include "light.h"
+#include "fragment.h"
 
 static int cap_index(unsigned int cap);
 
@@ -133,6 +134,8 @@ GlesContext *gles_context_create(int width, int height, int color_format,
 
     ctx->enable_bits = 1u << cap_index(GL_DITHER); /* §4.1.8: dither starts enabled */
     light_init(ctx);
+    fragment_init(ctx);
+    fog_init(ctx);
     array_init(ctx);
     ctx->dirty = DIRTY_ALL;
     return ctx;
@@ -205,6 +208,12 @@ static void set_enable(GlesContext *ctx, unsigned int cap, int on)
     case GL_CULL_FACE: ctx->cull_enabled = on; break;
     case GL_DEPTH_TEST: ctx->depth_test = on; break;
     case GL_SCISSOR_TEST: ctx->scissor_test = on; break;
+    case GL_ALPHA_TEST: ctx->alpha_test = on; break;
+    case GL_STENCIL_TEST: ctx->stencil_test = on; break;
+    case GL_BLEND: ctx->blend = on; break;
+    case GL_DITHER: ctx->dither = on; break;
+    case GL_COLOR_LOGIC_OP: ctx->color_logic_op = on; break;
+    case GL_FOG: ctx->fog = on; ctx->dirty |= DIRTY_CLIP; break;
     case GL_LIGHTING: ctx->lighting = on; ctx->dirty |= DIRTY_LIGHT | DIRTY_CLIP; break;
     case GL_MATRIX_PALETTE_OES: ctx->matrix_palette = on; ctx->dirty |= DIRTY_LIGHT | DIRTY_CLIP; break;
     case GL_NORMALIZE: ctx->normalize = on; break;
@@ -347,7 +356,7 @@ void gles_Hint(GlesContext *ctx, unsigned int target, unsigned int mode)
     case GL_PERSPECTIVE_CORRECTION_HINT: ctx->hints[0] = mode; break;
     case GL_POINT_SMOOTH_HINT: ctx->hints[1] = mode; break;
     case GL_LINE_SMOOTH_HINT: ctx->hints[2] = mode; break;
-    case GL_FOG_HINT: ctx->hints[3] = mode; break;
+    case GL_FOG_HINT: ctx->hints[3] = mode; ctx->dirty |= DIRTY_SPAN; break;
     case GL_GENERATE_MIPMAP_HINT: ctx->hint_generate_mipmap = mode; break;
     default: ctx_error(ctx, GL_INVALID_ENUM); break;
     }
@@ -533,6 +542,8 @@ int gles_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)
     }
     int n = array_get(ctx, pname, out, kind);
     if (n > 0)
+        return n;
+    if ((n = fragment_get(ctx, pname, out, kind)) > 0 || (n = fog_get(ctx, pname, out, kind)) > 0)
         return n;
     /* an enable queried through Get*v answers like IsEnabled */
     if (cap_index(pname) >= 0 || (pname >= GL_CLIP_PLANE0 && pname < GL_CLIP_PLANE0 + GLES_MAX_CLIP_PLANES)

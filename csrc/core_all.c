@@ -11,6 +11,8 @@
 #include "vertex.c"
 #include "clip.c"
 #include "raster.c"
+#include "fragment.c"
+#include "fog.c"
 #include "span.c"
 #include "draw.c"
 #include "framebuffer.c"

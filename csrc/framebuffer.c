@@ -7,6 +7,7 @@
 #include <string.h>
 #include "state.h"
 #include "raster.h"
+#include "fragment.h"
 
 /* the clear rectangle: the framebuffer, cut by the scissor box when enabled */
 static void clear_rect(const GlesContext *ctx, int *x0, int *y0, int *x1, int *y1)
@@ -45,10 +46,20 @@ int gles_Clear(GlesContext *ctx, unsigned int mask)
             for (int i = 0; i < 3; i++)
                 if (!ctx->color_mask[i])
                     keep |= m565[i];
+            /* §4.2.3: Clear is dithered like fragments */
+            static const uint32_t max565[3] = { 31, 63, 31 }, shift565[3] = { 11, 5, 0 };
             for (int y = y0; y < y1; y++) {
                 uint16_t *row = (uint16_t *)ctx->color + (size_t)y * w;
-                for (int x = x0; x < x1; x++)
-                    row[x] = (uint16_t)((row[x] & keep) | (packed & ~keep));
+                for (int x = x0; x < x1; x++) {
+                    uint32_t v = packed;
+                    if (ctx->dither) {
+                        BLENDV t = fragment_dither_threshold(x, y);
+                        v = 0;
+                        for (int i = 0; i < 3; i++)
+                            v |= blend_to_unorm(blend_from_num_clamped(c[i]), max565[i], t) << shift565[i];
+                    }
+                    row[x] = (uint16_t)((row[x] & keep) | (v & ~keep));
+                }
             }
         } else {
             for (int i = 0; i < 4; i++)
@@ -70,10 +81,18 @@ int gles_Clear(GlesContext *ctx, unsigned int mask)
         }
     }
     if ((mask & GL_STENCIL_BUFFER_BIT) && ctx->stencil) {
-        /* the stencil write mask arrives with the stencil stage; all bits now */
+        /* §4.2.3: the stencil write mask applies */
         uint8_t s = (uint8_t)(ctx->clear_stencil & 0xFF);
-        for (int y = y0; y < y1; y++)
-            memset(ctx->stencil + (size_t)y * w + x0, s, (size_t)(x1 - x0));
+        uint8_t wm = (uint8_t)(ctx->stencil_writemask & 0xFF);
+        for (int y = y0; y < y1; y++) {
+            uint8_t *row = ctx->stencil + (size_t)y * w;
+            if (wm == 0xFF) {
+                memset(row + x0, s, (size_t)(x1 - x0));
+            } else {
+                for (int x = x0; x < x1; x++)
+                    row[x] = (uint8_t)((row[x] & ~wm) | (s & wm));
+            }
+        }
     }
     return GLES_OK;
 }

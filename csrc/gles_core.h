@@ -139,6 +139,21 @@ int gles_GetLight(GlesContext *ctx, unsigned int light, unsigned int pname, doub
 int gles_GetMaterial(GlesContext *ctx, unsigned int face, unsigned int pname, double *out);
 
 /* {====================================================================
+** per-fragment operations and fog (§4.1, §3.8); Fog's params as Light's */
+void gles_AlphaFunc(GlesContext *ctx, unsigned int func, double ref);
+void gles_StencilFunc(GlesContext *ctx, unsigned int func, int ref, unsigned int mask);
+void gles_StencilOp(GlesContext *ctx, unsigned int fail, unsigned int zfail, unsigned int zpass);
+void gles_StencilMask(GlesContext *ctx, unsigned int mask);
+void gles_BlendFunc(GlesContext *ctx, unsigned int src, unsigned int dst);
+void gles_BlendFuncSeparateOES(GlesContext *ctx, unsigned int src_rgb, unsigned int dst_rgb,
+                               unsigned int src_alpha, unsigned int dst_alpha);
+void gles_BlendEquationOES(GlesContext *ctx, unsigned int mode);
+void gles_BlendEquationSeparateOES(GlesContext *ctx, unsigned int rgb, unsigned int alpha);
+void gles_LogicOp(GlesContext *ctx, unsigned int op);
+void gles_SampleCoverage(GlesContext *ctx, double value, unsigned char invert);
+void gles_Fog(GlesContext *ctx, unsigned int pname, const double *params, int vector);
+
+/* {====================================================================
 ** current values */
 void gles_Color4(GlesContext *ctx, double r, double g, double b, double a);
 void gles_Normal3(GlesContext *ctx, double x, double y, double z);

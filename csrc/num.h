@@ -466,6 +466,75 @@ static inline NUM num_pow01(NUM x, NUM s)
 /* }==================================================================== */
 
 /* {==================================================================== */
+/* exp(-x) for x >= 0 (fog), through the same exp2 as num_pow01 */
+
+#if NUM_IS_FIXED
+static inline NUM num_exp_neg(NUM x)
+{
+    if (x <= 0)
+        return NUM_ONE;
+    /* -x * log2(e) in 0.30; log2(e) = 1.4426950408889634 as 2.30 */
+    const int64_t log2e = 1549082005LL;
+    return fx_exp2_neg(-(((int64_t)x * log2e) >> 16));
+}
+#else
+static inline NUM num_exp_neg(NUM x)
+{
+    return x <= 0 ? (NUM)1 : (NUM)exp(-(double)x);
+}
+#endif
+/* }==================================================================== */
+
+/* {==================================================================== */
+/* Blending arithmetic. The fixed build blends in 0.30 (int64): the source
+** colour widens exactly from 16.16, a framebuffer value d becomes d/max with
+** an error under 2^-31, and the result rounds once to the framebuffer's
+** bits. So a modulation of two 8-bit values rounds to nearest exactly, and
+** 255 * 255 stays 255. Other builds blend in NUM. */
+
+#if NUM_IS_FIXED
+typedef int64_t BLENDV;
+#define BLEND_ONE ((int64_t)1 << 30)
+static inline BLENDV blend_from_num(NUM a) { return (int64_t)a * 16384; }
+static inline BLENDV blend_from_unorm(uint32_t d, uint32_t maxval)
+{
+    return (int64_t)((((uint64_t)d << 31) / maxval + 1) >> 1);
+}
+static inline BLENDV blend_mul(BLENDV a, BLENDV b) { return (a * b + ((int64_t)1 << 29)) >> 30; }
+static inline BLENDV blend_min(BLENDV a, BLENDV b) { return a < b ? a : b; }
+/* round(v * maxval) clamped to [0, maxval]; t in [0,1) as 0.30 is the
+** dither threshold (1/2 rounds to nearest) */
+static inline uint32_t blend_to_unorm(BLENDV v, uint32_t maxval, BLENDV t)
+{
+    if (v <= 0)
+        return 0;
+    if (v >= BLEND_ONE)
+        return maxval;
+    return (uint32_t)((v * maxval + t) >> 30);
+}
+static inline BLENDV blend_from_num_clamped(NUM a) { return blend_from_num(num_clamp01(a)); }
+static inline BLENDV blend_ratio(int n, int d) { return ((int64_t)n << 30) / d; }
+#else
+typedef NUM BLENDV;
+#define BLEND_ONE ((NUM)1)
+static inline BLENDV blend_from_num(NUM a) { return a; }
+static inline BLENDV blend_from_unorm(uint32_t d, uint32_t maxval) { return (NUM)d / (NUM)maxval; }
+static inline BLENDV blend_mul(BLENDV a, BLENDV b) { return a * b; }
+static inline BLENDV blend_min(BLENDV a, BLENDV b) { return a < b ? a : b; }
+static inline uint32_t blend_to_unorm(BLENDV v, uint32_t maxval, BLENDV t)
+{
+    if (!(v > 0))
+        return 0;
+    if (v >= 1)
+        return maxval;
+    return (uint32_t)(v * (NUM)maxval + t);
+}
+static inline BLENDV blend_from_num_clamped(NUM a) { return num_clamp01(a); }
+static inline BLENDV blend_ratio(int n, int d) { return (NUM)n / (NUM)d; }
+#endif
+/* }==================================================================== */
+
+/* {==================================================================== */
 /* Rasterizer weights and depth values */
 
 #if NUM_IS_FIXED

@@ -8,6 +8,7 @@
 ** covers every state and is the reference they must match bit for bit.
 */
 #include "raster.h"
+#include "fragment.h"
 
 uint32_t span_pack_color(const GlesContext *ctx, const NUM *c)
 {
@@ -17,108 +18,229 @@ uint32_t span_pack_color(const GlesContext *ctx, const NUM *c)
          | (num_to_unorm(c[3], 255) << 24);
 }
 
-static int depth_pass(unsigned int func, uint32_t z, uint32_t stored)
+/* a [0,1] colour channel to an integer in [0, maxval]; with a dither
+** threshold t in [0,1) when dithering applies, else round to nearest */
+static uint32_t to_channel(NUM c, uint32_t maxval, int dither, BLENDV t)
 {
-    switch (func) {
-    case GL_NEVER: return 0;
-    case GL_LESS: return z < stored;
-    case GL_EQUAL: return z == stored;
-    case GL_LEQUAL: return z <= stored;
-    case GL_GREATER: return z > stored;
-    case GL_NOTEQUAL: return z != stored;
-    case GL_GEQUAL: return z >= stored;
-    default: return 1; /* GL_ALWAYS */
-    }
+    return dither ? blend_to_unorm(blend_from_num_clamped(c), maxval, t) : num_to_unorm(c, maxval);
 }
 
-/* Every state: the reference path. */
+/* Every state: the reference path. Per pixel, in the spec's order: colour,
+** fog, alpha test, stencil test, depth test, blending, dithering, logic op,
+** masks (§4.1). */
 static void span_generic(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
 {
     const Vertex *v0 = t->v[0], *v1 = t->v[1], *v2 = t->v[2];
     const int depth = ctx->depth_test && ctx->depth;
+    const int stencil = ctx->stencil_test && ctx->stencil;
     const int smooth = t->smooth;
+    const int is565 = ctx->color_format == GLES_COLOR_RGB565;
+    const int dither = ctx->dither && is565;
+    static const uint32_t max565[4] = { 31, 63, 31, 0 }, shift565[4] = { 11, 5, 0, 0 };
     const size_t row = (size_t)y * (size_t)ctx->width;
     int64_t e[3];
     for (int i = 0; i < 3; i++)
         e[i] = t->ea[i] * x0 + t->eb[i] * y + t->ec[i];
     uint32_t keep = 0; /* framebuffer bits the colour mask protects */
-    if (ctx->color_format == GLES_COLOR_RGB565) {
-        static const uint32_t m565[3] = { 0xF800, 0x07E0, 0x001F };
-        for (int i = 0; i < 3; i++)
-            if (!ctx->color_mask[i])
-                keep |= m565[i];
-    } else {
-        for (int i = 0; i < 4; i++)
-            if (!ctx->color_mask[i])
-                keep |= 0xFFu << (8 * i);
-    }
+    for (int i = 0; i < (is565 ? 3 : 4); i++)
+        if (!ctx->color_mask[i])
+            keep |= is565 ? max565[i] << shift565[i] : 0xFFu << (8 * i);
+    const uint32_t fbmask = is565 ? 0xFFFFu : 0xFFFFFFFFu;
     for (int k = 0; k < n; k++, e[0] += t->ea[0], e[1] += t->ea[1], e[2] += t->ea[2]) {
-        size_t at = row + (size_t)(x0 + k);
+        const int x = x0 + k;
+        const size_t at = row + (size_t)x;
+        WGT p[3];
+        int have_p = 0;
+        NUM c[4];
+        if (smooth) {
+            wgt_persp(&t->wgt, e, p);
+            have_p = 1;
+            for (int i = 0; i < 4; i++)
+                c[i] = wgt_lerp3(t->col[0][i], t->col[1][i], t->col[2][i], p[0], p[1], p[2]);
+        } else {
+            for (int i = 0; i < 4; i++)
+                c[i] = t->flat[i];
+        }
+        if (ctx->fog) {
+            if (!have_p)
+                wgt_persp(&t->wgt, e, p);
+            NUM fv = wgt_lerp3(v0->fog, v1->fog, v2->fog, p[0], p[1], p[2]);
+            NUM f = ctx->fog_per_fragment ? fog_factor(ctx, fv) : num_clamp01(fv);
+            for (int i = 0; i < 3; i++) /* C = f C + (1 - f) C_fog */
+                c[i] = num_add(ctx->n_fog_color[i], num_mul(f, num_sub(c[i], ctx->n_fog_color[i])));
+        }
+        if (ctx->alpha_test && !fragment_alpha_pass(ctx, c[3]))
+            continue;
+        uint8_t s = 0;
+        if (stencil) {
+            s = ctx->stencil[at];
+            if (!fragment_stencil_pass(ctx, s)) {
+                ctx->stencil[at] = fragment_stencil_op(ctx, ctx->stencil_fail, s);
+                continue;
+            }
+        }
+        int zpass = 1;
+        uint32_t z = 0;
         if (depth) {
             WGT l[3];
             wgt_linear(&t->wgt, e, l);
-            uint32_t z = wgt_depth3(v0->wz, v1->wz, v2->wz, l[0], l[1], l[2], ctx->depth_max);
-            if (!depth_pass(ctx->depth_func, z, ctx->depth[at]))
-                continue;
-            if (ctx->depth_mask)
-                ctx->depth[at] = z;
+            z = wgt_depth3(v0->wz, v1->wz, v2->wz, l[0], l[1], l[2], ctx->depth_max);
+            zpass = fragment_compare(ctx->depth_func, z, ctx->depth[at]);
         }
-        uint32_t packed;
-        if (smooth) {
-            WGT p[3];
-            NUM c[4];
-            wgt_persp(&t->wgt, e, p);
-            for (int i = 0; i < 4; i++)
-                c[i] = wgt_lerp3(t->col[0][i], t->col[1][i], t->col[2][i], p[0], p[1], p[2]);
-            packed = span_pack_color(ctx, c);
+        if (stencil)
+            ctx->stencil[at] = fragment_stencil_op(ctx, zpass ? ctx->stencil_zpass : ctx->stencil_zfail, s);
+        if (!zpass)
+            continue;
+        if (depth && ctx->depth_mask)
+            ctx->depth[at] = z;
+
+        uint32_t dpacked = is565 ? ((uint16_t *)ctx->color)[at] : ((uint32_t *)ctx->color)[at];
+        BLENDV t_d = dither ? fragment_dither_threshold(x, y) : BLEND_ONE / 2;
+        uint32_t packed = 0;
+        if (ctx->blend && !ctx->color_logic_op) {
+            BLENDV src[4], dst[4], out[4];
+            for (int i = 0; i < 4; i++) {
+                src[i] = blend_from_num_clamped(c[i]);
+                if (is565)
+                    dst[i] = i < 3 ? blend_from_unorm((dpacked >> shift565[i]) & max565[i], max565[i]) : BLEND_ONE;
+                else
+                    dst[i] = blend_from_unorm((dpacked >> (8 * i)) & 0xFFu, 255);
+            }
+            fragment_blend(ctx, src, dst, out);
+            for (int i = 0; i < (is565 ? 3 : 4); i++) {
+                uint32_t m = is565 ? max565[i] : 255;
+                packed |= blend_to_unorm(out[i], m, t_d) << (is565 ? shift565[i] : 8u * (uint32_t)i);
+            }
         } else {
-            packed = t->flat_packed;
+            for (int i = 0; i < (is565 ? 3 : 4); i++) {
+                uint32_t m = is565 ? max565[i] : 255;
+                packed |= to_channel(c[i], m, dither, t_d) << (is565 ? shift565[i] : 8u * (uint32_t)i);
+            }
         }
-        if (ctx->color_format == GLES_COLOR_RGB565) {
-            uint16_t *dst = (uint16_t *)ctx->color + at;
-            *dst = (uint16_t)((*dst & keep) | (packed & ~keep));
-        } else {
-            uint32_t *dst = (uint32_t *)ctx->color + at;
-            *dst = (*dst & keep) | (packed & ~keep);
-        }
+        if (ctx->color_logic_op)
+            packed = fragment_logic_op(ctx->logic_op, packed, dpacked) & fbmask;
+        packed = (dpacked & keep) | (packed & ~keep);
+        if (is565)
+            ((uint16_t *)ctx->color)[at] = (uint16_t)packed;
+        else
+            ((uint32_t *)ctx->color)[at] = packed;
     }
 }
 
 #define SPAN_NAME span_flat
 #define SPAN_SMOOTH 0
 #define SPAN_DEPTH 0
+#define SPAN_BLEND 0
 #include "span_tmpl.h"
 
 #define SPAN_NAME span_smooth
 #define SPAN_SMOOTH 1
 #define SPAN_DEPTH 0
+#define SPAN_BLEND 0
 #include "span_tmpl.h"
 
 #define SPAN_NAME span_flat_zless
 #define SPAN_SMOOTH 0
 #define SPAN_DEPTH 1
+#define SPAN_BLEND 0
 #include "span_tmpl.h"
 
 #define SPAN_NAME span_smooth_zless
 #define SPAN_SMOOTH 1
 #define SPAN_DEPTH 1
+#define SPAN_BLEND 0
 #include "span_tmpl.h"
+
+#define SPAN_NAME span_flat_alpha
+#define SPAN_SMOOTH 0
+#define SPAN_DEPTH 0
+#define SPAN_BLEND 1
+#include "span_tmpl.h"
+
+#define SPAN_NAME span_smooth_alpha
+#define SPAN_SMOOTH 1
+#define SPAN_DEPTH 0
+#define SPAN_BLEND 1
+#include "span_tmpl.h"
+
+#define SPAN_NAME span_flat_zless_alpha
+#define SPAN_SMOOTH 0
+#define SPAN_DEPTH 1
+#define SPAN_BLEND 1
+#include "span_tmpl.h"
+
+#define SPAN_NAME span_smooth_zless_alpha
+#define SPAN_SMOOTH 1
+#define SPAN_DEPTH 1
+#define SPAN_BLEND 1
+#include "span_tmpl.h"
+
+#define SPAN_NAME span_flat_add
+#define SPAN_SMOOTH 0
+#define SPAN_DEPTH 0
+#define SPAN_BLEND 2
+#include "span_tmpl.h"
+
+#define SPAN_NAME span_smooth_add
+#define SPAN_SMOOTH 1
+#define SPAN_DEPTH 0
+#define SPAN_BLEND 2
+#include "span_tmpl.h"
+
+#define SPAN_NAME span_flat_zless_add
+#define SPAN_SMOOTH 0
+#define SPAN_DEPTH 1
+#define SPAN_BLEND 2
+#include "span_tmpl.h"
+
+#define SPAN_NAME span_smooth_zless_add
+#define SPAN_SMOOTH 1
+#define SPAN_DEPTH 1
+#define SPAN_BLEND 2
+#include "span_tmpl.h"
+
+/* which specialised blend a state is: 0 none, 1 alpha, 2 additive, -1 other */
+static int blend_kind(const GlesContext *ctx)
+{
+    if (!ctx->blend || ctx->color_logic_op)
+        return 0;
+    if (ctx->blend_eq_rgb != GL_FUNC_ADD_OES || ctx->blend_eq_alpha != GL_FUNC_ADD_OES)
+        return -1;
+    unsigned int s = ctx->blend_src_rgb, d = ctx->blend_dst_rgb;
+    if (ctx->blend_src_alpha != s || ctx->blend_dst_alpha != d)
+        return -1;
+    if (s == GL_SRC_ALPHA && d == GL_ONE_MINUS_SRC_ALPHA)
+        return 1;
+    if (s == GL_ONE && d == GL_ONE)
+        return 2;
+    return -1;
+}
 
 void span_choose(GlesContext *ctx)
 {
+    /* [depth][blend][smooth] */
+    static const SpanFunc table[2][3][2] = {
+        { { span_flat, span_smooth }, { span_flat_alpha, span_smooth_alpha }, { span_flat_add, span_smooth_add } },
+        { { span_flat_zless, span_smooth_zless }, { span_flat_zless_alpha, span_smooth_zless_alpha },
+          { span_flat_zless_add, span_smooth_zless_add } },
+    };
+    static const char *names[2][3][2] = {
+        { { "flat", "smooth" }, { "flat_alpha", "smooth_alpha" }, { "flat_add", "smooth_add" } },
+        { { "flat_zless", "smooth_zless" }, { "flat_zless_alpha", "smooth_zless_alpha" },
+          { "flat_zless_add", "smooth_zless_add" } },
+    };
     const int depth = ctx->depth_test && ctx->depth;
     const int smooth = ctx->shade_model == GL_SMOOTH;
+    const int bk = blend_kind(ctx);
     const int simple = ctx->color_format == GLES_COLOR_RGBA8888 && ctx->color_mask[0] && ctx->color_mask[1]
-                    && ctx->color_mask[2] && ctx->color_mask[3] && !(ctx->debug & GLES_DEBUG_GENERIC_SPANS);
+                    && ctx->color_mask[2] && ctx->color_mask[3] && !(ctx->debug & GLES_DEBUG_GENERIC_SPANS)
+                    && !ctx->alpha_test && !(ctx->stencil_test && ctx->stencil) && !ctx->fog
+                    && !ctx->color_logic_op && bk >= 0;
     const int zless = depth && ctx->depth_func == GL_LESS && ctx->depth_mask;
-    if (simple && !depth) {
-        ctx->span = smooth ? span_smooth : span_flat;
-        ctx->span_const = span_flat;
-        ctx->span_name = smooth ? "smooth" : "flat";
-    } else if (simple && zless) {
-        ctx->span = smooth ? span_smooth_zless : span_flat_zless;
-        ctx->span_const = span_flat_zless;
-        ctx->span_name = smooth ? "smooth_zless" : "flat_zless";
+    if (simple && (!depth || zless)) {
+        ctx->span = table[depth][bk][smooth];
+        ctx->span_const = table[depth][bk][0];
+        ctx->span_name = names[depth][bk][smooth];
     } else {
         ctx->span = ctx->span_const = span_generic;
         ctx->span_name = "generic";

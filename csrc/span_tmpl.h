@@ -4,10 +4,13 @@
 **   SPAN_NAME    MUST: the function's name
 **   SPAN_SMOOTH  1: interpolate colour perspective-correctly; 0: flat colour
 **   SPAN_DEPTH   1: depth test LESS with depth writes; 0: no depth test
+**   SPAN_BLEND   0: no blending; 1: SRC_ALPHA, ONE_MINUS_SRC_ALPHA;
+**                2: ONE, ONE (both with FUNC_ADD, the same for alpha)
 ** Preconditions for every instance (span_choose checks them): RGBA8888
-** framebuffer, colour mask all on, scissor already applied by the caller.
-** The generic path in span.c handles every other state, and a test renders
-** random states through both and requires identical pixels.
+** framebuffer, colour mask all on, no alpha test, stencil, fog or logic op,
+** scissor already applied by the caller. The generic path in span.c
+** handles every other state, and a test renders random states through both
+** and requires identical pixels.
 */
 static void SPAN_NAME(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
 {
@@ -24,9 +27,10 @@ static void SPAN_NAME(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
     const NUM *c0 = t->col[0], *c1 = t->col[1], *c2 = t->col[2];
     (void)v0; (void)v1; (void)v2; (void)c0; (void)c1; (void)c2;
 #endif
-#if !SPAN_SMOOTH
+#if !SPAN_SMOOTH && !SPAN_BLEND
     const uint32_t packed = t->flat_packed;
 #endif
+    (void)ctx;
     for (int k = 0; k < n; k++) {
 #if SPAN_DEPTH
         WGT l[3];
@@ -40,11 +44,31 @@ static void SPAN_NAME(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
 #if SPAN_SMOOTH
             WGT p[3];
             wgt_persp(&t->wgt, e, p);
-            uint32_t r = num_to_unorm(wgt_lerp3(c0[0], c1[0], c2[0], p[0], p[1], p[2]), 255);
-            uint32_t g = num_to_unorm(wgt_lerp3(c0[1], c1[1], c2[1], p[0], p[1], p[2]), 255);
-            uint32_t b = num_to_unorm(wgt_lerp3(c0[2], c1[2], c2[2], p[0], p[1], p[2]), 255);
-            uint32_t a = num_to_unorm(wgt_lerp3(c0[3], c1[3], c2[3], p[0], p[1], p[2]), 255);
-            dst[k] = r | (g << 8) | (b << 16) | (a << 24);
+            NUM c[4];
+            for (int i = 0; i < 4; i++)
+                c[i] = wgt_lerp3(c0[i], c1[i], c2[i], p[0], p[1], p[2]);
+#elif SPAN_BLEND
+            const NUM *c = t->flat;
+#endif
+#if SPAN_BLEND
+            uint32_t d = dst[k], out = 0;
+#if SPAN_BLEND == 1
+            BLENDV sa = blend_from_num_clamped(c[3]);
+#endif
+            for (int i = 0; i < 4; i++) {
+                BLENDV s = blend_from_num_clamped(c[i]);
+                BLENDV dv = blend_from_unorm((d >> (8 * i)) & 0xFFu, 255);
+#if SPAN_BLEND == 1
+                BLENDV v = blend_mul(s, sa) + blend_mul(dv, BLEND_ONE - sa);
+#else
+                BLENDV v = s + dv;
+#endif
+                out |= blend_to_unorm(v, 255, BLEND_ONE / 2) << (8 * i);
+            }
+            dst[k] = out;
+#elif SPAN_SMOOTH
+            dst[k] = num_to_unorm(c[0], 255) | (num_to_unorm(c[1], 255) << 8) | (num_to_unorm(c[2], 255) << 16)
+                   | (num_to_unorm(c[3], 255) << 24);
 #else
             dst[k] = packed;
 #endif
@@ -59,3 +83,4 @@ static void SPAN_NAME(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
 #undef SPAN_NAME
 #undef SPAN_SMOOTH
 #undef SPAN_DEPTH
+#undef SPAN_BLEND

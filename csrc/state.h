@@ -110,6 +110,7 @@ typedef struct Vertex {
     NUM color_back[4];      /* back colour, with two-sided lighting */
     NUM tex[GLES_MAX_TEXTURE_UNITS][4];
     NUM point_size;
+    NUM fog;                /* fog factor f, or |z_eye| when fog is per fragment */
     unsigned int outcode;   /* bit per violated clip plane */
     /* window position, valid when outcode == 0 or after clipping */
     int64_t wx, wy;         /* in subpixels */
@@ -156,6 +157,28 @@ struct GlesContext {
     unsigned int depth_func;
     unsigned int cull_mode, front_face, shade_model;
     unsigned int hints[4];      /* perspective, point smooth, line smooth, fog */
+
+    /* per-fragment operations (§4.1) */
+    int alpha_test, stencil_test, blend, dither, color_logic_op;
+    unsigned int alpha_func;
+    double alpha_ref;
+    NUM n_alpha_ref;
+    unsigned int stencil_func, stencil_fail, stencil_zfail, stencil_zpass;
+    int stencil_ref;
+    uint32_t stencil_value_mask, stencil_writemask;
+    unsigned int blend_src_rgb, blend_dst_rgb, blend_src_alpha, blend_dst_alpha;
+    unsigned int blend_eq_rgb, blend_eq_alpha;
+    unsigned int logic_op;
+    double sample_coverage_value;
+    int sample_coverage_invert;
+
+    /* fog (§3.8) */
+    int fog;
+    unsigned int fog_mode;
+    double fog_density, fog_start, fog_end, fog_color[4];
+    NUM n_fog_density, n_fog_start, n_fog_end, n_fog_color[4];
+    NUM n_fog_scale;            /* 1 / (end - start) for LINEAR */
+    int fog_per_fragment;       /* FOG_HINT NICEST */
     unsigned int hint_generate_mipmap;
     int pack_alignment, unpack_alignment;
 

@@ -13,6 +13,7 @@
 #include "matrix.h"
 #include "array.h"
 #include "light.h"
+#include "fragment.h"
 
 void vertex_validate(GlesContext *ctx)
 {
@@ -22,7 +23,7 @@ void vertex_validate(GlesContext *ctx)
     }
     if (ctx->dirty & (DIRTY_CLIP | DIRTY_MATRIX)) {
         unsigned int mask = CLIP_LEFT | CLIP_RIGHT | CLIP_BOTTOM | CLIP_TOP | CLIP_NEAR | CLIP_FAR | CLIP_W;
-        ctx->need_eye = ctx->lighting || ctx->matrix_palette;
+        ctx->need_eye = ctx->lighting || ctx->matrix_palette || ctx->fog;
         for (int i = 0; i < GLES_MAX_CLIP_PLANES; i++)
             if (ctx->clip_plane_enabled[i]) {
                 mask |= CLIP_USER0 << i;
@@ -32,6 +33,8 @@ void vertex_validate(GlesContext *ctx)
     }
     if (ctx->dirty & (DIRTY_LIGHT | DIRTY_MATRIX))
         light_validate(ctx);
+    if (ctx->dirty & DIRTY_SPAN)
+        fog_validate(ctx);
 }
 
 NUM vertex_plane_distance(const GlesContext *ctx, const Vertex *v, unsigned int bit)
@@ -179,6 +182,8 @@ void vertex_attribs(GlesContext *ctx, int64_t index, Vertex *v)
         for (int i = 0; i < 4; i++)
             v->color[i] = num_clamp01(color[i]);
     }
+    if (ctx->fog)
+        v->fog = fog_vertex_value(ctx, v->eye);
     const ArrayState *ps = &ctx->arrays[ARR_POINT_SIZE];
     if (ps->enabled) {
         array_fetch(ps, array_base(ps), index, 0, &v->point_size);

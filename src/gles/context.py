@@ -19,9 +19,11 @@ COLOR_FORMATS = {"rgba8888": 0, "rgb565": 1}
 VENDOR = "gles"
 EXTENSIONS = {
     "common": ["GL_OES_byte_coordinates", "GL_OES_fixed_point", "GL_OES_single_precision",
-               "GL_OES_read_format", "GL_OES_matrix_palette"],
+               "GL_OES_read_format", "GL_OES_matrix_palette", "GL_OES_blend_subtract",
+               "GL_OES_blend_func_separate", "GL_OES_blend_equation_separate", "GL_OES_stencil_wrap"],
     "common-lite": ["GL_OES_byte_coordinates", "GL_OES_fixed_point",
-                    "GL_OES_read_format", "GL_OES_matrix_palette"],
+                    "GL_OES_read_format", "GL_OES_matrix_palette", "GL_OES_blend_subtract",
+                    "GL_OES_blend_func_separate", "GL_OES_blend_equation_separate", "GL_OES_stencil_wrap"],
 }
 
 

@@ -62,17 +62,12 @@ _MISSING_BOTH = {
     "glCopyTexSubImage2D glTexParameteri glTexParameteriv glTexParameterx glTexParameterxv "
     "glGetTexParameteriv glGetTexParameterxv glTexEnvi glTexEnviv glTexEnvx glTexEnvxv "
     "glGetTexEnviv glGetTexEnvxv",
-    "per-fragment operations": "glAlphaFuncx glBlendFunc glLogicOp glStencilFunc glStencilMask "
-    "glStencilOp glSampleCoveragex",
-    "fog": "glFogx glFogxv",
     "points and lines": "glPointSizex glLineWidthx glPointParameterx glPointParameterxv",
     "polygon offset": "glPolygonOffsetx",
 }
 _MISSING_COMMON = {
     "texturing": "glTexParameterf glTexParameterfv glGetTexParameterfv glTexEnvf glTexEnvfv "
     "glGetTexEnvfv",
-    "per-fragment operations": "glAlphaFunc glSampleCoverage",
-    "fog": "glFogf glFogfv",
     "points and lines": "glPointSize glLineWidth glPointParameterf glPointParameterfv",
     "polygon offset": "glPolygonOffset",
 }
@@ -82,6 +77,7 @@ _MISSING_COMMON = {
 _PARAM_COUNT = {
     C.GL_AMBIENT: 4, C.GL_DIFFUSE: 4, C.GL_SPECULAR: 4, C.GL_POSITION: 4, C.GL_EMISSION: 4,
     C.GL_AMBIENT_AND_DIFFUSE: 4, C.GL_LIGHT_MODEL_AMBIENT: 4, C.GL_SPOT_DIRECTION: 3,
+    C.GL_FOG_COLOR: 4,
 }
 
 
@@ -462,6 +458,73 @@ class GLBase:
         return self._result([int(np.floor(v * 65536.0 + 0.5)) for v in vals], np.int32)
 
     # {================================================================
+    # per-fragment operations (§4.1) and fog (§3.8)
+
+    def glAlphaFuncx(self, func: int, ref: int) -> None:
+        with self._lock:
+            self._lib.gles_AlphaFunc(self._p, func, _fixed(ref))
+
+    def glStencilFunc(self, func: int, ref: int, mask: int) -> None:
+        with self._lock:
+            self._lib.gles_StencilFunc(self._p, func, ref, _index(mask) & 0xFFFFFFFF)
+
+    def glStencilOp(self, fail: int, zfail: int, zpass: int) -> None:
+        with self._lock:
+            self._lib.gles_StencilOp(self._p, fail, zfail, zpass)
+
+    def glStencilMask(self, mask: int) -> None:
+        with self._lock:
+            self._lib.gles_StencilMask(self._p, _index(mask) & 0xFFFFFFFF)
+
+    def glBlendFunc(self, sfactor: int, dfactor: int) -> None:
+        with self._lock:
+            self._lib.gles_BlendFunc(self._p, sfactor, dfactor)
+
+    def glBlendFuncSeparateOES(self, src_rgb: int, dst_rgb: int, src_alpha: int, dst_alpha: int) -> None:
+        """OES_blend_func_separate."""
+        with self._lock:
+            self._lib.gles_BlendFuncSeparateOES(self._p, src_rgb, dst_rgb, src_alpha, dst_alpha)
+
+    def glBlendEquationOES(self, mode: int) -> None:
+        """OES_blend_subtract."""
+        with self._lock:
+            self._lib.gles_BlendEquationOES(self._p, mode)
+
+    def glBlendEquationSeparateOES(self, mode_rgb: int, mode_alpha: int) -> None:
+        """OES_blend_equation_separate."""
+        with self._lock:
+            self._lib.gles_BlendEquationSeparateOES(self._p, mode_rgb, mode_alpha)
+
+    def glLogicOp(self, opcode: int) -> None:
+        with self._lock:
+            self._lib.gles_LogicOp(self._p, opcode)
+
+    def glSampleCoveragex(self, value: int, invert: bool) -> None:
+        with self._lock:
+            self._lib.gles_SampleCoverage(self._p, _fixed(value), bool(invert))
+
+    def _fog_scalar(self, pname: int, param: Any, fixed: bool) -> Any:
+        # FOG_MODE takes an enum, never scaled
+        if int(pname) == C.GL_FOG_MODE:
+            v = float(_index(param)) if fixed else float(param)
+        else:
+            v = _fixed(param) if fixed else float(param)
+        return self._ffi.new("double[4]", [v, 0.0, 0.0, 0.0])
+
+    def glFogx(self, pname: int, param: int) -> None:
+        buf = self._fog_scalar(pname, param, True)
+        with self._lock:
+            self._lib.gles_Fog(self._p, pname, buf, 0)
+
+    def glFogxv(self, pname: int, params: Any) -> None:
+        if int(pname) == C.GL_FOG_MODE:
+            buf = self._fog_scalar(pname, _values(params, 1, "glFogxv", np.int64)[0], True)
+        else:
+            buf = self._params(pname, params, True, "glFogxv")
+        with self._lock:
+            self._lib.gles_Fog(self._p, pname, buf, 1)
+
+    # {================================================================
     # vertex arrays and buffer objects
 
     def _set_pointer(self, key: Any, fn: Any, args: tuple, gltype: int, pointer: Pointer, what: str) -> None:
@@ -675,6 +738,27 @@ class GLCommon(GLBase):
 
     def glGetMaterialfv(self, face: int, pname: int) -> Any:
         return self._result(self._get_lm(self._lib.gles_GetMaterial, face, pname), np.float32)
+
+    def glAlphaFunc(self, func: int, ref: float) -> None:
+        with self._lock:
+            self._lib.gles_AlphaFunc(self._p, func, ref)
+
+    def glSampleCoverage(self, value: float, invert: bool) -> None:
+        with self._lock:
+            self._lib.gles_SampleCoverage(self._p, value, bool(invert))
+
+    def glFogf(self, pname: int, param: float) -> None:
+        buf = self._fog_scalar(pname, param, False)
+        with self._lock:
+            self._lib.gles_Fog(self._p, pname, buf, 0)
+
+    def glFogfv(self, pname: int, params: Any) -> None:
+        if int(pname) == C.GL_FOG_MODE:
+            buf = self._fog_scalar(pname, _values(params, 1, "glFogfv")[0], False)
+        else:
+            buf = self._params(pname, params, False, "glFogfv")
+        with self._lock:
+            self._lib.gles_Fog(self._p, pname, buf, 1)
 
     def glGetClipPlanef(self, plane: int) -> np.ndarray:
         eq = self._ffi.new("double[4]")

@@ -1,0 +1,317 @@
+/*
+** fragment.c -- per-fragment operation state and arithmetic (ES 1.1 §4.1).
+** Owns: AlphaFunc, StencilFunc/Op/Mask, BlendFunc (and the OES separate
+**       and subtract forms), LogicOp, SampleCoverage; the stencil, blend,
+**       logic-op and dither arithmetic the span functions call.
+** Order in a span (span.c): alpha test, stencil test, depth test, blend,
+**       dither, logic op, masks.
+** Colour values: framebuffer channels are integers; blending works in
+**       BLENDV (num.h) so that exact 8-bit products round exactly.
+*/
+#include "state.h"
+#include "fragment.h"
+
+void fragment_init(GlesContext *ctx)
+{
+    ctx->dither = 1;
+    ctx->alpha_func = GL_ALWAYS;
+    ctx->stencil_func = GL_ALWAYS;
+    ctx->stencil_value_mask = 0xFFFFFFFFu;
+    ctx->stencil_writemask = 0xFFFFFFFFu;
+    ctx->stencil_fail = ctx->stencil_zfail = ctx->stencil_zpass = GL_KEEP;
+    ctx->blend_src_rgb = ctx->blend_src_alpha = GL_ONE;
+    ctx->blend_dst_rgb = ctx->blend_dst_alpha = GL_ZERO;
+    ctx->blend_eq_rgb = ctx->blend_eq_alpha = GL_FUNC_ADD_OES;
+    ctx->logic_op = GL_COPY;
+    ctx->sample_coverage_value = 1.0;
+}
+
+static int is_func(unsigned int f) { return f >= GL_NEVER && f <= GL_ALWAYS; }
+
+/* {====================================================================
+** commands */
+
+void gles_AlphaFunc(GlesContext *ctx, unsigned int func, double ref)
+{
+    if (!is_func(func)) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    ctx->alpha_func = func;
+    ctx->alpha_ref = !(ref > 0) ? 0.0 : (ref > 1 ? 1.0 : ref);
+    ctx->n_alpha_ref = num_from_double(ctx->alpha_ref);
+    ctx->dirty |= DIRTY_SPAN;
+}
+
+void gles_StencilFunc(GlesContext *ctx, unsigned int func, int ref, unsigned int mask)
+{
+    if (!is_func(func)) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    ctx->stencil_func = func;
+    ctx->stencil_ref = ref;
+    ctx->stencil_value_mask = mask;
+    ctx->dirty |= DIRTY_SPAN;
+}
+
+static int is_stencil_op(unsigned int op)
+{
+    switch (op) {
+    case GL_KEEP: case GL_ZERO: case GL_REPLACE: case GL_INCR: case GL_DECR: case GL_INVERT:
+    case GL_INCR_WRAP_OES: case GL_DECR_WRAP_OES:
+        return 1;
+    default:
+        return 0;
+    }
+}
+
+void gles_StencilOp(GlesContext *ctx, unsigned int fail, unsigned int zfail, unsigned int zpass)
+{
+    if (!is_stencil_op(fail) || !is_stencil_op(zfail) || !is_stencil_op(zpass)) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    ctx->stencil_fail = fail;
+    ctx->stencil_zfail = zfail;
+    ctx->stencil_zpass = zpass;
+    ctx->dirty |= DIRTY_SPAN;
+}
+
+void gles_StencilMask(GlesContext *ctx, unsigned int mask)
+{
+    ctx->stencil_writemask = mask;
+    ctx->dirty |= DIRTY_SPAN;
+}
+
+/* Tables 4.1 and 4.2 (GL 1.3 rules, kept by ES 1.1): the colour factors of
+** the other side are not allowed on each side */
+static int is_src_factor(unsigned int f)
+{
+    switch (f) {
+    case GL_ZERO: case GL_ONE: case GL_DST_COLOR: case GL_ONE_MINUS_DST_COLOR: case GL_SRC_ALPHA:
+    case GL_ONE_MINUS_SRC_ALPHA: case GL_DST_ALPHA: case GL_ONE_MINUS_DST_ALPHA: case GL_SRC_ALPHA_SATURATE:
+        return 1;
+    default:
+        return 0;
+    }
+}
+
+static int is_dst_factor(unsigned int f)
+{
+    switch (f) {
+    case GL_ZERO: case GL_ONE: case GL_SRC_COLOR: case GL_ONE_MINUS_SRC_COLOR: case GL_SRC_ALPHA:
+    case GL_ONE_MINUS_SRC_ALPHA: case GL_DST_ALPHA: case GL_ONE_MINUS_DST_ALPHA:
+        return 1;
+    default:
+        return 0;
+    }
+}
+
+void gles_BlendFuncSeparateOES(GlesContext *ctx, unsigned int src_rgb, unsigned int dst_rgb,
+                               unsigned int src_alpha, unsigned int dst_alpha)
+{
+    if (!is_src_factor(src_rgb) || !is_dst_factor(dst_rgb) || !is_src_factor(src_alpha)
+        || !is_dst_factor(dst_alpha)) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    ctx->blend_src_rgb = src_rgb;
+    ctx->blend_dst_rgb = dst_rgb;
+    ctx->blend_src_alpha = src_alpha;
+    ctx->blend_dst_alpha = dst_alpha;
+    ctx->dirty |= DIRTY_SPAN;
+}
+
+void gles_BlendFunc(GlesContext *ctx, unsigned int src, unsigned int dst)
+{
+    gles_BlendFuncSeparateOES(ctx, src, dst, src, dst);
+}
+
+static int is_equation(unsigned int e)
+{
+    return e == GL_FUNC_ADD_OES || e == GL_FUNC_SUBTRACT_OES || e == GL_FUNC_REVERSE_SUBTRACT_OES;
+}
+
+void gles_BlendEquationSeparateOES(GlesContext *ctx, unsigned int rgb, unsigned int alpha)
+{
+    if (!is_equation(rgb) || !is_equation(alpha)) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    ctx->blend_eq_rgb = rgb;
+    ctx->blend_eq_alpha = alpha;
+    ctx->dirty |= DIRTY_SPAN;
+}
+
+void gles_BlendEquationOES(GlesContext *ctx, unsigned int mode) { gles_BlendEquationSeparateOES(ctx, mode, mode); }
+
+void gles_LogicOp(GlesContext *ctx, unsigned int op)
+{
+    if (op < GL_CLEAR || op > GL_SET) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    ctx->logic_op = op;
+    ctx->dirty |= DIRTY_SPAN;
+}
+
+void gles_SampleCoverage(GlesContext *ctx, double value, unsigned char invert)
+{
+    /* with SAMPLE_BUFFERS 0 there are no samples to cover: state only */
+    ctx->sample_coverage_value = !(value > 0) ? 0.0 : (value > 1 ? 1.0 : value);
+    ctx->sample_coverage_invert = invert != 0;
+}
+
+int fragment_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)
+{
+    *kind = GLES_KIND_ENUM;
+    switch (pname) {
+    case GL_ALPHA_TEST_FUNC: out[0] = ctx->alpha_func; return 1;
+    case GL_ALPHA_TEST_REF: *kind = GLES_KIND_NORM; out[0] = ctx->alpha_ref; return 1;
+    case GL_STENCIL_FUNC: out[0] = ctx->stencil_func; return 1;
+    case GL_STENCIL_FAIL: out[0] = ctx->stencil_fail; return 1;
+    case GL_STENCIL_PASS_DEPTH_FAIL: out[0] = ctx->stencil_zfail; return 1;
+    case GL_STENCIL_PASS_DEPTH_PASS: out[0] = ctx->stencil_zpass; return 1;
+    case GL_STENCIL_REF: *kind = GLES_KIND_INT; out[0] = ctx->stencil_ref; return 1;
+    case GL_STENCIL_VALUE_MASK: *kind = GLES_KIND_INT; out[0] = (double)ctx->stencil_value_mask; return 1;
+    case GL_STENCIL_WRITEMASK: *kind = GLES_KIND_INT; out[0] = (double)ctx->stencil_writemask; return 1;
+    case GL_BLEND_SRC: /* == GL_BLEND_SRC_RGB_OES's old name */ out[0] = ctx->blend_src_rgb; return 1;
+    case GL_BLEND_DST: out[0] = ctx->blend_dst_rgb; return 1;
+    case GL_BLEND_SRC_RGB_OES: out[0] = ctx->blend_src_rgb; return 1;
+    case GL_BLEND_DST_RGB_OES: out[0] = ctx->blend_dst_rgb; return 1;
+    case GL_BLEND_SRC_ALPHA_OES: out[0] = ctx->blend_src_alpha; return 1;
+    case GL_BLEND_DST_ALPHA_OES: out[0] = ctx->blend_dst_alpha; return 1;
+    case GL_BLEND_EQUATION_RGB_OES: out[0] = ctx->blend_eq_rgb; return 1;
+    case GL_BLEND_EQUATION_ALPHA_OES: out[0] = ctx->blend_eq_alpha; return 1;
+    case GL_LOGIC_OP_MODE: out[0] = ctx->logic_op; return 1;
+    case GL_SAMPLE_COVERAGE_VALUE: *kind = GLES_KIND_FLOAT; out[0] = ctx->sample_coverage_value; return 1;
+    case GL_SAMPLE_COVERAGE_INVERT: *kind = GLES_KIND_BOOL; out[0] = ctx->sample_coverage_invert; return 1;
+    case GL_SAMPLE_BUFFERS: case GL_SAMPLES: *kind = GLES_KIND_INT; out[0] = 0; return 1;
+    default: return 0;
+    }
+}
+
+/* {====================================================================
+** per-pixel arithmetic */
+
+int fragment_compare(unsigned int func, uint32_t a, uint32_t b)
+{
+    switch (func) {
+    case GL_NEVER: return 0;
+    case GL_LESS: return a < b;
+    case GL_EQUAL: return a == b;
+    case GL_LEQUAL: return a <= b;
+    case GL_GREATER: return a > b;
+    case GL_NOTEQUAL: return a != b;
+    case GL_GEQUAL: return a >= b;
+    default: return 1;
+    }
+}
+
+int fragment_alpha_pass(const GlesContext *ctx, NUM alpha)
+{
+    NUM a = num_clamp01(alpha), r = ctx->n_alpha_ref;
+    switch (ctx->alpha_func) {
+    case GL_NEVER: return 0;
+    case GL_LESS: return a < r;
+    case GL_EQUAL: return a == r;
+    case GL_LEQUAL: return a <= r;
+    case GL_GREATER: return a > r;
+    case GL_NOTEQUAL: return a != r;
+    case GL_GEQUAL: return a >= r;
+    default: return 1;
+    }
+}
+
+/* §4.1.5: the reference is clamped to [0, 2^s - 1]; both sides masked */
+int fragment_stencil_pass(const GlesContext *ctx, uint8_t stored)
+{
+    uint32_t ref = (uint32_t)i64_clamp(ctx->stencil_ref, 0, 255);
+    uint32_t m = ctx->stencil_value_mask & 0xFFu;
+    return fragment_compare(ctx->stencil_func, ref & m, stored & m);
+}
+
+uint8_t fragment_stencil_op(const GlesContext *ctx, unsigned int op, uint8_t s)
+{
+    uint32_t v;
+    switch (op) {
+    case GL_ZERO: v = 0; break;
+    case GL_REPLACE: v = (uint32_t)i64_clamp(ctx->stencil_ref, 0, 255); break;
+    case GL_INCR: v = s == 255 ? 255 : s + 1u; break;
+    case GL_DECR: v = s == 0 ? 0 : s - 1u; break;
+    case GL_INVERT: v = ~(uint32_t)s & 0xFFu; break;
+    case GL_INCR_WRAP_OES: v = (s + 1u) & 0xFFu; break;
+    case GL_DECR_WRAP_OES: v = (s + 255u) & 0xFFu; break;
+    default: v = s; break; /* GL_KEEP */
+    }
+    uint32_t wm = ctx->stencil_writemask & 0xFFu;
+    return (uint8_t)((s & ~wm) | (v & wm));
+}
+
+/* one blend factor for channel k (0..2 colour, 3 alpha), Table 4.1 */
+static BLENDV factor(unsigned int f, int k, const BLENDV *src, const BLENDV *dst)
+{
+    switch (f) {
+    case GL_ZERO: return 0;
+    case GL_ONE: return BLEND_ONE;
+    case GL_SRC_COLOR: return src[k];
+    case GL_ONE_MINUS_SRC_COLOR: return BLEND_ONE - src[k];
+    case GL_DST_COLOR: return dst[k];
+    case GL_ONE_MINUS_DST_COLOR: return BLEND_ONE - dst[k];
+    case GL_SRC_ALPHA: return src[3];
+    case GL_ONE_MINUS_SRC_ALPHA: return BLEND_ONE - src[3];
+    case GL_DST_ALPHA: return dst[3];
+    case GL_ONE_MINUS_DST_ALPHA: return BLEND_ONE - dst[3];
+    default: /* GL_SRC_ALPHA_SATURATE: min(As, 1 - Ad) for colour, 1 for alpha */
+        return k == 3 ? BLEND_ONE : blend_min(src[3], BLEND_ONE - dst[3]);
+    }
+}
+
+static BLENDV equation(unsigned int eq, BLENDV s, BLENDV d)
+{
+    if (eq == GL_FUNC_SUBTRACT_OES)
+        return s - d;
+    if (eq == GL_FUNC_REVERSE_SUBTRACT_OES)
+        return d - s;
+    return s + d;
+}
+
+void fragment_blend(const GlesContext *ctx, const BLENDV src[4], const BLENDV dst[4], BLENDV out[4])
+{
+    for (int k = 0; k < 4; k++) {
+        int a = k == 3;
+        BLENDV sf = factor(a ? ctx->blend_src_alpha : ctx->blend_src_rgb, k, src, dst);
+        BLENDV df = factor(a ? ctx->blend_dst_alpha : ctx->blend_dst_rgb, k, src, dst);
+        out[k] = equation(a ? ctx->blend_eq_alpha : ctx->blend_eq_rgb, blend_mul(src[k], sf), blend_mul(dst[k], df));
+    }
+}
+
+uint32_t fragment_logic_op(unsigned int op, uint32_t s, uint32_t d)
+{
+    switch (op) {
+    case GL_CLEAR: return 0;
+    case GL_AND: return s & d;
+    case GL_AND_REVERSE: return s & ~d;
+    case GL_COPY: return s;
+    case GL_AND_INVERTED: return ~s & d;
+    case GL_NOOP: return d;
+    case GL_XOR: return s ^ d;
+    case GL_OR: return s | d;
+    case GL_NOR: return ~(s | d);
+    case GL_EQUIV: return ~(s ^ d);
+    case GL_INVERT: return ~d;
+    case GL_OR_REVERSE: return s | ~d;
+    case GL_COPY_INVERTED: return ~s;
+    case GL_OR_INVERTED: return ~s | d;
+    case GL_NAND: return ~(s & d);
+    default: return 0xFFFFFFFFu; /* GL_SET */
+    }
+}
+
+/* 4x4 ordered-dither thresholds in [0, 1), centred: (b + 1/2) / 16 */
+BLENDV fragment_dither_threshold(int x, int y)
+{
+    static const uint8_t bayer[4][4] = { { 0, 8, 2, 10 }, { 12, 4, 14, 6 }, { 3, 11, 1, 9 }, { 15, 7, 13, 5 } };
+    return blend_ratio(2 * bayer[y & 3][x & 3] + 1, 32);
+}
