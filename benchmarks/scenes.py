@@ -146,12 +146,76 @@ def small_draws_frame(gl: Any, state: Any) -> None:
         gl.glPopMatrix()
 
 
+# {================================================================
+# lit_mesh: the lighting stage, two lights (one a spot), specular
+
+def _grid_normals(x: np.ndarray, y: np.ndarray, z: np.ndarray) -> np.ndarray:
+    """Unit normals of the height field z(x, y) from central differences."""
+    dzdx = np.gradient(z, axis=1) / np.gradient(x, axis=1)
+    dzdy = np.gradient(z, axis=0) / np.gradient(y, axis=0)
+    n = np.stack([-dzdx, -dzdy, np.ones_like(z)], axis=-1)
+    return (n / np.linalg.norm(n, axis=-1, keepdims=True)).astype(np.float32).reshape(-1, 3)
+
+
+def lit_mesh_setup(gl: Any, w: int, h: int) -> Any:
+    state = smooth_mesh_setup(gl, w, h)
+    u = np.linspace(-1.0, 1.0, GRID)
+    x, y = np.meshgrid(u, u)
+    z = 0.12 * np.sin(3.0 * x) * np.cos(4.0 * y)
+    normals = _grid_normals(1.6 * x, 1.6 * y, z)
+    gl.glDisableClientState(C.GL_COLOR_ARRAY)
+    gl.glEnableClientState(C.GL_NORMAL_ARRAY)
+    gl.glNormalPointer(C.GL_FLOAT, 0, normals)
+    gl.glEnable(C.GL_LIGHTING)
+    gl.glEnable(C.GL_LIGHT0)
+    gl.glEnable(C.GL_LIGHT1)
+    gl.glPushMatrix()
+    gl.glLoadIdentity()
+    gl.glLightfv(C.GL_LIGHT0, C.GL_POSITION, [0.5, 1.0, 1.0, 0.0])
+    gl.glLightfv(C.GL_LIGHT0, C.GL_DIFFUSE, [0.7, 0.7, 0.6, 1.0])
+    gl.glLightfv(C.GL_LIGHT1, C.GL_POSITION, [-0.8, 0.6, 0.5, 1.0])
+    gl.glLightfv(C.GL_LIGHT1, C.GL_DIFFUSE, [0.3, 0.5, 1.0, 1.0])
+    gl.glLightfv(C.GL_LIGHT1, C.GL_SPECULAR, [1.0, 1.0, 1.0, 1.0])
+    gl.glLightfv(C.GL_LIGHT1, C.GL_SPOT_DIRECTION, [0.6, -0.5, -2.0])
+    gl.glLightf(C.GL_LIGHT1, C.GL_SPOT_CUTOFF, 35.0)
+    gl.glLightf(C.GL_LIGHT1, C.GL_SPOT_EXPONENT, 10.0)
+    gl.glLightf(C.GL_LIGHT1, C.GL_LINEAR_ATTENUATION, 0.3)
+    gl.glPopMatrix()
+    gl.glMaterialfv(C.GL_FRONT_AND_BACK, C.GL_DIFFUSE, [0.8, 0.6, 0.4, 1.0])
+    gl.glMaterialfv(C.GL_FRONT_AND_BACK, C.GL_SPECULAR, [0.6, 0.6, 0.6, 1.0])
+    gl.glMaterialf(C.GL_FRONT_AND_BACK, C.GL_SHININESS, 32.0)
+    state["normals"] = normals
+    return state
+
+
+# {================================================================
+# blended_quads: fill rate with SRC_ALPHA / ONE_MINUS_SRC_ALPHA
+
+def blended_quads_setup(gl: Any, w: int, h: int) -> Any:
+    state = flat_overdraw_setup(gl, w, h)
+    gl.glEnable(C.GL_BLEND)
+    gl.glBlendFunc(C.GL_SRC_ALPHA, C.GL_ONE_MINUS_SRC_ALPHA)
+    return state
+
+
+def blended_quads_frame(gl: Any, state: Any) -> None:
+    gl.glClear(C.GL_COLOR_BUFFER_BIT)
+    for r, g, b in state["colors"]:
+        gl.glColor4ub(r, g, b, 96)
+        gl.glDrawArrays(C.GL_TRIANGLE_STRIP, 0, 4)
+
+
 SCENES = {s.name: s for s in (
     Scene("flat_overdraw", "20 full-screen flat-colour quads, no depth",
           flat_overdraw_setup, flat_overdraw_frame, lambda w, h: 0.99),
     Scene("smooth_mesh", f"{2 * (GRID - 1) ** 2} smooth triangles (ubyte colours, "
           "DrawElements UNSIGNED_SHORT), depth test, perspective",
           smooth_mesh_setup, smooth_mesh_frame, lambda w, h: 0.8),
+    Scene("lit_mesh", "the smooth_mesh grid lit by a directional light and an attenuated "
+          "spotlight with specular (shininess 32)",
+          lit_mesh_setup, smooth_mesh_frame, lambda w, h: 0.8),
+    Scene("blended_quads", "20 full-screen quads blended SRC_ALPHA, ONE_MINUS_SRC_ALPHA",
+          blended_quads_setup, blended_quads_frame, lambda w, h: 0.99),
     Scene("small_draws", f"{N_DRAWS} 8x8 quads, one draw and one Push/Translate/Rotate/Pop each",
           small_draws_setup, small_draws_frame,
           lambda w, h: min(0.9, 0.5 * N_DRAWS * 64 / (w * h))),

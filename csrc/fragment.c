@@ -24,6 +24,12 @@ void fragment_init(GlesContext *ctx)
     ctx->blend_eq_rgb = ctx->blend_eq_alpha = GL_FUNC_ADD_OES;
     ctx->logic_op = GL_COPY;
     ctx->sample_coverage_value = 1.0;
+    for (uint32_t d = 0; d < 256; d++)
+        ctx->unorm8[d] = blend_from_unorm(d, 255);
+    for (uint32_t d = 0; d < 32; d++)
+        ctx->unorm5[d] = blend_from_unorm(d, 31);
+    for (uint32_t d = 0; d < 64; d++)
+        ctx->unorm6[d] = blend_from_unorm(d, 63);
 }
 
 static int is_func(unsigned int f) { return f >= GL_NEVER && f <= GL_ALWAYS; }

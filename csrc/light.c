@@ -286,6 +286,11 @@ void light_validate(GlesContext *ctx)
     ctx->two_sided = ctx->lighting && ctx->light_model_two_side;
     if (!ctx->lighting)
         return;
+    for (int i = 0; i < GLES_MAX_LIGHTS; i++) {
+        Light *l = &ctx->lights[i];
+        memcpy(l->unit_spot_direction, l->n_spot_direction, sizeof l->unit_spot_direction);
+        num_normalize3(l->unit_spot_direction);
+    }
     normal_matrix_of(ctx->modelview.top->n, ctx->normal_matrix, &ctx->rescale);
     if (ctx->matrix_palette)
         for (int i = 0; i < GLES_MAX_PALETTE_MATRICES; i++)
@@ -334,9 +339,7 @@ static void light_side(const GlesContext *ctx, const NUM n[3], const NUM v[3], c
             continue; /* the light is at the vertex: no direction */
         NUM spot = NUM_ONE;
         if (l->spot_cutoff != 180.0) {
-            NUM sd[3] = { l->n_spot_direction[0], l->n_spot_direction[1], l->n_spot_direction[2] };
-            num_normalize3(sd);
-            NUM cosang = num_neg(num_dot(vp, 1, sd, 1, 3)); /* -VP . s */
+            NUM cosang = num_neg(num_dot(vp, 1, l->unit_spot_direction, 1, 3)); /* -VP . s */
             if (cosang < l->n_cos_cutoff)
                 continue; /* outside the cone: contributes nothing */
             spot = num_pow01(cosang, l->n_spot_exponent);

@@ -313,12 +313,21 @@ static inline int num_normalize3(NUM *v)
     if (m == NUM_ZERO)
         return 0;
 #if NUM_IS_FIXED
+    /* scale by a power of two so the largest component is in [1/2, 1):
+    ** exact for small vectors, keeps 15 significant bits of large ones */
+    int sh = u64_bits((uint64_t)(uint32_t)m) - 16;
+    int64_t w[3];
     for (int i = 0; i < 3; i++)
-        v[i] = num_div(v[i], m);
-#endif
+        w[i] = sh >= 0 ? (int64_t)v[i] / ((int64_t)1 << sh) : (int64_t)v[i] * ((int64_t)1 << -sh);
+    int64_t ss = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];   /* 32 fraction bits, in [1/4, 3) */
+    NUM inv = num_rsqrt(num_from_scaled(ss, 32));
+    for (int i = 0; i < 3; i++)
+        v[i] = num_from_scaled(w[i] * inv, 32);
+#else
     NUM inv = num_rsqrt(num_dot(v, 1, v, 1, 3));
     for (int i = 0; i < 3; i++)
         v[i] = num_mul(v[i], inv);
+#endif
     return 1;
 }
 /* }==================================================================== */
@@ -393,48 +402,43 @@ static inline void num_sincos_deg(NUM deg, NUM *s, NUM *co)
 /* {==================================================================== */
 /* Powers for lighting: x^s with x in [0,1], s in [0,128] (specular and spot
 ** exponents). The fixed build computes exp2(s * log2(x)) in 64-bit integers
-** with 30 fraction bits: log2 by repeated squaring, exp2 by a table of
-** 2^(2^-i), so the error stays near 2^-16 whatever the exponent (a table
-** lookup alone grows with s). 0^0 is 1. */
+** with 30 fraction bits: table plus a short series for each, so the
+** error stays near 2^-16 whatever the exponent (a table lookup alone would
+** grow with s). 0^0 is 1. */
 
 #if NUM_IS_FIXED
-/* log2(x) for raw x > 0, in 0.30 */
+#include "tables.h"
+
+/* log2(x) for raw x > 0, in 0.30: the table at the top 8 fraction bits of
+** the mantissa, then log2(1 + y) = (y - y^2/2 + y^3/3) / ln 2 for the rest
+** (y < 2^-8, so the first omitted term is below 2^-34) */
 static inline int64_t fx_log2(int32_t x)
 {
+    const int64_t one = (int64_t)1 << 30, inv_ln2 = 1549082005LL; /* 1/ln 2 in 2.30 */
     int b = u64_bits((uint64_t)x);
-    int64_t result = (int64_t)(b - 17) * ((int64_t)1 << 30);
-    uint64_t m = (uint64_t)x << (31 - b);        /* [2^30, 2^31): 1.30 */
-    for (int i = 1; i <= 30; i++) {
-        m = (m * m + ((uint64_t)1 << 29)) >> 30;  /* [1, 4) in 2.30 */
-        if (m >= ((uint64_t)2 << 30)) {
-            m >>= 1;
-            result += (int64_t)1 << (30 - i);
-        }
-    }
-    return result;
+    int64_t m = (int64_t)((uint64_t)x << (31 - b));     /* [2^30, 2^31): 1.30 */
+    int64_t frac = m - one;
+    int i = (int)(frac >> 22);
+    int64_t y = ((frac & ((1 << 22) - 1)) * fx_recip_tab[i]) >> 30;   /* r / (1 + i/256) */
+    int64_t y2 = (y * y) >> 30, y3 = (y2 * y) >> 30;
+    int64_t ln1p = y - y2 / 2 + y3 / 3;
+    return (int64_t)(b - 17) * one + fx_log2_tab[i] + ((ln1p * inv_ln2) >> 30);
 }
 
-/* 2^y for y <= 0 in 0.30, as 16.16 */
+/* 2^y for y <= 0 in 0.30, as 16.16: the table at the top 8 fraction bits,
+** then e^(r ln 2) = 1 + x + x^2/2 + x^3/6 for the rest (x < 2^-8) */
 static inline NUM fx_exp2_neg(int64_t y)
 {
-    static const int64_t pow2_frac[30] = { /* 2^(2^-i) in 2.30, i = 1..30 */
-        1518500250LL, 1276901417LL, 1170923762LL, 1121280436LL,
-        1097253708LL, 1085434106LL, 1079572136LL, 1076653033LL,
-        1075196443LL, 1074468888LL, 1074105294LL, 1073923544LL,
-        1073832680LL, 1073787251LL, 1073764537LL, 1073753181LL,
-        1073747502LL, 1073744663LL, 1073743244LL, 1073742534LL,
-        1073742179LL, 1073742001LL, 1073741913LL, 1073741868LL,
-        1073741846LL, 1073741835LL, 1073741830LL, 1073741827LL,
-        1073741825LL, 1073741825LL,
-    };
+    const int64_t ln2 = 744261118LL; /* ln 2 in 0.30 */
     if (y <= -((int64_t)20 << 30))
         return 0;                                   /* below 2^-17: rounds to 0 */
     int64_t ip = y >> 30;                           /* floor: arithmetic shift */
     int64_t f = y - ip * ((int64_t)1 << 30);        /* [0, 2^30) */
-    int64_t r = (int64_t)1 << 30;
-    for (int i = 1; i <= 30; i++)
-        if (f & ((int64_t)1 << (30 - i)))
-            r = (r * pow2_frac[i - 1] + ((int64_t)1 << 29)) >> 30;
+    int i = (int)(f >> 22);
+    int64_t x = ((f & ((1 << 22) - 1)) * ln2) >> 30;
+    int64_t x2 = (x * x) >> 30, x3 = (x2 * x) >> 30;
+    int64_t e = ((int64_t)1 << 30) + x + x2 / 2 + x3 / 6;
+    int64_t r = (fx_exp2_tab[i] * e + ((int64_t)1 << 29)) >> 30;   /* 2.30 */
     int sh = 14 + (int)(-ip);                       /* 2.30 -> 16.16, times 2^ip */
     return (NUM)((r + ((int64_t)1 << (sh - 1))) >> sh);
 }

@@ -102,9 +102,10 @@ static void span_generic(GlesContext *ctx, const TriSetup *t, int y, int x0, int
             for (int i = 0; i < 4; i++) {
                 src[i] = blend_from_num_clamped(c[i]);
                 if (is565)
-                    dst[i] = i < 3 ? blend_from_unorm((dpacked >> shift565[i]) & max565[i], max565[i]) : BLEND_ONE;
+                    dst[i] = i == 3 ? BLEND_ONE
+                           : (i == 1 ? ctx->unorm6 : ctx->unorm5)[(dpacked >> shift565[i]) & max565[i]];
                 else
-                    dst[i] = blend_from_unorm((dpacked >> (8 * i)) & 0xFFu, 255);
+                    dst[i] = ctx->unorm8[(dpacked >> (8 * i)) & 0xFFu];
             }
             fragment_blend(ctx, src, dst, out);
             for (int i = 0; i < (is565 ? 3 : 4); i++) {

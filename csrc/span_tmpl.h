@@ -30,6 +30,18 @@ static void SPAN_NAME(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
 #if !SPAN_SMOOTH && !SPAN_BLEND
     const uint32_t packed = t->flat_packed;
 #endif
+#if !SPAN_SMOOTH && SPAN_BLEND
+    /* a constant source: its blend term is the same for the whole span */
+    BLENDV sterm[4];
+#if SPAN_BLEND == 1
+    const BLENDV sa = blend_from_num_clamped(t->flat[3]), da = BLEND_ONE - sa;
+    for (int i = 0; i < 4; i++)
+        sterm[i] = blend_mul(blend_from_num_clamped(t->flat[i]), sa);
+#else
+    for (int i = 0; i < 4; i++)
+        sterm[i] = blend_from_num_clamped(t->flat[i]);
+#endif
+#endif
     (void)ctx;
     for (int k = 0; k < n; k++) {
 #if SPAN_DEPTH
@@ -47,21 +59,26 @@ static void SPAN_NAME(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
             NUM c[4];
             for (int i = 0; i < 4; i++)
                 c[i] = wgt_lerp3(c0[i], c1[i], c2[i], p[0], p[1], p[2]);
-#elif SPAN_BLEND
-            const NUM *c = t->flat;
 #endif
 #if SPAN_BLEND
             uint32_t d = dst[k], out = 0;
+#if SPAN_SMOOTH
+            BLENDV sterm[4];
 #if SPAN_BLEND == 1
-            BLENDV sa = blend_from_num_clamped(c[3]);
+            BLENDV sa = blend_from_num_clamped(c[3]), da = BLEND_ONE - sa;
+            for (int i = 0; i < 4; i++)
+                sterm[i] = blend_mul(blend_from_num_clamped(c[i]), sa);
+#else
+            for (int i = 0; i < 4; i++)
+                sterm[i] = blend_from_num_clamped(c[i]);
+#endif
 #endif
             for (int i = 0; i < 4; i++) {
-                BLENDV s = blend_from_num_clamped(c[i]);
-                BLENDV dv = blend_from_unorm((d >> (8 * i)) & 0xFFu, 255);
+                BLENDV dv = ctx->unorm8[(d >> (8 * i)) & 0xFFu];
 #if SPAN_BLEND == 1
-                BLENDV v = blend_mul(s, sa) + blend_mul(dv, BLEND_ONE - sa);
+                BLENDV v = sterm[i] + blend_mul(dv, da);
 #else
-                BLENDV v = s + dv;
+                BLENDV v = sterm[i] + dv;
 #endif
                 out |= blend_to_unorm(v, 255, BLEND_ONE / 2) << (8 * i);
             }

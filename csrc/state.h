@@ -94,6 +94,7 @@ typedef struct Light {
     double spot_exponent, spot_cutoff, attenuation[3];
     NUM n_ambient[4], n_diffuse[4], n_specular[4], n_position[4], n_spot_direction[3];
     NUM n_spot_exponent, n_cos_cutoff, n_attenuation[3];
+    NUM unit_spot_direction[3];     /* derived: normalised */
 } Light;
 
 typedef struct Material {
@@ -171,6 +172,9 @@ struct GlesContext {
     unsigned int logic_op;
     double sample_coverage_value;
     int sample_coverage_invert;
+
+    BLENDV unorm8[256];         /* d / 255 as BLENDV: blending reads these */
+    BLENDV unorm5[32], unorm6[64];
 
     /* fog (§3.8) */
     int fog;
