@@ -72,6 +72,7 @@ class ConformanceTest:
     uses: frozenset[str]       # state the test sets itself ("depth", "blend", ...): paths leave it alone
     profiles: frozenset[str]   # profiles it applies to
     visuals: tuple[str, ...]   # visuals it runs on (keys of VISUALS)
+    size: tuple[int, int] = (64, 64)   # window width, height
 
 
 REGISTRY: dict[str, ConformanceTest] = {}
@@ -79,9 +80,11 @@ REGISTRY: dict[str, ConformanceTest] = {}
 
 def conformance_test(name: str, *, section: str, uses: Iterable[str] = (),
                      profiles: Iterable[str] = ("common", "common-lite"),
-                     visuals: Iterable[str] = ("rgba8888",)) -> Callable:
+                     visuals: Iterable[str] = ("rgba8888",),
+                     size: tuple[int, int] = (64, 64)) -> Callable:
     """Register a test under `name` (the Khronos category name, or
-    ``Category.detail`` for several tests of one category)."""
+    ``Category.detail`` for several tests of one category); `size` is the
+    window's width and height."""
 
     def deco(func: Callable[[TestContext], None]) -> Callable[[TestContext], None]:
         if name in REGISTRY:
@@ -90,6 +93,7 @@ def conformance_test(name: str, *, section: str, uses: Iterable[str] = (),
             name=name, func=func, section=section,
             description=(func.__doc__ or "").strip().splitlines()[0] if func.__doc__ else "",
             uses=frozenset(uses), profiles=frozenset(profiles), visuals=tuple(visuals),
+            size=(int(size[0]), int(size[1])),
         )
         return func
 
@@ -190,7 +194,8 @@ class TestContext:
         if err != expected:
             self.fail(f"{where}: glGetError() is 0x{err:04X}, expected 0x{expected:04X}")
 
-    def expect_pixels(self, mask: np.ndarray, rgba: Any, where: str, *, img: np.ndarray | None = None) -> None:
+    def expect_pixels(self, mask: np.ndarray, rgba: Any, where: str, *,
+                      img: np.ndarray | None = None) -> None:
         """Every pixel where `mask` is True has colour `rgba` within the visual's tolerance."""
         img = self.read() if img is None else img
         want = np.asarray(rgba, dtype=np.float64)
