@@ -14,6 +14,7 @@
 #include "array.h"
 #include "light.h"
 #include "fragment.h"
+#include "texture.h"
 
 static int cap_index(unsigned int cap);
 
@@ -136,6 +137,7 @@ GlesContext *gles_context_create(int width, int height, int color_format,
     light_init(ctx);
     fragment_init(ctx);
     fog_init(ctx);
+    texture_init(ctx);
     array_init(ctx);
     ctx->dirty = DIRTY_ALL;
     return ctx;
@@ -146,6 +148,7 @@ void gles_context_destroy(GlesContext *ctx)
     if (!ctx)
         return;
     array_free(ctx);
+    texture_free(ctx);
     free(ctx->color);
     free(ctx->depth);
     free(ctx->stencil);
@@ -197,6 +200,12 @@ static void set_enable(GlesContext *ctx, unsigned int cap, int on)
         ctx->dirty |= DIRTY_LIGHT;
         return;
     }
+    if (cap == GL_TEXTURE_2D) {
+        /* per texture unit (§3.7.15) */
+        ctx->units[ctx->active_texture - GL_TEXTURE0].enabled = on;
+        ctx->dirty |= DIRTY_TEXTURE;
+        return;
+    }
     int i = cap_index(cap);
     if (i < 0) {
         ctx_error(ctx, GL_INVALID_ENUM);
@@ -236,6 +245,8 @@ unsigned char gles_IsEnabled(GlesContext *ctx, unsigned int cap)
         return (unsigned char)ctx->clip_plane_enabled[cap - GL_CLIP_PLANE0];
     if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + GLES_MAX_LIGHTS)
         return (unsigned char)ctx->light_enabled[cap - GL_LIGHT0];
+    if (cap == GL_TEXTURE_2D)
+        return (unsigned char)ctx->units[ctx->active_texture - GL_TEXTURE0].enabled;
     int i = cap_index(cap);
     if (i >= 0)
         return (ctx->enable_bits >> i) & 1;
@@ -543,10 +554,11 @@ int gles_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)
     int n = array_get(ctx, pname, out, kind);
     if (n > 0)
         return n;
-    if ((n = fragment_get(ctx, pname, out, kind)) > 0 || (n = fog_get(ctx, pname, out, kind)) > 0)
+    if ((n = fragment_get(ctx, pname, out, kind)) > 0 || (n = fog_get(ctx, pname, out, kind)) > 0
+        || (n = texture_get(ctx, pname, out, kind)) > 0)
         return n;
     /* an enable queried through Get*v answers like IsEnabled */
-    if (cap_index(pname) >= 0 || (pname >= GL_CLIP_PLANE0 && pname < GL_CLIP_PLANE0 + GLES_MAX_CLIP_PLANES)
+    if (cap_index(pname) >= 0 || pname == GL_TEXTURE_2D || (pname >= GL_CLIP_PLANE0 && pname < GL_CLIP_PLANE0 + GLES_MAX_CLIP_PLANES)
         || (pname >= GL_LIGHT0 && pname < GL_LIGHT0 + 8))
         return put1(out, kind, GLES_KIND_BOOL, gles_IsEnabled(ctx, pname));
     ctx_error(ctx, GL_INVALID_ENUM);

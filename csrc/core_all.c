@@ -13,6 +13,7 @@
 #include "raster.c"
 #include "fragment.c"
 #include "fog.c"
+#include "texture.c"
 #include "span.c"
 #include "draw.c"
 #include "framebuffer.c"

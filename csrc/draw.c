@@ -54,7 +54,7 @@ static void validate(GlesContext *ctx)
 {
     if (ctx->dirty) {
         vertex_validate(ctx);
-        if (ctx->dirty & DIRTY_SPAN)
+        if (ctx->dirty & (DIRTY_SPAN | DIRTY_TEXTURE))
             span_choose(ctx);
         ctx->dirty = 0;
     }

@@ -6,7 +6,7 @@
 ** Order in a span (span.c): alpha test, stencil test, depth test, blend,
 **       dither, logic op, masks.
 ** Colour values: framebuffer channels are integers; blending works in
-**       BLENDV (num.h) so that exact 8-bit products round exactly.
+**       FRAGV (num.h) so that exact 8-bit products round exactly.
 */
 #include "state.h"
 #include "fragment.h"
@@ -25,11 +25,11 @@ void fragment_init(GlesContext *ctx)
     ctx->logic_op = GL_COPY;
     ctx->sample_coverage_value = 1.0;
     for (uint32_t d = 0; d < 256; d++)
-        ctx->unorm8[d] = blend_from_unorm(d, 255);
+        ctx->unorm8[d] = frag_from_unorm(d, 255);
     for (uint32_t d = 0; d < 32; d++)
-        ctx->unorm5[d] = blend_from_unorm(d, 31);
+        ctx->unorm5[d] = frag_from_unorm(d, 31);
     for (uint32_t d = 0; d < 64; d++)
-        ctx->unorm6[d] = blend_from_unorm(d, 63);
+        ctx->unorm6[d] = frag_from_unorm(d, 63);
 }
 
 static int is_func(unsigned int f) { return f >= GL_NEVER && f <= GL_ALWAYS; }
@@ -215,19 +215,13 @@ int fragment_compare(unsigned int func, uint32_t a, uint32_t b)
     }
 }
 
-int fragment_alpha_pass(const GlesContext *ctx, NUM alpha)
+/* §4.1.4, compared at 8 bits as the framebuffer's colour precision: an
+** EQUAL test then matches the alpha a ubyte colour or texel gives */
+int fragment_alpha_pass(const GlesContext *ctx, FRAGV alpha)
 {
-    NUM a = num_clamp01(alpha), r = ctx->n_alpha_ref;
-    switch (ctx->alpha_func) {
-    case GL_NEVER: return 0;
-    case GL_LESS: return a < r;
-    case GL_EQUAL: return a == r;
-    case GL_LEQUAL: return a <= r;
-    case GL_GREATER: return a > r;
-    case GL_NOTEQUAL: return a != r;
-    case GL_GEQUAL: return a >= r;
-    default: return 1;
-    }
+    uint32_t a = frag_to_unorm(alpha, 255, FRAG_ONE / 2);
+    uint32_t r = (uint32_t)dbl_to_i64(ctx->alpha_ref * 255.0, 0, 255);
+    return fragment_compare(ctx->alpha_func, a, r);
 }
 
 /* §4.1.5: the reference is clamped to [0, 2^s - 1]; both sides masked */
@@ -256,25 +250,25 @@ uint8_t fragment_stencil_op(const GlesContext *ctx, unsigned int op, uint8_t s)
 }
 
 /* one blend factor for channel k (0..2 colour, 3 alpha), Table 4.1 */
-static BLENDV factor(unsigned int f, int k, const BLENDV *src, const BLENDV *dst)
+static FRAGV factor(unsigned int f, int k, const FRAGV *src, const FRAGV *dst)
 {
     switch (f) {
     case GL_ZERO: return 0;
-    case GL_ONE: return BLEND_ONE;
+    case GL_ONE: return FRAG_ONE;
     case GL_SRC_COLOR: return src[k];
-    case GL_ONE_MINUS_SRC_COLOR: return BLEND_ONE - src[k];
+    case GL_ONE_MINUS_SRC_COLOR: return FRAG_ONE - src[k];
     case GL_DST_COLOR: return dst[k];
-    case GL_ONE_MINUS_DST_COLOR: return BLEND_ONE - dst[k];
+    case GL_ONE_MINUS_DST_COLOR: return FRAG_ONE - dst[k];
     case GL_SRC_ALPHA: return src[3];
-    case GL_ONE_MINUS_SRC_ALPHA: return BLEND_ONE - src[3];
+    case GL_ONE_MINUS_SRC_ALPHA: return FRAG_ONE - src[3];
     case GL_DST_ALPHA: return dst[3];
-    case GL_ONE_MINUS_DST_ALPHA: return BLEND_ONE - dst[3];
+    case GL_ONE_MINUS_DST_ALPHA: return FRAG_ONE - dst[3];
     default: /* GL_SRC_ALPHA_SATURATE: min(As, 1 - Ad) for colour, 1 for alpha */
-        return k == 3 ? BLEND_ONE : blend_min(src[3], BLEND_ONE - dst[3]);
+        return k == 3 ? FRAG_ONE : frag_min(src[3], FRAG_ONE - dst[3]);
     }
 }
 
-static BLENDV equation(unsigned int eq, BLENDV s, BLENDV d)
+static FRAGV equation(unsigned int eq, FRAGV s, FRAGV d)
 {
     if (eq == GL_FUNC_SUBTRACT_OES)
         return s - d;
@@ -283,13 +277,13 @@ static BLENDV equation(unsigned int eq, BLENDV s, BLENDV d)
     return s + d;
 }
 
-void fragment_blend(const GlesContext *ctx, const BLENDV src[4], const BLENDV dst[4], BLENDV out[4])
+void fragment_blend(const GlesContext *ctx, const FRAGV src[4], const FRAGV dst[4], FRAGV out[4])
 {
     for (int k = 0; k < 4; k++) {
         int a = k == 3;
-        BLENDV sf = factor(a ? ctx->blend_src_alpha : ctx->blend_src_rgb, k, src, dst);
-        BLENDV df = factor(a ? ctx->blend_dst_alpha : ctx->blend_dst_rgb, k, src, dst);
-        out[k] = equation(a ? ctx->blend_eq_alpha : ctx->blend_eq_rgb, blend_mul(src[k], sf), blend_mul(dst[k], df));
+        FRAGV sf = factor(a ? ctx->blend_src_alpha : ctx->blend_src_rgb, k, src, dst);
+        FRAGV df = factor(a ? ctx->blend_dst_alpha : ctx->blend_dst_rgb, k, src, dst);
+        out[k] = equation(a ? ctx->blend_eq_alpha : ctx->blend_eq_rgb, frag_mul(src[k], sf), frag_mul(dst[k], df));
     }
 }
 
@@ -316,8 +310,8 @@ uint32_t fragment_logic_op(unsigned int op, uint32_t s, uint32_t d)
 }
 
 /* 4x4 ordered-dither thresholds in [0, 1), centred: (b + 1/2) / 16 */
-BLENDV fragment_dither_threshold(int x, int y)
+FRAGV fragment_dither_threshold(int x, int y)
 {
     static const uint8_t bayer[4][4] = { { 0, 8, 2, 10 }, { 12, 4, 14, 6 }, { 3, 11, 1, 9 }, { 15, 7, 13, 5 } };
-    return blend_ratio(2 * bayer[y & 3][x & 3] + 1, 32);
+    return frag_ratio(2 * bayer[y & 3][x & 3] + 1, 32);
 }

@@ -7,15 +7,27 @@
 #include "state.h"
 
 void fragment_init(GlesContext *ctx);
+
+/* A colour channel into a framebuffer channel of `bits` bits (§2.12.8,
+** §4.1.8). 8 bits round to nearest. Fewer bits without dithering keep the
+** high bits of an exact ubyte colour (floor(v * 2^bits)), as the spec
+** requires for unlit, unclipped ubyte input; with dithering, the ordered
+** threshold t picks between the two nearest values. */
+static inline uint32_t fragment_channel(FRAGV v, int bits, int dither, FRAGV t)
+{
+    if (bits == 8)
+        return frag_to_unorm(v, 255, FRAG_ONE / 2);
+    return dither ? frag_to_unorm(v, (1u << bits) - 1, t) : frag_to_msb(v, bits);
+}
 int fragment_get(GlesContext *ctx, unsigned int pname, double *out, int *kind);
 int fragment_compare(unsigned int func, uint32_t a, uint32_t b);
-int fragment_alpha_pass(const GlesContext *ctx, NUM alpha);
+int fragment_alpha_pass(const GlesContext *ctx, FRAGV alpha);
 int fragment_stencil_pass(const GlesContext *ctx, uint8_t stored);
 uint8_t fragment_stencil_op(const GlesContext *ctx, unsigned int op, uint8_t s);
-/* blended colour (not yet clamped) from source and destination in BLENDV */
-void fragment_blend(const GlesContext *ctx, const BLENDV src[4], const BLENDV dst[4], BLENDV out[4]);
+/* blended colour (not yet clamped) from source and destination in FRAGV */
+void fragment_blend(const GlesContext *ctx, const FRAGV src[4], const FRAGV dst[4], FRAGV out[4]);
 uint32_t fragment_logic_op(unsigned int op, uint32_t s, uint32_t d);
-BLENDV fragment_dither_threshold(int x, int y);
+FRAGV fragment_dither_threshold(int x, int y);
 
 /* fog.c */
 void fog_init(GlesContext *ctx);

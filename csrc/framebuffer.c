@@ -53,10 +53,10 @@ int gles_Clear(GlesContext *ctx, unsigned int mask)
                 for (int x = x0; x < x1; x++) {
                     uint32_t v = packed;
                     if (ctx->dither) {
-                        BLENDV t = fragment_dither_threshold(x, y);
+                        FRAGV t = fragment_dither_threshold(x, y);
                         v = 0;
                         for (int i = 0; i < 3; i++)
-                            v |= blend_to_unorm(blend_from_num_clamped(c[i]), max565[i], t) << shift565[i];
+                            v |= frag_to_unorm(frag_from_num_clamped(c[i]), max565[i], t) << shift565[i];
                     }
                     row[x] = (uint16_t)((row[x] & keep) | (v & ~keep));
                 }

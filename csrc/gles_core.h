@@ -154,6 +154,34 @@ void gles_SampleCoverage(GlesContext *ctx, double value, unsigned char invert);
 void gles_Fog(GlesContext *ctx, unsigned int pname, const double *params, int vector);
 
 /* {====================================================================
+** textures (§3.7): TexParameter/TexEnv params as Light's; getters fill out
+** (up to 4) and return the count; nbytes as for client arrays */
+void gles_GenTextures(GlesContext *ctx, int n, unsigned int *names);
+void gles_DeleteTextures(GlesContext *ctx, int n, const unsigned int *names);
+void gles_BindTexture(GlesContext *ctx, unsigned int target, unsigned int name);
+unsigned char gles_IsTexture(GlesContext *ctx, unsigned int name);
+int gles_TexImage2D(GlesContext *ctx, unsigned int target, int level, int internalformat, int width, int height,
+                    int border, unsigned int format, unsigned int type, const void *pixels, int64_t nbytes);
+int gles_TexSubImage2D(GlesContext *ctx, unsigned int target, int level, int xoffset, int yoffset, int width,
+                       int height, unsigned int format, unsigned int type, const void *pixels, int64_t nbytes);
+void gles_CopyTexImage2D(GlesContext *ctx, unsigned int target, int level, unsigned int internalformat, int x, int y,
+                         int width, int height, int border);
+void gles_CopyTexSubImage2D(GlesContext *ctx, unsigned int target, int level, int xoffset, int yoffset, int x, int y,
+                            int width, int height);
+int gles_CompressedTexImage2D(GlesContext *ctx, unsigned int target, int level, unsigned int internalformat,
+                              int width, int height, int border, int image_size, const void *data, int64_t nbytes);
+void gles_CompressedTexSubImage2D(GlesContext *ctx, unsigned int target, int level, int xoffset, int yoffset,
+                                  int width, int height, unsigned int format, int image_size, const void *data);
+void gles_TexParameter(GlesContext *ctx, unsigned int target, unsigned int pname, const double *params, int vector);
+int gles_GetTexParameter(GlesContext *ctx, unsigned int target, unsigned int pname, double *out);
+void gles_TexEnv(GlesContext *ctx, unsigned int target, unsigned int pname, const double *params, int vector);
+int gles_GetTexEnv(GlesContext *ctx, unsigned int target, unsigned int pname, double *out);
+/* bytes a TexImage2D with these arguments reads (UNPACK_ALIGNMENT applied),
+** and the size of a paletted image of `levels` levels (-1: not paletted) */
+int64_t texture_image_bytes(const GlesContext *ctx, int width, int height, unsigned int format, unsigned int type);
+int64_t texture_paletted_bytes(unsigned int internalformat, int levels, int width, int height);
+
+/* {====================================================================
 ** current values */
 void gles_Color4(GlesContext *ctx, double r, double g, double b, double a);
 void gles_Normal3(GlesContext *ctx, double x, double y, double z);

@@ -490,55 +490,6 @@ static inline NUM num_exp_neg(NUM x)
 /* }==================================================================== */
 
 /* {==================================================================== */
-/* Blending arithmetic. The fixed build blends in 0.30 (int64): the source
-** colour widens exactly from 16.16, a framebuffer value d becomes d/max with
-** an error under 2^-31, and the result rounds once to the framebuffer's
-** bits. So a modulation of two 8-bit values rounds to nearest exactly, and
-** 255 * 255 stays 255. Other builds blend in NUM. */
-
-#if NUM_IS_FIXED
-typedef int64_t BLENDV;
-#define BLEND_ONE ((int64_t)1 << 30)
-static inline BLENDV blend_from_num(NUM a) { return (int64_t)a * 16384; }
-static inline BLENDV blend_from_unorm(uint32_t d, uint32_t maxval)
-{
-    return (int64_t)((((uint64_t)d << 31) / maxval + 1) >> 1);
-}
-static inline BLENDV blend_mul(BLENDV a, BLENDV b) { return (a * b + ((int64_t)1 << 29)) >> 30; }
-static inline BLENDV blend_min(BLENDV a, BLENDV b) { return a < b ? a : b; }
-/* round(v * maxval) clamped to [0, maxval]; t in [0,1) as 0.30 is the
-** dither threshold (1/2 rounds to nearest) */
-static inline uint32_t blend_to_unorm(BLENDV v, uint32_t maxval, BLENDV t)
-{
-    if (v <= 0)
-        return 0;
-    if (v >= BLEND_ONE)
-        return maxval;
-    return (uint32_t)((v * maxval + t) >> 30);
-}
-static inline BLENDV blend_from_num_clamped(NUM a) { return blend_from_num(num_clamp01(a)); }
-static inline BLENDV blend_ratio(int n, int d) { return ((int64_t)n << 30) / d; }
-#else
-typedef NUM BLENDV;
-#define BLEND_ONE ((NUM)1)
-static inline BLENDV blend_from_num(NUM a) { return a; }
-static inline BLENDV blend_from_unorm(uint32_t d, uint32_t maxval) { return (NUM)d / (NUM)maxval; }
-static inline BLENDV blend_mul(BLENDV a, BLENDV b) { return a * b; }
-static inline BLENDV blend_min(BLENDV a, BLENDV b) { return a < b ? a : b; }
-static inline uint32_t blend_to_unorm(BLENDV v, uint32_t maxval, BLENDV t)
-{
-    if (!(v > 0))
-        return 0;
-    if (v >= 1)
-        return maxval;
-    return (uint32_t)(v * (NUM)maxval + t);
-}
-static inline BLENDV blend_from_num_clamped(NUM a) { return num_clamp01(a); }
-static inline BLENDV blend_ratio(int n, int d) { return (NUM)n / (NUM)d; }
-#endif
-/* }==================================================================== */
-
-/* {==================================================================== */
 /* Rasterizer weights and depth values */
 
 #if NUM_IS_FIXED
@@ -715,6 +666,34 @@ static inline void wgt_persp(const WgtSetup *s, const int64_t e[3], WGT out[3])
     out[0] = (WGT)(WGT_ONE - p1 - p2);
 }
 
+/* perspective weights at edge values that may lie outside the triangle
+** (a neighbour pixel, for the level of detail); weights are clamped to
+** [-2, 2) so they stay representable */
+static inline void wgt_persp_any(const WgtSetup *s, const int64_t e[3], WGT out[3])
+{
+    int64_t n[3], den = 0;
+    for (int i = 0; i < 3; i++) {
+        int64_t ei = e[i] / ((int64_t)1 << s->eshift);
+        int sh = s->qshift[i] < 62 ? s->qshift[i] : 62;
+        n[i] = s->affine ? ei : (ei * s->mant[i]) / ((int64_t)1 << sh);
+        den += n[i];
+    }
+    int64_t lim = (int64_t)1 << 31;
+    /* bring numerators and denominator below 2^31, then one division each */
+    while (den > lim || den < -lim || n[1] > lim || n[1] < -lim || n[2] > lim || n[2] < -lim) {
+        den /= 2;
+        n[1] /= 2;
+        n[2] /= 2;
+    }
+    if (den == 0)
+        den = 1;
+    int64_t p1 = i64_clamp(n[1] * ((int64_t)1 << 30) / den, -(lim - 1), lim - 1);
+    int64_t p2 = i64_clamp(n[2] * ((int64_t)1 << 30) / den, -(lim - 1), lim - 1);
+    out[1] = (WGT)p1;
+    out[2] = (WGT)p2;
+    out[0] = (WGT)i64_clamp(WGT_ONE - p1 - p2, -(lim - 1), lim - 1);
+}
+
 #else
 typedef NUM CLIPT;
 
@@ -780,6 +759,200 @@ static inline void wgt_persp(const WgtSetup *s, const int64_t e[3], WGT out[3])
     out[2] = n2 * inv;
     out[0] = 1 - out[1] - out[2];
 }
+
+static inline void wgt_persp_any(const WgtSetup *s, const int64_t e[3], WGT out[3])
+{
+    wgt_persp(s, e, out);
+}
+#endif
+/* }==================================================================== */
+
+/* {==================================================================== */
+/* Fragment colour arithmetic (FRAGV): texture environments, fog, alpha
+** test and blending. The fixed build works in signed 0.30 in an int64, with
+** headroom for the ranges COMBINE reaches (scale 4, ADD_SIGNED, DOT3):
+** colours interpolate straight into 0.30 from the exact weights, a texel or
+** framebuffer value d becomes d/max with an error under 2^-31, and the
+** result rounds once to the framebuffer's bits. So a modulation of two
+** 8-bit values rounds to nearest exactly, and 255 * 255 stays 255. Other
+** builds use NUM. */
+
+#if NUM_IS_FIXED
+typedef int64_t FRAGV;
+#define FRAG_ONE ((int64_t)1 << 30)
+static inline FRAGV frag_from_num(NUM a) { return (int64_t)a * 16384; }
+static inline FRAGV frag_from_unorm(uint32_t d, uint32_t maxval)
+{
+    return (int64_t)((((uint64_t)d << 31) / maxval + 1) >> 1);
+}
+static inline FRAGV frag_mul(FRAGV a, FRAGV b) { return (a * b + ((int64_t)1 << 29)) >> 30; }
+static inline FRAGV frag_min(FRAGV a, FRAGV b) { return a < b ? a : b; }
+/* round(v * maxval) clamped to [0, maxval]; t in [0,1) as 0.30 is the
+** dither threshold (1/2 rounds to nearest) */
+static inline uint32_t frag_to_unorm(FRAGV v, uint32_t maxval, FRAGV t)
+{
+    if (v <= 0)
+        return 0;
+    if (v >= FRAG_ONE)
+        return maxval;
+    return (uint32_t)((v * maxval + t) >> 30);
+}
+static inline FRAGV frag_from_num_clamped(NUM a) { return frag_from_num(num_clamp01(a)); }
+static inline FRAGV frag_ratio(int n, int d) { return ((int64_t)n << 30) / d; }
+/* floor(v * 2^bits), clamped: keeps the high bits of an exact c/255 */
+static inline uint32_t frag_to_msb(FRAGV v, int bits)
+{
+    if (v <= 0)
+        return 0;
+    int64_t r = v >> (30 - bits);
+    return (uint32_t)(r >= ((int64_t)1 << bits) ? ((int64_t)1 << bits) - 1 : r);
+}
+static inline FRAGV frag_from_double(double v) { return dbl_to_i64(v * 1073741824.0, -((int64_t)1 << 40), (int64_t)1 << 40); }
+static inline NUM frag_to_num(FRAGV v) { return num_from_scaled(v, 30); }
+static inline FRAGV frag_clamp01(FRAGV v) { return v < 0 ? 0 : (v > FRAG_ONE ? FRAG_ONE : v); }
+/* a0*w0 + a1*w1 + a2*w2 from 16.16 values and 0.30 weights, kept in 0.30 */
+static inline FRAGV frag_lerp3(NUM a0, NUM a1, NUM a2, WGT w0, WGT w1, WGT w2)
+{
+    int64_t acc = (int64_t)a0 * w0 + (int64_t)a1 * w1 + (int64_t)a2 * w2;   /* 46 fraction bits */
+    return acc >= 0 ? (acc + 32768) >> 16 : -((-acc + 32768) >> 16);
+}
+#else
+typedef NUM FRAGV;
+#define FRAG_ONE ((NUM)1)
+static inline FRAGV frag_from_num(NUM a) { return a; }
+static inline FRAGV frag_from_unorm(uint32_t d, uint32_t maxval) { return (NUM)d / (NUM)maxval; }
+static inline FRAGV frag_mul(FRAGV a, FRAGV b) { return a * b; }
+static inline FRAGV frag_min(FRAGV a, FRAGV b) { return a < b ? a : b; }
+static inline uint32_t frag_to_unorm(FRAGV v, uint32_t maxval, FRAGV t)
+{
+    if (!(v > 0))
+        return 0;
+    if (v >= 1)
+        return maxval;
+    return (uint32_t)(v * (NUM)maxval + t);
+}
+static inline FRAGV frag_from_num_clamped(NUM a) { return num_clamp01(a); }
+static inline FRAGV frag_ratio(int n, int d) { return (NUM)n / (NUM)d; }
+static inline uint32_t frag_to_msb(FRAGV v, int bits)
+{
+    if (!(v > 0))
+        return 0;
+    NUM r = NUM_FLOOR(v * (NUM)(1 << bits));
+    return r >= (NUM)(1 << bits) ? (1u << bits) - 1 : (uint32_t)r;
+}
+static inline FRAGV frag_from_double(double v) { return (NUM)v; }
+static inline NUM frag_to_num(FRAGV v) { return v; }
+static inline FRAGV frag_clamp01(FRAGV v) { return v < 0 ? 0 : (v > 1 ? 1 : v); }
+static inline FRAGV frag_lerp3(NUM a0, NUM a1, NUM a2, WGT w0, WGT w1, WGT w2)
+{
+    return a0 * w0 + a1 * w1 + a2 * w2;
+}
+#endif
+/* }==================================================================== */
+
+/* {==================================================================== */
+/* Texture coordinates at a pixel (TEXC) and the level of detail (LODV).
+** The fixed build interpolates s, t, q into 32 fraction bits (int64) from
+** the exact weights, so coordinates up to +-2^30 keep 32 fraction bits:
+** REPEAT then wraps exactly before scaling to texel space, and a 2048-texel
+** texture still gets 21 bits of sub-texel position. LODV is log2 in 0.30.
+** Other builds use NUM for both. */
+
+#if NUM_IS_FIXED
+typedef int64_t TEXC;
+typedef int64_t LODV;
+#define TEXC_ONE ((int64_t)1 << 32)
+#define LODV_ONE ((int64_t)1 << 30)
+
+static inline TEXC texc_lerp3(NUM a0, NUM a1, NUM a2, WGT w0, WGT w1, WGT w2)
+{
+    int64_t acc = (int64_t)a0 * w0 + (int64_t)a1 * w1 + (int64_t)a2 * w2;   /* 46 fraction bits */
+    return acc >= 0 ? (acc + 8192) >> 14 : -((-acc + 8192) >> 14);
+}
+
+/* s / q, both with 32 fraction bits; saturates beyond +-2^30 */
+static inline TEXC texc_div(TEXC s, TEXC q)
+{
+    if (q == 0)
+        return s > 0 ? ((int64_t)1 << 62) : (s < 0 ? -((int64_t)1 << 62) : 0);
+    /* long division 16 bits at a time: |q| < 2^47, so the remainders
+    ** shifted by 16 stay below 2^63 */
+    if (q > ((int64_t)1 << 46) || q < -((int64_t)1 << 46)) {
+        s /= 65536;
+        q /= 65536;
+        if (q == 0)
+            return 0;
+    }
+    int64_t a = s / q, r = s % q;
+    if (a > ((int64_t)1 << 30) || a < -((int64_t)1 << 30))
+        return a > 0 ? ((int64_t)1 << 62) : -((int64_t)1 << 62);
+    int64_t a1 = (r * 65536) / q;
+    r = (r * 65536) % q;
+    int64_t a2 = (r * 65536) / q;
+    return a * TEXC_ONE + a1 * 65536 + a2;
+}
+
+static inline TEXC texc_floor(TEXC s) { return (s >> 32) * TEXC_ONE; }
+static inline int64_t texc_ifloor(TEXC s) { return s >> 32; }
+static inline TEXC texc_from_num(NUM a) { return (int64_t)a * 65536; }
+static inline TEXC texc_abs(TEXC a) { return a < 0 ? -a : a; }
+/* a * n for an integer n (texture size): exact */
+static inline TEXC texc_scale(TEXC a, int n) { return a * n; }
+/* bilinear weights: the fraction of a texel coordinate in 16 bits */
+typedef int32_t TEXW;
+static inline TEXW texc_frac_weight(TEXC u) { return (int32_t)((u >> 16) & 0xFFFF); }
+static inline FRAGV frag_bilerp(FRAGV c00, FRAGV c10, FRAGV c01, FRAGV c11, TEXW a, TEXW b)
+{
+    int64_t ia = 65536 - a, ib = 65536 - b;
+    /* weights sum to 2^32 and colours are at most 2^30 (texels are in [0,1]) */
+    int64_t acc = c00 * (ia * ib) + c10 * (a * ib) + c01 * (ia * b) + c11 * ((int64_t)a * b);
+    return (acc + ((int64_t)1 << 31)) >> 32;
+}
+#define TEXC_HALF ((int64_t)1 << 31)
+
+/* log2 of a positive texel-space derivative, in 0.30; 0 gives -2^40 */
+static inline LODV lod_log2(TEXC rho)
+{
+    if (rho <= 0)
+        return -((int64_t)1 << 40);
+    int64_t r = rho >> 16;                         /* to 16.16 */
+    if (r == 0)
+        return -((int64_t)17 << 30);               /* below 2^-16 */
+    if (r > INT32_MAX)
+        r = INT32_MAX;
+    return fx_log2((int32_t)r);
+}
+static inline LODV lod_from_ratio(int n, int d) { return ((int64_t)n << 30) / d; }
+static inline int64_t lod_ifloor(LODV l) { return l >> 30; }
+static inline FRAGV lod_frac(LODV l) { return l & (((int64_t)1 << 30) - 1); }
+#else
+typedef NUM TEXC;
+typedef NUM LODV;
+#define TEXC_ONE ((NUM)1)
+#define LODV_ONE ((NUM)1)
+#define TEXC_HALF ((NUM)0.5)
+
+static inline TEXC texc_lerp3(NUM a0, NUM a1, NUM a2, WGT w0, WGT w1, WGT w2)
+{
+    return a0 * w0 + a1 * w1 + a2 * w2;
+}
+static inline TEXC texc_div(TEXC s, TEXC q) { return q == 0 ? (s > 0 ? (NUM)1e30 : (s < 0 ? (NUM)-1e30 : 0)) : s / q; }
+static inline TEXC texc_floor(TEXC s) { return NUM_FLOOR(s); }
+static inline int64_t texc_ifloor(TEXC s) { return dbl_to_i64(floor((double)s), -((int64_t)1 << 40), (int64_t)1 << 40); }
+static inline TEXC texc_from_num(NUM a) { return a; }
+static inline TEXC texc_abs(TEXC a) { return a < 0 ? -a : a; }
+static inline TEXC texc_scale(TEXC a, int n) { return a * (NUM)n; }
+typedef NUM TEXW;
+static inline TEXW texc_frac_weight(TEXC u) { return u - NUM_FLOOR(u); }
+static inline FRAGV frag_bilerp(FRAGV c00, FRAGV c10, FRAGV c01, FRAGV c11, TEXW a, TEXW b)
+{
+    return (c00 * (1 - a) + c10 * a) * (1 - b) + (c01 * (1 - a) + c11 * a) * b;
+}
+
+static inline LODV lod_log2(TEXC rho) { return rho > 0 ? (NUM)log2((double)rho) : (NUM)-1e30; }
+static inline LODV lod_from_ratio(int n, int d) { return (NUM)n / (NUM)d; }
+static inline int64_t lod_ifloor(LODV l) { return dbl_to_i64(floor((double)l), -((int64_t)1 << 40), (int64_t)1 << 40); }
+static inline FRAGV lod_frac(LODV l) { return l - NUM_FLOOR(l); }
 #endif
 /* }==================================================================== */
 

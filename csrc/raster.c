@@ -142,6 +142,10 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
     ** constant-colour span, which every path agrees on */
     t.smooth = ctx->shade_model == GL_SMOOTH
             && (memcmp(t.col[0], t.col[1], 4 * sizeof(NUM)) | memcmp(t.col[0], t.col[2], 4 * sizeof(NUM)));
+    t.tex_projective = 0;
+    for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
+        if ((ctx->tex_units_on & (1u << u)) && (a->tex[u][3] != NUM_ONE || b->tex[u][3] != NUM_ONE || c->tex[u][3] != NUM_ONE))
+            t.tex_projective |= 1u << u;
     SpanFunc span = t.smooth ? ctx->span : ctx->span_const;
 
     /* rows whose centres lie within the vertical extent, clipped to the

@@ -15,6 +15,7 @@ struct TriSetup {
     WgtSetup wgt;
     const NUM *col[3];      /* each vertex's colour for the visible face */
     int smooth;             /* colours vary over the triangle */
+    unsigned int tex_projective;  /* bit per unit whose q varies (divide by q) */
     NUM flat[4];            /* colour of the provoking vertex */
     uint32_t flat_packed;   /* the same in the framebuffer's format */
 };

@@ -9,25 +9,38 @@
 */
 #include "raster.h"
 #include "fragment.h"
+#include "texture.h"
 
 uint32_t span_pack_color(const GlesContext *ctx, const NUM *c)
 {
+    FRAGV f[4];
+    for (int i = 0; i < 4; i++)
+        f[i] = frag_from_num_clamped(c[i]);
     if (ctx->color_format == GLES_COLOR_RGB565)
-        return (num_to_unorm(c[0], 31) << 11) | (num_to_unorm(c[1], 63) << 5) | num_to_unorm(c[2], 31);
-    return num_to_unorm(c[0], 255) | (num_to_unorm(c[1], 255) << 8) | (num_to_unorm(c[2], 255) << 16)
-         | (num_to_unorm(c[3], 255) << 24);
+        return (fragment_channel(f[0], 5, 0, 0) << 11) | (fragment_channel(f[1], 6, 0, 0) << 5)
+             | fragment_channel(f[2], 5, 0, 0);
+    return fragment_channel(f[0], 8, 0, 0) | (fragment_channel(f[1], 8, 0, 0) << 8)
+         | (fragment_channel(f[2], 8, 0, 0) << 16) | (fragment_channel(f[3], 8, 0, 0) << 24);
 }
 
-/* a [0,1] colour channel to an integer in [0, maxval]; with a dither
-** threshold t in [0,1) when dithering applies, else round to nearest */
-static uint32_t to_channel(NUM c, uint32_t maxval, int dither, BLENDV t)
+/* texture coordinates of unit u at edge values e (perspective weights p) */
+static void tex_coord(const TriSetup *t, int u, const WGT p[3], TexCoord *out)
 {
-    return dither ? blend_to_unorm(blend_from_num_clamped(c), maxval, t) : num_to_unorm(c, maxval);
+    const NUM *a = t->v[0]->tex[u], *b = t->v[1]->tex[u], *c = t->v[2]->tex[u];
+    TEXC s = texc_lerp3(a[0], b[0], c[0], p[0], p[1], p[2]);
+    TEXC tt = texc_lerp3(a[1], b[1], c[1], p[0], p[1], p[2]);
+    if (t->tex_projective & (1u << u)) {
+        TEXC q = texc_lerp3(a[3], b[3], c[3], p[0], p[1], p[2]);
+        s = texc_div(s, q);
+        tt = texc_div(tt, q);
+    }
+    out->s = s;
+    out->t = tt;
 }
 
-/* Every state: the reference path. Per pixel, in the spec's order: colour,
-** fog, alpha test, stencil test, depth test, blending, dithering, logic op,
-** masks (§4.1). */
+/* Every state: the reference path. Per pixel, in the spec's order:
+** colour, texturing, fog, alpha test, stencil test, depth test, blending,
+** dithering, logic op, masks (§3.7-3.8, §4.1). */
 static void span_generic(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
 {
     const Vertex *v0 = t->v[0], *v1 = t->v[1], *v2 = t->v[2];
@@ -37,7 +50,9 @@ static void span_generic(GlesContext *ctx, const TriSetup *t, int y, int x0, int
     const int is565 = ctx->color_format == GLES_COLOR_RGB565;
     const int dither = ctx->dither && is565;
     static const uint32_t max565[4] = { 31, 63, 31, 0 }, shift565[4] = { 11, 5, 0, 0 };
+    static const int bits565[3] = { 5, 6, 5 };
     const size_t row = (size_t)y * (size_t)ctx->width;
+    const unsigned int units = ctx->tex_units_on;
     int64_t e[3];
     for (int i = 0; i < 3; i++)
         e[i] = t->ea[i] * x0 + t->eb[i] * y + t->ec[i];
@@ -50,24 +65,47 @@ static void span_generic(GlesContext *ctx, const TriSetup *t, int y, int x0, int
         const int x = x0 + k;
         const size_t at = row + (size_t)x;
         WGT p[3];
-        int have_p = 0;
-        NUM c[4];
-        if (smooth) {
-            wgt_persp(&t->wgt, e, p);
-            have_p = 1;
+        wgt_persp(&t->wgt, e, p);
+        FRAGV c[4];
+        for (int i = 0; i < 4; i++)
+            c[i] = smooth ? frag_lerp3(t->col[0][i], t->col[1][i], t->col[2][i], p[0], p[1], p[2])
+                          : frag_from_num(t->flat[i]);
+        if (units) {
+            FRAGV cf[4], ct[GLES_MAX_TEXTURE_UNITS][4];
             for (int i = 0; i < 4; i++)
-                c[i] = wgt_lerp3(t->col[0][i], t->col[1][i], t->col[2][i], p[0], p[1], p[2]);
-        } else {
-            for (int i = 0; i < 4; i++)
-                c[i] = t->flat[i];
+                cf[i] = c[i] = frag_clamp01(c[i]);
+            for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++) {
+                if (!(units & (1u << u)))
+                    continue;
+                const Texture *tex = ctx->units[u].bound;
+                TexCoord tc, tx, ty;
+                tex_coord(t, u, p, &tc);
+                if (texture_needs_lod(tex)) {
+                    /* the right and upper neighbours' coordinates */
+                    int64_t ex[3] = { e[0] + t->ea[0], e[1] + t->ea[1], e[2] + t->ea[2] };
+                    int64_t ey[3] = { e[0] + t->eb[0], e[1] + t->eb[1], e[2] + t->eb[2] };
+                    WGT px[3], py[3];
+                    wgt_persp_any(&t->wgt, ex, px);
+                    wgt_persp_any(&t->wgt, ey, py);
+                    tex_coord(t, u, px, &tx);
+                    tex_coord(t, u, py, &ty);
+                    texture_sample(tex, &tc, &tx, &ty, ct[u], ctx->texel_unorm8);
+                } else {
+                    texture_sample(tex, &tc, NULL, NULL, ct[u], ctx->texel_unorm8);
+                }
+            }
+            for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
+                if (units & (1u << u))
+                    texture_env(ctx, u, cf, ct, c);
         }
         if (ctx->fog) {
-            if (!have_p)
-                wgt_persp(&t->wgt, e, p);
-            NUM fv = wgt_lerp3(v0->fog, v1->fog, v2->fog, p[0], p[1], p[2]);
-            NUM f = ctx->fog_per_fragment ? fog_factor(ctx, fv) : num_clamp01(fv);
-            for (int i = 0; i < 3; i++) /* C = f C + (1 - f) C_fog */
-                c[i] = num_add(ctx->n_fog_color[i], num_mul(f, num_sub(c[i], ctx->n_fog_color[i])));
+            FRAGV f = ctx->fog_per_fragment
+                          ? frag_from_num(fog_factor(ctx, wgt_lerp3(v0->fog, v1->fog, v2->fog, p[0], p[1], p[2])))
+                          : frag_clamp01(frag_lerp3(v0->fog, v1->fog, v2->fog, p[0], p[1], p[2]));
+            for (int i = 0; i < 3; i++) { /* C = f C + (1 - f) C_fog */
+                FRAGV fc = frag_from_num(ctx->n_fog_color[i]);
+                c[i] = fc + frag_mul(f, frag_clamp01(c[i]) - fc);
+            }
         }
         if (ctx->alpha_test && !fragment_alpha_pass(ctx, c[3]))
             continue;
@@ -95,28 +133,29 @@ static void span_generic(GlesContext *ctx, const TriSetup *t, int y, int x0, int
             ctx->depth[at] = z;
 
         uint32_t dpacked = is565 ? ((uint16_t *)ctx->color)[at] : ((uint32_t *)ctx->color)[at];
-        BLENDV t_d = dither ? fragment_dither_threshold(x, y) : BLEND_ONE / 2;
-        uint32_t packed = 0;
+        FRAGV t_d = dither ? fragment_dither_threshold(x, y) : FRAG_ONE / 2;
+        FRAGV out[4];
         if (ctx->blend && !ctx->color_logic_op) {
-            BLENDV src[4], dst[4], out[4];
+            FRAGV src[4], dst[4];
             for (int i = 0; i < 4; i++) {
-                src[i] = blend_from_num_clamped(c[i]);
+                src[i] = frag_clamp01(c[i]);
                 if (is565)
-                    dst[i] = i == 3 ? BLEND_ONE
+                    dst[i] = i == 3 ? FRAG_ONE
                            : (i == 1 ? ctx->unorm6 : ctx->unorm5)[(dpacked >> shift565[i]) & max565[i]];
                 else
                     dst[i] = ctx->unorm8[(dpacked >> (8 * i)) & 0xFFu];
             }
             fragment_blend(ctx, src, dst, out);
-            for (int i = 0; i < (is565 ? 3 : 4); i++) {
-                uint32_t m = is565 ? max565[i] : 255;
-                packed |= blend_to_unorm(out[i], m, t_d) << (is565 ? shift565[i] : 8u * (uint32_t)i);
-            }
         } else {
-            for (int i = 0; i < (is565 ? 3 : 4); i++) {
-                uint32_t m = is565 ? max565[i] : 255;
-                packed |= to_channel(c[i], m, dither, t_d) << (is565 ? shift565[i] : 8u * (uint32_t)i);
-            }
+            for (int i = 0; i < 4; i++)
+                out[i] = c[i];
+        }
+        uint32_t packed = 0;
+        for (int i = 0; i < (is565 ? 3 : 4); i++) {
+            if (is565)
+                packed |= fragment_channel(out[i], bits565[i], dither, t_d) << shift565[i];
+            else
+                packed |= fragment_channel(out[i], 8, 0, t_d) << (8u * (uint32_t)i);
         }
         if (ctx->color_logic_op)
             packed = fragment_logic_op(ctx->logic_op, packed, dpacked) & fbmask;
@@ -236,7 +275,7 @@ void span_choose(GlesContext *ctx)
     const int simple = ctx->color_format == GLES_COLOR_RGBA8888 && ctx->color_mask[0] && ctx->color_mask[1]
                     && ctx->color_mask[2] && ctx->color_mask[3] && !(ctx->debug & GLES_DEBUG_GENERIC_SPANS)
                     && !ctx->alpha_test && !(ctx->stencil_test && ctx->stencil) && !ctx->fog
-                    && !ctx->color_logic_op && bk >= 0;
+                    && !ctx->color_logic_op && bk >= 0 && !ctx->tex_units_on;
     const int zless = depth && ctx->depth_func == GL_LESS && ctx->depth_mask;
     if (simple && (!depth || zless)) {
         ctx->span = table[depth][bk][smooth];

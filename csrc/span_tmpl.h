@@ -32,14 +32,14 @@ static void SPAN_NAME(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
 #endif
 #if !SPAN_SMOOTH && SPAN_BLEND
     /* a constant source: its blend term is the same for the whole span */
-    BLENDV sterm[4];
+    FRAGV sterm[4];
 #if SPAN_BLEND == 1
-    const BLENDV sa = blend_from_num_clamped(t->flat[3]), da = BLEND_ONE - sa;
+    const FRAGV sa = frag_from_num_clamped(t->flat[3]), da = FRAG_ONE - sa;
     for (int i = 0; i < 4; i++)
-        sterm[i] = blend_mul(blend_from_num_clamped(t->flat[i]), sa);
+        sterm[i] = frag_mul(frag_from_num_clamped(t->flat[i]), sa);
 #else
     for (int i = 0; i < 4; i++)
-        sterm[i] = blend_from_num_clamped(t->flat[i]);
+        sterm[i] = frag_from_num_clamped(t->flat[i]);
 #endif
 #endif
     (void)ctx;
@@ -56,36 +56,36 @@ static void SPAN_NAME(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
 #if SPAN_SMOOTH
             WGT p[3];
             wgt_persp(&t->wgt, e, p);
-            NUM c[4];
+            FRAGV c[4];
             for (int i = 0; i < 4; i++)
-                c[i] = wgt_lerp3(c0[i], c1[i], c2[i], p[0], p[1], p[2]);
+                c[i] = frag_lerp3(c0[i], c1[i], c2[i], p[0], p[1], p[2]);
 #endif
 #if SPAN_BLEND
             uint32_t d = dst[k], out = 0;
 #if SPAN_SMOOTH
-            BLENDV sterm[4];
+            FRAGV sterm[4];
 #if SPAN_BLEND == 1
-            BLENDV sa = blend_from_num_clamped(c[3]), da = BLEND_ONE - sa;
+            FRAGV sa = frag_clamp01(c[3]), da = FRAG_ONE - sa;
             for (int i = 0; i < 4; i++)
-                sterm[i] = blend_mul(blend_from_num_clamped(c[i]), sa);
+                sterm[i] = frag_mul(frag_clamp01(c[i]), sa);
 #else
             for (int i = 0; i < 4; i++)
-                sterm[i] = blend_from_num_clamped(c[i]);
+                sterm[i] = frag_clamp01(c[i]);
 #endif
 #endif
             for (int i = 0; i < 4; i++) {
-                BLENDV dv = ctx->unorm8[(d >> (8 * i)) & 0xFFu];
+                FRAGV dv = ctx->unorm8[(d >> (8 * i)) & 0xFFu];
 #if SPAN_BLEND == 1
-                BLENDV v = sterm[i] + blend_mul(dv, da);
+                FRAGV v = sterm[i] + frag_mul(dv, da);
 #else
-                BLENDV v = sterm[i] + dv;
+                FRAGV v = sterm[i] + dv;
 #endif
-                out |= blend_to_unorm(v, 255, BLEND_ONE / 2) << (8 * i);
+                out |= frag_to_unorm(v, 255, FRAG_ONE / 2) << (8 * i);
             }
             dst[k] = out;
 #elif SPAN_SMOOTH
-            dst[k] = num_to_unorm(c[0], 255) | (num_to_unorm(c[1], 255) << 8) | (num_to_unorm(c[2], 255) << 16)
-                   | (num_to_unorm(c[3], 255) << 24);
+            dst[k] = frag_to_unorm(c[0], 255, FRAG_ONE / 2) | (frag_to_unorm(c[1], 255, FRAG_ONE / 2) << 8)
+                   | (frag_to_unorm(c[2], 255, FRAG_ONE / 2) << 16) | (frag_to_unorm(c[3], 255, FRAG_ONE / 2) << 24);
 #else
             dst[k] = packed;
 #endif

@@ -103,6 +103,43 @@ typedef struct Material {
 } Material;
 
 /* {====================================================================
+** textures (§3.7); texels are stored expanded to RGBA8888 (R in the low
+** byte) with the base format kept for the environment */
+#define GLES_MAX_TEXTURE_SIZE 2048
+#define GLES_MAX_TEXTURE_LEVELS 12      /* 2048 .. 1 */
+
+typedef struct TexImage {
+    int width, height;                  /* 0 while undefined */
+    uint32_t *texels;
+} TexImage;
+
+typedef struct Texture {
+    unsigned int name;
+    TexImage level[GLES_MAX_TEXTURE_LEVELS];
+    unsigned int format;                /* base format of level 0 */
+    unsigned int level_format[GLES_MAX_TEXTURE_LEVELS];
+    unsigned int min_filter, mag_filter, wrap_s, wrap_t;
+    int generate_mipmap;
+    int crop[4];
+    int paletted;                       /* specified with CompressedTexImage2D */
+    /* derived by texture_complete(): */
+    int complete;
+    int max_level;                      /* q: the last level sampled */
+} Texture;
+
+typedef struct TexUnit {
+    int enabled;                        /* TEXTURE_2D */
+    Texture *bound;                     /* never NULL: name 0 is ctx->default_texture */
+    unsigned int env_mode;
+    double env_color[4];
+    NUM n_env_color[4];
+    unsigned int combine_rgb, combine_alpha;
+    unsigned int src_rgb[3], src_alpha[3], op_rgb[3], op_alpha[3];
+    double rgb_scale, alpha_scale;
+    int coord_replace;                  /* OES_point_sprite */
+} TexUnit;
+
+/* {====================================================================
 ** vertices after transformation */
 typedef struct Vertex {
     NUM clip[4];
@@ -173,8 +210,8 @@ struct GlesContext {
     double sample_coverage_value;
     int sample_coverage_invert;
 
-    BLENDV unorm8[256];         /* d / 255 as BLENDV: blending reads these */
-    BLENDV unorm5[32], unorm6[64];
+    FRAGV unorm8[256];         /* d / 255 as FRAGV: blending reads these */
+    FRAGV unorm5[32], unorm6[64];
 
     /* fog (§3.8) */
     int fog;
@@ -214,6 +251,13 @@ struct GlesContext {
     double cur_color[4], cur_normal[3], cur_tex[GLES_MAX_TEXTURE_UNITS][4];
     NUM cur_color_n[4], cur_normal_n[3], cur_tex_n[GLES_MAX_TEXTURE_UNITS][4];
 
+    /* textures */
+    TexUnit units[GLES_MAX_TEXTURE_UNITS];
+    Texture default_texture;
+    NameTable textures;
+    unsigned int tex_units_on;          /* derived: bit per unit that samples */
+    FRAGV texel_unorm8[256];            /* c / 255 */
+
     /* arrays */
     ArrayState arrays[ARR_COUNT];
     NameTable buffers;
@@ -248,6 +292,7 @@ struct GlesContext {
 #define DIRTY_SPAN 2u
 #define DIRTY_CLIP 4u
 #define DIRTY_LIGHT 8u
+#define DIRTY_TEXTURE 16u
 #define DIRTY_ALL 0xffffffffu
 
 /* set the first error only, as the spec says */

@@ -14,6 +14,7 @@
 #include "array.h"
 #include "light.h"
 #include "fragment.h"
+#include "texture.h"
 
 void vertex_validate(GlesContext *ctx)
 {
@@ -35,6 +36,8 @@ void vertex_validate(GlesContext *ctx)
         light_validate(ctx);
     if (ctx->dirty & DIRTY_SPAN)
         fog_validate(ctx);
+    if (ctx->dirty & (DIRTY_TEXTURE | DIRTY_SPAN))
+        texture_validate(ctx);
 }
 
 NUM vertex_plane_distance(const GlesContext *ctx, const Vertex *v, unsigned int bit)
@@ -184,6 +187,18 @@ void vertex_attribs(GlesContext *ctx, int64_t index, Vertex *v)
     }
     if (ctx->fog)
         v->fog = fog_vertex_value(ctx, v->eye);
+    for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++) {
+        if (!(ctx->tex_units_on & (1u << u)))
+            continue;
+        const ArrayState *ta = &ctx->arrays[ARR_TEXCOORD0 + u];
+        NUM tc[4] = { NUM_ZERO, NUM_ZERO, NUM_ZERO, NUM_ONE };
+        if (ta->enabled)
+            array_fetch(ta, array_base(ta), index, 0, tc);
+        else
+            memcpy(tc, ctx->cur_tex_n[u], sizeof tc);
+        const Matrix *tm = ctx->texture[u].top;
+        matrix_xform4(tm->n, tm->kind, tc, v->tex[u]);
+    }
     const ArrayState *ps = &ctx->arrays[ARR_POINT_SIZE];
     if (ps->enabled) {
         array_fetch(ps, array_base(ps), index, 0, &v->point_size);

@@ -57,21 +57,19 @@ _FIX = 1.0 / 65536.0
 # The ES 1.1 commands whose pipeline stage is not built yet. Each exists and
 # raises NotImplementedError naming its stage; README.md lists them.
 _MISSING_BOTH = {
-    "texturing": "glBindTexture glDeleteTextures glGenTextures glIsTexture glTexImage2D "
-    "glTexSubImage2D glCompressedTexImage2D glCompressedTexSubImage2D glCopyTexImage2D "
-    "glCopyTexSubImage2D glTexParameteri glTexParameteriv glTexParameterx glTexParameterxv "
-    "glGetTexParameteriv glGetTexParameterxv glTexEnvi glTexEnviv glTexEnvx glTexEnvxv "
-    "glGetTexEnviv glGetTexEnvxv",
     "points and lines": "glPointSizex glLineWidthx glPointParameterx glPointParameterxv",
     "polygon offset": "glPolygonOffsetx",
 }
 _MISSING_COMMON = {
-    "texturing": "glTexParameterf glTexParameterfv glGetTexParameterfv glTexEnvf glTexEnvfv "
-    "glGetTexEnvfv",
     "points and lines": "glPointSize glLineWidth glPointParameterf glPointParameterfv",
     "polygon offset": "glPolygonOffset",
 }
 
+
+# texture parameters whose values are reals (x forms scale them by 2^16,
+# i forms map them like colours); every other one is an enum or an integer
+_TEX_REAL = {C.GL_TEXTURE_ENV_COLOR, C.GL_RGB_SCALE, C.GL_ALPHA_SCALE}
+_TEX_COUNT = {C.GL_TEXTURE_ENV_COLOR: 4, C.GL_TEXTURE_CROP_RECT_OES: 4}
 
 # how many values each lighting pname takes (others take one)
 _PARAM_COUNT = {
@@ -525,6 +523,172 @@ class GLBase:
             self._lib.gles_Fog(self._p, pname, buf, 1)
 
     # {================================================================
+    # textures (§3.7)
+
+    def glGenTextures(self, n: int) -> Any:
+        n = _index(n)
+        out = self._ffi.new("unsigned int[]", max(n, 1))
+        with self._lock:
+            self._lib.gles_GenTextures(self._p, n, out if n >= 0 else self._ffi.NULL)
+        if n < 0:
+            return None
+        names = [int(out[i]) for i in range(n)]
+        return names[0] if n == 1 else np.array(names, dtype=np.uint32)
+
+    def glDeleteTextures(self, n: int, textures: Any) -> None:
+        n = _index(n)
+        names = np.atleast_1d(np.asarray(textures, dtype=np.int64))
+        if n > names.size:
+            raise ValueError(f"glDeleteTextures: n is {n} but {names.size} names were given")
+        buf = self._ffi.new("unsigned int[]", [int(v) & 0xFFFFFFFF for v in names[: max(n, 0)]] or [0])
+        with self._lock:
+            self._lib.gles_DeleteTextures(self._p, n, buf)
+
+    def glBindTexture(self, target: int, texture: int) -> None:
+        with self._lock:
+            self._lib.gles_BindTexture(self._p, target, texture)
+
+    def glIsTexture(self, texture: int) -> bool:
+        with self._lock:
+            return bool(self._lib.gles_IsTexture(self._p, texture))
+
+    def _pixels(self, data: Pointer, what: str) -> tuple[Any, int, Any]:
+        if data is None:
+            return self._ffi.NULL, -1, None
+        if isinstance(data, (int, np.integer)) and not isinstance(data, bool):
+            raise TypeError(f"{what}: pixel data must be an array or bytes (ES 1.1 has no pixel buffers)")
+        return self._pointer(data, None, 0, what)
+
+    def glTexImage2D(self, target: int, level: int, internalformat: int, width: int, height: int, border: int,
+                     format: int, type: int, pixels: Pointer) -> None:
+        ptr, nbytes, keep = self._pixels(pixels, "glTexImage2D")
+        with self._lock:
+            st = self._lib.gles_TexImage2D(self._p, target, level, internalformat, width, height, border,
+                                           format, type, ptr, nbytes)
+        del keep
+        self._status(st)
+
+    def glTexSubImage2D(self, target: int, level: int, xoffset: int, yoffset: int, width: int, height: int,
+                        format: int, type: int, pixels: Pointer) -> None:
+        ptr, nbytes, keep = self._pixels(pixels, "glTexSubImage2D")
+        with self._lock:
+            st = self._lib.gles_TexSubImage2D(self._p, target, level, xoffset, yoffset, width, height,
+                                              format, type, ptr, nbytes)
+        del keep
+        self._status(st)
+
+    def glCopyTexImage2D(self, target: int, level: int, internalformat: int, x: int, y: int, width: int,
+                         height: int, border: int) -> None:
+        with self._lock:
+            self._lib.gles_CopyTexImage2D(self._p, target, level, internalformat, x, y, width, height, border)
+
+    def glCopyTexSubImage2D(self, target: int, level: int, xoffset: int, yoffset: int, x: int, y: int,
+                            width: int, height: int) -> None:
+        with self._lock:
+            self._lib.gles_CopyTexSubImage2D(self._p, target, level, xoffset, yoffset, x, y, width, height)
+
+    def glCompressedTexImage2D(self, target: int, level: int, internalformat: int, width: int, height: int,
+                               border: int, imageSize: int, data: Pointer) -> None:
+        """OES_compressed_paletted_texture: the ten PALETTE*_OES formats; a
+        negative level gives -level + 1 mip levels in one image."""
+        ptr, nbytes, keep = self._pixels(data, "glCompressedTexImage2D")
+        if nbytes >= 0 and _index(imageSize) > nbytes:
+            raise ValueError(f"glCompressedTexImage2D: imageSize is {imageSize} but the data holds {nbytes} bytes")
+        with self._lock:
+            st = self._lib.gles_CompressedTexImage2D(self._p, target, level, internalformat, width, height,
+                                                     border, imageSize, ptr, nbytes)
+        del keep
+        self._status(st)
+
+    def glCompressedTexSubImage2D(self, target: int, level: int, xoffset: int, yoffset: int, width: int,
+                                  height: int, format: int, imageSize: int, data: Pointer) -> None:
+        ptr, _, keep = self._pixels(data, "glCompressedTexSubImage2D")
+        with self._lock:
+            self._lib.gles_CompressedTexSubImage2D(self._p, target, level, xoffset, yoffset, width, height,
+                                                   format, imageSize, ptr)
+        del keep
+
+    def _tex_values(self, pname: int, params: Any, form: str, vector: bool, what: str) -> Any:
+        """Doubles for a texture parameter: x forms scale reals, i forms
+        map reals like colours, enums and integers pass unchanged."""
+        n = _TEX_COUNT.get(int(pname), 1) if vector else 1
+        raw = _values(params if vector else [params], n, what,
+                      np.float64 if form == "f" else np.int64)[:n]
+        real = int(pname) in _TEX_REAL
+        out = [0.0, 0.0, 0.0, 0.0]
+        for i in range(n):
+            v = raw[i]
+            if form == "x" and real:
+                out[i] = int(v) * _FIX
+            elif form == "i" and real and int(pname) == C.GL_TEXTURE_ENV_COLOR:
+                out[i] = (2.0 * int(v) + 1.0) / (2.0**32 - 1.0)
+            else:
+                out[i] = float(v)
+        return self._ffi.new("double[4]", out)
+
+    def _tex_param(self, target: int, pname: int, params: Any, form: str, vector: bool, what: str) -> None:
+        buf = self._tex_values(pname, params, form, vector, what)
+        with self._lock:
+            self._lib.gles_TexParameter(self._p, target, pname, buf, int(vector))
+
+    def glTexParameteri(self, target: int, pname: int, param: int) -> None:
+        self._tex_param(target, pname, param, "i", False, "glTexParameteri")
+
+    def glTexParameteriv(self, target: int, pname: int, params: Any) -> None:
+        self._tex_param(target, pname, params, "i", True, "glTexParameteriv")
+
+    def glTexParameterx(self, target: int, pname: int, param: int) -> None:
+        self._tex_param(target, pname, param, "x", False, "glTexParameterx")
+
+    def glTexParameterxv(self, target: int, pname: int, params: Any) -> None:
+        self._tex_param(target, pname, params, "x", True, "glTexParameterxv")
+
+    def _tex_env(self, target: int, pname: int, params: Any, form: str, vector: bool, what: str) -> None:
+        buf = self._tex_values(pname, params, form, vector, what)
+        with self._lock:
+            self._lib.gles_TexEnv(self._p, target, pname, buf, int(vector))
+
+    def glTexEnvi(self, target: int, pname: int, param: int) -> None:
+        self._tex_env(target, pname, param, "i", False, "glTexEnvi")
+
+    def glTexEnviv(self, target: int, pname: int, params: Any) -> None:
+        self._tex_env(target, pname, params, "i", True, "glTexEnviv")
+
+    def glTexEnvx(self, target: int, pname: int, param: int) -> None:
+        self._tex_env(target, pname, param, "x", False, "glTexEnvx")
+
+    def glTexEnvxv(self, target: int, pname: int, params: Any) -> None:
+        self._tex_env(target, pname, params, "x", True, "glTexEnvxv")
+
+    def _tex_get(self, fn: Any, target: int, pname: int, form: str) -> Any:
+        out = self._ffi.new("double[4]")
+        with self._lock:
+            n = fn(self._p, target, pname, out)
+        vals = [out[i] for i in range(n)]
+        real = int(pname) in _TEX_REAL
+        if form == "f":
+            return self._result([float(v) for v in vals], np.float32)
+        if form == "x":
+            conv = [int(np.floor(v * 65536.0 + 0.5)) if real else int(v) for v in vals]
+        elif int(pname) == C.GL_TEXTURE_ENV_COLOR:
+            conv = [int(np.clip(np.floor(((2.0**32 - 1) * v - 1) / 2 + 0.5), -(2**31), 2**31 - 1)) for v in vals]
+        else:
+            conv = [int(np.floor(v + 0.5)) for v in vals]
+        return self._result(conv, np.int32)
+
+    def glGetTexParameteriv(self, target: int, pname: int) -> Any:
+        return self._tex_get(self._lib.gles_GetTexParameter, target, pname, "i")
+
+    def glGetTexParameterxv(self, target: int, pname: int) -> Any:
+        return self._tex_get(self._lib.gles_GetTexParameter, target, pname, "x")
+
+    def glGetTexEnviv(self, target: int, pname: int) -> Any:
+        return self._tex_get(self._lib.gles_GetTexEnv, target, pname, "i")
+
+    def glGetTexEnvxv(self, target: int, pname: int) -> Any:
+        return self._tex_get(self._lib.gles_GetTexEnv, target, pname, "x")
+
+    # {================================================================
     # vertex arrays and buffer objects
 
     def _set_pointer(self, key: Any, fn: Any, args: tuple, gltype: int, pointer: Pointer, what: str) -> None:
@@ -759,6 +923,24 @@ class GLCommon(GLBase):
             buf = self._params(pname, params, False, "glFogfv")
         with self._lock:
             self._lib.gles_Fog(self._p, pname, buf, 1)
+
+    def glTexParameterf(self, target: int, pname: int, param: float) -> None:
+        self._tex_param(target, pname, param, "f", False, "glTexParameterf")
+
+    def glTexParameterfv(self, target: int, pname: int, params: Any) -> None:
+        self._tex_param(target, pname, params, "f", True, "glTexParameterfv")
+
+    def glTexEnvf(self, target: int, pname: int, param: float) -> None:
+        self._tex_env(target, pname, param, "f", False, "glTexEnvf")
+
+    def glTexEnvfv(self, target: int, pname: int, params: Any) -> None:
+        self._tex_env(target, pname, params, "f", True, "glTexEnvfv")
+
+    def glGetTexParameterfv(self, target: int, pname: int) -> Any:
+        return self._tex_get(self._lib.gles_GetTexParameter, target, pname, "f")
+
+    def glGetTexEnvfv(self, target: int, pname: int) -> Any:
+        return self._tex_get(self._lib.gles_GetTexEnv, target, pname, "f")
 
     def glGetClipPlanef(self, plane: int) -> np.ndarray:
         eq = self._ffi.new("double[4]")

@@ -1,0 +1,1117 @@
+/*
+** texture.c -- texture objects, images, parameters, sampling and the
+** texture environment (ES 1.1 §3.7, OES_compressed_paletted_texture,
+** OES_texture_mirrored_repeat, OES_texture_env_crossbar).
+** Owns: Gen/Bind/Delete/IsTexture, TexImage2D and friends, TexParameter,
+**       TexEnv, mipmap completeness, GENERATE_MIPMAP, filtering and the
+**       environment functions.
+** Storage: every level is expanded to RGBA8888 at specification time; the
+**       base format decides which components the environment uses.
+** Sampling (§3.7.7-3.7.8): REPEAT wraps the coordinate exactly before it is
+**       scaled to texel space, so large coordinates never overflow; the level
+**       of detail uses rho = max(|du/dx|, |du/dy|, |dv/dx|, |dv/dy|), the
+**       lower bound the spec allows, from the coordinates of the pixel's
+**       right and upper neighbours.
+*/
+#include <stdlib.h>
+#include <string.h>
+#include "state.h"
+#include "array.h"
+#include "texture.h"
+
+static int is_base_format(unsigned int f)
+{
+    return f == GL_ALPHA || f == GL_LUMINANCE || f == GL_LUMINANCE_ALPHA || f == GL_RGB || f == GL_RGBA;
+}
+
+static void texture_defaults(Texture *t, unsigned int name)
+{
+    memset(t, 0, sizeof *t);
+    t->name = name;
+    t->min_filter = GL_NEAREST_MIPMAP_LINEAR;
+    t->mag_filter = GL_LINEAR;
+    t->wrap_s = t->wrap_t = GL_REPEAT;
+}
+
+static void texture_release(Texture *t)
+{
+    for (int i = 0; i < GLES_MAX_TEXTURE_LEVELS; i++) {
+        free(t->level[i].texels);
+        t->level[i].texels = NULL;
+    }
+}
+
+void texture_init(GlesContext *ctx)
+{
+    names_init(&ctx->textures);
+    texture_defaults(&ctx->default_texture, 0);
+    for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++) {
+        TexUnit *tu = &ctx->units[u];
+        memset(tu, 0, sizeof *tu);
+        tu->bound = &ctx->default_texture;
+        tu->env_mode = GL_MODULATE;
+        tu->combine_rgb = tu->combine_alpha = GL_MODULATE;
+        tu->src_rgb[0] = tu->src_alpha[0] = GL_TEXTURE;
+        tu->src_rgb[1] = tu->src_alpha[1] = GL_PREVIOUS;
+        tu->src_rgb[2] = tu->src_alpha[2] = GL_CONSTANT;
+        tu->op_rgb[0] = tu->op_rgb[1] = GL_SRC_COLOR;
+        tu->op_rgb[2] = GL_SRC_ALPHA;
+        tu->op_alpha[0] = tu->op_alpha[1] = tu->op_alpha[2] = GL_SRC_ALPHA;
+        tu->rgb_scale = tu->alpha_scale = 1.0;
+    }
+    for (uint32_t c = 0; c < 256; c++)
+        ctx->texel_unorm8[c] = frag_from_unorm(c, 255);
+}
+
+void texture_free(GlesContext *ctx)
+{
+    NameTable *nt = &ctx->textures;
+    for (uint32_t i = 0; i < nt->capacity; i++) {
+        Texture *t = nt->keys[i] && nt->keys[i] != ~0u ? nt->values[i] : NULL;
+        if (t) {
+            texture_release(t);
+            free(t);
+        }
+    }
+    names_free(nt);
+    texture_release(&ctx->default_texture);
+}
+
+static TexUnit *active_unit(GlesContext *ctx) { return &ctx->units[ctx->active_texture - GL_TEXTURE0]; }
+
+static int needs_mipmaps(unsigned int min_filter)
+{
+    return min_filter != GL_NEAREST && min_filter != GL_LINEAR;
+}
+
+/* §3.7.10: level 0 defined, and with a mipmapped filter every level down to
+** 1x1 defined with halved sizes and the same format */
+static void texture_complete(Texture *t)
+{
+    const TexImage *l0 = &t->level[0];
+    t->complete = 0;
+    t->max_level = 0;
+    if (l0->width <= 0 || l0->height <= 0 || !l0->texels)
+        return;
+    if (!needs_mipmaps(t->min_filter)) {
+        t->complete = 1;
+        return;
+    }
+    int w = l0->width, h = l0->height, i = 0;
+    while (w > 1 || h > 1) {
+        w = w > 1 ? w / 2 : 1;
+        h = h > 1 ? h / 2 : 1;
+        i++;
+        const TexImage *li = &t->level[i];
+        if (li->width != w || li->height != h || !li->texels || t->level_format[i] != t->format)
+            return;
+    }
+    t->max_level = i;
+    t->complete = 1;
+}
+
+const Texture *texture_active(const GlesContext *ctx, int unit)
+{
+    const TexUnit *tu = &ctx->units[unit];
+    return tu->enabled && tu->bound->complete ? tu->bound : NULL;
+}
+
+void texture_validate(GlesContext *ctx)
+{
+    ctx->tex_units_on = 0;
+    for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
+        if (texture_active(ctx, u))
+            ctx->tex_units_on |= 1u << u;
+}
+
+/* {====================================================================
+** objects */
+
+void gles_GenTextures(GlesContext *ctx, int n, unsigned int *names)
+{
+    if (n < 0) {
+        ctx_error(ctx, GL_INVALID_VALUE);
+        return;
+    }
+    names_generate(&ctx->textures, n, names);
+}
+
+void gles_DeleteTextures(GlesContext *ctx, int n, const unsigned int *names)
+{
+    if (n < 0) {
+        ctx_error(ctx, GL_INVALID_VALUE);
+        return;
+    }
+    for (int i = 0; i < n; i++) {
+        if (names[i] == 0)
+            continue;
+        Texture *t = names_remove(&ctx->textures, names[i]);
+        if (!t)
+            continue;
+        /* §3.7.13: a deleted bound texture reverts the binding to 0 */
+        for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
+            if (ctx->units[u].bound == t)
+                ctx->units[u].bound = &ctx->default_texture;
+        texture_release(t);
+        free(t);
+    }
+    ctx->dirty |= DIRTY_TEXTURE;
+}
+
+void gles_BindTexture(GlesContext *ctx, unsigned int target, unsigned int name)
+{
+    if (target != GL_TEXTURE_2D) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    Texture *t = &ctx->default_texture;
+    if (name != 0) {
+        t = names_lookup(&ctx->textures, name);
+        if (!t) {
+            t = malloc(sizeof *t);
+            if (!t || !names_insert(&ctx->textures, name, t)) {
+                free(t);
+                ctx_error(ctx, GL_OUT_OF_MEMORY);
+                return;
+            }
+            texture_defaults(t, name);
+        }
+    }
+    active_unit(ctx)->bound = t;
+    ctx->dirty |= DIRTY_TEXTURE;
+}
+
+unsigned char gles_IsTexture(GlesContext *ctx, unsigned int name)
+{
+    return name != 0 && names_lookup(&ctx->textures, name) != NULL;
+}
+
+/* {====================================================================
+** images */
+
+static uint32_t pack(uint32_t r, uint32_t g, uint32_t b, uint32_t a) { return r | (g << 8) | (b << 16) | (a << 24); }
+static uint32_t x5(uint32_t c) { return (c * 255 + 15) / 31; }
+static uint32_t x6(uint32_t c) { return (c * 255 + 31) / 63; }
+static uint32_t x4(uint32_t c) { return c * 17; }
+
+/* bytes per pixel of a legal format/type pair, 0 when the pair is illegal */
+static int pixel_bytes(unsigned int format, unsigned int type)
+{
+    switch (type) {
+    case GL_UNSIGNED_BYTE:
+        switch (format) {
+        case GL_RGBA: return 4;
+        case GL_RGB: return 3;
+        case GL_LUMINANCE_ALPHA: return 2;
+        case GL_LUMINANCE: case GL_ALPHA: return 1;
+        default: return 0;
+        }
+    case GL_UNSIGNED_SHORT_5_6_5: return format == GL_RGB ? 2 : 0;
+    case GL_UNSIGNED_SHORT_4_4_4_4: case GL_UNSIGNED_SHORT_5_5_5_1: return format == GL_RGBA ? 2 : 0;
+    default: return 0;
+    }
+}
+
+/* one client pixel to RGBA8888 */
+static uint32_t unpack_pixel(unsigned int format, unsigned int type, const uint8_t *p)
+{
+    if (type == GL_UNSIGNED_BYTE) {
+        switch (format) {
+        case GL_RGBA: return pack(p[0], p[1], p[2], p[3]);
+        case GL_RGB: return pack(p[0], p[1], p[2], 255);
+        case GL_LUMINANCE_ALPHA: return pack(p[0], p[0], p[0], p[1]);
+        case GL_LUMINANCE: return pack(p[0], p[0], p[0], 255);
+        default: return pack(0, 0, 0, p[0]); /* GL_ALPHA */
+        }
+    }
+    uint16_t v;
+    memcpy(&v, p, 2);
+    switch (type) {
+    case GL_UNSIGNED_SHORT_5_6_5: return pack(x5(v >> 11), x6((v >> 5) & 63), x5(v & 31), 255);
+    case GL_UNSIGNED_SHORT_4_4_4_4: return pack(x4(v >> 12), x4((v >> 8) & 15), x4((v >> 4) & 15), x4(v & 15));
+    default: return pack(x5(v >> 11), x5((v >> 6) & 31), x5((v >> 1) & 31), (v & 1) ? 255 : 0);
+    }
+}
+
+static int64_t unpack_stride(const GlesContext *ctx, int width, int bpp)
+{
+    int64_t row = (int64_t)width * bpp, a = ctx->unpack_alignment;
+    return (row + a - 1) / a * a;
+}
+
+int64_t texture_image_bytes(const GlesContext *ctx, int width, int height, unsigned int format, unsigned int type)
+{
+    int bpp = pixel_bytes(format, type);
+    if (!bpp || width <= 0 || height <= 0)
+        return 0;
+    return unpack_stride(ctx, width, bpp) * (height - 1) + (int64_t)width * bpp;
+}
+
+static int is_pot(int v) { return v > 0 && (v & (v - 1)) == 0; }
+
+static int max_level_of_size(void)
+{
+    int l = 0;
+    for (int s = GLES_MAX_TEXTURE_SIZE; s > 1; s /= 2)
+        l++;
+    return l;
+}
+
+/* (re)allocate a level; returns 0 on no memory */
+static int level_alloc(TexImage *li, int width, int height)
+{
+    size_t n = (size_t)width * (size_t)height;
+    uint32_t *texels = n ? calloc(n, sizeof *texels) : NULL;
+    if (n && !texels)
+        return 0;
+    free(li->texels);
+    li->texels = texels;
+    li->width = width;
+    li->height = height;
+    return 1;
+}
+
+/* GENERATE_MIPMAP: every level below 0 from a 2x2 box filter, rounded */
+static int generate_mipmaps(Texture *t)
+{
+    int w = t->level[0].width, h = t->level[0].height;
+    for (int i = 1; w > 1 || h > 1; i++) {
+        int nw = w > 1 ? w / 2 : 1, nh = h > 1 ? h / 2 : 1;
+        TexImage *src = &t->level[i - 1], *dst = &t->level[i];
+        if (!level_alloc(dst, nw, nh))
+            return 0;
+        t->level_format[i] = t->format;
+        for (int y = 0; y < nh; y++)
+            for (int x = 0; x < nw; x++) {
+                int x0 = w > 1 ? 2 * x : 0, y0 = h > 1 ? 2 * y : 0;
+                int x1 = w > 1 ? x0 + 1 : x0, y1 = h > 1 ? y0 + 1 : y0;
+                uint32_t q[4] = { src->texels[y0 * w + x0], src->texels[y0 * w + x1],
+                                  src->texels[y1 * w + x0], src->texels[y1 * w + x1] };
+                uint32_t out = 0;
+                for (int k = 0; k < 4; k++) {
+                    uint32_t sum = 0;
+                    for (int j = 0; j < 4; j++)
+                        sum += (q[j] >> (8 * k)) & 0xFFu;
+                    out |= ((sum + 2) / 4) << (8 * k);
+                }
+                dst->texels[y * nw + x] = out;
+            }
+        w = nw;
+        h = nh;
+    }
+    return 1;
+}
+
+static void image_changed(GlesContext *ctx, Texture *t, int level)
+{
+    if (level == 0 && t->generate_mipmap && !generate_mipmaps(t))
+        ctx_error(ctx, GL_OUT_OF_MEMORY);
+    texture_complete(t);
+    ctx->dirty |= DIRTY_TEXTURE;
+}
+
+/* common checks of TexImage2D-like calls; returns the GL error or 0 */
+static unsigned int check_image(int level, int width, int height, int border)
+{
+    if (level < 0 || level > max_level_of_size())
+        return GL_INVALID_VALUE;
+    if (width < 0 || height < 0 || width > GLES_MAX_TEXTURE_SIZE || height > GLES_MAX_TEXTURE_SIZE
+        || (width && !is_pot(width)) || (height && !is_pot(height)) || border != 0)
+        return GL_INVALID_VALUE;
+    return 0;
+}
+
+int gles_TexImage2D(GlesContext *ctx, unsigned int target, int level, int internalformat, int width, int height,
+                    int border, unsigned int format, unsigned int type, const void *pixels, int64_t nbytes)
+{
+    if (target != GL_TEXTURE_2D || !is_base_format(format)
+        || (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT_5_6_5 && type != GL_UNSIGNED_SHORT_4_4_4_4
+            && type != GL_UNSIGNED_SHORT_5_5_5_1)) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return GLES_OK;
+    }
+    unsigned int err = check_image(level, width, height, border);
+    if (!err && !is_base_format((unsigned int)internalformat))
+        err = GL_INVALID_VALUE;
+    if (!err && ((unsigned int)internalformat != format || !pixel_bytes(format, type)))
+        err = GL_INVALID_OPERATION;
+    if (err) {
+        ctx_error(ctx, err);
+        return GLES_OK;
+    }
+    int64_t need = texture_image_bytes(ctx, width, height, format, type);
+    if (pixels && nbytes >= 0 && need > nbytes)
+        return ctx_message(ctx, GLES_EVALUE, "TexImage2D reads %lld bytes, the pixel data holds %lld",
+                           (long long)need, (long long)nbytes);
+    Texture *t = active_unit(ctx)->bound;
+    TexImage *li = &t->level[level];
+    if (!level_alloc(li, width, height)) {
+        ctx_error(ctx, GL_OUT_OF_MEMORY);
+        return GLES_EMEMORY;
+    }
+    t->level_format[level] = format;
+    if (level == 0) {
+        t->format = format;
+        t->paletted = 0;
+    }
+    if (pixels) {
+        int bpp = pixel_bytes(format, type);
+        int64_t stride = unpack_stride(ctx, width, bpp);
+        for (int y = 0; y < height; y++)
+            for (int x = 0; x < width; x++)
+                li->texels[(size_t)y * width + x] =
+                    unpack_pixel(format, type, (const uint8_t *)pixels + y * stride + (int64_t)x * bpp);
+    }
+    image_changed(ctx, t, level);
+    return GLES_OK;
+}
+
+int gles_TexSubImage2D(GlesContext *ctx, unsigned int target, int level, int xoffset, int yoffset, int width,
+                       int height, unsigned int format, unsigned int type, const void *pixels, int64_t nbytes)
+{
+    if (target != GL_TEXTURE_2D || !is_base_format(format)
+        || (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT_5_6_5 && type != GL_UNSIGNED_SHORT_4_4_4_4
+            && type != GL_UNSIGNED_SHORT_5_5_5_1)) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return GLES_OK;
+    }
+    Texture *t = active_unit(ctx)->bound;
+    if (level < 0 || level > max_level_of_size() || width < 0 || height < 0) {
+        ctx_error(ctx, GL_INVALID_VALUE);
+        return GLES_OK;
+    }
+    TexImage *li = &t->level[level];
+    if (!li->texels && !(li->width == 0 || li->height == 0)) {
+        ctx_error(ctx, GL_INVALID_OPERATION);
+        return GLES_OK;
+    }
+    if (xoffset < 0 || yoffset < 0 || (int64_t)xoffset + width > li->width || (int64_t)yoffset + height > li->height) {
+        ctx_error(ctx, GL_INVALID_VALUE);
+        return GLES_OK;
+    }
+    if (t->paletted || !pixel_bytes(format, type) || format != t->level_format[level]) {
+        ctx_error(ctx, GL_INVALID_OPERATION);
+        return GLES_OK;
+    }
+    if (!width || !height || !pixels)
+        return GLES_OK;
+    int64_t need = texture_image_bytes(ctx, width, height, format, type);
+    if (nbytes >= 0 && need > nbytes)
+        return ctx_message(ctx, GLES_EVALUE, "TexSubImage2D reads %lld bytes, the pixel data holds %lld",
+                           (long long)need, (long long)nbytes);
+    int bpp = pixel_bytes(format, type);
+    int64_t stride = unpack_stride(ctx, width, bpp);
+    for (int y = 0; y < height; y++)
+        for (int x = 0; x < width; x++)
+            li->texels[(size_t)(yoffset + y) * li->width + (xoffset + x)] =
+                unpack_pixel(format, type, (const uint8_t *)pixels + y * stride + (int64_t)x * bpp);
+    image_changed(ctx, t, level);
+    return GLES_OK;
+}
+
+/* the framebuffer pixel at (x, y) as RGBA8888; outside the window 0 */
+static uint32_t framebuffer_texel(const GlesContext *ctx, int64_t x, int64_t y)
+{
+    if (x < 0 || y < 0 || x >= ctx->width || y >= ctx->height)
+        return 0;
+    size_t at = (size_t)y * (size_t)ctx->width + (size_t)x;
+    if (ctx->color_format == GLES_COLOR_RGB565) {
+        uint16_t v = ((uint16_t *)ctx->color)[at];
+        return pack(x5(v >> 11), x6((v >> 5) & 63), x5(v & 31), 255);
+    }
+    return ((uint32_t *)ctx->color)[at];
+}
+
+/* §3.7.2: the components kept for a base format copied from the framebuffer */
+static uint32_t as_base_format(uint32_t c, unsigned int format)
+{
+    uint32_t r = c & 0xFF, g = (c >> 8) & 0xFF, b = (c >> 16) & 0xFF, a = c >> 24;
+    switch (format) {
+    case GL_ALPHA: return pack(0, 0, 0, a);
+    case GL_LUMINANCE: return pack(r, r, r, 255);
+    case GL_LUMINANCE_ALPHA: return pack(r, r, r, a);
+    case GL_RGB: return pack(r, g, b, 255);
+    default: return c;
+    }
+}
+
+/* may a base format be copied from this framebuffer (it needs alpha bits for
+** ALPHA, LUMINANCE_ALPHA and RGBA) */
+static int copy_compatible(const GlesContext *ctx, unsigned int format)
+{
+    int has_alpha = ctx->color_format == GLES_COLOR_RGBA8888;
+    return has_alpha || !(format == GL_ALPHA || format == GL_LUMINANCE_ALPHA || format == GL_RGBA);
+}
+
+void gles_CopyTexImage2D(GlesContext *ctx, unsigned int target, int level, unsigned int internalformat, int x, int y,
+                         int width, int height, int border)
+{
+    if (target != GL_TEXTURE_2D) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    unsigned int err = check_image(level, width, height, border);
+    if (!err && !is_base_format(internalformat))
+        err = GL_INVALID_VALUE;
+    if (!err && !copy_compatible(ctx, internalformat))
+        err = GL_INVALID_OPERATION;
+    if (err) {
+        ctx_error(ctx, err);
+        return;
+    }
+    Texture *t = active_unit(ctx)->bound;
+    TexImage *li = &t->level[level];
+    size_t count = (size_t)width * (size_t)height;
+    uint32_t *tmp = count ? malloc(count * sizeof *tmp) : NULL;
+    if (count && !tmp) {
+        ctx_error(ctx, GL_OUT_OF_MEMORY);
+        return;
+    }
+    for (int j = 0; j < height; j++)
+        for (int i = 0; i < width; i++)
+            tmp[(size_t)j * width + i] = as_base_format(framebuffer_texel(ctx, (int64_t)x + i, (int64_t)y + j), internalformat);
+    free(li->texels);
+    li->texels = tmp;
+    li->width = width;
+    li->height = height;
+    t->level_format[level] = internalformat;
+    if (level == 0) {
+        t->format = internalformat;
+        t->paletted = 0;
+    }
+    image_changed(ctx, t, level);
+}
+
+void gles_CopyTexSubImage2D(GlesContext *ctx, unsigned int target, int level, int xoffset, int yoffset, int x, int y,
+                            int width, int height)
+{
+    if (target != GL_TEXTURE_2D) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    if (level < 0 || level > max_level_of_size() || width < 0 || height < 0) {
+        ctx_error(ctx, GL_INVALID_VALUE);
+        return;
+    }
+    Texture *t = active_unit(ctx)->bound;
+    TexImage *li = &t->level[level];
+    if (xoffset < 0 || yoffset < 0 || (int64_t)xoffset + width > li->width || (int64_t)yoffset + height > li->height) {
+        ctx_error(ctx, GL_INVALID_VALUE);
+        return;
+    }
+    if (t->paletted || !copy_compatible(ctx, t->level_format[level])) {
+        ctx_error(ctx, GL_INVALID_OPERATION);
+        return;
+    }
+    for (int j = 0; j < height; j++)
+        for (int i = 0; i < width; i++)
+            li->texels[(size_t)(yoffset + j) * li->width + (xoffset + i)] =
+                as_base_format(framebuffer_texel(ctx, (int64_t)x + i, (int64_t)y + j), t->level_format[level]);
+    if (width && height)
+        image_changed(ctx, t, level);
+}
+
+/* OES_compressed_paletted_texture: 16 or 256 palette entries, then 4- or
+** 8-bit indices for -level + 1 mip levels (4-bit: first texel in the high
+** nibble; each level starts on a byte) */
+typedef struct PaletteFormat {
+    unsigned int format;
+    int index_bits, entry_bytes;
+    unsigned int base;
+    unsigned int type;          /* how an entry unpacks */
+    unsigned int entry_format;
+} PaletteFormat;
+
+static const PaletteFormat palette_formats[10] = {
+    { GL_PALETTE4_RGB8_OES, 4, 3, GL_RGB, GL_UNSIGNED_BYTE, GL_RGB },
+    { GL_PALETTE4_RGBA8_OES, 4, 4, GL_RGBA, GL_UNSIGNED_BYTE, GL_RGBA },
+    { GL_PALETTE4_R5_G6_B5_OES, 4, 2, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, GL_RGB },
+    { GL_PALETTE4_RGBA4_OES, 4, 2, GL_RGBA, GL_UNSIGNED_SHORT_4_4_4_4, GL_RGBA },
+    { GL_PALETTE4_RGB5_A1_OES, 4, 2, GL_RGBA, GL_UNSIGNED_SHORT_5_5_5_1, GL_RGBA },
+    { GL_PALETTE8_RGB8_OES, 8, 3, GL_RGB, GL_UNSIGNED_BYTE, GL_RGB },
+    { GL_PALETTE8_RGBA8_OES, 8, 4, GL_RGBA, GL_UNSIGNED_BYTE, GL_RGBA },
+    { GL_PALETTE8_R5_G6_B5_OES, 8, 2, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, GL_RGB },
+    { GL_PALETTE8_RGBA4_OES, 8, 2, GL_RGBA, GL_UNSIGNED_SHORT_4_4_4_4, GL_RGBA },
+    { GL_PALETTE8_RGB5_A1_OES, 8, 2, GL_RGBA, GL_UNSIGNED_SHORT_5_5_5_1, GL_RGBA },
+};
+
+static const PaletteFormat *palette_format(unsigned int f)
+{
+    for (int i = 0; i < 10; i++)
+        if (palette_formats[i].format == f)
+            return &palette_formats[i];
+    return NULL;
+}
+
+int64_t texture_paletted_bytes(unsigned int internalformat, int levels, int width, int height)
+{
+    const PaletteFormat *pf = palette_format(internalformat);
+    if (!pf)
+        return -1;
+    int64_t bytes = (int64_t)(1 << pf->index_bits) * pf->entry_bytes;
+    int w = width, h = height;
+    for (int i = 0; i < levels; i++) {
+        bytes += ((int64_t)w * h * pf->index_bits + 7) / 8;
+        w = w > 1 ? w / 2 : 1;
+        h = h > 1 ? h / 2 : 1;
+    }
+    return bytes;
+}
+
+int gles_CompressedTexImage2D(GlesContext *ctx, unsigned int target, int level, unsigned int internalformat,
+                              int width, int height, int border, int image_size, const void *data, int64_t nbytes)
+{
+    const PaletteFormat *pf = palette_format(internalformat);
+    if (target != GL_TEXTURE_2D || !pf) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return GLES_OK;
+    }
+    int levels = -level + 1;
+    if (level > 0 || levels - 1 > max_level_of_size() || check_image(0, width, height, border)) {
+        ctx_error(ctx, GL_INVALID_VALUE);
+        return GLES_OK;
+    }
+    int64_t need = texture_paletted_bytes(internalformat, levels, width, height);
+    if (image_size < 0 || image_size != need) {
+        ctx_error(ctx, GL_INVALID_VALUE);
+        return GLES_OK;
+    }
+    if (!data || (nbytes >= 0 && nbytes < need))
+        return ctx_message(ctx, GLES_EVALUE, "CompressedTexImage2D reads %lld bytes, the data holds %lld",
+                           (long long)need, (long long)nbytes);
+    Texture *t = active_unit(ctx)->bound;
+    const uint8_t *p = data;
+    int entries = 1 << pf->index_bits;
+    uint32_t palette[256];
+    for (int i = 0; i < entries; i++)
+        palette[i] = unpack_pixel(pf->entry_format, pf->type, p + i * pf->entry_bytes);
+    const uint8_t *idx = p + entries * pf->entry_bytes;
+    int w = width, h = height;
+    for (int l = 0; l < levels; l++) {
+        TexImage *li = &t->level[l];
+        if (!level_alloc(li, w, h)) {
+            ctx_error(ctx, GL_OUT_OF_MEMORY);
+            return GLES_EMEMORY;
+        }
+        t->level_format[l] = pf->base;
+        int64_t n = (int64_t)w * h;
+        for (int64_t k = 0; k < n; k++) {
+            unsigned int ix = pf->index_bits == 8 ? idx[k] : ((k & 1) ? idx[k / 2] & 15 : idx[k / 2] >> 4);
+            li->texels[k] = palette[ix];
+        }
+        idx += (n * pf->index_bits + 7) / 8;
+        w = w > 1 ? w / 2 : 1;
+        h = h > 1 ? h / 2 : 1;
+    }
+    t->format = pf->base;
+    t->paletted = 1;
+    image_changed(ctx, t, levels == 1 ? 0 : 1);
+    return GLES_OK;
+}
+
+void gles_CompressedTexSubImage2D(GlesContext *ctx, unsigned int target, int level, int xoffset, int yoffset,
+                                  int width, int height, unsigned int format, int image_size, const void *data)
+{
+    (void)level; (void)xoffset; (void)yoffset; (void)width; (void)height; (void)image_size; (void)data;
+    if (target != GL_TEXTURE_2D || !palette_format(format)) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    /* OES_compressed_paletted_texture: sub-images of paletted textures are
+    ** not supported */
+    ctx_error(ctx, GL_INVALID_OPERATION);
+}
+
+/* {====================================================================
+** parameters */
+
+void gles_TexParameter(GlesContext *ctx, unsigned int target, unsigned int pname, const double *p, int vector)
+{
+    if (target != GL_TEXTURE_2D) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    Texture *t = active_unit(ctx)->bound;
+    unsigned int v = (unsigned int)dbl_to_i64(p[0], 0, UINT32_MAX);
+    switch (pname) {
+    case GL_TEXTURE_MIN_FILTER:
+        if (v != GL_NEAREST && v != GL_LINEAR && v != GL_NEAREST_MIPMAP_NEAREST && v != GL_LINEAR_MIPMAP_NEAREST
+            && v != GL_NEAREST_MIPMAP_LINEAR && v != GL_LINEAR_MIPMAP_LINEAR) {
+            ctx_error(ctx, GL_INVALID_ENUM);
+            return;
+        }
+        t->min_filter = v;
+        break;
+    case GL_TEXTURE_MAG_FILTER:
+        if (v != GL_NEAREST && v != GL_LINEAR) {
+            ctx_error(ctx, GL_INVALID_ENUM);
+            return;
+        }
+        t->mag_filter = v;
+        break;
+    case GL_TEXTURE_WRAP_S: case GL_TEXTURE_WRAP_T:
+        if (v != GL_REPEAT && v != GL_CLAMP_TO_EDGE && v != GL_MIRRORED_REPEAT_OES) {
+            ctx_error(ctx, GL_INVALID_ENUM);
+            return;
+        }
+        if (pname == GL_TEXTURE_WRAP_S)
+            t->wrap_s = v;
+        else
+            t->wrap_t = v;
+        break;
+    case GL_GENERATE_MIPMAP:
+        t->generate_mipmap = p[0] != 0.0;
+        break;
+    case GL_TEXTURE_CROP_RECT_OES:
+        if (!vector) {
+            ctx_error(ctx, GL_INVALID_ENUM);
+            return;
+        }
+        for (int i = 0; i < 4; i++)
+            t->crop[i] = (int)dbl_to_i64(p[i], INT32_MIN, INT32_MAX);
+        break;
+    default:
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    texture_complete(t);
+    ctx->dirty |= DIRTY_TEXTURE;
+}
+
+int gles_GetTexParameter(GlesContext *ctx, unsigned int target, unsigned int pname, double *out)
+{
+    if (target != GL_TEXTURE_2D) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return 0;
+    }
+    const Texture *t = active_unit(ctx)->bound;
+    switch (pname) {
+    case GL_TEXTURE_MIN_FILTER: out[0] = t->min_filter; return 1;
+    case GL_TEXTURE_MAG_FILTER: out[0] = t->mag_filter; return 1;
+    case GL_TEXTURE_WRAP_S: out[0] = t->wrap_s; return 1;
+    case GL_TEXTURE_WRAP_T: out[0] = t->wrap_t; return 1;
+    case GL_GENERATE_MIPMAP: out[0] = t->generate_mipmap; return 1;
+    case GL_TEXTURE_CROP_RECT_OES:
+        for (int i = 0; i < 4; i++)
+            out[i] = t->crop[i];
+        return 4;
+    default:
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return 0;
+    }
+}
+
+/* {====================================================================
+** environment parameters */
+
+static int is_combine_rgb(unsigned int f)
+{
+    return f == GL_REPLACE || f == GL_MODULATE || f == GL_ADD || f == GL_ADD_SIGNED || f == GL_INTERPOLATE
+        || f == GL_SUBTRACT || f == GL_DOT3_RGB || f == GL_DOT3_RGBA;
+}
+
+static int is_combine_alpha(unsigned int f)
+{
+    return f == GL_REPLACE || f == GL_MODULATE || f == GL_ADD || f == GL_ADD_SIGNED || f == GL_INTERPOLATE
+        || f == GL_SUBTRACT;
+}
+
+static int is_source(unsigned int s)
+{
+    /* OES_texture_env_crossbar adds TEXTUREn */
+    return s == GL_TEXTURE || s == GL_CONSTANT || s == GL_PRIMARY_COLOR || s == GL_PREVIOUS
+        || (s >= GL_TEXTURE0 && s < GL_TEXTURE0 + GLES_MAX_TEXTURE_UNITS);
+}
+
+void gles_TexEnv(GlesContext *ctx, unsigned int target, unsigned int pname, const double *p, int vector)
+{
+    TexUnit *tu = active_unit(ctx);
+    if (target == GL_POINT_SPRITE_OES) {
+        if (pname != GL_COORD_REPLACE_OES) {
+            ctx_error(ctx, GL_INVALID_ENUM);
+            return;
+        }
+        tu->coord_replace = p[0] != 0.0;
+        return;
+    }
+    if (target != GL_TEXTURE_ENV) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    unsigned int v = (unsigned int)dbl_to_i64(p[0], 0, UINT32_MAX);
+    switch (pname) {
+    case GL_TEXTURE_ENV_MODE:
+        if (v != GL_MODULATE && v != GL_DECAL && v != GL_BLEND && v != GL_ADD && v != GL_REPLACE && v != GL_COMBINE) {
+            ctx_error(ctx, GL_INVALID_ENUM);
+            return;
+        }
+        tu->env_mode = v;
+        break;
+    case GL_TEXTURE_ENV_COLOR:
+        if (!vector) {
+            ctx_error(ctx, GL_INVALID_ENUM);
+            return;
+        }
+        for (int i = 0; i < 4; i++) {
+            double c = !(p[i] > 0) ? 0.0 : (p[i] > 1 ? 1.0 : p[i]);
+            tu->env_color[i] = c;
+            tu->n_env_color[i] = num_from_double(c);
+        }
+        break;
+    case GL_COMBINE_RGB:
+        if (!is_combine_rgb(v)) {
+            ctx_error(ctx, GL_INVALID_ENUM);
+            return;
+        }
+        tu->combine_rgb = v;
+        break;
+    case GL_COMBINE_ALPHA:
+        if (!is_combine_alpha(v)) {
+            ctx_error(ctx, GL_INVALID_ENUM);
+            return;
+        }
+        tu->combine_alpha = v;
+        break;
+    case GL_SRC0_RGB: case GL_SRC1_RGB: case GL_SRC2_RGB:
+        if (!is_source(v)) {
+            ctx_error(ctx, GL_INVALID_ENUM);
+            return;
+        }
+        tu->src_rgb[pname - GL_SRC0_RGB] = v;
+        break;
+    case GL_SRC0_ALPHA: case GL_SRC1_ALPHA: case GL_SRC2_ALPHA:
+        if (!is_source(v)) {
+            ctx_error(ctx, GL_INVALID_ENUM);
+            return;
+        }
+        tu->src_alpha[pname - GL_SRC0_ALPHA] = v;
+        break;
+    case GL_OPERAND0_RGB: case GL_OPERAND1_RGB: case GL_OPERAND2_RGB:
+        if (v != GL_SRC_COLOR && v != GL_ONE_MINUS_SRC_COLOR && v != GL_SRC_ALPHA && v != GL_ONE_MINUS_SRC_ALPHA) {
+            ctx_error(ctx, GL_INVALID_ENUM);
+            return;
+        }
+        tu->op_rgb[pname - GL_OPERAND0_RGB] = v;
+        break;
+    case GL_OPERAND0_ALPHA: case GL_OPERAND1_ALPHA: case GL_OPERAND2_ALPHA:
+        if (v != GL_SRC_ALPHA && v != GL_ONE_MINUS_SRC_ALPHA) {
+            ctx_error(ctx, GL_INVALID_ENUM);
+            return;
+        }
+        tu->op_alpha[pname - GL_OPERAND0_ALPHA] = v;
+        break;
+    case GL_RGB_SCALE: case GL_ALPHA_SCALE:
+        if (p[0] != 1.0 && p[0] != 2.0 && p[0] != 4.0) {
+            ctx_error(ctx, GL_INVALID_VALUE);
+            return;
+        }
+        if (pname == GL_RGB_SCALE)
+            tu->rgb_scale = p[0];
+        else
+            tu->alpha_scale = p[0];
+        break;
+    default:
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    ctx->dirty |= DIRTY_TEXTURE;
+}
+
+int gles_GetTexEnv(GlesContext *ctx, unsigned int target, unsigned int pname, double *out)
+{
+    const TexUnit *tu = active_unit(ctx);
+    if (target == GL_POINT_SPRITE_OES && pname == GL_COORD_REPLACE_OES) {
+        out[0] = tu->coord_replace;
+        return 1;
+    }
+    if (target != GL_TEXTURE_ENV) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return 0;
+    }
+    switch (pname) {
+    case GL_TEXTURE_ENV_MODE: out[0] = tu->env_mode; return 1;
+    case GL_TEXTURE_ENV_COLOR:
+        for (int i = 0; i < 4; i++)
+            out[i] = tu->env_color[i];
+        return 4;
+    case GL_COMBINE_RGB: out[0] = tu->combine_rgb; return 1;
+    case GL_COMBINE_ALPHA: out[0] = tu->combine_alpha; return 1;
+    case GL_SRC0_RGB: case GL_SRC1_RGB: case GL_SRC2_RGB: out[0] = tu->src_rgb[pname - GL_SRC0_RGB]; return 1;
+    case GL_SRC0_ALPHA: case GL_SRC1_ALPHA: case GL_SRC2_ALPHA: out[0] = tu->src_alpha[pname - GL_SRC0_ALPHA]; return 1;
+    case GL_OPERAND0_RGB: case GL_OPERAND1_RGB: case GL_OPERAND2_RGB: out[0] = tu->op_rgb[pname - GL_OPERAND0_RGB]; return 1;
+    case GL_OPERAND0_ALPHA: case GL_OPERAND1_ALPHA: case GL_OPERAND2_ALPHA:
+        out[0] = tu->op_alpha[pname - GL_OPERAND0_ALPHA];
+        return 1;
+    case GL_RGB_SCALE: out[0] = tu->rgb_scale; return 1;
+    case GL_ALPHA_SCALE: out[0] = tu->alpha_scale; return 1;
+    default:
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return 0;
+    }
+}
+
+int texture_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)
+{
+    *kind = GLES_KIND_INT;
+    switch (pname) {
+    case GL_MAX_TEXTURE_SIZE: out[0] = GLES_MAX_TEXTURE_SIZE; return 1;
+    case GL_TEXTURE_BINDING_2D: out[0] = active_unit(ctx)->bound->name; return 1;
+    case GL_NUM_COMPRESSED_TEXTURE_FORMATS: out[0] = 10; return 1;
+    case GL_COMPRESSED_TEXTURE_FORMATS:
+        *kind = GLES_KIND_ENUM;
+        for (int i = 0; i < 10; i++)
+            out[i] = palette_formats[i].format;
+        return 10;
+    default: return 0;
+    }
+}
+
+/* {====================================================================
+** sampling */
+
+int texture_needs_lod(const Texture *tex)
+{
+    return needs_mipmaps(tex->min_filter) || tex->min_filter != tex->mag_filter;
+}
+
+/* wrap a texel index into [0, n) */
+static int wrap_index(int64_t i, int n, unsigned int mode)
+{
+    switch (mode) {
+    case GL_REPEAT: {
+        int64_t r = i % n;
+        return (int)(r < 0 ? r + n : r);
+    }
+    case GL_MIRRORED_REPEAT_OES: {
+        int64_t period = 2 * (int64_t)n, r = i % period;
+        if (r < 0)
+            r += period;
+        return (int)(r < n ? r : period - 1 - r);
+    }
+    default: /* GL_CLAMP_TO_EDGE */
+        return (int)(i < 0 ? 0 : (i >= n ? n - 1 : i));
+    }
+}
+
+/* the coordinate reduced before scaling: REPEAT keeps the fraction, the
+** mirror folds into [0, 2), CLAMP_TO_EDGE leaves it (indices clamp) */
+static TEXC reduce_coord(TEXC s, unsigned int mode)
+{
+    if (mode == GL_REPEAT)
+        return s - texc_floor(s);
+    if (mode == GL_MIRRORED_REPEAT_OES)
+        return s - 2 * texc_floor(s / 2);   /* [0, 2): indices mirror past 1 */
+    /* clamp far values so scaling by the size cannot overflow */
+    if (s < -TEXC_ONE)
+        return -TEXC_ONE;
+    if (s > 2 * TEXC_ONE)
+        return 2 * TEXC_ONE;
+    return s;
+}
+
+static void texel(const TexImage *li, int i, int j, FRAGV out[4], const FRAGV *unorm)
+{
+    uint32_t c = li->texels[(size_t)j * li->width + i];
+    out[0] = unorm[c & 0xFF];
+    out[1] = unorm[(c >> 8) & 0xFF];
+    out[2] = unorm[(c >> 16) & 0xFF];
+    out[3] = unorm[c >> 24];
+}
+
+static void sample_level(const Texture *t, int level, unsigned int filter, TEXC s, TEXC tc, FRAGV out[4],
+                         const FRAGV *unorm)
+{
+    const TexImage *li = &t->level[level];
+    int w = li->width, h = li->height;
+    TEXC u = texc_scale(reduce_coord(s, t->wrap_s), w);
+    TEXC v = texc_scale(reduce_coord(tc, t->wrap_t), h);
+    if (filter == GL_NEAREST) {
+        /* §3.7.7: i = floor(u), wrapped (CLAMP_TO_EDGE clamps to [0, n-1]) */
+        texel(li, wrap_index(texc_ifloor(u), w, t->wrap_s), wrap_index(texc_ifloor(v), h, t->wrap_t), out, unorm);
+        return;
+    }
+    TEXC uu = u - TEXC_HALF, vv = v - TEXC_HALF;
+    int64_t i0 = texc_ifloor(uu), j0 = texc_ifloor(vv);
+    TEXW a = texc_frac_weight(uu), b = texc_frac_weight(vv);
+    int x0 = wrap_index(i0, w, t->wrap_s), x1 = wrap_index(i0 + 1, w, t->wrap_s);
+    int y0 = wrap_index(j0, h, t->wrap_t), y1 = wrap_index(j0 + 1, h, t->wrap_t);
+    FRAGV c00[4], c10[4], c01[4], c11[4];
+    texel(li, x0, y0, c00, unorm);
+    texel(li, x1, y0, c10, unorm);
+    texel(li, x0, y1, c01, unorm);
+    texel(li, x1, y1, c11, unorm);
+    for (int k = 0; k < 4; k++)
+        out[k] = frag_bilerp(c00[k], c10[k], c01[k], c11[k], a, b);
+}
+
+void texture_sample(const Texture *t, const TexCoord *c, const TexCoord *dx, const TexCoord *dy, FRAGV out[4],
+                         const FRAGV *unorm)
+{
+    if (!dx || !dy) {
+        sample_level(t, 0, t->mag_filter, c->s, c->t, out, unorm);
+        return;
+    }
+    /* rho in texel units of level 0: the largest of the four derivatives */
+    int w = t->level[0].width, h = t->level[0].height;
+    TEXC d1 = texc_abs(texc_scale(dx->s - c->s, w)), d2 = texc_abs(texc_scale(dy->s - c->s, w));
+    TEXC d3 = texc_abs(texc_scale(dx->t - c->t, h)), d4 = texc_abs(texc_scale(dy->t - c->t, h));
+    TEXC rho = d1;
+    if (d2 > rho) rho = d2;
+    if (d3 > rho) rho = d3;
+    if (d4 > rho) rho = d4;
+    LODV lambda = lod_log2(rho);
+    unsigned int minf = t->min_filter;
+    /* §3.7.8: c = 0.5 when MAG is LINEAR and MIN is NEAREST_MIPMAP_* */
+    LODV cshift = (t->mag_filter == GL_LINEAR && (minf == GL_NEAREST_MIPMAP_NEAREST || minf == GL_NEAREST_MIPMAP_LINEAR))
+                      ? lod_from_ratio(1, 2) : 0;
+    if (lambda <= cshift) {
+        sample_level(t, 0, t->mag_filter, c->s, c->t, out, unorm);
+        return;
+    }
+    unsigned int filter = (minf == GL_NEAREST || minf == GL_NEAREST_MIPMAP_NEAREST || minf == GL_NEAREST_MIPMAP_LINEAR)
+                              ? GL_NEAREST : GL_LINEAR;
+    if (minf == GL_NEAREST || minf == GL_LINEAR) {
+        sample_level(t, 0, filter, c->s, c->t, out, unorm);
+        return;
+    }
+    int q = t->max_level;
+    if (minf == GL_NEAREST_MIPMAP_NEAREST || minf == GL_LINEAR_MIPMAP_NEAREST) {
+        /* d = ceil(lambda + 1/2) - 1 for lambda > 1/2, else 0 */
+        int64_t d = 0;
+        if (lambda > lod_from_ratio(1, 2)) {
+            LODV x = lambda + lod_from_ratio(1, 2);
+            int64_t fl = lod_ifloor(x);
+            d = (lod_frac(x) != 0 ? fl + 1 : fl) - 1;
+        }
+        if (d > q)
+            d = q;
+        sample_level(t, (int)d, filter, c->s, c->t, out, unorm);
+        return;
+    }
+    /* *_MIPMAP_LINEAR: levels floor(lambda) and the next, by frac(lambda) */
+    int64_t d1i = lod_ifloor(lambda);
+    if (d1i >= q) {
+        sample_level(t, q, filter, c->s, c->t, out, unorm);
+        return;
+    }
+    FRAGV f = lod_frac(lambda);
+    FRAGV t1[4], t2[4];
+    sample_level(t, (int)d1i, filter, c->s, c->t, t1, unorm);
+    sample_level(t, (int)d1i + 1, filter, c->s, c->t, t2, unorm);
+    for (int k = 0; k < 4; k++)
+        out[k] = t1[k] + frag_mul(f, t2[k] - t1[k]);
+}
+
+/* {====================================================================
+** the texture environment (§3.7.12, Tables 3.15-3.19) */
+
+static FRAGV one_minus(FRAGV v) { return FRAG_ONE - v; }
+
+/* a COMBINE argument for component k (0..2 rgb, 3 alpha) */
+static FRAGV combine_arg(const GlesContext *ctx, const TexUnit *tu, int u, int n, int k, const FRAGV cf[4],
+                         FRAGV ct[][4], const FRAGV cp[4], FRAGV cc[4])
+{
+    unsigned int src = k < 3 ? tu->src_rgb[n] : tu->src_alpha[n];
+    unsigned int op = k < 3 ? tu->op_rgb[n] : tu->op_alpha[n];
+    const FRAGV *c;
+    switch (src) {
+    case GL_TEXTURE: c = ct[u]; break;
+    case GL_CONSTANT: c = cc; break;
+    case GL_PRIMARY_COLOR: c = cf; break;
+    case GL_PREVIOUS: c = cp; break;
+    default: c = ct[src - GL_TEXTURE0]; break; /* crossbar */
+    }
+    (void)ctx;
+    switch (op) {
+    case GL_SRC_COLOR: return c[k];
+    case GL_ONE_MINUS_SRC_COLOR: return one_minus(c[k]);
+    case GL_SRC_ALPHA: return c[3];
+    default: return one_minus(c[3]); /* GL_ONE_MINUS_SRC_ALPHA */
+    }
+}
+
+static FRAGV combine_fn(unsigned int fn, FRAGV a0, FRAGV a1, FRAGV a2)
+{
+    switch (fn) {
+    case GL_REPLACE: return a0;
+    case GL_MODULATE: return frag_mul(a0, a1);
+    case GL_ADD: return a0 + a1;
+    case GL_ADD_SIGNED: return a0 + a1 - FRAG_ONE / 2;
+    case GL_INTERPOLATE: return frag_mul(a0, a2) + frag_mul(a1, one_minus(a2));
+    default: return a0 - a1; /* GL_SUBTRACT */
+    }
+}
+
+static FRAGV scale_clamp(FRAGV v, double scale)
+{
+    FRAGV r = scale == 4.0 ? 4 * v : (scale == 2.0 ? 2 * v : v);
+    return frag_clamp01(r);
+}
+
+void texture_env(const GlesContext *ctx, int u, const FRAGV cf[4], FRAGV ct[][4], FRAGV cp[4])
+{
+    const TexUnit *tu = &ctx->units[u];
+    const FRAGV *cs = ct[u];
+    unsigned int fmt = tu->bound->format;
+    FRAGV cc[4];
+    for (int i = 0; i < 4; i++)
+        cc[i] = frag_from_num(tu->n_env_color[i]);
+    FRAGV out[4];
+    switch (tu->env_mode) {
+    case GL_REPLACE:
+        for (int k = 0; k < 3; k++)
+            out[k] = fmt == GL_ALPHA ? cp[k] : cs[k];
+        out[3] = (fmt == GL_LUMINANCE || fmt == GL_RGB) ? cp[3] : cs[3];
+        break;
+    case GL_MODULATE:
+        for (int k = 0; k < 3; k++)
+            out[k] = fmt == GL_ALPHA ? cp[k] : frag_mul(cp[k], cs[k]);
+        out[3] = (fmt == GL_LUMINANCE || fmt == GL_RGB) ? cp[3] : frag_mul(cp[3], cs[3]);
+        break;
+    case GL_DECAL:
+        /* defined for RGB and RGBA; the others keep the fragment */
+        for (int k = 0; k < 3; k++) {
+            if (fmt == GL_RGB)
+                out[k] = cs[k];
+            else if (fmt == GL_RGBA)
+                out[k] = frag_mul(cp[k], one_minus(cs[3])) + frag_mul(cs[k], cs[3]);
+            else
+                out[k] = cp[k];
+        }
+        out[3] = cp[3];
+        break;
+    case GL_BLEND:
+        for (int k = 0; k < 3; k++)
+            out[k] = fmt == GL_ALPHA ? cp[k] : frag_mul(cp[k], one_minus(cs[k])) + frag_mul(cc[k], cs[k]);
+        out[3] = (fmt == GL_LUMINANCE || fmt == GL_RGB) ? cp[3] : frag_mul(cp[3], cs[3]);
+        break;
+    case GL_ADD:
+        for (int k = 0; k < 3; k++)
+            out[k] = fmt == GL_ALPHA ? cp[k] : frag_clamp01(cp[k] + cs[k]);
+        out[3] = (fmt == GL_LUMINANCE || fmt == GL_RGB) ? cp[3] : frag_mul(cp[3], cs[3]);
+        break;
+    default: { /* GL_COMBINE */
+        FRAGV a[3][4];
+        for (int n = 0; n < 3; n++)
+            for (int k = 0; k < 4; k++)
+                a[n][k] = combine_arg(ctx, tu, u, n, k, cf, ct, cp, cc);
+        if (tu->combine_rgb == GL_DOT3_RGB || tu->combine_rgb == GL_DOT3_RGBA) {
+            /* 4 * sum((a0 - 1/2)(a1 - 1/2)) into every channel */
+            FRAGV d = 0;
+            for (int k = 0; k < 3; k++)
+                d += frag_mul(a[0][k] - FRAG_ONE / 2, a[1][k] - FRAG_ONE / 2);
+            d = scale_clamp(4 * d, tu->rgb_scale);
+            out[0] = out[1] = out[2] = d;
+            out[3] = tu->combine_rgb == GL_DOT3_RGBA
+                         ? d : scale_clamp(combine_fn(tu->combine_alpha, a[0][3], a[1][3], a[2][3]), tu->alpha_scale);
+        } else {
+            for (int k = 0; k < 3; k++)
+                out[k] = scale_clamp(combine_fn(tu->combine_rgb, a[0][k], a[1][k], a[2][k]), tu->rgb_scale);
+            out[3] = scale_clamp(combine_fn(tu->combine_alpha, a[0][3], a[1][3], a[2][3]), tu->alpha_scale);
+        }
+        break;
+    }
+    }
+    for (int k = 0; k < 4; k++)
+        cp[k] = out[k];
+}

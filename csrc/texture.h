@@ -1,0 +1,34 @@
+/*
+** texture.h -- texture objects, images and sampling (ES 1.1 §3.7).
+*/
+#ifndef GLES_TEXTURE_H
+#define GLES_TEXTURE_H
+
+#include "state.h"
+
+void texture_init(GlesContext *ctx);
+void texture_free(GlesContext *ctx);
+int texture_get(GlesContext *ctx, unsigned int pname, double *out, int *kind);
+/* the unit's bound texture when it is enabled and complete, else NULL */
+const Texture *texture_active(const GlesContext *ctx, int unit);
+/* derived per-draw texture state: enabled units and their samplers */
+void texture_validate(GlesContext *ctx);
+
+/* texture coordinates of a pixel: s, t after the division by q */
+typedef struct TexCoord {
+    TEXC s, t;
+} TexCoord;
+
+/* the filtered texel for texture coordinates at a pixel and, when the
+** filter needs a level of detail, at its right and upper neighbours
+** (dx, dy may be NULL otherwise); out is RGBA in FRAGV; unorm is the
+** context's table of c / 255 */
+void texture_sample(const Texture *tex, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
+                    FRAGV out[4], const FRAGV *unorm);
+/* does sampling this texture need the neighbours' coordinates */
+int texture_needs_lod(const Texture *tex);
+/* the texture environment of unit u: cp is the previous colour (in and
+** out), cf the primary (fragment) colour, ct[u] every unit's texel */
+void texture_env(const GlesContext *ctx, int u, const FRAGV cf[4], FRAGV ct[][4], FRAGV cp[4]);
+
+#endif
