@@ -874,19 +874,15 @@ int texture_needs_lod(const Texture *tex)
     return needs_mipmaps(tex->min_filter) || tex->min_filter != tex->mag_filter;
 }
 
-/* wrap a texel index into [0, n) */
-static int wrap_index(int64_t i, int n, unsigned int mode)
+/* wrap a texel index into [0, n); sizes are powers of two (§3.7.1) */
+static inline int wrap_index(int64_t i, int n, unsigned int mode)
 {
     switch (mode) {
-    case GL_REPEAT: {
-        int64_t r = i % n;
-        return (int)(r < 0 ? r + n : r);
-    }
+    case GL_REPEAT:
+        return (int)(i & (n - 1));
     case GL_MIRRORED_REPEAT_OES: {
-        int64_t period = 2 * (int64_t)n, r = i % period;
-        if (r < 0)
-            r += period;
-        return (int)(r < n ? r : period - 1 - r);
+        int64_t r = i & (2 * (int64_t)n - 1);
+        return (int)(r < n ? r : 2 * (int64_t)n - 1 - r);
     }
     default: /* GL_CLAMP_TO_EDGE */
         return (int)(i < 0 ? 0 : (i >= n ? n - 1 : i));
