@@ -29,9 +29,9 @@ static void lerp_vertex(Vertex *r, const Vertex *p, const Vertex *q, CLIPT t, in
     for (int i = 0; i < 4; i++) {
         r->clip[i] = num_lerp(p->clip[i], q->clip[i], t);
         r->eye[i] = num_lerp(p->eye[i], q->eye[i], t);
-        r->color[i] = num_lerp(p->color[i], q->color[i], t);
+        r->color[i] = frag_lerp_clip(p->color[i], q->color[i], t);
         /* back colours exist only with two-sided lighting */
-        r->color_back[i] = two_sided ? num_lerp(p->color_back[i], q->color_back[i], t) : NUM_ZERO;
+        r->color_back[i] = two_sided ? frag_lerp_clip(p->color_back[i], q->color_back[i], t) : 0;
     }
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
         for (int i = 0; i < 4; i++)

@@ -60,7 +60,7 @@ double gles_num_eval(int op, double a, double b)
     case GLES_NUMOP_SIN_DEG: num_sincos_deg(x, &s, &c); return num_to_double(s);
     case GLES_NUMOP_COS_DEG: num_sincos_deg(x, &s, &c); return num_to_double(c);
     case GLES_NUMOP_TO_UNORM8: return num_to_unorm(x, 255);
-    case GLES_NUMOP_POW01: return num_to_double(num_pow01(x, y));
+    case GLES_NUMOP_POW01: return num_to_double(num_pow(x, y));
     case GLES_NUMOP_FROM_UNORM8: return num_to_double(num_from_unorm((uint32_t)dbl_to_i64(a, 0, 255), 255));
     default: return 0.0;
     }
@@ -133,7 +133,8 @@ GlesContext *gles_context_create(int width, int height, int color_format,
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
         ctx->cur_tex_n[u][3] = NUM_ONE;
 
-    ctx->enable_bits = 1u << cap_index(GL_DITHER); /* §4.1.8: dither starts enabled */
+    /* §4.1.8 and Table 6.x: dither and multisample start enabled */
+    ctx->enable_bits = (1u << cap_index(GL_DITHER)) | (1u << cap_index(GL_MULTISAMPLE));
     light_init(ctx);
     fragment_init(ctx);
     fog_init(ctx);

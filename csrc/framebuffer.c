@@ -36,9 +36,9 @@ int gles_Clear(GlesContext *ctx, unsigned int mask)
         return GLES_OK;
     size_t w = (size_t)ctx->width;
     if (mask & GL_COLOR_BUFFER_BIT) {
-        NUM c[4];
+        FRAGV c[4];
         for (int i = 0; i < 4; i++)
-            c[i] = num_from_double(ctx->clear_color[i]);
+            c[i] = frag_from_double(ctx->clear_color[i]);
         uint32_t packed = span_pack_color(ctx, c);
         uint32_t keep = 0;
         if (ctx->color_format == GLES_COLOR_RGB565) {
@@ -56,7 +56,7 @@ int gles_Clear(GlesContext *ctx, unsigned int mask)
                         FRAGV t = fragment_dither_threshold(x, y);
                         v = 0;
                         for (int i = 0; i < 3; i++)
-                            v |= frag_to_unorm(frag_from_num_clamped(c[i]), max565[i], t) << shift565[i];
+                            v |= frag_to_unorm(frag_clamp01(c[i]), max565[i], t) << shift565[i];
                     }
                     row[x] = (uint16_t)((row[x] & keep) | (v & ~keep));
                 }

@@ -328,7 +328,9 @@ static void light_side(const GlesContext *ctx, const NUM n[3], const NUM v[3], c
             const NUM *ka = l->n_attenuation;
             if (ka[1] != NUM_ZERO || ka[2] != NUM_ZERO || ka[0] != NUM_ONE) {
                 NUM d = length3(vp);
-                NUM den = num_add(ka[0], num_add(num_mul(ka[1], d), num_mul(ka[2], num_mul(d, d))));
+                /* k2 d first, then times d: d^2 alone overflows 16.16 beyond
+                ** d = 181 while k2 d^2 usually does not */
+                NUM den = num_add(ka[0], num_add(num_mul(ka[1], d), num_mul(num_mul(ka[2], d), d)));
                 att = num_recip(den);
             }
         } else {
@@ -342,7 +344,7 @@ static void light_side(const GlesContext *ctx, const NUM n[3], const NUM v[3], c
             NUM cosang = num_neg(num_dot(vp, 1, l->unit_spot_direction, 1, 3)); /* -VP . s */
             if (cosang < l->n_cos_cutoff)
                 continue; /* outside the cone: contributes nothing */
-            spot = num_pow01(cosang, l->n_spot_exponent);
+            spot = num_pow(cosang, l->n_spot_exponent);
         }
         NUM scale = num_mul(att, spot);
         NUM ndotvp = num_dot(n, 1, vp, 1, 3);
@@ -357,7 +359,7 @@ static void light_side(const GlesContext *ctx, const NUM n[3], const NUM v[3], c
             if (num_normalize3(h)) {
                 NUM ndoth = num_dot(n, 1, h, 1, 3);
                 if (ndoth > NUM_ZERO) {
-                    NUM sp = num_pow01(ndoth, m->n_shininess);
+                    NUM sp = num_pow(ndoth, m->n_shininess);
                     for (int k = 0; k < 3; k++)
                         term[k] = num_add(term[k], num_mul(sp, num_mul(m->n_specular[k], l->n_specular[k])));
                 }

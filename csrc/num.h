@@ -400,7 +400,7 @@ static inline void num_sincos_deg(NUM deg, NUM *s, NUM *co)
 /* }==================================================================== */
 
 /* {==================================================================== */
-/* Powers for lighting: x^s with x in [0,1], s in [0,128] (specular and spot
+/* Powers for lighting: x^s with x >= 0, s in [0,128] (specular and spot
 ** exponents). The fixed build computes exp2(s * log2(x)) in 64-bit integers
 ** with 30 fraction bits: table plus a short series for each, so the
 ** error stays near 2^-16 whatever the exponent (a table lookup alone would
@@ -425,10 +425,13 @@ static inline int64_t fx_log2(int32_t x)
     return (int64_t)(b - 17) * one + fx_log2_tab[i] + ((ln1p * inv_ln2) >> 30);
 }
 
-/* 2^y for y <= 0 in 0.30, as 16.16: the table at the top 8 fraction bits,
-** then e^(r ln 2) = 1 + x + x^2/2 + x^3/6 for the rest (x < 2^-8) */
-static inline NUM fx_exp2_neg(int64_t y)
+/* 2^y for y in 0.30, as 16.16 (saturating at 2^15): the table at the top
+** 8 fraction bits, then e^(r ln 2) = 1 + x + x^2/2 + x^3/6 for the rest
+** (x < 2^-8) */
+static inline NUM fx_exp2(int64_t y)
 {
+    if (y >= ((int64_t)15 << 30))
+        return NUM_MAX;
     const int64_t ln2 = 744261118LL; /* ln 2 in 0.30 */
     if (y <= -((int64_t)20 << 30))
         return 0;                                   /* below 2^-17: rounds to 0 */
@@ -439,38 +442,40 @@ static inline NUM fx_exp2_neg(int64_t y)
     int64_t x2 = (x * x) >> 30, x3 = (x2 * x) >> 30;
     int64_t e = ((int64_t)1 << 30) + x + x2 / 2 + x3 / 6;
     int64_t r = (fx_exp2_tab[i] * e + ((int64_t)1 << 29)) >> 30;   /* 2.30 */
-    int sh = 14 + (int)(-ip);                       /* 2.30 -> 16.16, times 2^ip */
-    return (NUM)((r + ((int64_t)1 << (sh - 1))) >> sh);
+    int sh = 14 - (int)ip;                          /* 2.30 -> 16.16, times 2^ip */
+    if (sh <= 0)
+        return num_sat(r);
+    return num_sat((r + ((int64_t)1 << (sh - 1))) >> sh);
 }
 
-static inline NUM num_pow01(NUM x, NUM s)
+/* x^s for x >= 0 and s in [0, 128]; x > 1 occurs with unnormalised
+** normals, and saturates rather than wraps */
+static inline NUM num_pow(NUM x, NUM s)
 {
     if (s == 0)
         return NUM_ONE;
     if (x <= 0)
         return 0;
-    if (x >= NUM_ONE)
+    if (x == NUM_ONE)
         return NUM_ONE;
-    int64_t l = fx_log2(x);                         /* < 0, 0.30 */
+    int64_t l = fx_log2(x);                         /* 0.30 */
     int64_t p = (l * s) / 65536;                    /* 0.30, s in 16.16 */
-    return fx_exp2_neg(p);
+    return fx_exp2(p);
 }
 #else
-static inline NUM num_pow01(NUM x, NUM s)
+static inline NUM num_pow(NUM x, NUM s)
 {
     if (s == 0)
         return 1;
     if (!(x > 0))
         return 0;
-    if (x >= 1)
-        return 1;
     return NUM_POW(x, s);
 }
 #endif
 /* }==================================================================== */
 
 /* {==================================================================== */
-/* exp(-x) for x >= 0 (fog), through the same exp2 as num_pow01 */
+/* exp(-x) for x >= 0 (fog), through the same exp2 as num_pow */
 
 #if NUM_IS_FIXED
 static inline NUM num_exp_neg(NUM x)
@@ -479,7 +484,7 @@ static inline NUM num_exp_neg(NUM x)
         return NUM_ONE;
     /* -x * log2(e) in 0.30; log2(e) = 1.4426950408889634 as 2.30 */
     const int64_t log2e = 1549082005LL;
-    return fx_exp2_neg(-(((int64_t)x * log2e) >> 16));
+    return fx_exp2(-(((int64_t)x * log2e) >> 16));
 }
 #else
 static inline NUM num_exp_neg(NUM x)
@@ -816,6 +821,17 @@ static inline FRAGV frag_lerp3(NUM a0, NUM a1, NUM a2, WGT w0, WGT w1, WGT w2)
     int64_t acc = (int64_t)a0 * w0 + (int64_t)a1 * w1 + (int64_t)a2 * w2;   /* 46 fraction bits */
     return acc >= 0 ? (acc + 32768) >> 16 : -((-acc + 32768) >> 16);
 }
+
+/* the same for colours already in 0.30 (each within [0,1], so every term
+** stays below 2^60) */
+static inline FRAGV frag_lerp3f(FRAGV a0, FRAGV a1, FRAGV a2, WGT w0, WGT w1, WGT w2)
+{
+    int64_t acc = a0 * w0 + a1 * w1 + a2 * w2;                              /* 60 fraction bits */
+    return acc >= 0 ? (acc + ((int64_t)1 << 29)) >> 30 : -((-acc + ((int64_t)1 << 29)) >> 30);
+}
+
+/* a + (b - a) t for a clip parameter t in 0.30 */
+static inline FRAGV frag_lerp_clip(FRAGV a, FRAGV b, CLIPT t) { return a + (((b - a) * t + ((int64_t)1 << 29)) >> 30); }
 #else
 typedef NUM FRAGV;
 #define FRAG_ONE ((NUM)1)
@@ -847,6 +863,13 @@ static inline FRAGV frag_lerp3(NUM a0, NUM a1, NUM a2, WGT w0, WGT w1, WGT w2)
 {
     return a0 * w0 + a1 * w1 + a2 * w2;
 }
+
+static inline FRAGV frag_lerp3f(FRAGV a0, FRAGV a1, FRAGV a2, WGT w0, WGT w1, WGT w2)
+{
+    return a0 * w0 + a1 * w1 + a2 * w2;
+}
+
+static inline FRAGV frag_lerp_clip(FRAGV a, FRAGV b, CLIPT t) { return a + (b - a) * t; }
 #endif
 /* }==================================================================== */
 

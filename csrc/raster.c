@@ -134,14 +134,14 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
     int use_back = back && ctx->two_sided;
     for (int i = 0; i < 3; i++)
         t.col[i] = use_back ? t.v[i]->color_back : t.v[i]->color;
-    const NUM *pc = use_back ? pv->color_back : pv->color;
+    const FRAGV *pc = use_back ? pv->color_back : pv->color;
     for (int k = 0; k < 4; k++)
         t.flat[k] = pc[k];
     t.flat_packed = span_pack_color(ctx, t.flat);
     /* smooth shading of three equal colours is that colour: use the
     ** constant-colour span, which every path agrees on */
     t.smooth = ctx->shade_model == GL_SMOOTH
-            && (memcmp(t.col[0], t.col[1], 4 * sizeof(NUM)) | memcmp(t.col[0], t.col[2], 4 * sizeof(NUM)));
+            && (memcmp(t.col[0], t.col[1], 4 * sizeof(FRAGV)) | memcmp(t.col[0], t.col[2], 4 * sizeof(FRAGV)));
     t.tex_projective = 0;
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
         if ((ctx->tex_units_on & (1u << u)) && (a->tex[u][3] != NUM_ONE || b->tex[u][3] != NUM_ONE || c->tex[u][3] != NUM_ONE))

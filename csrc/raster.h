@@ -13,10 +13,10 @@ struct TriSetup {
     ** pixel indices; positive inside, zero on the edge */
     int64_t ea[3], eb[3], ec[3];
     WgtSetup wgt;
-    const NUM *col[3];      /* each vertex's colour for the visible face */
+    const FRAGV *col[3];    /* each vertex's colour for the visible face */
     int smooth;             /* colours vary over the triangle */
     unsigned int tex_projective;  /* bit per unit whose q varies (divide by q) */
-    NUM flat[4];            /* colour of the provoking vertex */
+    FRAGV flat[4];          /* colour of the provoking vertex */
     uint32_t flat_packed;   /* the same in the framebuffer's format */
 };
 
@@ -31,6 +31,6 @@ int64_t raster_area2(const Vertex *a, const Vertex *b, const Vertex *c);
 /* span.c: choose the span function for the current state */
 void span_choose(GlesContext *ctx);
 /* pack a [0,1] colour into the framebuffer's format */
-uint32_t span_pack_color(const GlesContext *ctx, const NUM *c);
+uint32_t span_pack_color(const GlesContext *ctx, const FRAGV *c);
 
 #endif

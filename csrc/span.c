@@ -11,11 +11,11 @@
 #include "fragment.h"
 #include "texture.h"
 
-uint32_t span_pack_color(const GlesContext *ctx, const NUM *c)
+uint32_t span_pack_color(const GlesContext *ctx, const FRAGV *c)
 {
     FRAGV f[4];
     for (int i = 0; i < 4; i++)
-        f[i] = frag_from_num_clamped(c[i]);
+        f[i] = frag_clamp01(c[i]);
     if (ctx->color_format == GLES_COLOR_RGB565)
         return (fragment_channel(f[0], 5, 0, 0) << 11) | (fragment_channel(f[1], 6, 0, 0) << 5)
              | fragment_channel(f[2], 5, 0, 0);
@@ -68,8 +68,7 @@ static void span_generic(GlesContext *ctx, const TriSetup *t, int y, int x0, int
         wgt_persp(&t->wgt, e, p);
         FRAGV c[4];
         for (int i = 0; i < 4; i++)
-            c[i] = smooth ? frag_lerp3(t->col[0][i], t->col[1][i], t->col[2][i], p[0], p[1], p[2])
-                          : frag_from_num(t->flat[i]);
+            c[i] = smooth ? frag_lerp3f(t->col[0][i], t->col[1][i], t->col[2][i], p[0], p[1], p[2]) : t->flat[i];
         if (units) {
             FRAGV cf[4], ct[GLES_MAX_TEXTURE_UNITS][4];
             for (int i = 0; i < 4; i++)

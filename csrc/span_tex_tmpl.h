@@ -39,8 +39,7 @@ static void SPAN_NAME(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
         wgt_persp(&t->wgt, e, p);
         FRAGV c[4], cf[4], ct[GLES_MAX_TEXTURE_UNITS][4];
         for (int i = 0; i < 4; i++) {
-            c[i] = smooth ? frag_lerp3(t->col[0][i], t->col[1][i], t->col[2][i], p[0], p[1], p[2])
-                          : frag_from_num(t->flat[i]);
+            c[i] = smooth ? frag_lerp3f(t->col[0][i], t->col[1][i], t->col[2][i], p[0], p[1], p[2]) : t->flat[i];
             cf[i] = c[i] = frag_clamp01(c[i]);
         }
         TexCoord tc;

@@ -24,7 +24,7 @@ static void SPAN_NAME(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
     for (int i = 0; i < 3; i++)
         e[i] = t->ea[i] * x0 + t->eb[i] * y + t->ec[i];
     const Vertex *v0 = t->v[0], *v1 = t->v[1], *v2 = t->v[2];
-    const NUM *c0 = t->col[0], *c1 = t->col[1], *c2 = t->col[2];
+    const FRAGV *c0 = t->col[0], *c1 = t->col[1], *c2 = t->col[2];
     (void)v0; (void)v1; (void)v2; (void)c0; (void)c1; (void)c2;
 #endif
 #if !SPAN_SMOOTH && !SPAN_BLEND
@@ -34,12 +34,12 @@ static void SPAN_NAME(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
     /* a constant source: its blend term is the same for the whole span */
     FRAGV sterm[4];
 #if SPAN_BLEND == 1
-    const FRAGV sa = frag_from_num_clamped(t->flat[3]), da = FRAG_ONE - sa;
+    const FRAGV sa = frag_clamp01(t->flat[3]), da = FRAG_ONE - sa;
     for (int i = 0; i < 4; i++)
-        sterm[i] = frag_mul(frag_from_num_clamped(t->flat[i]), sa);
+        sterm[i] = frag_mul(frag_clamp01(t->flat[i]), sa);
 #else
     for (int i = 0; i < 4; i++)
-        sterm[i] = frag_from_num_clamped(t->flat[i]);
+        sterm[i] = frag_clamp01(t->flat[i]);
 #endif
 #endif
     (void)ctx;
@@ -58,7 +58,7 @@ static void SPAN_NAME(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
             wgt_persp(&t->wgt, e, p);
             FRAGV c[4];
             for (int i = 0; i < 4; i++)
-                c[i] = frag_lerp3(c0[i], c1[i], c2[i], p[0], p[1], p[2]);
+                c[i] = frag_lerp3f(c0[i], c1[i], c2[i], p[0], p[1], p[2]);
 #endif
 #if SPAN_BLEND
             uint32_t d = dst[k], out = 0;

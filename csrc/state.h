@@ -144,8 +144,8 @@ typedef struct TexUnit {
 typedef struct Vertex {
     NUM clip[4];
     NUM eye[4];
-    NUM color[4];           /* front colour (lit, or the vertex colour) */
-    NUM color_back[4];      /* back colour, with two-sided lighting */
+    FRAGV color[4];         /* front colour (lit, or the vertex colour), in [0,1] */
+    FRAGV color_back[4];    /* back colour, with two-sided lighting */
     NUM tex[GLES_MAX_TEXTURE_UNITS][4];
     NUM point_size;
     NUM fog;                /* fog factor f, or |z_eye| when fog is per fragment */

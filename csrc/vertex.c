@@ -162,10 +162,24 @@ void vertex_attribs(GlesContext *ctx, int64_t index, Vertex *v)
 {
     const ArrayState *c = &ctx->arrays[ARR_COLOR];
     NUM color[4];
-    if (c->enabled)
+    FRAGV exact[4];     /* the colour at fragment precision, when it is known exactly */
+    if (c->enabled) {
         array_fetch(c, array_base(c), index, 1, color);
-    else
+        if (c->type == GL_UNSIGNED_BYTE) {
+            /* c / 255 to 2^-31, not to 16.16: 8-bit colours blend exactly */
+            uint8_t ub[4];
+            memcpy(ub, array_base(c) + index * c->step, 4);
+            for (int i = 0; i < 4; i++)
+                exact[i] = ctx->texel_unorm8[ub[i]];
+        } else {
+            for (int i = 0; i < 4; i++)
+                exact[i] = frag_from_num(color[i]);
+        }
+    } else {
         memcpy(color, ctx->cur_color_n, sizeof color);
+        for (int i = 0; i < 4; i++)
+            exact[i] = frag_from_double(ctx->cur_color[i]);
+    }
     if (ctx->lighting) {
         const ArrayState *na = &ctx->arrays[ARR_NORMAL];
         NUM normal[3];
@@ -173,17 +187,24 @@ void vertex_attribs(GlesContext *ctx, int64_t index, Vertex *v)
             array_fetch(na, array_base(na), index, 1, normal);
         else
             memcpy(normal, ctx->cur_normal_n, sizeof normal);
+        NUM front[4], back[4];
+        NUM *pb = ctx->two_sided ? back : NULL;
         if (ctx->matrix_palette) {
             NUM eye_n[3];
             palette_normal(ctx, index, normal, eye_n);
-            light_vertex(ctx, v->eye, eye_n, 1, color, v->color, ctx->two_sided ? v->color_back : NULL);
+            light_vertex(ctx, v->eye, eye_n, 1, color, front, pb);
         } else {
-            light_vertex(ctx, v->eye, normal, 0, color, v->color, ctx->two_sided ? v->color_back : NULL);
+            light_vertex(ctx, v->eye, normal, 0, color, front, pb);
+        }
+        for (int i = 0; i < 4; i++) {
+            v->color[i] = frag_from_num(front[i]);
+            if (pb)
+                v->color_back[i] = frag_from_num(back[i]);
         }
     } else {
         /* §2.12.6: colours are clamped to [0,1] */
         for (int i = 0; i < 4; i++)
-            v->color[i] = num_clamp01(color[i]);
+            v->color[i] = frag_clamp01(exact[i]);
     }
     if (ctx->fog)
         v->fog = fog_vertex_value(ctx, v->eye);
