@@ -101,10 +101,9 @@ static void span_generic(GlesContext *ctx, const TriSetup *t, int y, int x0, int
             FRAGV f = ctx->fog_per_fragment
                           ? frag_from_num(fog_factor(ctx, wgt_lerp3(v0->fog, v1->fog, v2->fog, p[0], p[1], p[2])))
                           : frag_clamp01(frag_lerp3(v0->fog, v1->fog, v2->fog, p[0], p[1], p[2]));
-            for (int i = 0; i < 3; i++) { /* C = f C + (1 - f) C_fog */
-                FRAGV fc = frag_from_num(ctx->n_fog_color[i]);
-                c[i] = fc + frag_mul(f, frag_clamp01(c[i]) - fc);
-            }
+            /* C = f C + (1 - f) C_fog, in that form so f = 1 and f = 0 are exact */
+            for (int i = 0; i < 3; i++)
+                c[i] = frag_mul(f, frag_clamp01(c[i])) + frag_mul(FRAG_ONE - f, frag_from_num(ctx->n_fog_color[i]));
         }
         if (ctx->alpha_test && !fragment_alpha_pass(ctx, c[3]))
             continue;
