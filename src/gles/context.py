@@ -11,7 +11,7 @@ import numpy as np
 from . import _binding
 from . import constants as C
 from ._png import write_png
-from .gl import GLBase, GLCommon, _set_current
+from .gl import CheckedGLCommon, CheckedGLCommonLite, GLBase, GLCommon, _current, _set_current
 
 PROFILES = {"common": 0, "common-lite": 1}
 COLOR_FORMATS = {"rgba8888": 0, "rgb565": 1}
@@ -74,10 +74,34 @@ class Context:
         self.profile, self.numeric, self.color = profile, numeric, color
         self.depth_bits, self.stencil_bits = depth, stencil
         self.gl: GLBase = GLCommon(self) if profile == "common" else GLBase(self)
+        self._check_errors = False
 
     def __repr__(self) -> str:
         return (f"<gles.Context {self.width}x{self.height} {self.profile} {self.numeric} "
                 f"{self.color} depth={self.depth_bits} stencil={self.stencil_bits}>")
+
+    @property
+    def check_errors(self) -> bool:
+        """When True, every command raises gles.GLError at the call that
+        records a GL error (naming the function and the error), as PyOpenGL's
+        error checking does; the error is consumed. Off by default."""
+        return self._check_errors
+
+    @check_errors.setter
+    def check_errors(self, on: bool) -> None:
+        on = bool(on)
+        if on == self._check_errors:
+            return
+        was_current = getattr(_current, "gl", None) is self.gl
+        keep = self.gl._keep
+        if self.profile == "common":
+            self.gl = CheckedGLCommon(self) if on else GLCommon(self)
+        else:
+            self.gl = CheckedGLCommonLite(self) if on else GLBase(self)
+        self.gl._keep = keep          # arrays the core still points at
+        self._check_errors = on
+        if was_current:
+            _set_current(self.gl)
 
     def make_current(self) -> Context:
         """Make this the calling thread's current context (for ``gles.gl``)."""

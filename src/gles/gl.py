@@ -84,6 +84,11 @@ def _index(v: Any) -> int:
     return operator.index(v)
 
 
+def _norm_to_int(v: float) -> int:
+    """§6.1.2: a value in [-1, 1] to the whole int range, ((2^32 - 1) v - 1) / 2."""
+    return int(np.clip(np.floor(((2.0**32 - 1) * v - 1) / 2 + 0.5), -(2**31), 2**31 - 1))
+
+
 def _fixed(v: Any) -> float:
     """A 16.16 argument as the exact real it stands for."""
     return operator.index(v) * _FIX
@@ -131,7 +136,8 @@ class GLBase:
         want = _DTYPES.get(gltype) if gltype is not None else None
         if isinstance(data, np.ndarray):
             if want is not None and data.dtype != want:
-                raise TypeError(f"{what}: array dtype {data.dtype} does not match {C.NAMES.get(gltype)} ({want})")
+                raise TypeError(
+                    f"{what}: array dtype {data.dtype} does not match {C.NAMES.get(gltype)} ({want})")
             arr = np.ascontiguousarray(data)
         elif isinstance(data, (bytes, bytearray, memoryview)):
             arr = np.frombuffer(data, dtype=np.uint8)
@@ -174,7 +180,7 @@ class GLBase:
         out = []
         for v in vals:
             if kind == _KIND_NORM:
-                out.append(int(np.clip(np.floor(((2.0**32 - 1) * v - 1) / 2 + 0.5), -(2**31), 2**31 - 1)))
+                out.append(_norm_to_int(v))
             else:
                 out.append(int(np.floor(v + 0.5)))
         return self._result(out, np.int32)
@@ -593,7 +599,8 @@ class GLBase:
         negative level gives -level + 1 mip levels in one image."""
         ptr, nbytes, keep = self._pixels(data, "glCompressedTexImage2D")
         if nbytes >= 0 and _index(imageSize) > nbytes:
-            raise ValueError(f"glCompressedTexImage2D: imageSize is {imageSize} but the data holds {nbytes} bytes")
+            raise ValueError(
+                f"glCompressedTexImage2D: imageSize is {imageSize} but the data holds {nbytes} bytes")
         with self._lock:
             st = self._lib.gles_CompressedTexImage2D(self._p, target, level, internalformat, width, height,
                                                      border, imageSize, ptr, nbytes)
@@ -671,7 +678,7 @@ class GLBase:
         if form == "x":
             conv = [int(np.floor(v * 65536.0 + 0.5)) if real else int(v) for v in vals]
         elif int(pname) == C.GL_TEXTURE_ENV_COLOR:
-            conv = [int(np.clip(np.floor(((2.0**32 - 1) * v - 1) / 2 + 0.5), -(2**31), 2**31 - 1)) for v in vals]
+            conv = [_norm_to_int(v) for v in vals]
         else:
             conv = [int(np.floor(v + 0.5)) for v in vals]
         return self._result(conv, np.int32)
@@ -982,7 +989,8 @@ class GLCommon(GLBase):
         with self._lock:
             self._lib.gles_Rotate(self._p, angle, x, y, z)
 
-    def glFrustumf(self, left: float, right: float, bottom: float, top: float, near: float, far: float) -> None:
+    def glFrustumf(self, left: float, right: float, bottom: float, top: float, near: float,
+                   far: float) -> None:
         with self._lock:
             self._lib.gles_Frustum(self._p, left, right, bottom, top, near, far)
 
@@ -1016,6 +1024,29 @@ def _missing(name: str, stage: str) -> Any:
     command.__name__ = name
     command.__doc__ = f"Not implemented yet: part of {stage}."
     return command
+
+
+def _checked_class(base: type) -> type:
+    """A subclass of `base` whose every command raises GLError on a GL error,
+    like PyOpenGL's error checking (glGetError itself is left alone)."""
+
+    def wrap(name: str, fn: Any) -> Any:
+        def command(self: GLBase, *args: Any) -> Any:
+            result = fn(self, *args)
+            err = self._lib.gles_GetError(self._p)
+            if err:
+                from .errors import GLError
+
+                raise GLError(err, name, args)
+            return result
+
+        command.__name__ = name
+        command.__doc__ = fn.__doc__
+        return command
+
+    attrs = {n: wrap(n, getattr(base, n)) for n in dir(base)
+             if n.startswith("gl") and n != "glGetError" and callable(getattr(base, n))}
+    return type(f"Checked{base.__name__}", (base,), attrs)
 
 
 MISSING: dict[str, str] = {}
@@ -1075,3 +1106,5 @@ for _n in COMMON_COMMANDS:
 __all__ = list(C.__all__) + COMMON_COMMANDS + ["current_gl", "GLBase", "GLCommon", "GLCommonLite"]
 
 GLCommonLite = GLBase
+CheckedGLCommon = _checked_class(GLCommon)
+CheckedGLCommonLite = _checked_class(GLBase)
