@@ -55,6 +55,14 @@ KNOWN_DEVIATIONS: tuple[Deviation, ...] = (
     Deviation("MatrixStack.texture", "mesa-", None, None,
               "Mesa: glActiveTexture accepts TEXTURE8..TEXTURE191 although MAX_TEXTURE_UNITS is 8; "
               "§2.10.2 wants INVALID_ENUM (docs/conformance.md, Mesa results)"),
+    Deviation("APFunc", "mesa-", None, None,
+              "Mesa: the alpha reference is not clamped to [0, 1]; §4.1.4 (docs/conformance.md)"),
+    Deviation("APFunc.precision", "mesa-softpipe", None, None,
+              "softpipe: alpha compared as floats, not at 8 bits; §4.1.4 (docs/conformance.md)"),
+    Deviation("Fog", "mesa-", None, None,
+              "Mesa: FOG_COLOR is not clamped to [0, 1] when specified; §3.8 (docs/conformance.md)"),
+    Deviation("LogicOp", "mesa-softpipe", "rgb565", None,
+              "softpipe: logic op on 8-bit values, then truncated to 5/6 bits; §4.1.9 (docs/conformance.md)"),
     Deviation("AmbLight.errors", "mesa-", None, None,
               "Mesa: scalar glLight/glLightModel accept vector pnames; §2.12.2 wants INVALID_ENUM "
               "(docs/conformance.md, Mesa results)"),

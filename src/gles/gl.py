@@ -182,7 +182,8 @@ class GLBase:
             if kind == _KIND_NORM:
                 out.append(_norm_to_int(v))
             else:
-                out.append(int(np.floor(v + 0.5)))
+                # unsigned masks (0xFFFFFFFF) clamp to the GLint range
+                out.append(int(np.clip(np.floor(v + 0.5), -(2**31), 2**31 - 1)))
         return self._result(out, np.int32)
 
     def glGetFixedv(self, pname: int) -> Any:
