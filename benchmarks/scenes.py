@@ -220,3 +220,197 @@ SCENES = {s.name: s for s in (
           small_draws_setup, small_draws_frame,
           lambda w, h: min(0.9, 0.5 * N_DRAWS * 64 / (w * h))),
 )}
+
+
+# {================================================================
+# texturing scenes
+
+def _texture_rgba(gl: Any, img: np.ndarray, min_filter: int, mag_filter: int, *, mipmap: bool = False) -> int:
+    """A texture object from uint8 RGBA (h, w, 4) on the active unit; GENERATE_MIPMAP when asked."""
+    name = int(gl.glGenTextures(1))
+    gl.glBindTexture(C.GL_TEXTURE_2D, name)
+    if mipmap:
+        gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_GENERATE_MIPMAP, 1)
+    gl.glPixelStorei(C.GL_UNPACK_ALIGNMENT, 1)
+    h, w = img.shape[:2]
+    gl.glTexImage2D(C.GL_TEXTURE_2D, 0, C.GL_RGBA, w, h, 0, C.GL_RGBA, C.GL_UNSIGNED_BYTE,
+                    np.ascontiguousarray(img, dtype=np.uint8))
+    gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MIN_FILTER, min_filter)
+    gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MAG_FILTER, mag_filter)
+    gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_WRAP_S, C.GL_REPEAT)
+    gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_WRAP_T, C.GL_REPEAT)
+    return name
+
+
+def _noise_texture(size: int, seed: int) -> np.ndarray:
+    """A smooth-ish random RGBA image (sums of sines), alpha 255."""
+    rng = np.random.default_rng(seed)
+    y, x = np.mgrid[0:size, 0:size] * (2 * np.pi / size)
+    img = np.zeros((size, size, 4))
+    for c in range(3):
+        for _ in range(4):
+            fx, fy = rng.integers(1, 9, size=2)
+            img[..., c] += np.sin(fx * x + fy * y + rng.uniform(0, 6.3))
+    img[..., :3] = (img[..., :3] - img[..., :3].min()) / np.ptp(img[..., :3]) * 255
+    img[..., 3] = 255
+    return img.astype(np.uint8)
+
+
+# textured_quads: bilinear texture fetch + MODULATE + SRC_ALPHA blending, full screen
+
+N_TEXTURED_QUADS = 10
+
+
+def textured_quads_setup(gl: Any, w: int, h: int) -> Any:
+    _common(gl)
+    _ortho(gl, w, h)
+    gl.glDisable(C.GL_DEPTH_TEST)
+    gl.glShadeModel(C.GL_FLAT)
+    _texture_rgba(gl, _noise_texture(256, 3), C.GL_LINEAR, C.GL_LINEAR)
+    gl.glEnable(C.GL_TEXTURE_2D)
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_MODULATE)
+    gl.glEnable(C.GL_BLEND)
+    gl.glBlendFunc(C.GL_SRC_ALPHA, C.GL_ONE_MINUS_SRC_ALPHA)
+    quad = np.array([0, 0, w, 0, 0, h, w, h], dtype=np.float32)
+    # each quad shows the texture at its own offset and scale (magnified about 2x to 3x)
+    rng = np.random.default_rng(4)
+    coords = []
+    for _ in range(N_TEXTURED_QUADS):
+        s0, t0 = rng.uniform(0, 1, size=2)
+        k = rng.uniform(0.35, 0.55)
+        coords.append(np.array([s0, t0, s0 + k * w / 256, t0, s0, t0 + k * h / 256, s0 + k * w / 256,
+                                t0 + k * h / 256], dtype=np.float32))
+    gl.glVertexPointer(2, C.GL_FLOAT, 0, quad)
+    gl.glEnableClientState(C.GL_TEXTURE_COORD_ARRAY)
+    colors = [tuple(int(c) for c in rng.integers(120, 256, size=3)) for _ in range(N_TEXTURED_QUADS)]
+    return {"quad": quad, "coords": coords, "colors": colors}
+
+
+def textured_quads_frame(gl: Any, state: Any) -> None:
+    gl.glClear(C.GL_COLOR_BUFFER_BIT)
+    for tc, (r, g, b) in zip(state["coords"], state["colors"]):
+        gl.glTexCoordPointer(2, C.GL_FLOAT, 0, tc)
+        gl.glColor4ub(r, g, b, 110)
+        gl.glDrawArrays(C.GL_TRIANGLE_STRIP, 0, 4)
+
+
+# ground_plane: perspective, trilinear mipmaps (LINEAR_MIPMAP_LINEAR), many repeats, depth test
+
+def ground_plane_setup(gl: Any, w: int, h: int) -> Any:
+    _common(gl)
+    gl.glEnable(C.GL_DEPTH_TEST)
+    gl.glDepthFunc(C.GL_LESS)
+    gl.glClearDepthf(1.0)
+    img = _noise_texture(256, 5)
+    chk = ((np.indices((256, 256)) // 32).sum(axis=0) % 2).astype(bool)
+    img[chk, :3] //= 2                      # a checker under the noise, so minification shows
+    _texture_rgba(gl, img, C.GL_LINEAR_MIPMAP_LINEAR, C.GL_LINEAR, mipmap=True)
+    gl.glEnable(C.GL_TEXTURE_2D)
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_REPLACE)
+    gl.glViewport(0, 0, w, h)
+    gl.glMatrixMode(C.GL_PROJECTION)
+    gl.glLoadIdentity()
+    aspect = w / h
+    gl.glFrustumf(-0.5 * aspect, 0.5 * aspect, -0.5, 0.5, 1.0, 400.0)
+    gl.glMatrixMode(C.GL_MODELVIEW)
+    gl.glLoadIdentity()
+    gl.glTranslatef(0.0, -1.5, 0.0)
+    gl.glRotatef(12.0, 0.0, 1.0, 0.0)
+    # a 4x4-quad grid on y = 0 from z = -1 to z = -300, 300 units wide: 150 repeats to the horizon
+    n = 5
+    xs = np.linspace(-150.0, 150.0, n)
+    zs = np.linspace(-1.0, -300.0, n)
+    x, z = np.meshgrid(xs, zs)
+    verts = np.stack([x, np.zeros_like(x), z], axis=-1).astype(np.float32).reshape(-1, 3)
+    tc = np.stack([x / 2.0, -z / 2.0], axis=-1).astype(np.float32).reshape(-1, 2)
+    i = np.arange(n - 1)
+    a = (i[:, None] * n + i[None, :]).reshape(-1)
+    idx = np.ascontiguousarray(np.stack([a, a + 1, a + n, a + 1, a + n + 1, a + n], -1).reshape(-1),
+                               dtype=np.uint16)
+    gl.glVertexPointer(3, C.GL_FLOAT, 0, verts)
+    gl.glEnableClientState(C.GL_TEXTURE_COORD_ARRAY)
+    gl.glTexCoordPointer(2, C.GL_FLOAT, 0, tc)
+    return {"verts": verts, "tc": tc, "indices": idx}
+
+
+def ground_plane_frame(gl: Any, state: Any) -> None:
+    gl.glClear(C.GL_COLOR_BUFFER_BIT | C.GL_DEPTH_BUFFER_BIT)
+    idx = state["indices"]
+    gl.glDrawElements(C.GL_TRIANGLES, len(idx), C.GL_UNSIGNED_SHORT, idx)
+
+
+# dot3: unit 0 COMBINE DOT3_RGB of a normal map with per-vertex light vectors (biased, in the
+# primary colour), unit 1 MODULATE by a base texture
+
+DOT3_GRID = 17
+
+
+def dot3_setup(gl: Any, w: int, h: int) -> Any:
+    _common(gl)
+    _ortho(gl, w, h)
+    gl.glDisable(C.GL_DEPTH_TEST)
+    gl.glShadeModel(C.GL_SMOOTH)
+    size = 128
+    y, x = np.mgrid[0:size, 0:size] * (2 * np.pi / size)
+    hx = 0.6 * np.cos(4 * x) * np.sin(3 * y)          # a bumpy height field's slopes
+    hy = 0.6 * np.sin(4 * x) * np.cos(3 * y)
+    n = np.stack([-hx, -hy, np.ones_like(hx)], axis=-1)
+    n /= np.linalg.norm(n, axis=-1, keepdims=True)
+    normal_map = np.concatenate([np.round((n * 0.5 + 0.5) * 255), np.full((size, size, 1), 255)], axis=-1)
+    gl.glActiveTexture(C.GL_TEXTURE0)
+    _texture_rgba(gl, normal_map.astype(np.uint8), C.GL_LINEAR, C.GL_LINEAR)
+    gl.glEnable(C.GL_TEXTURE_2D)
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_COMBINE)
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_COMBINE_RGB, C.GL_DOT3_RGB)
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_SRC0_RGB, C.GL_TEXTURE)
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_OPERAND0_RGB, C.GL_SRC_COLOR)
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_SRC1_RGB, C.GL_PRIMARY_COLOR)
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_OPERAND1_RGB, C.GL_SRC_COLOR)
+    gl.glActiveTexture(C.GL_TEXTURE1)
+    _texture_rgba(gl, _noise_texture(128, 7), C.GL_LINEAR, C.GL_LINEAR)
+    gl.glEnable(C.GL_TEXTURE_2D)
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_MODULATE)
+    gl.glActiveTexture(C.GL_TEXTURE0)
+    # a grid over the window; the light vector from each vertex to a point light, biased into colour
+    g = DOT3_GRID
+    gx, gy = np.meshgrid(np.linspace(0, w, g), np.linspace(0, h, g))
+    verts = np.stack([gx, gy], axis=-1).astype(np.float32).reshape(-1, 2)
+    light = np.array([0.3 * w, 0.7 * h, 0.35 * max(w, h)])
+    lv = np.stack([light[0] - gx, light[1] - gy, np.full_like(gx, light[2])], axis=-1)
+    lv /= np.linalg.norm(lv, axis=-1, keepdims=True)
+    colors = np.concatenate([np.round((lv * 0.5 + 0.5) * 255), np.full((g, g, 1), 255)], axis=-1)
+    colors = np.ascontiguousarray(colors.reshape(-1, 4), dtype=np.uint8)
+    tc0 = np.ascontiguousarray(verts / 128.0 * 1.5, dtype=np.float32)      # the bumps, tiled
+    tc1 = np.ascontiguousarray(verts / 256.0, dtype=np.float32)
+    i = np.arange(g - 1)
+    a = (i[:, None] * g + i[None, :]).reshape(-1)
+    idx = np.ascontiguousarray(np.stack([a, a + 1, a + g, a + 1, a + g + 1, a + g], -1).reshape(-1),
+                               dtype=np.uint16)
+    gl.glVertexPointer(2, C.GL_FLOAT, 0, verts)
+    gl.glEnableClientState(C.GL_COLOR_ARRAY)
+    gl.glColorPointer(4, C.GL_UNSIGNED_BYTE, 0, colors)
+    for unit, tc in ((0, tc0), (1, tc1)):
+        gl.glClientActiveTexture(C.GL_TEXTURE0 + unit)
+        gl.glEnableClientState(C.GL_TEXTURE_COORD_ARRAY)
+        gl.glTexCoordPointer(2, C.GL_FLOAT, 0, tc)
+    gl.glClientActiveTexture(C.GL_TEXTURE0)
+    return {"verts": verts, "colors": colors, "tc": (tc0, tc1), "indices": idx}
+
+
+def dot3_frame(gl: Any, state: Any) -> None:
+    gl.glClear(C.GL_COLOR_BUFFER_BIT)
+    idx = state["indices"]
+    gl.glDrawElements(C.GL_TRIANGLES, len(idx), C.GL_UNSIGNED_SHORT, idx)
+
+
+SCENES.update({s.name: s for s in (
+    Scene("textured_quads", f"{N_TEXTURED_QUADS} full-screen quads, 256x256 RGBA texture, bilinear (LINEAR), "
+          "MODULATE, blended SRC_ALPHA, ONE_MINUS_SRC_ALPHA",
+          textured_quads_setup, textured_quads_frame, lambda w, h: 0.99),
+    Scene("ground_plane", "a perspective ground plane to the horizon, 256x256 texture with generated "
+          "mipmaps, LINEAR_MIPMAP_LINEAR, 150 repeats, depth test",
+          ground_plane_setup, ground_plane_frame, lambda w, h: 0.45),
+    Scene("dot3", f"a {DOT3_GRID}x{DOT3_GRID} full-screen grid, unit 0 COMBINE DOT3_RGB of a normal map and "
+          "per-vertex light vectors, unit 1 MODULATE by a base texture, both bilinear",
+          dot3_setup, dot3_frame, lambda w, h: 0.99),
+)})

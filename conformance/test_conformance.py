@@ -63,6 +63,11 @@ KNOWN_DEVIATIONS: tuple[Deviation, ...] = (
               "Mesa: FOG_COLOR is not clamped to [0, 1] when specified; §3.8 (docs/conformance.md)"),
     Deviation("LogicOp", "mesa-softpipe", "rgb565", None,
               "softpipe: logic op on 8-bit values, then truncated to 5/6 bits; §4.1.9 (docs/conformance.md)"),
+    Deviation("MipSelect.magswitch", "mesa-", None, None,
+              "Mesa: the c = 0.5 magnification switch is ignored; §3.7.8 (docs/conformance.md)"),
+    Deviation("TexPalet.errors", "mesa-", None, None,
+              "Mesa: CompressedTexSubImage2D on a paletted texture gives INVALID_VALUE; §3.7.4 wants "
+              "INVALID_OPERATION (docs/conformance.md)"),
     Deviation("AmbLight.errors", "mesa-", None, None,
               "Mesa: scalar glLight/glLightModel accept vector pnames; §2.12.2 wants INVALID_ENUM "
               "(docs/conformance.md, Mesa results)"),

@@ -919,6 +919,7 @@ static inline TEXC texc_floor(TEXC s) { return (s >> 32) * TEXC_ONE; }
 static inline int64_t texc_ifloor(TEXC s) { return s >> 32; }
 static inline TEXC texc_from_num(NUM a) { return (int64_t)a * 65536; }
 static inline TEXC texc_abs(TEXC a) { return a < 0 ? -a : a; }
+static inline TEXC texc_clamp(TEXC a, TEXC lim) { return a < -lim ? -lim : (a > lim ? lim : a); }
 /* a * n for an integer n (texture size): exact */
 static inline TEXC texc_scale(TEXC a, int n) { return a * n; }
 /* bilinear weights: the fraction of a texel coordinate in 16 bits */
@@ -964,6 +965,7 @@ static inline TEXC texc_floor(TEXC s) { return NUM_FLOOR(s); }
 static inline int64_t texc_ifloor(TEXC s) { return dbl_to_i64(floor((double)s), -((int64_t)1 << 40), (int64_t)1 << 40); }
 static inline TEXC texc_from_num(NUM a) { return a; }
 static inline TEXC texc_abs(TEXC a) { return a < 0 ? -a : a; }
+static inline TEXC texc_clamp(TEXC a, TEXC lim) { return a < -lim ? -lim : (a > lim ? lim : a); }
 static inline TEXC texc_scale(TEXC a, int n) { return a * (NUM)n; }
 typedef NUM TEXW;
 static inline TEXW texc_frac_weight(TEXC u) { return u - NUM_FLOOR(u); }

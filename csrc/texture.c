@@ -947,8 +947,17 @@ void texture_sample(const Texture *t, const TexCoord *c, const TexCoord *dx, con
         sample_level(t, 0, t->mag_filter, c->s, c->t, out, unorm);
         return;
     }
-    /* rho in texel units of level 0: the largest of the four derivatives */
+    /* rho in texel units of level 0: the largest of the four derivatives;
+    ** coordinates are first limited to +-2^18 so that differences scaled
+    ** by the size stay in range even where q -> 0 saturated them */
     int w = t->level[0].width, h = t->level[0].height;
+    const TEXC lim = texc_scale(TEXC_ONE, 1 << 18);
+    TexCoord cc = { texc_clamp(c->s, lim), texc_clamp(c->t, lim) };
+    TexCoord cx = { texc_clamp(dx->s, lim), texc_clamp(dx->t, lim) };
+    TexCoord cy = { texc_clamp(dy->s, lim), texc_clamp(dy->t, lim) };
+    c = &cc;
+    dx = &cx;
+    dy = &cy;
     TEXC d1 = texc_abs(texc_scale(dx->s - c->s, w)), d2 = texc_abs(texc_scale(dy->s - c->s, w));
     TEXC d3 = texc_abs(texc_scale(dx->t - c->t, h)), d4 = texc_abs(texc_scale(dy->t - c->t, h));
     TEXC rho = d1;
@@ -1096,10 +1105,12 @@ void texture_env(const GlesContext *ctx, int u, const FRAGV cf[4], FRAGV ct[][4]
             FRAGV d = 0;
             for (int k = 0; k < 3; k++)
                 d += frag_mul(a[0][k] - FRAG_ONE / 2, a[1][k] - FRAG_ONE / 2);
-            d = scale_clamp(4 * d, tu->rgb_scale);
-            out[0] = out[1] = out[2] = d;
-            out[3] = tu->combine_rgb == GL_DOT3_RGBA
-                         ? d : scale_clamp(combine_fn(tu->combine_alpha, a[0][3], a[1][3], a[2][3]), tu->alpha_scale);
+            FRAGV raw = 4 * d;
+            out[0] = out[1] = out[2] = scale_clamp(raw, tu->rgb_scale);
+            /* §3.7.12: the alpha result takes ALPHA_SCALE, also for DOT3_RGBA */
+            out[3] = scale_clamp(tu->combine_rgb == GL_DOT3_RGBA
+                                     ? raw : combine_fn(tu->combine_alpha, a[0][3], a[1][3], a[2][3]),
+                                 tu->alpha_scale);
         } else {
             for (int k = 0; k < 3; k++)
                 out[k] = scale_clamp(combine_fn(tu->combine_rgb, a[0][k], a[1][k], a[2][k]), tu->rgb_scale);

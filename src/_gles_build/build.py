@@ -45,7 +45,9 @@ def _make(kind: str) -> FFI:
         f"gles._core_{kind}",
         f'#define GLES_NUM_{kind.upper()} 1\n#include "gles_core.h"\n#include "core_all.c"\n',
         include_dirs=[str(CSRC)],
-        extra_compile_args=["-std=c11", "-Wall", "-Wextra", *opt, *extra],
+        # -fno-wrapv undoes CPython's -fwrapv: signed overflow stays undefined,
+        # so the sanitizer build reports it instead of wrapping silently
+        extra_compile_args=["-std=c11", "-Wall", "-Wextra", "-fno-wrapv", *opt, *extra],
         extra_link_args=[f for f in extra if f.startswith("-fsanitize")],
         depends=sorted(str(p) for p in CSRC.glob("*.[ch]")),
     )

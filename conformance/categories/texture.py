@@ -1,0 +1,994 @@
+"""Texturing: images, mipmaps, wrap modes, paletted textures, environments.
+
+Categories Mip, MipLevels, MipLin, MipSelect, MultiTex, TexDecal, TexPalet,
+TextureEdgeClamp, TexCombine, CopyTex and PackedPixels (spec sections 3.6.2,
+3.7 and OES_compressed_paletted_texture, OES_texture_env_crossbar,
+OES_texture_mirrored_repeat).
+
+Every test uses Common-Lite commands only (x and i forms; GL_SHORT vertices,
+GL_FIXED / GL_SHORT / GL_BYTE texture coordinates), so it runs in both
+profiles. Quads are screen-aligned in window pixels (``t.ortho_pixels()``)
+with edges on pixel boundaries. Expected colours are the spec's formulas
+(§3.7.6 wrapping, equations 3.16-3.21, Tables 3.14-3.19) evaluated in float64
+at pixel centres; tolerances are the visual's.
+
+Level of detail: the spec lets f, the approximation of rho, lie anywhere in
+[max(mu, mv), mu + mv] (§3.7.7). The mipmap tests map t to a constant, so
+mv = 0 and every conforming f equals mu: lambda is pinned down. They still
+grant lambda a precision of 1/16 of a level where a result depends on its
+fraction (the spec gives none, and implementations carry lambda in a few
+fraction bits or through an approximate log2).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+
+from ..harness import TestContext, conformance_test
+
+ONE = 1 << 16
+VISUALS = ("rgba8888", "rgb565")
+LOD_PRECISION = 1.0 / 16
+
+
+# {============================================================
+# helpers: textures and quads
+
+
+def _fx(v: float) -> int:
+    return int(round(v * 65536))
+
+
+def _q16(v: float) -> float:
+    """The nearest 16.16 value (what a GL_FIXED coordinate holds)."""
+    return round(v * 65536) / 65536
+
+
+_SEL = {"RGBA": [0, 1, 2, 3], "RGB": [0, 1, 2], "LUMINANCE_ALPHA": [0, 3], "LUMINANCE": [0], "ALPHA": [3]}
+
+
+def _upload(t: TestContext, level: int, fmt: str, rgba_u8: np.ndarray) -> None:
+    """TexImage2D of uint8 RGBA (h, w, 4) as UNSIGNED_BYTE data of base format `fmt`."""
+    gl = t.gl
+    h, w = rgba_u8.shape[:2]
+    gl.glPixelStorei(gl.GL_UNPACK_ALIGNMENT, 1)
+    data = np.ascontiguousarray(rgba_u8[..., _SEL[fmt]], dtype=np.uint8)
+    f = getattr(gl, "GL_" + fmt)
+    gl.glTexImage2D(gl.GL_TEXTURE_2D, level, f, w, h, 0, f, gl.GL_UNSIGNED_BYTE, data)
+
+
+def _params(t: TestContext, minf: str = "NEAREST", magf: str = "NEAREST", wrap: str = "REPEAT") -> None:
+    gl = t.gl
+    gl.glTexParameteri(gl.GL_TEXTURE_2D, gl.GL_TEXTURE_MIN_FILTER, getattr(gl, "GL_" + minf))
+    gl.glTexParameteri(gl.GL_TEXTURE_2D, gl.GL_TEXTURE_MAG_FILTER, getattr(gl, "GL_" + magf))
+    gl.glTexParameteri(gl.GL_TEXTURE_2D, gl.GL_TEXTURE_WRAP_S, getattr(gl, "GL_" + wrap))
+    gl.glTexParameteri(gl.GL_TEXTURE_2D, gl.GL_TEXTURE_WRAP_T, getattr(gl, "GL_" + wrap))
+
+
+def _env(t: TestContext, mode: str, color: Sequence[float] | None = None) -> None:
+    gl = t.gl
+    gl.glTexEnvi(gl.GL_TEXTURE_ENV, gl.GL_TEXTURE_ENV_MODE, getattr(gl, "GL_" + mode))
+    if color is not None:
+        gl.glTexEnvxv(gl.GL_TEXTURE_ENV, gl.GL_TEXTURE_ENV_COLOR, [_fx(c) for c in color])
+
+
+def _texture(t: TestContext, levels: Sequence[np.ndarray], fmt: str = "RGBA", *, minf: str = "NEAREST",
+             magf: str = "NEAREST", wrap: str = "REPEAT", mode: str = "REPLACE", unit: int = 0) -> int:
+    """A new texture object on `unit` with `levels`, enabled, with its environment."""
+    gl = t.gl
+    gl.glActiveTexture(gl.GL_TEXTURE0 + unit)
+    name = int(gl.glGenTextures(1))
+    gl.glBindTexture(gl.GL_TEXTURE_2D, name)
+    for d, img in enumerate(levels):
+        _upload(t, d, fmt, img)
+    _params(t, minf, magf, wrap)
+    gl.glEnable(gl.GL_TEXTURE_2D)
+    _env(t, mode)
+    gl.glActiveTexture(gl.GL_TEXTURE0)
+    return name
+
+
+_TC_TYPES = ("FIXED", "SHORT", "BYTE")
+
+
+def _quad(t: TestContext, x0: int, y0: int, x1: int, y1: int, coords: Sequence[Any],
+          color: Sequence[int] | None = (255, 255, 255, 255), tc_type: Sequence[str] | None = None) -> None:
+    """Draw the window rectangle [x0, x1] x [y0, y1] as a strip; coords[u] is
+    ((s0, t0), (s1, t1)) for unit u (corner values) or None for no array.
+    Coordinates go as GL_FIXED unless tc_type[u] names SHORT or BYTE (then
+    they must be integers)."""
+    gl = t.gl
+    v = np.array([x0, y0, x1, y0, x0, y1, x1, y1], dtype=np.int16)
+    gl.glEnableClientState(gl.GL_VERTEX_ARRAY)
+    gl.glVertexPointer(2, gl.GL_SHORT, 0, v)
+    gl.glDisableClientState(gl.GL_COLOR_ARRAY)
+    if color is not None:
+        gl.glColor4x(*[_fx(c / 255) for c in color])
+    keep = []
+    for u, c in enumerate(coords):
+        gl.glClientActiveTexture(gl.GL_TEXTURE0 + u)
+        if c is None:
+            gl.glDisableClientState(gl.GL_TEXTURE_COORD_ARRAY)
+            continue
+        (s0, t0), (s1, t1) = c
+        vals = [s0, t0, s1, t0, s0, t1, s1, t1]
+        kind = tc_type[u] if tc_type else "FIXED"
+        if kind == "FIXED":
+            arr = np.array([_fx(x) for x in vals], dtype=np.int32)
+        else:
+            arr = np.array(vals, dtype=np.int16 if kind == "SHORT" else np.int8)
+        keep.append(arr)
+        gl.glEnableClientState(gl.GL_TEXTURE_COORD_ARRAY)
+        gl.glTexCoordPointer(2, getattr(gl, "GL_" + kind), 0, arr)
+    gl.glDrawArrays(gl.GL_TRIANGLE_STRIP, 0, 4)
+    for u in range(len(coords)):
+        gl.glClientActiveTexture(gl.GL_TEXTURE0 + u)
+        gl.glDisableClientState(gl.GL_TEXTURE_COORD_ARRAY)
+    gl.glClientActiveTexture(gl.GL_TEXTURE0)
+
+
+def _st(x0: int, y0: int, x1: int, y1: int, c: Any) -> tuple[np.ndarray, np.ndarray]:
+    """s, t at the pixel centres of the rectangle (rows bottom first)."""
+    (s0, t0), (s1, t1) = c
+    px, py = np.meshgrid(np.arange(x0, x1) + 0.5, np.arange(y0, y1) + 0.5)
+    return s0 + (px - x0) / (x1 - x0) * (s1 - s0), t0 + (py - y0) / (y1 - y0) * (t1 - t0)
+
+
+# {============================================================
+# helpers: the model
+
+
+def _wrap(s: np.ndarray, n: int, mode: str) -> np.ndarray:
+    """§3.7.6 (and OES_texture_mirrored_repeat) before scaling to texels."""
+    if mode == "REPEAT":
+        return s - np.floor(s)
+    if mode == "MIRRORED_REPEAT_OES":
+        f = s - np.floor(s)
+        s = np.where(np.floor(s) % 2 == 0, f, 1 - f)
+    return np.clip(s, 0.5 / n, 1 - 0.5 / n)
+
+
+def _sample(tex: np.ndarray, s: Any, t: Any, filt: str, wrap: str = "REPEAT") -> np.ndarray:
+    """Equations 3.16-3.18 on float RGBA texels (rows from the bottom)."""
+    h, w = tex.shape[:2]
+    s, t = np.broadcast_arrays(np.asarray(s, np.float64), np.asarray(t, np.float64))
+    u, v = _wrap(s, w, wrap) * w, _wrap(t, h, wrap) * h
+    if filt == "NEAREST":
+        return tex[np.clip(np.floor(v), 0, h - 1).astype(int), np.clip(np.floor(u), 0, w - 1).astype(int)]
+
+    def idx(x: np.ndarray, n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        i0 = np.floor(x - 0.5)
+        a = x - 0.5 - i0
+        i0 = i0.astype(int)
+        if wrap == "REPEAT":
+            return i0 % n, (i0 + 1) % n, a
+        return np.clip(i0, 0, n - 1), np.clip(i0 + 1, 0, n - 1), a
+
+    i0, i1, a = idx(u, w)
+    j0, j1, b = idx(v, h)
+    a, b = a[..., None], b[..., None]
+    return ((1 - a) * (1 - b) * tex[j0, i0] + a * (1 - b) * tex[j0, i1] + (1 - a) * b * tex[j1, i0]
+            + a * b * tex[j1, i1])
+
+
+def _mip(levels: Sequence[np.ndarray], s: Any, t: Any, lam: float, minf: str, magf: str,
+         wrap: str = "REPEAT") -> np.ndarray:
+    """§3.7.7-3.7.8 for one lambda: the c switch, equations 3.19-3.21."""
+    c = 0.5 if magf == "LINEAR" and minf in ("NEAREST_MIPMAP_NEAREST", "NEAREST_MIPMAP_LINEAR") else 0.0
+    if lam <= c:
+        return _sample(levels[0], s, t, magf, wrap)
+    filt = "NEAREST" if minf.startswith("NEAREST") else "LINEAR"
+    if minf in ("NEAREST", "LINEAR"):
+        return _sample(levels[0], s, t, filt, wrap)
+    q = len(levels) - 1
+    if minf.endswith("MIPMAP_NEAREST"):
+        d = 0 if lam <= 0.5 else (int(np.ceil(lam + 0.5)) - 1 if lam <= q + 0.5 else q)
+        return _sample(levels[d], s, t, filt, wrap)
+    if lam >= q:
+        return _sample(levels[q], s, t, filt, wrap)
+    d1 = int(np.floor(lam))
+    f = lam - d1
+    return (1 - f) * _sample(levels[d1], s, t, filt, wrap) + f * _sample(levels[d1 + 1], s, t, filt, wrap)
+
+
+def _mip_range(levels: Sequence[np.ndarray], s: Any, t: Any, lam: float, slack: float, minf: str,
+               magf: str) -> tuple[np.ndarray, np.ndarray]:
+    """Per-channel bounds of `_mip` for lambda within `slack` of `lam`."""
+    pts = {lam - slack, lam, lam + slack}
+    for k in range(-1, len(levels) + 2):
+        for b in (k, k + 0.5):
+            for e in (-1e-9, 1e-9):
+                if lam - slack <= b + e <= lam + slack:
+                    pts.add(b + e)
+    vals = [_mip(levels, s, t, p, minf, magf) for p in sorted(pts)]
+    return np.min(vals, axis=0), np.max(vals, axis=0)
+
+
+def _base(rgba: np.ndarray, fmt: str) -> np.ndarray:
+    """Table 3.14: texture source colour of texels stored in base format `fmt`."""
+    out = np.array(rgba, dtype=np.float64, copy=True)
+    if fmt == "ALPHA":
+        out[..., :3] = 0.0
+    if fmt.startswith("LUMINANCE"):
+        out[..., 1] = out[..., 2] = out[..., 0]
+    if fmt in ("LUMINANCE", "RGB"):
+        out[..., 3] = 1.0
+    return out
+
+
+def _classic(mode: str, fmt: str, cp: np.ndarray, cs: np.ndarray,
+             cc: Sequence[float] = (0, 0, 0, 0)) -> np.ndarray:
+    """Tables 3.15 and 3.16."""
+    out = np.array(cp, dtype=np.float64, copy=True)
+    rgb = fmt != "ALPHA"
+    alpha = fmt in ("ALPHA", "LUMINANCE_ALPHA", "RGBA")
+    cc_ = np.broadcast_to(np.asarray(cc, np.float64), cp.shape)
+    if mode == "DECAL":
+        a = cs[..., 3:4] if fmt == "RGBA" else 1.0
+        out[..., :3] = cp[..., :3] * (1 - a) + cs[..., :3] * a
+        return out
+    if rgb:
+        out[..., :3] = {"REPLACE": cs[..., :3], "MODULATE": cp[..., :3] * cs[..., :3],
+                        "BLEND": cp[..., :3] * (1 - cs[..., :3]) + cc_[..., :3] * cs[..., :3],
+                        "ADD": np.minimum(cp[..., :3] + cs[..., :3], 1.0)}[mode]
+    if alpha:
+        out[..., 3] = cs[..., 3] if mode == "REPLACE" else cp[..., 3] * cs[..., 3]
+    return out
+
+
+def _u(rgba_u8: Any) -> np.ndarray:
+    return np.asarray(rgba_u8, dtype=np.float64) / 255.0
+
+
+def _check(t: TestContext, img: np.ndarray, x0: int, y0: int, want: np.ndarray, where: str,
+           lo: np.ndarray | None = None, hi: np.ndarray | None = None, storage: float = 0.0) -> None:
+    """The pixels of the rectangle at (x0, y0) of want's shape match `want` (or lie in
+    [lo, hi]) within the visual's tolerance. Channels of fewer than 8 bits are
+    compared as the buffer holds them: the 8-bit value ReadPixels returns is mapped
+    back to its k / (2^b - 1). `storage` widens the tolerance where a texel holds a
+    packed value the GL may store with its own resolution (§3.7.1): 8 bits or more,
+    so within half an 8-bit step."""
+    h, w = want.shape[:2]
+    got = np.array(img[y0:y0 + h, x0:x0 + w], copy=True)
+    for c, bits in enumerate(t.visual.bits):
+        if 0 < bits < 8:
+            top = (1 << bits) - 1
+            got[..., c] = np.round(got[..., c] * top) / top
+    lo = want if lo is None else lo
+    hi = want if hi is None else hi
+    err = np.maximum(lo - got, got - hi).clip(0)
+    bad = (err > t.visual.color_tolerance() + storage).any(axis=-1)
+    if bad.any():
+        y, x = (int(v) for v in np.argwhere(bad)[0])
+        t.fail(f"{where}: {int(bad.sum())} pixels differ; first at (x={x0 + x}, y={y0 + y}): "
+               f"{np.round(got[y, x], 3).tolist()}, expected {np.round(lo[y, x], 3).tolist()}"
+               + ("" if hi is lo else f"..{np.round(hi[y, x], 3).tolist()}"))
+
+
+def _prepare(t: TestContext) -> None:
+    t.ortho_pixels()
+    t.clear((0, 0, 0, 0))
+
+
+# one colour per mipmap level, 32x32 down to 1x1 (q = 5)
+_LEVEL_COLORS = np.array([(255, 0, 0, 255), (0, 255, 0, 255), (0, 0, 255, 255), (255, 255, 0, 255),
+                          (0, 255, 255, 255), (255, 0, 255, 255)], dtype=np.uint8)
+
+
+def _colour_levels(w: int = 32, h: int = 32) -> list[np.ndarray]:
+    out, d = [], 0
+    while True:
+        out.append(np.broadcast_to(_LEVEL_COLORS[d % 6], (h, w, 4)).copy())
+        if w == 1 and h == 1:
+            return out
+        w, h, d = max(w // 2, 1), max(h // 2, 1), d + 1
+
+
+def _lambda_quad(x: int, y: int, width: int, height: int, lam: float, size: int = 32) -> tuple[Any, float]:
+    """Texture coordinates for a `width` x `height` quad at lambda (t constant, so
+    mv = 0 and f = mu); returns them and the exact lambda the 16.16 values give."""
+    s1 = _q16(2.0**lam * width / size)
+    return ((0.0, 0.5), (s1, 0.5)), float(np.log2(s1 * size / width))
+
+
+def _level_rows(t: TestContext, x: int, d: int, w0: int, h0: int) -> None:
+    """Level d of a w0 x h0 mipmap one texel per pixel at (x, 0): one quad per texel
+    row, s across the image (lambda = d exactly), t constant at the row's centre."""
+    w, h = max(w0 >> d, 1), max(h0 >> d, 1)
+    for j in range(h):
+        tj = (j + 0.5) / h
+        _quad(t, x, j, x + w, j + 1, [((0.0, tj), (1.0, tj))])
+
+
+MIN_FILTERS = ("NEAREST", "LINEAR", "NEAREST_MIPMAP_NEAREST", "LINEAR_MIPMAP_NEAREST",
+               "NEAREST_MIPMAP_LINEAR", "LINEAR_MIPMAP_LINEAR")
+
+
+# {============================================================
+# Mip
+
+
+@conformance_test("Mip", section="3.7.7", visuals=VISUALS, size=(192, 8))
+def mip(t: TestContext) -> None:
+    """A 32x32 mipmap with one colour per level under each minification filter, at
+    lambda = -1, 0, 1, ..., 5 and 6 > q: the mipmapped filters show level
+    min(lambda, q), NEAREST and LINEAR level 0."""
+    levels = _colour_levels()
+    lams = (-1, 0, 1, 2, 3, 4, 5, 6)
+    for minf in MIN_FILTERS:
+        _prepare(t)
+        _texture(t, levels, minf=minf)
+        x, spans = 0, []
+        for lam in lams:
+            width = 64 if lam < 0 else max(32 >> lam, 1)
+            coords, _ = _lambda_quad(x, 0, width, 4, lam)
+            _quad(t, x, 0, x + width, 4, [coords])
+            spans.append((x, width, lam))
+            x += width + 1
+        img = t.read()
+        for x0, width, lam in spans:
+            d = 0 if lam <= 0 or minf in ("NEAREST", "LINEAR") else min(lam, 5)
+            want = np.broadcast_to(_u(_LEVEL_COLORS[d]), (4, width, 4))
+            _check(t, img, x0, 0, want, f"MIN_FILTER {minf}, lambda {lam}")
+    t.check_gl_error("Mip")
+
+
+# {============================================================
+# MipLevels
+
+
+@conformance_test("MipLevels", section="3.7.9", visuals=VISUALS, size=(96, 8))
+def mip_levels(t: TestContext) -> None:
+    """A 32x8 mipmap (6 levels, 1-texel-wide ones included) specified level by level
+    in shuffled order: each level shows at its lambda; a level of the wrong size
+    or format makes the texture incomplete and disables texturing; respecifying
+    one level changes only that level."""
+    gl = t.gl
+    levels = _colour_levels(32, 8)
+    _prepare(t)
+    gl.glBindTexture(gl.GL_TEXTURE_2D, 5)
+    for d in (3, 0, 5, 1, 4, 2):
+        _upload(t, d, "RGBA", levels[d])
+    _params(t, "NEAREST_MIPMAP_NEAREST")
+    gl.glEnable(gl.GL_TEXTURE_2D)
+    _env(t, "REPLACE")
+    frag = (40, 80, 120, 160)
+
+    def draw_all() -> np.ndarray:
+        _prepare(t)
+        x = 0
+        for d in range(6):
+            width = max(32 >> d, 1)
+            coords, _ = _lambda_quad(x, 0, width, 4, d)
+            _quad(t, x, 0, x + width, 4, [coords], color=frag)
+            x += width + 1
+        return t.read()
+
+    def check_levels(img: np.ndarray, colors: Sequence[Any], where: str) -> None:
+        x = 0
+        for d in range(6):
+            width = max(32 >> d, 1)
+            _check(t, img, x, 0, np.broadcast_to(_u(colors[d]), (4, width, 4)), f"{where}, level {d}")
+            x += width + 1
+
+    colors = [levels[d][0, 0] for d in range(6)]
+    check_levels(draw_all(), colors, "complete mipmap")
+    _upload(t, 2, "RGBA", np.zeros((4, 4, 4), np.uint8))           # 4x4 where 8x2 belongs
+    check_levels(draw_all(), [frag] * 6, "level 2 of the wrong size (incomplete: texturing off)")
+    _upload(t, 2, "RGB", levels[2])                                  # right size, other format
+    check_levels(draw_all(), [frag] * 6, "level 2 in another format (incomplete)")
+    _upload(t, 2, "RGBA", levels[2])
+    new4 = np.full_like(levels[4], (10, 200, 30, 255))
+    _upload(t, 4, "RGBA", new4)
+    colors[4] = new4[0, 0]
+    check_levels(draw_all(), colors, "after respecifying level 4")
+    t.check_gl_error("MipLevels")
+
+
+# {============================================================
+# MipLin
+
+
+@conformance_test("MipLin", section="3.7.7", visuals=VISUALS, size=(64, 64))
+def mip_lin(t: TestContext) -> None:
+    """NEAREST_MIPMAP_LINEAR and LINEAR_MIPMAP_LINEAR between white and black levels:
+    the value is the blend by frac(lambda) of equation 3.21's two levels, over a
+    sweep of 16 lambdas (lambda to 1/16 of a level), and it changes monotonically."""
+    levels = [np.full((32 >> d, 32 >> d, 4), 255 * (1 - d % 2), np.uint8) for d in range(6)]
+    levels_f = [_u(v) for v in levels]
+    for minf in ("NEAREST_MIPMAP_LINEAR", "LINEAR_MIPMAP_LINEAR"):
+        _prepare(t)
+        _texture(t, levels, minf=minf, magf="NEAREST")
+        quads = []
+        for k in range(16):
+            lam = 1.0 + k / 16 + 1.0 / 32          # one level and a bit, 1/32 off the sixteenths
+            x, y = 8 * (k % 8), 8 * (k // 8)
+            coords, exact = _lambda_quad(x, y, 8, 8, lam)
+            _quad(t, x, y, x + 8, y + 8, [coords])
+            quads.append((x, y, exact))
+        img = t.read()
+        values = []
+        for x, y, lam in quads:
+            lo, hi = _mip_range(levels_f, 0.0, 0.5, lam, LOD_PRECISION, minf, "NEAREST")
+            _check(t, img, x, y, np.broadcast_to(lo, (8, 8, 4)), f"{minf} lambda {lam:.3f}",
+                   np.broadcast_to(lo, (8, 8, 4)), np.broadcast_to(hi, (8, 8, 4)))
+            values.append(float(img[y:y + 8, x:x + 8, 0].mean()))
+        # level 1 black -> level 2 white: brighter as lambda grows
+        if any(b < a - t.visual.color_tolerance()[0] for a, b in zip(values, values[1:])):
+            t.fail(f"{minf}: the blend is not monotonic in lambda: {np.round(values, 3).tolist()}")
+    t.check_gl_error("MipLin")
+
+
+# {============================================================
+# MipSelect
+
+
+@conformance_test("MipSelect", section="3.7.7", visuals=VISUALS, size=(64, 64))
+def mip_select(t: TestContext) -> None:
+    """NEAREST_MIPMAP_NEAREST and LINEAR_MIPMAP_NEAREST select level
+    ceil(lambda + 1/2) - 1 (equation 3.19): lambda k + 0.3 gives level k, k + 0.7
+    level k + 1; lambda <= 1/2 level 0; lambda > q + 1/2 level q."""
+    levels = _colour_levels()
+    for minf in ("NEAREST_MIPMAP_NEAREST", "LINEAR_MIPMAP_NEAREST"):
+        _prepare(t)
+        _texture(t, levels, minf=minf, magf="NEAREST")
+        cases = [0.2, 0.3, 0.7, 1.3, 1.7, 2.3, 2.7, 3.3, 3.7, 4.3, 4.7, 5.3, 5.7, 6.5]
+        quads = []
+        for k, lam in enumerate(cases):
+            x, y = 8 * (k % 8), 8 * (k // 8)
+            coords, exact = _lambda_quad(x, y, 8, 8, lam)
+            _quad(t, x, y, x + 8, y + 8, [coords])
+            quads.append((x, y, exact))
+        img = t.read()
+        for x, y, lam in quads:
+            d = 0 if lam <= 0.5 else min(int(np.ceil(lam + 0.5)) - 1, 5)
+            _check(t, img, x, y, np.broadcast_to(_u(_LEVEL_COLORS[d]), (8, 8, 4)),
+                   f"{minf} lambda {lam:.3f}: level {d}")
+    t.check_gl_error("MipSelect")
+
+
+@conformance_test("MipSelect.magswitch", section="3.7.8", visuals=VISUALS, size=(64, 16))
+def mip_select_switch(t: TestContext) -> None:
+    """The switch-over point c (§3.7.8): with MAG LINEAR and NEAREST_MIPMAP_LINEAR,
+    c = 0.5, so lambda 0.25 is magnification (level 0 only); with MAG NEAREST, or
+    with LINEAR_MIPMAP_LINEAR, c = 0 and lambda 0.25 blends levels 0 and 1."""
+    levels = _colour_levels()
+    levels_f = [_u(v) for v in levels]
+    cases = (("NEAREST_MIPMAP_LINEAR", "LINEAR"), ("NEAREST_MIPMAP_LINEAR", "NEAREST"),
+             ("LINEAR_MIPMAP_LINEAR", "LINEAR"), ("LINEAR_MIPMAP_LINEAR", "NEAREST"))
+    for minf, magf in cases:
+        _prepare(t)
+        _texture(t, levels, minf=minf, magf=magf)
+        coords, lam = _lambda_quad(0, 0, 16, 16, 0.25)
+        _quad(t, 0, 0, 16, 16, [coords])
+        img = t.read()
+        lo, hi = _mip_range(levels_f, 0.0, 0.5, lam, LOD_PRECISION, minf, magf)
+        _check(t, img, 0, 0, np.broadcast_to(lo, (16, 16, 4)), f"MIN {minf}, MAG {magf}, lambda {lam:.3f}",
+               np.broadcast_to(lo, (16, 16, 4)), np.broadcast_to(hi, (16, 16, 4)))
+    t.check_gl_error("MipSelect.magswitch")
+
+
+# {============================================================
+# MultiTex
+
+
+@conformance_test("MultiTex", section="3.7.13", visuals=VISUALS)
+def multi_tex(t: TestContext) -> None:
+    """Two to four units (as many as MAX_TEXTURE_UNITS allows, at least 2) each with its
+    texture, environment and coordinates (FIXED, SHORT and BYTE arrays, and one unit
+    fed by glMultiTexCoord4x): each unit applies its function to the previous unit's
+    result; a disabled unit passes it on (§3.7.13)."""
+    gl = t.gl
+    units = int(gl.glGetIntegerv(gl.GL_MAX_TEXTURE_UNITS))
+    if units < 2:
+        t.fail(f"MAX_TEXTURE_UNITS is {units}; ES 1.1 requires at least 2 (Table 6.20)")
+    units = min(units, 4)
+    rng = np.random.default_rng(3)
+    texs = [rng.integers(0, 256, size=(4, 4, 4), dtype=np.uint8) for _ in range(4)]
+    fmts = ("RGBA", "LUMINANCE", "RGB", "ALPHA")
+    modes = ("MODULATE", "ADD", "BLEND", "MODULATE")
+    envc = (0.25, 0.75, 0.5, 1.0)
+    frag = (200, 150, 100, 220)
+    for n in range(2, units + 1):
+        for off in ([None, 1] if n >= 3 else [None]):
+            _prepare(t)
+            for u in range(4):
+                gl.glActiveTexture(gl.GL_TEXTURE0 + u)
+                gl.glDisable(gl.GL_TEXTURE_2D)
+            for u in range(n):
+                _texture(t, [texs[u]], fmts[u], mode=modes[u], unit=u)
+                gl.glActiveTexture(gl.GL_TEXTURE0 + u)
+                _env(t, modes[u], envc)
+                if u == off:
+                    gl.glDisable(gl.GL_TEXTURE_2D)
+            gl.glActiveTexture(gl.GL_TEXTURE0)
+            # unit 0 FIXED 0..1, unit 1 SHORT 0..1 mirrored, unit 2 BYTE 0..2 (repeats), last: current
+            arrays = [((0.0, 0.0), (1.0, 1.0)), ((1, 0), (0, 1)), ((0, 0), (2, 2))][: n - 1]
+            gl.glMultiTexCoord4x(gl.GL_TEXTURE0 + n - 1, _fx(0.625), _fx(0.375), 0, ONE)
+            _quad(t, 0, 0, 16, 16, arrays, color=frag, tc_type=("FIXED", "SHORT", "BYTE"))
+            img = t.read()
+            cp = np.broadcast_to(_u(frag), (16, 16, 4))
+            maps = [((0.0, 0.0), (1.0, 1.0)), ((1.0, 0.0), (0.0, 1.0)), ((0.0, 0.0), (2.0, 2.0))]
+            for u in range(n):
+                if u == off:
+                    continue
+                if u == n - 1:
+                    cs = np.broadcast_to(_u(texs[u])[1, 2], (16, 16, 4))      # s 0.625, t 0.375
+                else:
+                    s, tt = _st(0, 0, 16, 16, maps[u])
+                    cs = _sample(_u(texs[u]), s, tt, "NEAREST")
+                cp = _classic(modes[u], fmts[u], cp, _base(cs, fmts[u]), envc)
+            _check(t, img, 0, 0, cp, f"{n} units" + (f", unit {off} disabled" if off is not None else ""))
+    for u in range(4):
+        gl.glActiveTexture(gl.GL_TEXTURE0 + u)
+        gl.glDisable(gl.GL_TEXTURE_2D)
+    gl.glActiveTexture(gl.GL_TEXTURE0)
+    t.check_gl_error("MultiTex")
+
+
+# {============================================================
+# TexDecal
+
+
+@conformance_test("TexDecal", section="3.7.12", visuals=VISUALS)
+def tex_decal(t: TestContext) -> None:
+    """DECAL: an RGB texture replaces the colour, an RGBA texture blends over it by its
+    alpha (Cv = Cp (1 - As) + Cs As); alpha stays the fragment's (Table 3.15)."""
+    rng = np.random.default_rng(4)
+    tex = rng.integers(0, 256, size=(8, 8, 4), dtype=np.uint8)
+    tex[0, :4, 3] = (0, 255, 128, 64)
+    for fmt in ("RGB", "RGBA"):
+        for frag in ((255, 255, 255, 255), (30, 60, 90, 120)):
+            _prepare(t)
+            _texture(t, [tex], fmt, mode="DECAL")
+            _quad(t, 0, 0, 32, 32, [((0.0, 0.0), (1.0, 1.0))], color=frag)
+            img = t.read()
+            s, tt = _st(0, 0, 32, 32, ((0.0, 0.0), (1.0, 1.0)))
+            cs = _base(_sample(_u(tex), s, tt, "NEAREST"), fmt)
+            want = _classic("DECAL", fmt, np.broadcast_to(_u(frag), cs.shape), cs)
+            _check(t, img, 0, 0, want, f"DECAL {fmt}, fragment {frag}")
+    t.check_gl_error("TexDecal")
+
+
+# {============================================================
+# TexPalet
+
+_PALETTE_FORMATS = {
+    "PALETTE4_RGB8_OES": (4, "RGB", 3), "PALETTE4_RGBA8_OES": (4, "RGBA", 4),
+    "PALETTE4_R5_G6_B5_OES": (4, "565", 2), "PALETTE4_RGBA4_OES": (4, "4444", 2),
+    "PALETTE4_RGB5_A1_OES": (4, "5551", 2), "PALETTE8_RGB8_OES": (8, "RGB", 3),
+    "PALETTE8_RGBA8_OES": (8, "RGBA", 4), "PALETTE8_R5_G6_B5_OES": (8, "565", 2),
+    "PALETTE8_RGBA4_OES": (8, "4444", 2), "PALETTE8_RGB5_A1_OES": (8, "5551", 2),
+}
+
+
+def _decode_entries(raw: np.ndarray, kind: str, count: int) -> np.ndarray:
+    """Palette entries (Table 3.11) as float RGBA: bytes or packed 16-bit values (§3.6.2)."""
+    out = np.ones((count, 4))
+    if kind in ("RGB", "RGBA"):
+        n = len(kind)
+        out[:, :n] = raw[: count * n].reshape(count, n) / 255.0
+        return out
+    v = raw[: 2 * count].view("<u2").astype(np.int64)
+    if kind == "565":
+        out[:, 0], out[:, 1], out[:, 2] = (v >> 11) / 31, ((v >> 5) & 63) / 63, (v & 31) / 31
+    elif kind == "4444":
+        for c in range(4):
+            out[:, c] = ((v >> (12 - 4 * c)) & 15) / 15
+    else:
+        out[:, 0], out[:, 1], out[:, 2] = (v >> 11) / 31, ((v >> 6) & 31) / 31, ((v >> 1) & 31) / 31
+        out[:, 3] = v & 1
+    return out
+
+
+def _paletted(rng: np.random.Generator, fmt: str, w: int, h: int,
+              nlevels: int) -> tuple[bytes, list[np.ndarray]]:
+    """Palette then the levels' indices (4-bit: first texel in the high nibble)."""
+    bits, kind, ebytes = _PALETTE_FORMATS[fmt]
+    entries = 1 << bits
+    raw = rng.integers(0, 256, size=entries * ebytes, dtype=np.uint8)
+    pal = _decode_entries(raw, kind, entries)
+    chunks, out = [raw.tobytes()], []
+    for _ in range(nlevels):
+        idx = rng.integers(0, entries, size=w * h)
+        out.append(pal[idx].reshape(h, w, 4))
+        if bits == 8:
+            chunks.append(idx.astype(np.uint8).tobytes())
+        else:
+            p = np.append(idx, 0) if idx.size % 2 else idx
+            chunks.append(((p[0::2] << 4) | p[1::2]).astype(np.uint8).tobytes())
+        w, h = max(w // 2, 1), max(h // 2, 1)
+    return b"".join(chunks), out
+
+
+@conformance_test("TexPalet", section="3.7.4", visuals=VISUALS, size=(64, 16))
+def tex_palet(t: TestContext) -> None:
+    """The 10 PALETTE*_OES formats are listed in COMPRESSED_TEXTURE_FORMATS and decode:
+    level -4 gives all five levels (16x4 to 1x1) in one image, each shown at its
+    lambda with NEAREST_MIPMAP_NEAREST; level 0 gives one level."""
+    gl = t.gl
+    listed = {int(v) for v in np.atleast_1d(gl.glGetIntegerv(gl.GL_COMPRESSED_TEXTURE_FORMATS))}
+    if gl.glGetIntegerv(gl.GL_NUM_COMPRESSED_TEXTURE_FORMATS) < 10:
+        t.fail("NUM_COMPRESSED_TEXTURE_FORMATS is below 10")
+    rng = np.random.default_rng(8)
+    for fmt in _PALETTE_FORMATS:
+        token = getattr(gl, "GL_" + fmt)
+        if token not in listed:
+            t.fail(f"GL_{fmt} is not in COMPRESSED_TEXTURE_FORMATS")
+        for nlev in (5, 1):
+            data, levels = _paletted(rng, fmt, 16, 4, nlev)
+            _prepare(t)
+            gl.glBindTexture(gl.GL_TEXTURE_2D, 3)
+            gl.glCompressedTexImage2D(gl.GL_TEXTURE_2D, 1 - nlev, token, 16, 4, 0, len(data), data)
+            t.check_gl_error(f"glCompressedTexImage2D({fmt}, level {1 - nlev})")
+            _params(t, "NEAREST_MIPMAP_NEAREST" if nlev > 1 else "NEAREST")
+            gl.glEnable(gl.GL_TEXTURE_2D)
+            _env(t, "REPLACE")
+            base = "RGB" if _PALETTE_FORMATS[fmt][1] in ("RGB", "565") else "RGBA"
+            x = 0
+            for d in range(nlev):
+                _level_rows(t, x, d, 16, 4)
+                x += (16 >> d) + 2
+            img = t.read()
+            x = 0
+            for d in range(nlev):
+                _check(t, img, x, 0, _base(levels[d], base), f"{fmt}, {nlev} levels, level {d}",
+                       storage=0.5 / 255)
+                x += (16 >> d) + 2
+    t.check_gl_error("TexPalet")
+
+
+@conformance_test("TexPalet.errors", section="3.7.4")
+def tex_palet_errors(t: TestContext) -> None:
+    """Paletted errors (§3.7.4): a positive level or an inconsistent imageSize is
+    INVALID_VALUE; CompressedTexSubImage2D with a PALETTE format is INVALID_OPERATION."""
+    gl = t.gl
+    token = gl.GL_PALETTE4_RGB8_OES
+    data, _ = _paletted(np.random.default_rng(1), "PALETTE4_RGB8_OES", 4, 4, 1)
+    gl.glBindTexture(gl.GL_TEXTURE_2D, 2)
+    gl.glCompressedTexImage2D(gl.GL_TEXTURE_2D, 1, token, 4, 4, 0, len(data), data)
+    t.check_gl_error("CompressedTexImage2D level 1", gl.GL_INVALID_VALUE)
+    gl.glCompressedTexImage2D(gl.GL_TEXTURE_2D, 0, token, 4, 4, 0, len(data) - 1, data)
+    t.check_gl_error("CompressedTexImage2D with imageSize one short", gl.GL_INVALID_VALUE)
+    gl.glCompressedTexImage2D(gl.GL_TEXTURE_2D, 0, token, 4, 4, 0, len(data), data)
+    t.check_gl_error("CompressedTexImage2D")
+    gl.glCompressedTexSubImage2D(gl.GL_TEXTURE_2D, 0, 0, 0, 4, 4, token, len(data), data)
+    t.check_gl_error("CompressedTexSubImage2D of a paletted texture", gl.GL_INVALID_OPERATION)
+
+
+# {============================================================
+# TextureEdgeClamp
+
+
+@conformance_test("TextureEdgeClamp", section="3.7.6", visuals=VISUALS, size=(64, 64))
+def texture_edge_clamp(t: TestContext) -> None:
+    """CLAMP_TO_EDGE with NEAREST and LINEAR, coordinates from -1 to 2: beyond the image
+    only edge texels show, and LINEAR never blends in the opposite edge (coordinates
+    clamped to [1/2N, 1 - 1/2N]); also on every level of a minified mipmap."""
+    rng = np.random.default_rng(6)
+    tex = rng.integers(0, 256, size=(8, 8, 4), dtype=np.uint8)
+    tex[:, 0] = (255, 0, 0, 255)
+    tex[:, -1] = (0, 0, 255, 255)
+    tex[0, 1:-1] = (0, 255, 0, 255)
+    tex[-1, 1:-1] = (255, 255, 0, 255)
+    c = ((-1.0, -1.0), (2.0, 2.0))
+    for filt in ("NEAREST", "LINEAR"):
+        _prepare(t)
+        _texture(t, [tex], minf=filt, magf=filt, wrap="CLAMP_TO_EDGE")
+        _quad(t, 0, 0, 48, 48, [c])
+        img = t.read()
+        s, tt = _st(0, 0, 48, 48, c)
+        _check(t, img, 0, 0, _sample(_u(tex), s, tt, filt, "CLAMP_TO_EDGE"), f"CLAMP_TO_EDGE {filt}")
+    # a mipmap seen at lambda 1 and 2 (t constant): every level clamps with its own N
+    levels = [tex] + [rng.integers(0, 256, size=(n, n, 4), dtype=np.uint8) for n in (4, 2, 1)]
+    levels_f = [_u(v) for v in levels]
+    _prepare(t)
+    _texture(t, levels, minf="LINEAR_MIPMAP_NEAREST", magf="LINEAR", wrap="CLAMP_TO_EDGE")
+    c2 = ((-1.0, 0.3125), (2.0, 0.3125))
+    for k, lam in enumerate((1, 2)):
+        width = 3 * (8 >> lam)              # s from -1 to 2, three images, over 24 / 2^lambda pixels
+        _quad(t, 0, 8 * k, width, 8 * k + 4, [c2])
+    img = t.read()
+    for k, lam in enumerate((1, 2)):
+        width = 3 * (8 >> lam)
+        s, tt = _st(0, 8 * k, width, 8 * k + 4, c2)
+        want = _mip(levels_f, s, tt, lam, "LINEAR_MIPMAP_NEAREST", "LINEAR", "CLAMP_TO_EDGE")
+        _check(t, img, 0, 8 * k, want, f"CLAMP_TO_EDGE on level {lam}")
+    t.check_gl_error("TextureEdgeClamp")
+
+
+@conformance_test("TextureEdgeClamp.mirror", section="3.7.6", visuals=VISUALS)
+def texture_mirror(t: TestContext) -> None:
+    """OES_texture_mirrored_repeat: s - floor(s) on even integer parts, 1 - that on odd
+    ones, then clamped like CLAMP_TO_EDGE, with NEAREST and LINEAR."""
+    from ..harness import Unsupported
+
+    if "GL_OES_texture_mirrored_repeat" not in (t.gl.glGetString(t.gl.GL_EXTENSIONS) or ""):
+        raise Unsupported("GL_OES_texture_mirrored_repeat is not in GL_EXTENSIONS")
+    rng = np.random.default_rng(7)
+    tex = rng.integers(0, 256, size=(4, 8, 4), dtype=np.uint8)
+    c = ((-2.1875, -1.0625), (2.3125, 1.9375))     # no pixel centre on a texel edge
+    for filt in ("NEAREST", "LINEAR"):
+        _prepare(t)
+        _texture(t, [tex], minf=filt, magf=filt, wrap="MIRRORED_REPEAT_OES")
+        _quad(t, 0, 0, 48, 32, [c])
+        img = t.read()
+        s, tt = _st(0, 0, 48, 32, c)
+        _check(t, img, 0, 0, _sample(_u(tex), s, tt, filt, "MIRRORED_REPEAT_OES"), f"MIRRORED_REPEAT {filt}")
+    t.check_gl_error("TextureEdgeClamp.mirror")
+
+
+# {============================================================
+# TexCombine
+
+_RGB_FUNCS = ("REPLACE", "MODULATE", "ADD", "ADD_SIGNED", "INTERPOLATE", "SUBTRACT", "DOT3_RGB", "DOT3_RGBA")
+_SOURCES = ("TEXTURE", "CONSTANT", "PRIMARY_COLOR", "PREVIOUS")
+_RGB_OPS = ("SRC_COLOR", "ONE_MINUS_SRC_COLOR", "SRC_ALPHA", "ONE_MINUS_SRC_ALPHA")
+_ALPHA_OPS = ("SRC_ALPHA", "ONE_MINUS_SRC_ALPHA")
+
+
+def _combine(t: TestContext, cfg: dict) -> None:
+    gl = t.gl
+    e = lambda p, v: gl.glTexEnvi(gl.GL_TEXTURE_ENV, getattr(gl, "GL_" + p), getattr(gl, "GL_" + v))  # noqa: E731
+    e("TEXTURE_ENV_MODE", "COMBINE")
+    e("COMBINE_RGB", cfg["rgb"])
+    e("COMBINE_ALPHA", cfg["alpha"])
+    for n in range(3):
+        e(f"SRC{n}_RGB", cfg["src_rgb"][n])
+        e(f"OPERAND{n}_RGB", cfg["op_rgb"][n])
+        e(f"SRC{n}_ALPHA", cfg["src_alpha"][n])
+        e(f"OPERAND{n}_ALPHA", cfg["op_alpha"][n])
+    gl.glTexEnvx(gl.GL_TEXTURE_ENV, gl.GL_RGB_SCALE, _fx(cfg["rgb_scale"]))
+    gl.glTexEnvx(gl.GL_TEXTURE_ENV, gl.GL_ALPHA_SCALE, _fx(cfg["alpha_scale"]))
+    gl.glTexEnvxv(gl.GL_TEXTURE_ENV, gl.GL_TEXTURE_ENV_COLOR, [_fx(c) for c in cfg["const"]])
+
+
+def _combine_model(cfg: dict, cs: dict, cf: np.ndarray, cp: np.ndarray) -> np.ndarray:
+    """Tables 3.17-3.19 (crossbar sources TEXTUREn from `cs`)."""
+    cc = np.broadcast_to(np.asarray(cfg["const"], np.float64), cp.shape)
+    src = {"TEXTURE": cs["TEXTURE"], "CONSTANT": cc, "PRIMARY_COLOR": cf, "PREVIOUS": cp, **cs}
+
+    def arg(n: int, alpha: bool) -> np.ndarray:
+        c = src[cfg["src_alpha" if alpha else "src_rgb"][n]]
+        op = cfg["op_alpha" if alpha else "op_rgb"][n]
+        v = c[..., 3] if alpha or "ALPHA" in op else None
+        if v is None:
+            v = c[..., :3]
+        elif not alpha:
+            v = np.repeat(v[..., None], 3, -1)
+        return 1 - v if op.startswith("ONE_MINUS") else v
+
+    def fn(f: str, a: list) -> np.ndarray:
+        return {"REPLACE": lambda: a[0], "MODULATE": lambda: a[0] * a[1], "ADD": lambda: a[0] + a[1],
+                "ADD_SIGNED": lambda: a[0] + a[1] - 0.5, "SUBTRACT": lambda: a[0] - a[1],
+                "INTERPOLATE": lambda: a[0] * a[2] + a[1] * (1 - a[2])}[f]()
+
+    r = [arg(n, False) for n in range(3)]
+    a = [arg(n, True) for n in range(3)]
+    out = np.empty(cp.shape)
+    if cfg["rgb"].startswith("DOT3"):
+        dot = 4 * ((r[0] - 0.5) * (r[1] - 0.5)).sum(-1)
+        out[..., :3] = dot[..., None] * cfg["rgb_scale"]
+        out[..., 3] = (dot if cfg["rgb"] == "DOT3_RGBA" else fn(cfg["alpha"], a)) * cfg["alpha_scale"]
+    else:
+        out[..., :3] = fn(cfg["rgb"], r) * cfg["rgb_scale"]
+        out[..., 3] = fn(cfg["alpha"], a) * cfg["alpha_scale"]
+    return np.clip(out, 0, 1)
+
+
+def _combine_configs(crossbar: bool) -> list[dict]:
+    rng = np.random.default_rng(12)
+    srcs = _SOURCES + (("TEXTURE0", "TEXTURE1") if crossbar else ())
+    out = []
+    for k in range(48):
+        rgb = _RGB_FUNCS[k % len(_RGB_FUNCS)]
+        scales = (1.0, 2.0, 4.0)
+        rs = scales[(k // 8) % 3]
+        out.append({
+            "rgb": rgb, "alpha": _RGB_FUNCS[(k + 3) % 6],
+            "src_rgb": [srcs[(k + n * 5) % len(srcs)] for n in range(3)],
+            "op_rgb": [_RGB_OPS[(k // 3 + n) % 4] for n in range(3)],
+            "src_alpha": [srcs[(k * 3 + n * 7) % len(srcs)] for n in range(3)],
+            "op_alpha": [_ALPHA_OPS[(k + n) % 2] for n in range(3)],
+            "rgb_scale": rs, "alpha_scale": rs if rgb == "DOT3_RGBA" else scales[(k // 3) % 3],
+            "const": tuple(float(v) for v in rng.integers(0, 256, 4) / 255),
+        })
+    return out
+
+
+def _run_combine(t: TestContext, configs: list[dict], where: str) -> None:
+    """Unit 0 MODULATEs texture A into the primary colour, unit 1 runs each COMBINE
+    configuration with texture B; 8x8 pixels per configuration."""
+    gl = t.gl
+    rng = np.random.default_rng(13)
+    a_tex = rng.integers(0, 256, size=(8, 8, 4), dtype=np.uint8)
+    b_tex = rng.integers(0, 256, size=(8, 8, 4), dtype=np.uint8)
+    _prepare(t)
+    _texture(t, [a_tex], mode="MODULATE", unit=0)
+    _texture(t, [b_tex], unit=1)
+    gl.glActiveTexture(gl.GL_TEXTURE1)
+    frags = rng.integers(0, 256, size=(len(configs), 4))
+    coords = [((0.0, 0.0), (1.0, 1.0))] * 2
+    for k, cfg in enumerate(configs):
+        _combine(t, cfg)
+        x, y = 8 * (k % 8), 8 * (k // 8)
+        _quad(t, x, y, x + 8, y + 8, coords, color=frags[k])
+    gl.glActiveTexture(gl.GL_TEXTURE0)
+    img = t.read()
+    cs = {"TEXTURE": _u(b_tex), "TEXTURE0": _u(a_tex), "TEXTURE1": _u(b_tex)}
+    for k, cfg in enumerate(configs):
+        cf = np.broadcast_to(_u(frags[k]), (8, 8, 4))
+        want = _combine_model(cfg, cs, cf, cf * _u(a_tex))
+        _check(t, img, 8 * (k % 8), 8 * (k // 8), want, f"{where}: {cfg}")
+    t.check_gl_error(where)
+
+
+@conformance_test("TexCombine", section="3.7.12", visuals=VISUALS)
+def tex_combine(t: TestContext) -> None:
+    """COMBINE on unit 1 after a MODULATE unit: every RGB and alpha function (DOT3 too),
+    the sources TEXTURE, CONSTANT, PRIMARY_COLOR and PREVIOUS, every operand, RGB and
+    alpha scales 1, 2 and 4 (Tables 3.17-3.19)."""
+    _run_combine(t, _combine_configs(False), "TexCombine")
+
+
+@conformance_test("TexCombine.crossbar", section="3.7.12", visuals=VISUALS)
+def tex_combine_crossbar(t: TestContext) -> None:
+    """OES_texture_env_crossbar: TEXTURE0 and TEXTURE1 as sources of either unit."""
+    from ..harness import Unsupported
+
+    if "GL_OES_texture_env_crossbar" not in (t.gl.glGetString(t.gl.GL_EXTENSIONS) or ""):
+        raise Unsupported("GL_OES_texture_env_crossbar is not in GL_EXTENSIONS")
+    _run_combine(t, _combine_configs(True), "TexCombine.crossbar")
+
+
+@conformance_test("TexCombine.dot3alpha", section="3.7.12", visuals=VISUALS)
+def tex_combine_dot3_alpha(t: TestContext) -> None:
+    """DOT3_RGBA places the dot product in alpha too, and the ALPHA result is
+    multiplied by ALPHA_SCALE (§3.7.12): RGB_SCALE 1 with ALPHA_SCALE 2 or 4."""
+    base = {"rgb": "DOT3_RGBA", "alpha": "REPLACE", "src_rgb": ["TEXTURE", "CONSTANT", "CONSTANT"],
+            "op_rgb": ["SRC_COLOR", "SRC_COLOR", "SRC_ALPHA"], "src_alpha": ["TEXTURE"] * 3,
+            "op_alpha": ["SRC_ALPHA"] * 3, "rgb_scale": 1.0, "const": (0.75, 0.5, 0.5, 1.0)}
+    configs = [dict(base, alpha_scale=s, const=(c, 0.5, 0.5, 1.0)) for s in (2.0, 4.0)
+               for c in (0.6, 0.75, 0.9)]
+    _run_combine(t, configs, "TexCombine.dot3alpha")
+
+
+# {============================================================
+# CopyTex
+
+
+def _paint(t: TestContext, seed: int) -> None:
+    """Smooth random colours over the window (GL_UNSIGNED_BYTE colours, GL_SHORT vertices)."""
+    gl = t.gl
+    rng = np.random.default_rng(seed)
+    w, h = t.width, t.height
+    v = np.array([0, 0, w, 0, 0, h, w, h, w // 2, h // 2], dtype=np.int16)
+    idx = np.array([0, 1, 4, 1, 3, 4, 3, 2, 4, 2, 0, 4], dtype=np.uint16)
+    col = rng.integers(0, 256, size=(5, 4), dtype=np.uint8)
+    gl.glShadeModel(gl.GL_SMOOTH)
+    gl.glEnableClientState(gl.GL_VERTEX_ARRAY)
+    gl.glVertexPointer(2, gl.GL_SHORT, 0, v)
+    gl.glEnableClientState(gl.GL_COLOR_ARRAY)
+    gl.glColorPointer(4, gl.GL_UNSIGNED_BYTE, 0, col)
+    gl.glDrawElements(gl.GL_TRIANGLES, 12, gl.GL_UNSIGNED_SHORT, idx)
+    gl.glDisableClientState(gl.GL_COLOR_ARRAY)
+
+
+@conformance_test("CopyTex", section="3.7.2", visuals=VISUALS)
+def copy_tex(t: TestContext) -> None:
+    """CopyTexImage2D makes a texture of the pixels ReadPixels returns, keeping the
+    components of Table 3.8; formats needing alpha are INVALID_OPERATION on a buffer
+    without it (Table 3.9); CopyTexSubImage2D replaces just its rectangle."""
+    gl = t.gl
+    has_alpha = t.visual.bits[3] > 0
+    frag = (60, 120, 180, 240)
+    for fmt in ("ALPHA", "LUMINANCE", "LUMINANCE_ALPHA", "RGB", "RGBA"):
+        legal = has_alpha or fmt in ("LUMINANCE", "RGB")
+        _prepare(t)
+        gl.glDisable(gl.GL_TEXTURE_2D)
+        _paint(t, 1)
+        ref = t.read()[4:20, 8:40]
+        gl.glBindTexture(gl.GL_TEXTURE_2D, 9)
+        gl.glCopyTexImage2D(gl.GL_TEXTURE_2D, 0, getattr(gl, "GL_" + fmt), 8, 4, 32, 16, 0)
+        if not legal:
+            t.check_gl_error(f"CopyTexImage2D {fmt} without alpha bits", gl.GL_INVALID_OPERATION)
+            continue
+        t.check_gl_error(f"CopyTexImage2D {fmt}")
+        _params(t)
+        gl.glEnable(gl.GL_TEXTURE_2D)
+        _env(t, "REPLACE")
+        t.clear((0, 0, 0, 0))
+        _quad(t, 0, 32, 32, 48, [((0.0, 0.0), (1.0, 1.0))], color=frag)
+        want = _classic("REPLACE", fmt, np.broadcast_to(_u(frag), ref.shape), _base(ref, fmt))
+        _check(t, t.read(), 0, 32, want, f"CopyTexImage2D {fmt}")
+    # CopyTexSubImage2D into an RGB texture (legal on every visual)
+    _prepare(t)
+    gl.glDisable(gl.GL_TEXTURE_2D)
+    _paint(t, 2)
+    fb = t.read()
+    tex = np.full((8, 8, 4), (10, 20, 30, 255), np.uint8)
+    gl.glBindTexture(gl.GL_TEXTURE_2D, 10)
+    _upload(t, 0, "RGB", tex)
+    gl.glCopyTexSubImage2D(gl.GL_TEXTURE_2D, 0, 2, 3, 40, 20, 5, 4)
+    t.check_gl_error("CopyTexSubImage2D")
+    want = _u(tex).copy()
+    want[3:7, 2:7, :3] = fb[20:24, 40:45, :3]
+    _params(t)
+    gl.glEnable(gl.GL_TEXTURE_2D)
+    _env(t, "REPLACE")
+    t.clear((0, 0, 0, 0))
+    _quad(t, 0, 0, 32, 32, [((0.0, 0.0), (1.0, 1.0))], color=frag)
+    want_px = np.repeat(np.repeat(want, 4, axis=0), 4, axis=1)
+    want_px[..., 3] = frag[3] / 255
+    _check(t, t.read(), 0, 0, want_px, "CopyTexSubImage2D")
+    gl.glDisable(gl.GL_TEXTURE_2D)
+
+
+# {============================================================
+# PackedPixels
+
+_PACKED = (("RGBA", "UNSIGNED_BYTE", 4), ("RGB", "UNSIGNED_BYTE", 3), ("LUMINANCE_ALPHA", "UNSIGNED_BYTE", 2),
+           ("LUMINANCE", "UNSIGNED_BYTE", 1), ("ALPHA", "UNSIGNED_BYTE", 1),
+           ("RGB", "UNSIGNED_SHORT_5_6_5", 2), ("RGBA", "UNSIGNED_SHORT_4_4_4_4", 2),
+           ("RGBA", "UNSIGNED_SHORT_5_5_5_1", 2))
+
+
+def _unpack(raw: np.ndarray, fmt: str, gltype: str, w: int, h: int, align: int) -> np.ndarray:
+    """§3.6.2: client texels (rows padded to the alignment) as float RGBA, before Table 3.8."""
+    bpp = dict((f + ty, n) for f, ty, n in _PACKED)[fmt + gltype]
+    stride = -(-w * bpp // align) * align
+    rows = np.stack([raw[j * stride: j * stride + w * bpp] for j in range(h)])
+    out = np.ones((h, w, 4))
+    if gltype == "UNSIGNED_BYTE":
+        c = rows.reshape(h, w, bpp) / 255.0
+        if fmt == "ALPHA":
+            out[..., 3] = c[..., 0]
+        elif fmt.startswith("LUMINANCE"):
+            out[..., :3] = c[..., :1]
+            if fmt == "LUMINANCE_ALPHA":
+                out[..., 3] = c[..., 1]
+        else:
+            out[..., :bpp] = c
+        return out
+    kind = {"UNSIGNED_SHORT_5_6_5": "565", "UNSIGNED_SHORT_4_4_4_4": "4444", "UNSIGNED_SHORT_5_5_5_1": "5551"}
+    return _decode_entries(np.ascontiguousarray(rows).reshape(-1), kind[gltype], w * h).reshape(h, w, 4)
+
+
+@conformance_test("PackedPixels", section="3.6.2", visuals=VISUALS)
+def packed_pixels(t: TestContext) -> None:
+    """TexImage2D of every format/type pair, the packed 5_6_5, 4_4_4_4 and 5_5_5_1 types
+    included, at UNPACK_ALIGNMENT 1, 2, 4 and 8 (rows of two texels, so padding
+    varies): each texel is its components over 2^n - 1 (§3.6.2), seen via REPLACE."""
+    gl = t.gl
+    rng = np.random.default_rng(14)
+    frag = (70, 140, 210, 35)
+    w, h = 2, 8
+    for fmt, gltype, bpp in _PACKED:
+        _prepare(t)
+        raws = []
+        for k, align in enumerate((1, 2, 4, 8)):
+            stride = -(-w * bpp // align) * align
+            raw = rng.integers(0, 256, size=stride * (h - 1) + w * bpp, dtype=np.uint8)
+            raws.append(raw)
+            gl.glBindTexture(gl.GL_TEXTURE_2D, 20 + k)
+            gl.glPixelStorei(gl.GL_UNPACK_ALIGNMENT, align)
+            f, ty = getattr(gl, "GL_" + fmt), getattr(gl, "GL_" + gltype)
+            gl.glTexImage2D(gl.GL_TEXTURE_2D, 0, f, w, h, 0, f, ty, raw)
+            t.check_gl_error(f"TexImage2D {fmt}/{gltype}, alignment {align}")
+            _params(t)
+            gl.glEnable(gl.GL_TEXTURE_2D)
+            _env(t, "REPLACE")
+            _quad(t, 12 * k, 0, 12 * k + 8, 32, [((0.0, 0.0), (1.0, 1.0))], color=frag)
+        img = t.read()
+        for k, align in enumerate((1, 2, 4, 8)):
+            texels = _unpack(raws[k], fmt, gltype, w, h, align)
+            want = _classic("REPLACE", fmt, np.broadcast_to(_u(frag), texels.shape), _base(texels, fmt))
+            want = np.repeat(np.repeat(want, 4, axis=0), 4, axis=1)
+            _check(t, img, 12 * k, 0, want, f"{fmt}/{gltype}, UNPACK_ALIGNMENT {align}",
+                   storage=0.0 if gltype == "UNSIGNED_BYTE" else 0.5 / 255)
+        gl.glDisable(gl.GL_TEXTURE_2D)
+    gl.glPixelStorei(gl.GL_UNPACK_ALIGNMENT, 4)
+    t.check_gl_error("PackedPixels")
