@@ -68,6 +68,9 @@ KNOWN_DEVIATIONS: tuple[Deviation, ...] = (
     Deviation("TexPalet.errors", "mesa-", None, None,
               "Mesa: CompressedTexSubImage2D on a paletted texture gives INVALID_VALUE; §3.7.4 wants "
               "INVALID_OPERATION (docs/conformance.md)"),
+    Deviation("covgl", "mesa-", None, None,
+              "Mesa: CompressedTexSubImage2D on a paletted texture gives INVALID_VALUE, not "
+              "INVALID_OPERATION; §3.7.4 (docs/conformance.md)"),
     Deviation("AmbLight.errors", "mesa-", None, None,
               "Mesa: scalar glLight/glLightModel accept vector pnames; §2.12.2 wants INVALID_ENUM "
               "(docs/conformance.md, Mesa results)"),
