@@ -925,6 +925,24 @@ static inline TEXC texc_scale(TEXC a, int n) { return a * n; }
 /* bilinear weights: the fraction of a texel coordinate in 16 bits */
 typedef int32_t TEXW;
 static inline TEXW texc_frac_weight(TEXC u) { return (int32_t)((u >> 16) & 0xFFFF); }
+
+/* Bilinear filtering of four RGBA8888 texels: the weighted sum of the 8-bit
+** values (weights sum to 2^32), then one conversion to 0.30 through
+** 2^32 / 255 = 16843009 (relative error 2^-32), so a texel c gives c/255
+** to 2^-31 and blends round once. */
+static inline void frag_bilerp_rgba8(uint32_t c00, uint32_t c10, uint32_t c01, uint32_t c11, TEXW a, TEXW b,
+                                     FRAGV out[4], const FRAGV *unorm)
+{
+    (void)unorm;
+    uint64_t ia = 65536 - (uint64_t)a, ib = 65536 - (uint64_t)b;
+    uint64_t w00 = ia * ib, w10 = (uint64_t)a * ib, w01 = ia * (uint64_t)b, w11 = (uint64_t)a * (uint64_t)b;
+    for (int k = 0; k < 4; k++) {
+        int sh = 8 * k;
+        uint64_t acc = ((c00 >> sh) & 0xFF) * w00 + ((c10 >> sh) & 0xFF) * w10 + ((c01 >> sh) & 0xFF) * w01
+                     + ((c11 >> sh) & 0xFF) * w11;                 /* c8 with 32 fraction bits, < 2^40 */
+        out[k] = (FRAGV)((((acc + 128) >> 8) * 16843009u + ((uint64_t)1 << 25)) >> 26);
+    }
+}
 static inline FRAGV frag_bilerp(FRAGV c00, FRAGV c10, FRAGV c01, FRAGV c11, TEXW a, TEXW b)
 {
     int64_t ia = 65536 - a, ib = 65536 - b;
@@ -969,6 +987,17 @@ static inline TEXC texc_clamp(TEXC a, TEXC lim) { return a < -lim ? -lim : (a > 
 static inline TEXC texc_scale(TEXC a, int n) { return a * (NUM)n; }
 typedef NUM TEXW;
 static inline TEXW texc_frac_weight(TEXC u) { return u - NUM_FLOOR(u); }
+
+static inline void frag_bilerp_rgba8(uint32_t c00, uint32_t c10, uint32_t c01, uint32_t c11, TEXW a, TEXW b,
+                                     FRAGV out[4], const FRAGV *unorm)
+{
+    for (int k = 0; k < 4; k++) {
+        int sh = 8 * k;
+        FRAGV v00 = unorm[(c00 >> sh) & 0xFF], v10 = unorm[(c10 >> sh) & 0xFF];
+        FRAGV v01 = unorm[(c01 >> sh) & 0xFF], v11 = unorm[(c11 >> sh) & 0xFF];
+        out[k] = (v00 * (1 - a) + v10 * a) * (1 - b) + (v01 * (1 - a) + v11 * a) * b;
+    }
+}
 static inline FRAGV frag_bilerp(FRAGV c00, FRAGV c10, FRAGV c01, FRAGV c11, TEXW a, TEXW b)
 {
     return (c00 * (1 - a) + c10 * a) * (1 - b) + (c01 * (1 - a) + c11 * a) * b;

@@ -22,6 +22,7 @@ static void SPAN_NAME(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
 #endif
     const Texture *tex = ctx->units[0].bound;
     const int lod = texture_needs_lod(tex);
+    const int modulate_rgba = ctx->units[0].env_mode == GL_MODULATE && tex->format == GL_RGBA;
     const int smooth = t->smooth;
     int64_t e[3];
     for (int i = 0; i < 3; i++)
@@ -57,7 +58,13 @@ static void SPAN_NAME(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
         } else {
             texture_sample(tex, &tc, NULL, NULL, ct[0], ctx->texel_unorm8);
         }
-        texture_env(ctx, 0, cf, ct, c);
+        if (modulate_rgba) {
+            /* texture_env's MODULATE of an RGBA texture, inline */
+            for (int i = 0; i < 4; i++)
+                c[i] = frag_mul(c[i], ct[0][i]);
+        } else {
+            texture_env(ctx, 0, cf, ct, c);
+        }
 #if SPAN_BLEND
         uint32_t d = dst[k], out = 0;
         FRAGV sa = frag_clamp01(c[3]), da = FRAG_ONE - sa;

@@ -891,7 +891,7 @@ static inline int wrap_index(int64_t i, int n, unsigned int mode)
 
 /* the coordinate reduced before scaling: REPEAT keeps the fraction, the
 ** mirror folds into [0, 2), CLAMP_TO_EDGE leaves it (indices clamp) */
-static TEXC reduce_coord(TEXC s, unsigned int mode)
+static inline TEXC reduce_coord(TEXC s, unsigned int mode)
 {
     if (mode == GL_REPEAT)
         return s - texc_floor(s);
@@ -905,7 +905,7 @@ static TEXC reduce_coord(TEXC s, unsigned int mode)
     return s;
 }
 
-static void texel(const TexImage *li, int i, int j, FRAGV out[4], const FRAGV *unorm)
+static inline void texel(const TexImage *li, int i, int j, FRAGV out[4], const FRAGV *unorm)
 {
     uint32_t c = li->texels[(size_t)j * li->width + i];
     out[0] = unorm[c & 0xFF];
@@ -914,7 +914,7 @@ static void texel(const TexImage *li, int i, int j, FRAGV out[4], const FRAGV *u
     out[3] = unorm[c >> 24];
 }
 
-static void sample_level(const Texture *t, int level, unsigned int filter, TEXC s, TEXC tc, FRAGV out[4],
+static inline void sample_level(const Texture *t, int level, unsigned int filter, TEXC s, TEXC tc, FRAGV out[4],
                          const FRAGV *unorm)
 {
     const TexImage *li = &t->level[level];
@@ -931,13 +931,8 @@ static void sample_level(const Texture *t, int level, unsigned int filter, TEXC 
     TEXW a = texc_frac_weight(uu), b = texc_frac_weight(vv);
     int x0 = wrap_index(i0, w, t->wrap_s), x1 = wrap_index(i0 + 1, w, t->wrap_s);
     int y0 = wrap_index(j0, h, t->wrap_t), y1 = wrap_index(j0 + 1, h, t->wrap_t);
-    FRAGV c00[4], c10[4], c01[4], c11[4];
-    texel(li, x0, y0, c00, unorm);
-    texel(li, x1, y0, c10, unorm);
-    texel(li, x0, y1, c01, unorm);
-    texel(li, x1, y1, c11, unorm);
-    for (int k = 0; k < 4; k++)
-        out[k] = frag_bilerp(c00[k], c10[k], c01[k], c11[k], a, b);
+    const uint32_t *r0 = li->texels + (size_t)y0 * w, *r1 = li->texels + (size_t)y1 * w;
+    frag_bilerp_rgba8(r0[x0], r0[x1], r1[x0], r1[x1], a, b, out, unorm);
 }
 
 void texture_sample(const Texture *t, const TexCoord *c, const TexCoord *dx, const TexCoord *dy, FRAGV out[4],
@@ -1058,9 +1053,10 @@ void texture_env(const GlesContext *ctx, int u, const FRAGV cf[4], FRAGV ct[][4]
     const TexUnit *tu = &ctx->units[u];
     const FRAGV *cs = ct[u];
     unsigned int fmt = tu->bound->format;
-    FRAGV cc[4];
-    for (int i = 0; i < 4; i++)
-        cc[i] = frag_from_num(tu->n_env_color[i]);
+    FRAGV cc[4] = { 0, 0, 0, 0 };
+    if (tu->env_mode == GL_BLEND || tu->env_mode == GL_COMBINE)
+        for (int i = 0; i < 4; i++)
+            cc[i] = frag_from_num(tu->n_env_color[i]);
     FRAGV out[4];
     switch (tu->env_mode) {
     case GL_REPLACE:
