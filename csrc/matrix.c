@@ -191,33 +191,24 @@ void gles_PopMatrix(GlesContext *ctx)
     ctx->dirty |= DIRTY_MATRIX;
 }
 
-void gles_Translate(GlesContext *ctx, double x, double y, double z)
+/* multiply by the identity with x, y, z placed at elements i, j, k (the
+** translation column or the diagonal) */
+static void mult_placed(GlesContext *ctx, int i, int j, int k, double x, double y, double z)
 {
     double md[16];
     NUM mn[16];
     memcpy(md, identity_d, sizeof md);
-    md[12] = x; md[13] = y; md[14] = z;
-    for (int i = 0; i < 16; i++)
-        mn[i] = (i % 5 == 0) ? NUM_ONE : NUM_ZERO;
-    mn[12] = num_from_double(x);
-    mn[13] = num_from_double(y);
-    mn[14] = num_from_double(z);
+    for (int e = 0; e < 16; e++)
+        mn[e] = (e % 5 == 0) ? NUM_ONE : NUM_ZERO;
+    md[i] = x; md[j] = y; md[k] = z;
+    mn[i] = num_from_double(x);
+    mn[j] = num_from_double(y);
+    mn[k] = num_from_double(z);
     mult_both(ctx, md, mn);
 }
 
-void gles_Scale(GlesContext *ctx, double x, double y, double z)
-{
-    double md[16];
-    NUM mn[16];
-    memcpy(md, identity_d, sizeof md);
-    md[0] = x; md[5] = y; md[10] = z;
-    for (int i = 0; i < 16; i++)
-        mn[i] = (i % 5 == 0) ? NUM_ONE : NUM_ZERO;
-    mn[0] = num_from_double(x);
-    mn[5] = num_from_double(y);
-    mn[10] = num_from_double(z);
-    mult_both(ctx, md, mn);
-}
+void gles_Translate(GlesContext *ctx, double x, double y, double z) { mult_placed(ctx, 12, 13, 14, x, y, z); }
+void gles_Scale(GlesContext *ctx, double x, double y, double z) { mult_placed(ctx, 0, 5, 10, x, y, z); }
 
 /* the rotation matrix of §2.10.2 for unit axis (x,y,z), sine s, cosine c */
 #define ROTATION_BODY(T, MUL, ADD, SUB, ONE)                                  \
