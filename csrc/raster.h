@@ -5,6 +5,7 @@
 #define GLES_RASTER_H
 
 #include "state.h"
+#include "texture.h"
 
 /* Everything a span function needs about the triangle being drawn. */
 struct TriSetup {
@@ -27,6 +28,20 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
                      int back);
 /* the signed window-space area (x2) of a triangle, counter-clockwise > 0 */
 int64_t raster_area2(const Vertex *a, const Vertex *b, const Vertex *c);
+
+/* the inputs of one fragment (span.c's fragment_process) */
+typedef struct FragIn {
+    FRAGV c[4];                             /* primary colour */
+    TexCoord tc[GLES_MAX_TEXTURE_UNITS];    /* per enabled unit */
+    TexCoord tdx[GLES_MAX_TEXTURE_UNITS];   /* the right and upper neighbours', */
+    TexCoord tdy[GLES_MAX_TEXTURE_UNITS];   /* read when the filter needs LOD */
+    FRAGV fog;                              /* fog factor f */
+    FRAGV coverage;                         /* antialiasing coverage, FRAG_ONE if none */
+    uint32_t z;                             /* window depth (with the depth test on) */
+} FragIn;
+
+/* texturing, fog, coverage and the per-fragment operations for one fragment */
+void fragment_process(GlesContext *ctx, int x, int y, const FragIn *in);
 
 /* span.c: choose the span function for the current state */
 void span_choose(GlesContext *ctx);

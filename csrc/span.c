@@ -38,130 +38,147 @@ static void tex_coord(const TriSetup *t, int u, const WGT p[3], TexCoord *out)
     out->t = tt;
 }
 
-/* Every state: the reference path. Per pixel, in the spec's order:
-** colour, texturing, fog, alpha test, stencil test, depth test, blending,
-** dithering, logic op, masks (§3.7-3.8, §4.1). */
-static void span_generic(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
+/* One fragment through texturing, fog, coverage and the per-fragment
+** operations, in the spec's order (§3.7-3.9, §4.1): the shared tail of
+** every primitive's generic path. */
+void fragment_process(GlesContext *ctx, int x, int y, const FragIn *in)
 {
-    const Vertex *v0 = t->v[0], *v1 = t->v[1], *v2 = t->v[2];
-    const int depth = ctx->depth_test && ctx->depth;
-    const int stencil = ctx->stencil_test && ctx->stencil;
-    const int smooth = t->smooth;
+    const size_t at = (size_t)y * (size_t)ctx->width + (size_t)x;
     const int is565 = ctx->color_format == GLES_COLOR_RGB565;
     const int dither = ctx->dither && is565;
     static const uint32_t max565[4] = { 31, 63, 31, 0 }, shift565[4] = { 11, 5, 0, 0 };
     static const int bits565[3] = { 5, 6, 5 };
-    const size_t row = (size_t)y * (size_t)ctx->width;
     const unsigned int units = ctx->tex_units_on;
-    int64_t e[3];
-    for (int i = 0; i < 3; i++)
-        e[i] = t->ea[i] * x0 + t->eb[i] * y + t->ec[i];
+    FRAGV c[4];
+    for (int i = 0; i < 4; i++)
+        c[i] = in->c[i];
+    if (units) {
+        FRAGV cf[4], ct[GLES_MAX_TEXTURE_UNITS][4];
+        for (int i = 0; i < 4; i++)
+            cf[i] = c[i] = frag_clamp01(c[i]);
+        for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
+            if (units & (1u << u)) {
+                const Texture *tex = ctx->units[u].bound;
+                if (texture_needs_lod(tex))
+                    texture_sample(tex, &in->tc[u], &in->tdx[u], &in->tdy[u], ct[u], ctx->texel_unorm8);
+                else
+                    texture_sample(tex, &in->tc[u], NULL, NULL, ct[u], ctx->texel_unorm8);
+            }
+        for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
+            if (units & (1u << u))
+                texture_env(ctx, u, cf, ct, c);
+    }
+    if (ctx->fog) {
+        FRAGV f = in->fog;
+        /* C = f C + (1 - f) C_fog, in that form so f = 1 and f = 0 are exact */
+        for (int i = 0; i < 3; i++)
+            c[i] = frag_mul(f, frag_clamp01(c[i])) + frag_mul(FRAG_ONE - f, frag_from_num(ctx->n_fog_color[i]));
+    }
+    if (in->coverage != FRAG_ONE) /* §3.11: antialiasing scales alpha */
+        c[3] = frag_mul(frag_clamp01(c[3]), in->coverage);
+    if (ctx->alpha_test && !fragment_alpha_pass(ctx, c[3]))
+        return;
+    const int stencil = ctx->stencil_test && ctx->stencil;
+    uint8_t s = 0;
+    if (stencil) {
+        s = ctx->stencil[at];
+        if (!fragment_stencil_pass(ctx, s)) {
+            ctx->stencil[at] = fragment_stencil_op(ctx, ctx->stencil_fail, s);
+            return;
+        }
+    }
+    const int depth = ctx->depth_test && ctx->depth;
+    int zpass = depth ? fragment_compare(ctx->depth_func, in->z, ctx->depth[at]) : 1;
+    if (stencil)
+        ctx->stencil[at] = fragment_stencil_op(ctx, zpass ? ctx->stencil_zpass : ctx->stencil_zfail, s);
+    if (!zpass)
+        return;
+    if (depth && ctx->depth_mask)
+        ctx->depth[at] = in->z;
+
     uint32_t keep = 0; /* framebuffer bits the colour mask protects */
     for (int i = 0; i < (is565 ? 3 : 4); i++)
         if (!ctx->color_mask[i])
             keep |= is565 ? max565[i] << shift565[i] : 0xFFu << (8 * i);
-    const uint32_t fbmask = is565 ? 0xFFFFu : 0xFFFFFFFFu;
+    uint32_t dpacked = is565 ? ((uint16_t *)ctx->color)[at] : ((uint32_t *)ctx->color)[at];
+    FRAGV t_d = dither ? fragment_dither_threshold(x, y) : FRAG_ONE / 2;
+    FRAGV out[4];
+    if (ctx->blend && !ctx->color_logic_op) {
+        FRAGV src[4], dst[4];
+        for (int i = 0; i < 4; i++) {
+            src[i] = frag_clamp01(c[i]);
+            if (is565)
+                dst[i] = i == 3 ? FRAG_ONE : (i == 1 ? ctx->unorm6 : ctx->unorm5)[(dpacked >> shift565[i]) & max565[i]];
+            else
+                dst[i] = ctx->unorm8[(dpacked >> (8 * i)) & 0xFFu];
+        }
+        fragment_blend(ctx, src, dst, out);
+    } else {
+        for (int i = 0; i < 4; i++)
+            out[i] = c[i];
+    }
+    uint32_t packed = 0;
+    for (int i = 0; i < (is565 ? 3 : 4); i++) {
+        if (is565)
+            packed |= fragment_channel(out[i], bits565[i], dither, t_d) << shift565[i];
+        else
+            packed |= fragment_channel(out[i], 8, 0, t_d) << (8u * (uint32_t)i);
+    }
+    if (ctx->color_logic_op)
+        packed = fragment_logic_op(ctx->logic_op, packed, dpacked) & (is565 ? 0xFFFFu : 0xFFFFFFFFu);
+    packed = (dpacked & keep) | (packed & ~keep);
+    if (is565)
+        ((uint16_t *)ctx->color)[at] = (uint16_t)packed;
+    else
+        ((uint32_t *)ctx->color)[at] = packed;
+}
+
+/* Every state: the reference path for triangles. Per pixel it gathers the
+** fragment's inputs (colour, texture coordinates and their neighbours'
+** for the level of detail, fog, depth) and hands them to fragment_process. */
+static void span_generic(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
+{
+    const Vertex *v0 = t->v[0], *v1 = t->v[1], *v2 = t->v[2];
+    const int depth = ctx->depth_test && ctx->depth;
+    const int smooth = t->smooth;
+    const unsigned int units = ctx->tex_units_on;
+    int64_t e[3];
+    for (int i = 0; i < 3; i++)
+        e[i] = t->ea[i] * x0 + t->eb[i] * y + t->ec[i];
+    FragIn in;
+    in.coverage = FRAG_ONE;
+    in.z = 0;
+    in.fog = 0;
     for (int k = 0; k < n; k++, e[0] += t->ea[0], e[1] += t->ea[1], e[2] += t->ea[2]) {
-        const int x = x0 + k;
-        const size_t at = row + (size_t)x;
         WGT p[3];
         wgt_persp(&t->wgt, e, p);
-        FRAGV c[4];
         for (int i = 0; i < 4; i++)
-            c[i] = smooth ? frag_lerp3f(t->col[0][i], t->col[1][i], t->col[2][i], p[0], p[1], p[2]) : t->flat[i];
-        if (units) {
-            FRAGV cf[4], ct[GLES_MAX_TEXTURE_UNITS][4];
-            for (int i = 0; i < 4; i++)
-                cf[i] = c[i] = frag_clamp01(c[i]);
-            for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++) {
-                if (!(units & (1u << u)))
-                    continue;
-                const Texture *tex = ctx->units[u].bound;
-                TexCoord tc, tx, ty;
-                tex_coord(t, u, p, &tc);
-                if (texture_needs_lod(tex)) {
-                    /* the right and upper neighbours' coordinates */
-                    int64_t ex[3] = { e[0] + t->ea[0], e[1] + t->ea[1], e[2] + t->ea[2] };
-                    int64_t ey[3] = { e[0] + t->eb[0], e[1] + t->eb[1], e[2] + t->eb[2] };
-                    WGT px[3], py[3];
-                    wgt_persp_any(&t->wgt, ex, px);
-                    wgt_persp_any(&t->wgt, ey, py);
-                    tex_coord(t, u, px, &tx);
-                    tex_coord(t, u, py, &ty);
-                    texture_sample(tex, &tc, &tx, &ty, ct[u], ctx->texel_unorm8);
-                } else {
-                    texture_sample(tex, &tc, NULL, NULL, ct[u], ctx->texel_unorm8);
-                }
-            }
-            for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
-                if (units & (1u << u))
-                    texture_env(ctx, u, cf, ct, c);
-        }
-        if (ctx->fog) {
-            FRAGV f = ctx->fog_per_fragment
-                          ? frag_from_num(fog_factor(ctx, wgt_lerp3(v0->fog, v1->fog, v2->fog, p[0], p[1], p[2])))
-                          : frag_clamp01(frag_lerp3(v0->fog, v1->fog, v2->fog, p[0], p[1], p[2]));
-            /* C = f C + (1 - f) C_fog, in that form so f = 1 and f = 0 are exact */
-            for (int i = 0; i < 3; i++)
-                c[i] = frag_mul(f, frag_clamp01(c[i])) + frag_mul(FRAG_ONE - f, frag_from_num(ctx->n_fog_color[i]));
-        }
-        if (ctx->alpha_test && !fragment_alpha_pass(ctx, c[3]))
-            continue;
-        uint8_t s = 0;
-        if (stencil) {
-            s = ctx->stencil[at];
-            if (!fragment_stencil_pass(ctx, s)) {
-                ctx->stencil[at] = fragment_stencil_op(ctx, ctx->stencil_fail, s);
+            in.c[i] = smooth ? frag_lerp3f(t->col[0][i], t->col[1][i], t->col[2][i], p[0], p[1], p[2]) : t->flat[i];
+        for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++) {
+            if (!(units & (1u << u)))
                 continue;
+            tex_coord(t, u, p, &in.tc[u]);
+            if (texture_needs_lod(ctx->units[u].bound)) {
+                /* the right and upper neighbours' coordinates */
+                int64_t ex[3] = { e[0] + t->ea[0], e[1] + t->ea[1], e[2] + t->ea[2] };
+                int64_t ey[3] = { e[0] + t->eb[0], e[1] + t->eb[1], e[2] + t->eb[2] };
+                WGT px[3], py[3];
+                wgt_persp_any(&t->wgt, ex, px);
+                wgt_persp_any(&t->wgt, ey, py);
+                tex_coord(t, u, px, &in.tdx[u]);
+                tex_coord(t, u, py, &in.tdy[u]);
             }
         }
-        int zpass = 1;
-        uint32_t z = 0;
+        if (ctx->fog)
+            in.fog = ctx->fog_per_fragment
+                         ? frag_from_num(fog_factor(ctx, wgt_lerp3(v0->fog, v1->fog, v2->fog, p[0], p[1], p[2])))
+                         : frag_clamp01(frag_lerp3(v0->fog, v1->fog, v2->fog, p[0], p[1], p[2]));
         if (depth) {
             WGT l[3];
             wgt_linear(&t->wgt, e, l);
-            z = wgt_depth3(v0->wz, v1->wz, v2->wz, l[0], l[1], l[2], ctx->depth_max);
-            zpass = fragment_compare(ctx->depth_func, z, ctx->depth[at]);
+            in.z = wgt_depth3(v0->wz, v1->wz, v2->wz, l[0], l[1], l[2], ctx->depth_max);
         }
-        if (stencil)
-            ctx->stencil[at] = fragment_stencil_op(ctx, zpass ? ctx->stencil_zpass : ctx->stencil_zfail, s);
-        if (!zpass)
-            continue;
-        if (depth && ctx->depth_mask)
-            ctx->depth[at] = z;
-
-        uint32_t dpacked = is565 ? ((uint16_t *)ctx->color)[at] : ((uint32_t *)ctx->color)[at];
-        FRAGV t_d = dither ? fragment_dither_threshold(x, y) : FRAG_ONE / 2;
-        FRAGV out[4];
-        if (ctx->blend && !ctx->color_logic_op) {
-            FRAGV src[4], dst[4];
-            for (int i = 0; i < 4; i++) {
-                src[i] = frag_clamp01(c[i]);
-                if (is565)
-                    dst[i] = i == 3 ? FRAG_ONE
-                           : (i == 1 ? ctx->unorm6 : ctx->unorm5)[(dpacked >> shift565[i]) & max565[i]];
-                else
-                    dst[i] = ctx->unorm8[(dpacked >> (8 * i)) & 0xFFu];
-            }
-            fragment_blend(ctx, src, dst, out);
-        } else {
-            for (int i = 0; i < 4; i++)
-                out[i] = c[i];
-        }
-        uint32_t packed = 0;
-        for (int i = 0; i < (is565 ? 3 : 4); i++) {
-            if (is565)
-                packed |= fragment_channel(out[i], bits565[i], dither, t_d) << shift565[i];
-            else
-                packed |= fragment_channel(out[i], 8, 0, t_d) << (8u * (uint32_t)i);
-        }
-        if (ctx->color_logic_op)
-            packed = fragment_logic_op(ctx->logic_op, packed, dpacked) & fbmask;
-        packed = (dpacked & keep) | (packed & ~keep);
-        if (is565)
-            ((uint16_t *)ctx->color)[at] = (uint16_t)packed;
-        else
-            ((uint32_t *)ctx->color)[at] = packed;
+        fragment_process(ctx, x0 + k, y, &in);
     }
 }
 
