@@ -139,6 +139,14 @@ GlesContext *gles_context_create(int width, int height, int color_format,
     fragment_init(ctx);
     fog_init(ctx);
     texture_init(ctx);
+    /* Tables 6.x: point and line state */
+    ctx->point_size = ctx->line_width = 1.0;
+    ctx->n_point_size = NUM_ONE;
+    ctx->point_size_max = 64.0;
+    ctx->n_point_size_max = num_from_int(64);
+    ctx->point_fade_threshold = 1.0;
+    ctx->point_attenuation[0] = 1.0;
+    ctx->n_point_attenuation[0] = NUM_ONE;
     array_init(ctx);
     ctx->dirty = DIRTY_ALL;
     return ctx;
@@ -224,6 +232,10 @@ static void set_enable(GlesContext *ctx, unsigned int cap, int on)
     case GL_DITHER: ctx->dither = on; break;
     case GL_COLOR_LOGIC_OP: ctx->color_logic_op = on; break;
     case GL_FOG: ctx->fog = on; ctx->dirty |= DIRTY_CLIP; break;
+    case GL_POINT_SMOOTH: ctx->point_smooth = on; break;
+    case GL_LINE_SMOOTH: ctx->line_smooth = on; break;
+    case GL_POINT_SPRITE_OES: ctx->point_sprite = on; break;
+    case GL_POLYGON_OFFSET_FILL: ctx->polygon_offset_fill = on; break;
     case GL_LIGHTING: ctx->lighting = on; ctx->dirty |= DIRTY_LIGHT | DIRTY_CLIP; break;
     case GL_MATRIX_PALETTE_OES: ctx->matrix_palette = on; ctx->dirty |= DIRTY_LIGHT | DIRTY_CLIP; break;
     case GL_NORMALIZE: ctx->normalize = on; break;
@@ -473,6 +485,19 @@ int gles_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)
     case GL_MAX_CLIP_PLANES: return put1(out, kind, GLES_KIND_INT, GLES_MAX_CLIP_PLANES);
     case GL_MAX_TEXTURE_UNITS: return put1(out, kind, GLES_KIND_INT, GLES_MAX_TEXTURE_UNITS);
     case GL_MAX_LIGHTS: return put1(out, kind, GLES_KIND_INT, GLES_MAX_LIGHTS);
+    case GL_ALIASED_POINT_SIZE_RANGE: case GL_SMOOTH_POINT_SIZE_RANGE:
+    case GL_ALIASED_LINE_WIDTH_RANGE: case GL_SMOOTH_LINE_WIDTH_RANGE:
+        v[0] = 1;
+        v[1] = 64;
+        return put(out, kind, GLES_KIND_FLOAT, 2, v);
+    case GL_POINT_SIZE: return put1(out, kind, GLES_KIND_FLOAT, ctx->point_size);
+    case GL_LINE_WIDTH: return put1(out, kind, GLES_KIND_FLOAT, ctx->line_width);
+    case GL_POINT_SIZE_MIN: return put1(out, kind, GLES_KIND_FLOAT, ctx->point_size_min);
+    case GL_POINT_SIZE_MAX: return put1(out, kind, GLES_KIND_FLOAT, ctx->point_size_max);
+    case GL_POINT_FADE_THRESHOLD_SIZE: return put1(out, kind, GLES_KIND_FLOAT, ctx->point_fade_threshold);
+    case GL_POINT_DISTANCE_ATTENUATION: return put(out, kind, GLES_KIND_FLOAT, 3, ctx->point_attenuation);
+    case GL_POLYGON_OFFSET_FACTOR: return put1(out, kind, GLES_KIND_FLOAT, ctx->offset_factor);
+    case GL_POLYGON_OFFSET_UNITS: return put1(out, kind, GLES_KIND_FLOAT, ctx->offset_units);
     case GL_MAX_PALETTE_MATRICES_OES: return put1(out, kind, GLES_KIND_INT, GLES_MAX_PALETTE_MATRICES);
     case GL_MAX_VERTEX_UNITS_OES: return put1(out, kind, GLES_KIND_INT, GLES_MAX_VERTEX_UNITS);
     case GL_CURRENT_PALETTE_MATRIX_OES: return put1(out, kind, GLES_KIND_INT, ctx->current_palette);
@@ -564,4 +589,67 @@ int gles_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)
         return put1(out, kind, GLES_KIND_BOOL, gles_IsEnabled(ctx, pname));
     ctx_error(ctx, GL_INVALID_ENUM);
     return 0;
+}
+
+/* {====================================================================
+** points, lines, polygon offset (§3.3-3.5) */
+
+void gles_PointSize(GlesContext *ctx, double size)
+{
+    if (!(size > 0)) {
+        ctx_error(ctx, GL_INVALID_VALUE);
+        return;
+    }
+    ctx->point_size = size;
+    ctx->n_point_size = num_from_double(size);
+}
+
+void gles_LineWidth(GlesContext *ctx, double width)
+{
+    if (!(width > 0)) {
+        ctx_error(ctx, GL_INVALID_VALUE);
+        return;
+    }
+    ctx->line_width = width;
+}
+
+void gles_PointParameter(GlesContext *ctx, unsigned int pname, const double *p, int vector)
+{
+    switch (pname) {
+    case GL_POINT_SIZE_MIN: case GL_POINT_SIZE_MAX: case GL_POINT_FADE_THRESHOLD_SIZE:
+        if (!(p[0] >= 0)) {
+            ctx_error(ctx, GL_INVALID_VALUE);
+            return;
+        }
+        if (pname == GL_POINT_SIZE_MIN) {
+            ctx->point_size_min = p[0];
+            ctx->n_point_size_min = num_from_double(p[0]);
+        } else if (pname == GL_POINT_SIZE_MAX) {
+            ctx->point_size_max = p[0];
+            ctx->n_point_size_max = num_from_double(p[0]);
+        } else {
+            ctx->point_fade_threshold = p[0];
+        }
+        break;
+    case GL_POINT_DISTANCE_ATTENUATION:
+        if (!vector) {
+            ctx_error(ctx, GL_INVALID_ENUM);
+            return;
+        }
+        for (int i = 0; i < 3; i++) {
+            ctx->point_attenuation[i] = p[i];
+            ctx->n_point_attenuation[i] = num_from_double(p[i]);
+        }
+        ctx->dirty |= DIRTY_CLIP;
+        break;
+    default:
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+}
+
+void gles_PolygonOffset(GlesContext *ctx, double factor, double units)
+{
+    ctx->offset_factor = factor;
+    ctx->offset_units = units;
 }

@@ -15,5 +15,7 @@
 #include "fog.c"
 #include "texture.c"
 #include "span.c"
+#include "point.c"
+#include "line.c"
 #include "draw.c"
 #include "framebuffer.c"

@@ -8,8 +8,8 @@
 **       is never cleared); then per primitive trivial reject and culling;
 **       then attributes only for vertices of primitives that survive; then
 **       clipping of the few that cross a plane, and rasterization.
-** Points and lines are assembled and clipped here; their rasterization is a
-** stage of its own that does not exist yet, so they produce no fragments.
+** Points and lines are assembled and clipped here and rasterized by
+** point.c and line.c.
 */
 #include <stdlib.h>
 #include <string.h>
@@ -18,6 +18,8 @@
 #include "vertex.h"
 #include "clip.h"
 #include "raster.h"
+#include "point.h"
+#include "line.h"
 
 /* stamps: a vertex whose stamp is base has its position, base + 1 also its
 ** attributes; base advances by 2 per draw */
@@ -157,7 +159,12 @@ static void line(Batch *b, int64_t i0, int64_t i1)
     unsigned int codes = v0->outcode | v1->outcode;
     if (codes && !clip_line(ctx, v0, v1, codes, &pa, &pb, scratch))
         return;
-    /* line rasterization (§3.4) is not built yet: no fragments */
+    if (pa->outcode & CLIP_NEW_VERTEX)
+        vertex_window(ctx, (Vertex *)pa);
+    if (pb->outcode & CLIP_NEW_VERTEX)
+        vertex_window(ctx, (Vertex *)pb);
+    /* Table 2.10: a line's provoking vertex is its second */
+    raster_line(ctx, pa, pb, v1);
 }
 
 static void point(Batch *b, int64_t i0)
@@ -166,7 +173,7 @@ static void point(Batch *b, int64_t i0)
     if (v->outcode)
         return;
     attribs(b, i0, v);
-    /* point rasterization (§3.3) is not built yet: no fragments */
+    raster_point(b->ctx, v);
 }
 
 /* index source: either a range or an index array */

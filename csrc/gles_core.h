@@ -182,6 +182,14 @@ int64_t texture_image_bytes(const GlesContext *ctx, int width, int height, unsig
 int64_t texture_paletted_bytes(unsigned int internalformat, int levels, int width, int height);
 
 /* {====================================================================
+** points, lines and polygon offset (§3.3-3.5); PointParameter's params as
+** Light's */
+void gles_PointSize(GlesContext *ctx, double size);
+void gles_LineWidth(GlesContext *ctx, double width);
+void gles_PointParameter(GlesContext *ctx, unsigned int pname, const double *params, int vector);
+void gles_PolygonOffset(GlesContext *ctx, double factor, double units);
+
+/* {====================================================================
 ** current values */
 void gles_Color4(GlesContext *ctx, double r, double g, double b, double a);
 void gles_Normal3(GlesContext *ctx, double x, double y, double z);

@@ -236,6 +236,7 @@ static inline NUM num_rsqrt(NUM a) { return a > 0 ? NUM_ONE / NUM_SQRT(a) : NUM_
 static inline NUM num_min(NUM a, NUM b) { return a < b ? a : b; }
 static inline NUM num_max(NUM a, NUM b) { return a > b ? a : b; }
 static inline NUM num_clamp01(NUM a) { return a < NUM_ZERO ? NUM_ZERO : (a > NUM_ONE ? NUM_ONE : a); }
+static inline NUM num_clamp_range(NUM a, NUM lo, NUM hi) { return a < lo ? lo : (a > hi ? hi : a); }
 
 /* a * b where b is an integer (counts, sizes): exact in every build */
 static inline NUM num_mul_int(NUM a, int64_t b)
@@ -520,6 +521,8 @@ static inline uint32_t wgt_depth3(DEPTHV z0, DEPTHV z1, DEPTHV z2, WGT w0, WGT w
     return (uint32_t)i64_clamp(v, 0, maxval);
 }
 
+static inline double depthv_to_double(DEPTHV z) { return (double)z / 65536.0; }
+
 static inline DEPTHV depthv_from_num(NUM z01, uint32_t maxval)
 {
     /* z01 in [0,1] (16.16) times maxval, keeping 16 fraction bits */
@@ -541,6 +544,8 @@ static inline uint32_t wgt_depth3(DEPTHV z0, DEPTHV z1, DEPTHV z2, WGT w0, WGT w
     NUM v = z0 * w0 + z1 * w1 + z2 * w2;
     return (uint32_t)dbl_to_i64((double)v, 0, maxval);
 }
+
+static inline double depthv_to_double(DEPTHV z) { return (double)z; }
 
 static inline DEPTHV depthv_from_num(NUM z01, uint32_t maxval)
 {
@@ -920,6 +925,8 @@ static inline int64_t texc_ifloor(TEXC s) { return s >> 32; }
 static inline TEXC texc_from_num(NUM a) { return (int64_t)a * 65536; }
 static inline TEXC texc_abs(TEXC a) { return a < 0 ? -a : a; }
 static inline TEXC texc_clamp(TEXC a, TEXC lim) { return a < -lim ? -lim : (a > lim ? lim : a); }
+/* n / d for integers (|n| < 2^31, d > 0) */
+static inline TEXC texc_ratio(int64_t n, int64_t d) { return d ? (n * TEXC_ONE) / d : 0; }
 /* a * n for an integer n (texture size): exact */
 static inline TEXC texc_scale(TEXC a, int n) { return a * n; }
 /* bilinear weights: the fraction of a texel coordinate in 16 bits */
@@ -984,6 +991,7 @@ static inline int64_t texc_ifloor(TEXC s) { return dbl_to_i64(floor((double)s), 
 static inline TEXC texc_from_num(NUM a) { return a; }
 static inline TEXC texc_abs(TEXC a) { return a < 0 ? -a : a; }
 static inline TEXC texc_clamp(TEXC a, TEXC lim) { return a < -lim ? -lim : (a > lim ? lim : a); }
+static inline TEXC texc_ratio(int64_t n, int64_t d) { return d ? (NUM)n / (NUM)d : 0; }
 static inline TEXC texc_scale(TEXC a, int n) { return a * (NUM)n; }
 typedef NUM TEXW;
 static inline TEXW texc_frac_weight(TEXC u) { return u - NUM_FLOOR(u); }

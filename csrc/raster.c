@@ -142,6 +142,20 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
     ** constant-colour span, which every path agrees on */
     t.smooth = ctx->shade_model == GL_SMOOTH
             && (memcmp(t.col[0], t.col[1], 4 * sizeof(FRAGV)) | memcmp(t.col[0], t.col[2], 4 * sizeof(FRAGV)));
+    t.depth_offset = 0;
+    if (ctx->polygon_offset_fill && ctx->depth) {
+        /* §3.5.2: o = m factor + r units, m = max(|dz/dx|, |dz/dy|) (the
+        ** allowed bound), r = one depth unit; the slope is a per-triangle
+        ** quantity, computed in double in every build */
+        double z0 = depthv_to_double(a->wz), z1 = depthv_to_double(b->wz), z2 = depthv_to_double(c->wz);
+        double dx1 = (double)(b->wx - a->wx), dy1 = (double)(b->wy - a->wy);
+        double dx2 = (double)(c->wx - a->wx), dy2 = (double)(c->wy - a->wy);
+        double ar = (double)area2, one = GLES_SUBPIXEL_ONE;
+        double gx = ((z1 - z0) * dy2 - (z2 - z0) * dy1) / ar * one;
+        double gy = ((z2 - z0) * dx1 - (z1 - z0) * dx2) / ar * one;
+        double m = fabs(gx) > fabs(gy) ? fabs(gx) : fabs(gy);
+        t.depth_offset = dbl_to_i64(m * ctx->offset_factor + ctx->offset_units, -((int64_t)1 << 40), (int64_t)1 << 40);
+    }
     t.tex_projective = 0;
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
         if ((ctx->tex_units_on & (1u << u)) && (a->tex[u][3] != NUM_ONE || b->tex[u][3] != NUM_ONE || c->tex[u][3] != NUM_ONE))
@@ -197,4 +211,12 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
         if (lo < hi)
             span(ctx, &t, (int)py, (int)lo, (int)(hi - lo));
     }
+}
+
+uint32_t raster_offset_depth(const GlesContext *ctx, const TriSetup *t, uint32_t z)
+{
+    if (!t->depth_offset)
+        return z;
+    /* clamp after the offset (§3.5.2) */
+    return (uint32_t)i64_clamp((int64_t)z + t->depth_offset, 0, ctx->depth_max);
 }

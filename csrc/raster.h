@@ -17,6 +17,7 @@ struct TriSetup {
     const FRAGV *col[3];    /* each vertex's colour for the visible face */
     int smooth;             /* colours vary over the triangle */
     unsigned int tex_projective;  /* bit per unit whose q varies (divide by q) */
+    int64_t depth_offset;         /* polygon offset in depth units, 0 when off */
     FRAGV flat[4];          /* colour of the provoking vertex */
     uint32_t flat_packed;   /* the same in the framebuffer's format */
 };
@@ -42,6 +43,11 @@ typedef struct FragIn {
 
 /* texturing, fog, coverage and the per-fragment operations for one fragment */
 void fragment_process(GlesContext *ctx, int x, int y, const FragIn *in);
+
+void fragment_from_setup(GlesContext *ctx, const TriSetup *t, const int64_t e[3], int x, int y, FRAGV coverage,
+                         const TexCoord *sprite, const TexCoord *sprite_dx, const TexCoord *sprite_dy);
+/* polygon offset (§3.5.2) applied to a triangle fragment's depth */
+uint32_t raster_offset_depth(const GlesContext *ctx, const TriSetup *t, uint32_t z);
 
 /* span.c: choose the span function for the current state */
 void span_choose(GlesContext *ctx);

@@ -133,53 +133,65 @@ void fragment_process(GlesContext *ctx, int x, int y, const FragIn *in)
         ((uint32_t *)ctx->color)[at] = packed;
 }
 
-/* Every state: the reference path for triangles. Per pixel it gathers the
-** fragment's inputs (colour, texture coordinates and their neighbours'
-** for the level of detail, fog, depth) and hands them to fragment_process. */
-static void span_generic(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
+/* The fragment at (x, y) of a primitive described by a TriSetup, with edge
+** values e (weights come from t->wgt; t->ea and t->eb are the edge steps to
+** the right and upper neighbours, for the level of detail). Triangles,
+** lines and points all end here. */
+void fragment_from_setup(GlesContext *ctx, const TriSetup *t, const int64_t e[3], int x, int y, FRAGV coverage,
+                         const TexCoord *sprite, const TexCoord *sprite_dx, const TexCoord *sprite_dy)
 {
     const Vertex *v0 = t->v[0], *v1 = t->v[1], *v2 = t->v[2];
-    const int depth = ctx->depth_test && ctx->depth;
-    const int smooth = t->smooth;
     const unsigned int units = ctx->tex_units_on;
+    FragIn in;
+    in.coverage = coverage;
+    in.z = 0;
+    in.fog = 0;
+    WGT p[3];
+    wgt_persp(&t->wgt, e, p);
+    for (int i = 0; i < 4; i++)
+        in.c[i] = t->smooth ? frag_lerp3f(t->col[0][i], t->col[1][i], t->col[2][i], p[0], p[1], p[2]) : t->flat[i];
+    for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++) {
+        if (!(units & (1u << u)))
+            continue;
+        if (sprite && ctx->units[u].coord_replace) {
+            in.tc[u] = *sprite;
+            in.tdx[u] = *sprite_dx;
+            in.tdy[u] = *sprite_dy;
+            continue;
+        }
+        tex_coord(t, u, p, &in.tc[u]);
+        if (texture_needs_lod(ctx->units[u].bound)) {
+            /* the right and upper neighbours' coordinates */
+            int64_t ex[3] = { e[0] + t->ea[0], e[1] + t->ea[1], e[2] + t->ea[2] };
+            int64_t ey[3] = { e[0] + t->eb[0], e[1] + t->eb[1], e[2] + t->eb[2] };
+            WGT px[3], py[3];
+            wgt_persp_any(&t->wgt, ex, px);
+            wgt_persp_any(&t->wgt, ey, py);
+            tex_coord(t, u, px, &in.tdx[u]);
+            tex_coord(t, u, py, &in.tdy[u]);
+        }
+    }
+    if (ctx->fog)
+        in.fog = ctx->fog_per_fragment
+                     ? frag_from_num(fog_factor(ctx, wgt_lerp3(v0->fog, v1->fog, v2->fog, p[0], p[1], p[2])))
+                     : frag_clamp01(frag_lerp3(v0->fog, v1->fog, v2->fog, p[0], p[1], p[2]));
+    if (ctx->depth_test && ctx->depth) {
+        WGT l[3];
+        wgt_linear(&t->wgt, e, l);
+        in.z = wgt_depth3(v0->wz, v1->wz, v2->wz, l[0], l[1], l[2], ctx->depth_max);
+        in.z = raster_offset_depth(ctx, t, in.z);
+    }
+    fragment_process(ctx, x, y, &in);
+}
+
+/* Every state: the reference path for triangles. */
+static void span_generic(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
+{
     int64_t e[3];
     for (int i = 0; i < 3; i++)
         e[i] = t->ea[i] * x0 + t->eb[i] * y + t->ec[i];
-    FragIn in;
-    in.coverage = FRAG_ONE;
-    in.z = 0;
-    in.fog = 0;
-    for (int k = 0; k < n; k++, e[0] += t->ea[0], e[1] += t->ea[1], e[2] += t->ea[2]) {
-        WGT p[3];
-        wgt_persp(&t->wgt, e, p);
-        for (int i = 0; i < 4; i++)
-            in.c[i] = smooth ? frag_lerp3f(t->col[0][i], t->col[1][i], t->col[2][i], p[0], p[1], p[2]) : t->flat[i];
-        for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++) {
-            if (!(units & (1u << u)))
-                continue;
-            tex_coord(t, u, p, &in.tc[u]);
-            if (texture_needs_lod(ctx->units[u].bound)) {
-                /* the right and upper neighbours' coordinates */
-                int64_t ex[3] = { e[0] + t->ea[0], e[1] + t->ea[1], e[2] + t->ea[2] };
-                int64_t ey[3] = { e[0] + t->eb[0], e[1] + t->eb[1], e[2] + t->eb[2] };
-                WGT px[3], py[3];
-                wgt_persp_any(&t->wgt, ex, px);
-                wgt_persp_any(&t->wgt, ey, py);
-                tex_coord(t, u, px, &in.tdx[u]);
-                tex_coord(t, u, py, &in.tdy[u]);
-            }
-        }
-        if (ctx->fog)
-            in.fog = ctx->fog_per_fragment
-                         ? frag_from_num(fog_factor(ctx, wgt_lerp3(v0->fog, v1->fog, v2->fog, p[0], p[1], p[2])))
-                         : frag_clamp01(frag_lerp3(v0->fog, v1->fog, v2->fog, p[0], p[1], p[2]));
-        if (depth) {
-            WGT l[3];
-            wgt_linear(&t->wgt, e, l);
-            in.z = wgt_depth3(v0->wz, v1->wz, v2->wz, l[0], l[1], l[2], ctx->depth_max);
-        }
-        fragment_process(ctx, x0 + k, y, &in);
-    }
+    for (int k = 0; k < n; k++, e[0] += t->ea[0], e[1] += t->ea[1], e[2] += t->ea[2])
+        fragment_from_setup(ctx, t, e, x0 + k, y, FRAG_ONE, NULL, NULL, NULL);
 }
 
 #define SPAN_NAME span_flat
@@ -297,7 +309,7 @@ static int simple_but_texture(const GlesContext *ctx, int bk)
     return ctx->color_format == GLES_COLOR_RGBA8888 && ctx->color_mask[0] && ctx->color_mask[1]
         && ctx->color_mask[2] && ctx->color_mask[3] && !(ctx->debug & GLES_DEBUG_GENERIC_SPANS)
         && !ctx->alpha_test && !(ctx->stencil_test && ctx->stencil) && !ctx->fog && !ctx->color_logic_op
-        && bk >= 0;
+        && !ctx->polygon_offset_fill && bk >= 0;
 }
 
 void span_choose(GlesContext *ctx)

@@ -213,6 +213,13 @@ struct GlesContext {
     FRAGV unorm8[256];         /* d / 255 as FRAGV: blending reads these */
     FRAGV unorm5[32], unorm6[64];
 
+    /* points, lines and polygon offset (§3.3-3.5) */
+    double point_size, line_width, point_size_min, point_size_max, point_fade_threshold;
+    double point_attenuation[3];
+    NUM n_point_size, n_point_size_min, n_point_size_max, n_point_attenuation[3];
+    int point_smooth, line_smooth, point_sprite, polygon_offset_fill;
+    double offset_factor, offset_units;
+
     /* fog (§3.8) */
     int fog;
     unsigned int fog_mode;

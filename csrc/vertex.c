@@ -24,7 +24,9 @@ void vertex_validate(GlesContext *ctx)
     }
     if (ctx->dirty & (DIRTY_CLIP | DIRTY_MATRIX)) {
         unsigned int mask = CLIP_LEFT | CLIP_RIGHT | CLIP_BOTTOM | CLIP_TOP | CLIP_NEAR | CLIP_FAR | CLIP_W;
-        ctx->need_eye = ctx->lighting || ctx->matrix_palette || ctx->fog;
+        const NUM *pa = ctx->n_point_attenuation;
+        int point_distance = pa[0] != NUM_ONE || pa[1] != NUM_ZERO || pa[2] != NUM_ZERO;
+        ctx->need_eye = ctx->lighting || ctx->matrix_palette || ctx->fog || point_distance;
         for (int i = 0; i < GLES_MAX_CLIP_PLANES; i++)
             if (ctx->clip_plane_enabled[i]) {
                 mask |= CLIP_USER0 << i;

@@ -678,10 +678,31 @@ def test_all_modes(numeric, mode, how):
     if mode in (G.GL_TRIANGLES, G.GL_TRIANGLE_STRIP, G.GL_TRIANGLE_FAN):
         assert_drawn(px, QUAD_TRIS, (240, 120, 60, 255), background=(0, 0, 128, 255))
     else:
-        # Point and line rasterization (§3.3, §3.4) is not built yet: these
-        # primitives are assembled and clipped but produce no fragments, so
-        # the framebuffer must be exactly as before.
-        np.testing.assert_array_equal(px, before)
+        drawn = np.any(px != before, axis=-1)
+        color = np.array([240, 120, 60, 255], dtype=np.uint8)
+        assert np.all(px[drawn] == color)
+        corners = QUAD[order]
+        if mode == G.GL_POINTS:
+            # §3.3: a size-1 point is the pixel holding its vertex
+            expect = np.zeros_like(drawn)
+            for x, y in corners:
+                expect[int(np.floor(y)), int(np.floor(x))] = True
+            np.testing.assert_array_equal(drawn, expect)
+        else:
+            # §3.4: width-1 segments; every fragment lies within one pixel of
+            # a segment, and segments of at least a few pixels are drawn
+            segs = {G.GL_LINES: [(0, 1), (2, 3)], G.GL_LINE_STRIP: [(0, 1), (1, 2), (2, 3)],
+                    G.GL_LINE_LOOP: [(0, 1), (1, 2), (2, 3), (3, 0)]}[mode]
+            ys, xs = np.nonzero(drawn)
+            centres = np.column_stack([xs + 0.5, ys + 0.5])
+            dist = np.full(len(centres), np.inf)
+            for i, j in segs:
+                a, b = corners[i], corners[j]
+                d = b - a
+                t = np.clip(((centres - a) @ d) / (d @ d), 0, 1)
+                dist = np.minimum(dist, np.linalg.norm(centres - (a + t[:, None] * d), axis=1))
+            assert dist.max() <= 1.0
+            assert drawn.sum() >= 20 * len(segs)
 
 
 # {====================================================================

@@ -57,12 +57,8 @@ _FIX = 1.0 / 65536.0
 # The ES 1.1 commands whose pipeline stage is not built yet. Each exists and
 # raises NotImplementedError naming its stage; README.md lists them.
 _MISSING_BOTH = {
-    "points and lines": "glPointSizex glLineWidthx glPointParameterx glPointParameterxv",
-    "polygon offset": "glPolygonOffsetx",
 }
 _MISSING_COMMON = {
-    "points and lines": "glPointSize glLineWidth glPointParameterf glPointParameterfv",
-    "polygon offset": "glPolygonOffset",
 }
 
 
@@ -75,7 +71,7 @@ _TEX_COUNT = {C.GL_TEXTURE_ENV_COLOR: 4, C.GL_TEXTURE_CROP_RECT_OES: 4}
 _PARAM_COUNT = {
     C.GL_AMBIENT: 4, C.GL_DIFFUSE: 4, C.GL_SPECULAR: 4, C.GL_POSITION: 4, C.GL_EMISSION: 4,
     C.GL_AMBIENT_AND_DIFFUSE: 4, C.GL_LIGHT_MODEL_AMBIENT: 4, C.GL_SPOT_DIRECTION: 3,
-    C.GL_FOG_COLOR: 4,
+    C.GL_FOG_COLOR: 4, C.GL_POINT_DISTANCE_ATTENUATION: 3,
 }
 
 
@@ -697,6 +693,31 @@ class GLBase:
         return self._tex_get(self._lib.gles_GetTexEnv, target, pname, "x")
 
     # {================================================================
+    # points, lines and polygon offset (§3.3-3.5)
+
+    def glPointSizex(self, size: int) -> None:
+        with self._lock:
+            self._lib.gles_PointSize(self._p, _fixed(size))
+
+    def glLineWidthx(self, width: int) -> None:
+        with self._lock:
+            self._lib.gles_LineWidth(self._p, _fixed(width))
+
+    def glPointParameterx(self, pname: int, param: int) -> None:
+        buf = self._scalar(param, True)
+        with self._lock:
+            self._lib.gles_PointParameter(self._p, pname, buf, 0)
+
+    def glPointParameterxv(self, pname: int, params: Any) -> None:
+        buf = self._params(pname, params, True, "glPointParameterxv")
+        with self._lock:
+            self._lib.gles_PointParameter(self._p, pname, buf, 1)
+
+    def glPolygonOffsetx(self, factor: int, units: int) -> None:
+        with self._lock:
+            self._lib.gles_PolygonOffset(self._p, _fixed(factor), _fixed(units))
+
+    # {================================================================
     # vertex arrays and buffer objects
 
     def _set_pointer(self, key: Any, fn: Any, args: tuple, gltype: int, pointer: Pointer, what: str) -> None:
@@ -949,6 +970,28 @@ class GLCommon(GLBase):
 
     def glGetTexEnvfv(self, target: int, pname: int) -> Any:
         return self._tex_get(self._lib.gles_GetTexEnv, target, pname, "f")
+
+    def glPointSize(self, size: float) -> None:
+        with self._lock:
+            self._lib.gles_PointSize(self._p, size)
+
+    def glLineWidth(self, width: float) -> None:
+        with self._lock:
+            self._lib.gles_LineWidth(self._p, width)
+
+    def glPointParameterf(self, pname: int, param: float) -> None:
+        buf = self._scalar(param, False)
+        with self._lock:
+            self._lib.gles_PointParameter(self._p, pname, buf, 0)
+
+    def glPointParameterfv(self, pname: int, params: Any) -> None:
+        buf = self._params(pname, params, False, "glPointParameterfv")
+        with self._lock:
+            self._lib.gles_PointParameter(self._p, pname, buf, 1)
+
+    def glPolygonOffset(self, factor: float, units: float) -> None:
+        with self._lock:
+            self._lib.gles_PolygonOffset(self._p, factor, units)
 
     def glGetClipPlanef(self, plane: int) -> np.ndarray:
         eq = self._ffi.new("double[4]")

@@ -1,0 +1,127 @@
+/*
+** line.c -- line rasterization (ES 1.1 §3.4).
+** Consumes: two vertices with window coordinates (after clipping).
+** Aliased lines: for an x-major line, each pixel column whose centre lies in
+**       the half-open span from the first endpoint to the second gets the
+**       fragments whose centres are within width/2 of the line, measured
+**       vertically (one fragment for width 1: the diamond-exit rule away
+**       from the endpoints); y-major lines likewise by rows. Shared endpoints
+**       of strips and loops are therefore drawn once.
+** Smooth lines: the coverage of a width x length rectangle, from 4x4
+**       samples per pixel (an estimate, as §3.4.2 allows; computed in
+**       double), multiplies alpha.
+** Attributes: perspective-correct along the line, through the triangle
+**       weights with the edge values (|D| - |n|, |n|, 0); depth linear.
+*/
+#include <math.h>
+#include "state.h"
+#include "raster.h"
+#include "line.h"
+
+#define LINE_WIDTH_LIMIT 64
+
+static void line_setup(GlesContext *ctx, TriSetup *t, const Vertex *a, const Vertex *b, const Vertex *pv,
+                       int64_t len)
+{
+    t->v[0] = a;
+    t->v[1] = t->v[2] = b;
+    t->col[0] = a->color;
+    t->col[1] = t->col[2] = b->color;
+    for (int k = 0; k < 4; k++)
+        t->flat[k] = pv->color[k];
+    t->smooth = ctx->shade_model == GL_SMOOTH;
+    NUM w[3] = { a->clip[3], b->clip[3], b->clip[3] };
+    RecipW q[3] = { a->rw, b->rw, b->rw };
+    wgt_setup(&t->wgt, len > 0 ? len : 1, w, q);
+    t->tex_projective = 0;
+    for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
+        if (a->tex[u][3] != NUM_ONE || b->tex[u][3] != NUM_ONE)
+            t->tex_projective |= 1u << u;
+    for (int i = 0; i < 3; i++)
+        t->ea[i] = t->eb[i] = t->ec[i] = 0;
+    /* one pixel along the major axis: the level of detail's neighbour */
+    t->ea[0] = -GLES_SUBPIXEL_ONE;
+    t->ea[1] = GLES_SUBPIXEL_ONE;
+    t->depth_offset = 0;
+}
+
+static int in_scissor(const GlesContext *ctx, int64_t x, int64_t y)
+{
+    if (x < 0 || y < 0 || x >= ctx->width || y >= ctx->height)
+        return 0;
+    if (!ctx->scissor_test)
+        return 1;
+    return x >= ctx->scissor[0] && y >= ctx->scissor[1] && x < (int64_t)ctx->scissor[0] + ctx->scissor[2]
+        && y < (int64_t)ctx->scissor[1] + ctx->scissor[3];
+}
+
+void raster_line(GlesContext *ctx, const Vertex *a, const Vertex *b, const Vertex *pv)
+{
+    const int64_t one = GLES_SUBPIXEL_ONE, half = one / 2;
+    int64_t dx = b->wx - a->wx, dy = b->wy - a->wy;
+    int xmajor = (dx < 0 ? -dx : dx) >= (dy < 0 ? -dy : dy);
+    /* major and minor coordinates of the endpoints */
+    int64_t ma = xmajor ? a->wx : a->wy, mb = xmajor ? b->wx : b->wy;
+    int64_t na = xmajor ? a->wy : a->wx, nb = xmajor ? b->wy : b->wx;
+    int64_t D = mb - ma, len = D < 0 ? -D : D;
+    if (len == 0)
+        return;
+    TriSetup t;
+    line_setup(ctx, &t, a, b, pv, len);
+    double width = ctx->line_width;
+    if (width > LINE_WIDTH_LIMIT)
+        width = LINE_WIDTH_LIMIT;
+    /* pixels of the major axis whose centres lie in [ma, mb) (or (mb, ma]) */
+    int64_t p0, p1;
+    if (D > 0) {
+        p0 = i64_ceil_div(ma - half, one);
+        p1 = i64_ceil_div(mb - half, one) - 1;
+    } else {
+        p0 = i64_floor_div(mb - half, one) + 1;
+        p1 = i64_floor_div(ma - half, one);
+    }
+    int smooth = ctx->line_smooth;
+    int64_t w = (int64_t)floor(width + 0.5);
+    if (w < 1)
+        w = 1;
+    double fx = (double)dx, fy = (double)dy, flen = sqrt(fx * fx + fy * fy);
+    for (int64_t pm = p0; pm <= p1; pm++) {
+        int64_t c = pm * one + half;            /* major coordinate of the centres */
+        int64_t n = c - ma, an = n < 0 ? -n : n;
+        int64_t e[3] = { len - an, an, 0 };
+        /* minor coordinate of the line at the centre, in subpixels */
+        int64_t m = na + i64_round_div((nb - na) * n, D);
+        int64_t q0, q1;                         /* the minor pixels */
+        if (smooth) {
+            int64_t reach = (int64_t)ceil(width / 2 * (double)one * flen / (double)len) + one;
+            q0 = i64_floor_div(m - reach, one);
+            q1 = i64_floor_div(m + reach, one);
+        } else {
+            /* centres within w/2 of the line: [m - w/2, m + w/2) */
+            q0 = i64_ceil_div(m - w * one / 2 - half, one);
+            q1 = i64_ceil_div(m + w * one / 2 - half, one) - 1;
+        }
+        for (int64_t pn = q0; pn <= q1; pn++) {
+            int64_t px = xmajor ? pm : pn, py = xmajor ? pn : pm;
+            if (!in_scissor(ctx, px, py))
+                continue;
+            FRAGV coverage = FRAG_ONE;
+            if (smooth) {
+                /* samples inside the width x length rectangle of the segment */
+                int inside = 0;
+                for (int sy = 0; sy < 4; sy++)
+                    for (int sx = 0; sx < 4; sx++) {
+                        double sxp = (double)(px * one + (2 * sx + 1) * one / 8 - a->wx);
+                        double syp = (double)(py * one + (2 * sy + 1) * one / 8 - a->wy);
+                        double along = (sxp * fx + syp * fy) / flen;
+                        double across = (sxp * fy - syp * fx) / flen;
+                        inside += along >= 0 && along <= flen && fabs(across) <= width / 2 * (double)one;
+                    }
+                if (!inside)
+                    continue;
+                coverage = frag_ratio(inside, 16);
+            }
+            fragment_from_setup(ctx, &t, e, (int)px, (int)py, coverage, NULL, NULL, NULL);
+        }
+    }
+}
