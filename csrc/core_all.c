@@ -17,5 +17,6 @@
 #include "span.c"
 #include "point.c"
 #include "line.c"
+#include "drawtex.c"
 #include "draw.c"
 #include "framebuffer.c"

@@ -52,7 +52,7 @@ static int draw_begin(GlesContext *ctx, int64_t nverts)
     return GLES_OK;
 }
 
-static void validate(GlesContext *ctx)
+void draw_validate(GlesContext *ctx)
 {
     if (ctx->dirty) {
         vertex_validate(ctx);
@@ -289,7 +289,7 @@ int gles_DrawArrays(GlesContext *ctx, unsigned int mode, int first, int count)
         return st;
     if ((st = draw_begin(ctx, count)) != GLES_OK)
         return st;
-    validate(ctx);
+    draw_validate(ctx);
     Batch b = { ctx, first, viewport_visible(ctx) };
     Indices ix = { NULL, 0, first };
     assemble(&b, mode, count, &ix);
@@ -343,7 +343,7 @@ int gles_DrawElements(GlesContext *ctx, unsigned int mode, int count, unsigned i
         return st;
     if ((st = draw_begin(ctx, hi - lo + 1)) != GLES_OK)
         return st;
-    validate(ctx);
+    draw_validate(ctx);
     Batch b = { ctx, lo, viewport_visible(ctx) };
     assemble(&b, mode, count, &ix);
     return GLES_OK;

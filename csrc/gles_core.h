@@ -188,6 +188,8 @@ void gles_PointSize(GlesContext *ctx, double size);
 void gles_LineWidth(GlesContext *ctx, double width);
 void gles_PointParameter(GlesContext *ctx, unsigned int pname, const double *params, int vector);
 void gles_PolygonOffset(GlesContext *ctx, double factor, double units);
+/* OES_draw_texture: every form arrives as doubles */
+void gles_DrawTexOES(GlesContext *ctx, double x, double y, double z, double width, double height);
 
 /* {====================================================================
 ** current values */

@@ -927,6 +927,7 @@ static inline TEXC texc_abs(TEXC a) { return a < 0 ? -a : a; }
 static inline TEXC texc_clamp(TEXC a, TEXC lim) { return a < -lim ? -lim : (a > lim ? lim : a); }
 /* n / d for integers (|n| < 2^31, d > 0) */
 static inline TEXC texc_ratio(int64_t n, int64_t d) { return d ? (n * TEXC_ONE) / d : 0; }
+static inline TEXC texc_from_double(double v) { return dbl_to_i64(v * 4294967296.0, -((int64_t)1 << 62), (int64_t)1 << 62); }
 /* a * n for an integer n (texture size): exact */
 static inline TEXC texc_scale(TEXC a, int n) { return a * n; }
 /* bilinear weights: the fraction of a texel coordinate in 16 bits */
@@ -992,6 +993,7 @@ static inline TEXC texc_from_num(NUM a) { return a; }
 static inline TEXC texc_abs(TEXC a) { return a < 0 ? -a : a; }
 static inline TEXC texc_clamp(TEXC a, TEXC lim) { return a < -lim ? -lim : (a > lim ? lim : a); }
 static inline TEXC texc_ratio(int64_t n, int64_t d) { return d ? (NUM)n / (NUM)d : 0; }
+static inline TEXC texc_from_double(double v) { return (NUM)v; }
 static inline TEXC texc_scale(TEXC a, int n) { return a * (NUM)n; }
 typedef NUM TEXW;
 static inline TEXW texc_frac_weight(TEXC u) { return u - NUM_FLOOR(u); }

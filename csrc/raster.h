@@ -49,6 +49,9 @@ void fragment_from_setup(GlesContext *ctx, const TriSetup *t, const int64_t e[3]
 /* polygon offset (§3.5.2) applied to a triangle fragment's depth */
 uint32_t raster_offset_depth(const GlesContext *ctx, const TriSetup *t, uint32_t z);
 
+/* draw.c: bring derived state up to date before drawing */
+void draw_validate(GlesContext *ctx);
+
 /* span.c: choose the span function for the current state */
 void span_choose(GlesContext *ctx);
 /* pack a [0,1] colour into the framebuffer's format */

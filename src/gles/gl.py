@@ -718,6 +718,32 @@ class GLBase:
             self._lib.gles_PolygonOffset(self._p, _fixed(factor), _fixed(units))
 
     # {================================================================
+    # OES_draw_texture
+
+    def _draw_tex(self, vals: list[float]) -> None:
+        with self._lock:
+            self._lib.gles_DrawTexOES(self._p, *vals)
+
+    def glDrawTexsOES(self, x: int, y: int, z: int, width: int, height: int) -> None:
+        """Draw the enabled textures' crop rectangles to a window rectangle."""
+        self._draw_tex([float(_index(v)) for v in (x, y, z, width, height)])
+
+    def glDrawTexiOES(self, x: int, y: int, z: int, width: int, height: int) -> None:
+        self._draw_tex([float(_index(v)) for v in (x, y, z, width, height)])
+
+    def glDrawTexxOES(self, x: int, y: int, z: int, width: int, height: int) -> None:
+        self._draw_tex([_fixed(v) for v in (x, y, z, width, height)])
+
+    def glDrawTexsvOES(self, coords: Any) -> None:
+        self._draw_tex([float(v) for v in _values(coords, 5, "glDrawTexsvOES", np.int64)[:5]])
+
+    def glDrawTexivOES(self, coords: Any) -> None:
+        self._draw_tex([float(v) for v in _values(coords, 5, "glDrawTexivOES", np.int64)[:5]])
+
+    def glDrawTexxvOES(self, coords: Any) -> None:
+        self._draw_tex([int(v) * _FIX for v in _values(coords, 5, "glDrawTexxvOES", np.int64)[:5]])
+
+    # {================================================================
     # vertex arrays and buffer objects
 
     def _set_pointer(self, key: Any, fn: Any, args: tuple, gltype: int, pointer: Pointer, what: str) -> None:
@@ -992,6 +1018,12 @@ class GLCommon(GLBase):
     def glPolygonOffset(self, factor: float, units: float) -> None:
         with self._lock:
             self._lib.gles_PolygonOffset(self._p, factor, units)
+
+    def glDrawTexfOES(self, x: float, y: float, z: float, width: float, height: float) -> None:
+        self._draw_tex([float(v) for v in (x, y, z, width, height)])
+
+    def glDrawTexfvOES(self, coords: Any) -> None:
+        self._draw_tex([float(v) for v in _values(coords, 5, "glDrawTexfvOES")[:5]])
 
     def glGetClipPlanef(self, plane: int) -> np.ndarray:
         eq = self._ffi.new("double[4]")

@@ -1,0 +1,74 @@
+/*
+** drawtex.c -- OES_draw_texture: DrawTex{sifx}[v]OES.
+** A screen-aligned rectangle (Xs, Ys, Ws, Hs) in window coordinates at
+** depth Zs, one fragment per pixel whose centre lies inside, coloured by the
+** current colour, with every enabled unit's texture coordinates mapping its
+** TEXTURE_CROP_RECT_OES linearly onto the rectangle:
+**     s = (Ucr + (X - Xs) Wcr / Ws) / Wt,  t = (Vcr + (Y - Ys) Hcr / Hs) / Ht
+** (the texture matrix, clip planes and lighting do not apply; fog sees
+** distance 0). The level of detail is constant over the rectangle. The
+** coordinates are formed in double from the real arguments and rounded once.
+*/
+#include "state.h"
+#include "raster.h"
+#include "texture.h"
+#include "fragment.h"
+
+void gles_DrawTexOES(GlesContext *ctx, double xs, double ys, double zs, double ws, double hs)
+{
+    if (!(ws > 0) || !(hs > 0)) {
+        ctx_error(ctx, GL_INVALID_VALUE);
+        return;
+    }
+    draw_validate(ctx);
+    FragIn in;
+    /* depth: n if z <= 0, f if z >= 1, n + z (f - n) otherwise */
+    double z = zs <= 0 ? 0 : (zs >= 1 ? 1 : zs);
+    double zw = ctx->depth_range[0] + z * (ctx->depth_range[1] - ctx->depth_range[0]);
+    in.z = (uint32_t)dbl_to_i64(zw * ctx->depth_max, 0, ctx->depth_max);
+    for (int i = 0; i < 4; i++)
+        in.c[i] = frag_clamp01(frag_from_double(ctx->cur_color[i]));
+    in.fog = ctx->fog ? frag_from_num(fog_factor(ctx, NUM_ZERO)) : 0;
+    in.coverage = FRAG_ONE;
+    /* per unit: s = a_s + b_s X, t = a_t + b_t Y */
+    double as[GLES_MAX_TEXTURE_UNITS] = { 0 }, bs[GLES_MAX_TEXTURE_UNITS] = { 0 };
+    double at[GLES_MAX_TEXTURE_UNITS] = { 0 }, bt[GLES_MAX_TEXTURE_UNITS] = { 0 };
+    for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++) {
+        if (!(ctx->tex_units_on & (1u << u)))
+            continue;
+        const Texture *t = ctx->units[u].bound;
+        double wt = t->level[0].width, ht = t->level[0].height;
+        bs[u] = t->crop[2] / ws / wt;
+        as[u] = t->crop[0] / wt - xs * bs[u];
+        bt[u] = t->crop[3] / hs / ht;
+        at[u] = t->crop[1] / ht - ys * bt[u];
+    }
+    int64_t x0 = dbl_to_i64(ceil(xs - 0.5), -(1 << 30), 1 << 30), x1 = dbl_to_i64(ceil(xs + ws - 0.5), -(1 << 30), 1 << 30);
+    int64_t y0 = dbl_to_i64(ceil(ys - 0.5), -(1 << 30), 1 << 30), y1 = dbl_to_i64(ceil(ys + hs - 0.5), -(1 << 30), 1 << 30);
+    int64_t cx0 = 0, cy0 = 0, cx1 = ctx->width, cy1 = ctx->height;
+    if (ctx->scissor_test) {
+        if (ctx->scissor[0] > cx0) cx0 = ctx->scissor[0];
+        if (ctx->scissor[1] > cy0) cy0 = ctx->scissor[1];
+        if ((int64_t)ctx->scissor[0] + ctx->scissor[2] < cx1) cx1 = (int64_t)ctx->scissor[0] + ctx->scissor[2];
+        if ((int64_t)ctx->scissor[1] + ctx->scissor[3] < cy1) cy1 = (int64_t)ctx->scissor[1] + ctx->scissor[3];
+    }
+    if (x0 < cx0) x0 = cx0;
+    if (y0 < cy0) y0 = cy0;
+    if (x1 > cx1) x1 = cx1;
+    if (y1 > cy1) y1 = cy1;
+    for (int64_t py = y0; py < y1; py++)
+        for (int64_t px = x0; px < x1; px++) {
+            double X = (double)px + 0.5, Y = (double)py + 0.5;
+            for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++) {
+                if (!(ctx->tex_units_on & (1u << u)))
+                    continue;
+                in.tc[u].s = texc_from_double(as[u] + bs[u] * X);
+                in.tc[u].t = texc_from_double(at[u] + bt[u] * Y);
+                in.tdx[u].s = texc_from_double(as[u] + bs[u] * (X + 1));
+                in.tdx[u].t = in.tc[u].t;
+                in.tdy[u].s = in.tc[u].s;
+                in.tdy[u].t = texc_from_double(at[u] + bt[u] * (Y + 1));
+            }
+            fragment_process(ctx, (int)px, (int)py, &in);
+        }
+}
