@@ -474,6 +474,19 @@ static int put(double *out, int *kind, int k, int n, const double *v)
 
 static int put1(double *out, int *kind, int k, double v) { return put(out, kind, k, 1, &v); }
 
+/* OES_matrix_get: each element's IEEE single bit pattern, as an integer */
+static int put_float_bits(double *out, int *kind, const double *m)
+{
+    for (int i = 0; i < 16; i++) {
+        float f = (float)m[i];
+        int32_t bits;
+        memcpy(&bits, &f, sizeof bits);
+        out[i] = bits;
+    }
+    *kind = GLES_KIND_ENUM; /* returned unscaled by every Get */
+    return 16;
+}
+
 int gles_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)
 {
     double v[16];
@@ -526,6 +539,12 @@ int gles_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)
     case GL_PROJECTION_MATRIX: return put(out, kind, GLES_KIND_FLOAT, 16, ctx->projection.top->d);
     case GL_TEXTURE_MATRIX:
         return put(out, kind, GLES_KIND_FLOAT, 16, ctx->texture[ctx->active_texture - GL_TEXTURE0].top->d);
+    case GL_MODELVIEW_MATRIX_FLOAT_AS_INT_BITS_OES:
+        return put_float_bits(out, kind, ctx->modelview.top->d);
+    case GL_PROJECTION_MATRIX_FLOAT_AS_INT_BITS_OES:
+        return put_float_bits(out, kind, ctx->projection.top->d);
+    case GL_TEXTURE_MATRIX_FLOAT_AS_INT_BITS_OES:
+        return put_float_bits(out, kind, ctx->texture[ctx->active_texture - GL_TEXTURE0].top->d);
     case GL_MODELVIEW_STACK_DEPTH: return put1(out, kind, GLES_KIND_INT, ctx->modelview.depth);
     case GL_PROJECTION_STACK_DEPTH: return put1(out, kind, GLES_KIND_INT, ctx->projection.depth);
     case GL_TEXTURE_STACK_DEPTH:

@@ -19,12 +19,14 @@ COLOR_FORMATS = {"rgba8888": 0, "rgb565": 1}
 VENDOR = "gles"
 EXTENSIONS = {
     "common": ["GL_OES_byte_coordinates", "GL_OES_fixed_point", "GL_OES_single_precision",
+               "GL_OES_matrix_get", "GL_OES_query_matrix",
                "GL_OES_read_format", "GL_OES_matrix_palette", "GL_OES_blend_subtract",
                "GL_OES_blend_func_separate", "GL_OES_blend_equation_separate", "GL_OES_stencil_wrap",
                "GL_OES_compressed_paletted_texture", "GL_OES_texture_mirrored_repeat",
                "GL_OES_texture_env_crossbar", "GL_OES_point_size_array", "GL_OES_point_sprite",
                "GL_OES_draw_texture"],
-    "common-lite": ["GL_OES_byte_coordinates", "GL_OES_fixed_point",
+    "common-lite": ["GL_OES_byte_coordinates", "GL_OES_fixed_point", "GL_OES_matrix_get",
+                    "GL_OES_query_matrix",
                     "GL_OES_read_format", "GL_OES_matrix_palette", "GL_OES_blend_subtract",
                     "GL_OES_blend_func_separate", "GL_OES_blend_equation_separate", "GL_OES_stencil_wrap",
                     "GL_OES_compressed_paletted_texture", "GL_OES_texture_mirrored_repeat",

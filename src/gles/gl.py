@@ -221,6 +221,29 @@ class GLBase:
             self._lib.gles_GetBufferParameteriv(self._p, _index(target), _index(pname), out)
         return int(out[0])
 
+    def glQueryMatrixxOES(self) -> tuple[np.ndarray, np.ndarray, int]:
+        """OES_query_matrix: the current matrix as (mantissa, exponent, status):
+        element i is mantissa[i] / 65536 * 2**exponent[i]; bit i of status is
+        set when element i is not a finite number."""
+        mode = self._bound(C.GL_MATRIX_MODE)
+        pname = {C.GL_MODELVIEW: C.GL_MODELVIEW_MATRIX, C.GL_PROJECTION: C.GL_PROJECTION_MATRIX,
+                 C.GL_TEXTURE: C.GL_TEXTURE_MATRIX}.get(mode)
+        vals = self._get(pname)[0] if pname is not None else [1.0 if i % 5 == 0 else 0.0 for i in range(16)]
+        if pname is None:  # the palette matrix is not gettable (OES_matrix_palette)
+            status = 0xFFFF
+        else:
+            status = 0
+        mant = np.zeros(16, dtype=np.int32)
+        expo = np.zeros(16, dtype=np.int32)
+        for i, v in enumerate(vals):
+            if not np.isfinite(v):
+                status |= 1 << i
+                continue
+            m, e = np.frexp(v)          # v = m 2^e, |m| in [0.5, 1)
+            mant[i] = int(np.floor(m * 65536.0 + 0.5))
+            expo[i] = int(e)
+        return mant, expo, status
+
     # {================================================================
     # simple state
 
