@@ -132,12 +132,6 @@ static inline NUM num_mul(NUM a, NUM b)
     return num_from_scaled((int64_t)a * b, 32);
 }
 
-/* a * b + c * d with one rounding */
-static inline NUM num_mul2(NUM a, NUM b, NUM c, NUM d)
-{
-    return num_from_scaled((int64_t)a * b + (int64_t)c * d, 32);
-}
-
 static inline NUM num_div(NUM a, NUM b)
 {
     if (b == 0)
@@ -224,7 +218,6 @@ static inline NUM num_sub(NUM a, NUM b) { return a - b; }
 static inline NUM num_neg(NUM a) { return -a; }
 static inline NUM num_abs(NUM a) { return a < 0 ? -a : a; }
 static inline NUM num_mul(NUM a, NUM b) { return a * b; }
-static inline NUM num_mul2(NUM a, NUM b, NUM c, NUM d) { return a * b + c * d; }
 static inline NUM num_div(NUM a, NUM b) { return a / b; }
 static inline NUM num_recip(NUM a) { return NUM_ONE / a; }
 static inline NUM num_sqrt(NUM a) { return a > 0 ? NUM_SQRT(a) : 0; }
@@ -523,12 +516,6 @@ static inline uint32_t wgt_depth3(DEPTHV z0, DEPTHV z1, DEPTHV z2, WGT w0, WGT w
 
 static inline double depthv_to_double(DEPTHV z) { return (double)z / 65536.0; }
 
-static inline DEPTHV depthv_from_num(NUM z01, uint32_t maxval)
-{
-    /* z01 in [0,1] (16.16) times maxval, keeping 16 fraction bits */
-    int64_t z = z01 < 0 ? 0 : (z01 > NUM_ONE ? NUM_ONE : z01);
-    return z * (int64_t)maxval;
-}
 #else
 typedef NUM WGT;
 typedef NUM DEPTHV;
@@ -547,11 +534,6 @@ static inline uint32_t wgt_depth3(DEPTHV z0, DEPTHV z1, DEPTHV z2, WGT w0, WGT w
 
 static inline double depthv_to_double(DEPTHV z) { return (double)z; }
 
-static inline DEPTHV depthv_from_num(NUM z01, uint32_t maxval)
-{
-    NUM z = z01 < 0 ? 0 : (z01 > 1 ? 1 : z01);
-    return z * (NUM)maxval;
-}
 #endif
 /* }==================================================================== */
 
@@ -807,7 +789,6 @@ static inline uint32_t frag_to_unorm(FRAGV v, uint32_t maxval, FRAGV t)
         return maxval;
     return (uint32_t)((v * maxval + t) >> 30);
 }
-static inline FRAGV frag_from_num_clamped(NUM a) { return frag_from_num(num_clamp01(a)); }
 static inline FRAGV frag_ratio(int n, int d) { return ((int64_t)n << 30) / d; }
 /* floor(v * 2^bits), clamped: keeps the high bits of an exact c/255 */
 static inline uint32_t frag_to_msb(FRAGV v, int bits)
@@ -818,7 +799,6 @@ static inline uint32_t frag_to_msb(FRAGV v, int bits)
     return (uint32_t)(r >= ((int64_t)1 << bits) ? ((int64_t)1 << bits) - 1 : r);
 }
 static inline FRAGV frag_from_double(double v) { return dbl_to_i64(v * 1073741824.0, -((int64_t)1 << 40), (int64_t)1 << 40); }
-static inline NUM frag_to_num(FRAGV v) { return num_from_scaled(v, 30); }
 static inline FRAGV frag_clamp01(FRAGV v) { return v < 0 ? 0 : (v > FRAG_ONE ? FRAG_ONE : v); }
 /* a0*w0 + a1*w1 + a2*w2 from 16.16 values and 0.30 weights, kept in 0.30 */
 static inline FRAGV frag_lerp3(NUM a0, NUM a1, NUM a2, WGT w0, WGT w1, WGT w2)
@@ -852,7 +832,6 @@ static inline uint32_t frag_to_unorm(FRAGV v, uint32_t maxval, FRAGV t)
         return maxval;
     return (uint32_t)(v * (NUM)maxval + t);
 }
-static inline FRAGV frag_from_num_clamped(NUM a) { return num_clamp01(a); }
 static inline FRAGV frag_ratio(int n, int d) { return (NUM)n / (NUM)d; }
 static inline uint32_t frag_to_msb(FRAGV v, int bits)
 {
@@ -862,7 +841,6 @@ static inline uint32_t frag_to_msb(FRAGV v, int bits)
     return r >= (NUM)(1 << bits) ? (1u << bits) - 1 : (uint32_t)r;
 }
 static inline FRAGV frag_from_double(double v) { return (NUM)v; }
-static inline NUM frag_to_num(FRAGV v) { return v; }
 static inline FRAGV frag_clamp01(FRAGV v) { return v < 0 ? 0 : (v > 1 ? 1 : v); }
 static inline FRAGV frag_lerp3(NUM a0, NUM a1, NUM a2, WGT w0, WGT w1, WGT w2)
 {
@@ -922,7 +900,6 @@ static inline TEXC texc_div(TEXC s, TEXC q)
 
 static inline TEXC texc_floor(TEXC s) { return (s >> 32) * TEXC_ONE; }
 static inline int64_t texc_ifloor(TEXC s) { return s >> 32; }
-static inline TEXC texc_from_num(NUM a) { return (int64_t)a * 65536; }
 static inline TEXC texc_abs(TEXC a) { return a < 0 ? -a : a; }
 static inline TEXC texc_clamp(TEXC a, TEXC lim) { return a < -lim ? -lim : (a > lim ? lim : a); }
 /* n / d for integers (|n| < 2^31, d > 0) */
@@ -950,13 +927,6 @@ static inline void frag_bilerp_rgba8(uint32_t c00, uint32_t c10, uint32_t c01, u
                      + ((c11 >> sh) & 0xFF) * w11;                 /* c8 with 32 fraction bits, < 2^40 */
         out[k] = (FRAGV)((((acc + 128) >> 8) * 16843009u + ((uint64_t)1 << 25)) >> 26);
     }
-}
-static inline FRAGV frag_bilerp(FRAGV c00, FRAGV c10, FRAGV c01, FRAGV c11, TEXW a, TEXW b)
-{
-    int64_t ia = 65536 - a, ib = 65536 - b;
-    /* weights sum to 2^32 and colours are at most 2^30 (texels are in [0,1]) */
-    int64_t acc = c00 * (ia * ib) + c10 * (a * ib) + c01 * (ia * b) + c11 * ((int64_t)a * b);
-    return (acc + ((int64_t)1 << 31)) >> 32;
 }
 #define TEXC_HALF ((int64_t)1 << 31)
 
@@ -989,7 +959,6 @@ static inline TEXC texc_lerp3(NUM a0, NUM a1, NUM a2, WGT w0, WGT w1, WGT w2)
 static inline TEXC texc_div(TEXC s, TEXC q) { return q == 0 ? (s > 0 ? (NUM)1e30 : (s < 0 ? (NUM)-1e30 : 0)) : s / q; }
 static inline TEXC texc_floor(TEXC s) { return NUM_FLOOR(s); }
 static inline int64_t texc_ifloor(TEXC s) { return dbl_to_i64(floor((double)s), -((int64_t)1 << 40), (int64_t)1 << 40); }
-static inline TEXC texc_from_num(NUM a) { return a; }
 static inline TEXC texc_abs(TEXC a) { return a < 0 ? -a : a; }
 static inline TEXC texc_clamp(TEXC a, TEXC lim) { return a < -lim ? -lim : (a > lim ? lim : a); }
 static inline TEXC texc_ratio(int64_t n, int64_t d) { return d ? (NUM)n / (NUM)d : 0; }
@@ -1007,10 +976,6 @@ static inline void frag_bilerp_rgba8(uint32_t c00, uint32_t c10, uint32_t c01, u
         FRAGV v01 = unorm[(c01 >> sh) & 0xFF], v11 = unorm[(c11 >> sh) & 0xFF];
         out[k] = (v00 * (1 - a) + v10 * a) * (1 - b) + (v01 * (1 - a) + v11 * a) * b;
     }
-}
-static inline FRAGV frag_bilerp(FRAGV c00, FRAGV c10, FRAGV c01, FRAGV c11, TEXW a, TEXW b)
-{
-    return (c00 * (1 - a) + c10 * a) * (1 - b) + (c01 * (1 - a) + c11 * a) * b;
 }
 
 static inline LODV lod_log2(TEXC rho) { return rho > 0 ? (NUM)log2((double)rho) : (NUM)-1e30; }
