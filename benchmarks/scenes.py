@@ -414,3 +414,67 @@ SCENES.update({s.name: s for s in (
           "per-vertex light vectors, unit 1 MODULATE by a base texture, both bilinear",
           dot3_setup, dot3_frame, lambda w, h: 0.99),
 )})
+
+
+# {================================================================
+# points and lines
+
+N_PARTICLES = 5000
+
+
+def particles_setup(gl: Any, w: int, h: int) -> Any:
+    _common(gl)
+    _ortho(gl, w, h)
+    gl.glDisable(C.GL_DEPTH_TEST)
+    rng = np.random.default_rng(5)
+    verts = np.stack([rng.uniform(0, w, N_PARTICLES),
+                      rng.uniform(0, h, N_PARTICLES)], axis=-1).astype(np.float32)
+    sizes = rng.uniform(4.0, 24.0, N_PARTICLES).astype(np.float32)
+    colors = np.concatenate([rng.integers(64, 256, (N_PARTICLES, 3)),
+                             np.full((N_PARTICLES, 1), 128)], axis=-1).astype(np.uint8)
+    r = np.hypot(*np.meshgrid(np.linspace(-1, 1, 32), np.linspace(-1, 1, 32)))
+    lum = (np.clip(1.0 - r, 0.0, 1.0) * 255).astype(np.uint8)
+    img = np.ascontiguousarray(np.stack([lum, lum, lum, lum], axis=-1))
+    tex = _texture_rgba(gl, img, C.GL_LINEAR, C.GL_LINEAR)
+    gl.glEnable(C.GL_TEXTURE_2D)
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_MODULATE)
+    gl.glEnable(C.GL_POINT_SPRITE_OES)
+    gl.glTexEnvi(C.GL_POINT_SPRITE_OES, C.GL_COORD_REPLACE_OES, 1)
+    gl.glEnable(C.GL_BLEND)
+    gl.glBlendFunc(C.GL_SRC_ALPHA, C.GL_ONE_MINUS_SRC_ALPHA)
+    gl.glEnableClientState(C.GL_COLOR_ARRAY)
+    gl.glEnableClientState(C.GL_POINT_SIZE_ARRAY_OES)
+    gl.glVertexPointer(2, C.GL_FLOAT, 0, verts)
+    gl.glColorPointer(4, C.GL_UNSIGNED_BYTE, 0, colors)
+    gl.glPointSizePointerOES(C.GL_FLOAT, 0, sizes)
+    return {"verts": verts, "sizes": sizes, "colors": colors, "tex": tex}
+
+
+def particles_frame(gl: Any, state: Any) -> None:
+    gl.glClear(C.GL_COLOR_BUFFER_BIT)
+    gl.glDrawArrays(C.GL_POINTS, 0, N_PARTICLES)
+
+
+def wireframe_setup(gl: Any, w: int, h: int) -> Any:
+    state = smooth_mesh_setup(gl, w, h)
+    i = np.arange(GRID - 1)
+    a = (i[:, None] * GRID + i[None, :]).reshape(-1)          # lower-left corner of each cell
+    edges = np.stack([a, a + 1, a, a + GRID, a + 1, a + GRID], axis=-1)
+    state["indices"] = np.ascontiguousarray(edges.reshape(-1), dtype=np.uint16)
+    return state
+
+
+def wireframe_frame(gl: Any, state: Any) -> None:
+    gl.glClear(C.GL_COLOR_BUFFER_BIT | C.GL_DEPTH_BUFFER_BIT)
+    idx = state["indices"]
+    gl.glDrawElements(C.GL_LINES, len(idx), C.GL_UNSIGNED_SHORT, idx)
+
+
+SCENES.update({s.name: s for s in (
+    Scene("particles", f"{N_PARTICLES} point sprites (FLOAT size array 4..24, 32x32 bilinear texture, "
+          "MODULATE), blended SRC_ALPHA, ONE_MINUS_SRC_ALPHA",
+          particles_setup, particles_frame, lambda w, h: 0.5),
+    Scene("wireframe", f"the smooth_mesh grid as {3 * (GRID - 1) ** 2} GL_LINES (ubyte colours, "
+          "DrawElements UNSIGNED_SHORT), depth test, perspective",
+          wireframe_setup, wireframe_frame, lambda w, h: 0.2),
+)})
