@@ -71,6 +71,11 @@ KNOWN_DEVIATIONS: tuple[Deviation, ...] = (
     Deviation("covgl", "mesa-", None, None,
               "Mesa: CompressedTexSubImage2D on a paletted texture gives INVALID_VALUE, not "
               "INVALID_OPERATION; §3.7.4 (docs/conformance.md)"),
+    Deviation("Gets", "mesa-", None, None,
+              "Mesa: GetFixedv scales enums, GetIntegerv maps matrix elements like colours; §6.1.2 "
+              "(docs/conformance.md)"),
+    Deviation("MatrixGetTest", "mesa-", None, None,
+              "Mesa: OES_matrix_get (*_FLOAT_AS_INT_BITS_OES) missing; Appendix C (docs/conformance.md)"),
     Deviation("AmbLight.errors", "mesa-", None, None,
               "Mesa: scalar glLight/glLightModel accept vector pnames; §2.12.2 wants INVALID_ENUM "
               "(docs/conformance.md, Mesa results)"),
