@@ -62,6 +62,27 @@ CAPS = [
     G.GL_STENCIL_TEST, G.GL_TEXTURE_2D, G.GL_CLIP_PLANE0, G.GL_LIGHT0, G.GL_VERTEX_ARRAY,
     G.GL_NORMAL_ARRAY, G.GL_COLOR_ARRAY, G.GL_TEXTURE_COORD_ARRAY, G.GL_POINT_SIZE_ARRAY_OES,
 ]
+# state of the later stages, compared by the same snapshot
+INT_STATE += [
+    G.GL_ALPHA_TEST_FUNC, G.GL_STENCIL_FUNC, G.GL_STENCIL_REF, G.GL_STENCIL_VALUE_MASK,
+    G.GL_STENCIL_WRITEMASK, G.GL_STENCIL_FAIL, G.GL_STENCIL_PASS_DEPTH_FAIL, G.GL_STENCIL_PASS_DEPTH_PASS,
+    G.GL_BLEND_SRC, G.GL_BLEND_DST, G.GL_LOGIC_OP_MODE, G.GL_FOG_MODE, G.GL_TEXTURE_BINDING_2D,
+    G.GL_MATRIX_INDEX_ARRAY_SIZE_OES, G.GL_WEIGHT_ARRAY_SIZE_OES, G.GL_CURRENT_PALETTE_MATRIX_OES,
+]
+FLOAT_STATE += [
+    G.GL_ALPHA_TEST_REF, G.GL_FOG_DENSITY, G.GL_FOG_START, G.GL_FOG_END, G.GL_FOG_COLOR,
+    G.GL_LIGHT_MODEL_AMBIENT, G.GL_POINT_SIZE, G.GL_LINE_WIDTH, G.GL_POINT_SIZE_MIN, G.GL_POINT_SIZE_MAX,
+    G.GL_POINT_FADE_THRESHOLD_SIZE, G.GL_POINT_DISTANCE_ATTENUATION, G.GL_POLYGON_OFFSET_FACTOR,
+    G.GL_POLYGON_OFFSET_UNITS, G.GL_SAMPLE_COVERAGE_VALUE,
+]
+LIGHT_STATE = [G.GL_AMBIENT, G.GL_DIFFUSE, G.GL_SPECULAR, G.GL_POSITION, G.GL_SPOT_DIRECTION,
+               G.GL_SPOT_EXPONENT, G.GL_SPOT_CUTOFF, G.GL_CONSTANT_ATTENUATION, G.GL_LINEAR_ATTENUATION,
+               G.GL_QUADRATIC_ATTENUATION]
+MATERIAL_STATE = [G.GL_AMBIENT, G.GL_DIFFUSE, G.GL_SPECULAR, G.GL_EMISSION, G.GL_SHININESS]
+TEXENV_STATE = [G.GL_TEXTURE_ENV_MODE, G.GL_TEXTURE_ENV_COLOR, G.GL_COMBINE_RGB, G.GL_COMBINE_ALPHA,
+                G.GL_SRC0_RGB, G.GL_OPERAND0_RGB, G.GL_RGB_SCALE, G.GL_ALPHA_SCALE]
+TEXPARAM_STATE = [G.GL_TEXTURE_MIN_FILTER, G.GL_TEXTURE_MAG_FILTER, G.GL_TEXTURE_WRAP_S, G.GL_TEXTURE_WRAP_T,
+                  G.GL_GENERATE_MIPMAP, G.GL_TEXTURE_CROP_RECT_OES]
 POINTERS = [G.GL_VERTEX_ARRAY_POINTER, G.GL_NORMAL_ARRAY_POINTER, G.GL_COLOR_ARRAY_POINTER,
             G.GL_TEXTURE_COORD_ARRAY_POINTER, G.GL_POINT_SIZE_ARRAY_POINTER_OES]
 
@@ -78,6 +99,15 @@ def snapshot(ctx: gles.Context) -> dict[str, Any]:
         s[f"enabled {p!r}"] = g.glIsEnabled(p)
     for p in POINTERS:
         s[repr(p)] = g.glGetPointerv(p)
+    for p in LIGHT_STATE:
+        s[f"light0 {p!r}"] = np.asarray(g.glGetLightfv(G.GL_LIGHT0, p)).tolist()
+    for p in MATERIAL_STATE:
+        s[f"material {p!r}"] = np.asarray(g.glGetMaterialfv(G.GL_FRONT, p)).tolist()
+    for p in TEXENV_STATE:
+        s[f"texenv {p!r}"] = np.asarray(g.glGetTexEnvfv(G.GL_TEXTURE_ENV, p)).tolist()
+    s["coord replace"] = g.glGetTexEnviv(G.GL_POINT_SPRITE_OES, G.GL_COORD_REPLACE_OES)
+    for p in TEXPARAM_STATE:
+        s[f"texparam {p!r}"] = np.asarray(g.glGetTexParameterfv(G.GL_TEXTURE_2D, p)).tolist()
     for name in range(1, 9):
         s[f"IsBuffer({name})"] = g.glIsBuffer(name)
     for target, binding in ((G.GL_ARRAY_BUFFER, G.GL_ARRAY_BUFFER_BINDING),
@@ -315,6 +345,90 @@ ROWS = [
         lambda g, e: g.glGetClipPlanef(G.GL_CLIP_PLANE0 + PLANES), E, None, "any"),
     Row("GetString bad name", "§6.1.5", lambda g, e: g.glGetString(G.GL_VIEWPORT), E, None, None),
     Row("GetPointerv bad pname", "§6.1.5", lambda g, e: g.glGetPointerv(G.GL_VERTEX_ARRAY_SIZE), E, None, 0),
+    # lighting (§2.12.2)
+    Row("Light bad light", "§2.12.2", lambda g, e: g.glLightf(G.GL_LIGHT0 + 8, G.GL_SPOT_EXPONENT, 1.0), E),
+    Row("Light bad pname", "§2.12.2", lambda g, e: g.glLightf(G.GL_LIGHT0, G.GL_SHININESS, 1.0), E),
+    Row("Light scalar with vector pname", "§2.12.2",
+        lambda g, e: g.glLightf(G.GL_LIGHT0, G.GL_AMBIENT, 0.5), E),
+    Row("Light spot exponent above 128", "§2.12.2",
+        lambda g, e: g.glLightf(G.GL_LIGHT0, G.GL_SPOT_EXPONENT, 129.0), V),
+    Row("Light spot exponent negative", "§2.12.2",
+        lambda g, e: g.glLightx(G.GL_LIGHT0, G.GL_SPOT_EXPONENT, -1), V),
+    Row("Light cutoff 91", "§2.12.2", lambda g, e: g.glLightf(G.GL_LIGHT0, G.GL_SPOT_CUTOFF, 91.0), V),
+    Row("Light cutoff negative", "§2.12.2", lambda g, e: g.glLightf(G.GL_LIGHT0, G.GL_SPOT_CUTOFF, -1.0), V),
+    Row("Light negative attenuation", "§2.12.2",
+        lambda g, e: g.glLightf(G.GL_LIGHT0, G.GL_QUADRATIC_ATTENUATION, -0.5), V),
+    Row("LightModel bad pname", "§2.12.2", lambda g, e: g.glLightModelf(G.GL_AMBIENT, 1.0), E),
+    Row("Material face FRONT", "§2.12.2", lambda g, e: g.glMaterialf(G.GL_FRONT, G.GL_SHININESS, 1.0), E),
+    Row("Material shininess above 128", "§2.12.2",
+        lambda g, e: g.glMaterialf(G.GL_FRONT_AND_BACK, G.GL_SHININESS, 130.0), V),
+    Row("Material bad pname", "§2.12.2",
+        lambda g, e: g.glMaterialf(G.GL_FRONT_AND_BACK, G.GL_SPOT_CUTOFF, 1.0), E),
+    Row("GetLight bad light", "§6.1.3", lambda g, e: g.glGetLightfv(G.GL_LIGHT0 + 8, G.GL_AMBIENT), E, None,
+        None),
+    Row("GetMaterial face FRONT_AND_BACK", "§6.1.3",
+        lambda g, e: g.glGetMaterialfv(G.GL_FRONT_AND_BACK, G.GL_AMBIENT), E, None, None),
+    # per-fragment operations and fog (§4.1, §3.8)
+    Row("AlphaFunc bad", "§4.1.4", lambda g, e: g.glAlphaFunc(G.GL_FRONT, 0.5), E),
+    Row("StencilFunc bad", "§4.1.5", lambda g, e: g.glStencilFunc(G.GL_FRONT, 0, 0xFF), E),
+    Row("StencilOp bad", "§4.1.5", lambda g, e: g.glStencilOp(G.GL_KEEP, G.GL_FRONT, G.GL_KEEP), E),
+    Row("BlendFunc SRC_COLOR as source", "§4.1.7", lambda g, e: g.glBlendFunc(G.GL_SRC_COLOR, G.GL_ZERO), E),
+    Row("BlendFunc SRC_ALPHA_SATURATE as destination", "§4.1.7",
+        lambda g, e: g.glBlendFunc(G.GL_ONE, G.GL_SRC_ALPHA_SATURATE), E),
+    Row("BlendEquationOES bad", "OES_blend_subtract", lambda g, e: g.glBlendEquationOES(G.GL_ONE), E),
+    Row("LogicOp bad", "§4.1.9", lambda g, e: g.glLogicOp(G.GL_FRONT), E),
+    Row("Fog bad mode", "§3.8", lambda g, e: g.glFogf(G.GL_FOG_MODE, float(G.GL_NEAREST)), E),
+    Row("Fog negative density", "§3.8", lambda g, e: g.glFogf(G.GL_FOG_DENSITY, -1.0), V),
+    Row("Fog bad pname", "§3.8", lambda g, e: g.glFogf(G.GL_SHININESS, 1.0), E),
+    Row("Fog scalar colour", "§3.8", lambda g, e: g.glFogf(G.GL_FOG_COLOR, 1.0), E),
+    # points, lines, polygon offset (§3.3-3.5)
+    Row("PointSize zero", "§3.3", lambda g, e: g.glPointSize(0.0), V),
+    Row("PointSizex negative", "§3.3", lambda g, e: g.glPointSizex(-65536), V),
+    Row("LineWidth zero", "§3.4", lambda g, e: g.glLineWidth(0.0), V),
+    Row("PointParameter bad pname", "§3.3", lambda g, e: g.glPointParameterf(G.GL_POINT_SIZE, 1.0), E),
+    Row("PointParameter negative min", "§3.3",
+        lambda g, e: g.glPointParameterf(G.GL_POINT_SIZE_MIN, -1.0), V),
+    Row("DrawTex zero width", "OES_draw_texture", lambda g, e: g.glDrawTexiOES(0, 0, 0, 0, 4), V),
+    # textures (§3.7)
+    Row("BindTexture bad target", "§3.7.13", lambda g, e: g.glBindTexture(GL_TEXTURE_1D, 1), E),
+    Row("GenTextures negative", "§3.7.13", lambda g, e: g.glGenTextures(-1), V, None, None),
+    Row("TexImage2D bad target", "§3.7.1", lambda g, e: g.glTexImage2D(GL_TEXTURE_1D, 0, G.GL_RGBA, 2, 2, 0,
+        G.GL_RGBA, G.GL_UNSIGNED_BYTE, bytes(16)), E),
+    Row("TexImage2D negative level", "§3.7.1", lambda g, e: g.glTexImage2D(G.GL_TEXTURE_2D, -1, G.GL_RGBA,
+        2, 2, 0, G.GL_RGBA, G.GL_UNSIGNED_BYTE, bytes(16)), V),
+    Row("TexImage2D border 1", "§3.7.1", lambda g, e: g.glTexImage2D(G.GL_TEXTURE_2D, 0, G.GL_RGBA, 2, 2, 1,
+        G.GL_RGBA, G.GL_UNSIGNED_BYTE, bytes(16)), V),
+    Row("TexImage2D not a power of two", "§3.7.1", lambda g, e: g.glTexImage2D(G.GL_TEXTURE_2D, 0,
+        G.GL_RGBA, 3, 2, 0, G.GL_RGBA, G.GL_UNSIGNED_BYTE, bytes(24)), V),
+    Row("TexImage2D beyond MAX_TEXTURE_SIZE", "§3.7.1", lambda g, e: g.glTexImage2D(G.GL_TEXTURE_2D, 0,
+        G.GL_RGBA, 4096, 1, 0, G.GL_RGBA, G.GL_UNSIGNED_BYTE, None), V),
+    Row("TexImage2D internalformat differs", "§3.7.1", lambda g, e: g.glTexImage2D(G.GL_TEXTURE_2D, 0,
+        G.GL_RGB, 2, 2, 0, G.GL_RGBA, G.GL_UNSIGNED_BYTE, bytes(16)), OP),
+    Row("TexImage2D 565 with RGBA", "§3.7.1", lambda g, e: g.glTexImage2D(G.GL_TEXTURE_2D, 0, G.GL_RGBA,
+        2, 2, 0, G.GL_RGBA, G.GL_UNSIGNED_SHORT_5_6_5, bytes(8)), OP),
+    Row("TexParameter bad filter", "§3.7.4", lambda g, e: g.glTexParameteri(G.GL_TEXTURE_2D,
+        G.GL_TEXTURE_MAG_FILTER, G.GL_LINEAR_MIPMAP_LINEAR), E),
+    Row("TexParameter bad wrap", "§3.7.4", lambda g, e: g.glTexParameteri(G.GL_TEXTURE_2D,
+        G.GL_TEXTURE_WRAP_S, G.GL_LINEAR), E),
+    Row("TexEnv bad mode", "§3.7.12", lambda g, e: g.glTexEnvi(G.GL_TEXTURE_ENV, G.GL_TEXTURE_ENV_MODE,
+        G.GL_LINEAR), E),
+    Row("TexEnv RGB_SCALE 3", "§3.7.12", lambda g, e: g.glTexEnvf(G.GL_TEXTURE_ENV, G.GL_RGB_SCALE, 3.0), V),
+    Row("TexEnv bad target", "§3.7.12", lambda g, e: g.glTexEnvi(G.GL_TEXTURE_2D, G.GL_TEXTURE_ENV_MODE,
+        G.GL_REPLACE), E),
+    Row("CompressedTexImage2D bad format", "§3.7.3", lambda g, e: g.glCompressedTexImage2D(G.GL_TEXTURE_2D,
+        0, G.GL_RGBA, 2, 2, 0, 16, bytes(16)), E),
+    Row("CompressedTexSubImage2D on paletted", "OES_compressed_paletted_texture",
+        lambda g, e: g.glCompressedTexSubImage2D(G.GL_TEXTURE_2D, 0, 0, 0, 2, 2, G.GL_PALETTE8_RGBA8_OES,
+                                                 16, bytes(16)), OP),
+    Row("CopyTexImage2D border 1", "§3.7.2", lambda g, e: g.glCopyTexImage2D(G.GL_TEXTURE_2D, 0, G.GL_RGBA,
+        0, 0, 2, 2, 1), V),
+    # OES_matrix_palette
+    Row("CurrentPaletteMatrixOES beyond the palette", "OES_matrix_palette",
+        lambda g, e: g.glCurrentPaletteMatrixOES(32), V),
+    Row("MatrixIndexPointerOES size 5", "OES_matrix_palette",
+        lambda g, e: g.glMatrixIndexPointerOES(5, G.GL_UNSIGNED_BYTE, 0, bytes(10)), V),
+    Row("WeightPointerOES bad type", "OES_matrix_palette",
+        lambda g, e: g.glWeightPointerOES(2, G.GL_BYTE, 0, np.zeros(4, np.int8)), E),
 ]
 
 
@@ -391,3 +505,15 @@ def test_limits_used_by_the_table():
     g = gles.Context(2, 2).gl
     assert g.glGetIntegerv(G.GL_MAX_TEXTURE_UNITS) == UNITS
     assert g.glGetIntegerv(G.GL_MAX_CLIP_PLANES) == PLANES
+
+
+def test_buffer_data_out_of_memory():
+    """§2.9: BufferData that cannot allocate records OUT_OF_MEMORY (and Python
+    raises MemoryError); the buffer keeps its old contents and size."""
+    g = gles.Context(W, H).gl
+    g.glBindBuffer(G.GL_ARRAY_BUFFER, g.glGenBuffers(1))
+    g.glBufferData(G.GL_ARRAY_BUFFER, 8, bytes(range(8)), G.GL_STATIC_DRAW)
+    with pytest.raises(MemoryError):
+        g.glBufferData(G.GL_ARRAY_BUFFER, 1 << 46, None, G.GL_STATIC_DRAW)
+    assert g.glGetError() == G.GL_OUT_OF_MEMORY
+    assert g.glGetBufferParameteriv(G.GL_ARRAY_BUFFER, G.GL_BUFFER_SIZE) == 8
