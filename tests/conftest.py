@@ -10,6 +10,8 @@ exactly, so expected coverage can be worked out from the input alone.
 
 from __future__ import annotations
 
+import sys
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -17,6 +19,12 @@ import pytest
 
 import gles
 from gles import constants as C
+
+# the conformance package (its state tables are shared with the tests) lives
+# beside tests/; make it importable however pytest was started
+_ROOT = str(Path(__file__).resolve().parent.parent)
+if _ROOT not in sys.path:
+    sys.path.insert(0, _ROOT)
 
 BUILDS = ("fixed", "float", "double")
 
