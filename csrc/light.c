@@ -286,10 +286,16 @@ void light_validate(GlesContext *ctx)
     ctx->two_sided = ctx->lighting && ctx->light_model_two_side;
     if (!ctx->lighting)
         return;
+    const Material *m = &ctx->material;
     for (int i = 0; i < GLES_MAX_LIGHTS; i++) {
         Light *l = &ctx->lights[i];
         memcpy(l->unit_spot_direction, l->n_spot_direction, sizeof l->unit_spot_direction);
         num_normalize3(l->unit_spot_direction);
+        /* a light whose specular product is zero skips h and pow entirely */
+        l->has_specular = 0;
+        for (int k = 0; k < 3; k++)
+            if (num_mul(m->n_specular[k], l->n_specular[k]) != NUM_ZERO)
+                l->has_specular = 1;
     }
     normal_matrix_of(ctx->modelview.top->n, ctx->normal_matrix, &ctx->rescale);
     if (ctx->matrix_palette)
@@ -356,7 +362,7 @@ static void light_side(const GlesContext *ctx, const NUM n[3], const NUM v[3], c
                 term[k] = num_add(term[k], num_mul(ndotvp, num_mul(dif_cm[k], l->n_diffuse[k])));
             /* h = VP + (0, 0, 1), no local viewer in ES */
             NUM h[3] = { vp[0], vp[1], num_add(vp[2], NUM_ONE) };
-            if (num_normalize3(h)) {
+            if (l->has_specular && num_normalize3(h)) {
                 NUM ndoth = num_dot(n, 1, h, 1, 3);
                 if (ndoth > NUM_ZERO) {
                     NUM sp = num_pow(ndoth, m->n_shininess);

@@ -95,6 +95,7 @@ typedef struct Light {
     NUM n_ambient[4], n_diffuse[4], n_specular[4], n_position[4], n_spot_direction[3];
     NUM n_spot_exponent, n_cos_cutoff, n_attenuation[3];
     NUM unit_spot_direction[3];     /* derived: normalised */
+    int has_specular;               /* derived: s_cm * s_cli is not zero */
 } Light;
 
 typedef struct Material {
