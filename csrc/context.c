@@ -30,6 +30,15 @@ int ctx_message(GlesContext *ctx, int status, const char *fmt, ...)
 }
 
 const char *gles_last_message(GlesContext *ctx) { return ctx->message; }
+
+void ctx_set_clamped_color(double *d, NUM *n, const double *rgba)
+{
+    for (int i = 0; i < 4; i++) {
+        double c = !(rgba[i] > 0) ? 0.0 : (rgba[i] > 1 ? 1.0 : rgba[i]);
+        d[i] = c;
+        n[i] = num_from_double(c);
+    }
+}
 void *gles_color_buffer(GlesContext *ctx) { return ctx->color; }
 void *gles_depth_buffer(GlesContext *ctx) { return ctx->depth; }
 void *gles_stencil_buffer(GlesContext *ctx) { return ctx->stencil; }

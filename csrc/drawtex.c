@@ -45,17 +45,11 @@ void gles_DrawTexOES(GlesContext *ctx, double xs, double ys, double zs, double w
     }
     int64_t x0 = dbl_to_i64(ceil(xs - 0.5), -(1 << 30), 1 << 30), x1 = dbl_to_i64(ceil(xs + ws - 0.5), -(1 << 30), 1 << 30);
     int64_t y0 = dbl_to_i64(ceil(ys - 0.5), -(1 << 30), 1 << 30), y1 = dbl_to_i64(ceil(ys + hs - 0.5), -(1 << 30), 1 << 30);
-    int64_t cx0 = 0, cy0 = 0, cx1 = ctx->width, cy1 = ctx->height;
-    if (ctx->scissor_test) {
-        if (ctx->scissor[0] > cx0) cx0 = ctx->scissor[0];
-        if (ctx->scissor[1] > cy0) cy0 = ctx->scissor[1];
-        if ((int64_t)ctx->scissor[0] + ctx->scissor[2] < cx1) cx1 = (int64_t)ctx->scissor[0] + ctx->scissor[2];
-        if ((int64_t)ctx->scissor[1] + ctx->scissor[3] < cy1) cy1 = (int64_t)ctx->scissor[1] + ctx->scissor[3];
-    }
-    if (x0 < cx0) x0 = cx0;
-    if (y0 < cy0) y0 = cy0;
-    if (x1 > cx1) x1 = cx1;
-    if (y1 > cy1) y1 = cy1;
+    const ClipRect clip = raster_clip_rect(ctx);
+    if (x0 < clip.x0) x0 = clip.x0;
+    if (y0 < clip.y0) y0 = clip.y0;
+    if (x1 > clip.x1) x1 = clip.x1;
+    if (y1 > clip.y1) y1 = clip.y1;
     for (int64_t py = y0; py < y1; py++)
         for (int64_t px = x0; px < x1; px++) {
             double X = (double)px + 0.5, Y = (double)py + 0.5;

@@ -52,11 +52,7 @@ void gles_Fog(GlesContext *ctx, unsigned int pname, const double *p, int vector)
             ctx_error(ctx, GL_INVALID_ENUM);
             return;
         }
-        for (int i = 0; i < 4; i++) {
-            double c = !(p[i] > 0) ? 0.0 : (p[i] > 1 ? 1.0 : p[i]);
-            ctx->fog_color[i] = c;
-            ctx->n_fog_color[i] = num_from_double(c);
-        }
+        ctx_set_clamped_color(ctx->fog_color, ctx->n_fog_color, p);
         break;
     default:
         ctx_error(ctx, GL_INVALID_ENUM);

@@ -12,15 +12,11 @@
 /* the clear rectangle: the framebuffer, cut by the scissor box when enabled */
 static void clear_rect(const GlesContext *ctx, int *x0, int *y0, int *x1, int *y1)
 {
-    *x0 = 0; *y0 = 0; *x1 = ctx->width; *y1 = ctx->height;
-    if (ctx->scissor_test) {
-        int64_t sx = ctx->scissor[0], sy = ctx->scissor[1];
-        int64_t ex = sx + ctx->scissor[2], ey = sy + ctx->scissor[3];
-        if (sx > *x0) *x0 = (int)i64_clamp(sx, 0, ctx->width);
-        if (sy > *y0) *y0 = (int)i64_clamp(sy, 0, ctx->height);
-        if (ex < *x1) *x1 = (int)i64_clamp(ex, 0, ctx->width);
-        if (ey < *y1) *y1 = (int)i64_clamp(ey, 0, ctx->height);
-    }
+    ClipRect r = raster_clip_rect(ctx);
+    *x0 = (int)i64_clamp(r.x0, 0, ctx->width);
+    *y0 = (int)i64_clamp(r.y0, 0, ctx->height);
+    *x1 = (int)i64_clamp(r.x1, 0, ctx->width);
+    *y1 = (int)i64_clamp(r.y1, 0, ctx->height);
 }
 
 int gles_Clear(GlesContext *ctx, unsigned int mask)

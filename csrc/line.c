@@ -45,16 +45,6 @@ static void line_setup(GlesContext *ctx, TriSetup *t, const Vertex *a, const Ver
     t->depth_offset = 0;
 }
 
-static int in_scissor(const GlesContext *ctx, int64_t x, int64_t y)
-{
-    if (x < 0 || y < 0 || x >= ctx->width || y >= ctx->height)
-        return 0;
-    if (!ctx->scissor_test)
-        return 1;
-    return x >= ctx->scissor[0] && y >= ctx->scissor[1] && x < (int64_t)ctx->scissor[0] + ctx->scissor[2]
-        && y < (int64_t)ctx->scissor[1] + ctx->scissor[3];
-}
-
 void raster_line(GlesContext *ctx, const Vertex *a, const Vertex *b, const Vertex *pv)
 {
     const int64_t one = GLES_SUBPIXEL_ONE, half = one / 2;
@@ -80,6 +70,7 @@ void raster_line(GlesContext *ctx, const Vertex *a, const Vertex *b, const Verte
         p0 = i64_floor_div(mb - half, one) + 1;
         p1 = i64_floor_div(ma - half, one);
     }
+    const ClipRect clip = raster_clip_rect(ctx);
     int smooth = ctx->line_smooth;
     int64_t w = (int64_t)floor(width + 0.5);
     if (w < 1)
@@ -103,7 +94,7 @@ void raster_line(GlesContext *ctx, const Vertex *a, const Vertex *b, const Verte
         }
         for (int64_t pn = q0; pn <= q1; pn++) {
             int64_t px = xmajor ? pm : pn, py = xmajor ? pn : pm;
-            if (!in_scissor(ctx, px, py))
+            if (px < clip.x0 || py < clip.y0 || px >= clip.x1 || py >= clip.y1)
                 continue;
             FRAGV coverage = FRAG_ONE;
             if (smooth) {

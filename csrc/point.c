@@ -95,17 +95,11 @@ void raster_point(GlesContext *ctx, const Vertex *v)
             y0 = cy - w / 2; y1 = cy + w / 2 - 1;
         }
     }
-    int64_t cx0 = 0, cy0 = 0, cx1 = ctx->width - 1, cy1 = ctx->height - 1;
-    if (ctx->scissor_test) {
-        cx0 = ctx->scissor[0] > 0 ? ctx->scissor[0] : 0;
-        cy0 = ctx->scissor[1] > 0 ? ctx->scissor[1] : 0;
-        if ((int64_t)ctx->scissor[0] + ctx->scissor[2] - 1 < cx1) cx1 = (int64_t)ctx->scissor[0] + ctx->scissor[2] - 1;
-        if ((int64_t)ctx->scissor[1] + ctx->scissor[3] - 1 < cy1) cy1 = (int64_t)ctx->scissor[1] + ctx->scissor[3] - 1;
-    }
-    if (x0 < cx0) x0 = cx0;
-    if (y0 < cy0) y0 = cy0;
-    if (x1 > cx1) x1 = cx1;
-    if (y1 > cy1) y1 = cy1;
+    const ClipRect clip = raster_clip_rect(ctx);   /* x1, y1 here are inclusive */
+    if (x0 < clip.x0) x0 = clip.x0;
+    if (y0 < clip.y0) y0 = clip.y0;
+    if (x1 > clip.x1 - 1) x1 = clip.x1 - 1;
+    if (y1 > clip.y1 - 1) y1 = clip.y1 - 1;
     int64_t r2 = (size_sub / 2) * (size_sub / 2);  /* disc radius squared, subpixels */
     for (int64_t py = y0; py <= y1; py++)
         for (int64_t px = x0; px <= x1; px++) {

@@ -105,6 +105,20 @@ static inline void step_next(EdgeStep *e)
     }
 }
 
+ClipRect raster_clip_rect(const GlesContext *ctx)
+{
+    ClipRect r = { 0, 0, ctx->width, ctx->height };
+    if (ctx->scissor_test) {
+        int64_t sx = ctx->scissor[0], sy = ctx->scissor[1];
+        int64_t ex = sx + ctx->scissor[2], ey = sy + ctx->scissor[3];
+        if (sx > r.x0) r.x0 = sx;
+        if (sy > r.y0) r.y0 = sy;
+        if (ex < r.x1) r.x1 = ex;
+        if (ey < r.y1) r.y1 = ey;
+    }
+    return r;
+}
+
 void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const Vertex *c, const Vertex *pv,
                      int back)
 {
@@ -172,13 +186,8 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
     const int64_t one = GLES_SUBPIXEL_ONE, half = GLES_SUBPIXEL_ONE / 2;
     int64_t y0 = i64_ceil_div(miny - half, one);
     int64_t y1 = i64_floor_div(maxy - half, one); /* inclusive */
-    int64_t cx0 = 0, cx1 = ctx->width, cy0 = 0, cy1 = ctx->height;
-    if (ctx->scissor_test) {
-        if (ctx->scissor[0] > cx0) cx0 = ctx->scissor[0];
-        if (ctx->scissor[1] > cy0) cy0 = ctx->scissor[1];
-        if ((int64_t)ctx->scissor[0] + ctx->scissor[2] < cx1) cx1 = (int64_t)ctx->scissor[0] + ctx->scissor[2];
-        if ((int64_t)ctx->scissor[1] + ctx->scissor[3] < cy1) cy1 = (int64_t)ctx->scissor[1] + ctx->scissor[3];
-    }
+    const ClipRect clip = raster_clip_rect(ctx);
+    const int64_t cx0 = clip.x0, cx1 = clip.x1, cy0 = clip.y0, cy1 = clip.y1;
     if (y0 < cy0) y0 = cy0;
     if (y1 > cy1 - 1) y1 = cy1 - 1;
     int drop_last = (ctx->debug & GLES_DEBUG_DROP_LAST_PIXEL) != 0;

@@ -49,6 +49,13 @@ void fragment_from_setup(GlesContext *ctx, const TriSetup *t, const int64_t e[3]
 /* polygon offset (§3.5.2) applied to a triangle fragment's depth */
 uint32_t raster_offset_depth(const GlesContext *ctx, const TriSetup *t, uint32_t z);
 
+/* the pixels fragments may reach: the framebuffer, cut by the scissor box
+** when the scissor test is on; [x0, x1) x [y0, y1), possibly empty */
+typedef struct ClipRect {
+    int64_t x0, y0, x1, y1;
+} ClipRect;
+ClipRect raster_clip_rect(const GlesContext *ctx);
+
 /* draw.c: bring derived state up to date before drawing */
 void draw_validate(GlesContext *ctx);
 

@@ -311,5 +311,7 @@ static inline void ctx_error(GlesContext *ctx, unsigned int err)
 }
 
 int ctx_message(GlesContext *ctx, int status, const char *fmt, ...);
+/* store an RGBA colour clamped to [0,1], as queried (d) and as computed (n) */
+void ctx_set_clamped_color(double *d, NUM *n, const double *rgba);
 
 #endif

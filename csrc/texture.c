@@ -752,11 +752,7 @@ void gles_TexEnv(GlesContext *ctx, unsigned int target, unsigned int pname, cons
             ctx_error(ctx, GL_INVALID_ENUM);
             return;
         }
-        for (int i = 0; i < 4; i++) {
-            double c = !(p[i] > 0) ? 0.0 : (p[i] > 1 ? 1.0 : p[i]);
-            tu->env_color[i] = c;
-            tu->n_env_color[i] = num_from_double(c);
-        }
+        ctx_set_clamped_color(tu->env_color, tu->n_env_color, p);
         break;
     case GL_COMBINE_RGB:
         if (!is_combine_rgb(v)) {

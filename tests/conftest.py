@@ -122,3 +122,25 @@ def clear(ctx: gles.Context, rgba: tuple = (0.0, 0.0, 0.0, 0.0), depth: float | 
 def coverage(ctx: gles.Context) -> np.ndarray:
     """Boolean (h, w): pixels whose colour is not the cleared zero, bottom row first."""
     return read_rgba(ctx).any(axis=2)
+
+
+def random_triangles(rng: np.random.Generator, persp: bool, n: int,
+                     width: int) -> tuple[np.ndarray, np.ndarray]:
+    """n overlapping random triangles: vertices (some outside the view volume,
+    so clipping runs too, for a frustum in perspective or the 1:1 ortho of a
+    window `width` wide) and ubyte colours, about a quarter of them one colour
+    (the constant-colour span)."""
+    tris, cols = [], []
+    for _ in range(n):
+        if persp:
+            z = -rng.uniform(0.8, 3.3, size=3)
+            xy = rng.uniform(-1.2, 1.2, size=(3, 2)) * -z[:, None]
+            v = np.column_stack([xy, z])
+        else:
+            v = np.column_stack([rng.uniform(-6, width + 6, size=(3, 2)), rng.uniform(-1.2, 1.2, size=3)])
+        c = rng.integers(0, 256, size=(3, 4))
+        if rng.random() < 0.25:
+            c[:] = c[0]
+        tris.append(v)
+        cols.append(c)
+    return np.vstack(tris), np.vstack(cols).astype(np.uint8)

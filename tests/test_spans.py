@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from conftest import BUILDS, draw_arrays, make_ctx, set_frustum, set_ortho
+from conftest import BUILDS, draw_arrays, make_ctx, random_triangles, set_frustum, set_ortho
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -50,29 +50,10 @@ def expected_path(s: dict) -> str:
     return "generic"
 
 
-def scene(rng: np.random.Generator, persp: bool, n: int = 8):
-    """Random overlapping triangles: vertices (some outside the view volume, so
-    clipping runs too) and ubyte colours, some triangles with one colour."""
-    tris, cols = [], []
-    for _ in range(n):
-        if persp:
-            z = -rng.uniform(0.8, 3.3, size=3)
-            xy = rng.uniform(-1.2, 1.2, size=(3, 2)) * -z[:, None]
-            v = np.column_stack([xy, z])
-        else:
-            v = np.column_stack([rng.uniform(-6, W + 6, size=(3, 2)), rng.uniform(-1.2, 1.2, size=3)])
-        c = rng.integers(0, 256, size=(3, 4))
-        if rng.random() < 0.25:
-            c[:] = c[0]
-        tris.append(v)
-        cols.append(c)
-    return np.vstack(tris), np.vstack(cols).astype(np.uint8)
-
-
 def render(s: dict, generic: bool):
     """Draw the scene of state `s`; return (colour buffer, depth buffer, path name)."""
     rng = np.random.default_rng(s["seed"])
-    verts, cols = scene(rng, s["persp"])
+    verts, cols = random_triangles(rng, s["persp"], 8, W)
     clear_rgba = tuple(float(v) for v in rng.uniform(0, 1, size=4))
     clear_depth = float(rng.uniform(0.2, 1.0))
     ctx = make_ctx(s["numeric"], W, H, color=s["color"], depth=s["depth_bits"])
