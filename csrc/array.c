@@ -246,6 +246,7 @@ static int set_pointer(GlesContext *ctx, int index, int size, int min_size, int 
     a->buffer = ctx->array_buffer;
     a->buffer_name = ctx->array_buffer ? ctx->array_buffer->name : 0;
     a->nbytes = ctx->array_buffer ? -1 : nbytes;
+    a->range_cached = 0;
     return 1;
 }
 
@@ -464,6 +465,7 @@ void gles_DeleteBuffers(GlesContext *ctx, int n, const unsigned int *names)
             continue;
         BufferObject *b = names_remove(&ctx->buffers, names[i]);
         if (b) {
+            ctx->buffer_serial++;
             unbind_everywhere(ctx, b);
             buffer_free(b);
         }
@@ -530,6 +532,7 @@ int gles_BufferData(GlesContext *ctx, unsigned int target, int64_t size, const v
     else
         memset(store, 0, (size_t)size);
     free(b->data);
+    ctx->buffer_serial++;
     b->data = store;
     b->size = size;
     b->usage = usage;
@@ -552,8 +555,10 @@ void gles_BufferSubData(GlesContext *ctx, unsigned int target, int64_t offset, i
         ctx_error(ctx, GL_INVALID_VALUE);
         return;
     }
-    if (size && data)
+    if (size && data) {
         memcpy(b->data + offset, data, (size_t)size);
+        ctx->buffer_serial++;
+    }
 }
 
 unsigned char gles_IsBuffer(GlesContext *ctx, unsigned int buffer)

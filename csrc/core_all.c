@@ -18,5 +18,6 @@
 #include "point.c"
 #include "line.c"
 #include "drawtex.c"
+#include "range.c"
 #include "draw.c"
 #include "framebuffer.c"

@@ -20,6 +20,7 @@
 #include "raster.h"
 #include "point.h"
 #include "line.h"
+#include "range.h"
 
 /* stamps: a vertex whose stamp is base has its position, base + 1 also its
 ** attributes; base advances by 2 per draw */
@@ -287,13 +288,16 @@ int gles_DrawArrays(GlesContext *ctx, unsigned int mode, int first, int count)
     int skip;
     if ((st = palette_check(ctx, first, (int64_t)first + count - 1, &skip)) != GLES_OK || skip)
         return st;
+    int range = ctx->range_mode ? range_check_draw(ctx, first, (int64_t)first + count - 1) : GLES_OK;
+    if (range && ctx->range_mode == GLES_RANGE_SKIP)
+        return range;
     if ((st = draw_begin(ctx, count)) != GLES_OK)
         return st;
     draw_validate(ctx);
     Batch b = { ctx, first, viewport_visible(ctx) };
     Indices ix = { NULL, 0, first };
     assemble(&b, mode, count, &ix);
-    return GLES_OK;
+    return range;
 }
 
 int gles_DrawElements(GlesContext *ctx, unsigned int mode, int count, unsigned int type,
@@ -341,10 +345,13 @@ int gles_DrawElements(GlesContext *ctx, unsigned int mode, int count, unsigned i
     int skip;
     if ((st = palette_check(ctx, lo, hi, &skip)) != GLES_OK || skip)
         return st;
+    int range = ctx->range_mode ? range_check_draw(ctx, lo, hi) : GLES_OK;
+    if (range && ctx->range_mode == GLES_RANGE_SKIP)
+        return range;
     if ((st = draw_begin(ctx, hi - lo + 1)) != GLES_OK)
         return st;
     draw_validate(ctx);
     Batch b = { ctx, lo, viewport_visible(ctx) };
     assemble(&b, mode, count, &ix);
-    return GLES_OK;
+    return range;
 }

@@ -21,6 +21,7 @@ typedef struct GlesContext GlesContext;
 #define GLES_OK 0
 #define GLES_EVALUE -1   /* array or buffer too short, index out of range */
 #define GLES_EMEMORY -2  /* allocation failed (also sets OUT_OF_MEMORY) */
+#define GLES_RANGE 1     /* the draw broke the overflow rule (gles_range_last) */
 
 /* framebuffer colour formats */
 #define GLES_COLOR_RGBA8888 0
@@ -75,6 +76,18 @@ const char *gles_last_span_name(GlesContext *ctx);
 #define GLES_NUMOP_FROM_UNORM8 11
 #define GLES_NUMOP_POW01 12
 double gles_num_eval(int op, double a, double b);
+
+/* the per-draw overflow rule c*s + t < 16384 (range.c): off, checked (the
+** draw goes on and returns GLES_RANGE), or checked with the draw skipped */
+#define GLES_RANGE_OFF 0
+#define GLES_RANGE_CHECK 1
+#define GLES_RANGE_SKIP 2
+void gles_range_set(GlesContext *ctx, int mode);
+/* the last violation: c, s, t and c*s + t */
+void gles_range_last(GlesContext *ctx, double out[4]);
+/* draws checked and draws that broke the rule */
+void gles_range_counts(GlesContext *ctx, int64_t out[2]);
+void gles_range_reset(GlesContext *ctx);
 
 /* {====================================================================
 ** state queries: up to 16 values into out; returns the count, 0 for an

@@ -83,6 +83,11 @@ typedef struct ArrayState {
     int64_t nbytes;         /* client array length, -1 if unknown */
     BufferObject *buffer;   /* NULL for client memory */
     unsigned int buffer_name;
+    /* range.c: largest |component| of a buffer-backed array, valid while
+    ** range_cached and range_serial == the context's buffer_serial */
+    double range_max;
+    uint32_t range_serial;
+    int range_cached;
 } ArrayState;
 
 /* {====================================================================
@@ -270,6 +275,13 @@ struct GlesContext {
     ArrayState arrays[ARR_COUNT];
     NameTable buffers;
     BufferObject *array_buffer, *element_buffer;
+    uint32_t buffer_serial;     /* advances whenever any buffer's contents change */
+
+    /* the per-draw overflow rule (range.c): GLES_RANGE_* mode, counts and
+    ** the last violation's c, s, t and c*s + t */
+    int range_mode;
+    int64_t range_draws, range_violations;
+    double range_last[4];
 
     /* derived state, valid when dirty == 0 */
     unsigned int dirty;

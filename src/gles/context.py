@@ -11,9 +11,20 @@ import numpy as np
 from . import _binding
 from . import constants as C
 from ._png import write_png
-from .gl import CheckedGLCommon, CheckedGLCommonLite, GLBase, GLCommon, _current, _set_current
+from .gl import GLBase, GLCommon, _checked_class, _current, _set_current
+from .profile import POLICIES, RangeMonitor, RangeReport, RangedGLCommon
 
 PROFILES = {"common": 0, "common-lite": 1}
+_RANGE_MODE = {"off": 0, "warn": 1, "clamp": 1, "raise": 2}   # GLES_RANGE_* of the per-draw rule
+
+# the command-set class for (profile, range checks on, check_errors)
+_GL_CLASSES: dict[tuple[str, bool, bool], type] = {}
+for _base, _key in ((GLBase, "common-lite"), (GLCommon, "common")):
+    for _ranged in (False, True):
+        _cls = RangedGLCommon if (_ranged and _base is GLCommon) else _base
+        _GL_CLASSES[(_key, _ranged, False)] = _cls
+        _GL_CLASSES[(_key, _ranged, True)] = _checked_class(_cls)
+
 COLOR_FORMATS = {"rgba8888": 0, "rgb565": 1}
 
 VENDOR = "gles"
@@ -47,13 +58,18 @@ class Context:
         color: "rgba8888" or "rgb565".
         depth: depth buffer bits, 0, 16 or 24.
         stencil: stencil buffer bits, 0 or 8.
+        range_check: what to do with reals 16.16 cannot hold and with draws
+            that break the overflow rule c*s + t < 16384: "warn", "raise",
+            "clamp" or "off" (see :mod:`gles.profile`). Default: "warn" for
+            the fixed build, "off" for float and double.
 
     Contexts are independent: each has its own lock, and draws release the
     GIL, so contexts in different threads render at the same time.
     """
 
     def __init__(self, width: int, height: int, *, profile: str = "common", numeric: str = "fixed",
-                 color: str = "rgba8888", depth: int = 24, stencil: int = 8) -> None:
+                 color: str = "rgba8888", depth: int = 24, stencil: int = 8,
+                 range_check: str | None = None) -> None:
         if profile not in PROFILES:
             raise ValueError(f"profile must be one of {sorted(PROFILES)}, not {profile!r}")
         if color not in COLOR_FORMATS:
@@ -62,6 +78,10 @@ class Context:
             raise ValueError(f"depth must be 0, 16 or 24, not {depth!r}")
         if stencil not in (0, 8):
             raise ValueError(f"stencil must be 0 or 8, not {stencil!r}")
+        if range_check is None:
+            range_check = "warn" if numeric == "fixed" else "off"
+        if range_check not in POLICIES:
+            raise ValueError(f"range_check must be one of {list(POLICIES)}, not {range_check!r}")
         width, height = int(width), int(height)
         if not (1 <= width <= 4096 and 1 <= height <= 4096):
             raise ValueError(f"width and height must be in 1..4096, not {width}x{height}")
@@ -77,12 +97,58 @@ class Context:
         self.width, self.height = width, height
         self.profile, self.numeric, self.color = profile, numeric, color
         self.depth_bits, self.stencil_bits = depth, stencil
-        self.gl: GLBase = GLCommon(self) if profile == "common" else GLBase(self)
         self._check_errors = False
+        self._range = RangeMonitor(range_check)
+        self._lib.gles_range_set(self._ptr, _RANGE_MODE[range_check])
+        self.gl: GLBase = self._gl_class()(self)
 
     def __repr__(self) -> str:
         return (f"<gles.Context {self.width}x{self.height} {self.profile} {self.numeric} "
-                f"{self.color} depth={self.depth_bits} stencil={self.stencil_bits}>")
+                f"{self.color} depth={self.depth_bits} stencil={self.stencil_bits} "
+                f"range_check={self._range.policy}>")
+
+    def _gl_class(self) -> type:
+        return _GL_CLASSES[(self.profile, self._range.policy != "off", self._check_errors)]
+
+    def _rebind_gl(self) -> None:
+        """Swap in the command-set class the current options call for."""
+        cls = self._gl_class()
+        if type(self.gl) is cls:
+            return
+        was_current = getattr(_current, "gl", None) is self.gl
+        keep = self.gl._keep
+        self.gl = cls(self)
+        self.gl._keep = keep          # arrays the core still points at
+        if was_current:
+            _set_current(self.gl)
+
+    @property
+    def range_check(self) -> str:
+        """The range-check policy: "warn", "raise", "clamp" or "off" (settable)."""
+        return self._range.policy
+
+    @range_check.setter
+    def range_check(self, policy: str) -> None:
+        if policy not in POLICIES:
+            raise ValueError(f"range_check must be one of {list(POLICIES)}, not {policy!r}")
+        self._range.policy = policy
+        with self._lock:
+            self._lib.gles_range_set(self._ptr, _RANGE_MODE[policy])
+        self._rebind_gl()
+
+    def range_report(self, reset: bool = False) -> RangeReport:
+        """What the range checks met since the context was made (or last reset):
+        counts of overflows, underflows and draws breaking c*s + t < 16384,
+        per call, with the worst margins and the first events."""
+        counts = self._ffi.new("int64_t[2]")
+        with self._lock:
+            self._lib.gles_range_counts(self._ptr, counts)
+        report = self._range.report((int(counts[0]), int(counts[1])))
+        if reset:
+            self._range.reset()
+            with self._lock:
+                self._lib.gles_range_reset(self._ptr)
+        return report
 
     @property
     def check_errors(self) -> bool:
@@ -93,19 +159,8 @@ class Context:
 
     @check_errors.setter
     def check_errors(self, on: bool) -> None:
-        on = bool(on)
-        if on == self._check_errors:
-            return
-        was_current = getattr(_current, "gl", None) is self.gl
-        keep = self.gl._keep
-        if self.profile == "common":
-            self.gl = CheckedGLCommon(self) if on else GLCommon(self)
-        else:
-            self.gl = CheckedGLCommonLite(self) if on else GLBase(self)
-        self.gl._keep = keep          # arrays the core still points at
-        self._check_errors = on
-        if was_current:
-            _set_current(self.gl)
+        self._check_errors = bool(on)
+        self._rebind_gl()
 
     def make_current(self) -> Context:
         """Make this the calling thread's current context (for ``gles.gl``)."""

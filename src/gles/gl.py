@@ -51,7 +51,7 @@ _DTYPES = {
 }
 
 _KIND_INT, _KIND_ENUM, _KIND_BOOL, _KIND_FLOAT, _KIND_NORM = 1, 2, 3, 4, 5
-_STATUS_VALUE, _STATUS_MEMORY = -1, -2
+_STATUS_VALUE, _STATUS_MEMORY, _STATUS_RANGE = -1, -2, 1
 _FIX = 1.0 / 65536.0
 
 # The ES 1.1 commands whose pipeline stage is not built yet. Each exists and
@@ -141,8 +141,15 @@ class GLBase:
             arr = np.ascontiguousarray(np.asarray(data, dtype=want if want is not None else np.uint8))
         return ffi.from_buffer(arr), arr.nbytes, arr
 
-    def _status(self, st: int) -> None:
+    def _status(self, st: int, call: str = "") -> None:
         if st == 0:
+            return
+        if st == _STATUS_RANGE:
+            # the draw broke the overflow rule (profile.py acts on the policy)
+            last = self._ffi.new("double[4]")
+            with self._lock:
+                self._lib.gles_range_last(self._p, last)
+            self._context._range.rule(call, last[0], last[1], last[2], last[3])
             return
         msg = self._ffi.string(self._lib.gles_last_message(self._p)).decode()
         if st == _STATUS_MEMORY:
@@ -876,7 +883,7 @@ class GLBase:
         with self._lock:
             st = self._lib.gles_DrawArrays(self._p, mode, first, count)
         if st:
-            self._status(st)
+            self._status(st, "glDrawArrays")
 
     def glDrawElements(self, mode: int, count: int, type: int, indices: Pointer) -> None:
         if type not in (C.GL_UNSIGNED_BYTE, C.GL_UNSIGNED_SHORT):
@@ -889,7 +896,7 @@ class GLBase:
             st = self._lib.gles_DrawElements(self._p, mode, count, type, ptr, nbytes)
         del keep
         if st:
-            self._status(st)
+            self._status(st, "glDrawElements")
 
     def glClear(self, mask: int) -> None:
         with self._lock:

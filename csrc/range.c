@@ -1,0 +1,123 @@
+/*
+** range.c -- the per-draw overflow rule of a 16.16 pipeline.
+** With s the largest |element| of the upper 3x3 of P*MV, t the largest
+** |element| of its 4th column and c the largest |component| of the vertices
+** a draw reads, an application stays clear of overflow while
+** c*s + t < X/2 for the range [-X, X] (McReynolds and Blythe, 8.3.2).
+** Consumes: the double matrices (the application's, not the build's), the
+**       vertex array.  Never does: per-value checks (profile.py does those).
+** Cost: s and t from one 4x4 double product per draw (one per palette
+**       matrix with OES_matrix_palette); c from a scan of the drawn vertices
+**       of a client array (client memory can change at any time), and from a
+**       bound cached per buffer contents for a buffer object, rescanned over
+**       the drawn vertices only when the cached bound breaks the rule.
+*/
+#include <math.h>
+#include <string.h>
+#include "range.h"
+#include "array.h"
+
+/* largest |component| of vertices lo..hi; NaN and infinities give +inf */
+static double range_array_max(const ArrayState *a, const uint8_t *base, int64_t lo, int64_t hi)
+{
+    double c = 0.0;
+    for (int64_t i = lo; i <= hi; i++) {
+        const uint8_t *p = base + i * a->step;
+        for (int k = 0; k < a->size; k++) {
+            double v;
+            switch (a->type) {
+            case GL_BYTE: { int8_t x; memcpy(&x, p + k, 1); v = x; break; }
+            case GL_SHORT: { int16_t x; memcpy(&x, p + 2 * k, 2); v = x; break; }
+            case GL_FIXED: { int32_t x; memcpy(&x, p + 4 * k, 4); v = x / 65536.0; break; }
+            default: { float x; memcpy(&x, p + 4 * k, 4); v = x; break; }
+            }
+            v = fabs(v);
+            if (!(v <= c))            /* also catches NaN */
+                c = isnan(v) ? INFINITY : v;
+        }
+    }
+    return c;
+}
+
+/* s and t of P*M, maximised into *s and *t */
+static void range_matrix_st(const double *p, const double *m, double *s, double *t)
+{
+    for (int col = 0; col < 4; col++)
+        for (int row = 0; row < 4; row++) {
+            if (col < 3 && row == 3)
+                continue;             /* the w row is outside both parts */
+            double acc = 0.0;
+            for (int k = 0; k < 4; k++)
+                acc += p[k * 4 + row] * m[col * 4 + k];
+            acc = isnan(acc) ? INFINITY : fabs(acc);
+            double *dst = col < 3 ? s : t;
+            if (acc > *dst)
+                *dst = acc;
+        }
+}
+
+static int64_t range_vertex_count(const ArrayState *a)
+{
+    int64_t bytes = a->buffer ? a->buffer->size - (int64_t)(uintptr_t)a->ptr : a->nbytes;
+    if (bytes < a->elem_bytes || a->step <= 0)
+        return 0;
+    return (bytes - a->elem_bytes) / a->step + 1;
+}
+
+int range_check_draw(GlesContext *ctx, int64_t lo, int64_t hi)
+{
+    const ArrayState *va = &ctx->arrays[ARR_VERTEX];
+    const double *proj = ctx->projection.top->d;
+    double s = 0.0, t = 0.0;
+    if (ctx->matrix_palette)
+        for (int k = 0; k < GLES_MAX_PALETTE_MATRICES; k++)
+            range_matrix_st(proj, ctx->palette[k].d, &s, &t);
+    else
+        range_matrix_st(proj, ctx->modelview.top->d, &s, &t);
+
+    const uint8_t *base = array_base(va);
+    double c;
+    if (va->buffer) {
+        ArrayState *cache = &ctx->arrays[ARR_VERTEX];
+        if (!cache->range_cached || cache->range_serial != ctx->buffer_serial) {
+            cache->range_max = range_array_max(va, base, 0, range_vertex_count(va) - 1);
+            cache->range_serial = ctx->buffer_serial;
+            cache->range_cached = 1;
+        }
+        c = cache->range_max;
+        if (!(c * s + t < RANGE_HALF_LIMIT))
+            c = range_array_max(va, base, lo, hi);
+    } else {
+        c = range_array_max(va, base, lo, hi);
+    }
+    ctx->range_draws++;
+    double lhs = c * s + t;
+    if (s == 0.0 && isinf(c))
+        lhs = INFINITY;               /* a non-finite vertex breaks any matrix */
+    if (lhs < RANGE_HALF_LIMIT)
+        return GLES_OK;
+    ctx->range_violations++;
+    ctx->range_last[0] = c;
+    ctx->range_last[1] = s;
+    ctx->range_last[2] = t;
+    ctx->range_last[3] = lhs;
+    return GLES_RANGE;
+}
+
+void gles_range_set(GlesContext *ctx, int mode) { ctx->range_mode = mode; }
+
+void gles_range_last(GlesContext *ctx, double out[4])
+{
+    memcpy(out, ctx->range_last, 4 * sizeof(double));
+}
+
+void gles_range_reset(GlesContext *ctx)
+{
+    ctx->range_draws = ctx->range_violations = 0;
+}
+
+void gles_range_counts(GlesContext *ctx, int64_t out[2])
+{
+    out[0] = ctx->range_draws;
+    out[1] = ctx->range_violations;
+}

@@ -1,0 +1,18 @@
+/*
+** range.h -- the per-draw overflow rule for 16.16 pipelines (McReynolds and
+** Blythe, "Advanced Graphics Programming Using OpenGL", 8.3.2).
+*/
+#ifndef GLES_RANGE_H
+#define GLES_RANGE_H
+
+#include "state.h"
+
+/* half of the 16.16 range [-32768, 32768): the rule's X / 2 */
+#define RANGE_HALF_LIMIT 16384.0
+
+/* GLES_OK, or GLES_RANGE when c*s + t >= X/2 for the vertices lo..hi of the
+** vertex array and the current P*MV; the numbers are kept for
+** gles_range_last.  Counts the draw. */
+int range_check_draw(GlesContext *ctx, int64_t lo, int64_t hi);
+
+#endif
