@@ -1,0 +1,121 @@
+"""Command line: ``python -m gles report|compare|render ...``.
+
+* ``report [--out DIR]``: the gallery and the hard cases on every build and
+  on Mesa, as report.html and report.md (the project's main job).
+* ``compare SCENE.py``: one scene on the builds and peers, a table of time
+  against error, and optionally the images and heatmaps.
+* ``render SCENE.py -o OUT.png``: one scene on one build, to a PNG.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from . import compare as cmp
+from ._png import write_png
+
+
+def _size(text: str) -> tuple[int, int]:
+    try:
+        w, h = (int(v) for v in text.lower().split("x"))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"size must look like 256x256, not {text!r}") from None
+    if not (1 <= w <= 4096 and 1 <= h <= 4096):
+        raise argparse.ArgumentTypeError(f"size {w}x{h} is outside 1..4096")
+    return w, h
+
+
+def _names(text: str) -> list[str]:
+    return [n for n in text.split(",") if n]
+
+
+def _cmd_compare(args: argparse.Namespace) -> int:
+    scene = cmp.load_scene(args.scene, args.function)
+    w, h = args.size
+    result = cmp.compare(scene, w, h, builds=args.builds, peers=args.peers, runs=args.runs,
+                         progress=lambda name: print(f"  rendering on {name}", file=sys.stderr))
+    print(f"{result.scene} at {w}x{h}, error against {result.reference}, median of {args.runs} frames\n")
+    print(result.table())
+    fixed = result.renders.get("fixed")
+    if fixed is not None and fixed.range is not None and fixed.range.total:
+        print()
+        print(fixed.range)
+    if args.out:
+        out = Path(args.out)
+        out.mkdir(parents=True, exist_ok=True)
+        for r in result.renders.values():
+            if r.image is not None:
+                write_png(out / f"{result.scene}_{r.renderer}.png", r.image)
+            if r.heatmap is not None:
+                write_png(out / f"{result.scene}_{r.renderer}_diff.png", r.heatmap)
+        print(f"\nimages in {out}")
+    return 0
+
+
+def _cmd_render(args: argparse.Namespace) -> int:
+    scene = cmp.load_scene(args.scene, args.function)
+    w, h = args.size
+    r = cmp.render(scene, args.numeric, w, h, runs=1)
+    if r.image is None:
+        print(f"{args.numeric}: {r.skipped}", file=sys.stderr)
+        return 1
+    write_png(args.output, r.image)
+    print(f"{args.output}: {w}x{h} on {args.numeric}, {r.time_ms:.2f} ms")
+    return 0
+
+
+def _cmd_report(args: argparse.Namespace) -> int:
+    from . import report
+
+    w, h = args.size
+    path = report.build_report(args.out, w, h, runs=args.runs, only=args.only, builds=args.builds,
+                               peers=args.peers, progress=not args.quiet)
+    print(f"report: {path} (and {path.with_suffix('.md')})")
+    return 0
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m gles", description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = parser.add_subparsers(dest="command", required=True)
+
+    def common(p: argparse.ArgumentParser, size: str) -> None:
+        p.add_argument("--size", type=_size, default=_size(size), help=f"WxH (default {size})")
+        p.add_argument("--runs", type=int, default=5, help="frames timed per renderer; the median is reported")
+        p.add_argument("--builds", type=_names, default=list(cmp.BUILDS),
+                       help="comma-separated builds (default fixed,float,double)")
+
+    p = sub.add_parser("report", help="render the gallery and hard cases; write report.html and report.md")
+    p.add_argument("--out", default="gles-report", help="output directory (default ./gles-report)")
+    common(p, "256x256")
+    p.add_argument("--peers", type=_names, default=list(cmp.PEERS),
+                   help="comma-separated peers (default mesa-llvmpipe,mesa-softpipe; '' for none)")
+    p.add_argument("--only", type=_names, default=None, help="comma-separated scene names")
+    p.add_argument("--quiet", action="store_true", help="no progress bar")
+    p.set_defaults(run=_cmd_report)
+
+    p = sub.add_parser("compare", help="one scene on the builds and peers: time against error")
+    p.add_argument("scene", help="a Python file defining scene(gl, w, h)")
+    p.add_argument("--function", default=None, help="the scene function's name (default: scene)")
+    common(p, "256x256")
+    p.add_argument("--peers", type=_names, default=["mesa-llvmpipe"],
+                   help="comma-separated peers (default mesa-llvmpipe; '' for none)")
+    p.add_argument("--out", default=None, help="write images and heatmaps to this directory")
+    p.set_defaults(run=_cmd_compare)
+
+    p = sub.add_parser("render", help="one scene on one build, to a PNG")
+    p.add_argument("scene", help="a Python file defining scene(gl, w, h)")
+    p.add_argument("-o", "--output", required=True, help="PNG file to write")
+    p.add_argument("--function", default=None, help="the scene function's name (default: scene)")
+    p.add_argument("--numeric", default="fixed", choices=[*cmp.BUILDS, *cmp.PEERS])
+    p.add_argument("--size", type=_size, default=_size("256x256"), help="WxH (default 256x256)")
+    p.set_defaults(run=_cmd_render)
+
+    args = parser.parse_args(argv)
+    return int(args.run(args))
+
+
+if __name__ == "__main__":
+    sys.exit(main())
