@@ -338,6 +338,27 @@ _CHECKERS: dict[str, Callable[[RangeMonitor, tuple], tuple]] = {
 }
 
 
+def _fast_scalar(name: str, fn: Any, positions: tuple[int, ...], slow: Any) -> Any:
+    """A command that tests its real arguments inline (a few comparisons per
+    value, no calls) and takes the slow path only when one is out of range or
+    not a plain number."""
+    params = _arg_names(name)
+    reals = [params[i] for i in positions]
+    cond = " and ".join(f"(_UF < abs({p}) < 32768.0 or not {p})" for p in reals)
+    src = (f"def {name}(self, {', '.join(params)}):\n"
+           f"    try:\n"
+           f"        ok = {cond}\n"
+           f"    except TypeError:\n"
+           f"        ok = False\n"
+           f"    if ok:\n"
+           f"        return _fn(self, {', '.join(params)})\n"
+           f"    return _slow(self, {', '.join(params)})\n")
+    scope: dict[str, Any] = {"_UF": UNDERFLOW_LIMIT, "_fn": fn, "_slow": slow}
+    # compiled under this file's name, so warnings skip it on the way to the caller
+    exec(compile(src, __file__, "exec"), scope)  # noqa: S102 -- generated from the signature above
+    return scope[name]
+
+
 def ranged_class(base: type) -> type:
     """A subclass of `base` whose float commands check their reals first."""
 
@@ -350,6 +371,8 @@ def ranged_class(base: type) -> type:
                 args = tuple(bound.args[1:])
             return fn(self, *check(self._context._range, args))
 
+        if name in _SCALAR_REALS:
+            command = _fast_scalar(name, fn, _SCALAR_REALS[name], command)
         command.__name__ = name
         command.__qualname__ = f"Ranged{base.__name__}.{name}"
         command.__doc__ = fn.__doc__
