@@ -83,7 +83,7 @@ def main(argv: list[str] | None = None) -> int:
 
     def common(p: argparse.ArgumentParser, size: str) -> None:
         p.add_argument("--size", type=_size, default=_size(size), help=f"WxH (default {size})")
-        p.add_argument("--runs", type=int, default=5, help="frames timed per renderer; the median is reported")
+        p.add_argument("--runs", type=int, default=5, help="frames timed per renderer (median reported)")
         p.add_argument("--builds", type=_names, default=list(cmp.BUILDS),
                        help="comma-separated builds (default fixed,float,double)")
 

@@ -12,7 +12,7 @@ from . import _binding
 from . import constants as C
 from ._png import write_png
 from .gl import GLBase, GLCommon, _checked_class, _current, _set_current
-from .profile import POLICIES, RangeMonitor, RangeReport, RangedGLCommon
+from .profile import POLICIES, RangedGLCommon, RangeMonitor, RangeReport
 
 PROFILES = {"common": 0, "common-lite": 1}
 _RANGE_MODE = {"off": 0, "warn": 1, "clamp": 1, "raise": 2}   # GLES_RANGE_* of the per-draw rule

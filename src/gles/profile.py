@@ -303,7 +303,8 @@ def _scalar_checker(name: str, positions: tuple[int, ...]) -> Callable[[RangeMon
     return check
 
 
-def _vector_checker(name: str, at: int, count: Callable[[tuple], int]) -> Callable[[RangeMonitor, tuple], tuple]:
+def _vector_checker(name: str, at: int,
+                    count: Callable[[tuple], int]) -> Callable[[RangeMonitor, tuple], tuple]:
     arg = _arg_names(name)[at]
 
     def check(mon: RangeMonitor, args: tuple) -> tuple:

@@ -23,9 +23,10 @@ import os
 import platform
 import sys
 import time
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Callable, Sequence
+from typing import Callable
 
 from . import __version__
 from ._png import write_png
@@ -139,19 +140,20 @@ def speed_error_svg(results: list[tuple[Entry, Comparison]], width: int = 720, h
         label = "identical" if v == top else f"{v}"
         out.append(f'<line x1="{ml}" y1="{y:.1f}" x2="{ml + pw}" y2="{y:.1f}" stroke="#ddd"/>')
         out.append(f'<text x="{ml - 4}" y="{y + 4:.1f}" text-anchor="end">{label}</text>')
-    out.append(f'<text x="{ml + pw / 2}" y="{height - 6}" text-anchor="middle">ms per frame (log scale)</text>')
+    out.append(f'<text x="{ml + pw / 2}" y="{height - 6}" text-anchor="middle">'
+               'ms per frame (log scale)</text>')
     out.append(f'<text x="14" y="{mt + ph / 2}" transform="rotate(-90 14 {mt + ph / 2})" '
                f'text-anchor="middle">PSNR vs double (dB)</text>')
     for scene, renderer, ms, psnr in pts:
         color = COLORS.get(renderer, "#333")
-        tip = f"{scene} on {renderer}: {ms:.2f} ms, " + ("identical" if math.isinf(psnr) else f"{psnr:.1f} dB")
+        tip = f"{scene} on {renderer}: {ms:.2f} ms, {_fmt_psnr(psnr)}"
         out.append(f'<circle cx="{sx(ms):.1f}" cy="{sy(_psnr_y(psnr, top)):.1f}" r="4" fill="{color}" '
                    f'fill-opacity="0.75"><title>{html.escape(tip)}</title></circle>')
     if labels:
         renderers = list(dict.fromkeys(p[1] for p in pts))
         for i, name in enumerate(renderers):
             y = mt + 10 + 16 * i
-            out.append(f'<circle cx="{ml + pw + 16}" cy="{y}" r="4" fill="{COLORS.get(name, "#333")}"/>')
+            out.append(f'<circle cx="{ml + pw + 16}" cy="{y}" r="5" fill="{COLORS.get(name, "#333")}"/>')
             out.append(f'<text x="{ml + pw + 24}" y="{y + 4}">{html.escape(name)}</text>')
     out.append("</svg>")
     return "\n".join(out)
@@ -263,7 +265,8 @@ def _html(results: list[tuple[Entry, Comparison]], renderers: list[str], w: int,
         parts.append("<div class='images'>")
         for r in comp.renders.values():
             if r.image is None:
-                parts.append(f"<figure><figcaption>{e(r.renderer)}: {e(r.skipped or '')}</figcaption></figure>")
+                parts.append(f"<figure><figcaption>{e(r.renderer)}: {e(r.skipped or '')}"
+                             "</figcaption></figure>")
                 continue
             cap = e(r.renderer) + (f", {_fmt_psnr(r.metrics.psnr)}" if r.metrics else "")
             parts.append(f"<figure><img src='img/{e(entry.name)}_{e(r.renderer)}.png' width='{shown}'>"
@@ -316,7 +319,8 @@ def build_report(out: str | Path, width: int = 256, height: int = 256, runs: int
     elapsed = time.perf_counter() - start
     svg = speed_error_svg(results)
     (out / "speed_vs_psnr.svg").write_text(svg, encoding="utf-8")
-    (out / "report.md").write_text(_markdown(results, renderers, width, height, runs, elapsed), encoding="utf-8")
+    md = _markdown(results, renderers, width, height, runs, elapsed)
+    (out / "report.md").write_text(md, encoding="utf-8")
     page = out / "report.html"
     page.write_text(_html(results, renderers, width, height, runs, elapsed, svg), encoding="utf-8")
     stamp = datetime.datetime.now().isoformat(timespec="seconds")
