@@ -293,7 +293,9 @@ void gles_Frustum(GlesContext *ctx, double l, double r, double b, double t, doub
     md[14] = -2 * f * n / (f - n);
     NUM L = num_from_double(l), R = num_from_double(r), B = num_from_double(b), T = num_from_double(t);
     NUM N = num_from_double(n), F = num_from_double(f);
-    NUM rl = num_sub(R, L), tb = num_sub(T, B), fn = num_sub(F, N);
+    /* sums and differences exact (NUMW), each element one rounded ratio:
+    ** a 16.16 device with 64-bit intermediates loses nothing more */
+    NUMW rl = numw(R) - numw(L), tb = numw(T) - numw(B), fn = numw(F) - numw(N);
     NUM mn[16] = { 0 };
     if (rl == 0 || tb == 0 || fn == 0) {
         /* distinct doubles that round to one value: fall back to rounding
@@ -301,14 +303,13 @@ void gles_Frustum(GlesContext *ctx, double l, double r, double b, double t, doub
         for (int i = 0; i < 16; i++)
             mn[i] = num_from_double(md[i]);
     } else {
-        mn[0] = num_div(num_mul_int(N, 2), rl);
-        mn[5] = num_div(num_mul_int(N, 2), tb);
-        mn[8] = num_div(num_add(R, L), rl);
-        mn[9] = num_div(num_add(T, B), tb);
-        mn[10] = num_neg(num_div(num_add(F, N), fn));
+        mn[0] = num_div_w(2 * numw(N), rl);
+        mn[5] = num_div_w(2 * numw(N), tb);
+        mn[8] = num_div_w(numw(R) + numw(L), rl);
+        mn[9] = num_div_w(numw(T) + numw(B), tb);
+        mn[10] = num_neg(num_div_w(numw(F) + numw(N), fn));
         mn[11] = num_neg(NUM_ONE);
-        /* -2fn/(f-n) = -2f * (n/(f-n)), ordered to keep 16.16 in range */
-        mn[14] = num_neg(num_mul(num_mul_int(F, 2), num_div(N, fn)));
+        mn[14] = num_neg(num_muldiv_w(2, F, N, fn));
     }
     mult_both(ctx, md, mn);
 }
@@ -329,19 +330,19 @@ void gles_Ortho(GlesContext *ctx, double l, double r, double b, double t, double
     md[15] = 1;
     NUM L = num_from_double(l), R = num_from_double(r), B = num_from_double(b), T = num_from_double(t);
     NUM N = num_from_double(n), F = num_from_double(f);
-    NUM rl = num_sub(R, L), tb = num_sub(T, B), fn = num_sub(F, N);
+    NUMW rl = numw(R) - numw(L), tb = numw(T) - numw(B), fn = numw(F) - numw(N);
     NUM mn[16] = { 0 };
     if (rl == 0 || tb == 0 || fn == 0) {
         for (int i = 0; i < 16; i++)
             mn[i] = num_from_double(md[i]);
     } else {
-        NUM two = num_from_int(2);
-        mn[0] = num_div(two, rl);
-        mn[5] = num_div(two, tb);
-        mn[10] = num_neg(num_div(two, fn));
-        mn[12] = num_neg(num_div(num_add(R, L), rl));
-        mn[13] = num_neg(num_div(num_add(T, B), tb));
-        mn[14] = num_neg(num_div(num_add(F, N), fn));
+        NUMW two = numw(num_from_int(2));
+        mn[0] = num_div_w(two, rl);
+        mn[5] = num_div_w(two, tb);
+        mn[10] = num_neg(num_div_w(two, fn));
+        mn[12] = num_neg(num_div_w(numw(R) + numw(L), rl));
+        mn[13] = num_neg(num_div_w(numw(T) + numw(B), tb));
+        mn[14] = num_neg(num_div_w(numw(F) + numw(N), fn));
         mn[15] = NUM_ONE;
     }
     mult_both(ctx, md, mn);

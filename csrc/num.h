@@ -141,6 +141,37 @@ static inline NUM num_div(NUM a, NUM b)
 
 static inline NUM num_recip(NUM a) { return num_div(NUM_ONE, a); }
 
+/* NUMW: the exact sum or difference of two NUMs (r - l with r = -l = 20000
+** does not fit 16.16, but its ratio to another may); a ratio of two is
+** rounded once into NUM */
+typedef int64_t NUMW;
+static inline NUMW numw(NUM a) { return a; }
+static inline NUM num_div_w(NUMW a, NUMW b)
+{
+    if (b == 0)
+        return a > 0 ? NUM_MAX : (a < 0 ? NUM_MIN : 0);
+    if (b < 0) {
+        a = -a;
+        b = -b;
+    }
+    return num_sat(i64_round_div(a * 65536, b)); /* |a| < 2^33: no overflow */
+}
+/* k*a*b / c with the product exact in 64 bits (|k| <= 2), rounded once */
+static inline NUM num_muldiv_w(int k, NUM a, NUM b, NUMW c)
+{
+    int64_t p = (int64_t)a * b;   /* |p| <= 2^62 */
+    if (p > INT64_MAX / 2 || p < -(INT64_MAX / 2))
+        p = p > 0 ? INT64_MAX / 2 : -(INT64_MAX / 2);
+    p *= k;
+    if (c == 0)
+        return p > 0 ? NUM_MAX : (p < 0 ? NUM_MIN : 0);
+    if (c < 0) {
+        p = -p;
+        c = -c;
+    }
+    return num_sat(i64_round_div(p, c));
+}
+
 /* floor(sqrt(v)) for v >= 0, exact */
 static inline uint64_t u64_isqrt(uint64_t v)
 {
@@ -220,6 +251,10 @@ static inline NUM num_abs(NUM a) { return a < 0 ? -a : a; }
 static inline NUM num_mul(NUM a, NUM b) { return a * b; }
 static inline NUM num_div(NUM a, NUM b) { return a / b; }
 static inline NUM num_recip(NUM a) { return NUM_ONE / a; }
+typedef NUM NUMW;
+static inline NUMW numw(NUM a) { return a; }
+static inline NUM num_div_w(NUMW a, NUMW b) { return a / b; }
+static inline NUM num_muldiv_w(int k, NUM a, NUM b, NUMW c) { return (NUM)k * a * b / c; }
 static inline NUM num_sqrt(NUM a) { return a > 0 ? NUM_SQRT(a) : 0; }
 static inline NUM num_rsqrt(NUM a) { return a > 0 ? NUM_ONE / NUM_SQRT(a) : NUM_MAX; }
 

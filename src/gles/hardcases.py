@@ -51,9 +51,10 @@ The cases:
     the inside of a tube around the camera, whose rings before and behind
     the eye give triangles crossing w = 0, clipped at the near plane.
 ``huge_triangles``
-    half-planes drawn as triangles with vertices at +-15000 NDC (the rule
-    holds: c*s + t = 16001), beside a perspective ground triangle 20000
-    across seen from 0.3 above it through a near plane at 0.01.
+    half-planes drawn as triangles with vertices at +-15980 NDC (the rule
+    holds: c*s + t = 15982), beside a perspective ground triangle 10000
+    across and 8100 deep seen from 0.3 above it through a near plane at
+    0.01 (c*s + t = 16000.02).
 ``texcoords_1000_repeat``
     the same patch of a 256x256 texture reached at s, t near 0, +1000 and
     -1000 with REPEAT, NEAREST and LINEAR.
@@ -64,8 +65,9 @@ The cases:
     per-vertex lighting of a finely tessellated plane and sphere with
     shininess 128 and a spot exponent of 128.
 ``exp2_fog_dense``
-    EXP2 fog with densities 5 to 50 over eye depths 0 to 0.6, and density 50
-    out to depth 900 (where (d z)^2 exceeds 16.16 by far).
+    EXP2 fog with densities 5 to 50, each band fading from d z = 0 to 4
+    across the window, and density 50 out to depth 900 (where (d z)^2 = 2e9
+    exceeds 16.16 by far).
 ``additive_passes``
     64 additive passes (ONE, ONE) of a dim textured quad, each rounded to 8
     bits before the next adds to it.
@@ -296,7 +298,7 @@ def rule_breaking_matrices(gl: Any, w: int, h: int) -> Frame:
     gl.glDisable(C.GL_DEPTH_TEST)
 
     def frame() -> None:
-        gl.glClearColor(0.05, 0.05, 0.1, 1.0)
+        gl.glClearColor(0.05, 0.05, 0.12, 1.0)
         gl.glClear(C.GL_COLOR_BUFFER_BIT)
         _arrays(gl, wedge_v, wedge_c)
         gl.glDrawArrays(C.GL_TRIANGLES, 0, len(wedge_v))
