@@ -737,7 +737,10 @@ static inline NUM num_lerp(NUM a, NUM b, CLIPT t) { return a + (b - a) * t; }
 
 static inline int64_t num_proj(NUM x, NUM w, int64_t scale)
 {
-    return dbl_to_i64((double)((x / w) * (NUM)scale), -((int64_t)1 << 40), (int64_t)1 << 40);
+    /* ties away from zero, as the fixed build's i64_round_div: every build
+    ** snaps a vertex exactly between two subpixels to the same one */
+    double v = (double)((x / w) * (NUM)scale);
+    return v < 0 ? -dbl_to_i64(-v, 0, (int64_t)1 << 40) : dbl_to_i64(v, 0, (int64_t)1 << 40);
 }
 
 static inline DEPTHV depthv_from_clip(NUM z, NUM w, NUM n, NUM f, uint32_t maxval)
