@@ -83,8 +83,13 @@ double gles_num_eval(int op, double a, double b);
 #define GLES_RANGE_CHECK 1
 #define GLES_RANGE_SKIP 2
 void gles_range_set(GlesContext *ctx, int mode);
-/* the last violation: c, s, t and c*s + t */
-void gles_range_last(GlesContext *ctx, double out[4]);
+/* the last violation: c, s, t and c*s + t of the rule (c*s + t < 16384
+** when only arrays overflowed), and per array (vertex, normal, colour,
+** point size, matrix index, weight, texture coordinates of unit 0..3) the
+** largest drawn |value| of a FLOAT array that 16.16 cannot hold, else 0;
+** returns the bit mask of those arrays */
+#define GLES_RANGE_ARRAYS 10
+int gles_range_last(GlesContext *ctx, double out[4], double array_max[10]);
 /* draws checked and draws that broke the rule */
 void gles_range_counts(GlesContext *ctx, int64_t out[2]);
 void gles_range_reset(GlesContext *ctx);

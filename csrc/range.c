@@ -64,51 +64,89 @@ static int64_t range_vertex_count(const ArrayState *a)
     return (bytes - a->elem_bytes) / a->step + 1;
 }
 
+/* largest |component| of array `index` over vertices lo..hi: a buffer
+** object's cached bound of its whole contents when `fine` accepts it (the
+** drawn vertices are within it), else a scan of the drawn range */
+static double range_bound(GlesContext *ctx, int index, int64_t lo, int64_t hi, int (*fine)(double, void *),
+                          void *arg)
+{
+    ArrayState *a = &ctx->arrays[index];
+    const uint8_t *base = array_base(a);
+    if (!a->buffer)
+        return range_array_max(a, base, lo, hi);
+    if (!a->range_cached || a->range_serial != ctx->buffer_serial) {
+        a->range_max = range_array_max(a, base, 0, range_vertex_count(a) - 1);
+        a->range_serial = ctx->buffer_serial;
+        a->range_cached = 1;
+    }
+    return fine(a->range_max, arg) ? a->range_max : range_array_max(a, base, lo, hi);
+}
+
+static int range_value_fine(double c, void *arg)
+{
+    (void)arg;
+    return c < RANGE_VALUE_LIMIT;
+}
+
+static int range_vertex_fine(double c, void *arg)
+{
+    const double *st = arg;
+    return c * st[0] + st[1] < RANGE_HALF_LIMIT && c < RANGE_VALUE_LIMIT;
+}
+
+_Static_assert(ARR_COUNT == GLES_RANGE_ARRAYS, "gles_range_last reports every array");
+
 int range_check_draw(GlesContext *ctx, int64_t lo, int64_t hi)
 {
-    const ArrayState *va = &ctx->arrays[ARR_VERTEX];
     const double *proj = ctx->projection.top->d;
-    double s = 0.0, t = 0.0;
+    double st[2] = { 0.0, 0.0 };
     if (ctx->matrix_palette)
         for (int k = 0; k < GLES_MAX_PALETTE_MATRICES; k++)
-            range_matrix_st(proj, ctx->palette[k].d, &s, &t);
+            range_matrix_st(proj, ctx->palette[k].d, &st[0], &st[1]);
     else
-        range_matrix_st(proj, ctx->modelview.top->d, &s, &t);
+        range_matrix_st(proj, ctx->modelview.top->d, &st[0], &st[1]);
 
-    const uint8_t *base = array_base(va);
-    double c;
-    if (va->buffer) {
-        ArrayState *cache = &ctx->arrays[ARR_VERTEX];
-        if (!cache->range_cached || cache->range_serial != ctx->buffer_serial) {
-            cache->range_max = range_array_max(va, base, 0, range_vertex_count(va) - 1);
-            cache->range_serial = ctx->buffer_serial;
-            cache->range_cached = 1;
-        }
-        c = cache->range_max;
-        if (!(c * s + t < RANGE_HALF_LIMIT))
-            c = range_array_max(va, base, lo, hi);
-    } else {
-        c = range_array_max(va, base, lo, hi);
-    }
     ctx->range_draws++;
-    double lhs = c * s + t;
-    if (s == 0.0 && isinf(c))
+    int result = GLES_OK;
+    double c = range_bound(ctx, ARR_VERTEX, lo, hi, range_vertex_fine, st);
+    double lhs = c * st[0] + st[1];
+    if (st[0] == 0.0 && isinf(c))
         lhs = INFINITY;               /* a non-finite vertex breaks any matrix */
-    if (lhs < RANGE_HALF_LIMIT)
-        return GLES_OK;
-    ctx->range_violations++;
-    ctx->range_last[0] = c;
-    ctx->range_last[1] = s;
-    ctx->range_last[2] = t;
-    ctx->range_last[3] = lhs;
-    return GLES_RANGE;
+    if (!(lhs < RANGE_HALF_LIMIT)) {
+        ctx->range_violations++;
+        result = GLES_RANGE;
+    }
+    /* per value: FLOAT arrays whose drawn values 16.16 cannot hold (the
+    ** other types always fit) */
+    ctx->range_arrays = 0;
+    for (int i = 0; i < ARR_COUNT; i++) {
+        const ArrayState *a = &ctx->arrays[i];
+        if (!a->enabled || a->type != GL_FLOAT)
+            continue;
+        double m = i == ARR_VERTEX ? c : range_bound(ctx, i, lo, hi, range_value_fine, NULL);
+        if (!(m < RANGE_VALUE_LIMIT)) {
+            ctx->range_arrays |= 1u << i;
+            ctx->range_array_max[i] = m;
+            result = GLES_RANGE;
+        }
+    }
+    if (result) {
+        ctx->range_last[0] = c;
+        ctx->range_last[1] = st[0];
+        ctx->range_last[2] = st[1];
+        ctx->range_last[3] = lhs;
+    }
+    return result;
 }
 
 void gles_range_set(GlesContext *ctx, int mode) { ctx->range_mode = mode; }
 
-void gles_range_last(GlesContext *ctx, double out[4])
+int gles_range_last(GlesContext *ctx, double out[4], double array_max[GLES_RANGE_ARRAYS])
 {
     memcpy(out, ctx->range_last, 4 * sizeof(double));
+    for (int i = 0; i < GLES_RANGE_ARRAYS; i++)
+        array_max[i] = i < ARR_COUNT && (ctx->range_arrays >> i & 1u) ? ctx->range_array_max[i] : 0.0;
+    return (int)ctx->range_arrays;
 }
 
 void gles_range_reset(GlesContext *ctx)

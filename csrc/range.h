@@ -9,10 +9,13 @@
 
 /* half of the 16.16 range [-32768, 32768): the rule's X / 2 */
 #define RANGE_HALF_LIMIT 16384.0
+/* |x| at and above this does not fit 16.16 */
+#define RANGE_VALUE_LIMIT 32768.0
 
 /* GLES_OK, or GLES_RANGE when c*s + t >= X/2 for the vertices lo..hi of the
-** vertex array and the current P*MV; the numbers are kept for
-** gles_range_last.  Counts the draw. */
+** vertex array and the current P*MV, or when an enabled FLOAT array holds a
+** drawn value |x| >= 32768; the numbers are kept for gles_range_last.
+** Counts the draw. */
 int range_check_draw(GlesContext *ctx, int64_t lo, int64_t hi);
 
 #endif

@@ -282,6 +282,8 @@ struct GlesContext {
     int range_mode;
     int64_t range_draws, range_violations;
     double range_last[4];
+    unsigned int range_arrays;          /* bit per ARR_* holding a value >= 32768 */
+    double range_array_max[ARR_COUNT];
 
     /* derived state, valid when dirty == 0 */
     unsigned int dirty;

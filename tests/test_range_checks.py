@@ -393,3 +393,60 @@ def test_non_finite_vertex_breaks_the_rule() -> None:
     g.glVertexPointer(2, C.GL_FLOAT, 0, v)
     quiet(g.glDrawArrays, C.GL_TRIANGLES, 0, 3)
     assert ctx.range_report().counts["rule"] == 1
+
+
+# {====================================================================
+# per value, in FLOAT arrays: drawn values 16.16 cannot hold
+
+ARRAYS = {   # name -> (enable, set the pointer, components)
+    "normal": (C.GL_NORMAL_ARRAY, lambda g, a: g.glNormalPointer(C.GL_FLOAT, 0, a), 3),
+    "color": (C.GL_COLOR_ARRAY, lambda g, a: g.glColorPointer(4, C.GL_FLOAT, 0, a), 4),
+    "texcoord": (C.GL_TEXTURE_COORD_ARRAY, lambda g, a: g.glTexCoordPointer(2, C.GL_FLOAT, 0, a), 2),
+    "pointsize": (C.GL_POINT_SIZE_ARRAY_OES, lambda g, a: g.glPointSizePointerOES(C.GL_FLOAT, 0, a), 1),
+}
+
+array_values = st.one_of(dyadic(-(2**17), 2**17, 2),
+                         st.sampled_from([32768.0, -32768.0, 32767.5, np.nan, np.inf]))
+
+
+@given(st.integers(1, 8), st.sets(st.sampled_from(sorted(ARRAYS)), min_size=1), st.data())
+@settings(max_examples=100, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+def test_float_array_overflow(n: int, names: set[str], data: st.DataObject) -> None:
+    first = data.draw(st.integers(0, n - 1))
+    count = data.draw(st.integers(1, n - first))
+    ident = np.eye(4).reshape(-1)
+    verts = np.zeros((n, 2), np.float32)
+    ctx, g = draw_setup("warn", ident, ident, verts)
+    g.glVertexPointer(2, C.GL_FLOAT, 0, verts)
+    expect = 0
+    keep = []
+    for name in sorted(names):
+        enable, set_pointer, size = ARRAYS[name]
+        arr = np.array(data.draw(st.lists(array_values, min_size=n * size, max_size=n * size)),
+                       dtype=np.float32).reshape(n, size)
+        keep.append(arr)
+        g.glEnableClientState(enable)
+        set_pointer(g, arr)
+        drawn = np.abs(arr[first:first + count].astype(np.float64))
+        expect += bool(np.isnan(drawn).any() or (drawn >= 32768).any())
+    quiet(g.glDrawArrays, C.GL_POINTS, first, count)
+    rep = ctx.range_report()
+    assert rep.counts["overflow"] == expect
+    assert rep.counts["rule"] == 0
+
+
+def test_float_array_in_a_buffer_is_refined_to_the_drawn_range() -> None:
+    ident = np.eye(4).reshape(-1)
+    verts = np.zeros((3, 2), np.float32)
+    ctx, g = draw_setup("raise", ident, ident, verts)
+    g.glVertexPointer(2, C.GL_FLOAT, 0, verts)
+    tex = np.array([[0, 0], [0, 0], [50000, 0]], np.float32)
+    buf = g.glGenBuffers(1)
+    g.glBindBuffer(C.GL_ARRAY_BUFFER, buf)
+    g.glBufferData(C.GL_ARRAY_BUFFER, tex.nbytes, tex, C.GL_STATIC_DRAW)
+    g.glEnableClientState(C.GL_TEXTURE_COORD_ARRAY)
+    g.glTexCoordPointer(2, C.GL_FLOAT, 0, 0)
+    g.glDrawArrays(C.GL_POINTS, 0, 2)           # the whole buffer's bound is 50000; the drawn range is fine
+    with pytest.raises(RangeError, match=r"\(glTexCoordPointer, unit 0\) holds \|x\| = 50000"):
+        g.glDrawArrays(C.GL_POINTS, 1, 2)
+    assert ctx.range_report().counts == {"overflow": 1, "underflow": 0, "rule": 0}

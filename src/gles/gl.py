@@ -145,11 +145,13 @@ class GLBase:
         if st == 0:
             return
         if st == _STATUS_RANGE:
-            # the draw broke the overflow rule (profile.py acts on the policy)
+            # the draw broke the overflow rule or read a FLOAT array value
+            # 16.16 cannot hold (profile.py acts on the policy)
             last = self._ffi.new("double[4]")
+            arrays = self._ffi.new("double[10]")
             with self._lock:
-                self._lib.gles_range_last(self._p, last)
-            self._context._range.rule(call, last[0], last[1], last[2], last[3])
+                mask = self._lib.gles_range_last(self._p, last, arrays)
+            self._context._range.draw(call, tuple(last), {i: arrays[i] for i in range(10) if mask >> i & 1})
             return
         msg = self._ffi.string(self._lib.gles_last_message(self._p)).decode()
         if st == _STATUS_MEMORY:

@@ -7,7 +7,11 @@ conversion loses information in two ways, and this module watches both:
 
 * **Per value.** A real with ``|x| >= 32768`` (or NaN, or an infinity)
   overflows; a nonzero real that rounds to 0 (``|x| <= 2^-17``) underflows.
-  Each float command's real arguments are checked before the core sees them.
+  Each float command's real arguments are checked before the core sees them;
+  FLOAT vertex arrays (positions, normals, colours, texture coordinates, point
+  sizes, weights) are checked by the core at each draw over the vertices
+  drawn, for overflow (an array value that rounds to 0 is not reported: a
+  weight or a normal component below 2^-17 is harmless).
 * **Per draw.** McReynolds and Blythe (*Advanced Graphics Programming Using
   OpenGL*, 8.3.2): with ``s`` the largest ``|element|`` of the upper 3x3 of
   P*MV, ``t`` the largest ``|element|`` of its 4th column, and ``c`` the largest
@@ -203,6 +207,22 @@ class RangeMonitor:
         self._record(RangeEvent(kind, f"{call}({arg})", x, margin, msg))
         return _clamped(x, kind) if self.policy == "clamp" else x
 
+    def draw(self, call: str, rule: tuple[float, float, float, float], arrays: dict[int, float]) -> None:
+        """Record a draw the core flagged: `rule` is (c, s, t, c*s + t); `arrays`
+        maps the ARR_* index of each FLOAT array holding a drawn value 16.16
+        cannot hold to its largest |value|. Under "raise" the first event raises."""
+        for index, big in arrays.items():
+            source = _ARRAY_SOURCES[index]
+            margin = big / OVERFLOW_LIMIT if big == big else math.inf
+            msg = (f"{call}: the {_ARRAY_NAMES[index]} array ({source}) holds |x| = {big:g} in the vertices "
+                   f"drawn, outside 16.16 ({margin:.3g}x the limit); the fixed core saturates it")
+            if self.policy == "raise":
+                msg += "; nothing was drawn"
+            self._record(RangeEvent("overflow", f"{call}: {source}", big, margin, msg))
+        lhs = rule[3]
+        if not lhs < RULE_LIMIT:
+            self.rule(call, *rule)
+
     def rule(self, call: str, c: float, s: float, t: float, lhs: float) -> None:
         """Record a draw that broke c*s + t < X/2."""
         margin = lhs / RULE_LIMIT if lhs == lhs else math.inf
@@ -216,6 +236,14 @@ class RangeMonitor:
     def report(self, draws: tuple[int, int]) -> RangeReport:
         return RangeReport(self.policy, dict(self.counts), dict(self.by_source), dict(self.worst),
                            draws[0], draws[1], list(self.events))
+
+
+# the core's ARR_* order (state.h)
+_ARRAY_SOURCES = ["glVertexPointer", "glNormalPointer", "glColorPointer", "glPointSizePointerOES",
+                  "glMatrixIndexPointerOES", "glWeightPointerOES"] + [
+                  f"glTexCoordPointer, unit {u}" for u in range(4)]
+_ARRAY_NAMES = ["vertex", "normal", "colour", "point size", "matrix index", "weight"] + [
+                "texture coordinate"] * 4
 
 
 # {====================================================================
