@@ -1,7 +1,7 @@
 """What the default range checks cost: the fixed build with range_check="warn"
 against "off" on the benchmark scenes.
 
-    python benchmarks/range_overhead.py [--size 640x480] [--frames 9] [scene ...]
+    python benchmarks/range_overhead.py [--size 640x480] [--frames 30] [scene ...]
 
 Frames alternate between the two contexts and the minimum CPU time of each
 is reported, so a busy machine disturbs both sides alike.
@@ -25,7 +25,7 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("scenes", nargs="*", default=list(SCENES))
     ap.add_argument("--size", default="640x480")
-    ap.add_argument("--frames", type=int, default=9)
+    ap.add_argument("--frames", type=int, default=30)
     args = ap.parse_args()
     w, h = (int(v) for v in args.size.split("x"))
     warnings.simplefilter("ignore")
