@@ -706,11 +706,24 @@ static inline void wgt_persp_any(const WgtSetup *s, const int64_t e[3], WGT out[
         den += n[i];
     }
     int64_t lim = (int64_t)1 << 31;
-    /* bring numerators and denominator below 2^31, then one division each */
-    while (den > lim || den < -lim || n[1] > lim || n[1] < -lim || n[2] > lim || n[2] < -lim) {
-        den /= 2;
-        n[1] /= 2;
-        n[2] /= 2;
+    /* bring numerators and denominator to |x| <= 2^31, then one division
+    ** each: the smallest k with every |x| >> k <= 2^31, found from the bit
+    ** length of the largest (x / 2^k truncates as k halvings would) */
+    uint64_t m = 0;
+    for (int i = 0; i < 3; i++) {
+        int64_t x = i == 0 ? den : n[i];
+        uint64_t ax = x < 0 ? (uint64_t)0 - (uint64_t)x : (uint64_t)x;
+        if (ax > m)
+            m = ax;
+    }
+    if (m > (uint64_t)lim) {
+        int k = u64_bits(m) - 32;          /* m >> k has 32 bits */
+        if ((m >> k) > (uint64_t)lim)
+            k++;
+        int64_t d = (int64_t)1 << k;       /* k <= 33 */
+        den /= d;
+        n[1] /= d;
+        n[2] /= d;
     }
     if (den == 0)
         den = 1;
