@@ -188,3 +188,9 @@ def test_cli_compare_and_render(tmp_path: Path, capsys: pytest.CaptureFixture[st
     assert (tmp_path / "r.png").read_bytes().startswith(b"\x89PNG")
     with pytest.raises(SystemExit):
         main(["compare", str(scene), "--size", "0x8"])
+    # a missing file, a file without a scene, an unknown scene: an error message, status 2
+    assert main(["compare", str(tmp_path / "missing.py")]) == 2
+    (tmp_path / "empty.py").write_text("x = 1\n")
+    assert main(["render", str(tmp_path / "empty.py"), "-o", str(tmp_path / "e.png")]) == 2
+    assert main(["report", "--out", str(tmp_path / "rep"), "--only", "no_such_scene"]) == 2
+    assert "error:" in capsys.readouterr().err

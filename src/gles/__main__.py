@@ -114,7 +114,12 @@ def main(argv: list[str] | None = None) -> int:
     p.set_defaults(run=_cmd_render)
 
     args = parser.parse_args(argv)
-    return int(args.run(args))
+    try:
+        return int(args.run(args))
+    except (OSError, ValueError, SyntaxError, AttributeError) as exc:
+        # a missing or broken scene file, an unknown scene or renderer
+        print(f"python -m gles {args.command}: error: {exc}", file=sys.stderr)
+        return 2
 
 
 if __name__ == "__main__":
