@@ -194,3 +194,11 @@ def test_cli_compare_and_render(tmp_path: Path, capsys: pytest.CaptureFixture[st
     assert main(["render", str(tmp_path / "empty.py"), "-o", str(tmp_path / "e.png")]) == 2
     assert main(["report", "--out", str(tmp_path / "rep"), "--only", "no_such_scene"]) == 2
     assert "error:" in capsys.readouterr().err
+
+
+def test_gles_compare_is_callable_and_a_module() -> None:
+    import gles
+
+    res = gles.compare(triangle_scene, 8, 8, builds=("double",), peers=(), runs=1)
+    assert isinstance(res, cmp.Comparison)
+    assert gles.compare.metrics is cmp.metrics

@@ -14,8 +14,11 @@ code, for Python: numpy in and out, PyOpenGL-style names, PNG output.
 
 from __future__ import annotations
 
-from .context import Context
-from .errors import GLError
-
 __version__ = "0.1.0"
-__all__ = ["Context", "GLError", "__version__"]
+
+from . import compare  # noqa: E402  (callable: gles.compare(scene, w, h, ...))
+from .context import Context  # noqa: E402
+from .errors import GLError  # noqa: E402
+from .profile import RangeError, RangeWarning  # noqa: E402
+
+__all__ = ["Context", "GLError", "RangeError", "RangeWarning", "compare", "__version__"]

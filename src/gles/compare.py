@@ -30,7 +30,9 @@ import importlib.util
 import math
 import os
 import statistics
+import sys
 import time
+import types
 import warnings
 from collections.abc import Sequence
 from dataclasses import dataclass, field
@@ -257,3 +259,14 @@ def load_scene(path: str | Path, name: str | None = None) -> Scene:
     if len(funcs) != 1:
         raise ValueError(f"{path}: define a function named scene(gl, w, h)")
     return funcs[0]
+
+
+class _CallableModule(types.ModuleType):
+    """``gles.compare(scene, w, h, ...)`` calls :func:`compare`, while
+    ``gles.compare.metrics`` and the rest stay reachable."""
+
+    def __call__(self, *args: Any, **kwargs: Any) -> Comparison:
+        return compare(*args, **kwargs)
+
+
+sys.modules[__name__].__class__ = _CallableModule
