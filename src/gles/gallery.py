@@ -145,6 +145,16 @@ def _perspective(gl: Any, w: int, h: int, fovy: float, near: float, far: float) 
     gl.glLoadIdentity()
 
 
+def _bind_two_units(gl: Any, textures: Sequence[int], tc: np.ndarray) -> None:
+    """Bind textures[0] and textures[1] to units 0 and 1, both reading the
+    texture coordinates `tc`; unit 0 is left active."""
+    for unit in (1, 0):
+        gl.glActiveTexture(C.GL_TEXTURE0 + unit)
+        gl.glBindTexture(C.GL_TEXTURE_2D, textures[unit])
+        gl.glClientActiveTexture(C.GL_TEXTURE0 + unit)
+        gl.glTexCoordPointer(2, C.GL_FLOAT, 0, tc)
+
+
 def _begin(gl: Any, clear: Sequence[float]) -> None:
     """State every scene starts from."""
     gl.glClearColor(*clear)
@@ -449,11 +459,7 @@ def dot3_bump(gl: Any, w: int, h: int) -> Frame:
 
     def frame() -> None:
         gl.glClear(C.GL_COLOR_BUFFER_BIT)
-        for unit in (1, 0):
-            gl.glActiveTexture(C.GL_TEXTURE0 + unit)
-            gl.glBindTexture(C.GL_TEXTURE_2D, textures[unit])
-            gl.glClientActiveTexture(C.GL_TEXTURE0 + unit)
-            gl.glTexCoordPointer(2, C.GL_FLOAT, 0, tc)
+        _bind_two_units(gl, textures, tc)
         gl.glVertexPointer(3, C.GL_FLOAT, 0, verts)
         gl.glColorPointer(4, C.GL_UNSIGNED_BYTE, 0, colors)
         gl.glDrawElements(C.GL_TRIANGLES, len(idx), C.GL_UNSIGNED_SHORT, idx)
@@ -644,11 +650,7 @@ def detail_texture(gl: Any, w: int, h: int) -> Frame:
     def frame() -> None:
         gl.glClear(C.GL_COLOR_BUFFER_BIT | C.GL_DEPTH_BUFFER_BIT)
         gl.glLoadMatrixf(_gl_matrix(view))
-        for unit in (1, 0):
-            gl.glActiveTexture(C.GL_TEXTURE0 + unit)
-            gl.glBindTexture(C.GL_TEXTURE_2D, textures[unit])
-            gl.glClientActiveTexture(C.GL_TEXTURE0 + unit)
-            gl.glTexCoordPointer(2, C.GL_FLOAT, 0, tc)
+        _bind_two_units(gl, textures, tc)
         gl.glVertexPointer(3, C.GL_FLOAT, 0, verts)
         gl.glColorPointer(4, C.GL_UNSIGNED_BYTE, 0, colors)
         gl.glDrawElements(C.GL_TRIANGLES, len(idx), C.GL_UNSIGNED_SHORT, idx)

@@ -150,6 +150,15 @@ def _projection(gl: Any, kind: str, *args: float) -> None:
     gl.glMatrixMode(C.GL_MODELVIEW)
 
 
+def _draw(gl: Any, mode: int, verts: np.ndarray, colors: np.ndarray | None = None,
+          texcoords: np.ndarray | None = None, normals: np.ndarray | None = None,
+          count: int | None = None) -> None:
+    """Point the client arrays at the data (as :func:`_arrays`) and draw the
+    first `count` vertices (all of them by default) as `mode`."""
+    _arrays(gl, verts, colors, texcoords, normals)
+    gl.glDrawArrays(mode, 0, len(verts) if count is None else count)
+
+
 def _arrays(gl: Any, verts: np.ndarray, colors: np.ndarray | None = None, texcoords: np.ndarray | None = None,
             normals: np.ndarray | None = None) -> None:
     """Point the client arrays at the given data (float32 positions, uint8 RGBA
@@ -248,8 +257,7 @@ def vertices_near_limit(gl: Any, w: int, h: int, half_width: float = 16000.0) ->
         gl.glClear(C.GL_COLOR_BUFFER_BIT | C.GL_DEPTH_BUFFER_BIT)
         _arrays(gl, field_v, field_c)
         gl.glDrawElements(C.GL_TRIANGLES, len(field_i), C.GL_UNSIGNED_SHORT, field_i)
-        _arrays(gl, plane_v, plane_c)
-        gl.glDrawArrays(C.GL_TRIANGLES, 0, len(plane_v))
+        _draw(gl, C.GL_TRIANGLES, plane_v, plane_c)
 
     return frame
 
@@ -300,13 +308,10 @@ def rule_breaking_matrices(gl: Any, w: int, h: int) -> Frame:
     def frame() -> None:
         gl.glClearColor(0.05, 0.05, 0.12, 1.0)
         gl.glClear(C.GL_COLOR_BUFFER_BIT)
-        _arrays(gl, wedge_v, wedge_c)
-        gl.glDrawArrays(C.GL_TRIANGLES, 0, len(wedge_v))
-        _arrays(gl, fan_v, fan_c)
-        gl.glDrawArrays(C.GL_TRIANGLES, 0, len(fan_v))
+        _draw(gl, C.GL_TRIANGLES, wedge_v, wedge_c)
+        _draw(gl, C.GL_TRIANGLES, fan_v, fan_c)
         for v, c in rings:
-            _arrays(gl, v, c)
-            gl.glDrawArrays(C.GL_TRIANGLE_STRIP, 0, len(v))
+            _draw(gl, C.GL_TRIANGLE_STRIP, v, c)
 
     return frame
 
@@ -359,12 +364,9 @@ def near_far_extreme(gl: Any, w: int, h: int) -> Frame:
         gl.glClearColor(0.0, 0.0, 0.0, 1.0)
         gl.glClearDepthf(1.0)
         gl.glClear(C.GL_COLOR_BUFFER_BIT | C.GL_DEPTH_BUFFER_BIT)
-        _arrays(gl, tiles_v, tiles_c)
-        gl.glDrawArrays(C.GL_TRIANGLES, 0, len(tiles_v))
-        _arrays(gl, disc_v, disc_c)
-        gl.glDrawArrays(C.GL_TRIANGLE_FAN, 0, len(disc_v))
-        _arrays(gl, wall_v, wall_c)
-        gl.glDrawArrays(C.GL_TRIANGLE_FAN, 0, 4)
+        _draw(gl, C.GL_TRIANGLES, tiles_v, tiles_c)
+        _draw(gl, C.GL_TRIANGLE_FAN, disc_v, disc_c)
+        _draw(gl, C.GL_TRIANGLE_FAN, wall_v, wall_c, count=4)
 
     return frame
 
@@ -408,12 +410,9 @@ def sliver_triangles(gl: Any, w: int, h: int) -> Frame:
     def frame() -> None:
         gl.glClearColor(0.0, 0.0, 0.0, 1.0)
         gl.glClear(C.GL_COLOR_BUFFER_BIT)
-        _arrays(gl, sun_v, sun_c)
-        gl.glDrawArrays(C.GL_TRIANGLE_FAN, 0, len(sun_v))
-        _arrays(gl, par_v, par_c)
-        gl.glDrawArrays(C.GL_TRIANGLE_FAN, 0, len(par_v))
-        _arrays(gl, thin_v, thin_c)
-        gl.glDrawArrays(C.GL_TRIANGLES, 0, len(thin_v))
+        _draw(gl, C.GL_TRIANGLE_FAN, sun_v, sun_c)
+        _draw(gl, C.GL_TRIANGLE_FAN, par_v, par_c)
+        _draw(gl, C.GL_TRIANGLES, thin_v, thin_c)
 
     return frame
 
@@ -457,11 +456,9 @@ def crossing_w0(gl: Any, w: int, h: int) -> Frame:
         gl.glClearDepthf(1.0)
         gl.glClear(C.GL_COLOR_BUFFER_BIT | C.GL_DEPTH_BUFFER_BIT)
         gl.glShadeModel(C.GL_FLAT)
-        _arrays(gl, tube_v, tube_c)
-        gl.glDrawArrays(C.GL_TRIANGLES, 0, len(tube_v))
+        _draw(gl, C.GL_TRIANGLES, tube_v, tube_c)
         gl.glShadeModel(C.GL_SMOOTH)
-        _arrays(gl, cap_v, cap_c)
-        gl.glDrawArrays(C.GL_TRIANGLE_FAN, 0, len(cap_v))
+        _draw(gl, C.GL_TRIANGLE_FAN, cap_v, cap_c)
 
     return frame
 
@@ -516,15 +513,13 @@ def huge_triangles(gl: Any, w: int, h: int) -> Frame:
         _projection(gl, "ortho", -al, al, -1.0, 1.0, -1.0, 1.0)
         gl.glDisable(C.GL_TEXTURE_2D)
         gl.glEnable(C.GL_BLEND)
-        _arrays(gl, half_v, half_c)
-        gl.glDrawArrays(C.GL_TRIANGLES, 0, len(half_v))
+        _draw(gl, C.GL_TRIANGLES, half_v, half_c)
         gl.glDisable(C.GL_BLEND)
         gl.glViewport(wl, 0, w - wl, h)
         _projection(gl, "frustum", -0.01 * ar, 0.01 * ar, -0.01, 0.01, 0.01, 20000.0)
         gl.glEnable(C.GL_TEXTURE_2D)
         gl.glBindTexture(C.GL_TEXTURE_2D, ground_tex)
-        _arrays(gl, ground_v, texcoords=ground_t)
-        gl.glDrawArrays(C.GL_TRIANGLES, 0, 3)
+        _draw(gl, C.GL_TRIANGLES, ground_v, texcoords=ground_t, count=3)
         gl.glDisable(C.GL_TEXTURE_2D)
         gl.glViewport(0, 0, w, h)
 
@@ -574,8 +569,7 @@ def texcoords_1000_repeat(gl: Any, w: int, h: int) -> Frame:
         gl.glEnable(C.GL_TEXTURE_2D)
         for name, v, tc in cells:
             gl.glBindTexture(C.GL_TEXTURE_2D, name)
-            _arrays(gl, v, texcoords=tc)
-            gl.glDrawArrays(C.GL_TRIANGLE_FAN, 0, 4)
+            _draw(gl, C.GL_TRIANGLE_FAN, v, texcoords=tc, count=4)
         gl.glDisable(C.GL_TEXTURE_2D)
 
     return frame
@@ -748,8 +742,7 @@ def exp2_fog_dense(gl: Any, w: int, h: int) -> Frame:
         gl.glClear(C.GL_COLOR_BUFFER_BIT)
         for density, v, c in bands:
             gl.glFogf(C.GL_FOG_DENSITY, density)
-            _arrays(gl, v, c)
-            gl.glDrawArrays(C.GL_TRIANGLES, 0, len(v))
+            _draw(gl, C.GL_TRIANGLES, v, c)
 
     return frame
 
@@ -842,8 +835,7 @@ def texture_scroll(gl: Any, w: int, h: int, steps: int = SCROLL_STEPS,
         gl.glClear(C.GL_COLOR_BUFFER_BIT)
         gl.glEnable(C.GL_TEXTURE_2D)
         gl.glBindTexture(C.GL_TEXTURE_2D, name)
-        _arrays(gl, quad_v, texcoords=quad_t)
-        gl.glDrawArrays(C.GL_TRIANGLE_FAN, 0, 4)
+        _draw(gl, C.GL_TRIANGLE_FAN, quad_v, texcoords=quad_t, count=4)
         gl.glDisable(C.GL_TEXTURE_2D)
 
     return frame
