@@ -145,6 +145,17 @@ def _perspective(gl: Any, w: int, h: int, fovy: float, near: float, far: float) 
     gl.glLoadIdentity()
 
 
+def _combine_rgb(gl: Any, func: int, src0: int, src1: int) -> None:
+    """The active unit's environment: COMBINE with COMBINE_RGB = func of the
+    colours (SRC_COLOR) of src0 and src1; alpha is left as it is."""
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_COMBINE)
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_COMBINE_RGB, func)
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_SRC0_RGB, src0)
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_OPERAND0_RGB, C.GL_SRC_COLOR)
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_SRC1_RGB, src1)
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_OPERAND1_RGB, C.GL_SRC_COLOR)
+
+
 def _bind_two_units(gl: Any, textures: Sequence[int], tc: np.ndarray) -> None:
     """Bind textures[0] and textures[1] to units 0 and 1, both reading the
     texture coordinates `tc`; unit 0 is left active."""
@@ -426,12 +437,7 @@ def dot3_bump(gl: Any, w: int, h: int) -> Frame:
     gl.glActiveTexture(C.GL_TEXTURE0)
     normal_tex = _mipmapped(gl, _normal_map(bumps, 6.0))
     gl.glEnable(C.GL_TEXTURE_2D)
-    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_COMBINE)
-    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_COMBINE_RGB, C.GL_DOT3_RGB)
-    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_SRC0_RGB, C.GL_TEXTURE)
-    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_OPERAND0_RGB, C.GL_SRC_COLOR)
-    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_SRC1_RGB, C.GL_PRIMARY_COLOR)
-    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_OPERAND1_RGB, C.GL_SRC_COLOR)
+    _combine_rgb(gl, C.GL_DOT3_RGB, C.GL_TEXTURE, C.GL_PRIMARY_COLOR)
     # unit 1: the diffuse bricks, MODULATE by the light term
     gl.glActiveTexture(C.GL_TEXTURE1)
     base_tex = _mipmapped(gl, base)
@@ -618,12 +624,7 @@ def detail_texture(gl: Any, w: int, h: int) -> Frame:
     gl.glActiveTexture(C.GL_TEXTURE1)
     detail_tex = _texture(gl, levels, C.GL_LINEAR_MIPMAP_LINEAR, C.GL_LINEAR, C.GL_REPEAT)
     gl.glEnable(C.GL_TEXTURE_2D)
-    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_COMBINE)
-    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_COMBINE_RGB, C.GL_ADD_SIGNED)
-    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_SRC0_RGB, C.GL_PREVIOUS)
-    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_OPERAND0_RGB, C.GL_SRC_COLOR)
-    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_SRC1_RGB, C.GL_TEXTURE)
-    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_OPERAND1_RGB, C.GL_SRC_COLOR)
+    _combine_rgb(gl, C.GL_ADD_SIGNED, C.GL_PREVIOUS, C.GL_TEXTURE)
     gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_COMBINE_ALPHA, C.GL_REPLACE)
     gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_SRC0_ALPHA, C.GL_PREVIOUS)
     gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_OPERAND0_ALPHA, C.GL_SRC_ALPHA)

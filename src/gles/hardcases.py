@@ -150,6 +150,17 @@ def _projection(gl: Any, kind: str, *args: float) -> None:
     gl.glMatrixMode(C.GL_MODELVIEW)
 
 
+def _disc_fan(cx: float, cy: float, rx: float, ry: float, z: float, m: int,
+              centre: list[float], rim: list[float]) -> tuple[np.ndarray, np.ndarray]:
+    """A TRIANGLE_FAN ellipse at depth z: the centre then m + 1 rim points
+    (the first repeated), coloured `centre` and `rim`."""
+    t = np.arange(m + 1) * (2 * math.pi / m)
+    verts = _f32(np.vstack([[cx, cy, z], np.stack([cx + rx * np.cos(t), cy + ry * np.sin(t),
+                                                   np.full(m + 1, z)], -1)]))
+    colors = _rgba(np.vstack([centre, np.tile(rim, (m + 1, 1))]))
+    return verts, colors
+
+
 def _draw(gl: Any, mode: int, verts: np.ndarray, colors: np.ndarray | None = None,
           texcoords: np.ndarray | None = None, normals: np.ndarray | None = None,
           count: int | None = None) -> None:
@@ -352,10 +363,7 @@ def near_far_extreme(gl: Any, w: int, h: int) -> Frame:
     wall_c = _rgba([[0.1, 0.1, 0.35], [0.3, 0.05, 0.4], [0.05, 0.3, 0.45], [0.15, 0.15, 0.6]])
     dd = 2000.0
     m = 48
-    t = np.arange(m + 1) * (2 * math.pi / m)
-    disc_v = _f32(np.vstack([[0.0, 0.0, -dd], np.stack([0.3 * a * dd * np.cos(t), 0.3 * dd * np.sin(t),
-                                                         np.full(m + 1, -dd)], -1)]))
-    disc_c = _rgba(np.vstack([[1.0, 0.95, 0.6], np.tile([1.0, 0.45, 0.1], (m + 1, 1))]))
+    disc_v, disc_c = _disc_fan(0.0, 0.0, 0.3 * a * dd, 0.3 * dd, -dd, m, [1.0, 0.95, 0.6], [1.0, 0.45, 0.1])
     gl.glEnable(C.GL_DEPTH_TEST)
     gl.glDepthFunc(C.GL_LESS)
     gl.glShadeModel(C.GL_SMOOTH)
@@ -443,10 +451,7 @@ def crossing_w0(gl: Any, w: int, h: int) -> Frame:
     tube_v = _f32(_quads_flat(np.array(quads)))
     tube_c = _rgba(np.repeat(np.array(cols), 6, axis=0))
     m = 32
-    t = np.arange(m + 1) * (2 * math.pi / m)
-    cap_v = _f32(np.vstack([[ox, oy, -150.0], np.stack([ox + rad * np.cos(t), oy + rad * np.sin(t),
-                                                          np.full(m + 1, -150.0)], -1)]))
-    cap_c = _rgba(np.vstack([[1.0, 1.0, 1.0], np.tile([0.9, 0.8, 0.2], (m + 1, 1))]))
+    cap_v, cap_c = _disc_fan(ox, oy, rad, rad, -150.0, m, [1.0, 1.0, 1.0], [0.9, 0.8, 0.2])
     gl.glEnable(C.GL_DEPTH_TEST)
     gl.glDepthFunc(C.GL_LESS)
     gl.glShadeModel(C.GL_FLAT)
