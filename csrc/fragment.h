@@ -5,8 +5,24 @@
 #define GLES_FRAGMENT_H
 
 #include "state.h"
+#include "texture.h"
 
 void fragment_init(GlesContext *ctx);
+
+/* the inputs of one fragment (fragment_process) */
+typedef struct FragIn {
+    FRAGV c[4];                             /* primary colour */
+    TexCoord tc[GLES_MAX_TEXTURE_UNITS];    /* per enabled unit */
+    TexCoord tdx[GLES_MAX_TEXTURE_UNITS];   /* the right and upper neighbours', */
+    TexCoord tdy[GLES_MAX_TEXTURE_UNITS];   /* read when the filter needs LOD */
+    FRAGV fog;                              /* fog factor f */
+    FRAGV coverage;                         /* antialiasing coverage, FRAG_ONE if none */
+    uint32_t z;                             /* window depth (with the depth test on) */
+} FragIn;
+
+/* texturing, fog, coverage and the per-fragment operations for one fragment */
+void fragment_process(GlesContext *ctx, int x, int y, const FragIn *in);
+
 
 /* A colour channel into a framebuffer channel of `bits` bits (§2.12.8,
 ** §4.1.8). 8 bits round to nearest. Fewer bits without dithering keep the

@@ -64,6 +64,14 @@ static inline int64_t i64_round_div(int64_t n, int64_t d)
     return ((n < 0) != (d < 0)) ? -(int64_t)q : (int64_t)q;
 }
 
+/* n / 2^k truncated toward zero, as C's n / ((int64_t)1 << k), without a
+** division instruction (0 <= k <= 62) */
+static inline int64_t i64_div_pow2(int64_t n, int k)
+{
+    int64_t bias = n < 0 ? (((int64_t)1 << k) - 1) : 0;
+    return (n + bias) >> k;
+}
+
 /* number of significant bits of a non-negative value (0 for 0) */
 static inline int u64_bits(uint64_t v)
 {
@@ -700,9 +708,9 @@ static inline void wgt_persp_any(const WgtSetup *s, const int64_t e[3], WGT out[
 {
     int64_t n[3], den = 0;
     for (int i = 0; i < 3; i++) {
-        int64_t ei = e[i] / ((int64_t)1 << s->eshift);
+        int64_t ei = i64_div_pow2(e[i], s->eshift);
         int sh = s->qshift[i] < 62 ? s->qshift[i] : 62;
-        n[i] = s->affine ? ei : (ei * s->mant[i]) / ((int64_t)1 << sh);
+        n[i] = s->affine ? ei : i64_div_pow2(ei * s->mant[i], sh);
         den += n[i];
     }
     int64_t lim = (int64_t)1 << 31;
@@ -720,10 +728,10 @@ static inline void wgt_persp_any(const WgtSetup *s, const int64_t e[3], WGT out[
         int k = u64_bits(m) - 32;          /* m >> k has 32 bits */
         if ((m >> k) > (uint64_t)lim)
             k++;
-        int64_t d = (int64_t)1 << k;       /* k <= 33 */
-        den /= d;
-        n[1] /= d;
-        n[2] /= d;
+        /* k <= 33 */
+        den = i64_div_pow2(den, k);
+        n[1] = i64_div_pow2(n[1], k);
+        n[2] = i64_div_pow2(n[2], k);
     }
     if (den == 0)
         den = 1;

@@ -6,6 +6,7 @@
 
 #include "state.h"
 #include "texture.h"
+#include "span.h"
 
 /* Everything a span function needs about the triangle being drawn. */
 struct TriSetup {
@@ -22,6 +23,21 @@ struct TriSetup {
     uint32_t flat_packed;   /* the same in the framebuffer's format */
 };
 
+/* texture coordinates of unit u at perspective weights p */
+static inline void span_tex_coord(const TriSetup *t, int u, const WGT p[3], TexCoord *out)
+{
+    const NUM *a = t->v[0]->tex[u], *b = t->v[1]->tex[u], *c = t->v[2]->tex[u];
+    TEXC s = texc_lerp3(a[0], b[0], c[0], p[0], p[1], p[2]);
+    TEXC tt = texc_lerp3(a[1], b[1], c[1], p[0], p[1], p[2]);
+    if (t->tex_projective & (1u << u)) {
+        TEXC q = texc_lerp3(a[3], b[3], c[3], p[0], p[1], p[2]);
+        s = texc_div(s, q);
+        tt = texc_div(tt, q);
+    }
+    out->s = s;
+    out->t = tt;
+}
+
 /* rasterize a triangle whose vertices have window coordinates; `pv` is the
 ** provoking vertex (flat shading); `back` selects the back colours of
 ** two-sided lighting */
@@ -29,20 +45,6 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
                      int back);
 /* the signed window-space area (x2) of a triangle, counter-clockwise > 0 */
 int64_t raster_area2(const Vertex *a, const Vertex *b, const Vertex *c);
-
-/* the inputs of one fragment (span.c's fragment_process) */
-typedef struct FragIn {
-    FRAGV c[4];                             /* primary colour */
-    TexCoord tc[GLES_MAX_TEXTURE_UNITS];    /* per enabled unit */
-    TexCoord tdx[GLES_MAX_TEXTURE_UNITS];   /* the right and upper neighbours', */
-    TexCoord tdy[GLES_MAX_TEXTURE_UNITS];   /* read when the filter needs LOD */
-    FRAGV fog;                              /* fog factor f */
-    FRAGV coverage;                         /* antialiasing coverage, FRAG_ONE if none */
-    uint32_t z;                             /* window depth (with the depth test on) */
-} FragIn;
-
-/* texturing, fog, coverage and the per-fragment operations for one fragment */
-void fragment_process(GlesContext *ctx, int x, int y, const FragIn *in);
 
 void fragment_from_setup(GlesContext *ctx, const TriSetup *t, const int64_t e[3], int x, int y, FRAGV coverage,
                          const TexCoord *sprite, const TexCoord *sprite_dx, const TexCoord *sprite_dy);
@@ -58,10 +60,5 @@ ClipRect raster_clip_rect(const GlesContext *ctx);
 
 /* draw.c: bring derived state up to date before drawing */
 void draw_validate(GlesContext *ctx);
-
-/* span.c: choose the span function for the current state */
-void span_choose(GlesContext *ctx);
-/* pack a [0,1] colour into the framebuffer's format */
-uint32_t span_pack_color(const GlesContext *ctx, const FRAGV *c);
 
 #endif

@@ -1,6 +1,6 @@
 /*
 ** span_tex_tmpl.h -- template for a textured span function, included by
-** span.c after tex_coord().
+** span.c after span_tex_coord().
 ** Parameters (each #undef'd at the end):
 **   SPAN_NAME    MUST: the function's name
 **   SPAN_DEPTH   1: depth test LESS with depth writes; 0: no depth test
@@ -44,7 +44,7 @@ static void SPAN_NAME(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
             cf[i] = c[i] = frag_clamp01(c[i]);
         }
         TexCoord tc;
-        tex_coord(t, 0, p, &tc);
+        span_tex_coord(t, 0, p, &tc);
         if (lod) {
             int64_t ex[3] = { e[0] + t->ea[0], e[1] + t->ea[1], e[2] + t->ea[2] };
             int64_t ey[3] = { e[0] + t->eb[0], e[1] + t->eb[1], e[2] + t->eb[2] };
@@ -52,8 +52,8 @@ static void SPAN_NAME(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
             TexCoord tx, ty;
             wgt_persp_any(&t->wgt, ex, px);
             wgt_persp_any(&t->wgt, ey, py);
-            tex_coord(t, 0, px, &tx);
-            tex_coord(t, 0, py, &ty);
+            span_tex_coord(t, 0, px, &tx);
+            span_tex_coord(t, 0, py, &ty);
             texture_sample(tex, &tc, &tx, &ty, ct[0], ctx->texel_unorm8);
         } else {
             texture_sample(tex, &tc, NULL, NULL, ct[0], ctx->texel_unorm8);

@@ -166,6 +166,15 @@ typedef struct Vertex {
 ** the fragment stage's view of a triangle (filled by raster.c) */
 typedef struct TriSetup TriSetup;
 typedef void (*SpanFunc)(struct GlesContext *ctx, const TriSetup *t, int y, int x0, int n);
+typedef struct SpanBuf SpanBuf;
+/* one stage of the fragment chain (span_chain.c), over a chunk of a span */
+typedef void (*SpanStage)(struct GlesContext *ctx, const TriSetup *t, SpanBuf *b);
+#define GLES_MAX_STAGES 16
+/* texture coordinates of a pixel (texture.h) and a sampler over a run of
+** fragments (texsample.c) */
+typedef struct TexCoord TexCoord;
+typedef void (*TexSpanSampler)(const Texture *tex, int n, const TexCoord *c, const TexCoord *dx,
+                               const TexCoord *dy, FRAGV *out, size_t stride, const FRAGV *unorm);
 
 /* {====================================================================
 ** the context */
@@ -300,6 +309,9 @@ struct GlesContext {
     SpanFunc span;              /* chosen for the current state */
     SpanFunc span_const;        /* the same state with a constant colour */
     const char *span_name;
+    SpanStage chain[GLES_MAX_STAGES];   /* the chain's stages, when span is span_chain */
+    int chain_len;
+    TexSpanSampler samplers[GLES_MAX_TEXTURE_UNITS];   /* each unit's, for the chain (texsample.c) */
     int debug;
 
     /* per-draw scratch: transformed vertices and their stamps */

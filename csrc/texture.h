@@ -15,9 +15,9 @@ const Texture *texture_active(const GlesContext *ctx, int unit);
 void texture_validate(GlesContext *ctx);
 
 /* texture coordinates of a pixel: s, t after the division by q */
-typedef struct TexCoord {
+struct TexCoord {
     TEXC s, t;
-} TexCoord;
+};
 
 /* the filtered texel for texture coordinates at a pixel and, when the
 ** filter needs a level of detail, at its right and upper neighbours
@@ -25,10 +25,17 @@ typedef struct TexCoord {
 ** context's table of c / 255 */
 void texture_sample(const Texture *tex, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
                     FRAGV out[4], const FRAGV *unorm);
+/* texture_sample for n fragments, with the texture's filter and wrap
+** modes fixed: fragment j's coordinates c[j] (and dx[j], dy[j] when the
+** filter needs a level of detail), its texel at out + j * stride */
+TexSpanSampler texture_span_sampler(const Texture *tex);
 /* does sampling this texture need the neighbours' coordinates */
 int texture_needs_lod(const Texture *tex);
 /* the texture environment of unit u: cp is the previous colour (in and
 ** out), cf the primary (fragment) colour, ct[u] every unit's texel */
 void texture_env(const GlesContext *ctx, int u, const FRAGV cf[4], FRAGV ct[][4], FRAGV cp[4]);
+/* the same for n fragments: cf[j], ct[j], cp[j] are fragment j's */
+void texture_env_span(const GlesContext *ctx, int u, int n, const FRAGV (*cf)[4],
+                      FRAGV (*ct)[GLES_MAX_TEXTURE_UNITS][4], FRAGV (*cp)[4]);
 
 #endif

@@ -42,11 +42,11 @@ states = st.fixed_dictionaries({
 def expected_path(s: dict) -> str:
     """The span function span_choose must pick for state `s`."""
     if s["breaker"] is not None:
-        return "generic"
+        return "chain"
     name = "smooth" if s["smooth"] else "flat"
     if s["depth_test"] and s["depth_bits"]:
         if s["depth_func"] != "LESS" or not s["depth_mask"]:
-            return "generic"
+            return "chain"
         name += "_zless"
     return f"{name}_{s['blend']}"
 

@@ -2,8 +2,9 @@
 
 ``span_generic`` handles every fragment state and is the reference; the
 specialised instances (flat or smooth colour, without depth or with depth
-LESS and writes, on RGBA8888 with every colour channel writable) must
-produce bit-identical colour and depth buffers. ``ctx.debug(1)`` forces the
+LESS and writes, on RGBA8888 with every colour channel writable) and the
+composed chain of stages (every other state) must produce bit-identical
+colour and depth buffers. ``ctx.debug(1)`` forces the
 generic path, so each scene is rendered both ways and compared. The test
 also checks that the state did pick the specialised path it should, so the
 comparison is not between two runs of the generic code.
@@ -47,7 +48,7 @@ def expected_path(s: dict) -> str:
         return shade
     if simple and s["depth_func"] == "LESS" and s["depth_mask"]:
         return shade + "_zless"
-    return "generic"
+    return "chain"
 
 
 def render(s: dict, generic: bool):
@@ -121,5 +122,5 @@ def test_paths_change_with_state():
     for change in ({"depth_func": "LEQUAL"}, {"depth_mask": False}, {"color_mask": (True, False, True, True)},
                    {"color": "rgb565"}):
         s = {**base, **change}
-        assert render(s, False)[2] == "generic", change
+        assert render(s, False)[2] == "chain", change
         check_state(s)

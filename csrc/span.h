@@ -1,0 +1,45 @@
+/*
+** span.h -- the fragment stage's interface: span functions for triangles
+** (span.c: the generic reference and fused special cases; span_chain.c:
+** the composed chain of span-wide stages) and the buffer a chunk of a span
+** flows through.
+*/
+#ifndef GLES_SPAN_H
+#define GLES_SPAN_H
+
+#include "state.h"
+#include "texture.h"
+
+/* the pixels a chunk holds: the chain cuts longer runs */
+#define SPAN_CHUNK 64
+
+/* One chunk of a row's run: the live fragments and what the stages have
+** computed for them so far. Slot j holds the fragment at x0 + k[j]; the
+** tests drop fragments by compacting the slots. */
+struct SpanBuf {
+    int y, x0;                      /* the chunk's first pixel */
+    int n;                          /* live fragments */
+    uint8_t k[SPAN_CHUNK];          /* their offsets from x0, ascending */
+    int64_t e0[3];                  /* edge values at x0 */
+    WGT p[SPAN_CHUNK][3];           /* perspective weights */
+    WGT px[SPAN_CHUNK][3];          /* the right neighbour's (level of detail) */
+    WGT py[SPAN_CHUNK][3];          /* the upper neighbour's */
+    FRAGV c[SPAN_CHUNK][4];         /* the colour so far */
+    FRAGV cf[SPAN_CHUNK][4];        /* the primary colour, clamped (environments) */
+    FRAGV ct[SPAN_CHUNK][GLES_MAX_TEXTURE_UNITS][4];   /* each unit's texel */
+    TexCoord tc[SPAN_CHUNK], tx[SPAN_CHUNK], ty[SPAN_CHUNK];   /* one unit's, and its neighbours' */
+};
+
+/* choose the span function (and compose the chain) for the current state */
+void span_choose(GlesContext *ctx);
+/* the chain's stages for the current state, into ctx->chain */
+void span_chain_compose(GlesContext *ctx);
+/* run a row's covered run through ctx->chain */
+void span_chain(GlesContext *ctx, const TriSetup *t, int y, int x0, int n);
+/* which blend a fused RGBA8888 writer covers: 0 none, 1 SRC_ALPHA,
+** ONE_MINUS_SRC_ALPHA, 2 ONE, ONE (FUNC_ADD, the same for alpha), -1 other */
+int span_blend_kind(const GlesContext *ctx);
+/* pack a [0,1] colour into the framebuffer's format */
+uint32_t span_pack_color(const GlesContext *ctx, const FRAGV *c);
+
+#endif

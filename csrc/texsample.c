@@ -1,0 +1,195 @@
+/*
+** texsample.c -- texture sampling (ES 1.1 §3.7.7-3.7.8).
+** Consumes: a complete texture and coordinates after the division by q.
+** Produces: the filtered texel as RGBA in FRAGV.
+** REPEAT wraps the coordinate exactly before it is scaled to texel space,
+** so large coordinates never overflow; the level of detail uses
+** rho = max(|du/dx|, |du/dy|, |dv/dx|, |dv/dy|), the lower bound the spec
+** allows, from the coordinates of the pixel's right and upper neighbours.
+*/
+#include "state.h"
+#include "texture.h"
+
+/* wrap a texel index into [0, n); sizes are powers of two (§3.7.1) */
+static inline int wrap_index(int64_t i, int n, unsigned int mode)
+{
+    switch (mode) {
+    case GL_REPEAT:
+        return (int)(i & (n - 1));
+    case GL_MIRRORED_REPEAT_OES: {
+        int64_t r = i & (2 * (int64_t)n - 1);
+        return (int)(r < n ? r : 2 * (int64_t)n - 1 - r);
+    }
+    default: /* GL_CLAMP_TO_EDGE */
+        return (int)(i < 0 ? 0 : (i >= n ? n - 1 : i));
+    }
+}
+
+/* the coordinate reduced before scaling: REPEAT keeps the fraction, the
+** mirror folds into [0, 2), CLAMP_TO_EDGE leaves it (indices clamp) */
+static inline TEXC reduce_coord(TEXC s, unsigned int mode)
+{
+    if (mode == GL_REPEAT)
+        return s - texc_floor(s);
+    if (mode == GL_MIRRORED_REPEAT_OES)
+        return s - 2 * texc_floor(s / 2);   /* [0, 2): indices mirror past 1 */
+    /* clamp far values so scaling by the size cannot overflow */
+    if (s < -TEXC_ONE)
+        return -TEXC_ONE;
+    if (s > 2 * TEXC_ONE)
+        return 2 * TEXC_ONE;
+    return s;
+}
+
+static inline void texel(const TexImage *li, int i, int j, FRAGV out[4], const FRAGV *unorm)
+{
+    uint32_t c = li->texels[(size_t)j * li->width + i];
+    out[0] = unorm[c & 0xFF];
+    out[1] = unorm[(c >> 8) & 0xFF];
+    out[2] = unorm[(c >> 16) & 0xFF];
+    out[3] = unorm[c >> 24];
+}
+
+/* The sampling functions take the wrap modes as arguments so that the
+** span samplers below can pass constants and have the switches folded;
+** always inlined for that reason. */
+#define SAMPLE_INLINE static inline __attribute__((always_inline))
+
+SAMPLE_INLINE void sample_level(const Texture *t, int level, unsigned int filter, TEXC s, TEXC tc, FRAGV out[4],
+                                  const FRAGV *unorm, unsigned int ws, unsigned int wt)
+{
+    const TexImage *li = &t->level[level];
+    int w = li->width, h = li->height;
+    TEXC u = texc_scale(reduce_coord(s, ws), w);
+    TEXC v = texc_scale(reduce_coord(tc, wt), h);
+    if (filter == GL_NEAREST) {
+        /* §3.7.7: i = floor(u), wrapped (CLAMP_TO_EDGE clamps to [0, n-1]) */
+        texel(li, wrap_index(texc_ifloor(u), w, ws), wrap_index(texc_ifloor(v), h, wt), out, unorm);
+        return;
+    }
+    TEXC uu = u - TEXC_HALF, vv = v - TEXC_HALF;
+    int64_t i0 = texc_ifloor(uu), j0 = texc_ifloor(vv);
+    TEXW a = texc_frac_weight(uu), b = texc_frac_weight(vv);
+    int x0 = wrap_index(i0, w, ws), x1 = wrap_index(i0 + 1, w, ws);
+    int y0 = wrap_index(j0, h, wt), y1 = wrap_index(j0 + 1, h, wt);
+    const uint32_t *r0 = li->texels + (size_t)y0 * w, *r1 = li->texels + (size_t)y1 * w;
+    frag_bilerp_rgba8(r0[x0], r0[x1], r1[x0], r1[x1], a, b, out, unorm);
+}
+
+SAMPLE_INLINE void sample_w(const Texture *t, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
+                            FRAGV out[4], const FRAGV *unorm, unsigned int ws, unsigned int wt)
+{
+    if (!dx || !dy) {
+        sample_level(t, 0, t->mag_filter, c->s, c->t, out, unorm, ws, wt);
+        return;
+    }
+    /* rho in texel units of level 0: the largest of the four derivatives;
+    ** coordinates are first limited to +-2^18 so that differences scaled
+    ** by the size stay in range even where q -> 0 saturated them */
+    int w = t->level[0].width, h = t->level[0].height;
+    const TEXC lim = texc_scale(TEXC_ONE, 1 << 18);
+    TexCoord cc = { texc_clamp(c->s, lim), texc_clamp(c->t, lim) };
+    TexCoord cx = { texc_clamp(dx->s, lim), texc_clamp(dx->t, lim) };
+    TexCoord cy = { texc_clamp(dy->s, lim), texc_clamp(dy->t, lim) };
+    c = &cc;
+    dx = &cx;
+    dy = &cy;
+    TEXC d1 = texc_abs(texc_scale(dx->s - c->s, w)), d2 = texc_abs(texc_scale(dy->s - c->s, w));
+    TEXC d3 = texc_abs(texc_scale(dx->t - c->t, h)), d4 = texc_abs(texc_scale(dy->t - c->t, h));
+    TEXC rho = d1;
+    if (d2 > rho) rho = d2;
+    if (d3 > rho) rho = d3;
+    if (d4 > rho) rho = d4;
+    LODV lambda = lod_log2(rho);
+    unsigned int minf = t->min_filter;
+    /* §3.7.8: c = 0.5 when MAG is LINEAR and MIN is NEAREST_MIPMAP_* */
+    LODV cshift = (t->mag_filter == GL_LINEAR && (minf == GL_NEAREST_MIPMAP_NEAREST || minf == GL_NEAREST_MIPMAP_LINEAR))
+                      ? lod_from_ratio(1, 2) : 0;
+    if (lambda <= cshift) {
+        sample_level(t, 0, t->mag_filter, c->s, c->t, out, unorm, ws, wt);
+        return;
+    }
+    unsigned int filter = (minf == GL_NEAREST || minf == GL_NEAREST_MIPMAP_NEAREST || minf == GL_NEAREST_MIPMAP_LINEAR)
+                              ? GL_NEAREST : GL_LINEAR;
+    if (minf == GL_NEAREST || minf == GL_LINEAR) {
+        sample_level(t, 0, filter, c->s, c->t, out, unorm, ws, wt);
+        return;
+    }
+    int q = t->max_level;
+    if (minf == GL_NEAREST_MIPMAP_NEAREST || minf == GL_LINEAR_MIPMAP_NEAREST) {
+        /* d = ceil(lambda + 1/2) - 1 for lambda > 1/2, else 0 */
+        int64_t d = 0;
+        if (lambda > lod_from_ratio(1, 2)) {
+            LODV x = lambda + lod_from_ratio(1, 2);
+            int64_t fl = lod_ifloor(x);
+            d = (lod_frac(x) != 0 ? fl + 1 : fl) - 1;
+        }
+        if (d > q)
+            d = q;
+        sample_level(t, (int)d, filter, c->s, c->t, out, unorm, ws, wt);
+        return;
+    }
+    /* *_MIPMAP_LINEAR: levels floor(lambda) and the next, by frac(lambda) */
+    int64_t d1i = lod_ifloor(lambda);
+    if (d1i >= q) {
+        sample_level(t, q, filter, c->s, c->t, out, unorm, ws, wt);
+        return;
+    }
+    FRAGV f = lod_frac(lambda);
+    FRAGV t1[4], t2[4];
+    sample_level(t, (int)d1i, filter, c->s, c->t, t1, unorm, ws, wt);
+    sample_level(t, (int)d1i + 1, filter, c->s, c->t, t2, unorm, ws, wt);
+    for (int k = 0; k < 4; k++)
+        out[k] = t1[k] + frag_mul(f, t2[k] - t1[k]);
+}
+
+void texture_sample(const Texture *t, const TexCoord *c, const TexCoord *dx, const TexCoord *dy, FRAGV out[4],
+                    const FRAGV *unorm)
+{
+    sample_w(t, c, dx, dy, out, unorm, t->wrap_s, t->wrap_t);
+}
+
+/* {====================================================================
+** span samplers: n fragments' coordinates to n texels, out[j * stride],
+** with the wrap modes (and without a level of detail, the filter) fixed */
+
+#define SPAN_SAMPLER(name, WS, WT, FILTER)                                                                 \
+    static void name(const Texture *t, int n, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,   \
+                     FRAGV *out, size_t stride, const FRAGV *unorm)                                        \
+    {                                                                                                      \
+        const unsigned int ws = WS ? WS : t->wrap_s, wt = WT ? WT : t->wrap_t;                             \
+        if (FILTER) {                                                                                      \
+            for (int j = 0; j < n; j++)                                                                    \
+                sample_level(t, 0, FILTER, c[j].s, c[j].t, out + (size_t)j * stride, unorm, ws, wt);     \
+        } else {                                                                                           \
+            for (int j = 0; j < n; j++)                                                                    \
+                sample_w(t, &c[j], &dx[j], &dy[j], out + (size_t)j * stride, unorm, ws, wt);               \
+        }                                                                                                  \
+    }
+
+SPAN_SAMPLER(span_nearest_repeat, GL_REPEAT, GL_REPEAT, GL_NEAREST)
+SPAN_SAMPLER(span_linear_repeat, GL_REPEAT, GL_REPEAT, GL_LINEAR)
+SPAN_SAMPLER(span_lod_repeat, GL_REPEAT, GL_REPEAT, 0)
+SPAN_SAMPLER(span_nearest_clamp, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_NEAREST)
+SPAN_SAMPLER(span_linear_clamp, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_LINEAR)
+SPAN_SAMPLER(span_lod_clamp, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, 0)
+SPAN_SAMPLER(span_nearest_any, 0, 0, GL_NEAREST)
+SPAN_SAMPLER(span_linear_any, 0, 0, GL_LINEAR)
+SPAN_SAMPLER(span_lod_any, 0, 0, 0)
+#undef SPAN_SAMPLER
+
+TexSpanSampler texture_span_sampler(const Texture *t)
+{
+    /* [wrap: repeat, clamp, other][nearest, linear, with a level of detail] */
+    static const TexSpanSampler table[3][3] = {
+        { span_nearest_repeat, span_linear_repeat, span_lod_repeat },
+        { span_nearest_clamp, span_linear_clamp, span_lod_clamp },
+        { span_nearest_any, span_linear_any, span_lod_any },
+    };
+    int wrap = t->wrap_s == GL_REPEAT && t->wrap_t == GL_REPEAT ? 0
+             : (t->wrap_s == GL_CLAMP_TO_EDGE && t->wrap_t == GL_CLAMP_TO_EDGE ? 1 : 2);
+    int filter = texture_needs_lod(t) ? 2 : (t->mag_filter == GL_LINEAR ? 1 : 0);
+    return table[wrap][filter];
+}
+
+
