@@ -8,6 +8,8 @@
 ** (the texture matrix, clip planes and lighting do not apply; fog sees
 ** distance 0). The level of detail is constant over the rectangle. The
 ** coordinates are formed in double from the real arguments and rounded once.
+** Rows run through the span chain (span_chain.c); the per-fragment path
+** stays as its reference (ctx.debug(1)).
 */
 #include "state.h"
 #include "raster.h"
@@ -21,27 +23,28 @@ void gles_DrawTexOES(GlesContext *ctx, double xs, double ys, double zs, double w
         return;
     }
     draw_validate(ctx);
-    FragIn in;
+    RectSetup r;
+    FragIn *in = &r.in;
     /* depth: n if z <= 0, f if z >= 1, n + z (f - n) otherwise */
     double z = zs <= 0 ? 0 : (zs >= 1 ? 1 : zs);
     double zw = ctx->depth_range[0] + z * (ctx->depth_range[1] - ctx->depth_range[0]);
-    in.z = (uint32_t)dbl_to_i64(zw * ctx->depth_max, 0, ctx->depth_max);
+    in->z = (uint32_t)dbl_to_i64(zw * ctx->depth_max, 0, ctx->depth_max);
     for (int i = 0; i < 4; i++)
-        in.c[i] = frag_clamp01(frag_from_double(ctx->cur_color[i]));
-    in.fog = ctx->fog ? frag_from_num(fog_factor(ctx, NUM_ZERO)) : 0;
-    in.coverage = FRAG_ONE;
+        in->c[i] = frag_clamp01(frag_from_double(ctx->cur_color[i]));
+    in->fog = ctx->fog ? frag_from_num(fog_factor(ctx, NUM_ZERO)) : 0;
+    in->coverage = FRAG_ONE;
     /* per unit: s = a_s + b_s X, t = a_t + b_t Y */
-    double as[GLES_MAX_TEXTURE_UNITS] = { 0 }, bs[GLES_MAX_TEXTURE_UNITS] = { 0 };
-    double at[GLES_MAX_TEXTURE_UNITS] = { 0 }, bt[GLES_MAX_TEXTURE_UNITS] = { 0 };
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++) {
+        r.coord[u] = RECT_COORD_LINEAR;
+        r.as[u] = r.bs[u] = r.at[u] = r.bt[u] = 0;
         if (!(ctx->tex_units_on & (1u << u)))
             continue;
         const Texture *t = ctx->units[u].bound;
         double wt = t->level[0].width, ht = t->level[0].height;
-        bs[u] = t->crop[2] / ws / wt;
-        as[u] = t->crop[0] / wt - xs * bs[u];
-        bt[u] = t->crop[3] / hs / ht;
-        at[u] = t->crop[1] / ht - ys * bt[u];
+        r.bs[u] = t->crop[2] / ws / wt;
+        r.as[u] = t->crop[0] / wt - xs * r.bs[u];
+        r.bt[u] = t->crop[3] / hs / ht;
+        r.at[u] = t->crop[1] / ht - ys * r.bt[u];
     }
     int64_t x0 = dbl_to_i64(ceil(xs - 0.5), -(1 << 30), 1 << 30), x1 = dbl_to_i64(ceil(xs + ws - 0.5), -(1 << 30), 1 << 30);
     int64_t y0 = dbl_to_i64(ceil(ys - 0.5), -(1 << 30), 1 << 30), y1 = dbl_to_i64(ceil(ys + hs - 0.5), -(1 << 30), 1 << 30);
@@ -50,19 +53,26 @@ void gles_DrawTexOES(GlesContext *ctx, double xs, double ys, double zs, double w
     if (y0 < clip.y0) y0 = clip.y0;
     if (x1 > clip.x1) x1 = clip.x1;
     if (y1 > clip.y1) y1 = clip.y1;
+    if (x0 >= x1 || y0 >= y1)
+        return;
+    if (!(ctx->debug & GLES_DEBUG_GENERIC_SPANS)) {
+        span_rect(ctx, &r, x0, y0, x1, y1);
+        return;
+    }
+    /* the reference: every fragment through fragment_process */
     for (int64_t py = y0; py < y1; py++)
         for (int64_t px = x0; px < x1; px++) {
             double X = (double)px + 0.5, Y = (double)py + 0.5;
             for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++) {
                 if (!(ctx->tex_units_on & (1u << u)))
                     continue;
-                in.tc[u].s = texc_from_double(as[u] + bs[u] * X);
-                in.tc[u].t = texc_from_double(at[u] + bt[u] * Y);
-                in.tdx[u].s = texc_from_double(as[u] + bs[u] * (X + 1));
-                in.tdx[u].t = in.tc[u].t;
-                in.tdy[u].s = in.tc[u].s;
-                in.tdy[u].t = texc_from_double(at[u] + bt[u] * (Y + 1));
+                in->tc[u].s = texc_from_double(r.as[u] + r.bs[u] * X);
+                in->tc[u].t = texc_from_double(r.at[u] + r.bt[u] * Y);
+                in->tdx[u].s = texc_from_double(r.as[u] + r.bs[u] * (X + 1));
+                in->tdx[u].t = in->tc[u].t;
+                in->tdy[u].s = in->tc[u].s;
+                in->tdy[u].t = texc_from_double(r.at[u] + r.bt[u] * (Y + 1));
             }
-            fragment_process(ctx, (int)px, (int)py, &in);
+            fragment_process(ctx, (int)px, (int)py, in);
         }
 }

@@ -326,10 +326,6 @@ FRAGV fragment_dither_threshold(int x, int y)
 void fragment_process(GlesContext *ctx, int x, int y, const FragIn *in)
 {
     const size_t at = (size_t)y * (size_t)ctx->width + (size_t)x;
-    const int is565 = ctx->color_format == GLES_COLOR_RGB565;
-    const int dither = ctx->dither && is565;
-    static const uint32_t max565[4] = { 31, 63, 31, 0 }, shift565[4] = { 11, 5, 0, 0 };
-    static const int bits565[3] = { 5, 6, 5 };
     const unsigned int units = ctx->tex_units_on;
     FRAGV c[4];
     for (int i = 0; i < 4; i++)
@@ -351,66 +347,17 @@ void fragment_process(GlesContext *ctx, int x, int y, const FragIn *in)
                 texture_env(ctx, u, cf, ct, c);
     }
     if (ctx->fog) {
-        FRAGV f = in->fog;
-        /* C = f C + (1 - f) C_fog, in that form so f = 1 and f = 0 are exact */
-        for (int i = 0; i < 3; i++)
-            c[i] = frag_mul(f, frag_clamp01(c[i])) + frag_mul(FRAG_ONE - f, frag_from_num(ctx->n_fog_color[i]));
+        FRAGV fc[3];
+        fragment_fog_color(ctx, fc);
+        fragment_fog(c, in->fog, fc);
     }
     if (in->coverage != FRAG_ONE) /* §3.11: antialiasing scales alpha */
         c[3] = frag_mul(frag_clamp01(c[3]), in->coverage);
     if (ctx->alpha_test && !fragment_alpha_pass(ctx, c[3]))
         return;
-    const int stencil = ctx->stencil_test && ctx->stencil;
-    uint8_t s = 0;
-    if (stencil) {
-        s = ctx->stencil[at];
-        if (!fragment_stencil_pass(ctx, s)) {
-            ctx->stencil[at] = fragment_stencil_op(ctx, ctx->stencil_fail, s);
-            return;
-        }
-    }
-    const int depth = ctx->depth_test && ctx->depth;
-    int zpass = depth ? fragment_compare(ctx->depth_func, in->z, ctx->depth[at]) : 1;
-    if (stencil)
-        ctx->stencil[at] = fragment_stencil_op(ctx, zpass ? ctx->stencil_zpass : ctx->stencil_zfail, s);
-    if (!zpass)
+    if (!fragment_tests(ctx, at, in->z))
         return;
-    if (depth && ctx->depth_mask)
-        ctx->depth[at] = in->z;
-
-    uint32_t keep = 0; /* framebuffer bits the colour mask protects */
-    for (int i = 0; i < (is565 ? 3 : 4); i++)
-        if (!ctx->color_mask[i])
-            keep |= is565 ? max565[i] << shift565[i] : 0xFFu << (8 * i);
-    uint32_t dpacked = is565 ? ((uint16_t *)ctx->color)[at] : ((uint32_t *)ctx->color)[at];
-    FRAGV t_d = dither ? fragment_dither_threshold(x, y) : FRAG_ONE / 2;
-    FRAGV out[4];
-    if (ctx->blend && !ctx->color_logic_op) {
-        FRAGV src[4], dst[4];
-        for (int i = 0; i < 4; i++) {
-            src[i] = frag_clamp01(c[i]);
-            if (is565)
-                dst[i] = i == 3 ? FRAG_ONE : (i == 1 ? ctx->unorm6 : ctx->unorm5)[(dpacked >> shift565[i]) & max565[i]];
-            else
-                dst[i] = ctx->unorm8[(dpacked >> (8 * i)) & 0xFFu];
-        }
-        fragment_blend(ctx, src, dst, out);
-    } else {
-        for (int i = 0; i < 4; i++)
-            out[i] = c[i];
-    }
-    uint32_t packed = 0;
-    for (int i = 0; i < (is565 ? 3 : 4); i++) {
-        if (is565)
-            packed |= fragment_channel(out[i], bits565[i], dither, t_d) << shift565[i];
-        else
-            packed |= fragment_channel(out[i], 8, 0, t_d) << (8u * (uint32_t)i);
-    }
-    if (ctx->color_logic_op)
-        packed = fragment_logic_op(ctx->logic_op, packed, dpacked) & (is565 ? 0xFFFFu : 0xFFFFFFFFu);
-    packed = (dpacked & keep) | (packed & ~keep);
-    if (is565)
-        ((uint16_t *)ctx->color)[at] = (uint16_t)packed;
-    else
-        ((uint32_t *)ctx->color)[at] = packed;
+    FragWrite w;
+    fragment_write_setup(ctx, &w);
+    fragment_write(ctx, &w, x, y, at, c);
 }

@@ -45,6 +45,105 @@ void fragment_blend(const GlesContext *ctx, const FRAGV src[4], const FRAGV dst[
 uint32_t fragment_logic_op(unsigned int op, uint32_t s, uint32_t d);
 FRAGV fragment_dither_threshold(int x, int y);
 
+/* The pieces of fragment_process that the span chain shares, so that the
+** two paths are one arithmetic. */
+
+/* the fog colour's RGB in FRAGV */
+static inline void fragment_fog_color(const GlesContext *ctx, FRAGV fc[3])
+{
+    for (int i = 0; i < 3; i++)
+        fc[i] = frag_from_num(ctx->n_fog_color[i]);
+}
+
+/* §3.8: C = f C + (1 - f) C_fog, in that form so f = 1 and f = 0 are exact */
+static inline void fragment_fog(FRAGV c[4], FRAGV f, const FRAGV fc[3])
+{
+    for (int i = 0; i < 3; i++)
+        c[i] = frag_mul(f, frag_clamp01(c[i])) + frag_mul(FRAG_ONE - f, fc[i]);
+}
+
+/* the stencil and depth tests of the fragment at index `at` with window
+** depth z, with their writes (§4.1.5-4.1.6); 1 when it passes both */
+static inline int fragment_tests(GlesContext *ctx, size_t at, uint32_t z)
+{
+    const int stencil = ctx->stencil_test && ctx->stencil;
+    uint8_t s = 0;
+    if (stencil) {
+        s = ctx->stencil[at];
+        if (!fragment_stencil_pass(ctx, s)) {
+            ctx->stencil[at] = fragment_stencil_op(ctx, ctx->stencil_fail, s);
+            return 0;
+        }
+    }
+    const int depth = ctx->depth_test && ctx->depth;
+    int zpass = depth ? fragment_compare(ctx->depth_func, z, ctx->depth[at]) : 1;
+    if (stencil)
+        ctx->stencil[at] = fragment_stencil_op(ctx, zpass ? ctx->stencil_zpass : ctx->stencil_zfail, s);
+    if (!zpass)
+        return 0;
+    if (depth && ctx->depth_mask)
+        ctx->depth[at] = z;
+    return 1;
+}
+
+/* what the write needs of the state, found once per span */
+typedef struct FragWrite {
+    int is565, dither, blend;
+    uint32_t keep;              /* framebuffer bits the colour mask protects */
+} FragWrite;
+
+static inline void fragment_write_setup(const GlesContext *ctx, FragWrite *w)
+{
+    static const uint32_t m565[3] = { 0xF800, 0x07E0, 0x001F };
+    w->is565 = ctx->color_format == GLES_COLOR_RGB565;
+    w->dither = ctx->dither && w->is565;
+    w->blend = ctx->blend && !ctx->color_logic_op;
+    w->keep = 0;
+    for (int i = 0; i < (w->is565 ? 3 : 4); i++)
+        if (!ctx->color_mask[i])
+            w->keep |= w->is565 ? m565[i] : 0xFFu << (8 * i);
+}
+
+/* blending, dither, logic op and masks, then the framebuffer write of the
+** fragment at (x, y), index `at` (§4.1.7-4.1.10) */
+static inline void fragment_write(GlesContext *ctx, const FragWrite *w, int x, int y, size_t at, const FRAGV c[4])
+{
+    static const uint32_t max565[4] = { 31, 63, 31, 0 }, shift565[4] = { 11, 5, 0, 0 };
+    static const int bits565[3] = { 5, 6, 5 };
+    const int is565 = w->is565;
+    uint32_t dpacked = is565 ? ((uint16_t *)ctx->color)[at] : ((uint32_t *)ctx->color)[at];
+    FRAGV t_d = w->dither ? fragment_dither_threshold(x, y) : FRAG_ONE / 2;
+    FRAGV out[4];
+    if (w->blend) {
+        FRAGV src[4], dst[4];
+        for (int i = 0; i < 4; i++) {
+            src[i] = frag_clamp01(c[i]);
+            if (is565)
+                dst[i] = i == 3 ? FRAG_ONE : (i == 1 ? ctx->unorm6 : ctx->unorm5)[(dpacked >> shift565[i]) & max565[i]];
+            else
+                dst[i] = ctx->unorm8[(dpacked >> (8 * i)) & 0xFFu];
+        }
+        fragment_blend(ctx, src, dst, out);
+    } else {
+        for (int i = 0; i < 4; i++)
+            out[i] = c[i];
+    }
+    uint32_t packed = 0;
+    for (int i = 0; i < (is565 ? 3 : 4); i++) {
+        if (is565)
+            packed |= fragment_channel(out[i], bits565[i], w->dither, t_d) << shift565[i];
+        else
+            packed |= fragment_channel(out[i], 8, 0, t_d) << (8u * (uint32_t)i);
+    }
+    if (ctx->color_logic_op)
+        packed = fragment_logic_op(ctx->logic_op, packed, dpacked) & (is565 ? 0xFFFFu : 0xFFFFFFFFu);
+    packed = (dpacked & w->keep) | (packed & ~w->keep);
+    if (is565)
+        ((uint16_t *)ctx->color)[at] = (uint16_t)packed;
+    else
+        ((uint32_t *)ctx->color)[at] = packed;
+}
+
 /* fog.c */
 void fog_init(GlesContext *ctx);
 int fog_get(GlesContext *ctx, unsigned int pname, double *out, int *kind);

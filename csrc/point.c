@@ -100,6 +100,21 @@ void raster_point(GlesContext *ctx, const Vertex *v)
     if (y0 < clip.y0) y0 = clip.y0;
     if (x1 > clip.x1 - 1) x1 = clip.x1 - 1;
     if (y1 > clip.y1 - 1) y1 = clip.y1 - 1;
+    if (!disc && !(ctx->debug & GLES_DEBUG_GENERIC_SPANS)) {
+        /* a square of fragments whose inputs are the point's: only the
+        ** sprite coordinates vary, so the rows run through the span chain */
+        if (x0 > x1 || y0 > y1)
+            return;
+        RectSetup r;
+        fragment_inputs(ctx, &t, e, FRAG_ONE, NULL, NULL, NULL, &r.in);
+        for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
+            r.coord[u] = sprite && ctx->units[u].coord_replace ? RECT_COORD_SPRITE : RECT_COORD_CONST;
+        r.sprite_x = v->wx;
+        r.sprite_y = v->wy;
+        r.sprite_size = size_sub;
+        span_rect(ctx, &r, x0, y0, x1 + 1, y1 + 1);
+        return;
+    }
     int64_t r2 = (size_sub / 2) * (size_sub / 2);  /* disc radius squared, subpixels */
     for (int64_t py = y0; py <= y1; py++)
         for (int64_t px = x0; px <= x1; px++) {

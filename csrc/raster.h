@@ -7,6 +7,7 @@
 #include "state.h"
 #include "texture.h"
 #include "span.h"
+#include "fragment.h"
 
 /* Everything a span function needs about the triangle being drawn. */
 struct TriSetup {
@@ -46,6 +47,10 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
 /* the signed window-space area (x2) of a triangle, counter-clockwise > 0 */
 int64_t raster_area2(const Vertex *a, const Vertex *b, const Vertex *c);
 
+/* the inputs of the fragment at edge values e of a primitive described by
+** a TriSetup (sprite coordinates replace a unit's where COORD_REPLACE is on) */
+void fragment_inputs(const GlesContext *ctx, const TriSetup *t, const int64_t e[3], FRAGV coverage,
+                     const TexCoord *sprite, const TexCoord *sprite_dx, const TexCoord *sprite_dy, FragIn *out);
 void fragment_from_setup(GlesContext *ctx, const TriSetup *t, const int64_t e[3], int x, int y, FRAGV coverage,
                          const TexCoord *sprite, const TexCoord *sprite_dx, const TexCoord *sprite_dy);
 /* polygon offset (§3.5.2) applied to a triangle fragment's depth */

@@ -28,29 +28,28 @@ uint32_t span_pack_color(const GlesContext *ctx, const FRAGV *c)
 ** values e (weights come from t->wgt; t->ea and t->eb are the edge steps to
 ** the right and upper neighbours, for the level of detail). Triangles,
 ** lines and points all end here. */
-void fragment_from_setup(GlesContext *ctx, const TriSetup *t, const int64_t e[3], int x, int y, FRAGV coverage,
-                         const TexCoord *sprite, const TexCoord *sprite_dx, const TexCoord *sprite_dy)
+void fragment_inputs(const GlesContext *ctx, const TriSetup *t, const int64_t e[3], FRAGV coverage,
+                     const TexCoord *sprite, const TexCoord *sprite_dx, const TexCoord *sprite_dy, FragIn *out)
 {
     const Vertex *v0 = t->v[0], *v1 = t->v[1], *v2 = t->v[2];
     const unsigned int units = ctx->tex_units_on;
-    FragIn in;
-    in.coverage = coverage;
-    in.z = 0;
-    in.fog = 0;
+    out->coverage = coverage;
+    out->z = 0;
+    out->fog = 0;
     WGT p[3];
     wgt_persp(&t->wgt, e, p);
     for (int i = 0; i < 4; i++)
-        in.c[i] = t->smooth ? frag_lerp3f(t->col[0][i], t->col[1][i], t->col[2][i], p[0], p[1], p[2]) : t->flat[i];
+        out->c[i] = t->smooth ? frag_lerp3f(t->col[0][i], t->col[1][i], t->col[2][i], p[0], p[1], p[2]) : t->flat[i];
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++) {
         if (!(units & (1u << u)))
             continue;
         if (sprite && ctx->units[u].coord_replace) {
-            in.tc[u] = *sprite;
-            in.tdx[u] = *sprite_dx;
-            in.tdy[u] = *sprite_dy;
+            out->tc[u] = *sprite;
+            out->tdx[u] = *sprite_dx;
+            out->tdy[u] = *sprite_dy;
             continue;
         }
-        span_tex_coord(t, u, p, &in.tc[u]);
+        span_tex_coord(t, u, p, &out->tc[u]);
         if (texture_needs_lod(ctx->units[u].bound)) {
             /* the right and upper neighbours' coordinates */
             int64_t ex[3] = { e[0] + t->ea[0], e[1] + t->ea[1], e[2] + t->ea[2] };
@@ -58,20 +57,27 @@ void fragment_from_setup(GlesContext *ctx, const TriSetup *t, const int64_t e[3]
             WGT px[3], py[3];
             wgt_persp_any(&t->wgt, ex, px);
             wgt_persp_any(&t->wgt, ey, py);
-            span_tex_coord(t, u, px, &in.tdx[u]);
-            span_tex_coord(t, u, py, &in.tdy[u]);
+            span_tex_coord(t, u, px, &out->tdx[u]);
+            span_tex_coord(t, u, py, &out->tdy[u]);
         }
     }
     if (ctx->fog)
-        in.fog = ctx->fog_per_fragment
+        out->fog = ctx->fog_per_fragment
                      ? frag_from_num(fog_factor(ctx, wgt_lerp3(v0->fog, v1->fog, v2->fog, p[0], p[1], p[2])))
                      : frag_clamp01(frag_lerp3(v0->fog, v1->fog, v2->fog, p[0], p[1], p[2]));
     if (ctx->depth_test && ctx->depth) {
         WGT l[3];
         wgt_linear(&t->wgt, e, l);
-        in.z = wgt_depth3(v0->wz, v1->wz, v2->wz, l[0], l[1], l[2], ctx->depth_max);
-        in.z = raster_offset_depth(ctx, t, in.z);
+        out->z = wgt_depth3(v0->wz, v1->wz, v2->wz, l[0], l[1], l[2], ctx->depth_max);
+        out->z = raster_offset_depth(ctx, t, out->z);
     }
+}
+
+void fragment_from_setup(GlesContext *ctx, const TriSetup *t, const int64_t e[3], int x, int y, FRAGV coverage,
+                         const TexCoord *sprite, const TexCoord *sprite_dx, const TexCoord *sprite_dy)
+{
+    FragIn in;
+    fragment_inputs(ctx, t, e, coverage, sprite, sprite_dx, sprite_dy, &in);
     fragment_process(ctx, x, y, &in);
 }
 

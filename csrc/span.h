@@ -9,9 +9,25 @@
 
 #include "state.h"
 #include "texture.h"
+#include "fragment.h"
 
 /* the pixels a chunk holds: the chain cuts longer runs */
 #define SPAN_CHUNK 64
+
+/* A screen-aligned rectangle of fragments whose inputs are constant but
+** for the texture coordinates (DrawTex in drawtex.c, points in point.c):
+** colour, depth and fog come from `in`; each enabled unit's coordinates
+** are constant (in.tc, in.tdx, in.tdy), linear in the window position
+** (s = as + bs X, t = at + bt Y at pixel centre (X, Y), formed in double),
+** or a point sprite's (from the point's centre and size in subpixels). */
+enum { RECT_COORD_CONST, RECT_COORD_LINEAR, RECT_COORD_SPRITE };
+typedef struct RectSetup {
+    FragIn in;
+    int coord[GLES_MAX_TEXTURE_UNITS];                  /* RECT_COORD_* */
+    double as[GLES_MAX_TEXTURE_UNITS], bs[GLES_MAX_TEXTURE_UNITS];
+    double at[GLES_MAX_TEXTURE_UNITS], bt[GLES_MAX_TEXTURE_UNITS];
+    int64_t sprite_x, sprite_y, sprite_size;            /* subpixels */
+} RectSetup;
 
 /* One chunk of a row's run: the live fragments and what the stages have
 ** computed for them so far. Slot j holds the fragment at x0 + k[j]; the
@@ -20,7 +36,9 @@ struct SpanBuf {
     int y, x0;                      /* the chunk's first pixel */
     int n;                          /* live fragments */
     uint8_t k[SPAN_CHUNK];          /* their offsets from x0, ascending */
-    int64_t e0[3];                  /* edge values at x0 */
+    int64_t e0[3];                  /* edge values at x0 (triangles) */
+    const RectSetup *rect;          /* the rectangle (DrawTex, points), else NULL */
+    uint32_t z[SPAN_CHUNK];         /* window depth */
     WGT p[SPAN_CHUNK][3];           /* perspective weights */
     WGT px[SPAN_CHUNK][3];          /* the right neighbour's (level of detail) */
     WGT py[SPAN_CHUNK][3];          /* the upper neighbour's */
@@ -36,6 +54,8 @@ void span_choose(GlesContext *ctx);
 void span_chain_compose(GlesContext *ctx);
 /* run a row's covered run through ctx->chain */
 void span_chain(GlesContext *ctx, const TriSetup *t, int y, int x0, int n);
+/* the pixels [x0, x1) x [y0, y1) of a rectangle, clipped already */
+void span_rect(GlesContext *ctx, const RectSetup *r, int64_t x0, int64_t y0, int64_t x1, int64_t y1);
 /* which blend a fused RGBA8888 writer covers: 0 none, 1 SRC_ALPHA,
 ** ONE_MINUS_SRC_ALPHA, 2 ONE, ONE (FUNC_ADD, the same for alpha), -1 other */
 int span_blend_kind(const GlesContext *ctx);

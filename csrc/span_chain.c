@@ -56,20 +56,23 @@ static void stage_neighbours(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 /* }==================================================================== */
 
 /* {====================================================================
-** stencil and depth (§4.1.5, §4.1.6) */
+** depth, stencil (§4.1.5, §4.1.6) */
 
-static uint32_t fragment_depth(const GlesContext *ctx, const TriSetup *t, const SpanBuf *b, int k)
+/* every live fragment's window depth, with polygon offset */
+static void stage_depth(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
-    int64_t e[3];
-    chunk_edges(t, b, k, e);
-    WGT l[3];
-    wgt_linear(&t->wgt, e, l);
-    uint32_t z = wgt_depth3(t->v[0]->wz, t->v[1]->wz, t->v[2]->wz, l[0], l[1], l[2], ctx->depth_max);
-    return raster_offset_depth(ctx, t, z);
+    for (int j = 0; j < b->n; j++) {
+        int64_t e[3];
+        chunk_edges(t, b, b->k[j], e);
+        WGT l[3];
+        wgt_linear(&t->wgt, e, l);
+        uint32_t z = wgt_depth3(t->v[0]->wz, t->v[1]->wz, t->v[2]->wz, l[0], l[1], l[2], ctx->depth_max);
+        b->z[j] = raster_offset_depth(ctx, t, z);
+    }
 }
 
-/* keep the fragments at slots where keep[j]; c moves with them when the
-** colour is already computed */
+/* keep the fragments at slots where keep[j]; c moves with them once the
+** colour is computed */
 static void chunk_compact(SpanBuf *b, const uint8_t *keep, int with_color)
 {
     int m = 0;
@@ -85,55 +88,28 @@ static void chunk_compact(SpanBuf *b, const uint8_t *keep, int with_color)
     b->n = m;
 }
 
-static void depth_stencil(GlesContext *ctx, const TriSetup *t, SpanBuf *b, int with_color)
+static void tests(GlesContext *ctx, SpanBuf *b, int with_color)
 {
     const size_t row = (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
-    const int stencil = ctx->stencil_test && ctx->stencil;
-    const int depth = ctx->depth_test && ctx->depth;
-    const unsigned int func = ctx->depth_func;
-    const int write = depth && ctx->depth_mask;
     uint8_t keep[SPAN_CHUNK];
-    for (int j = 0; j < b->n; j++) {
-        const int k = b->k[j];
-        const size_t at = row + (size_t)k;
-        uint8_t s = 0;
-        keep[j] = 0;
-        if (stencil) {
-            s = ctx->stencil[at];
-            if (!fragment_stencil_pass(ctx, s)) {
-                ctx->stencil[at] = fragment_stencil_op(ctx, ctx->stencil_fail, s);
-                continue;
-            }
-        }
-        uint32_t z = 0;
-        int zpass = 1;
-        if (depth) {
-            z = fragment_depth(ctx, t, b, k);
-            zpass = fragment_compare(func, z, ctx->depth[at]);
-        }
-        if (stencil)
-            ctx->stencil[at] = fragment_stencil_op(ctx, zpass ? ctx->stencil_zpass : ctx->stencil_zfail, s);
-        if (!zpass)
-            continue;
-        if (write)
-            ctx->depth[at] = z;
-        keep[j] = 1;
-    }
+    for (int j = 0; j < b->n; j++)
+        keep[j] = (uint8_t)fragment_tests(ctx, row + b->k[j], b->z[j]);
     chunk_compact(b, keep, with_color);
 }
 
-static void stage_tests_early(GlesContext *ctx, const TriSetup *t, SpanBuf *b) { depth_stencil(ctx, t, b, 0); }
-static void stage_tests_late(GlesContext *ctx, const TriSetup *t, SpanBuf *b) { depth_stencil(ctx, t, b, 1); }
+static void stage_tests_early(GlesContext *ctx, const TriSetup *t, SpanBuf *b) { (void)t; tests(ctx, b, 0); }
+static void stage_tests_late(GlesContext *ctx, const TriSetup *t, SpanBuf *b) { (void)t; tests(ctx, b, 1); }
 
 /* depth LESS with writes and no stencil: the common case, without the
 ** per-fragment switches */
 static void stage_zless_early(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
+    (void)t;
     uint32_t *zb = ctx->depth + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
     int m = 0;
     for (int j = 0; j < b->n; j++) {
         const int k = b->k[j];
-        uint32_t z = fragment_depth(ctx, t, b, k);
+        uint32_t z = b->z[j];
         if (z < zb[k]) {
             zb[k] = z;
             b->k[m++] = (uint8_t)k;
@@ -166,19 +142,73 @@ static void stage_color(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
     }
 }
 
-/* one unit's texel for every live fragment */
+/* one unit's texels for the chunk's coordinates b->tc (and b->tx, b->ty) */
+static void chunk_sample(GlesContext *ctx, SpanBuf *b, int u)
+{
+    ctx->samplers[u](ctx->units[u].bound, b->n, b->tc, b->tx, b->ty, b->ct[0][u], GLES_MAX_TEXTURE_UNITS * 4,
+                     ctx->texel_unorm8);
+}
+
+/* a triangle's coordinates of unit u for every live fragment, then its texels */
 static void stage_fetch(GlesContext *ctx, const TriSetup *t, SpanBuf *b, int u)
 {
-    const Texture *tex = ctx->units[u].bound;
-    const int lod = texture_needs_lod(tex);
     for (int j = 0; j < b->n; j++)
         span_tex_coord(t, u, b->p[j], &b->tc[j]);
-    if (lod)
+    if (texture_needs_lod(ctx->units[u].bound))
         for (int j = 0; j < b->n; j++) {
             span_tex_coord(t, u, b->px[j], &b->tx[j]);
             span_tex_coord(t, u, b->py[j], &b->ty[j]);
         }
-    ctx->samplers[u](tex, b->n, b->tc, b->tx, b->ty, b->ct[0][u], GLES_MAX_TEXTURE_UNITS * 4, ctx->texel_unorm8);
+    chunk_sample(ctx, b, u);
+}
+
+/* a rectangle's coordinates of unit u for every live fragment, then its texels */
+static void stage_fetch_rect(GlesContext *ctx, const TriSetup *t, SpanBuf *b, int u)
+{
+    (void)t;
+    const RectSetup *r = b->rect;
+    switch (r->coord[u]) {
+    case RECT_COORD_LINEAR: {
+        const double Y = (double)b->y + 0.5;
+        const TEXC tt = texc_from_double(r->at[u] + r->bt[u] * Y);
+        const TEXC ty = texc_from_double(r->at[u] + r->bt[u] * (Y + 1));
+        for (int j = 0; j < b->n; j++) {
+            double X = (double)(b->x0 + b->k[j]) + 0.5;
+            b->tc[j].s = texc_from_double(r->as[u] + r->bs[u] * X);
+            b->tc[j].t = tt;
+            b->tx[j].s = texc_from_double(r->as[u] + r->bs[u] * (X + 1));
+            b->tx[j].t = tt;
+            b->ty[j].s = b->tc[j].s;
+            b->ty[j].t = ty;
+        }
+        break;
+    }
+    case RECT_COORD_SPRITE: {
+        /* s = 1/2 + (x_f + 1/2 - x_w) / size, t = 1/2 - (y_f + 1/2 - y_w) / size */
+        const int64_t one = GLES_SUBPIXEL_ONE, half = one / 2, size = r->sprite_size;
+        const int64_t py = b->y;
+        const TEXC tt = texc_ratio(size / 2 - (py * one + half - r->sprite_y), size);
+        const TEXC ty = texc_ratio(size / 2 - ((py + 1) * one + half - r->sprite_y), size);
+        for (int j = 0; j < b->n; j++) {
+            int64_t px = b->x0 + b->k[j];
+            b->tc[j].s = texc_ratio(size / 2 + px * one + half - r->sprite_x, size);
+            b->tc[j].t = tt;
+            b->tx[j].s = texc_ratio(size / 2 + (px + 1) * one + half - r->sprite_x, size);
+            b->tx[j].t = tt;
+            b->ty[j].s = b->tc[j].s;
+            b->ty[j].t = ty;
+        }
+        break;
+    }
+    default:
+        for (int j = 0; j < b->n; j++) {
+            b->tc[j] = r->in.tc[u];
+            b->tx[j] = r->in.tdx[u];
+            b->ty[j] = r->in.tdy[u];
+        }
+        break;
+    }
+    chunk_sample(ctx, b, u);
 }
 
 static void stage_env(GlesContext *ctx, SpanBuf *b, int u)
@@ -196,6 +226,10 @@ static void stage_env(GlesContext *ctx, SpanBuf *b, int u)
 
 #define UNIT_STAGES(u) \
     static void stage_fetch##u(GlesContext *ctx, const TriSetup *t, SpanBuf *b) { stage_fetch(ctx, t, b, u); } \
+    static void stage_fetch_rect##u(GlesContext *ctx, const TriSetup *t, SpanBuf *b) \
+    { \
+        stage_fetch_rect(ctx, t, b, u); \
+    } \
     static void stage_env##u(GlesContext *ctx, const TriSetup *t, SpanBuf *b) { (void)t; stage_env(ctx, b, u); }
 UNIT_STAGES(0)
 UNIT_STAGES(1)
@@ -204,24 +238,34 @@ UNIT_STAGES(3)
 #undef UNIT_STAGES
 
 static const SpanStage fetch_stages[GLES_MAX_TEXTURE_UNITS] = { stage_fetch0, stage_fetch1, stage_fetch2, stage_fetch3 };
+static const SpanStage fetch_rect_stages[GLES_MAX_TEXTURE_UNITS] = {
+    stage_fetch_rect0, stage_fetch_rect1, stage_fetch_rect2, stage_fetch_rect3,
+};
 static const SpanStage env_stages[GLES_MAX_TEXTURE_UNITS] = { stage_env0, stage_env1, stage_env2, stage_env3 };
 
-/* §3.8: C = f C + (1 - f) C_fog */
+/* fog (§3.8) with the factor interpolated, or from the interpolated distance */
 static void stage_fog(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     const Vertex *v0 = t->v[0], *v1 = t->v[1], *v2 = t->v[2];
     FRAGV fc[3];
-    for (int i = 0; i < 3; i++)
-        fc[i] = frag_from_num(ctx->n_fog_color[i]);
+    fragment_fog_color(ctx, fc);
     for (int j = 0; j < b->n; j++) {
         const WGT *p = b->p[j];
         FRAGV f = ctx->fog_per_fragment
                       ? frag_from_num(fog_factor(ctx, wgt_lerp3(v0->fog, v1->fog, v2->fog, p[0], p[1], p[2])))
                       : frag_clamp01(frag_lerp3(v0->fog, v1->fog, v2->fog, p[0], p[1], p[2]));
-        FRAGV *c = b->c[j];
-        for (int i = 0; i < 3; i++)
-            c[i] = frag_mul(f, frag_clamp01(c[i])) + frag_mul(FRAG_ONE - f, fc[i]);
+        fragment_fog(b->c[j], f, fc);
     }
+}
+
+/* fog with one factor for the whole rectangle */
+static void stage_fog_const(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    (void)t;
+    FRAGV fc[3];
+    fragment_fog_color(ctx, fc);
+    for (int j = 0; j < b->n; j++)
+        fragment_fog(b->c[j], b->rect->in.fog, fc);
 }
 
 static void stage_alpha(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
@@ -243,52 +287,10 @@ static void stage_write(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     (void)t;
     const size_t row = (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
-    const int is565 = ctx->color_format == GLES_COLOR_RGB565;
-    const int dither = ctx->dither && is565;
-    static const uint32_t max565[4] = { 31, 63, 31, 0 }, shift565[4] = { 11, 5, 0, 0 };
-    static const int bits565[3] = { 5, 6, 5 };
-    const int channels = is565 ? 3 : 4;
-    uint32_t keep = 0; /* framebuffer bits the colour mask protects */
-    for (int i = 0; i < channels; i++)
-        if (!ctx->color_mask[i])
-            keep |= is565 ? max565[i] << shift565[i] : 0xFFu << (8 * i);
-    const int blend = ctx->blend && !ctx->color_logic_op;
-    for (int j = 0; j < b->n; j++) {
-        const int x = b->x0 + b->k[j];
-        const size_t at = row + b->k[j];
-        const FRAGV *c = b->c[j];
-        uint32_t dpacked = is565 ? ((uint16_t *)ctx->color)[at] : ((uint32_t *)ctx->color)[at];
-        FRAGV t_d = dither ? fragment_dither_threshold(x, b->y) : FRAG_ONE / 2;
-        FRAGV out[4];
-        if (blend) {
-            FRAGV src[4], dst[4];
-            for (int i = 0; i < 4; i++) {
-                src[i] = frag_clamp01(c[i]);
-                if (is565)
-                    dst[i] = i == 3 ? FRAG_ONE : (i == 1 ? ctx->unorm6 : ctx->unorm5)[(dpacked >> shift565[i]) & max565[i]];
-                else
-                    dst[i] = ctx->unorm8[(dpacked >> (8 * i)) & 0xFFu];
-            }
-            fragment_blend(ctx, src, dst, out);
-        } else {
-            for (int i = 0; i < 4; i++)
-                out[i] = c[i];
-        }
-        uint32_t packed = 0;
-        for (int i = 0; i < channels; i++) {
-            if (is565)
-                packed |= fragment_channel(out[i], bits565[i], dither, t_d) << shift565[i];
-            else
-                packed |= fragment_channel(out[i], 8, 0, t_d) << (8u * (uint32_t)i);
-        }
-        if (ctx->color_logic_op)
-            packed = fragment_logic_op(ctx->logic_op, packed, dpacked) & (is565 ? 0xFFFFu : 0xFFFFFFFFu);
-        packed = (dpacked & keep) | (packed & ~keep);
-        if (is565)
-            ((uint16_t *)ctx->color)[at] = (uint16_t)packed;
-        else
-            ((uint32_t *)ctx->color)[at] = packed;
-    }
+    FragWrite w;
+    fragment_write_setup(ctx, &w);
+    for (int j = 0; j < b->n; j++)
+        fragment_write(ctx, &w, b->x0 + b->k[j], b->y, row + b->k[j], b->c[j]);
 }
 
 /* RGBA8888, every channel written, no blend or logic op */
@@ -359,9 +361,26 @@ int span_blend_kind(const GlesContext *ctx)
     return -1;
 }
 
-void span_chain_compose(GlesContext *ctx)
+/* a rectangle's constant inputs for every slot of the chunk */
+static void stage_rect_source(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
-    SpanStage *s = ctx->chain;
+    (void)t;
+    const FragIn *in = &b->rect->in;
+    const int texturing = ctx->tex_units_on != 0;
+    for (int j = 0; j < SPAN_CHUNK; j++) {
+        b->z[j] = in->z;
+        for (int i = 0; i < 4; i++)
+            b->c[j][i] = texturing ? frag_clamp01(in->c[i]) : in->c[i];
+        if (texturing)
+            for (int i = 0; i < 4; i++)
+                b->cf[j][i] = b->c[j][i];
+    }
+}
+
+/* the stages for the current state into s, for rectangles (rect) or
+** triangles; returns their number */
+static int compose(GlesContext *ctx, SpanStage *s, int rect)
+{
     int n = 0;
     const unsigned int units = ctx->tex_units_on;
     const int stencil = ctx->stencil_test && ctx->stencil;
@@ -376,24 +395,34 @@ void span_chain_compose(GlesContext *ctx)
             lod |= texture_needs_lod(ctx->units[u].bound);
             ctx->samplers[u] = texture_span_sampler(ctx->units[u].bound);
         }
-    if (tests && early)
+    if (rect)
+        s[n++] = stage_rect_source;
+    if (tests && early) {
+        if (!rect)
+            s[n++] = stage_depth;
         s[n++] = zless ? stage_zless_early : stage_tests_early;
-    s[n++] = stage_persp;
-    if (lod)
-        s[n++] = stage_neighbours;
-    s[n++] = stage_color;
+    }
+    if (!rect) {
+        s[n++] = stage_persp;
+        if (lod)
+            s[n++] = stage_neighbours;
+        s[n++] = stage_color;
+    }
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
         if (units & (1u << u))
-            s[n++] = fetch_stages[u];
+            s[n++] = rect ? fetch_rect_stages[u] : fetch_stages[u];
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
         if (units & (1u << u))
             s[n++] = env_stages[u];
     if (ctx->fog)
-        s[n++] = stage_fog;
+        s[n++] = rect ? stage_fog_const : stage_fog;
     if (ctx->alpha_test)
         s[n++] = stage_alpha;
-    if (tests && !early)
+    if (tests && !early) {
+        if (!rect)
+            s[n++] = stage_depth;
         s[n++] = stage_tests_late;
+    }
     const int bk = span_blend_kind(ctx);
     const int plain = ctx->color_format == GLES_COLOR_RGBA8888 && ctx->color_mask[0] && ctx->color_mask[1]
                    && ctx->color_mask[2] && ctx->color_mask[3];
@@ -405,24 +434,43 @@ void span_chain_compose(GlesContext *ctx)
         s[n++] = stage_write_rgba8_add;
     else
         s[n++] = stage_write;
-    ctx->chain_len = n;
+    return n;
 }
 
-void span_chain(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
+void span_chain_compose(GlesContext *ctx) { ctx->chain_len = compose(ctx, ctx->chain, 0); }
+
+/* one row's run [x0, x0 + n) through `count` stages, a chunk at a time */
+static void run(GlesContext *ctx, const SpanStage *stages, int count, const TriSetup *t, const RectSetup *r, int y,
+                int x0, int n)
 {
     SpanBuf b;
     b.y = y;
+    b.rect = r;
     for (int start = 0; start < n; start += SPAN_CHUNK) {
         int len = n - start < SPAN_CHUNK ? n - start : SPAN_CHUNK;
         b.x0 = x0 + start;
         b.n = len;
         for (int k = 0; k < len; k++)
             b.k[k] = (uint8_t)k;
-        for (int i = 0; i < 3; i++)
-            b.e0[i] = t->ea[i] * b.x0 + t->eb[i] * y + t->ec[i];
-        for (int i = 0; i < ctx->chain_len && b.n > 0; i++)
-            ctx->chain[i](ctx, t, &b);
+        if (t)
+            for (int i = 0; i < 3; i++)
+                b.e0[i] = t->ea[i] * b.x0 + t->eb[i] * y + t->ec[i];
+        for (int i = 0; i < count && b.n > 0; i++)
+            stages[i](ctx, t, &b);
     }
+}
+
+void span_chain(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
+{
+    run(ctx, ctx->chain, ctx->chain_len, t, NULL, y, x0, n);
+}
+
+void span_rect(GlesContext *ctx, const RectSetup *r, int64_t x0, int64_t y0, int64_t x1, int64_t y1)
+{
+    SpanStage stages[GLES_MAX_STAGES];
+    int count = compose(ctx, stages, 1);
+    for (int64_t y = y0; y < y1; y++)
+        run(ctx, stages, count, NULL, r, (int)y, (int)x0, (int)(x1 - x0));
 }
 
 /* }==================================================================== */
