@@ -122,29 +122,52 @@ int gles_ReadPixels(GlesContext *ctx, int x, int y, int width, int height,
     if (need > nbytes)
         return ctx_message(ctx, GLES_EVALUE, "ReadPixels needs %lld bytes, the buffer holds %lld",
                            (long long)need, (long long)nbytes);
+    /* row by row: the part inside the window is a block conversion (a
+    ** copy for the buffer's own format); pixels outside the window are
+    ** undefined (§4.3.1), we give 0 */
+    uint8_t x5[32], x6[64];
+    for (uint32_t c = 0; c < 32; c++)
+        x5[c] = expand(c, 31);
+    for (uint32_t c = 0; c < 64; c++)
+        x6[c] = expand(c, 63);
+    int64_t ix0 = x < 0 ? -(int64_t)x : 0;                              /* first i inside */
+    int64_t ix1 = (int64_t)ctx->width - x;                              /* past the last */
+    if (ix1 > width)
+        ix1 = width;
+    if (ix1 < ix0)
+        ix1 = ix0;
     uint8_t *dst = out;
     for (int j = 0; j < height; j++) {
         int64_t fy = (int64_t)y + j;
         uint8_t *row = dst + stride * j;
-        for (int i = 0; i < width; i++) {
-            int64_t fx = (int64_t)x + i;
-            int inside = fx >= 0 && fy >= 0 && fx < ctx->width && fy < ctx->height;
-            size_t at = inside ? (size_t)fy * (size_t)ctx->width + (size_t)fx : 0;
-            if (rgba) {
-                uint8_t px[4] = { 0, 0, 0, 0 };
-                if (inside && ctx->color_format == GLES_COLOR_RGBA8888) {
-                    uint32_t v = ((uint32_t *)ctx->color)[at];
-                    px[0] = (uint8_t)v; px[1] = (uint8_t)(v >> 8); px[2] = (uint8_t)(v >> 16); px[3] = (uint8_t)(v >> 24);
-                } else if (inside) {
-                    uint16_t v = ((uint16_t *)ctx->color)[at];
-                    px[0] = expand(v >> 11, 31); px[1] = expand((v >> 5) & 63, 63); px[2] = expand(v & 31, 31);
-                    px[3] = 255;
-                }
-                memcpy(row + 4 * i, px, 4);
-            } else {
-                /* pixels outside the window are undefined (§4.3.1); we give 0 */
-                uint16_t v = inside ? ((uint16_t *)ctx->color)[at] : 0;
-                memcpy(row + 2 * i, &v, 2);
+        memset(row, 0, (size_t)rowbytes);
+        if (fy < 0 || fy >= ctx->height || ix0 >= ix1)
+            continue;
+        size_t at = (size_t)fy * (size_t)ctx->width + (size_t)(x + ix0);
+        size_t n = (size_t)(ix1 - ix0);
+        if (!rgba) {
+            memcpy(row + 2 * ix0, (const uint16_t *)ctx->color + at, 2 * n);
+        } else if (ctx->color_format == GLES_COLOR_RGBA8888) {
+            const uint32_t *src = (const uint32_t *)ctx->color + at;
+            uint8_t *o = row + 4 * ix0;
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+            memcpy(o, src, 4 * n);    /* R in the low byte is R first in memory */
+#else
+            for (size_t i = 0; i < n; i++) {
+                uint32_t v = src[i];
+                o[4 * i] = (uint8_t)v; o[4 * i + 1] = (uint8_t)(v >> 8);
+                o[4 * i + 2] = (uint8_t)(v >> 16); o[4 * i + 3] = (uint8_t)(v >> 24);
+            }
+#endif
+        } else {
+            const uint16_t *src = (const uint16_t *)ctx->color + at;
+            uint8_t *o = row + 4 * ix0;
+            for (size_t i = 0; i < n; i++) {
+                uint16_t v = src[i];
+                o[4 * i] = x5[v >> 11];
+                o[4 * i + 1] = x6[(v >> 5) & 63];
+                o[4 * i + 2] = x5[v & 31];
+                o[4 * i + 3] = 255;
             }
         }
     }
