@@ -163,26 +163,6 @@ static void span_generic(GlesContext *ctx, const TriSetup *t, int y, int x0, int
 #define SPAN_BLEND 2
 #include "span_tmpl.h"
 
-#define SPAN_NAME span_tex
-#define SPAN_DEPTH 0
-#define SPAN_BLEND 0
-#include "span_tex_tmpl.h"
-
-#define SPAN_NAME span_tex_zless
-#define SPAN_DEPTH 1
-#define SPAN_BLEND 0
-#include "span_tex_tmpl.h"
-
-#define SPAN_NAME span_tex_alpha
-#define SPAN_DEPTH 0
-#define SPAN_BLEND 1
-#include "span_tex_tmpl.h"
-
-#define SPAN_NAME span_tex_zless_alpha
-#define SPAN_DEPTH 1
-#define SPAN_BLEND 1
-#include "span_tex_tmpl.h"
-
 /* the state conditions every specialised span shares, texturing aside */
 static int simple_but_texture(const GlesContext *ctx, int bk)
 {
@@ -210,16 +190,6 @@ void span_choose(GlesContext *ctx)
     const int bk = span_blend_kind(ctx);
     const int simple = simple_but_texture(ctx, bk) && !ctx->tex_units_on;
     const int zless = depth && ctx->depth_func == GL_LESS && ctx->depth_mask;
-    /* one texture unit (the first) with REPLACE or MODULATE */
-    const unsigned int env = ctx->units[0].env_mode;
-    const int tex1 = ctx->tex_units_on == 1u && (env == GL_REPLACE || env == GL_MODULATE);
-    if (simple_but_texture(ctx, bk) && tex1 && bk <= 1 && (!depth || zless)) {
-        static const SpanFunc ttable[2][2] = { { span_tex, span_tex_alpha }, { span_tex_zless, span_tex_zless_alpha } };
-        static const char *tnames[2][2] = { { "tex", "tex_alpha" }, { "tex_zless", "tex_zless_alpha" } };
-        ctx->span = ctx->span_const = ttable[depth][bk];
-        ctx->span_name = tnames[depth][bk];
-        return;
-    }
     if (simple && (!depth || zless)) {
         ctx->span = table[depth][bk][smooth];
         ctx->span_const = table[depth][bk][0];
