@@ -1,0 +1,1017 @@
+"""Every fragment state: the span functions the core picks against span_generic.
+
+``span_generic`` (csrc/span.c) runs each fragment through texturing on every
+enabled unit, the texture environments, fog, the alpha, stencil and depth
+tests, blending, dither, the logic op and the colour mask, on RGBA8888 or
+RGB565; ``ctx.debug(1)`` forces every triangle through it. Without the flag
+the core picks faster span functions for the current state, and whatever it
+picks must leave the colour, depth and stencil buffers bit-identical to the
+generic path's, for any state. test_spans.py, test_span_blend.py and
+test_span_texture.py check that for the state families of the fused spans;
+this file draws random states from the whole fragment state space:
+
+* the context: numeric build, colour format, depth bits 0/16/24, stencil
+  bits 0/8, a window of 24..40 x 24..32 or (one in three) 70..150 x 4..12,
+  wider than a chunk of the span chain; random clear colour, depth, stencil;
+* shade model, perspective or ortho projection, dither, scissor (random box),
+  colour mask, depth test (func, mask, DepthRange), stencil test (func, ref,
+  value mask, write mask, the three ops incl. INCR_WRAP/DECR_WRAP_OES), alpha
+  test, blending (BlendFunc, BlendFuncSeparateOES, BlendEquationOES and
+  BlendEquationSeparateOES; every legal factor incl. SRC_ALPHA_SATURATE),
+  logic op (all 16), fog (mode, start, end, density, colour, FOG_HINT:
+  NICEST evaluates the factor per fragment), polygon offset fill;
+* texturing on each of the GL_MAX_TEXTURE_UNITS = 4 units: a texture per
+  unit (ALPHA, LUMINANCE, LUMINANCE_ALPHA, RGB, RGBA, also as 5_6_5, 4_4_4_4
+  and 5_5_5_1 texels; 1..64 texels a side, non-square; level 0 only, a full
+  uploaded chain, GENERATE_MIPMAP, or a chain missing levels (incomplete with
+  a mipmap filter, so the unit is off)), every min and mag filter, every
+  wrap mode; environments REPLACE, MODULATE, DECAL, BLEND, ADD and COMBINE
+  (every function incl. DOT3_RGB/DOT3_RGBA, sources incl. the TEXTUREn
+  crossbar, operands, RGB_SCALE/ALPHA_SCALE 1, 2, 4), environment colour;
+  texture coordinates from size 2, 3 or 4 arrays (q != 1: projective) or the
+  current coordinates, and an occasional non-identity texture matrix;
+* overlapping random triangles, partly clipped, with per-vertex colours,
+  drawn partly in one glDrawArrays and partly one by one, over phases with
+  state changes between them.
+
+Three random tests: the whole state space, with an optional second phase
+that changes one to three fields of up to three parts of the state (only the
+commands for what changed are issued), or a unit's filters alone, its enable
+alone, or part of its level 0; texturing, with one to four complete units and
+most tests and operations off, so formats, filters and environments meet
+more often; and single commands between draws (STEPS: every state command
+the span choice depends on, and texture rebinding, sharing, deletion and
+re-specification), so a command that fails to re-pick the span function
+shows. Hand-picked states add named combinations.
+
+OES_texture_env_crossbar leaves a source naming a unit that is off (disabled
+or incomplete) undefined; the core reads zero for it in every path. The
+scenes with single commands and one in four of the others keep such sources;
+the rest move them to units that are on.
+
+Each scene is rendered in two fresh contexts, with and without
+``ctx.debug(1)``; the buffers and glGetError must agree. The names of the
+faster paths are not checked (they change); the forced run must report
+"generic" after every draw.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, Callable
+
+import numpy as np
+import pytest
+from conftest import BUILDS, make_ctx, random_triangles, set_frustum, set_ortho
+from hypothesis import event, given, settings
+from hypothesis import strategies as st
+
+from gles import constants as C
+
+pytestmark = pytest.mark.filterwarnings("ignore::gles.RangeWarning")
+
+UNITS = 4  # GL_MAX_TEXTURE_UNITS (test_max_texture_units checks it)
+ALL_ON = (True, True, True, True)
+
+FUNCS = (C.GL_NEVER, C.GL_LESS, C.GL_EQUAL, C.GL_LEQUAL, C.GL_GREATER, C.GL_NOTEQUAL, C.GL_GEQUAL,
+         C.GL_ALWAYS)
+STENCIL_OPS = (C.GL_KEEP, C.GL_ZERO, C.GL_REPLACE, C.GL_INCR, C.GL_DECR, C.GL_INVERT, C.GL_INCR_WRAP_OES,
+               C.GL_DECR_WRAP_OES)
+SRC_FACTORS = (C.GL_ZERO, C.GL_ONE, C.GL_DST_COLOR, C.GL_ONE_MINUS_DST_COLOR, C.GL_SRC_ALPHA,
+               C.GL_ONE_MINUS_SRC_ALPHA, C.GL_DST_ALPHA, C.GL_ONE_MINUS_DST_ALPHA, C.GL_SRC_ALPHA_SATURATE)
+DST_FACTORS = (C.GL_ZERO, C.GL_ONE, C.GL_SRC_COLOR, C.GL_ONE_MINUS_SRC_COLOR, C.GL_SRC_ALPHA,
+               C.GL_ONE_MINUS_SRC_ALPHA, C.GL_DST_ALPHA, C.GL_ONE_MINUS_DST_ALPHA)
+EQUATIONS = (C.GL_FUNC_ADD_OES, C.GL_FUNC_SUBTRACT_OES, C.GL_FUNC_REVERSE_SUBTRACT_OES)
+LOGIC_OPS = tuple(getattr(C, "GL_" + n) for n in (
+    "CLEAR", "AND", "AND_REVERSE", "COPY", "AND_INVERTED", "NOOP", "XOR", "OR", "NOR", "EQUIV", "INVERT",
+    "OR_REVERSE", "COPY_INVERTED", "OR_INVERTED", "NAND", "SET"))
+FOG_MODES = (C.GL_LINEAR, C.GL_EXP, C.GL_EXP2)
+HINTS = (C.GL_DONT_CARE, C.GL_FASTEST, C.GL_NICEST)
+
+# (format, type) of the client texels
+TEX_FORMATS = ((C.GL_RGBA, C.GL_UNSIGNED_BYTE), (C.GL_RGB, C.GL_UNSIGNED_BYTE),
+               (C.GL_ALPHA, C.GL_UNSIGNED_BYTE), (C.GL_LUMINANCE, C.GL_UNSIGNED_BYTE),
+               (C.GL_LUMINANCE_ALPHA, C.GL_UNSIGNED_BYTE),
+               (C.GL_RGB, C.GL_UNSIGNED_SHORT_5_6_5), (C.GL_RGBA, C.GL_UNSIGNED_SHORT_4_4_4_4),
+               (C.GL_RGBA, C.GL_UNSIGNED_SHORT_5_5_5_1))
+CHANNELS = {C.GL_RGBA: 4, C.GL_RGB: 3, C.GL_ALPHA: 1, C.GL_LUMINANCE: 1, C.GL_LUMINANCE_ALPHA: 2}
+MIN_FILTERS = (C.GL_NEAREST, C.GL_LINEAR, C.GL_NEAREST_MIPMAP_NEAREST, C.GL_LINEAR_MIPMAP_NEAREST,
+               C.GL_NEAREST_MIPMAP_LINEAR, C.GL_LINEAR_MIPMAP_LINEAR)
+MAG_FILTERS = (C.GL_NEAREST, C.GL_LINEAR)
+WRAPS = (C.GL_REPEAT, C.GL_CLAMP_TO_EDGE, C.GL_MIRRORED_REPEAT_OES)
+MIPS = ("none", "full", "generate", "partial")
+
+ENV_MODES = (C.GL_REPLACE, C.GL_MODULATE, C.GL_DECAL, C.GL_BLEND, C.GL_ADD, C.GL_COMBINE)
+COMBINE_RGB = (C.GL_REPLACE, C.GL_MODULATE, C.GL_ADD, C.GL_ADD_SIGNED, C.GL_INTERPOLATE, C.GL_SUBTRACT,
+               C.GL_DOT3_RGB, C.GL_DOT3_RGBA)
+COMBINE_ALPHA = COMBINE_RGB[:6]
+SOURCES = (C.GL_TEXTURE, C.GL_CONSTANT, C.GL_PRIMARY_COLOR, C.GL_PREVIOUS) + tuple(
+    C.GL_TEXTURE0 + u for u in range(UNITS))
+RGB_OPERANDS = (C.GL_SRC_COLOR, C.GL_ONE_MINUS_SRC_COLOR, C.GL_SRC_ALPHA, C.GL_ONE_MINUS_SRC_ALPHA)
+ALPHA_OPERANDS = (C.GL_SRC_ALPHA, C.GL_ONE_MINUS_SRC_ALPHA)
+SCALES = (1.0, 2.0, 4.0)
+TEXCOORDS = ("array2", "array4", "array3", "current")
+
+SEED = st.integers(0, 2**32 - 1)
+
+
+# {================================================================
+# the strategy
+
+
+def rarely(n: int = 3) -> st.SearchStrategy[bool]:
+    """On one time in n (shrinks to off)."""
+    return st.sampled_from((False,) * (n - 1) + (True,))
+
+
+def color4(lo: float = -0.25, hi: float = 1.25) -> st.SearchStrategy[tuple]:
+    """An RGBA colour, some of it outside [0, 1] (the commands clamp it)."""
+    return st.tuples(*[st.floats(lo, hi)] * 4)
+
+
+def mask_value() -> st.SearchStrategy[int]:
+    return st.one_of(st.sampled_from((0xFF, 0xFFFFFFFF, 0x0F, 0xF0, 0x01, 0x00)), st.integers(0, 255))
+
+
+# a unit that is off: the GL default environment, a small texture, plain coordinates
+OFF_ENV = {"mode": C.GL_MODULATE, "color": (0.0, 0.0, 0.0, 0.0), "rgb": C.GL_MODULATE, "alpha": C.GL_MODULATE,
+           "src_rgb": (C.GL_TEXTURE, C.GL_PREVIOUS, C.GL_CONSTANT),
+           "op_rgb": (C.GL_SRC_COLOR, C.GL_SRC_COLOR, C.GL_SRC_ALPHA),
+           "src_alpha": (C.GL_TEXTURE, C.GL_PREVIOUS, C.GL_CONSTANT),
+           "op_alpha": (C.GL_SRC_ALPHA, C.GL_SRC_ALPHA, C.GL_SRC_ALPHA), "rgb_scale": 1.0, "alpha_scale": 1.0}
+OFF_TEX = {"enabled": False, "format": (C.GL_RGBA, C.GL_UNSIGNED_BYTE), "log_w": 3, "log_h": 3, "mip": "none",
+           "min": C.GL_NEAREST, "mag": C.GL_NEAREST, "wrap_s": C.GL_REPEAT, "wrap_t": C.GL_REPEAT, "seed": 0}
+OFF_TC = {"kind": "array2", "seed": 0, "matrix": None}
+
+
+@st.composite
+def texture_strategy(draw: Any, unit: int, on: bool | None = None) -> dict:
+    """A unit's texture, enabled when `on` (None: at random, complete or not); a
+    disabled unit's is a fixed small one (phase 2 may enable it)."""
+    if on is None:
+        on = draw(st.sampled_from((True, True, False)) if unit == 0 else rarely())
+        complete = False
+    else:
+        complete = on
+    if not on:
+        return {**OFF_TEX, "seed": draw(SEED)}
+    tex = {
+        "enabled": True,
+        "format": draw(st.sampled_from(TEX_FORMATS)),
+        "log_w": draw(st.integers(0, 6)),
+        "log_h": draw(st.integers(0, 6)),
+        "mip": draw(st.sampled_from(MIPS)),
+        "min": draw(st.sampled_from(MIN_FILTERS)),
+        "mag": draw(st.sampled_from(MAG_FILTERS)),
+        "wrap_s": draw(st.sampled_from(WRAPS)),
+        "wrap_t": draw(st.sampled_from(WRAPS)),
+        "seed": draw(SEED),
+    }
+    if complete and not texture_complete(tex):
+        tex["mip"] = draw(st.sampled_from(("full", "generate")))
+    return tex
+
+
+ENV = st.fixed_dictionaries({
+    "mode": st.sampled_from(ENV_MODES),
+    "color": color4(),
+    "rgb": st.sampled_from(COMBINE_RGB),
+    "alpha": st.sampled_from(COMBINE_ALPHA),
+    "src_rgb": st.tuples(*[st.sampled_from(SOURCES)] * 3),
+    "op_rgb": st.tuples(*[st.sampled_from(RGB_OPERANDS)] * 3),
+    "src_alpha": st.tuples(*[st.sampled_from(SOURCES)] * 3),
+    "op_alpha": st.tuples(*[st.sampled_from(ALPHA_OPERANDS)] * 3),
+    "rgb_scale": st.sampled_from(SCALES),
+    "alpha_scale": st.sampled_from(SCALES),
+})
+
+TEXCOORD = st.fixed_dictionaries({
+    "kind": st.sampled_from(TEXCOORDS),
+    "seed": SEED,
+    # None: identity texture matrix; else the seed of a random one
+    "matrix": st.one_of(st.none(), st.none(), SEED),
+})
+
+# one strategy per part of the state: the phases set these one by one
+ASPECTS: dict[str, st.SearchStrategy] = {
+    "smooth": st.booleans(),
+    "dither": st.booleans(),
+    "scissor": st.fixed_dictionaries({
+        "on": rarely(4),
+        # x, y, width, height in percent of the window's
+        "box": st.tuples(st.integers(-10, 80), st.integers(-10, 80), st.integers(0, 110),
+                         st.integers(0, 110)),
+    }),
+    "color_mask": st.one_of(st.just(ALL_ON), st.tuples(*[st.booleans()] * 4)),
+    "depth": st.fixed_dictionaries({
+        "on": st.booleans(),
+        "func": st.sampled_from((C.GL_LESS, C.GL_LESS) + FUNCS),
+        "mask": st.sampled_from((True, True, False)),
+        "range": st.one_of(st.none(), st.none(), st.tuples(st.floats(0, 1), st.floats(0, 1))),
+    }),
+    "stencil": st.fixed_dictionaries({
+        "on": rarely(4),
+        "func": st.sampled_from(FUNCS),
+        "ref": st.one_of(st.integers(0, 255), st.integers(-3, 300)),
+        "value_mask": mask_value(),
+        "write_mask": mask_value(),
+        "ops": st.tuples(*[st.sampled_from(STENCIL_OPS)] * 3),
+    }),
+    "alpha": st.fixed_dictionaries({
+        "on": rarely(),
+        "func": st.sampled_from(FUNCS),
+        "ref": st.one_of(st.integers(0, 255).map(lambda v: v / 255), st.floats(-0.1, 1.1)),
+    }),
+    "blend": st.fixed_dictionaries({
+        "on": st.booleans(),
+        "func": st.one_of(st.sampled_from(((C.GL_SRC_ALPHA, C.GL_ONE_MINUS_SRC_ALPHA), (C.GL_ONE, C.GL_ONE))),
+                          st.tuples(st.sampled_from(SRC_FACTORS), st.sampled_from(DST_FACTORS))),
+        # None, or the (src, dst) alpha factors of a glBlendFuncSeparateOES
+        "separate": st.one_of(st.none(), st.none(),
+                              st.tuples(st.sampled_from(SRC_FACTORS), st.sampled_from(DST_FACTORS))),
+        # None (no call), (mode,) for glBlendEquationOES, (rgb, alpha) for the separate form
+        "equation": st.one_of(st.none(), st.tuples(st.sampled_from(EQUATIONS)),
+                              st.tuples(st.sampled_from(EQUATIONS), st.sampled_from(EQUATIONS))),
+    }),
+    "logic": st.fixed_dictionaries({"on": rarely(), "op": st.sampled_from(LOGIC_OPS)}),
+    "fog": st.fixed_dictionaries({
+        "on": rarely(),
+        "mode": st.sampled_from(FOG_MODES),
+        "start": st.floats(-1.0, 3.0),
+        "end": st.floats(-1.0, 4.0),
+        "density": st.floats(0.0, 2.5),
+        "color": color4(),
+        "hint": st.sampled_from(HINTS),
+    }),
+    "offset": st.fixed_dictionaries({"on": rarely(), "factor": st.floats(-4, 4), "units": st.floats(-8, 8)}),
+}
+for _u in range(UNITS):
+    ASPECTS[f"tex{_u}"] = texture_strategy(_u)
+    ASPECTS[f"env{_u}"] = ENV
+    ASPECTS[f"tc{_u}"] = TEXCOORD
+
+# changes only phase 2 makes, to the texture phase 1 bound: its filters alone,
+# its unit's enable alone, part of its level 0 (glTexSubImage2D)
+CHANGES: dict[str, st.SearchStrategy] = dict(ASPECTS)
+for _u in range(UNITS):
+    CHANGES[f"filter{_u}"] = st.tuples(st.sampled_from(MIN_FILTERS), st.sampled_from(MAG_FILTERS))
+    CHANGES[f"enable{_u}"] = st.booleans()
+    CHANGES[f"subimage{_u}"] = SEED
+
+# most windows are small; one in three is wider than the chain's 64-pixel chunks
+SIZES = st.sampled_from((False, False, True)).flatmap(
+    lambda wide: st.tuples(st.integers(70, 150), st.integers(4, 12)) if wide
+    else st.tuples(st.integers(24, 40), st.integers(24, 32)))
+
+
+# the per-fragment operations a texturing scene mostly leaves off
+TESTS_AND_OPS = ("scissor", "stencil", "alpha", "logic", "offset", "fog")
+
+
+@st.composite
+def scenes(draw: Any, textured: bool = False, steps: bool = False) -> dict:
+    """A context, geometry, the state of phase 1 and the changes of an optional phase 2.
+
+    ``textured``: one to four units on, with complete textures, and each of
+    TESTS_AND_OPS off three times in four (texture formats, filters and
+    environments meet more often).
+
+    A change to a part phase 1 set replaces one to three of its fields, so that
+    phase 2 often issues a single command. ``steps``: instead of phase 2, two to
+    six phases of one command each (STEPS), any crossbar sources kept.
+    """
+    units_on = draw(st.sets(st.integers(0, UNITS - 1), min_size=1)) if textured else None
+    state: dict[str, Any] = {}
+    for key, strategy in ASPECTS.items():
+        if units_on is not None and key.startswith("tex"):
+            state[key] = draw(texture_strategy(int(key[3:]), int(key[3:]) in units_on))
+        elif key.startswith(("env", "tc")) and not state[f"tex{key[-1]}"]["enabled"]:
+            state[key] = dict(OFF_ENV if key.startswith("env") else OFF_TC)
+        else:
+            state[key] = draw(strategy)
+        if textured and key in TESTS_AND_OPS and not draw(rarely(4)):
+            state[key] = {**state[key], "on": False}
+    changes = None
+    if not steps and draw(st.booleans()):
+        changes = {}
+        for key in draw(st.lists(st.sampled_from(sorted(CHANGES)), min_size=1, max_size=3, unique=True)):
+            new = draw(CHANGES[key])
+            if isinstance(state.get(key), dict):
+                fields = draw(st.lists(st.sampled_from(sorted(new)), min_size=1, max_size=3, unique=True))
+                new = {**state[key], **{f: new[f] for f in fields}}
+            changes[key] = new
+    scene = {
+        "numeric": draw(st.sampled_from(BUILDS)),
+        "color": draw(st.sampled_from(("rgba8888", "rgb565"))),
+        "depth_bits": draw(st.sampled_from((0, 16, 24))),
+        "stencil_bits": draw(st.sampled_from((0, 8))),
+        "size": draw(SIZES),
+        "persp": draw(st.booleans()),
+        "triangles": draw(st.integers(4, 12)) if not steps else 0,
+        "geometry": draw(SEED),
+        "clear": (draw(color4(0.0, 1.0)), draw(st.one_of(st.just(1.0), st.floats(0.0, 1.0))),
+                  draw(st.integers(0, 255))),
+        # crossbar sources may name units that are off (else they are moved to units that are on)
+        "crossbar_to_off": steps or draw(rarely(4)),
+        "state": state,
+        "changes": changes,
+    }
+    if steps:
+        scene["steps"] = draw(st.lists(STEPS, min_size=2, max_size=6))
+        scene["triangles"] = draw(st.integers(len(scene["steps"]) + 1, 14))
+    return scene
+
+
+# {================================================================
+# applying a state
+
+
+def texture_levels(tex: dict) -> int:
+    """The number of mip levels below level 0 of a full chain."""
+    return max(tex["log_w"], tex["log_h"])
+
+
+def texture_complete(tex: dict) -> bool:
+    """§3.7.10 for the textures upload_texture makes."""
+    mipmapped = tex["min"] not in (C.GL_NEAREST, C.GL_LINEAR)
+    return not mipmapped or tex["mip"] in ("full", "generate") or texture_levels(tex) == 0
+
+
+@dataclass
+class Textures:
+    """What the commands issued so far did to the textures."""
+
+    units: dict[int, dict] = field(default_factory=dict)    # per unit: its texture's fields and enable
+    images: dict[int, dict] = field(default_factory=dict)   # per texture name: its level 0's fields
+
+    def track(self, key: str, v: Any) -> None:
+        """Follow a part of the state (or a phase-2 change) of `key`."""
+        for kind in ("tex", "filter", "enable"):
+            if key.startswith(kind):
+                u = int(key[len(kind):])
+                if kind == "tex":
+                    self.units[u] = dict(v)
+                elif kind == "filter":
+                    self.units[u] = {**self.units[u], "min": v[0], "mag": v[1]}
+                else:
+                    self.units[u] = {**self.units[u], "enabled": v}
+
+
+def active_units(*parts: dict) -> set[int]:
+    """The units enabled with a complete texture after the parts are applied in turn."""
+    t = Textures()
+    for part in parts:
+        for key, v in part.items():
+            t.track(key, v)
+    return {u for u, tex in t.units.items() if tex["enabled"] and texture_complete(tex)}
+
+
+def texels(rng: np.random.Generator, fmt: int, gltype: int, w: int, h: int) -> np.ndarray:
+    if gltype == C.GL_UNSIGNED_BYTE:
+        return rng.integers(0, 256, size=(h, w, CHANNELS[fmt]), dtype=np.uint8)
+    return rng.integers(0, 2**16, size=(h, w), dtype=np.uint16)
+
+
+def upload_texture(gl: Any, unit: int, tex: dict, textures: Textures) -> None:
+    """A new texture object on `unit` with the levels, filters and wraps of `tex`."""
+    rng = np.random.default_rng(tex["seed"])
+    fmt, gltype = tex["format"]
+    gl.glActiveTexture(C.GL_TEXTURE0 + unit)
+    name = gl.glGenTextures(1)
+    textures.images[name] = tex
+    gl.glBindTexture(C.GL_TEXTURE_2D, name)
+    gl.glPixelStorei(C.GL_UNPACK_ALIGNMENT, 1)
+    gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MIN_FILTER, tex["min"])
+    gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MAG_FILTER, tex["mag"])
+    gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_WRAP_S, tex["wrap_s"])
+    gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_WRAP_T, tex["wrap_t"])
+    gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_GENERATE_MIPMAP, int(tex["mip"] == "generate"))
+    top = {"none": 0, "generate": 0, "full": texture_levels(tex),
+           "partial": int(rng.integers(0, max(texture_levels(tex), 1)))}[tex["mip"]]
+    for level in range(top + 1):
+        w, h = max(1 << tex["log_w"] >> level, 1), max(1 << tex["log_h"] >> level, 1)
+        gl.glTexImage2D(C.GL_TEXTURE_2D, level, fmt, w, h, 0, fmt, gltype, texels(rng, fmt, gltype, w, h))
+    (gl.glEnable if tex["enabled"] else gl.glDisable)(C.GL_TEXTURE_2D)
+
+
+def texture_matrix(seed: int) -> np.ndarray:
+    """A column-major 4x4: rotation, scale and shift of (s, t), and sometimes a q row
+    that keeps q > 0.3 for the coordinates of texcoords()."""
+    rng = np.random.default_rng(seed)
+    m = np.eye(4)
+    a = rng.uniform(-np.pi, np.pi)
+    rot = np.array([[np.cos(a), -np.sin(a)], [np.sin(a), np.cos(a)]])
+    m[:2, :2] = rot * rng.uniform(0.25, 2.5, size=2)[:, None]
+    m[:2, 3] = rng.uniform(-1, 1, size=2)
+    if rng.random() < 0.5:
+        m[3, :2] = rng.uniform(-0.1, 0.1, size=2)
+        m[3, 3] = rng.uniform(0.9, 2.0)
+    return np.ascontiguousarray(m.T.reshape(-1))
+
+
+def texcoords(seed: int, kind: str, n: int) -> np.ndarray:
+    """(n, size) float32 coordinates, or one (s, t, r, q) row for "current"."""
+    rng = np.random.default_rng(seed)
+    size = {"array2": 2, "array3": 3, "array4": 4, "current": 4}[kind]
+    rows = 1 if kind == "current" else n
+    st_ = rng.uniform(-1.5, 2.5, size=(rows, 2))
+    r = rng.uniform(-1, 1, size=(rows, 1))
+    q = rng.uniform(0.3, 2.0, size=(rows, 1)) if size == 4 else np.ones((rows, 1))
+    out = np.hstack([st_ * q, r, q])
+    return np.ascontiguousarray(out[:, :size], dtype=np.float32)
+
+
+def set_texcoords(gl: Any, unit: int, tc: dict, n: int) -> None:
+    coords = texcoords(tc["seed"], tc["kind"], n)
+    gl.glClientActiveTexture(C.GL_TEXTURE0 + unit)
+    if tc["kind"] == "current":
+        gl.glDisableClientState(C.GL_TEXTURE_COORD_ARRAY)
+        gl.glMultiTexCoord4f(C.GL_TEXTURE0 + unit, *(float(v) for v in coords[0]))
+    else:
+        gl.glEnableClientState(C.GL_TEXTURE_COORD_ARRAY)
+        gl.glTexCoordPointer(coords.shape[1], C.GL_FLOAT, 0, coords)
+
+
+def set_texture_matrix(gl: Any, unit: int, seed: int | None) -> None:
+    gl.glActiveTexture(C.GL_TEXTURE0 + unit)
+    gl.glMatrixMode(C.GL_TEXTURE)
+    if seed is None:
+        gl.glLoadIdentity()
+    else:
+        gl.glLoadMatrixf(texture_matrix(seed))
+    gl.glMatrixMode(C.GL_MODELVIEW)
+
+
+def bound_texture(gl: Any, unit: int) -> int:
+    gl.glActiveTexture(C.GL_TEXTURE0 + unit)
+    return int(gl.glGetIntegerv(C.GL_TEXTURE_BINDING_2D))
+
+
+def replace_subimage(gl: Any, unit: int, seed: int, textures: Textures) -> None:
+    """New texels in a random rectangle of level 0 of the texture `unit` has bound
+    (nothing if it has none)."""
+    tex = textures.images.get(bound_texture(gl, unit))
+    if tex is None:
+        return
+    rng = np.random.default_rng(seed)
+    fmt, gltype = tex["format"]
+    tw, th = 1 << tex["log_w"], 1 << tex["log_h"]
+    x, y = int(rng.integers(0, tw)), int(rng.integers(0, th))
+    w, h = int(rng.integers(1, tw - x + 1)), int(rng.integers(1, th - y + 1))
+    gl.glPixelStorei(C.GL_UNPACK_ALIGNMENT, 1)
+    gl.glTexSubImage2D(C.GL_TEXTURE_2D, 0, x, y, w, h, fmt, gltype, texels(rng, fmt, gltype, w, h))
+
+
+def enable(gl: Any, cap: int, on: bool) -> None:
+    (gl.glEnable if on else gl.glDisable)(cap)
+
+
+def env_commands(gl: Any, unit: int, env: dict) -> list[tuple[Any, Callable[[], None]]]:
+    def param(pname: int, value: Any, fn: Any) -> tuple[Any, Callable[[], None]]:
+        def cmd() -> None:
+            gl.glActiveTexture(C.GL_TEXTURE0 + unit)
+            fn(C.GL_TEXTURE_ENV, pname, value)
+        return (pname, value), cmd
+
+    out = [param(C.GL_TEXTURE_ENV_MODE, env["mode"], gl.glTexEnvi),
+           param(C.GL_TEXTURE_ENV_COLOR, list(env["color"]), gl.glTexEnvfv),
+           param(C.GL_COMBINE_RGB, env["rgb"], gl.glTexEnvi),
+           param(C.GL_COMBINE_ALPHA, env["alpha"], gl.glTexEnvi),
+           param(C.GL_RGB_SCALE, env["rgb_scale"], gl.glTexEnvf),
+           param(C.GL_ALPHA_SCALE, env["alpha_scale"], gl.glTexEnvf)]
+    for n in range(3):
+        out += [param(C.GL_SRC0_RGB + n, env["src_rgb"][n], gl.glTexEnvi),
+                param(C.GL_OPERAND0_RGB + n, env["op_rgb"][n], gl.glTexEnvi),
+                param(C.GL_SRC0_ALPHA + n, env["src_alpha"][n], gl.glTexEnvi),
+                param(C.GL_OPERAND0_ALPHA + n, env["op_alpha"][n], gl.glTexEnvi)]
+    return out
+
+
+def commands(gl: Any, key: str, v: Any, size: tuple[int, int], nverts: int,
+             textures: Textures) -> list[tuple[Any, Callable[[], None]]]:
+    """The commands that set one part of the state, for a window of `size` and `nverts`
+    vertices, each with the values it depends on (a change of a part that leaves them
+    equal skips the command)."""
+    w, h = size
+    if key == "smooth":
+        return [(v, lambda: gl.glShadeModel(C.GL_SMOOTH if v else C.GL_FLAT))]
+    if key == "dither":
+        return [(v, lambda: enable(gl, C.GL_DITHER, v))]
+    if key == "scissor":
+        x, y, sw, sh = v["box"]
+        return [(v["box"], lambda: gl.glScissor(w * x // 100, h * y // 100, w * sw // 100, h * sh // 100)),
+                (v["on"], lambda: enable(gl, C.GL_SCISSOR_TEST, v["on"]))]
+    if key == "color_mask":
+        return [(v, lambda: gl.glColorMask(*v))]
+    if key == "depth":
+        return [(v["func"], lambda: gl.glDepthFunc(v["func"])),
+                (v["mask"], lambda: gl.glDepthMask(v["mask"])),
+                (v["range"], lambda: v["range"] is None or gl.glDepthRangef(*v["range"])),
+                (v["on"], lambda: enable(gl, C.GL_DEPTH_TEST, v["on"]))]
+    if key == "stencil":
+        func = (v["func"], v["ref"], v["value_mask"])
+        return [(func, lambda: gl.glStencilFunc(*func)),
+                (v["write_mask"], lambda: gl.glStencilMask(v["write_mask"])),
+                (v["ops"], lambda: gl.glStencilOp(*v["ops"])),
+                (v["on"], lambda: enable(gl, C.GL_STENCIL_TEST, v["on"]))]
+    if key == "alpha":
+        return [((v["func"], v["ref"]), lambda: gl.glAlphaFunc(v["func"], v["ref"])),
+                (v["on"], lambda: enable(gl, C.GL_ALPHA_TEST, v["on"]))]
+    if key == "blend":
+        def func() -> None:
+            if v["separate"] is None:
+                gl.glBlendFunc(*v["func"])
+            else:
+                gl.glBlendFuncSeparateOES(*v["func"], *v["separate"])
+
+        def equation() -> None:
+            if v["equation"] is not None and len(v["equation"]) == 1:
+                gl.glBlendEquationOES(*v["equation"])
+            elif v["equation"] is not None:
+                gl.glBlendEquationSeparateOES(*v["equation"])
+
+        return [((v["func"], v["separate"]), func), (v["equation"], equation),
+                (v["on"], lambda: enable(gl, C.GL_BLEND, v["on"]))]
+    if key == "logic":
+        return [(v["op"], lambda: gl.glLogicOp(v["op"])),
+                (v["on"], lambda: enable(gl, C.GL_COLOR_LOGIC_OP, v["on"]))]
+    if key == "fog":
+        return [(v["mode"], lambda: gl.glFogf(C.GL_FOG_MODE, v["mode"])),
+                (v["start"], lambda: gl.glFogf(C.GL_FOG_START, v["start"])),
+                (v["end"], lambda: gl.glFogf(C.GL_FOG_END, v["end"])),
+                (v["density"], lambda: gl.glFogf(C.GL_FOG_DENSITY, v["density"])),
+                (v["color"], lambda: gl.glFogfv(C.GL_FOG_COLOR, list(v["color"]))),
+                (v["hint"], lambda: gl.glHint(C.GL_FOG_HINT, v["hint"])),
+                (v["on"], lambda: enable(gl, C.GL_FOG, v["on"]))]
+    if key == "offset":
+        return [((v["factor"], v["units"]), lambda: gl.glPolygonOffset(v["factor"], v["units"])),
+                (v["on"], lambda: enable(gl, C.GL_POLYGON_OFFSET_FILL, v["on"]))]
+    for prefix in ("tex", "filter", "enable", "subimage", "env", "tc"):
+        if key.startswith(prefix):
+            u = int(key[len(prefix):])
+            break
+    else:
+        raise KeyError(key)
+
+    def on_unit(fn: Callable[[], None]) -> Callable[[], None]:
+        def cmd() -> None:
+            gl.glActiveTexture(C.GL_TEXTURE0 + u)
+            fn()
+        return cmd
+
+    if prefix == "tex":
+        return [(v, lambda: upload_texture(gl, u, v, textures))]
+    if prefix == "filter":
+        return [(v[0], on_unit(lambda: gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MIN_FILTER, v[0]))),
+                (v[1], on_unit(lambda: gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MAG_FILTER, v[1])))]
+    if prefix == "enable":
+        return [(v, on_unit(lambda: enable(gl, C.GL_TEXTURE_2D, v)))]
+    if prefix == "subimage":
+        return [(v, lambda: replace_subimage(gl, u, v, textures))]
+    if prefix == "env":
+        return env_commands(gl, u, v)
+    return [((v["kind"], v["seed"]), lambda: set_texcoords(gl, u, v, nverts)),
+            (v["matrix"], lambda: set_texture_matrix(gl, u, v["matrix"]))]
+
+
+def apply(gl: Any, key: str, v: Any, size: tuple[int, int], nverts: int, textures: Textures,
+          prev: Any = None) -> None:
+    """Set one part of the state; with `prev` (the part's value so far) only the
+    commands whose values differ."""
+    old = None if prev is None else [sig for sig, _ in commands(gl, key, prev, size, nverts, textures)]
+    for i, (sig, cmd) in enumerate(commands(gl, key, v, size, nverts, textures)):
+        if old is None or old[i] != sig:
+            cmd()
+    textures.track(key, v)
+
+
+def crossbar_on_units_on(scene: dict) -> dict:
+    """Unless the scene says otherwise, move every TEXTUREn source that names a unit
+    off in either phase to a unit on in both (or to TEXTURE if there is none).
+    OES_texture_env_crossbar leaves a reference to a unit that is off undefined; the
+    core reads zero for it, in every path, and the scenes that keep such sources
+    check that."""
+    if scene.get("crossbar_to_off"):
+        return scene
+    state, changes = scene["state"], scene["changes"] or {}
+    ok = sorted(active_units(state) & active_units(state, changes))
+
+    def src(s: int) -> int:
+        if s < C.GL_TEXTURE0 or s - C.GL_TEXTURE0 in ok:
+            return s
+        return C.GL_TEXTURE0 + ok[(s - C.GL_TEXTURE0) % len(ok)] if ok else C.GL_TEXTURE
+
+    def fixed(part: dict) -> dict:
+        return {k: {**v, "src_rgb": tuple(map(src, v["src_rgb"])),
+                    "src_alpha": tuple(map(src, v["src_alpha"]))} if k.startswith("env") else v
+                for k, v in part.items()}
+
+    return {**scene, "state": fixed(state), "changes": None if scene["changes"] is None else fixed(changes)}
+
+
+# {================================================================
+# single commands between draws
+
+
+CAPS = (C.GL_DEPTH_TEST, C.GL_STENCIL_TEST, C.GL_ALPHA_TEST, C.GL_BLEND, C.GL_COLOR_LOGIC_OP, C.GL_FOG,
+        C.GL_DITHER, C.GL_SCISSOR_TEST, C.GL_POLYGON_OFFSET_FILL)
+UNIT = st.integers(0, UNITS - 1)
+SRC = st.sampled_from(SRC_FACTORS)
+DST = st.sampled_from(DST_FACTORS)
+EQ = st.sampled_from(EQUATIONS)
+ENV_PARAMS = st.one_of(
+    st.tuples(st.just(C.GL_TEXTURE_ENV_MODE), st.sampled_from(ENV_MODES)),
+    st.tuples(st.just(C.GL_COMBINE_RGB), st.sampled_from(COMBINE_RGB)),
+    st.tuples(st.just(C.GL_COMBINE_ALPHA), st.sampled_from(COMBINE_ALPHA)),
+    st.tuples(st.sampled_from((C.GL_SRC0_RGB, C.GL_SRC1_RGB, C.GL_SRC2_RGB, C.GL_SRC0_ALPHA, C.GL_SRC1_ALPHA,
+                               C.GL_SRC2_ALPHA)), st.sampled_from(SOURCES)),
+    st.tuples(st.sampled_from((C.GL_OPERAND0_RGB, C.GL_OPERAND1_RGB, C.GL_OPERAND2_RGB)),
+              st.sampled_from(RGB_OPERANDS)),
+    st.tuples(st.sampled_from((C.GL_OPERAND0_ALPHA, C.GL_OPERAND1_ALPHA, C.GL_OPERAND2_ALPHA)),
+              st.sampled_from(ALPHA_OPERANDS)),
+)
+TEX_PARAMS = st.one_of(
+    st.tuples(st.just(C.GL_TEXTURE_MIN_FILTER), st.sampled_from(MIN_FILTERS)),
+    st.tuples(st.just(C.GL_TEXTURE_MAG_FILTER), st.sampled_from(MAG_FILTERS)),
+    st.tuples(st.sampled_from((C.GL_TEXTURE_WRAP_S, C.GL_TEXTURE_WRAP_T)), st.sampled_from(WRAPS)),
+)
+# one GL command each: the name of the command (or of what it does) and its arguments
+STEPS = st.one_of(
+    st.tuples(st.just("DepthFunc"), st.sampled_from(FUNCS)),
+    st.tuples(st.just("DepthMask"), st.booleans()),
+    st.tuples(st.just("ColorMask"), st.tuples(*[st.booleans()] * 4)),
+    st.tuples(st.just("ShadeModel"), st.sampled_from((C.GL_FLAT, C.GL_SMOOTH))),
+    st.tuples(st.just("Enable"), st.sampled_from(CAPS), st.booleans()),
+    st.tuples(st.just("BlendFunc"), SRC, DST),
+    st.tuples(st.just("BlendFuncSeparateOES"), SRC, DST, SRC, DST),
+    st.tuples(st.just("BlendEquationOES"), EQ),
+    st.tuples(st.just("BlendEquationSeparateOES"), EQ, EQ),
+    st.tuples(st.just("LogicOp"), st.sampled_from(LOGIC_OPS)),
+    st.tuples(st.just("AlphaFunc"), st.sampled_from(FUNCS), st.integers(0, 255).map(lambda v: v / 255)),
+    st.tuples(st.just("StencilFunc"), st.sampled_from(FUNCS), st.integers(0, 255), mask_value()),
+    st.tuples(st.just("StencilOp"), *[st.sampled_from(STENCIL_OPS)] * 3),
+    st.tuples(st.just("StencilMask"), mask_value()),
+    st.tuples(st.just("Fogf"), st.sampled_from((C.GL_FOG_START, C.GL_FOG_END, C.GL_FOG_DENSITY)),
+              st.floats(0.0, 3.0)),
+    st.tuples(st.just("Fogf"), st.just(C.GL_FOG_MODE), st.sampled_from(FOG_MODES)),
+    st.tuples(st.just("FogHint"), st.sampled_from(HINTS)),
+    st.tuples(st.just("PolygonOffset"), st.floats(-4, 4), st.floats(-8, 8)),
+    st.tuples(st.just("TexEnable"), UNIT, st.booleans()),
+    st.tuples(st.just("TexParameteri"), UNIT, TEX_PARAMS),
+    st.tuples(st.just("TexEnvi"), UNIT, ENV_PARAMS),
+    st.tuples(st.just("TexEnvColor"), UNIT, color4()),
+    # level 0 only, on the bound object: other levels may no longer match
+    st.tuples(st.just("TexImage2D"), UNIT, st.sampled_from(TEX_FORMATS), st.integers(0, 6), st.integers(0, 6),
+              SEED),
+    st.tuples(st.just("TexSubImage2D"), UNIT, SEED),
+    # bind the texture another unit has bound (one object on two units)
+    st.tuples(st.just("BindTexture"), UNIT, UNIT),
+    # delete a unit's texture: the units it was bound to fall back to texture 0
+    st.tuples(st.just("DeleteTextures"), UNIT),
+)
+
+
+def run_step(gl: Any, step: tuple, textures: Textures) -> None:
+    """Issue the one command of `step`."""
+    name, *a = step
+    if name == "Enable":
+        enable(gl, a[0], a[1])
+    elif name == "ShadeModel":
+        gl.glShadeModel(a[0])
+    elif name == "ColorMask":
+        gl.glColorMask(*a[0])
+    elif name == "Fogf":
+        gl.glFogf(a[0], a[1])
+    elif name == "FogHint":
+        gl.glHint(C.GL_FOG_HINT, a[0])
+    elif name in ("TexEnable", "TexParameteri", "TexEnvi", "TexEnvColor", "TexImage2D", "TexSubImage2D",
+                  "BindTexture", "DeleteTextures"):
+        u, *a = a
+        gl.glActiveTexture(C.GL_TEXTURE0 + u)
+        if name == "TexEnable":
+            enable(gl, C.GL_TEXTURE_2D, a[0])
+        elif name == "TexParameteri":
+            gl.glTexParameteri(C.GL_TEXTURE_2D, *a[0])
+        elif name == "TexEnvi":
+            gl.glTexEnvi(C.GL_TEXTURE_ENV, *a[0])
+        elif name == "TexEnvColor":
+            gl.glTexEnvfv(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_COLOR, list(a[0]))
+        elif name == "TexImage2D":
+            (fmt, gltype), log_w, log_h, seed = a
+            textures.images[bound_texture(gl, u)] = {"format": (fmt, gltype), "log_w": log_w, "log_h": log_h}
+            gl.glActiveTexture(C.GL_TEXTURE0 + u)
+            gl.glPixelStorei(C.GL_UNPACK_ALIGNMENT, 1)
+            gl.glTexImage2D(C.GL_TEXTURE_2D, 0, fmt, 1 << log_w, 1 << log_h, 0, fmt, gltype,
+                            texels(np.random.default_rng(seed), fmt, gltype, 1 << log_w, 1 << log_h))
+        elif name == "TexSubImage2D":
+            replace_subimage(gl, u, a[0], textures)
+        elif name == "BindTexture":
+            other = bound_texture(gl, a[0])
+            gl.glActiveTexture(C.GL_TEXTURE0 + u)
+            gl.glBindTexture(C.GL_TEXTURE_2D, other)
+        else:
+            doomed = bound_texture(gl, u)
+            if doomed:
+                gl.glDeleteTextures(1, [doomed])
+                textures.images.pop(doomed, None)
+    else:
+        getattr(gl, "gl" + name)(*a)
+
+
+# {================================================================
+# rendering
+
+
+def draw_phase(gl: Any, first: int, count: int) -> None:
+    """Triangles first .. first+count-1: about half in one call, then one call each."""
+    if count <= 0:
+        return
+    batch = (count + 1) // 2
+    gl.glDrawArrays(C.GL_TRIANGLES, 3 * first, 3 * batch)
+    for i in range(first + batch, first + count):
+        gl.glDrawArrays(C.GL_TRIANGLES, 3 * i, 3)
+
+
+def render(scene: dict, generic: bool) -> dict:
+    """Draw `scene` in a fresh context; the buffers, glGetError and the span path of each phase."""
+    w, h = scene["size"]
+    rng = np.random.default_rng(scene["geometry"])
+    verts, cols = random_triangles(rng, scene["persp"], scene["triangles"], w)
+    if not scene["persp"]:
+        # random_triangles spans -6 .. w + 6 in x and y: fit y to the window's height
+        verts[:, 1] = (verts[:, 1] + 6) * ((h + 12) / (w + 12)) - 6
+    ctx = make_ctx(scene["numeric"], w, h, color=scene["color"], depth=scene["depth_bits"],
+                   stencil=scene["stencil_bits"])
+    gl = ctx.gl
+    if generic:
+        ctx.debug(1)
+    rgba, depth, stencil = scene["clear"]
+    gl.glClearColor(*rgba)
+    gl.glClearDepthf(depth)
+    gl.glClearStencil(stencil)
+    gl.glClear(C.GL_COLOR_BUFFER_BIT | C.GL_DEPTH_BUFFER_BIT | C.GL_STENCIL_BUFFER_BIT)
+    (set_frustum(gl, w, h, 1.0, 3.0) if scene["persp"] else set_ortho(gl, w, h))
+    gl.glEnableClientState(C.GL_VERTEX_ARRAY)
+    gl.glVertexPointer(3, C.GL_FLOAT, 0, np.ascontiguousarray(verts, dtype=np.float32))
+    gl.glEnableClientState(C.GL_COLOR_ARRAY)
+    gl.glColorPointer(4, C.GL_UNSIGNED_BYTE, 0, np.ascontiguousarray(cols, dtype=np.uint8))
+    textures = Textures()
+    current = dict(scene["state"])
+    for key, value in current.items():
+        apply(gl, key, value, (w, h), len(verts), textures)
+
+    def change() -> None:
+        for key, value in scene["changes"].items():
+            apply(gl, key, value, (w, h), len(verts), textures, current.get(key))
+            current[key] = value
+
+    phases = [] if scene["changes"] is None else [change]
+    phases += [lambda step=step: run_step(gl, step, textures) for step in scene.get("steps", ())]
+    n = scene["triangles"]
+    ends = [n * (i + 1) // (len(phases) + 1) for i in range(len(phases) + 1)]
+    draw_phase(gl, 0, ends[0])
+    paths = [ctx.last_span_path()]
+    for i, phase in enumerate(phases):
+        phase()
+        draw_phase(gl, ends[i], ends[i + 1] - ends[i])
+        paths.append(ctx.last_span_path())
+    return {"color": ctx.color_buffer(), "depth": ctx.depth_buffer(), "stencil": ctx.stencil_buffer(),
+            "error": gl.glGetError(), "paths": paths}
+
+
+def check_scene(scene: dict) -> list[str]:
+    """Render `scene` both ways and require identical results; return the unforced paths."""
+    scene = crossbar_on_units_on(scene)
+    ref = render(scene, generic=True)
+    out = render(scene, generic=False)
+    assert ref["paths"] and all(p == "generic" for p in ref["paths"]), ref["paths"]
+    assert all(isinstance(p, str) and p for p in out["paths"]), out["paths"]
+    assert ref["error"] == C.GL_NO_ERROR, f"the scene itself is invalid: error {ref['error']:#x}"
+    assert out["error"] == ref["error"]
+    msg = f"unforced span paths {out['paths']}"
+    np.testing.assert_array_equal(out["color"], ref["color"], err_msg="colour buffer; " + msg)
+    for name in ("depth", "stencil"):
+        if ref[name] is None:
+            assert out[name] is None
+        else:
+            np.testing.assert_array_equal(out[name], ref[name], err_msg=f"{name} buffer; " + msg)
+    return out["paths"]
+
+
+@settings(max_examples=300, deadline=None)
+@given(scenes())
+def test_random_fragment_states_match_generic(scene):
+    """Random states over the whole fragment stage: bit-identical buffers and the
+    same glGetError with and without the forced generic path."""
+    for path in check_scene(scene):
+        event(f"span path {path}")
+
+
+@settings(max_examples=150, deadline=None)
+@given(scenes(textured=True))
+def test_random_texturing_states_match_generic(scene):
+    """The same with one to four units on and most tests and operations off."""
+    for path in check_scene(scene):
+        event(f"span path {path}")
+
+
+@settings(max_examples=150, deadline=None)
+@given(scenes(steps=True))
+def test_single_commands_between_draws_match_generic(scene):
+    """A random state, then draws with one command between each two: whichever
+    command it is, the next draw must run the span function for the state it left."""
+    for path in check_scene(scene):
+        event(f"span path {path}")
+    for step in scene["steps"]:
+        event(f"step {step[0]}")
+
+
+# {================================================================
+# hand-picked states
+
+
+def base_state() -> dict:
+    """Every fragment operation off (the GL defaults), smooth shading."""
+    state = {
+        "smooth": True, "dither": False, "scissor": {"on": False, "box": (0, 0, 0, 0)}, "color_mask": ALL_ON,
+        "depth": {"on": False, "func": C.GL_LESS, "mask": True, "range": None},
+        "stencil": {"on": False, "func": C.GL_ALWAYS, "ref": 0, "value_mask": 0xFF, "write_mask": 0xFF,
+                    "ops": (C.GL_KEEP,) * 3},
+        "alpha": {"on": False, "func": C.GL_ALWAYS, "ref": 0.0},
+        "blend": {"on": False, "func": (C.GL_ONE, C.GL_ZERO), "separate": None, "equation": None},
+        "logic": {"on": False, "op": C.GL_COPY},
+        "fog": {"on": False, "mode": C.GL_EXP, "start": 0.0, "end": 1.0, "density": 1.0,
+                "color": (0.0, 0.0, 0.0, 0.0), "hint": C.GL_DONT_CARE},
+        "offset": {"on": False, "factor": 0.0, "units": 0.0},
+    }
+    for u in range(UNITS):
+        state[f"tex{u}"] = dict(OFF_TEX)
+        state[f"env{u}"] = dict(OFF_ENV)
+        state[f"tc{u}"] = {"kind": "array2", "seed": u, "matrix": None}
+    return state
+
+
+def make_scene(numeric: str, seed: int, state: dict, changes: dict | None = None, **kw: Any) -> dict:
+    rng = np.random.default_rng(seed)
+    scene = {"numeric": numeric, "color": "rgba8888", "depth_bits": 24, "stencil_bits": 8, "size": (32, 32),
+             "persp": bool(seed % 2), "triangles": 8, "geometry": seed,
+             "clear": (tuple(float(v) for v in rng.uniform(0, 1, 4)), float(rng.uniform(0.3, 1.0)),
+                       int(rng.integers(0, 256))),
+             "state": state, "changes": changes}
+    scene.update(kw)
+    return scene
+
+
+def tex(seed: int, **kw: Any) -> dict:
+    return {**OFF_TEX, "enabled": True, "seed": seed, **kw}
+
+
+def case_dot3_modulate_fog(numeric: str, seed: int) -> dict:
+    """Two units, DOT3_RGBA of a normal map and the primary colour, then MODULATE; EXP2 fog."""
+    s = base_state()
+    s["tex0"] = tex(seed, log_w=4, log_h=4, min=C.GL_LINEAR, mag=C.GL_LINEAR)
+    s["env0"] = {**OFF_ENV, "mode": C.GL_COMBINE, "rgb": C.GL_DOT3_RGBA, "rgb_scale": 2.0,
+                 "src_rgb": (C.GL_TEXTURE, C.GL_PRIMARY_COLOR, C.GL_CONSTANT)}
+    s["tex1"] = tex(seed + 1, format=(C.GL_RGB, C.GL_UNSIGNED_BYTE), log_w=3, log_h=5,
+                    wrap_s=C.GL_MIRRORED_REPEAT_OES)
+    s["env1"] = {**OFF_ENV, "mode": C.GL_MODULATE}
+    s["tc1"] = {"kind": "array4", "seed": seed + 7, "matrix": seed}
+    s["fog"] = {"on": True, "mode": C.GL_EXP2, "start": 0.0, "end": 1.0, "density": 0.6,
+                "color": (0.2, 0.4, 0.9, 1.0), "hint": (C.GL_FASTEST, C.GL_NICEST)[seed % 2]}
+    s["depth"] = {"on": True, "func": C.GL_LESS, "mask": True, "range": None}
+    return make_scene(numeric, seed, s)
+
+
+def case_alpha_additive_xor(numeric: str, seed: int) -> dict:
+    """Alpha test, additive blending and the XOR logic op (which replaces blending)."""
+    s = base_state()
+    s["alpha"] = {"on": True, "func": C.GL_GREATER, "ref": 0.3}
+    s["blend"] = {"on": True, "func": (C.GL_ONE, C.GL_ONE), "separate": None, "equation": None}
+    s["logic"] = {"on": True, "op": C.GL_XOR}
+    # then the logic op off: plain additive blending after the alpha test
+    return make_scene(numeric, seed, s, changes={"logic": {"on": False, "op": C.GL_XOR}}, triangles=10)
+
+
+def case_stencil_equal_multipass(numeric: str, seed: int) -> dict:
+    """Pass 1 writes the stencil only (colour masked off); pass 2 draws where it is EQUAL."""
+    s = base_state()
+    s["color_mask"] = (False, False, False, False)
+    s["stencil"] = {"on": True, "func": C.GL_ALWAYS, "ref": 1 + seed % 3, "value_mask": 0xFF,
+                    "write_mask": 0xFF, "ops": (C.GL_KEEP, C.GL_INCR_WRAP_OES, C.GL_REPLACE)}
+    s["depth"] = {"on": True, "func": C.GL_LEQUAL, "mask": False, "range": None}
+    changes = {
+        "color_mask": ALL_ON,
+        "stencil": {"on": True, "func": C.GL_EQUAL, "ref": 1 + seed % 3, "value_mask": 0xFF,
+                    "write_mask": 0xFF, "ops": (C.GL_KEEP, C.GL_DECR_WRAP_OES, C.GL_KEEP)},
+        "tex0": tex(seed, format=(C.GL_LUMINANCE_ALPHA, C.GL_UNSIGNED_BYTE), min=C.GL_LINEAR),
+    }
+    return make_scene(numeric, seed, s, changes=changes, triangles=10)
+
+
+def case_trilinear_fog_depth(numeric: str, seed: int) -> dict:
+    """LINEAR_MIPMAP_LINEAR over a full uploaded chain, projective coordinates, LINEAR fog, depth LEQUAL."""
+    s = base_state()
+    s["tex0"] = tex(seed, log_w=6, log_h=5, mip="full", min=C.GL_LINEAR_MIPMAP_LINEAR, mag=C.GL_LINEAR,
+                    wrap_t=C.GL_CLAMP_TO_EDGE)
+    s["tc0"] = {"kind": "array4", "seed": seed, "matrix": None}
+    s["fog"] = {"on": True, "mode": C.GL_LINEAR, "start": 0.5, "end": 3.5, "density": 1.0,
+                "color": (0.9, 0.8, 0.1, 0.5), "hint": (C.GL_NICEST, C.GL_FASTEST)[seed % 2]}
+    s["depth"] = {"on": True, "func": C.GL_LEQUAL, "mask": True, "range": None}
+    return make_scene(numeric, seed, s)
+
+
+def case_rgb565_dither_blend(numeric: str, seed: int) -> dict:
+    """RGB565 with dither and SRC_ALPHA blending over a REPLACE texture."""
+    s = base_state()
+    s["dither"] = True
+    s["blend"] = {"on": True, "func": (C.GL_SRC_ALPHA, C.GL_ONE_MINUS_SRC_ALPHA), "separate": None,
+                  "equation": None}
+    s["tex0"] = tex(seed, mip="generate", min=C.GL_NEAREST_MIPMAP_LINEAR)
+    s["env0"] = {**OFF_ENV, "mode": C.GL_REPLACE}
+    s["depth"] = {"on": True, "func": C.GL_LESS, "mask": True, "range": None}
+    return make_scene(numeric, seed, s, color="rgb565", depth_bits=16)
+
+
+def case_four_unit_crossbar(numeric: str, seed: int) -> dict:
+    """Four COMBINE units reading each other's textures, non-identity texture matrices."""
+    s = base_state()
+    funcs = (C.GL_INTERPOLATE, C.GL_ADD_SIGNED, C.GL_SUBTRACT, C.GL_DOT3_RGB)
+    for u in range(UNITS):
+        fmt = TEX_FORMATS[(seed + u) % len(TEX_FORMATS)]
+        s[f"tex{u}"] = tex(seed * 4 + u, format=fmt, log_w=u + 1, log_h=3, min=C.GL_LINEAR, mag=C.GL_LINEAR)
+        s[f"env{u}"] = {**OFF_ENV, "mode": C.GL_COMBINE, "rgb": funcs[u], "alpha": C.GL_ADD,
+                        "src_rgb": (C.GL_TEXTURE0 + (u + 1) % UNITS, C.GL_PREVIOUS,
+                                    C.GL_TEXTURE0 + (u + 3) % UNITS),
+                        "src_alpha": (C.GL_TEXTURE, C.GL_TEXTURE0 + (u + 2) % UNITS, C.GL_CONSTANT),
+                        "color": (0.3, 0.6, 0.9, 0.4), "rgb_scale": SCALES[u % 3], "alpha_scale": 2.0}
+        s[f"tc{u}"] = {"kind": TEXCOORDS[u], "seed": seed + u, "matrix": seed + u if u % 2 else None}
+    return make_scene(numeric, seed, s)
+
+
+def case_offset_stencil_wrap(numeric: str, seed: int) -> dict:
+    """Polygon offset under depth LEQUAL, then another offset under EQUAL; stencil wrapping ops."""
+    s = base_state()
+    s["offset"] = {"on": True, "factor": 1.5, "units": -2.0}
+    s["depth"] = {"on": True, "func": C.GL_LEQUAL, "mask": True, "range": (0.1, 0.9)}
+    s["stencil"] = {"on": True, "func": C.GL_NOTEQUAL, "ref": 3, "value_mask": 0x0F, "write_mask": 0xF3,
+                    "ops": (C.GL_INCR_WRAP_OES, C.GL_DECR_WRAP_OES, C.GL_INVERT)}
+    changes = {"offset": {"on": True, "factor": -1.0, "units": 4.0},
+               "depth": {"on": True, "func": C.GL_EQUAL, "mask": False, "range": (0.1, 0.9)}}
+    return make_scene(numeric, seed, s, changes=changes, triangles=10)
+
+
+def case_wide_alpha_test(numeric: str, seed: int) -> dict:
+    """Rows of up to 150 pixels (several chunks of the chain) through a LUMINANCE_ALPHA
+    texture, the alpha test (so depth and stencil come after it), depth LESS and stencil."""
+    s = base_state()
+    s["tex0"] = tex(seed, format=(C.GL_LUMINANCE_ALPHA, C.GL_UNSIGNED_BYTE), log_w=5, log_h=2,
+                    min=C.GL_LINEAR, mag=C.GL_NEAREST)
+    s["alpha"] = {"on": True, "func": C.GL_GEQUAL, "ref": 0.4}
+    s["depth"] = {"on": True, "func": C.GL_LESS, "mask": True, "range": None}
+    s["stencil"] = {"on": True, "func": C.GL_ALWAYS, "ref": 0, "value_mask": 0xFF, "write_mask": 0xFF,
+                    "ops": (C.GL_KEEP, C.GL_KEEP, C.GL_INCR)}
+    return make_scene(numeric, seed, s, changes={"stencil": {**s["stencil"], "on": False}},
+                      size=(150, 6), persp=False, triangles=10)
+
+
+CASES = {f.__name__[5:]: f for f in (case_dot3_modulate_fog, case_alpha_additive_xor,
+                                     case_stencil_equal_multipass, case_trilinear_fog_depth,
+                                     case_rgb565_dither_blend, case_four_unit_crossbar,
+                                     case_offset_stencil_wrap, case_wide_alpha_test)}
+
+
+@pytest.mark.parametrize("numeric", BUILDS)
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_hand_picked_states_match_generic(case, numeric):
+    """Named combinations of stages, each over four seeds (geometry, textures, projection)."""
+    for seed in range(4):
+        check_scene(CASES[case](numeric, seed))
+
+
+# {================================================================
+# the path names
+
+
+def test_max_texture_units():
+    """The strategy covers every unit there is."""
+    assert make_ctx("fixed", 8, 8).gl.glGetIntegerv(C.GL_MAX_TEXTURE_UNITS) == UNITS
+
+
+def test_forced_path_is_generic_and_the_other_is_named():
+    """With debug(1) every draw reports "generic"; without it any name goes, but the
+    plainest states (nothing on but colour writes, with or without one texture) do not
+    all run the generic path, so the comparisons above compare two different paths."""
+    unforced = []
+    for smooth in (False, True):
+        for textured in (False, True):
+            s = base_state()
+            s["smooth"] = smooth
+            if textured:
+                s["tex0"] = tex(3)
+            scene = make_scene("fixed", 2, s, changes={"smooth": not smooth}, depth_bits=0)
+            ref = render(scene, generic=True)
+            out = render(scene, generic=False)
+            assert ref["paths"] == ["generic", "generic"]
+            assert all(isinstance(p, str) and p for p in out["paths"])
+            unforced += out["paths"]
+    assert set(unforced) != {"generic"}, unforced
