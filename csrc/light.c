@@ -495,11 +495,10 @@ static inline void directional_batch(const GlesContext *ctx, const LightPrep *p,
     const Light *l = p->l;
     const NUM shin = ctx->material.n_shininess;
     NUM ndotvp[LIGHT_BATCH], ndoth[LIGHT_BATCH];
-    NUM_FOR_LANES(i, cnt)
-        ndotvp[i] = lane_dot(n, i, p->p);
+    /* num_dot(n, 1, VP, 1, 3) lane by lane (the products commute) */
+    num_dot3_lanes(p->p[0], p->p[1], p->p[2], n[0], n[1], n[2], ndotvp, cnt);
     if (p->specular)
-        NUM_FOR_LANES(i, cnt)
-            ndoth[i] = lane_dot(n, i, p->h);
+        num_dot3_lanes(p->h[0], p->h[1], p->h[2], n[0], n[1], n[2], ndoth, cnt);
     for (int i = 0; i < b->n; i++) {   /* branches and pow: scalar, padding skipped */
         NUM term[3];
         for (int k = 0; k < 3; k++)
