@@ -1051,6 +1051,28 @@ static inline FRAGV lod_frac(LODV l) { return l - NUM_FLOOR(l); }
     for (int g_ = 0; g_ < (cnt); g_ += NUM_LANES) \
         for (int i = g_; i < g_ + NUM_LANES; i++)
 
+/* num_from_double((double)f), the conversion of a FLOAT array component,
+** with the fixed build's floor done inline: x = v + 1/2 is formed as
+** dbl_to_i64 forms it, and for |x| < 2^32 floor(x) is the truncation less
+** one when that lies above x. The same value, without a call per component. */
+static inline NUM num_from_float(float f)
+{
+#if NUM_IS_FIXED
+    double v = (double)f * 65536.0;
+    if (!(v == v))
+        return 0;
+    if (v <= (double)INT32_MIN)
+        return NUM_MIN;
+    if (v >= (double)INT32_MAX)
+        return NUM_MAX;
+    double x = v + 0.5;
+    int64_t t = (int64_t)x;
+    return (NUM)(t - ((double)t > x));
+#else
+    return num_from_double((double)f);
+#endif
+}
+
 #if NUM_IS_FIXED
 /* one instance per pattern of nonzero coefficients (`mask`, constant at
 ** each call) and per w (`w_one`: every lane's w is NUM_ONE, so the last

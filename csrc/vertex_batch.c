@@ -29,7 +29,8 @@ static int vb_lanes(int n)
 }
 
 /* FLOAT elements of `size` components (a constant at each call, so each
-** instance is unrolled): num_from_double of each, as array_fetch does */
+** instance is unrolled): num_from_double of each, as array_fetch does
+** (num_from_float is that conversion without the call to floor) */
 static inline void fetch_float(const uint8_t *base, int step, const int64_t *index, int n, NUM out[][VERTEX_BATCH],
                                const int size)
 {
@@ -37,7 +38,7 @@ static inline void fetch_float(const uint8_t *base, int step, const int64_t *ind
         float f[4];
         memcpy(f, base + index[i] * step, (size_t)size * sizeof f[0]);
         for (int c = 0; c < size; c++)
-            out[c][i] = num_from_double((double)f[c]);
+            out[c][i] = num_from_float(f[c]);
     }
 }
 
