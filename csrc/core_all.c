@@ -9,6 +9,7 @@
 #include "array.c"
 #include "light.c"
 #include "vertex.c"
+#include "vertex_batch.c"
 #include "clip.c"
 #include "raster.c"
 #include "fragment.c"

@@ -1,13 +1,22 @@
 /*
 ** draw.c -- DrawArrays and DrawElements: validation and primitive assembly
 ** (ES 1.1 §2.8, §2.6.1).
-** Consumes: the arrays (array.c), vertex processing (vertex.c), clipping
-**       (clip.c) and the rasterizer (raster.c).
-** Order of work per draw: positions of every referenced vertex once
-**       (a post-transform cache indexed by vertex number, with stamps so it
-**       is never cleared); then per primitive trivial reject and culling;
-**       then attributes only for vertices of primitives that survive; then
-**       clipping of the few that cross a plane, and rasterization.
+** Consumes: the arrays (array.c), vertex processing (vertex_batch.c, and
+**       vertex.c for the reference path), clipping (clip.c) and the
+**       rasterizer (raster.c).
+** Order of work per draw: positions and clip codes of the draw's vertices
+**       in batches (the contiguous range of DrawArrays; DrawElements' whole
+**       index range when it is no larger than the index count, else the
+**       referenced vertices, gathered once each through the post-transform
+**       cache); then per primitive trivial reject and culling; surviving
+**       primitives are queued and their vertices' attributes (lighting,
+**       fog, texture coordinates) computed in batches, once per vertex,
+**       before the queue is rasterized in order; clipping of the few that
+**       cross a plane happens then.
+** The reference path (GLES_DEBUG_VERTEX_REFERENCE) does the same per
+** vertex, through stamps: a vertex whose stamp is base has its position,
+** base + 1 also its attributes; base advances by 2 per draw, so the cache
+** is never cleared.
 ** Points and lines are assembled and clipped here and rasterized by
 ** point.c and line.c.
 */
@@ -16,6 +25,7 @@
 #include "state.h"
 #include "array.h"
 #include "vertex.h"
+#include "vertex_batch.h"
 #include "clip.h"
 #include "raster.h"
 #include "point.h"
@@ -63,10 +73,29 @@ void draw_validate(GlesContext *ctx)
     }
 }
 
+/* a primitive that survived rejection and culling, waiting for its
+** vertices' attributes */
+enum { PRIM_TRIANGLE, PRIM_LINE, PRIM_POINT };
+typedef struct Prim {
+    int64_t i[3];
+    int64_t area2;       /* triangles inside every plane: the window area */
+    unsigned int codes;  /* union of the vertices' clip codes */
+    int kind;
+} Prim;
+
+#define DRAW_QUEUE 256
+
 typedef struct Batch {
     GlesContext *ctx;
     int64_t base;        /* array index of cache slot 0 */
+    int64_t last;        /* array index of the last slot */
     int visible;         /* viewport meets the framebuffer */
+    int reference;       /* GLES_DEBUG_VERTEX_REFERENCE: per vertex */
+    /* vertices waiting for attributes, and the primitives that use them */
+    int npend, nprim;
+    int64_t pend[VERTEX_BATCH];
+    Vertex *pendv[VERTEX_BATCH];
+    Prim prim[DRAW_QUEUE];
 } Batch;
 
 static Vertex *position(Batch *b, int64_t index)
@@ -177,6 +206,165 @@ static void point(Batch *b, int64_t i0)
     raster_point(b->ctx, v);
 }
 
+/* {====================================================================
+** the batched path */
+
+static Vertex *slot_of(const Batch *b, int64_t index)
+{
+    return &b->ctx->verts[index - b->base];
+}
+
+/* rasterize a queued primitive: its vertices have their attributes */
+static void draw_prim(Batch *b, const Prim *p)
+{
+    GlesContext *ctx = b->ctx;
+    Vertex *v0 = slot_of(b, p->i[0]), *v1 = slot_of(b, p->i[1]), *v2 = slot_of(b, p->i[2]);
+    switch (p->kind) {
+    case PRIM_POINT:
+        raster_point(ctx, v0);
+        return;
+    case PRIM_LINE: {
+        const Vertex *pa = v0, *pb = v1;
+        Vertex scratch[CLIP_MAX_VERTS];
+        if (p->codes && !clip_line(ctx, v0, v1, p->codes, &pa, &pb, scratch))
+            return;
+        if (pa->outcode & CLIP_NEW_VERTEX)
+            vertex_window(ctx, (Vertex *)pa);
+        if (pb->outcode & CLIP_NEW_VERTEX)
+            vertex_window(ctx, (Vertex *)pb);
+        raster_line(ctx, pa, pb, v1);
+        return;
+    }
+    default:
+        break;
+    }
+    if (!p->codes) {
+        raster_triangle(ctx, v0, v1, v2, v2, !is_front(ctx, p->area2));
+        return;
+    }
+    const Vertex *in[3] = { v0, v1, v2 };
+    const Vertex *poly[CLIP_MAX_VERTS];
+    Vertex scratch[2 * CLIP_MAX_VERTS];
+    int n = clip_polygon(ctx, in, 3, p->codes, poly, scratch);
+    if (n < 3)
+        return;
+    for (int i = 0; i < n; i++)
+        if (poly[i]->outcode & CLIP_NEW_VERTEX)
+            vertex_window(ctx, (Vertex *)poly[i]);
+    int64_t area2 = 0;
+    for (int i = 1; i + 1 < n; i++)
+        area2 += raster_area2(poly[0], poly[i], poly[i + 1]);
+    if (area2 == 0 || culled(ctx, area2))
+        return;
+    for (int i = 1; i + 1 < n; i++)
+        raster_triangle(ctx, poly[0], poly[i], poly[i + 1], v2, !is_front(ctx, area2));
+}
+
+/* attributes of the waiting vertices in one batch, then the queue in order */
+static void flush(Batch *b)
+{
+    if (b->npend)
+        vertex_batch_attribs(b->ctx, b->pend, b->pendv, b->npend);
+    b->npend = 0;
+    for (int i = 0; i < b->nprim; i++)
+        draw_prim(b, &b->prim[i]);
+    b->nprim = 0;
+}
+
+/* queue a surviving primitive of `nv` vertices; each vertex joins the
+** waiting list once per draw (stamp base + 1) */
+static void enqueue(Batch *b, int kind, int nv, int64_t i0, int64_t i1, int64_t i2, unsigned int codes,
+                    int64_t area2)
+{
+    GlesContext *ctx = b->ctx;
+    if (b->nprim == DRAW_QUEUE || b->npend + nv > VERTEX_BATCH)
+        flush(b);
+    Prim *p = &b->prim[b->nprim++];
+    p->i[0] = i0;
+    p->i[1] = i1;
+    p->i[2] = i2;
+    p->codes = codes;
+    p->area2 = area2;
+    p->kind = kind;
+    for (int k = 0; k < nv; k++) {
+        int64_t s = p->i[k] - b->base;
+        if (ctx->vert_stamp[s] != ctx->draw_stamp + 1) {
+            ctx->vert_stamp[s] = ctx->draw_stamp + 1;
+            b->pend[b->npend] = p->i[k];
+            b->pendv[b->npend++] = &ctx->verts[s];
+        }
+    }
+}
+
+/* trivial reject and culling on positions; survivors wait in the queue */
+static void queue_triangle(Batch *b, int64_t i0, int64_t i1, int64_t i2)
+{
+    const Vertex *v0 = slot_of(b, i0), *v1 = slot_of(b, i1), *v2 = slot_of(b, i2);
+    if (v0->outcode & v1->outcode & v2->outcode)
+        return;
+    unsigned int codes = v0->outcode | v1->outcode | v2->outcode;
+    int64_t area2 = 0;
+    if (!codes) {
+        area2 = raster_area2(v0, v1, v2);
+        if (area2 == 0 || culled(b->ctx, area2))
+            return;
+    }
+    enqueue(b, PRIM_TRIANGLE, 3, i0, i1, i2, codes, area2);
+}
+
+static void queue_line(Batch *b, int64_t i0, int64_t i1)
+{
+    const Vertex *v0 = slot_of(b, i0), *v1 = slot_of(b, i1);
+    if (v0->outcode & v1->outcode)
+        return;
+    enqueue(b, PRIM_LINE, 2, i0, i1, i1, v0->outcode | v1->outcode, 0);
+}
+
+static void queue_point(Batch *b, int64_t i0)
+{
+    if (slot_of(b, i0)->outcode)
+        return;
+    enqueue(b, PRIM_POINT, 1, i0, i0, i0, 0, 0);
+}
+
+/* positions of every vertex in lo..hi, in batches */
+static void positions_range(Batch *b, int64_t lo, int64_t hi)
+{
+    int64_t idx[VERTEX_BATCH];
+    for (int64_t s = lo; s <= hi; s += VERTEX_BATCH) {
+        int n = hi - s + 1 < VERTEX_BATCH ? (int)(hi - s + 1) : VERTEX_BATCH;
+        for (int i = 0; i < n; i++)
+            idx[i] = s + i;
+        vertex_batch_positions(b->ctx, idx, n, b->ctx->verts, b->base);
+    }
+}
+
+/* the dispatch of assemble(): queue on the batched path, draw at once on
+** the reference path */
+static void emit_triangle(Batch *b, int64_t i0, int64_t i1, int64_t i2)
+{
+    if (b->reference)
+        triangle(b, i0, i1, i2);
+    else
+        queue_triangle(b, i0, i1, i2);
+}
+
+static void emit_line(Batch *b, int64_t i0, int64_t i1)
+{
+    if (b->reference)
+        line(b, i0, i1);
+    else
+        queue_line(b, i0, i1);
+}
+
+static void emit_point(Batch *b, int64_t i0)
+{
+    if (b->reference)
+        point(b, i0);
+    else
+        queue_point(b, i0);
+}
+
 /* index source: either a range or an index array */
 typedef struct Indices {
     const uint8_t *p;    /* NULL: element i is first + i */
@@ -195,47 +383,81 @@ static int64_t index_at(const Indices *ix, int64_t i)
     return v;
 }
 
+/* positions of the vertices an index array references, each once: the
+** indices are walked and the first sight of each vertex (its stamp still
+** below base) joins a batch */
+static void positions_indexed(Batch *b, int count, const Indices *ix)
+{
+    GlesContext *ctx = b->ctx;
+    int64_t idx[VERTEX_BATCH];
+    int n = 0;
+    for (int i = 0; i < count; i++) {
+        int64_t v = index_at(ix, i);
+        int64_t s = v - b->base;
+        if (ctx->vert_stamp[s] >= ctx->draw_stamp)
+            continue;
+        ctx->vert_stamp[s] = ctx->draw_stamp;
+        idx[n++] = v;
+        if (n == VERTEX_BATCH) {
+            vertex_batch_positions(ctx, idx, n, ctx->verts, b->base);
+            n = 0;
+        }
+    }
+    if (n)
+        vertex_batch_positions(ctx, idx, n, ctx->verts, b->base);
+}
+
 static void assemble(Batch *b, unsigned int mode, int count, const Indices *ix)
 {
     if (!b->visible)
         return;
+    if (!b->reference) {
+        if (!ix->p)
+            positions_range(b, ix->first, ix->first + count - 1);
+        else if (b->last - b->base + 1 <= count)
+            positions_range(b, b->base, b->last);
+        else
+            positions_indexed(b, count, ix);
+    }
     switch (mode) {
     case GL_POINTS:
         for (int i = 0; i < count; i++)
-            point(b, index_at(ix, i));
+            emit_point(b, index_at(ix, i));
         break;
     case GL_LINES:
         for (int i = 0; i + 1 < count; i += 2)
-            line(b, index_at(ix, i), index_at(ix, i + 1));
+            emit_line(b, index_at(ix, i), index_at(ix, i + 1));
         break;
     case GL_LINE_STRIP:
     case GL_LINE_LOOP:
         for (int i = 0; i + 1 < count; i++)
-            line(b, index_at(ix, i), index_at(ix, i + 1));
+            emit_line(b, index_at(ix, i), index_at(ix, i + 1));
         if (mode == GL_LINE_LOOP && count > 1)
-            line(b, index_at(ix, count - 1), index_at(ix, 0));
+            emit_line(b, index_at(ix, count - 1), index_at(ix, 0));
         break;
     case GL_TRIANGLES:
         for (int i = 0; i + 2 < count; i += 3)
-            triangle(b, index_at(ix, i), index_at(ix, i + 1), index_at(ix, i + 2));
+            emit_triangle(b, index_at(ix, i), index_at(ix, i + 1), index_at(ix, i + 2));
         break;
     case GL_TRIANGLE_STRIP:
         /* Table 2.10: the provoking vertex is i + 2; odd triangles swap the
         ** first two to keep a consistent winding */
         for (int i = 0; i + 2 < count; i++) {
             if (i & 1)
-                triangle(b, index_at(ix, i + 1), index_at(ix, i), index_at(ix, i + 2));
+                emit_triangle(b, index_at(ix, i + 1), index_at(ix, i), index_at(ix, i + 2));
             else
-                triangle(b, index_at(ix, i), index_at(ix, i + 1), index_at(ix, i + 2));
+                emit_triangle(b, index_at(ix, i), index_at(ix, i + 1), index_at(ix, i + 2));
         }
         break;
     case GL_TRIANGLE_FAN:
         for (int i = 1; i + 1 < count; i++)
-            triangle(b, index_at(ix, 0), index_at(ix, i), index_at(ix, i + 1));
+            emit_triangle(b, index_at(ix, 0), index_at(ix, i), index_at(ix, i + 1));
         break;
     default:
         break;
     }
+    if (!b->reference)
+        flush(b);
 }
 
 static int mode_ok(unsigned int mode) { return mode <= GL_TRIANGLE_FAN; }
@@ -270,6 +492,18 @@ static int palette_check(GlesContext *ctx, int64_t lo, int64_t hi, int *skip)
     return GLES_OK;
 }
 
+/* the per-draw state, without clearing the queue's storage */
+static void batch_init(Batch *b, GlesContext *ctx, int64_t base, int64_t last)
+{
+    b->ctx = ctx;
+    b->base = base;
+    b->last = last;
+    b->visible = viewport_visible(ctx);
+    b->reference = (ctx->debug & GLES_DEBUG_VERTEX_REFERENCE) != 0;
+    b->npend = 0;
+    b->nprim = 0;
+}
+
 int gles_DrawArrays(GlesContext *ctx, unsigned int mode, int first, int count)
 {
     if (!mode_ok(mode)) {
@@ -294,7 +528,8 @@ int gles_DrawArrays(GlesContext *ctx, unsigned int mode, int first, int count)
     if ((st = draw_begin(ctx, count)) != GLES_OK)
         return st;
     draw_validate(ctx);
-    Batch b = { ctx, first, viewport_visible(ctx) };
+    Batch b;
+    batch_init(&b, ctx, first, (int64_t)first + count - 1);
     Indices ix = { NULL, 0, first };
     assemble(&b, mode, count, &ix);
     return range;
@@ -351,7 +586,8 @@ int gles_DrawElements(GlesContext *ctx, unsigned int mode, int count, unsigned i
     if ((st = draw_begin(ctx, hi - lo + 1)) != GLES_OK)
         return st;
     draw_validate(ctx);
-    Batch b = { ctx, lo, viewport_visible(ctx) };
+    Batch b;
+    batch_init(&b, ctx, lo, hi);
     assemble(&b, mode, count, &ix);
     return range;
 }

@@ -54,7 +54,8 @@ int gles_width(GlesContext *ctx);
 int gles_height(GlesContext *ctx);
 /* debug switches for tests: 1 forces the generic span path; 2 and 4 break
 ** the rasterizer on purpose (flip the fill rule's tie, drop the last pixel of
-** every span) so that tests can show the suite catches it */
+** every span) so that tests can show the suite catches it; 8 runs the
+** vertex stage per vertex (the reference of the batched path) */
 void gles_debug_set(GlesContext *ctx, int flags);
 /* name of the span function the last triangle used (for path tests) */
 const char *gles_last_span_name(GlesContext *ctx);

@@ -277,6 +277,75 @@ static void normal_matrix_of(const NUM *mn, NUM nm[9], NUM *rescale)
     *rescale = num_from_double(r > 0 ? 1.0 / r : 1.0);
 }
 
+/* The parts of light_side that do not depend on the vertex, computed once
+** per state change with the same operations in the same order: the
+** material products, and for a directional light its unit direction, spot
+** factor and half vector (the viewer is at infinity in ES, so h is constant
+** too). A directional light that can contribute nothing (zero direction,
+** every vertex outside its cone) is left out. */
+static void prepare_lights(GlesContext *ctx)
+{
+    const Material *m = &ctx->material;
+    for (int k = 0; k < 3; k++)
+        ctx->light_base[k] = num_add(m->n_emission[k], num_mul(m->n_ambient[k], ctx->n_light_model_ambient[k]));
+    int cnt = 0;
+    for (unsigned int bits = ctx->active_lights; bits; bits &= bits - 1) {
+        const Light *l = &ctx->lights[__builtin_ctz(bits)];
+        LightPrep *p = &ctx->light_prep[cnt];
+        memset(p, 0, sizeof *p);
+        p->l = l;
+        for (int k = 0; k < 3; k++) {
+            p->amb[k] = num_mul(m->n_ambient[k], l->n_ambient[k]);
+            p->dif[k] = num_mul(m->n_diffuse[k], l->n_diffuse[k]);
+            p->spec[k] = num_mul(m->n_specular[k], l->n_specular[k]);
+        }
+        if (l->n_position[3] != NUM_ZERO) {
+            NUM pw = l->n_position[3];
+            p->positional = 1;
+            for (int k = 0; k < 3; k++)
+                p->p[k] = pw == NUM_ONE ? l->n_position[k] : num_div(l->n_position[k], pw);
+            const NUM *ka = l->n_attenuation;
+            p->attenuate = ka[1] != NUM_ZERO || ka[2] != NUM_ZERO || ka[0] != NUM_ONE;
+            p->spot = l->spot_cutoff != 180.0;
+            p->specular = l->has_specular;
+        } else {
+            NUM vp[3] = { l->n_position[0], l->n_position[1], l->n_position[2] };
+            if (!num_normalize3(vp))
+                continue;
+            NUM spot = NUM_ONE;
+            if (l->spot_cutoff != 180.0) {
+                NUM cosang = num_neg(num_dot(vp, 1, l->unit_spot_direction, 1, 3));
+                if (cosang < l->n_cos_cutoff)
+                    continue;
+                spot = num_pow(cosang, l->n_spot_exponent);
+            }
+            p->scale = num_mul(NUM_ONE, spot);      /* att is one */
+            memcpy(p->p, vp, sizeof vp);
+            NUM h[3] = { vp[0], vp[1], num_add(vp[2], NUM_ONE) };
+            p->specular = l->has_specular && num_normalize3(h);
+            memcpy(p->h, h, sizeof h);
+        }
+        cnt++;
+    }
+    ctx->light_prep_count = cnt;
+}
+
+/* per light: the unit spot direction, and whether the specular product is
+** zero (such a light skips h and pow entirely) */
+static void update_lights(GlesContext *ctx)
+{
+    const Material *m = &ctx->material;
+    for (int i = 0; i < GLES_MAX_LIGHTS; i++) {
+        Light *l = &ctx->lights[i];
+        memcpy(l->unit_spot_direction, l->n_spot_direction, sizeof l->unit_spot_direction);
+        num_normalize3(l->unit_spot_direction);
+        l->has_specular = 0;
+        for (int k = 0; k < 3; k++)
+            if (num_mul(m->n_specular[k], l->n_specular[k]) != NUM_ZERO)
+                l->has_specular = 1;
+    }
+}
+
 void light_validate(GlesContext *ctx)
 {
     ctx->active_lights = 0;
@@ -286,16 +355,12 @@ void light_validate(GlesContext *ctx)
     ctx->two_sided = ctx->lighting && ctx->light_model_two_side;
     if (!ctx->lighting)
         return;
-    const Material *m = &ctx->material;
-    for (int i = 0; i < GLES_MAX_LIGHTS; i++) {
-        Light *l = &ctx->lights[i];
-        memcpy(l->unit_spot_direction, l->n_spot_direction, sizeof l->unit_spot_direction);
-        num_normalize3(l->unit_spot_direction);
-        /* a light whose specular product is zero skips h and pow entirely */
-        l->has_specular = 0;
-        for (int k = 0; k < 3; k++)
-            if (num_mul(m->n_specular[k], l->n_specular[k]) != NUM_ZERO)
-                l->has_specular = 1;
+    /* the lights and the material: light positions are in eye space
+    ** already, so a new modelview leaves these alone (turning lighting on
+    ** marks DIRTY_LIGHT) */
+    if (ctx->dirty & DIRTY_LIGHT) {
+        update_lights(ctx);
+        prepare_lights(ctx);
     }
     normal_matrix_of(ctx->modelview.top->n, ctx->normal_matrix, &ctx->rescale);
     if (ctx->matrix_palette)
@@ -408,5 +473,141 @@ void light_vertex(const GlesContext *ctx, const NUM eye[4], const NUM normal[3],
     if (back) {
         NUM nb[3] = { num_neg(n[0]), num_neg(n[1]), num_neg(n[2]) };
         light_side(ctx, nb, v, amb, dif, back);
+    }
+}
+
+/* {====================================================================
+** the lighting equation, per batch */
+
+/* n . u for lane i of a structure-of-arrays normal: num_dot's arithmetic */
+static inline NUM lane_dot(NUM n[3][LIGHT_BATCH], int i, const NUM u[3])
+{
+    NUM t[3] = { n[0][i], n[1][i], n[2][i] };
+    return num_dot(t, 1, u, 1, 3);
+}
+
+/* a directional light's term for every lane: only n . VP, n . h and the
+** specular power depend on the vertex. `cm`: COLOR_MATERIAL (a constant
+** at each call, so each instance loses the test) */
+static inline void directional_batch(const GlesContext *ctx, const LightPrep *p, LightBatch *b,
+                                     NUM n[3][LIGHT_BATCH], NUM acc[3][LIGHT_BATCH], int cnt, const int cm)
+{
+    const Light *l = p->l;
+    const NUM shin = ctx->material.n_shininess;
+    NUM ndotvp[LIGHT_BATCH], ndoth[LIGHT_BATCH];
+    /* num_dot(n, 1, VP, 1, 3) lane by lane (the products commute) */
+    num_dot3_lanes(p->p[0], p->p[1], p->p[2], n[0], n[1], n[2], ndotvp, cnt);
+    if (p->specular)
+        num_dot3_lanes(p->h[0], p->h[1], p->h[2], n[0], n[1], n[2], ndoth, cnt);
+    for (int i = 0; i < b->n; i++) {   /* branches and pow: scalar, padding skipped */
+        NUM term[3];
+        for (int k = 0; k < 3; k++)
+            term[k] = cm ? num_mul(b->col[k][i], l->n_ambient[k]) : p->amb[k];
+        if (ndotvp[i] > NUM_ZERO) {
+            for (int k = 0; k < 3; k++)
+                term[k] = num_add(term[k], num_mul(ndotvp[i], cm ? num_mul(b->col[k][i], l->n_diffuse[k]) : p->dif[k]));
+            if (p->specular && ndoth[i] > NUM_ZERO) {
+                NUM sp = num_pow(ndoth[i], shin);
+                for (int k = 0; k < 3; k++)
+                    term[k] = num_add(term[k], num_mul(sp, p->spec[k]));
+            }
+        }
+        for (int k = 0; k < 3; k++)
+            acc[k][i] = num_add(acc[k][i], num_mul(p->scale, term[k]));
+    }
+}
+
+/* a positional light's term for every lane: light_side's loop body with
+** the light's branches taken once for the batch */
+static inline void positional_batch(const GlesContext *ctx, const LightPrep *p, LightBatch *b,
+                                    NUM n[3][LIGHT_BATCH], NUM acc[3][LIGHT_BATCH], const int cm)
+{
+    const Light *l = p->l;
+    const NUM shin = ctx->material.n_shininess;
+    const NUM *ka = l->n_attenuation;
+    for (int i = 0; i < b->n; i++) {   /* scalar: padding lanes would only cost */
+        NUM vp[3], att = NUM_ONE;
+        for (int k = 0; k < 3; k++)
+            vp[k] = num_sub(p->p[k], b->v[k][i]);
+        if (p->attenuate) {
+            NUM d = length3(vp);
+            NUM den = num_add(ka[0], num_add(num_mul(ka[1], d), num_mul(num_mul(ka[2], d), d)));
+            att = num_recip(den);
+        }
+        if (!num_normalize3(vp))
+            continue;
+        NUM spot = NUM_ONE;
+        if (p->spot) {
+            NUM cosang = num_neg(num_dot(vp, 1, l->unit_spot_direction, 1, 3));
+            if (cosang < l->n_cos_cutoff)
+                continue;
+            spot = num_pow(cosang, l->n_spot_exponent);
+        }
+        NUM scale = num_mul(att, spot);
+        NUM ndotvp = lane_dot(n, i, vp);
+        NUM term[3];
+        for (int k = 0; k < 3; k++)
+            term[k] = cm ? num_mul(b->col[k][i], l->n_ambient[k]) : p->amb[k];
+        if (ndotvp > NUM_ZERO) {
+            for (int k = 0; k < 3; k++)
+                term[k] = num_add(term[k], num_mul(ndotvp, cm ? num_mul(b->col[k][i], l->n_diffuse[k]) : p->dif[k]));
+            NUM h[3] = { vp[0], vp[1], num_add(vp[2], NUM_ONE) };
+            if (p->specular && num_normalize3(h)) {
+                NUM ndoth = lane_dot(n, i, h);
+                if (ndoth > NUM_ZERO) {
+                    NUM sp = num_pow(ndoth, shin);
+                    for (int k = 0; k < 3; k++)
+                        term[k] = num_add(term[k], num_mul(sp, p->spec[k]));
+                }
+            }
+        }
+        for (int k = 0; k < 3; k++)
+            acc[k][i] = num_add(acc[k][i], num_mul(scale, term[k]));
+    }
+}
+
+/* light_side for a batch: lights outer, vertices inner, so each light's
+** constants and branches are set up once per batch; every vertex still
+** accumulates its lights in the order of their numbers */
+static inline void side_batch(const GlesContext *ctx, LightBatch *b, NUM n[3][LIGHT_BATCH],
+                              NUM out[4][LIGHT_BATCH], const int cm)
+{
+    const Material *m = &ctx->material;
+    const int cnt = (b->n + LIGHT_LANES - 1) / LIGHT_LANES * LIGHT_LANES;
+    NUM acc[3][LIGHT_BATCH];
+    for (int k = 0; k < 3; k++)
+        NUM_FOR_LANES(i, cnt)
+            acc[k][i] = cm ? num_add(m->n_emission[k], num_mul(b->col[k][i], ctx->n_light_model_ambient[k]))
+                           : ctx->light_base[k];
+    for (int j = 0; j < ctx->light_prep_count; j++) {
+        const LightPrep *p = &ctx->light_prep[j];
+        if (p->positional)
+            positional_batch(ctx, p, b, n, acc, cm);
+        else
+            directional_batch(ctx, p, b, n, acc, cnt, cm);
+    }
+    for (int k = 0; k < 3; k++)
+        NUM_FOR_LANES(i, cnt)
+            out[k][i] = num_clamp01(acc[k][i]);
+    NUM_FOR_LANES(i, cnt)
+        out[3][i] = num_clamp01(cm ? b->col[3][i] : m->n_diffuse[3]);  /* alpha is the diffuse material's */
+}
+
+void light_batch(const GlesContext *ctx, LightBatch *b, int two_sided)
+{
+    NUM nb[3][LIGHT_BATCH];
+    const int cnt = (b->n + LIGHT_LANES - 1) / LIGHT_LANES * LIGHT_LANES;
+    if (two_sided)
+        for (int k = 0; k < 3; k++)
+            NUM_FOR_LANES(i, cnt)
+                nb[k][i] = num_neg(b->nrm[k][i]);
+    if (ctx->color_material) {
+        side_batch(ctx, b, b->nrm, b->out[0], 1);
+        if (two_sided)
+            side_batch(ctx, b, nb, b->out[1], 1);
+    } else {
+        side_batch(ctx, b, b->nrm, b->out[0], 0);
+        if (two_sided)
+            side_batch(ctx, b, nb, b->out[1], 0);
     }
 }

@@ -16,4 +16,23 @@ void light_track_color(GlesContext *ctx);
 void light_vertex(const GlesContext *ctx, const NUM eye[4], const NUM normal[3], int eye_normal,
                   const NUM color[4], NUM front[4], NUM back[4]);
 
+/* {====================================================================
+** the lighting equation for a batch of vertices, in structure-of-arrays
+** form: the same operations in the same order as light_vertex, with what
+** does not depend on the vertex prepared once (LightPrep) */
+#define LIGHT_BATCH NUM_BATCH   /* vertices per batch */
+#define LIGHT_LANES NUM_LANES   /* lanes are padded to whole groups of this many */
+
+typedef struct LightBatch {
+    int n;                          /* vertices; lanes up to the next multiple
+                                    ** of LIGHT_LANES hold defined padding */
+    NUM nrm[3][LIGHT_BATCH];        /* eye-space normal, as light_side gets it */
+    NUM v[3][LIGHT_BATCH];          /* eye position divided by w */
+    NUM col[4][LIGHT_BATCH];        /* vertex colour (read with COLOR_MATERIAL) */
+    NUM out[2][4][LIGHT_BATCH];     /* front and back colour */
+} LightBatch;
+
+/* front (and, when `two_sided`, back) colours of b->n vertices */
+void light_batch(const GlesContext *ctx, LightBatch *b, int two_sided);
+
 #endif

@@ -1044,4 +1044,145 @@ static inline FRAGV lod_frac(LODV l) { return l - NUM_FLOOR(l); }
 #endif
 /* }==================================================================== */
 
+/* {==================================================================== */
+/* Batches of vertices (vertex_batch.c, light.c): structure-of-arrays forms
+** of num_dot, with exactly its arithmetic per lane. Loops run over `cnt`
+** lanes, a multiple of NUM_LANES, in groups of NUM_LANES, so the compiler
+** can vectorize them under its cheapest cost model (-O2). The fixed build
+** skips a term whose coefficient is zero: its product is exactly 0 in the
+** int64 sum, so the sum is the same. The float builds keep every term
+** (0 * inf is NaN, and the vector units do them anyway). */
+
+#define NUM_BATCH 64   /* the most lanes a batch has */
+#define NUM_LANES 8
+#define NUM_FOR_LANES(i, cnt) \
+    for (int g_ = 0; g_ < (cnt); g_ += NUM_LANES) \
+        for (int i = g_; i < g_ + NUM_LANES; i++)
+
+/* num_from_double((double)f), the conversion of a FLOAT array component,
+** with the fixed build's floor done inline: x = v + 1/2 is formed as
+** dbl_to_i64 forms it, and for |x| < 2^32 floor(x) is the truncation less
+** one when that lies above x. The same value, without a call per component. */
+static inline NUM num_from_float(float f)
+{
+#if NUM_IS_FIXED
+    double v = (double)f * 65536.0;
+    if (!(v == v))
+        return 0;
+    if (v <= (double)INT32_MIN)
+        return NUM_MIN;
+    if (v >= (double)INT32_MAX)
+        return NUM_MAX;
+    double x = v + 0.5;
+    int64_t t = (int64_t)x;
+    return (NUM)(t - ((double)t > x));
+#else
+    return num_from_double((double)f);
+#endif
+}
+
+#if NUM_IS_FIXED
+/* one instance per pattern of nonzero coefficients (`mask`, constant at
+** each call) and per w (`w_one`: every lane's w is NUM_ONE, so the last
+** product is the constant m3 * NUM_ONE): the sum stays in a register, the
+** terms are added in num_dot's order */
+static inline void num_dot4_lanes_mask(NUM m0, NUM m1, NUM m2, NUM m3, const NUM *x, const NUM *y, const NUM *z,
+                                       const NUM *w, NUM *restrict out, int cnt, const int mask, const int w_one)
+{
+    const int64_t c3 = (int64_t)m3 * NUM_ONE;
+    NUM_FOR_LANES(i, cnt) {
+        int64_t acc = 0;
+        if (mask & 1)
+            acc += (int64_t)m0 * x[i];
+        if (mask & 2)
+            acc += (int64_t)m1 * y[i];
+        if (mask & 4)
+            acc += (int64_t)m2 * z[i];
+        if (mask & 8)
+            acc += w_one ? c3 : (int64_t)m3 * w[i];
+        out[i] = num_from_scaled(acc, 32);
+    }
+}
+
+#define NUM_DOT4_CASE(k) \
+    case k: \
+        if (w_one) \
+            num_dot4_lanes_mask(m0, m1, m2, m3, x, y, z, w, out, cnt, k, 1); \
+        else \
+            num_dot4_lanes_mask(m0, m1, m2, m3, x, y, z, w, out, cnt, k, 0); \
+        break;
+#endif
+
+/* out[i] = m0 x[i] + m1 y[i] + m2 z[i] + m3 w[i], as num_dot(m, stride,
+** (x, y, z, w), 1, 4) rounds it; cnt <= NUM_BATCH; out must not alias the
+** inputs. `w_one`: the caller knows every lane's w is NUM_ONE */
+static inline void num_dot4_lanes(NUM m0, NUM m1, NUM m2, NUM m3, const NUM *x, const NUM *y, const NUM *z,
+                                  const NUM *w, NUM *restrict out, int cnt, int w_one)
+{
+#if NUM_IS_FIXED
+    switch ((m0 != 0) | (m1 != 0) << 1 | (m2 != 0) << 2 | (m3 != 0) << 3) {
+    NUM_DOT4_CASE(0) NUM_DOT4_CASE(1) NUM_DOT4_CASE(2) NUM_DOT4_CASE(3)
+    NUM_DOT4_CASE(4) NUM_DOT4_CASE(5) NUM_DOT4_CASE(6) NUM_DOT4_CASE(7)
+    NUM_DOT4_CASE(8) NUM_DOT4_CASE(9) NUM_DOT4_CASE(10) NUM_DOT4_CASE(11)
+    NUM_DOT4_CASE(12) NUM_DOT4_CASE(13) NUM_DOT4_CASE(14) NUM_DOT4_CASE(15)
+    default: break;
+    }
+#else
+    (void)w_one;
+    NUM_FOR_LANES(i, cnt) {
+        NUM acc = 0;
+        acc += m0 * x[i];
+        acc += m1 * y[i];
+        acc += m2 * z[i];
+        acc += m3 * w[i];
+        out[i] = acc;
+    }
+#endif
+}
+
+#if NUM_IS_FIXED
+/* num_dot3_lanes for one pattern of nonzero coefficients */
+static inline void num_dot3_lanes_mask(NUM m0, NUM m1, NUM m2, const NUM *x, const NUM *y, const NUM *z,
+                                       NUM *restrict out, int cnt, const int mask)
+{
+    NUM_FOR_LANES(i, cnt) {
+        int64_t acc = 0;
+        if (mask & 1)
+            acc += (int64_t)m0 * x[i];
+        if (mask & 2)
+            acc += (int64_t)m1 * y[i];
+        if (mask & 4)
+            acc += (int64_t)m2 * z[i];
+        out[i] = num_from_scaled(acc, 32);
+    }
+}
+
+#define NUM_DOT3_CASE(k) \
+    case k: \
+        num_dot3_lanes_mask(m0, m1, m2, x, y, z, out, cnt, k); \
+        break;
+#endif
+
+/* out[i] = m0 x[i] + m1 y[i] + m2 z[i], as num_dot(m, 1, (x, y, z), 1, 3) */
+static inline void num_dot3_lanes(NUM m0, NUM m1, NUM m2, const NUM *x, const NUM *y, const NUM *z,
+                                  NUM *restrict out, int cnt)
+{
+#if NUM_IS_FIXED
+    switch ((m0 != 0) | (m1 != 0) << 1 | (m2 != 0) << 2) {
+    NUM_DOT3_CASE(0) NUM_DOT3_CASE(1) NUM_DOT3_CASE(2) NUM_DOT3_CASE(3)
+    NUM_DOT3_CASE(4) NUM_DOT3_CASE(5) NUM_DOT3_CASE(6) NUM_DOT3_CASE(7)
+    default: break;
+    }
+#else
+    NUM_FOR_LANES(i, cnt) {
+        NUM acc = 0;
+        acc += m0 * x[i];
+        acc += m1 * y[i];
+        acc += m2 * z[i];
+        out[i] = acc;
+    }
+#endif
+}
+/* }==================================================================== */
+
 #endif

@@ -33,6 +33,7 @@
 #define GLES_DEBUG_GENERIC_SPANS 1
 #define GLES_DEBUG_FLIP_TIE_RULE 2
 #define GLES_DEBUG_DROP_LAST_PIXEL 4
+#define GLES_DEBUG_VERTEX_REFERENCE 8  /* per-vertex reference path instead of batches */
 
 /* {====================================================================
 ** matrices */
@@ -102,6 +103,22 @@ typedef struct Light {
     NUM unit_spot_direction[3];     /* derived: normalised */
     int has_specular;               /* derived: s_cm * s_cli is not zero */
 } Light;
+
+/* what one enabled light contributes, prepared on validation so that the
+** per-vertex loop (light_batch) does only what depends on the vertex;
+** every value is computed exactly as the per-vertex equation computes it */
+typedef struct LightPrep {
+    const Light *l;
+    int positional;     /* else directional: p, h, scale are constants */
+    int attenuate;      /* positional with attenuation other than (1, 0, 0) */
+    int spot;           /* positional with a cone (directional: folded in scale) */
+    int specular;       /* has_specular and, directional, a defined h */
+    NUM p[3];           /* positional: P / w_P; directional: unit VP */
+    NUM h[3];           /* directional: the unit half vector */
+    NUM scale;          /* directional: att * spot */
+    NUM amb[3], dif[3]; /* a_cm * a_cli, d_cm * d_cli with the material's a, d */
+    NUM spec[3];        /* s_cm * s_cli */
+} LightPrep;
 
 typedef struct Material {
     double ambient[4], diffuse[4], specular[4], emission[4], shininess;
@@ -298,6 +315,7 @@ struct GlesContext {
     unsigned int dirty;
     NUM mvp[16];                /* projection * modelview */
     int mvp_kind;
+    int mvp_stale;              /* a matrix changed since mvp was formed */
     int need_eye;               /* user clip planes or lighting need eye coordinates */
     NUM normal_matrix[9];       /* inverse transpose of the modelview's 3x3, row-major */
     NUM rescale;                /* RESCALE_NORMAL factor */
@@ -305,6 +323,9 @@ struct GlesContext {
     NUM palette_rescale[GLES_MAX_PALETTE_MATRICES];
     int two_sided;              /* lighting with LIGHT_MODEL_TWO_SIDE */
     unsigned int active_lights; /* bit per enabled light */
+    LightPrep light_prep[GLES_MAX_LIGHTS];  /* the enabled lights that can contribute */
+    int light_prep_count;
+    NUM light_base[3];          /* e_cm + a_cm * a_cs with the material's a */
     unsigned int clip_mask;     /* outcode bits that can be set */
     SpanFunc span;              /* chosen for the current state */
     SpanFunc span_const;        /* the same state with a constant colour */

@@ -18,10 +18,8 @@
 
 void vertex_validate(GlesContext *ctx)
 {
-    if (ctx->dirty & DIRTY_MATRIX) {
-        matrix_mul_num(ctx->mvp, ctx->projection.top->n, ctx->modelview.top->n);
-        ctx->mvp_kind = matrix_kind(ctx->mvp);
-    }
+    if (ctx->dirty & DIRTY_MATRIX)
+        ctx->mvp_stale = 1;
     if (ctx->dirty & (DIRTY_CLIP | DIRTY_MATRIX)) {
         unsigned int mask = CLIP_LEFT | CLIP_RIGHT | CLIP_BOTTOM | CLIP_TOP | CLIP_NEAR | CLIP_FAR | CLIP_W;
         const NUM *pa = ctx->n_point_attenuation;
@@ -33,6 +31,14 @@ void vertex_validate(GlesContext *ctx)
                 ctx->need_eye = 1;
             }
         ctx->clip_mask = mask;
+    }
+    /* P*MV only when vertices use it: with eye coordinates they go through
+    ** MV and then P, each rounded (a scene of many small lit draws changes
+    ** MV for every draw and never needs the product) */
+    if (ctx->mvp_stale && !ctx->need_eye) {
+        matrix_mul_num(ctx->mvp, ctx->projection.top->n, ctx->modelview.top->n);
+        ctx->mvp_kind = matrix_kind(ctx->mvp);
+        ctx->mvp_stale = 0;
     }
     if (ctx->dirty & (DIRTY_LIGHT | DIRTY_MATRIX))
         light_validate(ctx);
@@ -105,7 +111,7 @@ static int palette_units(const GlesContext *ctx, int64_t index, int idx[GLES_MAX
 }
 
 /* eye = sum_i w_i * (M[idx_i] * obj) */
-static void palette_eye(const GlesContext *ctx, int64_t index, const NUM obj[4], NUM eye[4])
+void vertex_palette_eye(const GlesContext *ctx, int64_t index, const NUM obj[4], NUM eye[4])
 {
     int idx[GLES_MAX_VERTEX_UNITS];
     NUM w[GLES_MAX_VERTEX_UNITS];
@@ -123,7 +129,7 @@ static void palette_eye(const GlesContext *ctx, int64_t index, const NUM obj[4],
 
 /* eye-space normal with the palette: sum_i w_i * n Inv(Mu_i) (the
 ** extension's second, per-matrix form) */
-static void palette_normal(const GlesContext *ctx, int64_t index, const NUM n[3], NUM out[3])
+void vertex_palette_normal(const GlesContext *ctx, int64_t index, const NUM n[3], NUM out[3])
 {
     int idx[GLES_MAX_VERTEX_UNITS];
     NUM w[GLES_MAX_VERTEX_UNITS];
@@ -147,7 +153,7 @@ void vertex_position(GlesContext *ctx, int64_t index, Vertex *v)
     NUM obj[4] = { NUM_ZERO, NUM_ZERO, NUM_ZERO, NUM_ONE };
     array_fetch(a, array_base(a), index, 0, obj);
     if (ctx->matrix_palette) {
-        palette_eye(ctx, index, obj, v->eye);
+        vertex_palette_eye(ctx, index, obj, v->eye);
         matrix_xform4(ctx->projection.top->n, ctx->projection.top->kind, v->eye, v->clip);
     } else if (ctx->need_eye) {
         matrix_xform4(ctx->modelview.top->n, ctx->modelview.top->kind, obj, v->eye);
@@ -193,7 +199,7 @@ void vertex_attribs(GlesContext *ctx, int64_t index, Vertex *v)
         NUM *pb = ctx->two_sided ? back : NULL;
         if (ctx->matrix_palette) {
             NUM eye_n[3];
-            palette_normal(ctx, index, normal, eye_n);
+            vertex_palette_normal(ctx, index, normal, eye_n);
             light_vertex(ctx, v->eye, eye_n, 1, color, front, pb);
         } else {
             light_vertex(ctx, v->eye, normal, 0, color, front, pb);

@@ -34,4 +34,9 @@ NUM vertex_plane_distance(const GlesContext *ctx, const Vertex *v, unsigned int 
 /* the clip code of a vertex from its clip (and eye) coordinates */
 unsigned int vertex_clipcode(const GlesContext *ctx, const Vertex *v);
 
+/* OES_matrix_palette: the eye position sum_i w_i M[idx_i] obj of element
+** `index`, and its eye-space normal sum_i w_i n Inv(Mu_i) */
+void vertex_palette_eye(const GlesContext *ctx, int64_t index, const NUM obj[4], NUM eye[4]);
+void vertex_palette_normal(const GlesContext *ctx, int64_t index, const NUM n[3], NUM out[3]);
+
 #endif

@@ -238,7 +238,8 @@ class Context:
     def debug(self, flags: int) -> None:
         """Core debug switches: 1 forces the generic span path; 2 flips the
         fill rule's tie-break, 4 drops the last pixel of every span (both
-        break the rasterizer on purpose, to show tests catch it)."""
+        break the rasterizer on purpose, to show tests catch it); 8 runs the
+        vertex stage per vertex, the reference of the batched path."""
         with self._lock:
             self._lib.gles_debug_set(self._ptr, int(flags))
 

@@ -1,0 +1,293 @@
+/*
+** vertex_batch.c -- vertex transformation and attributes for up to
+** VERTEX_BATCH vertices at a time (ES 1.1 §2.10-2.12).
+** Consumes: array elements (array.c), the derived matrices of
+**       vertex_validate, lighting (light_batch in light.c).
+** Produces: the same Vertex records as vertex_position and vertex_attribs
+**       (vertex.c), bit for bit: every value goes through the same NUM
+**       operations in the same order. Only the loops differ: one lane per
+**       vertex in structure-of-arrays rows, each matrix row and each light
+**       set up once per batch, lanes padded with defined values to whole
+**       groups of NUM_LANES so the inner loops have a constant count.
+** The per-vertex functions stay as the reference path
+** (GLES_DEBUG_VERTEX_REFERENCE); a test renders random scenes both ways.
+*/
+#include <string.h>
+#include "vertex_batch.h"
+#include "vertex.h"
+#include "matrix.h"
+#include "array.h"
+#include "light.h"
+#include "fragment.h"
+
+typedef NUM VbRows[4][VERTEX_BATCH];
+
+/* lanes a batch of n vertices runs: n rounded up to whole groups */
+static int vb_lanes(int n)
+{
+    return (n + NUM_LANES - 1) / NUM_LANES * NUM_LANES;
+}
+
+/* FLOAT elements of `size` components (a constant at each call, so each
+** instance is unrolled): num_from_double of each, as array_fetch does
+** (num_from_float is that conversion without the call to floor) */
+static inline void fetch_float(const uint8_t *base, int step, const int64_t *index, int n, NUM out[][VERTEX_BATCH],
+                               const int size)
+{
+    for (int i = 0; i < n; i++) {
+        float f[4];
+        memcpy(f, base + index[i] * step, (size_t)size * sizeof f[0]);
+        for (int c = 0; c < size; c++)
+            out[c][i] = num_from_float(f[c]);
+    }
+}
+
+/* rows 0..size-1 of lanes 0..n-1 from array `a`, converted as array_fetch
+** converts them; other rows and lanes keep what the caller put there */
+static void fetch_lanes(const ArrayState *a, const int64_t *index, int n, int normalized, NUM out[][VERTEX_BATCH])
+{
+    const uint8_t *base = array_base(a);
+    if (a->type == GL_FLOAT) {
+        switch (a->size) {
+        case 1: fetch_float(base, a->step, index, n, out, 1); return;
+        case 2: fetch_float(base, a->step, index, n, out, 2); return;
+        case 3: fetch_float(base, a->step, index, n, out, 3); return;
+        case 4: fetch_float(base, a->step, index, n, out, 4); return;
+        default: break;
+        }
+    }
+    for (int i = 0; i < n; i++) {
+        NUM t[4];
+        array_fetch(a, base, index[i], normalized, t);
+        for (int c = 0; c < a->size; c++)
+            out[c][i] = t[c];
+    }
+}
+
+/* every lane of rows[0..3] set to (x, y, z, w) */
+static void fill_rows(NUM rows[][VERTEX_BATCH], int count, const NUM *value, int cnt)
+{
+    for (int c = 0; c < count; c++)
+        NUM_FOR_LANES(i, cnt)
+            rows[c][i] = value[c];
+}
+
+/* out = m in for every lane, as matrix_xform4 computes it (identity copies,
+** affine keeps w); out is not in. `w_one`: every lane of in[3] is NUM_ONE.
+** Returns whether every lane of out[3] is NUM_ONE. */
+static int xform_lanes(const NUM *m, int kind, VbRows in, VbRows out, int cnt, int w_one)
+{
+    if (kind == MAT_IDENTITY) {
+        for (int r = 0; r < 4; r++)
+            memcpy(out[r], in[r], (size_t)cnt * sizeof(NUM));
+        return w_one;
+    }
+    for (int r = 0; r < 3; r++)
+        num_dot4_lanes(m[r], m[4 + r], m[8 + r], m[12 + r], in[0], in[1], in[2], in[3], out[r], cnt, w_one);
+    if (kind == MAT_AFFINE) {
+        memcpy(out[3], in[3], (size_t)cnt * sizeof(NUM));
+        return w_one;
+    }
+    num_dot4_lanes(m[3], m[7], m[11], m[15], in[0], in[1], in[2], in[3], out[3], cnt, w_one);
+    return 0;
+}
+
+void vertex_batch_positions(GlesContext *ctx, const int64_t *index, int n, Vertex *verts, int64_t base)
+{
+    static const NUM obj_default[4] = { NUM_ZERO, NUM_ZERO, NUM_ZERO, NUM_ONE };
+    static const NUM zero[4] = { NUM_ZERO, NUM_ZERO, NUM_ZERO, NUM_ZERO };
+    VbRows obj, eye, clip;
+    unsigned int code[VERTEX_BATCH];
+    const int cnt = vb_lanes(n);
+    fill_rows(obj, 4, obj_default, cnt);
+    fetch_lanes(&ctx->arrays[ARR_VERTEX], index, n, 0, obj);
+    const Matrix *proj = ctx->projection.top, *mv = ctx->modelview.top;
+    const int has_eye = ctx->matrix_palette || ctx->need_eye;
+    const ArrayState *va = &ctx->arrays[ARR_VERTEX];
+    const int w_one = va->size < 4;     /* obj w is the default 1 in every lane */
+    if (ctx->matrix_palette) {
+        fill_rows(eye, 4, zero, cnt);
+        for (int i = 0; i < n; i++) {
+            NUM o[4] = { obj[0][i], obj[1][i], obj[2][i], obj[3][i] }, e[4];
+            vertex_palette_eye(ctx, index[i], o, e);
+            for (int k = 0; k < 4; k++)
+                eye[k][i] = e[k];
+        }
+        xform_lanes(proj->n, proj->kind, eye, clip, cnt, 0);
+    } else if (ctx->need_eye) {
+        int eye_w_one = xform_lanes(mv->n, mv->kind, obj, eye, cnt, w_one);
+        xform_lanes(proj->n, proj->kind, eye, clip, cnt, eye_w_one);
+    } else {
+        xform_lanes(ctx->mvp, ctx->mvp_kind, obj, clip, cnt, w_one);
+    }
+    /* vertex_clipcode: a plane is violated when its distance is below 0 */
+    NUM_FOR_LANES(i, cnt) {
+        NUM x = clip[0][i], y = clip[1][i], z = clip[2][i], w = clip[3][i];
+        unsigned int c = 0;
+        c |= num_add(w, x) < NUM_ZERO ? CLIP_LEFT : 0u;
+        c |= num_sub(w, x) < NUM_ZERO ? CLIP_RIGHT : 0u;
+        c |= num_add(w, y) < NUM_ZERO ? CLIP_BOTTOM : 0u;
+        c |= num_sub(w, y) < NUM_ZERO ? CLIP_TOP : 0u;
+        c |= num_add(w, z) < NUM_ZERO ? CLIP_NEAR : 0u;
+        c |= num_sub(w, z) < NUM_ZERO ? CLIP_FAR : 0u;
+        c |= num_sub(w, NUM_EPS) < NUM_ZERO ? CLIP_W : 0u;
+        code[i] = c;
+    }
+    if (ctx->need_eye)
+        for (int p = 0; p < GLES_MAX_CLIP_PLANES; p++) {
+            if (!ctx->clip_plane_enabled[p])
+                continue;
+            const NUM *pl = ctx->clip_plane_n[p];
+            NUM dist[VERTEX_BATCH];
+            num_dot4_lanes(pl[0], pl[1], pl[2], pl[3], eye[0], eye[1], eye[2], eye[3], dist, cnt, 0);
+            NUM_FOR_LANES(i, cnt)
+                code[i] |= dist[i] < NUM_ZERO ? CLIP_USER0 << p : 0u;
+        }
+    /* vertex_window for the vertices inside every plane */
+    const int64_t one = GLES_SUBPIXEL_ONE;
+    const int *vp = ctx->viewport;
+    const int64_t hx = (int64_t)vp[2] * (one / 2), hy = (int64_t)vp[3] * (one / 2);
+    const int64_t ox = (int64_t)vp[0] * one + hx, oy = (int64_t)vp[1] * one + hy;
+    const NUM dn = num_from_double(ctx->depth_range[0]), df = num_from_double(ctx->depth_range[1]);
+    for (int i = 0; i < n; i++) {
+        Vertex *v = &verts[index[i] - base];
+        for (int k = 0; k < 4; k++)
+            v->clip[k] = clip[k][i];
+        if (has_eye)
+            for (int k = 0; k < 4; k++)
+                v->eye[k] = eye[k][i];
+        v->outcode = code[i];
+        if (code[i] == 0) {
+            NUM w = clip[3][i];
+            v->wx = ox + num_proj(clip[0][i], w, hx);
+            v->wy = oy + num_proj(clip[1][i], w, hy);
+            v->rw = recipw_of(w);
+            v->wz = depthv_from_clip(clip[2][i], w, dn, df, ctx->depth_max);
+        }
+    }
+}
+
+/* the lit colours of the batch: normals to eye space, rescaled and
+** normalised as light_vertex does, then light_batch */
+static void light_lanes(GlesContext *ctx, const int64_t *index, Vertex *const *out, int n, LightBatch *lb)
+{
+    static const NUM zero[4] = { NUM_ZERO, NUM_ZERO, NUM_ZERO, NUM_ZERO };
+    const int cnt = vb_lanes(n);
+    const ArrayState *na = &ctx->arrays[ARR_NORMAL];
+    NUM obn[3][VERTEX_BATCH];
+    if (na->enabled) {
+        fill_rows(obn, 3, zero, cnt);
+        fetch_lanes(na, index, n, 1, obn);
+    } else {
+        fill_rows(obn, 3, ctx->cur_normal_n, cnt);
+    }
+    lb->n = n;
+    if (ctx->matrix_palette) {
+        fill_rows(lb->nrm, 3, zero, cnt);
+        for (int i = 0; i < n; i++) {
+            NUM o[3] = { obn[0][i], obn[1][i], obn[2][i] }, e[3];
+            vertex_palette_normal(ctx, index[i], o, e);
+            for (int k = 0; k < 3; k++)
+                lb->nrm[k][i] = e[k];
+        }
+    } else {
+        const NUM *nm = ctx->normal_matrix;
+        for (int r = 0; r < 3; r++)
+            num_dot3_lanes(nm[r * 3], nm[r * 3 + 1], nm[r * 3 + 2], obn[0], obn[1], obn[2], lb->nrm[r], cnt);
+        if (ctx->rescale_normal)
+            for (int r = 0; r < 3; r++)
+                NUM_FOR_LANES(i, cnt)
+                    lb->nrm[r][i] = num_mul(lb->nrm[r][i], ctx->rescale);
+    }
+    if (ctx->normalize)
+        for (int i = 0; i < n; i++) {
+            NUM t[3] = { lb->nrm[0][i], lb->nrm[1][i], lb->nrm[2][i] };
+            num_normalize3(t);
+            for (int k = 0; k < 3; k++)
+                lb->nrm[k][i] = t[k];
+        }
+    fill_rows(lb->v, 3, zero, cnt);
+    for (int i = 0; i < n; i++) {
+        const NUM *eye = out[i]->eye;
+        if (eye[3] == NUM_ONE || eye[3] == NUM_ZERO) {
+            for (int k = 0; k < 3; k++)
+                lb->v[k][i] = eye[k];
+        } else {
+            for (int k = 0; k < 3; k++)
+                lb->v[k][i] = num_div(eye[k], eye[3]);
+        }
+    }
+    light_batch(ctx, lb, ctx->two_sided);
+    for (int i = 0; i < n; i++) {
+        Vertex *v = out[i];
+        for (int k = 0; k < 4; k++)
+            v->color[k] = frag_from_num(lb->out[0][k][i]);
+        if (ctx->two_sided)
+            for (int k = 0; k < 4; k++)
+                v->color_back[k] = frag_from_num(lb->out[1][k][i]);
+    }
+}
+
+void vertex_batch_attribs(GlesContext *ctx, const int64_t *index, Vertex *const *out, int n)
+{
+    static const NUM zero[4] = { NUM_ZERO, NUM_ZERO, NUM_ZERO, NUM_ZERO };
+    const ArrayState *c = &ctx->arrays[ARR_COLOR];
+    const int lit = ctx->lighting;
+    LightBatch lb;
+    if (lit)
+        fill_rows(lb.col, 4, zero, vb_lanes(n));
+    /* the vertex colour: what lighting reads (COLOR_MATERIAL), or, unlit,
+    ** the colour itself at fragment precision, exactly when it is known
+    ** exactly (8-bit colours) */
+    for (int i = 0; i < n; i++) {
+        NUM color[4];
+        if (c->enabled) {
+            if (lit || c->type != GL_UNSIGNED_BYTE)
+                array_fetch(c, array_base(c), index[i], 1, color);
+            if (lit) {
+                for (int k = 0; k < 4; k++)
+                    lb.col[k][i] = color[k];
+            } else if (c->type == GL_UNSIGNED_BYTE) {
+                uint8_t ub[4];
+                memcpy(ub, array_base(c) + index[i] * c->step, 4);
+                for (int k = 0; k < 4; k++)
+                    out[i]->color[k] = frag_clamp01(ctx->texel_unorm8[ub[k]]);
+            } else {
+                for (int k = 0; k < 4; k++)
+                    out[i]->color[k] = frag_clamp01(frag_from_num(color[k]));
+            }
+        } else if (lit) {
+            for (int k = 0; k < 4; k++)
+                lb.col[k][i] = ctx->cur_color_n[k];
+        } else {
+            for (int k = 0; k < 4; k++)
+                out[i]->color[k] = frag_clamp01(frag_from_double(ctx->cur_color[k]));
+        }
+    }
+    if (lit)
+        light_lanes(ctx, index, out, n, &lb);
+    if (ctx->fog)
+        for (int i = 0; i < n; i++)
+            out[i]->fog = fog_vertex_value(ctx, out[i]->eye);
+    for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++) {
+        if (!(ctx->tex_units_on & (1u << u)))
+            continue;
+        const ArrayState *ta = &ctx->arrays[ARR_TEXCOORD0 + u];
+        const Matrix *tm = ctx->texture[u].top;
+        for (int i = 0; i < n; i++) {
+            NUM tc[4] = { NUM_ZERO, NUM_ZERO, NUM_ZERO, NUM_ONE };
+            if (ta->enabled)
+                array_fetch(ta, array_base(ta), index[i], 0, tc);
+            else
+                memcpy(tc, ctx->cur_tex_n[u], sizeof tc);
+            matrix_xform4(tm->n, tm->kind, tc, out[i]->tex[u]);
+        }
+    }
+    const ArrayState *ps = &ctx->arrays[ARR_POINT_SIZE];
+    for (int i = 0; i < n; i++) {
+        if (ps->enabled)
+            array_fetch(ps, array_base(ps), index[i], 0, &out[i]->point_size);
+        else
+            out[i]->point_size = NUM_ONE;
+    }
+}
