@@ -34,7 +34,7 @@ def main() -> None:
         scene = SCENES[name]
         runs = {}
         for policy in ("off", "warn"):
-            ctx = gles.Context(w, h, numeric="fixed", range_check=policy)
+            ctx = gles.Context(w, h, numeric="fixed", range_check=policy, color=scene.color)
             runs[policy] = (ctx, scene.setup(ctx.gl, w, h), [])
         for _ in range(args.frames):
             for ctx, state, times in runs.values():
