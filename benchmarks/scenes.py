@@ -281,6 +281,21 @@ def _mip_chain(img: np.ndarray) -> list[np.ndarray]:
     return out
 
 
+def _ortho_modulated(gl: Any, w: int, h: int, shade: int, size: int, noise_seed: int, blob_seed: int,
+                     alpha_lo: float) -> None:
+    """Pixel units, no depth test, and a bilinear RGBA noise texture whose alpha is blobs
+    from alpha_lo to 255, MODULATE by the vertex colour."""
+    _common(gl)
+    _ortho(gl, w, h)
+    gl.glDisable(C.GL_DEPTH_TEST)
+    gl.glShadeModel(shade)
+    img = _noise_texture(size, noise_seed)
+    img[..., 3] = np.round(_blobs(size, blob_seed, alpha_lo, 255)).astype(np.uint8)
+    _texture_rgba(gl, img, C.GL_LINEAR, C.GL_LINEAR)
+    gl.glEnable(C.GL_TEXTURE_2D)
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_MODULATE)
+
+
 # {================================================================
 # textured_blend: bilinear texture fetch, MODULATE by vertex colours, SRC_ALPHA blending
 
@@ -289,15 +304,7 @@ N_BLEND_LAYERS = 8
 
 def textured_blend_setup(gl: Any, w: int, h: int) -> Any:
     """A full-screen layer and 7 large rotated ones, 256x256 RGBA (alpha 96..255), smooth vertex colours."""
-    _common(gl)
-    _ortho(gl, w, h)
-    gl.glDisable(C.GL_DEPTH_TEST)
-    gl.glShadeModel(C.GL_SMOOTH)
-    img = _noise_texture(256, 3)
-    img[..., 3] = np.round(_blobs(256, 13, 96, 255)).astype(np.uint8)
-    _texture_rgba(gl, img, C.GL_LINEAR, C.GL_LINEAR)
-    gl.glEnable(C.GL_TEXTURE_2D)
-    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_MODULATE)
+    _ortho_modulated(gl, w, h, C.GL_SMOOTH, 256, 3, 13, 96)
     gl.glEnable(C.GL_BLEND)
     gl.glBlendFunc(C.GL_SRC_ALPHA, C.GL_ONE_MINUS_SRC_ALPHA)
     rng = np.random.default_rng(4)
@@ -393,15 +400,7 @@ N_XOR_QUADS = 3
 
 def alpha_blend_logic_setup(gl: Any, w: int, h: int) -> Any:
     """A 128x128 texture, alpha blobs (about half above 0.5); full-screen additive layers; XOR quads."""
-    _common(gl)
-    _ortho(gl, w, h)
-    gl.glDisable(C.GL_DEPTH_TEST)
-    gl.glShadeModel(C.GL_FLAT)
-    img = _noise_texture(128, 8)
-    img[..., 3] = np.round(_blobs(128, 9, 0, 255)).astype(np.uint8)
-    _texture_rgba(gl, img, C.GL_LINEAR, C.GL_LINEAR)
-    gl.glEnable(C.GL_TEXTURE_2D)
-    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_MODULATE)
+    _ortho_modulated(gl, w, h, C.GL_FLAT, 128, 8, 9, 0)
     gl.glAlphaFunc(C.GL_GREATER, 0.5)
     gl.glBlendFunc(C.GL_ONE, C.GL_ONE)
     gl.glLogicOp(C.GL_XOR)

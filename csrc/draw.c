@@ -136,6 +136,31 @@ static int culled(const GlesContext *ctx, int64_t area2)
     return ctx->cull_mode == GL_FRONT ? front : !front;
 }
 
+/* a triangle that crosses clip planes `codes`: clipped, then culled on the
+** clipped polygon's area and rasterised as a fan (v2 provokes) */
+static void clipped_triangle(GlesContext *ctx, const Vertex *v0, const Vertex *v1, const Vertex *v2,
+                             unsigned int codes)
+{
+    const Vertex *in[3] = { v0, v1, v2 };
+    const Vertex *poly[CLIP_MAX_VERTS];
+    Vertex scratch[2 * CLIP_MAX_VERTS];
+    int n = clip_polygon(ctx, in, 3, codes, poly, scratch);
+    if (n < 3)
+        return;
+    /* an original vertex survives clipping only when it is inside every
+    ** plane, so it has window coordinates; new ones (in scratch) need them */
+    for (int i = 0; i < n; i++)
+        if (poly[i]->outcode & CLIP_NEW_VERTEX)
+            vertex_window(ctx, (Vertex *)poly[i]);
+    int64_t area2 = 0;
+    for (int i = 1; i + 1 < n; i++)
+        area2 += raster_area2(poly[0], poly[i], poly[i + 1]);
+    if (area2 == 0 || culled(ctx, area2))
+        return;
+    for (int i = 1; i + 1 < n; i++)
+        raster_triangle(ctx, poly[0], poly[i], poly[i + 1], v2, !is_front(ctx, area2));
+}
+
 static void triangle(Batch *b, int64_t i0, int64_t i1, int64_t i2)
 {
     GlesContext *ctx = b->ctx;
@@ -156,24 +181,7 @@ static void triangle(Batch *b, int64_t i0, int64_t i1, int64_t i2)
     attribs(b, i0, v0);
     attribs(b, i1, v1);
     attribs(b, i2, v2);
-    const Vertex *in[3] = { v0, v1, v2 };
-    const Vertex *poly[CLIP_MAX_VERTS];
-    Vertex scratch[2 * CLIP_MAX_VERTS];
-    int n = clip_polygon(ctx, in, 3, codes, poly, scratch);
-    if (n < 3)
-        return;
-    /* an original vertex survives clipping only when it is inside every
-    ** plane, so it has window coordinates; new ones (in scratch) need them */
-    for (int i = 0; i < n; i++)
-        if (poly[i]->outcode & CLIP_NEW_VERTEX)
-            vertex_window(ctx, (Vertex *)poly[i]);
-    int64_t area2 = 0;
-    for (int i = 1; i + 1 < n; i++)
-        area2 += raster_area2(poly[0], poly[i], poly[i + 1]);
-    if (area2 == 0 || culled(ctx, area2))
-        return;
-    for (int i = 1; i + 1 < n; i++)
-        raster_triangle(ctx, poly[0], poly[i], poly[i + 1], v2, !is_front(ctx, area2));
+    clipped_triangle(ctx, v0, v1, v2, codes);
 }
 
 static void line(Batch *b, int64_t i0, int64_t i1)
@@ -242,22 +250,7 @@ static void draw_prim(Batch *b, const Prim *p)
         raster_triangle(ctx, v0, v1, v2, v2, !is_front(ctx, p->area2));
         return;
     }
-    const Vertex *in[3] = { v0, v1, v2 };
-    const Vertex *poly[CLIP_MAX_VERTS];
-    Vertex scratch[2 * CLIP_MAX_VERTS];
-    int n = clip_polygon(ctx, in, 3, p->codes, poly, scratch);
-    if (n < 3)
-        return;
-    for (int i = 0; i < n; i++)
-        if (poly[i]->outcode & CLIP_NEW_VERTEX)
-            vertex_window(ctx, (Vertex *)poly[i]);
-    int64_t area2 = 0;
-    for (int i = 1; i + 1 < n; i++)
-        area2 += raster_area2(poly[0], poly[i], poly[i + 1]);
-    if (area2 == 0 || culled(ctx, area2))
-        return;
-    for (int i = 1; i + 1 < n; i++)
-        raster_triangle(ctx, poly[0], poly[i], poly[i + 1], v2, !is_front(ctx, area2));
+    clipped_triangle(ctx, v0, v1, v2, p->codes);
 }
 
 /* attributes of the waiting vertices in one batch, then the queue in order */
