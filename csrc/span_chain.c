@@ -339,6 +339,46 @@ static void stage_write_rgba8_add(GlesContext *ctx, const TriSetup *t, SpanBuf *
     }
 }
 
+/* RGB565 with red, green and blue written, dithered or not (fragment_write's
+** conversion for these states) */
+static inline uint32_t pack565(const FRAGV v[3], int dither, FRAGV t_d)
+{
+    return (fragment_channel(v[0], 5, dither, t_d) << 11) | (fragment_channel(v[1], 6, dither, t_d) << 5)
+         | fragment_channel(v[2], 5, dither, t_d);
+}
+
+/* RGB565, red, green and blue written, no blend or logic op */
+static void stage_write_565(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    (void)t;
+    uint16_t *dst = (uint16_t *)ctx->color + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
+    const int dither = ctx->dither;
+    for (int j = 0; j < b->n; j++) {
+        FRAGV t_d = dither ? fragment_dither_threshold(b->x0 + b->k[j], b->y) : FRAG_ONE / 2;
+        dst[b->k[j]] = (uint16_t)pack565(b->c[j], dither, t_d);
+    }
+}
+
+/* RGB565, red, green and blue written, SRC_ALPHA, ONE_MINUS_SRC_ALPHA with
+** FUNC_ADD (fragment_blend's arithmetic for those factors) */
+static void stage_write_565_alpha(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    (void)t;
+    uint16_t *dst = (uint16_t *)ctx->color + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
+    const int dither = ctx->dither;
+    for (int j = 0; j < b->n; j++) {
+        const FRAGV *c = b->c[j];
+        uint32_t d = dst[b->k[j]];
+        FRAGV sa = frag_clamp01(c[3]), da = FRAG_ONE - sa;
+        FRAGV dv[3] = { ctx->unorm5[d >> 11], ctx->unorm6[(d >> 5) & 63], ctx->unorm5[d & 31] };
+        FRAGV v[3];
+        for (int i = 0; i < 3; i++)
+            v[i] = frag_mul(frag_clamp01(c[i]), sa) + frag_mul(dv[i], da);
+        FRAGV t_d = dither ? fragment_dither_threshold(b->x0 + b->k[j], b->y) : FRAG_ONE / 2;
+        dst[b->k[j]] = (uint16_t)pack565(v, dither, t_d);
+    }
+}
+
 /* }==================================================================== */
 
 /* {====================================================================
@@ -426,12 +466,18 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     const int bk = span_blend_kind(ctx);
     const int plain = ctx->color_format == GLES_COLOR_RGBA8888 && ctx->color_mask[0] && ctx->color_mask[1]
                    && ctx->color_mask[2] && ctx->color_mask[3];
+    const int plain565 = ctx->color_format == GLES_COLOR_RGB565 && ctx->color_mask[0] && ctx->color_mask[1]
+                      && ctx->color_mask[2];
     if (plain && bk == 0 && !ctx->color_logic_op)
         s[n++] = stage_write_rgba8;
     else if (plain && bk == 1)
         s[n++] = stage_write_rgba8_alpha;
     else if (plain && bk == 2)
         s[n++] = stage_write_rgba8_add;
+    else if (plain565 && bk == 0 && !ctx->color_logic_op)
+        s[n++] = stage_write_565;
+    else if (plain565 && bk == 1)
+        s[n++] = stage_write_565_alpha;
     else
         s[n++] = stage_write;
     return n;
