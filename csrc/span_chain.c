@@ -214,11 +214,20 @@ static void stage_fetch_rect(GlesContext *ctx, const TriSetup *t, SpanBuf *b, in
 static void stage_env(GlesContext *ctx, SpanBuf *b, int u)
 {
     const TexUnit *tu = &ctx->units[u];
-    if (tu->env_mode == GL_MODULATE && tu->bound->format == GL_RGBA) {
-        /* texture_env's MODULATE of an RGBA texture, inline */
+    const unsigned int fmt = tu->bound->format;
+    /* texture_env's REPLACE and MODULATE of RGBA and RGB textures, inline
+    ** (an RGB texture leaves the alpha as it is) */
+    const int k1 = fmt == GL_RGBA ? 4 : 3;
+    if (tu->env_mode == GL_MODULATE && (fmt == GL_RGBA || fmt == GL_RGB)) {
         for (int j = 0; j < b->n; j++)
-            for (int i = 0; i < 4; i++)
+            for (int i = 0; i < k1; i++)
                 b->c[j][i] = frag_mul(b->c[j][i], b->ct[j][u][i]);
+        return;
+    }
+    if (tu->env_mode == GL_REPLACE && (fmt == GL_RGBA || fmt == GL_RGB)) {
+        for (int j = 0; j < b->n; j++)
+            for (int i = 0; i < k1; i++)
+                b->c[j][i] = b->ct[j][u][i];
         return;
     }
     texture_env_span(ctx, u, b->n, (const FRAGV (*)[4])b->cf, b->ct, b->c);
