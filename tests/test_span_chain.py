@@ -277,8 +277,8 @@ def scenes(draw: Any, textured: bool = False, steps: bool = False) -> dict:
     environments meet more often).
 
     A change to a part phase 1 set replaces one to three of its fields, so that
-    phase 2 often issues a single command. ``steps``: instead of phase 2, two to
-    six phases of one command each (STEPS), any crossbar sources kept.
+    phase 2 often issues a single command. ``steps``: instead of phase 2, three to
+    ten phases of one command each (STEPS), any crossbar sources kept.
     """
     units_on = draw(st.sets(st.integers(0, UNITS - 1), min_size=1)) if textured else None
     state: dict[str, Any] = {}
@@ -317,8 +317,8 @@ def scenes(draw: Any, textured: bool = False, steps: bool = False) -> dict:
         "changes": changes,
     }
     if steps:
-        scene["steps"] = draw(st.lists(STEPS, min_size=2, max_size=6))
-        scene["triangles"] = draw(st.integers(len(scene["steps"]) + 1, 14))
+        scene["steps"] = draw(st.lists(STEPS, min_size=3, max_size=10))
+        scene["triangles"] = draw(st.integers(len(scene["steps"]) + 1, 20))
     return scene
 
 
@@ -798,7 +798,7 @@ def check_scene(scene: dict) -> list[str]:
     return out["paths"]
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=400, deadline=None)
 @given(scenes())
 def test_random_fragment_states_match_generic(scene):
     """Random states over the whole fragment stage: bit-identical buffers and the
@@ -807,7 +807,7 @@ def test_random_fragment_states_match_generic(scene):
         event(f"span path {path}")
 
 
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=200, deadline=None)
 @given(scenes(textured=True))
 def test_random_texturing_states_match_generic(scene):
     """The same with one to four units on and most tests and operations off."""
@@ -815,7 +815,7 @@ def test_random_texturing_states_match_generic(scene):
         event(f"span path {path}")
 
 
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=200, deadline=None)
 @given(scenes(steps=True))
 def test_single_commands_between_draws_match_generic(scene):
     """A random state, then draws with one command between each two: whichever
@@ -933,12 +933,15 @@ def case_rgb565_dither_blend(numeric: str, seed: int) -> dict:
 
 
 def case_four_unit_crossbar(numeric: str, seed: int) -> dict:
-    """Four COMBINE units reading each other's textures, non-identity texture matrices."""
+    """Four COMBINE units reading each other's textures, two of them mipmapped, non-identity
+    texture matrices."""
     s = base_state()
     funcs = (C.GL_INTERPOLATE, C.GL_ADD_SIGNED, C.GL_SUBTRACT, C.GL_DOT3_RGB)
     for u in range(UNITS):
         fmt = TEX_FORMATS[(seed + u) % len(TEX_FORMATS)]
-        s[f"tex{u}"] = tex(seed * 4 + u, format=fmt, log_w=u + 1, log_h=3, min=C.GL_LINEAR, mag=C.GL_LINEAR)
+        # units 1 and 3 mipmapped (a level of detail on units after the first)
+        s[f"tex{u}"] = tex(seed * 4 + u, format=fmt, log_w=u + 1, log_h=3, mag=C.GL_LINEAR,
+                           min=C.GL_LINEAR_MIPMAP_NEAREST if u % 2 else C.GL_LINEAR, mip="generate")
         s[f"env{u}"] = {**OFF_ENV, "mode": C.GL_COMBINE, "rgb": funcs[u], "alpha": C.GL_ADD,
                         "src_rgb": (C.GL_TEXTURE0 + (u + 1) % UNITS, C.GL_PREVIOUS,
                                     C.GL_TEXTURE0 + (u + 3) % UNITS),
@@ -986,6 +989,98 @@ def test_hand_picked_states_match_generic(case, numeric):
     """Named combinations of stages, each over four seeds (geometry, textures, projection)."""
     for seed in range(4):
         check_scene(CASES[case](numeric, seed))
+
+
+# {================================================================
+# each command between two draws
+
+
+def start_states() -> dict[str, tuple[dict, dict]]:
+    """States whose span functions are special (fused spans, or chain stages picked for
+    them), as (state, scene options); a command that changes what they depend on must
+    make the next draw pick again."""
+    plain = base_state()
+    plain["depth"] = {"on": True, "func": C.GL_LESS, "mask": True, "range": None}
+    alpha = {**plain, "blend": {"on": True, "func": (C.GL_SRC_ALPHA, C.GL_ONE_MINUS_SRC_ALPHA),
+                                "separate": None, "equation": None}}
+    add = {**plain, "blend": {**alpha["blend"], "func": (C.GL_ONE, C.GL_ONE)}}
+    textured = {**plain, "tex0": tex(5, log_w=4, log_h=3, mip="full", min=C.GL_LINEAR, mag=C.GL_LINEAR),
+                "tex1": {**tex(6, format=(C.GL_RGB, C.GL_UNSIGNED_BYTE)), "enabled": False},
+                "tc1": {"kind": "array4", "seed": 9, "matrix": None}}
+    two = {**textured, "tex1": {**textured["tex1"], "enabled": True},
+           "env1": {**OFF_ENV, "mode": C.GL_ADD}, "blend": alpha["blend"]}
+    return {"plain": (plain, {}), "alpha_blend": (alpha, {}), "add_blend": (add, {}),
+            "textured": (textured, {}), "two_units": (two, {}),
+            "rgb565": ({**plain, "dither": True}, {"color": "rgb565"})}
+
+
+# each: one or more commands, a draw after each
+COMMANDS = {
+    "DepthFunc": [("DepthFunc", C.GL_ALWAYS), ("DepthFunc", C.GL_LESS), ("DepthFunc", C.GL_GEQUAL)],
+    "DepthMask": [("DepthMask", False), ("DepthMask", True)],
+    "ColorMask": [("ColorMask", (True, False, True, True)), ("ColorMask", ALL_ON)],
+    "ShadeModel": [("ShadeModel", C.GL_FLAT), ("ShadeModel", C.GL_SMOOTH)],
+    "depth_test": [("Enable", C.GL_DEPTH_TEST, False), ("Enable", C.GL_DEPTH_TEST, True)],
+    "blend": [("Enable", C.GL_BLEND, True), ("Enable", C.GL_BLEND, False)],
+    "BlendFunc": [("Enable", C.GL_BLEND, True), ("BlendFunc", C.GL_ONE, C.GL_ONE),
+                  ("BlendFunc", C.GL_DST_COLOR, C.GL_ZERO),
+                  ("BlendFunc", C.GL_SRC_ALPHA, C.GL_ONE_MINUS_SRC_ALPHA)],
+    "BlendFuncSeparateOES": [("Enable", C.GL_BLEND, True),
+                             ("BlendFuncSeparateOES", C.GL_SRC_ALPHA, C.GL_ONE_MINUS_SRC_ALPHA, C.GL_ONE,
+                              C.GL_ZERO),
+                             ("BlendFuncSeparateOES", C.GL_ONE, C.GL_ONE, C.GL_ONE, C.GL_ONE)],
+    "BlendEquationOES": [("Enable", C.GL_BLEND, True), ("BlendEquationOES", C.GL_FUNC_REVERSE_SUBTRACT_OES),
+                         ("BlendEquationOES", C.GL_FUNC_ADD_OES)],
+    "BlendEquationSeparateOES": [("Enable", C.GL_BLEND, True),
+                                 ("BlendEquationSeparateOES", C.GL_FUNC_ADD_OES, C.GL_FUNC_SUBTRACT_OES)],
+    "LogicOp": [("Enable", C.GL_COLOR_LOGIC_OP, True), ("LogicOp", C.GL_XOR), ("LogicOp", C.GL_COPY),
+                ("Enable", C.GL_COLOR_LOGIC_OP, False)],
+    "AlphaFunc": [("Enable", C.GL_ALPHA_TEST, True), ("AlphaFunc", C.GL_GREATER, 0.5),
+                  ("AlphaFunc", C.GL_ALWAYS, 0.0), ("Enable", C.GL_ALPHA_TEST, False)],
+    "stencil": [("Enable", C.GL_STENCIL_TEST, True), ("StencilOp", C.GL_KEEP, C.GL_INCR, C.GL_INVERT),
+                ("StencilFunc", C.GL_LEQUAL, 1, 0xFF), ("StencilMask", 0x0F),
+                ("Enable", C.GL_STENCIL_TEST, False)],
+    "fog": [("Enable", C.GL_FOG, True), ("FogHint", C.GL_NICEST), ("Fogf", C.GL_FOG_MODE, C.GL_LINEAR),
+            ("Fogf", C.GL_FOG_END, 2.0), ("FogHint", C.GL_FASTEST), ("Enable", C.GL_FOG, False)],
+    "dither": [("Enable", C.GL_DITHER, False), ("Enable", C.GL_DITHER, True)],
+    "scissor": [("Enable", C.GL_SCISSOR_TEST, True), ("Enable", C.GL_SCISSOR_TEST, False)],
+    "PolygonOffset": [("Enable", C.GL_POLYGON_OFFSET_FILL, True), ("PolygonOffset", 2.0, 4.0),
+                      ("Enable", C.GL_POLYGON_OFFSET_FILL, False)],
+    "TexEnable": [("TexEnable", 0, False), ("TexEnable", 0, True), ("TexEnable", 1, True),
+                  ("TexEnable", 1, False)],
+    "min_filter": [("TexParameteri", 0, (C.GL_TEXTURE_MIN_FILTER, C.GL_LINEAR_MIPMAP_LINEAR)),
+                   ("TexParameteri", 0, (C.GL_TEXTURE_MIN_FILTER, C.GL_NEAREST)),
+                   ("TexParameteri", 0, (C.GL_TEXTURE_MIN_FILTER, C.GL_LINEAR))],
+    "mag_filter": [("TexParameteri", 0, (C.GL_TEXTURE_MAG_FILTER, C.GL_NEAREST)),
+                   ("TexParameteri", 0, (C.GL_TEXTURE_MAG_FILTER, C.GL_LINEAR))],
+    "wrap": [("TexParameteri", 0, (C.GL_TEXTURE_WRAP_S, C.GL_CLAMP_TO_EDGE)),
+             ("TexParameteri", 0, (C.GL_TEXTURE_WRAP_T, C.GL_MIRRORED_REPEAT_OES))],
+    "TexImage2D": [("TexImage2D", 0, (C.GL_RGB, C.GL_UNSIGNED_BYTE), 2, 5, 1),
+                   ("TexImage2D", 0, (C.GL_ALPHA, C.GL_UNSIGNED_BYTE), 4, 3, 2)],
+    "TexSubImage2D": [("TexSubImage2D", 0, 3), ("TexSubImage2D", 1, 4)],
+    "BindTexture": [("BindTexture", 0, 1), ("BindTexture", 1, 0)],
+    "DeleteTextures": [("DeleteTextures", 1), ("DeleteTextures", 0)],
+    "TexEnvi": [("TexEnvi", 0, (C.GL_TEXTURE_ENV_MODE, C.GL_REPLACE)),
+                ("TexEnvi", 0, (C.GL_TEXTURE_ENV_MODE, C.GL_COMBINE)),
+                ("TexEnvi", 0, (C.GL_COMBINE_RGB, C.GL_DOT3_RGBA)),
+                ("TexEnvi", 0, (C.GL_SRC1_RGB, C.GL_TEXTURE1)),
+                ("TexEnvi", 0, (C.GL_TEXTURE_ENV_MODE, C.GL_MODULATE))],
+    "TexEnvColor": [("TexEnvi", 0, (C.GL_TEXTURE_ENV_MODE, C.GL_BLEND)), ("TexEnvColor", 0, (1, 0.5, 0, 1))],
+}
+
+
+@pytest.mark.parametrize("command", sorted(COMMANDS))
+def test_each_command_between_draws(command):
+    """From each start state, the commands of `command` with a draw after each: the
+    buffers match the forced generic path's after every change."""
+    steps = COMMANDS[command]
+    for i, (name, (state, opts)) in enumerate(sorted(start_states().items())):
+        scene = make_scene(BUILDS[i % len(BUILDS)], i, state, crossbar_to_off=True, steps=steps,
+                           triangles=3 * len(steps) + 3, **opts)
+        try:
+            check_scene(scene)
+        except AssertionError as e:
+            raise AssertionError(f"from the state {name!r}: {e}") from None
 
 
 # {================================================================
