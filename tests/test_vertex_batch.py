@@ -36,7 +36,7 @@ def _array(rng: np.random.Generator, values: np.ndarray, kinds: list[str]) -> tu
 
 def _lights(gl, rng: np.random.Generator) -> None:
     gl.glEnable(C.GL_LIGHTING)
-    for i in range(int(rng.integers(1, 5))):
+    for _ in range(int(rng.integers(1, 5))):
         light = C.GL_LIGHT0 + int(rng.integers(0, 8))
         gl.glEnable(light)
         w = float(rng.choice([0.0, 1.0, 2.0]))
