@@ -1,11 +1,12 @@
 /*
-** span.c -- the fragment stage for a run of pixels in one row.
+** span.c -- choosing the fragment stage for a triangle's rows.
 ** Consumes: a TriSetup and a covered run (y, x0 .. x0+n-1).
-** Produces: framebuffer writes after the per-fragment operations built so
-**       far: depth test (all eight functions) and depth mask, colour mask,
-**       RGBA8888 or RGB565 colour.
-** Specialised instances of span_tmpl.h cover the common states; span_generic
-** covers every state and is the reference they must match bit for bit.
+** Produces: framebuffer writes after every per-fragment operation.
+** Fused instances of span_tmpl.h cover the plain untextured states, the
+** chain of stages (span_chain.c) every other; span_generic runs each
+** fragment through fragment_process and is the reference both must match
+** bit for bit. fragment_inputs gives a primitive's fragment inputs at
+** given edge values, for the reference and for points.
 */
 #include "raster.h"
 #include "span.h"
