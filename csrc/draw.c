@@ -136,6 +136,21 @@ static int culled(const GlesContext *ctx, int64_t area2)
     return ctx->cull_mode == GL_FRONT ? front : !front;
 }
 
+/* a line clipped against planes `codes` (none: as it is) and rasterised;
+** Table 2.10: a line's provoking vertex is its second */
+static void clipped_line(GlesContext *ctx, const Vertex *v0, const Vertex *v1, unsigned int codes)
+{
+    const Vertex *pa = v0, *pb = v1;
+    Vertex scratch[CLIP_MAX_VERTS];
+    if (codes && !clip_line(ctx, v0, v1, codes, &pa, &pb, scratch))
+        return;
+    if (pa->outcode & CLIP_NEW_VERTEX)
+        vertex_window(ctx, (Vertex *)pa);
+    if (pb->outcode & CLIP_NEW_VERTEX)
+        vertex_window(ctx, (Vertex *)pb);
+    raster_line(ctx, pa, pb, v1);
+}
+
 /* a triangle that crosses clip planes `codes`: clipped, then culled on the
 ** clipped polygon's area and rasterised as a fan (v2 provokes) */
 static void clipped_triangle(GlesContext *ctx, const Vertex *v0, const Vertex *v1, const Vertex *v2,
@@ -192,17 +207,7 @@ static void line(Batch *b, int64_t i0, int64_t i1)
         return;
     attribs(b, i0, v0);
     attribs(b, i1, v1);
-    const Vertex *pa = v0, *pb = v1;
-    Vertex scratch[CLIP_MAX_VERTS];
-    unsigned int codes = v0->outcode | v1->outcode;
-    if (codes && !clip_line(ctx, v0, v1, codes, &pa, &pb, scratch))
-        return;
-    if (pa->outcode & CLIP_NEW_VERTEX)
-        vertex_window(ctx, (Vertex *)pa);
-    if (pb->outcode & CLIP_NEW_VERTEX)
-        vertex_window(ctx, (Vertex *)pb);
-    /* Table 2.10: a line's provoking vertex is its second */
-    raster_line(ctx, pa, pb, v1);
+    clipped_line(ctx, v0, v1, v0->outcode | v1->outcode);
 }
 
 static void point(Batch *b, int64_t i0)
@@ -231,18 +236,9 @@ static void draw_prim(Batch *b, const Prim *p)
     case PRIM_POINT:
         raster_point(ctx, v0);
         return;
-    case PRIM_LINE: {
-        const Vertex *pa = v0, *pb = v1;
-        Vertex scratch[CLIP_MAX_VERTS];
-        if (p->codes && !clip_line(ctx, v0, v1, p->codes, &pa, &pb, scratch))
-            return;
-        if (pa->outcode & CLIP_NEW_VERTEX)
-            vertex_window(ctx, (Vertex *)pa);
-        if (pb->outcode & CLIP_NEW_VERTEX)
-            vertex_window(ctx, (Vertex *)pb);
-        raster_line(ctx, pa, pb, v1);
+    case PRIM_LINE:
+        clipped_line(ctx, v0, v1, p->codes);
         return;
-    }
     default:
         break;
     }
