@@ -18,36 +18,22 @@ import statistics
 import sys
 import time
 from pathlib import Path
-from typing import Any
 
-import gles
 from gles import constants as C
 from gles import mesa
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+from run import close_context, prepare  # noqa: E402
 from scenes import SCENES  # noqa: E402
 
 BACKENDS = ("gles-fixed", "gles-float", "gles-double", "llvmpipe")
 
 
-def make(backend: str, w: int, h: int, color: str) -> Any:
-    """A context of `backend` (gles-<build> or a Mesa driver)."""
-    if backend.startswith("gles-"):
-        return gles.Context(w, h, numeric=backend[5:], color=color)
-    return mesa.MesaContext(w, h, driver=backend, color=color)
-
-
 def measure(backend: str, name: str, rounds: int, w: int = 640, h: int = 480) -> tuple[float, float]:
     """Median ms of the first frame after a state change and of the frame after it."""
     scene = SCENES[name]
-    ctx = make(backend, w, h, getattr(scene, "color", "rgba8888"))
+    ctx, gl, state = prepare(backend, scene, w, h, 1)
     try:
-        if hasattr(ctx, "make_current"):
-            ctx.make_current()
-        gl = ctx.gl
-        state = scene.setup(gl, w, h)
-        scene.frame(gl, state)
-        gl.glFinish()
         first, steady = [], []
         for i in range(rounds):
             (gl.glEnable if i % 2 else gl.glDisable)(C.GL_DITHER)
@@ -59,9 +45,7 @@ def measure(backend: str, name: str, rounds: int, w: int = 640, h: int = 480) ->
                 out.append(1000 * (time.perf_counter() - t0))
         return statistics.median(first), statistics.median(steady)
     finally:
-        close = getattr(ctx, "close", None)
-        if close is not None:
-            close()
+        close_context(ctx)
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -95,24 +95,30 @@ def make_context(backend: str, w: int, h: int, color: str) -> Any:
     return mesa.MesaContext(w, h, driver=backend, color=color)
 
 
-def _close(ctx: Any) -> None:
+def close_context(ctx: Any) -> None:
     close = getattr(ctx, "close", None)
     if close is not None:
         close()
 
 
+def prepare(backend: str, scene: Scene, w: int, h: int, warmup: int) -> tuple[Any, Any, Any]:
+    """A fresh context made current, the scene set up and `warmup` frames drawn: (ctx, gl, state)."""
+    ctx = make_context(backend, w, h, scene.color)
+    gl = ctx.gl
+    if hasattr(ctx, "make_current"):
+        ctx.make_current()
+    state = scene.setup(gl, w, h)
+    for _ in range(warmup):
+        scene.frame(gl, state)
+        gl.glFinish()
+    return ctx, gl, state
+
+
 def run_one(backend: str, scene: Scene, w: int, h: int, frames: int,
             warmup: int) -> tuple[Result, np.ndarray]:
     """Setup, warm-up, timed frames and the image check; returns the result and the last image."""
-    ctx = make_context(backend, w, h, scene.color)
+    ctx, gl, state = prepare(backend, scene, w, h, warmup)
     try:
-        gl = ctx.gl
-        if hasattr(ctx, "make_current"):
-            ctx.make_current()
-        state = scene.setup(gl, w, h)
-        for _ in range(warmup):
-            scene.frame(gl, state)
-            gl.glFinish()
         times = []
         for _ in range(frames):
             t0 = time.perf_counter()
@@ -130,7 +136,7 @@ def run_one(backend: str, scene: Scene, w: int, h: int, frames: int,
             res.problems.append(f"only {100 * res.coverage:.1f}% of pixels drawn (want >= {100 * want:.0f}%)")
         return res, img
     finally:
-        _close(ctx)
+        close_context(ctx)
 
 
 def clear_rgb(color: str) -> np.ndarray:
@@ -157,21 +163,14 @@ def one(backend: str, scene_name: str, w: int, h: int, frames: int, warmup: int)
     Under callgrind with the start library in the environment, counting starts after the warm-up.
     """
     scene = SCENES[scene_name]
-    ctx = make_context(backend, w, h, scene.color)
-    gl = ctx.gl
-    if hasattr(ctx, "make_current"):
-        ctx.make_current()
-    state = scene.setup(gl, w, h)
-    for _ in range(warmup):
-        scene.frame(gl, state)
-        gl.glFinish()
+    ctx, gl, state = prepare(backend, scene, w, h, warmup)
     if os.environ.get(START_ENV):
         ctypes.CDLL(os.environ[START_ENV]).gles_bench_start()
     for _ in range(frames):
         scene.frame(gl, state)
         gl.glFinish()
     err = gl.glGetError()
-    _close(ctx)
+    close_context(ctx)
     return 1 if err else 0
 
 

@@ -62,12 +62,7 @@ def city(gl: Any, w: int, h: int) -> Callable[[], None]:
     gl.glEnableClientState(C.GL_VERTEX_ARRAY)
     gl.glEnableClientState(C.GL_NORMAL_ARRAY)
     verts, normals, idx = _box()
-    gl.glViewport(0, 0, w, h)
-    gl.glMatrixMode(C.GL_PROJECTION)
-    gl.glLoadIdentity()
-    a = w / h
-    gl.glFrustumf(-0.1 * a, 0.1 * a, -0.1, 0.1, 0.2, 60.0)
-    gl.glMatrixMode(C.GL_MODELVIEW)
+    scenes._perspective(gl, w, h, 0.2, 60.0, half_height=0.1)
     gl.glEnable(C.GL_LIGHTING)
     gl.glEnable(C.GL_NORMALIZE)
     gl.glEnable(C.GL_LIGHT0)

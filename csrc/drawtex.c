@@ -62,17 +62,9 @@ void gles_DrawTexOES(GlesContext *ctx, double xs, double ys, double zs, double w
     /* the reference: every fragment through fragment_process */
     for (int64_t py = y0; py < y1; py++)
         for (int64_t px = x0; px < x1; px++) {
-            double X = (double)px + 0.5, Y = (double)py + 0.5;
-            for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++) {
-                if (!(ctx->tex_units_on & (1u << u)))
-                    continue;
-                in->tc[u].s = texc_from_double(r.as[u] + r.bs[u] * X);
-                in->tc[u].t = texc_from_double(r.at[u] + r.bt[u] * Y);
-                in->tdx[u].s = texc_from_double(r.as[u] + r.bs[u] * (X + 1));
-                in->tdx[u].t = in->tc[u].t;
-                in->tdy[u].s = in->tc[u].s;
-                in->tdy[u].t = texc_from_double(r.at[u] + r.bt[u] * (Y + 1));
-            }
+            for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
+                if (ctx->tex_units_on & (1u << u))
+                    rect_linear_coords(&r, u, px, py, &in->tc[u], &in->tdx[u], &in->tdy[u]);
             fragment_process(ctx, (int)px, (int)py, in);
         }
 }

@@ -132,14 +132,8 @@ void raster_point(GlesContext *ctx, const Vertex *v)
                 coverage = frag_ratio(inside, 16);
             }
             if (sprite) {
-                /* s = 1/2 + (x_f + 1/2 - x_w) / size, t = 1/2 - (y_f + 1/2 - y_w) / size */
                 TexCoord tc, tx, ty;
-                tc.s = texc_ratio(size_sub / 2 + px * one + half - v->wx, size_sub);
-                tc.t = texc_ratio(size_sub / 2 - (py * one + half - v->wy), size_sub);
-                tx.s = texc_ratio(size_sub / 2 + (px + 1) * one + half - v->wx, size_sub);
-                tx.t = tc.t;
-                ty.s = tc.s;
-                ty.t = texc_ratio(size_sub / 2 - ((py + 1) * one + half - v->wy), size_sub);
+                sprite_coords(v->wx, v->wy, size_sub, px, py, &tc, &tx, &ty);
                 fragment_from_setup(ctx, &t, e, (int)px, (int)py, coverage, &tc, &tx, &ty);
             } else {
                 fragment_from_setup(ctx, &t, e, (int)px, (int)py, coverage, NULL, NULL, NULL);

@@ -29,6 +29,35 @@ typedef struct RectSetup {
     int64_t sprite_x, sprite_y, sprite_size;            /* subpixels */
 } RectSetup;
 
+/* DrawTex's coordinates of unit u at pixel (px, py) and its right and
+** upper neighbours: linear in the window position, formed in double */
+static inline void rect_linear_coords(const RectSetup *r, int u, int64_t px, int64_t py, TexCoord *tc, TexCoord *tx,
+                                      TexCoord *ty)
+{
+    const double X = (double)px + 0.5, Y = (double)py + 0.5;
+    tc->s = texc_from_double(r->as[u] + r->bs[u] * X);
+    tc->t = texc_from_double(r->at[u] + r->bt[u] * Y);
+    tx->s = texc_from_double(r->as[u] + r->bs[u] * (X + 1));
+    tx->t = tc->t;
+    ty->s = tc->s;
+    ty->t = texc_from_double(r->at[u] + r->bt[u] * (Y + 1));
+}
+
+/* A point sprite's coordinates at pixel (px, py) and its neighbours, for a
+** point at window (x, y) of `size`, all in subpixels (OES_point_sprite):
+** s = 1/2 + (x_f + 1/2 - x_w) / size, t = 1/2 - (y_f + 1/2 - y_w) / size */
+static inline void sprite_coords(int64_t x, int64_t y, int64_t size, int64_t px, int64_t py, TexCoord *tc,
+                                 TexCoord *tx, TexCoord *ty)
+{
+    const int64_t one = GLES_SUBPIXEL_ONE, half = one / 2;
+    tc->s = texc_ratio(size / 2 + px * one + half - x, size);
+    tc->t = texc_ratio(size / 2 - (py * one + half - y), size);
+    tx->s = texc_ratio(size / 2 + (px + 1) * one + half - x, size);
+    tx->t = tc->t;
+    ty->s = tc->s;
+    ty->t = texc_ratio(size / 2 - ((py + 1) * one + half - y), size);
+}
+
 /* One chunk of a row's run: the live fragments and what the stages have
 ** computed for them so far. Slot j holds the fragment at x0 + k[j]; the
 ** tests drop fragments by compacting the slots. */

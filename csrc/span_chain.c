@@ -168,38 +168,15 @@ static void stage_fetch_rect(GlesContext *ctx, const TriSetup *t, SpanBuf *b, in
     (void)t;
     const RectSetup *r = b->rect;
     switch (r->coord[u]) {
-    case RECT_COORD_LINEAR: {
-        const double Y = (double)b->y + 0.5;
-        const TEXC tt = texc_from_double(r->at[u] + r->bt[u] * Y);
-        const TEXC ty = texc_from_double(r->at[u] + r->bt[u] * (Y + 1));
-        for (int j = 0; j < b->n; j++) {
-            double X = (double)(b->x0 + b->k[j]) + 0.5;
-            b->tc[j].s = texc_from_double(r->as[u] + r->bs[u] * X);
-            b->tc[j].t = tt;
-            b->tx[j].s = texc_from_double(r->as[u] + r->bs[u] * (X + 1));
-            b->tx[j].t = tt;
-            b->ty[j].s = b->tc[j].s;
-            b->ty[j].t = ty;
-        }
+    case RECT_COORD_LINEAR:
+        for (int j = 0; j < b->n; j++)
+            rect_linear_coords(r, u, b->x0 + b->k[j], b->y, &b->tc[j], &b->tx[j], &b->ty[j]);
         break;
-    }
-    case RECT_COORD_SPRITE: {
-        /* s = 1/2 + (x_f + 1/2 - x_w) / size, t = 1/2 - (y_f + 1/2 - y_w) / size */
-        const int64_t one = GLES_SUBPIXEL_ONE, half = one / 2, size = r->sprite_size;
-        const int64_t py = b->y;
-        const TEXC tt = texc_ratio(size / 2 - (py * one + half - r->sprite_y), size);
-        const TEXC ty = texc_ratio(size / 2 - ((py + 1) * one + half - r->sprite_y), size);
-        for (int j = 0; j < b->n; j++) {
-            int64_t px = b->x0 + b->k[j];
-            b->tc[j].s = texc_ratio(size / 2 + px * one + half - r->sprite_x, size);
-            b->tc[j].t = tt;
-            b->tx[j].s = texc_ratio(size / 2 + (px + 1) * one + half - r->sprite_x, size);
-            b->tx[j].t = tt;
-            b->ty[j].s = b->tc[j].s;
-            b->ty[j].t = ty;
-        }
+    case RECT_COORD_SPRITE:
+        for (int j = 0; j < b->n; j++)
+            sprite_coords(r->sprite_x, r->sprite_y, r->sprite_size, b->x0 + b->k[j], b->y, &b->tc[j], &b->tx[j],
+                          &b->ty[j]);
         break;
-    }
     default:
         for (int j = 0; j < b->n; j++) {
             b->tc[j] = r->in.tc[u];
@@ -410,13 +387,14 @@ int span_blend_kind(const GlesContext *ctx)
     return -1;
 }
 
-/* a rectangle's constant inputs for every slot of the chunk */
+/* a rectangle's constant inputs for the chunk's slots (its first stage, so
+** every later slot a fragment can move to is among them) */
 static void stage_rect_source(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     (void)t;
     const FragIn *in = &b->rect->in;
     const int texturing = ctx->tex_units_on != 0;
-    for (int j = 0; j < SPAN_CHUNK; j++) {
+    for (int j = 0; j < b->n; j++) {
         b->z[j] = in->z;
         for (int i = 0; i < 4; i++)
             b->c[j][i] = texturing ? frag_clamp01(in->c[i]) : in->c[i];

@@ -27,7 +27,6 @@
 #define GLES_MAX_VERTEX_UNITS 4       /* OES_matrix_palette: at least 3 */
 #define GLES_SUBPIXEL_BITS 8
 #define GLES_SUBPIXEL_ONE (1 << GLES_SUBPIXEL_BITS)
-#define GLES_MAX_SPAN 4096 /* the widest span the fragment stage gets */
 
 /* debug flags (gles_debug_set) */
 #define GLES_DEBUG_GENERIC_SPANS 1

@@ -110,17 +110,27 @@ def _state(gl, s: dict, rng: np.random.Generator) -> None:
         gl.glFogfv(C.GL_FOG_COLOR, [0.2, 0.7, 0.4, 1.0])
 
 
-def render(s: dict, reference: bool):
+def _begin(s: dict, reference: bool):
+    """A context for state `s` (per-fragment reference path or not) with the state set."""
     rng = np.random.default_rng(s["seed"])
     ctx = make_ctx(s["numeric"], W, H, color=s["color"])
-    gl = ctx.gl
     if reference:
         ctx.debug(1)
-    _state(gl, s, rng)
+    _state(ctx.gl, s, rng)
+    return ctx, ctx.gl, rng
+
+
+def _outcome(ctx):
+    """The error and the three buffers: what both paths must agree on."""
+    return ctx.gl.glGetError(), ctx.color_buffer(), ctx.depth_buffer(), ctx.stencil_buffer()
+
+
+def render(s: dict, reference: bool):
+    ctx, gl, rng = _begin(s, reference)
     x, y, z, w, h = s["rect"]
     gl.glDrawTexfOES(x, y, z, w, h)
     gl.glDrawTexfOES(x + 3, y + 2, z, w, h)     # over the first: blending, depth and stencil see it
-    return gl.glGetError(), ctx.color_buffer(), ctx.depth_buffer(), ctx.stencil_buffer()
+    return _outcome(ctx)
 
 
 @settings(max_examples=200, deadline=None)
@@ -144,12 +154,7 @@ points = st.fixed_dictionaries({
 
 
 def render_points(s: dict, p: dict, reference: bool):
-    rng = np.random.default_rng(s["seed"])
-    ctx = make_ctx(s["numeric"], W, H, color=s["color"])
-    gl = ctx.gl
-    if reference:
-        ctx.debug(1)
-    _state(gl, s, rng)
+    ctx, gl, rng = _begin(s, reference)
     gl.glMatrixMode(C.GL_PROJECTION)
     if p["persp"]:
         gl.glFrustumf(-1, 1, -1, 1, 1, 4)
@@ -182,7 +187,7 @@ def render_points(s: dict, p: dict, reference: bool):
         gl.glEnableClientState(C.GL_POINT_SIZE_ARRAY_OES)
         gl.glPointSizePointerOES(C.GL_FLOAT, 0, sizes)
     gl.glDrawArrays(C.GL_POINTS, 0, n)
-    return gl.glGetError(), ctx.color_buffer(), ctx.depth_buffer(), ctx.stencil_buffer()
+    return _outcome(ctx)
 
 
 @settings(max_examples=150, deadline=None)
