@@ -45,6 +45,7 @@ void *gles_stencil_buffer(GlesContext *ctx) { return ctx->stencil; }
 int gles_width(GlesContext *ctx) { return ctx->width; }
 int gles_height(GlesContext *ctx) { return ctx->height; }
 const char *gles_last_span_name(GlesContext *ctx) { return ctx->span_name ? ctx->span_name : ""; }
+const char *gles_simd_name(GlesContext *ctx) { return simd_name(ctx_simd(ctx)); }
 
 void gles_debug_set(GlesContext *ctx, int flags)
 {
@@ -97,6 +98,7 @@ GlesContext *gles_context_create(int width, int height, int color_format,
     ctx->stencil_bits = stencil_bits;
     ctx->depth_max = depth_bits ? (uint32_t)((1ull << depth_bits) - 1) : 0;
     ctx->profile = profile;
+    ctx->simd = simd_detect();
     ctx->color = calloc(npix, color_format == GLES_COLOR_RGB565 ? 2 : 4);
     ctx->depth = depth_bits ? calloc(npix, sizeof(uint32_t)) : NULL;
     ctx->stencil = stencil_bits ? calloc(npix, 1) : NULL;

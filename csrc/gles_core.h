@@ -55,10 +55,13 @@ int gles_height(GlesContext *ctx);
 /* debug switches for tests: 1 forces the generic span path; 2 and 4 break
 ** the rasterizer on purpose (flip the fill rule's tie, drop the last pixel of
 ** every span) so that tests can show the suite catches it; 8 runs the
-** vertex stage per vertex (the reference of the batched path) */
+** vertex stage per vertex (the reference of the batched path); 16 runs the
+** baseline span stages where the CPU has a vector instance (simd.h) */
 void gles_debug_set(GlesContext *ctx, int flags);
 /* name of the span function the last triangle used (for path tests) */
 const char *gles_last_span_name(GlesContext *ctx);
+/* the instruction set the span stages run with: "avx2" or "baseline" */
+const char *gles_simd_name(GlesContext *ctx);
 
 /* the numeric layer, for tests: converts a and b to NUM (exact for
 ** multiples of 2^-16 in the fixed build), applies op, returns the result

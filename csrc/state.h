@@ -13,6 +13,7 @@
 #include "num.h"
 #include "gles_core.h"
 #include "glenums.h"
+#include "simd.h"
 
 /* {====================================================================
 ** limits (each at or above the spec's minimum, Tables 6.20-6.22) */
@@ -33,6 +34,7 @@
 #define GLES_DEBUG_FLIP_TIE_RULE 2
 #define GLES_DEBUG_DROP_LAST_PIXEL 4
 #define GLES_DEBUG_VERTEX_REFERENCE 8  /* per-vertex reference path instead of batches */
+#define GLES_DEBUG_BASELINE_SIMD 16    /* the baseline span stages even where AVX2 runs */
 
 /* {====================================================================
 ** matrices */
@@ -333,6 +335,7 @@ struct GlesContext {
     int chain_len;
     TexSpanSampler samplers[GLES_MAX_TEXTURE_UNITS];   /* each unit's, for the chain (texsample.c) */
     int debug;
+    int simd;                   /* SIMD_* the CPU runs (simd_detect) */
 
     /* per-draw scratch: transformed vertices and their stamps */
     Vertex *verts;
@@ -354,6 +357,13 @@ static inline void ctx_error(GlesContext *ctx, unsigned int err)
 {
     if (ctx->error == GL_NO_ERROR)
         ctx->error = err;
+}
+
+/* the instance of the span stages to run: the CPU's best, unless the
+** debug switch asks for the baseline */
+static inline int ctx_simd(const GlesContext *ctx)
+{
+    return (ctx->debug & GLES_DEBUG_BASELINE_SIMD) ? SIMD_BASELINE : ctx->simd;
 }
 
 int ctx_message(GlesContext *ctx, int status, const char *fmt, ...);

@@ -10,6 +10,13 @@
 #include "state.h"
 #include "texture.h"
 
+#if SIMD_X86
+#pragma GCC push_options
+#pragma GCC target("avx2")
+#include "span_avx2.h"
+#pragma GCC pop_options
+#endif
+
 /* wrap a texel index into [0, n); sizes are powers of two (§3.7.1) */
 static inline int wrap_index(int64_t i, int n, unsigned int mode)
 {
@@ -56,7 +63,7 @@ static inline void texel(const TexImage *li, int i, int j, FRAGV out[4], const F
 #define SAMPLE_INLINE static inline __attribute__((always_inline))
 
 SAMPLE_INLINE void sample_level(const Texture *t, int level, unsigned int filter, TEXC s, TEXC tc, FRAGV out[4],
-                                  const FRAGV *unorm, unsigned int ws, unsigned int wt)
+                                  const FRAGV *unorm, unsigned int ws, unsigned int wt, int simd)
 {
     const TexImage *li = &t->level[level];
     int w = li->width, h = li->height;
@@ -73,14 +80,21 @@ SAMPLE_INLINE void sample_level(const Texture *t, int level, unsigned int filter
     int x0 = wrap_index(i0, w, ws), x1 = wrap_index(i0 + 1, w, ws);
     int y0 = wrap_index(j0, h, wt), y1 = wrap_index(j0 + 1, h, wt);
     const uint32_t *r0 = li->texels + (size_t)y0 * w, *r1 = li->texels + (size_t)y1 * w;
+#if SIMD_X86 && NUM_IS_FIXED
+    if (simd) {
+        avx2_bilerp_rgba8(r0[x0], r0[x1], r1[x0], r1[x1], a, b, out);
+        return;
+    }
+#endif
+    (void)simd;
     frag_bilerp_rgba8(r0[x0], r0[x1], r1[x0], r1[x1], a, b, out, unorm);
 }
 
 SAMPLE_INLINE void sample_w(const Texture *t, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
-                            FRAGV out[4], const FRAGV *unorm, unsigned int ws, unsigned int wt)
+                            FRAGV out[4], const FRAGV *unorm, unsigned int ws, unsigned int wt, int simd)
 {
     if (!dx || !dy) {
-        sample_level(t, 0, t->mag_filter, c->s, c->t, out, unorm, ws, wt);
+        sample_level(t, 0, t->mag_filter, c->s, c->t, out, unorm, ws, wt, simd);
         return;
     }
     /* rho in texel units of level 0: the largest of the four derivatives;
@@ -106,13 +120,13 @@ SAMPLE_INLINE void sample_w(const Texture *t, const TexCoord *c, const TexCoord 
     LODV cshift = (t->mag_filter == GL_LINEAR && (minf == GL_NEAREST_MIPMAP_NEAREST || minf == GL_NEAREST_MIPMAP_LINEAR))
                       ? lod_from_ratio(1, 2) : 0;
     if (lambda <= cshift) {
-        sample_level(t, 0, t->mag_filter, c->s, c->t, out, unorm, ws, wt);
+        sample_level(t, 0, t->mag_filter, c->s, c->t, out, unorm, ws, wt, simd);
         return;
     }
     unsigned int filter = (minf == GL_NEAREST || minf == GL_NEAREST_MIPMAP_NEAREST || minf == GL_NEAREST_MIPMAP_LINEAR)
                               ? GL_NEAREST : GL_LINEAR;
     if (minf == GL_NEAREST || minf == GL_LINEAR) {
-        sample_level(t, 0, filter, c->s, c->t, out, unorm, ws, wt);
+        sample_level(t, 0, filter, c->s, c->t, out, unorm, ws, wt, simd);
         return;
     }
     int q = t->max_level;
@@ -126,19 +140,19 @@ SAMPLE_INLINE void sample_w(const Texture *t, const TexCoord *c, const TexCoord 
         }
         if (d > q)
             d = q;
-        sample_level(t, (int)d, filter, c->s, c->t, out, unorm, ws, wt);
+        sample_level(t, (int)d, filter, c->s, c->t, out, unorm, ws, wt, simd);
         return;
     }
     /* *_MIPMAP_LINEAR: levels floor(lambda) and the next, by frac(lambda) */
     int64_t d1i = lod_ifloor(lambda);
     if (d1i >= q) {
-        sample_level(t, q, filter, c->s, c->t, out, unorm, ws, wt);
+        sample_level(t, q, filter, c->s, c->t, out, unorm, ws, wt, simd);
         return;
     }
     FRAGV f = lod_frac(lambda);
     FRAGV t1[4], t2[4];
-    sample_level(t, (int)d1i, filter, c->s, c->t, t1, unorm, ws, wt);
-    sample_level(t, (int)d1i + 1, filter, c->s, c->t, t2, unorm, ws, wt);
+    sample_level(t, (int)d1i, filter, c->s, c->t, t1, unorm, ws, wt, simd);
+    sample_level(t, (int)d1i + 1, filter, c->s, c->t, t2, unorm, ws, wt, simd);
     for (int k = 0; k < 4; k++)
         out[k] = t1[k] + frag_mul(f, t2[k] - t1[k]);
 }
@@ -146,46 +160,83 @@ SAMPLE_INLINE void sample_w(const Texture *t, const TexCoord *c, const TexCoord 
 void texture_sample(const Texture *t, const TexCoord *c, const TexCoord *dx, const TexCoord *dy, FRAGV out[4],
                     const FRAGV *unorm)
 {
-    sample_w(t, c, dx, dy, out, unorm, t->wrap_s, t->wrap_t);
+    sample_w(t, c, dx, dy, out, unorm, t->wrap_s, t->wrap_t, 0);
 }
 
 /* {====================================================================
 ** span samplers: n fragments' coordinates to n texels, out[j * stride],
 ** with the wrap modes (and without a level of detail, the filter) fixed */
 
-#define SPAN_SAMPLER(name, WS, WT, FILTER)                                                                 \
+#define SPAN_SAMPLER(name, WS, WT, FILTER, SIMD)                                                           \
     static void name(const Texture *t, int n, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,   \
                      FRAGV *out, size_t stride, const FRAGV *unorm)                                        \
     {                                                                                                      \
         const unsigned int ws = WS ? WS : t->wrap_s, wt = WT ? WT : t->wrap_t;                             \
         if (FILTER) {                                                                                      \
-            for (int j = 0; j < n; j++)                                                                    \
-                sample_level(t, 0, FILTER, c[j].s, c[j].t, out + (size_t)j * stride, unorm, ws, wt);     \
+            int j = SIMD && FILTER == GL_LINEAR ? linear_block(t, n, c, out, stride, ws, wt) : 0;         \
+            for (; j < n; j++)                                                                             \
+                sample_level(t, 0, FILTER, c[j].s, c[j].t, out + (size_t)j * stride, unorm, ws, wt, SIMD); \
         } else {                                                                                           \
             for (int j = 0; j < n; j++)                                                                    \
-                sample_w(t, &c[j], &dx[j], &dy[j], out + (size_t)j * stride, unorm, ws, wt);               \
+                sample_w(t, &c[j], &dx[j], &dy[j], out + (size_t)j * stride, unorm, ws, wt, SIMD);         \
         }                                                                                                  \
     }
 
-SPAN_SAMPLER(span_nearest_repeat, GL_REPEAT, GL_REPEAT, GL_NEAREST)
-SPAN_SAMPLER(span_linear_repeat, GL_REPEAT, GL_REPEAT, GL_LINEAR)
-SPAN_SAMPLER(span_lod_repeat, GL_REPEAT, GL_REPEAT, 0)
-SPAN_SAMPLER(span_nearest_clamp, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_NEAREST)
-SPAN_SAMPLER(span_linear_clamp, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_LINEAR)
-SPAN_SAMPLER(span_lod_clamp, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, 0)
-SPAN_SAMPLER(span_nearest_any, 0, 0, GL_NEAREST)
-SPAN_SAMPLER(span_linear_any, 0, 0, GL_LINEAR)
-SPAN_SAMPLER(span_lod_any, 0, 0, 0)
+/* the vector kernel's share of n level-0 GL_LINEAR samples (a multiple of
+** four; 0 where it does not apply: other wrap modes, sizes that are not
+** powers of two, or no kernel in this build) */
+static inline int linear_block(const Texture *t, int n, const TexCoord *c, FRAGV *out, size_t stride, unsigned int ws,
+                               unsigned int wt)
+{
+#if SIMD_X86 && NUM_IS_FIXED
+    const TexImage *li = &t->level[0];
+    const int pot = (li->width & (li->width - 1)) == 0 && (li->height & (li->height - 1)) == 0;
+    if (pot && (ws == GL_REPEAT || ws == GL_CLAMP_TO_EDGE) && (wt == GL_REPEAT || wt == GL_CLAMP_TO_EDGE)) {
+        avx2_sample_linear(li, n & ~3, c, out, stride, ws == GL_REPEAT, wt == GL_REPEAT);
+        return n & ~3;
+    }
+#endif
+    (void)t, (void)n, (void)c, (void)out, (void)stride, (void)ws, (void)wt;
+    return 0;
+}
+
+/* every [wrap: repeat, clamp, other][nearest, linear, with a level of
+** detail] of one instruction set, with its names from SFX */
+#define SPAN_SAMPLERS(SFX, SIMD)                                                     \
+    SPAN_SAMPLER(span_nearest_repeat##SFX, GL_REPEAT, GL_REPEAT, GL_NEAREST, SIMD)     \
+    SPAN_SAMPLER(span_linear_repeat##SFX, GL_REPEAT, GL_REPEAT, GL_LINEAR, SIMD)       \
+    SPAN_SAMPLER(span_lod_repeat##SFX, GL_REPEAT, GL_REPEAT, 0, SIMD)                  \
+    SPAN_SAMPLER(span_nearest_clamp##SFX, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_NEAREST, SIMD) \
+    SPAN_SAMPLER(span_linear_clamp##SFX, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, GL_LINEAR, SIMD)   \
+    SPAN_SAMPLER(span_lod_clamp##SFX, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE, 0, SIMD)     \
+    SPAN_SAMPLER(span_nearest_any##SFX, 0, 0, GL_NEAREST, SIMD)                        \
+    SPAN_SAMPLER(span_linear_any##SFX, 0, 0, GL_LINEAR, SIMD)                          \
+    SPAN_SAMPLER(span_lod_any##SFX, 0, 0, 0, SIMD)                                     \
+    static const TexSpanSampler span_samplers##SFX[3][3] = {                            \
+        { span_nearest_repeat##SFX, span_linear_repeat##SFX, span_lod_repeat##SFX },    \
+        { span_nearest_clamp##SFX, span_linear_clamp##SFX, span_lod_clamp##SFX },       \
+        { span_nearest_any##SFX, span_linear_any##SFX, span_lod_any##SFX },             \
+    };
+
+SPAN_SAMPLERS(_base, 0)
+#if SIMD_X86
+#pragma GCC push_options
+#pragma GCC target("avx2")
+SPAN_SAMPLERS(_avx2, 1)
+#pragma GCC pop_options
+#endif
+#undef SPAN_SAMPLERS
 #undef SPAN_SAMPLER
 
-TexSpanSampler texture_span_sampler(const Texture *t)
+TexSpanSampler texture_span_sampler(const Texture *t, int simd)
 {
-    /* [wrap: repeat, clamp, other][nearest, linear, with a level of detail] */
-    static const TexSpanSampler table[3][3] = {
-        { span_nearest_repeat, span_linear_repeat, span_lod_repeat },
-        { span_nearest_clamp, span_linear_clamp, span_lod_clamp },
-        { span_nearest_any, span_linear_any, span_lod_any },
-    };
+    const TexSpanSampler(*table)[3] = span_samplers_base;
+#if SIMD_X86
+    if (simd >= SIMD_AVX2)
+        table = span_samplers_avx2;
+#else
+    (void)simd;
+#endif
     int wrap = t->wrap_s == GL_REPEAT && t->wrap_t == GL_REPEAT ? 0
              : (t->wrap_s == GL_CLAMP_TO_EDGE && t->wrap_t == GL_CLAMP_TO_EDGE ? 1 : 2);
     int filter = texture_needs_lod(t) ? 2 : (t->mag_filter == GL_LINEAR ? 1 : 0);

@@ -28,7 +28,7 @@ void texture_sample(const Texture *tex, const TexCoord *c, const TexCoord *dx, c
 /* texture_sample for n fragments, with the texture's filter and wrap
 ** modes fixed: fragment j's coordinates c[j] (and dx[j], dy[j] when the
 ** filter needs a level of detail), its texel at out + j * stride */
-TexSpanSampler texture_span_sampler(const Texture *tex);
+TexSpanSampler texture_span_sampler(const Texture *tex, int simd);
 /* does sampling this texture need the neighbours' coordinates */
 int texture_needs_lod(const Texture *tex);
 /* the texture environment of unit u: cp is the previous colour (in and

@@ -28,6 +28,10 @@ if _ROOT not in sys.path:
 
 BUILDS = ("fixed", "float", "double")
 
+# whether the span stages have a vector instance on this CPU (ctx.simd), so
+# that the path tests also compare the baseline instance (ctx.debug(16))
+HAS_SIMD = gles.Context(1, 1).simd != "baseline"
+
 
 def make_ctx(numeric: str, w: int = 64, h: int = 64, **kw: Any) -> gles.Context:
     """A context of the given build and size; keyword options go to gles.Context."""

@@ -11,7 +11,7 @@ and stencil buffers must be identical both ways.
 from __future__ import annotations
 
 import numpy as np
-from conftest import BUILDS, make_ctx
+from conftest import BUILDS, HAS_SIMD, make_ctx
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -110,12 +110,17 @@ def _state(gl, s: dict, rng: np.random.Generator) -> None:
         gl.glFogfv(C.GL_FOG_COLOR, [0.2, 0.7, 0.4, 1.0])
 
 
-def _begin(s: dict, reference: bool):
-    """A context for state `s` (per-fragment reference path or not) with the state set."""
+# the debug flags of each path: the per-fragment reference, the chain, and
+# the chain's baseline instance where the CPU has a vector one
+REFERENCE, CHAINS = 1, (0, 16) if HAS_SIMD else (0,)
+
+
+def _begin(s: dict, flags: int):
+    """A context for state `s`, with debug `flags` (REFERENCE, or one of CHAINS) and the state set."""
     rng = np.random.default_rng(s["seed"])
     ctx = make_ctx(s["numeric"], W, H, color=s["color"])
-    if reference:
-        ctx.debug(1)
+    if flags:
+        ctx.debug(flags)
     _state(ctx.gl, s, rng)
     return ctx, ctx.gl, rng
 
@@ -125,22 +130,28 @@ def _outcome(ctx):
     return ctx.gl.glGetError(), ctx.color_buffer(), ctx.depth_buffer(), ctx.stencil_buffer()
 
 
-def render(s: dict, reference: bool):
-    ctx, gl, rng = _begin(s, reference)
+def render(s: dict, flags: int):
+    ctx, gl, rng = _begin(s, flags)
     x, y, z, w, h = s["rect"]
     gl.glDrawTexfOES(x, y, z, w, h)
     gl.glDrawTexfOES(x + 3, y + 2, z, w, h)     # over the first: blending, depth and stencil see it
     return _outcome(ctx)
 
 
+def _same(fast, ref) -> None:
+    """The same error and buffers (what every path must agree on)."""
+    assert fast[0] == ref[0]
+    for a, b in zip(fast[1:], ref[1:]):
+        np.testing.assert_array_equal(a, b)
+
+
 @settings(max_examples=200, deadline=None)
 @given(states)
 def test_drawtex_chain_matches_reference(s):
     """Identical buffers and errors with and without the forced per-fragment path."""
-    fast, ref = render(s, False), render(s, True)
-    assert fast[0] == ref[0]
-    for a, b in zip(fast[1:], ref[1:]):
-        np.testing.assert_array_equal(a, b)
+    ref = render(s, REFERENCE)
+    for flags in CHAINS:
+        _same(render(s, flags), ref)
 
 
 points = st.fixed_dictionaries({
@@ -153,8 +164,8 @@ points = st.fixed_dictionaries({
 })
 
 
-def render_points(s: dict, p: dict, reference: bool):
-    ctx, gl, rng = _begin(s, reference)
+def render_points(s: dict, p: dict, flags: int):
+    ctx, gl, rng = _begin(s, flags)
     gl.glMatrixMode(C.GL_PROJECTION)
     if p["persp"]:
         gl.glFrustumf(-1, 1, -1, 1, 1, 4)
@@ -194,7 +205,6 @@ def render_points(s: dict, p: dict, reference: bool):
 @given(states, points)
 def test_points_chain_matches_reference(s, p):
     """Aliased points and sprites: identical buffers and errors both ways."""
-    fast, ref = render_points(s, p, False), render_points(s, p, True)
-    assert fast[0] == ref[0]
-    for a, b in zip(fast[1:], ref[1:]):
-        np.testing.assert_array_equal(a, b)
+    ref = render_points(s, p, REFERENCE)
+    for flags in CHAINS:
+        _same(render_points(s, p, flags), ref)

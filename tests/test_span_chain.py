@@ -62,7 +62,7 @@ from typing import Any, Callable
 
 import numpy as np
 import pytest
-from conftest import BUILDS, make_ctx, random_triangles, set_frustum, set_ortho
+from conftest import BUILDS, HAS_SIMD, make_ctx, random_triangles, set_frustum, set_ortho
 from hypothesis import event, given, settings
 from hypothesis import strategies as st
 
@@ -732,8 +732,11 @@ def draw_phase(gl: Any, first: int, count: int) -> None:
         gl.glDrawArrays(C.GL_TRIANGLES, 3 * i, 3)
 
 
-def render(scene: dict, generic: bool) -> dict:
-    """Draw `scene` in a fresh context; the buffers, glGetError and the span path of each phase."""
+def render(scene: dict, generic: bool, baseline: bool = False) -> dict:
+    """Draw `scene` in a fresh context; the buffers, glGetError and the span path of each phase.
+
+    `generic` forces the per-fragment reference; `baseline` the baseline
+    instance of the span stages where the CPU has a vector one."""
     w, h = scene["size"]
     rng = np.random.default_rng(scene["geometry"])
     verts, cols = random_triangles(rng, scene["persp"], scene["triangles"], w)
@@ -743,8 +746,8 @@ def render(scene: dict, generic: bool) -> dict:
     ctx = make_ctx(scene["numeric"], w, h, color=scene["color"], depth=scene["depth_bits"],
                    stencil=scene["stencil_bits"])
     gl = ctx.gl
-    if generic:
-        ctx.debug(1)
+    if generic or baseline:
+        ctx.debug((1 if generic else 0) | (16 if baseline else 0))
     rgba, depth, stencil = scene["clear"]
     gl.glClearColor(*rgba)
     gl.glClearDepthf(depth)
@@ -780,10 +783,18 @@ def render(scene: dict, generic: bool) -> dict:
 
 
 def check_scene(scene: dict) -> list[str]:
-    """Render `scene` both ways and require identical results; return the unforced paths."""
+    """Render `scene` both ways (three where the span stages have a vector
+    instance: it and the baseline one) and require identical results; return
+    the unforced paths."""
     scene = crossbar_on_units_on(scene)
     ref = render(scene, generic=True)
     out = render(scene, generic=False)
+    if HAS_SIMD:
+        base = render(scene, generic=False, baseline=True)
+        assert base["error"] == ref["error"]
+        for name in ("color", "depth", "stencil"):
+            if ref[name] is not None:
+                np.testing.assert_array_equal(base[name], ref[name], err_msg=f"baseline stages, {name} buffer")
     assert ref["paths"] and all(p == "generic" for p in ref["paths"]), ref["paths"]
     assert all(isinstance(p, str) and p for p in out["paths"]), out["paths"]
     assert ref["error"] == C.GL_NO_ERROR, f"the scene itself is invalid: error {ref['error']:#x}"

@@ -239,7 +239,8 @@ class Context:
         """Core debug switches: 1 forces the generic span path; 2 flips the
         fill rule's tie-break, 4 drops the last pixel of every span (both
         break the rasterizer on purpose, to show tests catch it); 8 runs the
-        vertex stage per vertex, the reference of the batched path."""
+        vertex stage per vertex, the reference of the batched path; 16 runs
+        the baseline (portable) span stages where the CPU has AVX2."""
         with self._lock:
             self._lib.gles_debug_set(self._ptr, int(flags))
 
@@ -247,6 +248,13 @@ class Context:
         """Name of the span function the last validated draw chose."""
         with self._lock:
             return self._ffi.string(self._lib.gles_last_span_name(self._ptr)).decode()
+
+    @property
+    def simd(self) -> str:
+        """The instruction set the fragment stages run with here: "avx2"
+        (x86-64 CPUs that have it) or "baseline". Both give the same bits."""
+        with self._lock:
+            return self._ffi.string(self._lib.gles_simd_name(self._ptr)).decode()
 
     def __enter__(self) -> Context:
         return self.make_current()

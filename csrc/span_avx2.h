@@ -1,0 +1,215 @@
+/*
+** span_avx2.h -- AVX2 kernels of the fixed build's hottest fragment work,
+** for the AVX2 instance of the span stages (span_stages.h) and samplers
+** (texsample.c); included only where `#pragma GCC target("avx2")` holds.
+**
+** A fragment's four FRAGV channels (0.30 in int64) are one 256-bit
+** register. Each kernel is the scalar function's arithmetic, lane by lane:
+** the products the scalar code forms in 64 bits have operands that fit in
+** 32 bits (colours and weights of at most 2^30 in magnitude), so one
+** 32x32->64 multiply (vpmuludq, vpmuldq) forms each exactly, and the
+** rounding shifts are the same. Kernels whose operands could leave that
+** range check it and leave such fragments to the scalar code.
+*/
+#ifndef GLES_SPAN_AVX2_H
+#define GLES_SPAN_AVX2_H
+
+#if SIMD_X86 && NUM_IS_FIXED
+#include <immintrin.h>
+
+#define AVX2_INLINE static inline __attribute__((always_inline))
+
+/* the four channels of a FRAGV[4] */
+AVX2_INLINE __m256i avx2_load4(const FRAGV *c) { return _mm256_loadu_si256((const __m256i *)(const void *)c); }
+AVX2_INLINE void avx2_store4(FRAGV *c, __m256i v) { _mm256_storeu_si256((__m256i *)(void *)c, v); }
+
+/* frag_clamp01 per lane */
+AVX2_INLINE __m256i avx2_clamp01(__m256i v)
+{
+    const __m256i one = _mm256_set1_epi64x(FRAG_ONE);
+    v = _mm256_andnot_si256(_mm256_cmpgt_epi64(_mm256_setzero_si256(), v), v);
+    return _mm256_blendv_epi8(v, one, _mm256_cmpgt_epi64(v, one));
+}
+
+/* frag_mul of lanes in [0, 2^32): (a b + 2^29) >> 30 */
+AVX2_INLINE __m256i avx2_mul_u(__m256i a, __m256i b)
+{
+    return _mm256_srli_epi64(_mm256_add_epi64(_mm256_mul_epu32(a, b), _mm256_set1_epi64x((int64_t)1 << 29)), 30);
+}
+
+/* 1 when every lane lies in [0, 2^31) (a valid operand of avx2_mul_u) */
+AVX2_INLINE int avx2_fits_u31(__m256i v)
+{
+    return _mm256_testz_si256(v, _mm256_set1_epi64x(~(int64_t)0x7FFFFFFF));
+}
+
+/* the 0.30 values of the four bytes of a framebuffer or texel word,
+** frag_from_unorm(d, 255) = d * 4210752 + ((d + 2) >> 2) exactly for every
+** d in [0, 255] (ctx->unorm8's entries) */
+AVX2_INLINE __m256i avx2_unorm8(uint32_t word)
+{
+    __m256i d = _mm256_cvtepu8_epi64(_mm_cvtsi32_si128((int)word));
+    __m256i hi = _mm256_mul_epu32(d, _mm256_set1_epi64x(4210752));
+    return _mm256_add_epi64(hi, _mm256_srli_epi64(_mm256_add_epi64(d, _mm256_set1_epi64x(2)), 2));
+}
+
+/* frag_to_unorm(v, 255, 1/2) of lanes >= 0, packed as RGBA8888 */
+AVX2_INLINE uint32_t avx2_pack_unorm8(__m256i v)
+{
+    const __m256i one = _mm256_set1_epi64x(FRAG_ONE);
+    v = _mm256_blendv_epi8(v, one, _mm256_cmpgt_epi64(v, one));
+    v = _mm256_srli_epi64(_mm256_add_epi64(_mm256_mul_epu32(v, _mm256_set1_epi64x(255)),
+                                           _mm256_set1_epi64x((int64_t)1 << 29)), 30);
+    /* the low byte of each 64-bit lane, in lane order */
+    const __m256i pick = _mm256_setr_epi8(0, 8, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
+                                          0, 8, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1);
+    v = _mm256_shuffle_epi8(v, pick);
+    uint32_t lo = (uint32_t)_mm_cvtsi128_si32(_mm256_castsi256_si128(v)) & 0xFFFFu;
+    uint32_t hi = (uint32_t)_mm_cvtsi128_si32(_mm256_extracti128_si256(v, 1)) & 0xFFFFu;
+    return lo | (hi << 16);
+}
+
+/* frag_bilerp_rgba8: the same sum, as ib (c00 ia + c10 a) + b (c01 ia + c11 a)
+** (an exact regrouping: every partial sum fits its lanes). Not forced
+** inline: sample_level names it in the baseline samplers too, where the
+** branch that calls it is folded away. */
+static inline void avx2_bilerp_rgba8(uint32_t c00, uint32_t c10, uint32_t c01, uint32_t c11, TEXW a, TEXW b,
+                                   FRAGV out[4])
+{
+    const int ia = 65536 - a, ib = 65536 - b;
+    const __m256i wa = _mm256_setr_epi32(ia, ia, ia, ia, a, a, a, a);
+    __m256i x0 = _mm256_mullo_epi32(_mm256_cvtepu8_epi32(_mm_set_epi32(0, 0, (int)c10, (int)c00)), wa);
+    __m256i x1 = _mm256_mullo_epi32(_mm256_cvtepu8_epi32(_mm_set_epi32(0, 0, (int)c11, (int)c01)), wa);
+    __m128i h0 = _mm_add_epi32(_mm256_castsi256_si128(x0), _mm256_extracti128_si256(x0, 1));   /* < 2^24 */
+    __m128i h1 = _mm_add_epi32(_mm256_castsi256_si128(x1), _mm256_extracti128_si256(x1, 1));
+    __m256i acc = _mm256_add_epi64(_mm256_mul_epu32(_mm256_cvtepu32_epi64(h0), _mm256_set1_epi64x(ib)),
+                                   _mm256_mul_epu32(_mm256_cvtepu32_epi64(h1), _mm256_set1_epi64x(b)));
+    __m256i r = _mm256_srli_epi64(_mm256_add_epi64(acc, _mm256_set1_epi64x(128)), 8);     /* < 2^32 */
+    r = _mm256_srli_epi64(_mm256_add_epi64(_mm256_mul_epu32(r, _mm256_set1_epi64x(16843009)),
+                                           _mm256_set1_epi64x((int64_t)1 << 25)), 26);
+    avx2_store4(out, r);
+}
+
+/* a0 w0 + a1 w1 + a2 w2 per lane, rounded half away from zero to `shift`
+** fewer fraction bits: the a lanes in int32 range, the weights any WGT */
+AVX2_INLINE __m256i avx2_lerp3(__m256i a0, __m256i a1, __m256i a2, const WGT *p, int shift)
+{
+    __m256i acc = _mm256_add_epi64(
+        _mm256_add_epi64(_mm256_mul_epi32(a0, _mm256_set1_epi64x(p[0])), _mm256_mul_epi32(a1, _mm256_set1_epi64x(p[1]))),
+        _mm256_mul_epi32(a2, _mm256_set1_epi64x(p[2])));
+    const __m256i sign = _mm256_cmpgt_epi64(_mm256_setzero_si256(), acc);
+    __m256i mag = _mm256_sub_epi64(_mm256_xor_si256(acc, sign), sign);
+    mag = _mm256_srli_epi64(_mm256_add_epi64(mag, _mm256_set1_epi64x((int64_t)1 << (shift - 1))), shift);
+    return _mm256_sub_epi64(_mm256_xor_si256(mag, sign), sign);
+}
+
+/* frag_lerp3f of the four channels */
+AVX2_INLINE __m256i avx2_lerp3f(__m256i a0, __m256i a1, __m256i a2, const WGT *p)
+{
+    return avx2_lerp3(a0, a1, a2, p, 30);
+}
+
+/* a vertex's texture coordinates s, t, r, q (16.16) as four lanes */
+AVX2_INLINE __m256i avx2_load_num4(const NUM *a)
+{
+    return _mm256_cvtepi32_epi64(_mm_loadu_si128((const __m128i *)(const void *)a));
+}
+
+/* span_tex_coord: texc_lerp3 of s, t (and q) in one register */
+AVX2_INLINE void avx2_tex_coord(int projective, const __m256i a[3], const WGT p[3], TexCoord *out)
+{
+    const __m256i v = avx2_lerp3(a[0], a[1], a[2], p, 14);
+    if (!projective) {
+        _mm_storeu_si128((__m128i *)(void *)out, _mm256_castsi256_si128(v));   /* s, t */
+        return;
+    }
+    int64_t lanes[4];
+    _mm256_storeu_si256((__m256i *)(void *)lanes, v);
+    out->s = texc_div(lanes[0], lanes[3]);
+    out->t = texc_div(lanes[1], lanes[3]);
+}
+
+/* 1 when every lane lies in the int32 range (an operand of vpmuldq) */
+AVX2_INLINE int avx2_fits_i32(__m256i v)
+{
+    const __m256i lo = _mm256_set1_epi64x(INT32_MIN), hi = _mm256_set1_epi64x(INT32_MAX);
+    return _mm256_testz_si256(_mm256_or_si256(_mm256_cmpgt_epi64(lo, v), _mm256_cmpgt_epi64(v, hi)),
+                              _mm256_set1_epi64x(-1));
+}
+
+
+_Static_assert(sizeof(TexCoord) == 2 * sizeof(TEXC), "TexCoord is s then t");
+
+/* The wrapped texel index and weight of four coordinates along one axis
+** of a level n = 2^log2n texels wide, as sample_level forms them for
+** GL_LINEAR: u = reduce(s) n - 1/2, i0 = floor(u), the weight the 16 bits
+** below the point; REPEAT masks i0 and i0 + 1, CLAMP_TO_EDGE clamps them
+** to [0, n - 1]. The indices come back as int32 lanes 0..3. */
+AVX2_INLINE void avx2_linear_axis(__m256i s, int log2n, int repeat, __m128i *i0, __m128i *i1, __m128i *w)
+{
+    const int n = 1 << log2n;
+    const __m256i half = _mm256_set1_epi64x(TEXC_HALF);
+    __m256i uu;
+    if (repeat) {
+        /* s - floor(s) is the low 32 bits; adding n (as 2^32 n) keeps uu >= 0 */
+        uu = _mm256_slli_epi64(_mm256_and_si256(s, _mm256_set1_epi64x(0xFFFFFFFF)), log2n);
+        uu = _mm256_add_epi64(_mm256_sub_epi64(uu, half), _mm256_set1_epi64x((int64_t)n << 32));
+    } else {
+        /* reduce_coord clamps s to [-1, 2]; bias by 2n + 1 texels so the
+        ** shifted value is the index plus 2n + 1, above zero */
+        const __m256i lo = _mm256_set1_epi64x(-TEXC_ONE), hi = _mm256_set1_epi64x(2 * TEXC_ONE);
+        s = _mm256_blendv_epi8(s, lo, _mm256_cmpgt_epi64(lo, s));
+        s = _mm256_blendv_epi8(s, hi, _mm256_cmpgt_epi64(s, hi));
+        uu = _mm256_sub_epi64(_mm256_slli_epi64(s, log2n), half);
+        uu = _mm256_add_epi64(uu, _mm256_set1_epi64x((int64_t)(2 * n + 1) << 32));
+    }
+    const __m256i pick = _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7);
+    /* index (+ bias) and weight, as the low dwords of each lane */
+    __m128i idx = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(_mm256_srli_epi64(uu, 32), pick));
+    __m128i wt = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(_mm256_srli_epi64(uu, 16), pick));
+    *w = _mm_and_si128(wt, _mm_set1_epi32(0xFFFF));
+    if (repeat) {
+        const __m128i mask = _mm_set1_epi32(n - 1);
+        *i0 = _mm_and_si128(idx, mask);
+        *i1 = _mm_and_si128(_mm_add_epi32(idx, _mm_set1_epi32(1)), mask);
+    } else {
+        const __m128i bias = _mm_set1_epi32(2 * n + 1), zero = _mm_setzero_si128(), top = _mm_set1_epi32(n - 1);
+        __m128i a = _mm_sub_epi32(idx, bias);
+        __m128i b = _mm_add_epi32(a, _mm_set1_epi32(1));
+        *i0 = _mm_min_epi32(_mm_max_epi32(a, zero), top);
+        *i1 = _mm_min_epi32(_mm_max_epi32(b, zero), top);
+    }
+}
+
+/* sample_level's GL_LINEAR of a power-of-two level for fragments 0..n-1
+** (n a multiple of 4), REPEAT or CLAMP_TO_EDGE on each axis (not forced
+** inline, as avx2_bilerp_rgba8) */
+static inline void avx2_sample_linear(const TexImage *li, int n, const TexCoord *c, FRAGV *out, size_t stride,
+                                    int repeat_s, int repeat_t)
+{
+    const int log2w = __builtin_ctz((unsigned)li->width), log2h = __builtin_ctz((unsigned)li->height);
+    for (int j = 0; j < n; j += 4) {
+        const __m256i p01 = _mm256_loadu_si256((const __m256i *)(const void *)&c[j]);
+        const __m256i p23 = _mm256_loadu_si256((const __m256i *)(const void *)&c[j + 2]);
+        const __m256i sv = _mm256_permute4x64_epi64(_mm256_unpacklo_epi64(p01, p23), 0xD8);
+        const __m256i tv = _mm256_permute4x64_epi64(_mm256_unpackhi_epi64(p01, p23), 0xD8);
+        __m128i x0, x1, a, y0, y1, bw;
+        avx2_linear_axis(sv, log2w, repeat_s, &x0, &x1, &a);
+        avx2_linear_axis(tv, log2h, repeat_t, &y0, &y1, &bw);
+        const __m128i r0 = _mm_slli_epi32(y0, log2w), r1 = _mm_slli_epi32(y1, log2w);
+        int32_t i00[4], i10[4], i01[4], i11[4], wa[4], wb[4];
+        _mm_storeu_si128((__m128i *)(void *)i00, _mm_add_epi32(r0, x0));
+        _mm_storeu_si128((__m128i *)(void *)i10, _mm_add_epi32(r0, x1));
+        _mm_storeu_si128((__m128i *)(void *)i01, _mm_add_epi32(r1, x0));
+        _mm_storeu_si128((__m128i *)(void *)i11, _mm_add_epi32(r1, x1));
+        _mm_storeu_si128((__m128i *)(void *)wa, a);
+        _mm_storeu_si128((__m128i *)(void *)wb, bw);
+        const uint32_t *tx = li->texels;
+        for (int k = 0; k < 4; k++)
+            avx2_bilerp_rgba8(tx[i00[k]], tx[i10[k]], tx[i01[k]], tx[i11[k]], wa[k], wb[k],
+                              out + (size_t)(j + k) * stride);
+    }
+}
+
+#endif
+#endif

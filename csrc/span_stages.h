@@ -1,0 +1,436 @@
+/*
+** span_stages.h -- the span chain's stages, a template that span_chain.c
+** instantiates twice: for the baseline instruction set, and (on x86-64)
+** for AVX2, chosen at run time. STAGE(name) gives each instance's names;
+** CHAIN_SIMD is 1 in the AVX2 instance, where the hottest fixed-build
+** stages use the vector kernels of span_avx2.h and the rest are the same
+** loops, vectorized by the compiler for AVX2. Every instance computes the
+** same bits as the per-fragment reference (fragment_process).
+*/
+/* {====================================================================
+** weights */
+
+static void STAGE(stage_persp)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    (void)ctx;
+    for (int j = 0; j < b->n; j++) {
+        int64_t e[3];
+        chunk_edges(t, b, b->k[j], e);
+        wgt_persp(&t->wgt, e, b->p[j]);
+    }
+}
+
+/* the right and upper neighbours' weights, shared by every unit whose
+** filter needs a level of detail */
+static void STAGE(stage_neighbours)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    (void)ctx;
+    for (int j = 0; j < b->n; j++) {
+        int64_t e[3];
+        chunk_edges(t, b, b->k[j], e);
+        int64_t ex[3] = { e[0] + t->ea[0], e[1] + t->ea[1], e[2] + t->ea[2] };
+        int64_t ey[3] = { e[0] + t->eb[0], e[1] + t->eb[1], e[2] + t->eb[2] };
+        wgt_persp_any(&t->wgt, ex, b->px[j]);
+        wgt_persp_any(&t->wgt, ey, b->py[j]);
+    }
+}
+
+/* }==================================================================== */
+
+/* {====================================================================
+** depth, stencil (§4.1.5, §4.1.6) */
+
+/* every live fragment's window depth, with polygon offset */
+static void STAGE(stage_depth)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    for (int j = 0; j < b->n; j++) {
+        int64_t e[3];
+        chunk_edges(t, b, b->k[j], e);
+        WGT l[3];
+        wgt_linear(&t->wgt, e, l);
+        uint32_t z = wgt_depth3(t->v[0]->wz, t->v[1]->wz, t->v[2]->wz, l[0], l[1], l[2], ctx->depth_max);
+        b->z[j] = raster_offset_depth(ctx, t, z);
+    }
+}
+
+static void STAGE(stage_tests_early)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) { (void)t; tests(ctx, b, 0); }
+static void STAGE(stage_tests_late)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) { (void)t; tests(ctx, b, 1); }
+
+/* depth LESS with writes and no stencil: the common case, without the
+** per-fragment switches */
+static void STAGE(stage_zless_early)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    (void)t;
+    uint32_t *zb = ctx->depth + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
+    int m = 0;
+    for (int j = 0; j < b->n; j++) {
+        const int k = b->k[j];
+        uint32_t z = b->z[j];
+        if (z < zb[k]) {
+            zb[k] = z;
+            b->k[m++] = (uint8_t)k;
+        }
+    }
+    b->n = m;
+}
+
+/* }==================================================================== */
+
+/* {====================================================================
+** colour, texturing, fog, alpha test */
+
+static void STAGE(stage_color)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    const int texturing = ctx->tex_units_on != 0;
+#if CHAIN_SIMD && NUM_IS_FIXED
+    if (t->smooth) {
+        const __m256i a0 = avx2_load4(t->col[0]), a1 = avx2_load4(t->col[1]), a2 = avx2_load4(t->col[2]);
+        if (avx2_fits_i32(a0) && avx2_fits_i32(a1) && avx2_fits_i32(a2)) {
+            for (int j = 0; j < b->n; j++) {
+                __m256i c = avx2_lerp3f(a0, a1, a2, b->p[j]);
+                if (texturing) {
+                    c = avx2_clamp01(c);
+                    avx2_store4(b->cf[j], c);
+                }
+                avx2_store4(b->c[j], c);
+            }
+            return;
+        }
+    }
+#endif
+    for (int j = 0; j < b->n; j++) {
+        FRAGV *c = b->c[j];
+        if (t->smooth) {
+            const WGT *p = b->p[j];
+            for (int i = 0; i < 4; i++)
+                c[i] = frag_lerp3f(t->col[0][i], t->col[1][i], t->col[2][i], p[0], p[1], p[2]);
+        } else {
+            for (int i = 0; i < 4; i++)
+                c[i] = t->flat[i];
+        }
+        if (texturing)
+            for (int i = 0; i < 4; i++)
+                b->cf[j][i] = c[i] = frag_clamp01(c[i]);
+    }
+}
+
+/* one unit's texels for the chunk's coordinates b->tc (and b->tx, b->ty) */
+static void STAGE(chunk_sample)(GlesContext *ctx, SpanBuf *b, int u)
+{
+    ctx->samplers[u](ctx->units[u].bound, b->n, b->tc, b->tx, b->ty, b->ct[0][u], GLES_MAX_TEXTURE_UNITS * 4,
+                     ctx->texel_unorm8);
+}
+
+/* a triangle's coordinates of unit u for every live fragment, then its texels */
+static void STAGE(stage_fetch)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, int u)
+{
+    const int lod = texture_needs_lod(ctx->units[u].bound);
+#if CHAIN_SIMD && NUM_IS_FIXED
+    const __m256i a[3] = { avx2_load_num4(t->v[0]->tex[u]), avx2_load_num4(t->v[1]->tex[u]),
+                           avx2_load_num4(t->v[2]->tex[u]) };
+    const int proj = (t->tex_projective >> u) & 1;
+    for (int j = 0; j < b->n; j++)
+        avx2_tex_coord(proj, a, b->p[j], &b->tc[j]);
+    if (lod)
+        for (int j = 0; j < b->n; j++) {
+            avx2_tex_coord(proj, a, b->px[j], &b->tx[j]);
+            avx2_tex_coord(proj, a, b->py[j], &b->ty[j]);
+        }
+#else
+    for (int j = 0; j < b->n; j++)
+        span_tex_coord(t, u, b->p[j], &b->tc[j]);
+    if (lod)
+        for (int j = 0; j < b->n; j++) {
+            span_tex_coord(t, u, b->px[j], &b->tx[j]);
+            span_tex_coord(t, u, b->py[j], &b->ty[j]);
+        }
+#endif
+    STAGE(chunk_sample)(ctx, b, u);
+}
+
+/* a rectangle's coordinates of unit u for every live fragment, then its texels */
+static void STAGE(stage_fetch_rect)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, int u)
+{
+    (void)t;
+    const RectSetup *r = b->rect;
+    switch (r->coord[u]) {
+    case RECT_COORD_LINEAR:
+        for (int j = 0; j < b->n; j++)
+            rect_linear_coords(r, u, b->x0 + b->k[j], b->y, &b->tc[j], &b->tx[j], &b->ty[j]);
+        break;
+    case RECT_COORD_SPRITE:
+        for (int j = 0; j < b->n; j++)
+            sprite_coords(r->sprite_x, r->sprite_y, r->sprite_size, b->x0 + b->k[j], b->y, &b->tc[j], &b->tx[j],
+                          &b->ty[j]);
+        break;
+    default:
+        for (int j = 0; j < b->n; j++) {
+            b->tc[j] = r->in.tc[u];
+            b->tx[j] = r->in.tdx[u];
+            b->ty[j] = r->in.tdy[u];
+        }
+        break;
+    }
+    STAGE(chunk_sample)(ctx, b, u);
+}
+
+static void STAGE(stage_env)(GlesContext *ctx, SpanBuf *b, int u)
+{
+    const TexUnit *tu = &ctx->units[u];
+    const unsigned int fmt = tu->bound->format;
+    /* texture_env's REPLACE and MODULATE of RGBA and RGB textures, inline
+    ** (an RGB texture leaves the alpha as it is) */
+    const int k1 = fmt == GL_RGBA ? 4 : 3;
+    if (tu->env_mode == GL_MODULATE && (fmt == GL_RGBA || fmt == GL_RGB)) {
+        for (int j = 0; j < b->n; j++) {
+#if CHAIN_SIMD && NUM_IS_FIXED
+            const __m256i c = avx2_load4(b->c[j]), ct = avx2_load4(b->ct[j][u]);
+            if (avx2_fits_u31(c) && avx2_fits_u31(ct)) {
+                const __m256i m = avx2_mul_u(c, ct);
+                avx2_store4(b->c[j], k1 == 4 ? m : _mm256_blend_epi32(m, c, 0xC0));
+                continue;
+            }
+#endif
+            for (int i = 0; i < k1; i++)
+                b->c[j][i] = frag_mul(b->c[j][i], b->ct[j][u][i]);
+        }
+        return;
+    }
+    if (tu->env_mode == GL_REPLACE && (fmt == GL_RGBA || fmt == GL_RGB)) {
+        for (int j = 0; j < b->n; j++)
+            for (int i = 0; i < k1; i++)
+                b->c[j][i] = b->ct[j][u][i];
+        return;
+    }
+    texture_env_span(ctx, u, b->n, (const FRAGV (*)[4])b->cf, b->ct, b->c);
+}
+
+#define UNIT_STAGES(u) \
+    static void STAGE(stage_fetch##u)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) \
+    { \
+        STAGE(stage_fetch)(ctx, t, b, u); \
+    } \
+    static void STAGE(stage_fetch_rect##u)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) \
+    { \
+        STAGE(stage_fetch_rect)(ctx, t, b, u); \
+    } \
+    static void STAGE(stage_env##u)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) \
+    { \
+        (void)t; \
+        STAGE(stage_env)(ctx, b, u); \
+    }
+UNIT_STAGES(0)
+UNIT_STAGES(1)
+UNIT_STAGES(2)
+UNIT_STAGES(3)
+#undef UNIT_STAGES
+
+/* fragment_fog of one fragment */
+static inline void STAGE(chunk_fog)(FRAGV c[4], FRAGV f, const FRAGV fc[3])
+{
+#if CHAIN_SIMD && NUM_IS_FIXED
+    /* f and the fog colour are in [0, 1]; the colour is clamped first */
+    const __m256i v = avx2_load4(c), fv = _mm256_set1_epi64x(f), g = _mm256_set1_epi64x(FRAG_ONE - f);
+    const __m256i fog = _mm256_setr_epi64x(fc[0], fc[1], fc[2], 0);
+    if (f >= 0 && f <= FRAG_ONE && avx2_fits_u31(fog)) {
+        const __m256i m = _mm256_add_epi64(avx2_mul_u(fv, avx2_clamp01(v)), avx2_mul_u(g, fog));
+        avx2_store4(c, _mm256_blend_epi32(m, v, 0xC0));
+        return;
+    }
+#endif
+    fragment_fog(c, f, fc);
+}
+
+/* fog (§3.8) with the factor interpolated, or from the interpolated distance */
+static void STAGE(stage_fog)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    const Vertex *v0 = t->v[0], *v1 = t->v[1], *v2 = t->v[2];
+    FRAGV fc[3];
+    fragment_fog_color(ctx, fc);
+    for (int j = 0; j < b->n; j++) {
+        const WGT *p = b->p[j];
+        FRAGV f = ctx->fog_per_fragment
+                      ? frag_from_num(fog_factor(ctx, wgt_lerp3(v0->fog, v1->fog, v2->fog, p[0], p[1], p[2])))
+                      : frag_clamp01(frag_lerp3(v0->fog, v1->fog, v2->fog, p[0], p[1], p[2]));
+        STAGE(chunk_fog)(b->c[j], f, fc);
+    }
+}
+
+/* fog with one factor for the whole rectangle */
+static void STAGE(stage_fog_const)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    (void)t;
+    FRAGV fc[3];
+    fragment_fog_color(ctx, fc);
+    for (int j = 0; j < b->n; j++)
+        STAGE(chunk_fog)(b->c[j], b->rect->in.fog, fc);
+}
+
+static void STAGE(stage_alpha)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    (void)t;
+    uint8_t keep[SPAN_CHUNK];
+    for (int j = 0; j < b->n; j++)
+        keep[j] = (uint8_t)fragment_alpha_pass(ctx, b->c[j][3]);
+    chunk_compact(b, keep, 1);
+}
+
+/* }==================================================================== */
+
+/* {====================================================================
+** the write: blending, dither, logic op, masks (§4.1.7-4.1.10) */
+
+/* every state: fragment_process's tail */
+static void STAGE(stage_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    (void)t;
+    const size_t row = (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
+    FragWrite w;
+    fragment_write_setup(ctx, &w);
+    for (int j = 0; j < b->n; j++)
+        fragment_write(ctx, &w, b->x0 + b->k[j], b->y, row + b->k[j], b->c[j]);
+}
+
+/* RGBA8888, every channel written, no blend or logic op */
+static void STAGE(stage_write_rgba8)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    (void)t;
+    uint32_t *dst = (uint32_t *)ctx->color + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
+    for (int j = 0; j < b->n; j++) {
+        const FRAGV *c = b->c[j];
+#if CHAIN_SIMD && NUM_IS_FIXED
+        dst[b->k[j]] = avx2_pack_unorm8(avx2_clamp01(avx2_load4(c)));
+#else
+        dst[b->k[j]] = frag_to_unorm(c[0], 255, FRAG_ONE / 2) | (frag_to_unorm(c[1], 255, FRAG_ONE / 2) << 8)
+                     | (frag_to_unorm(c[2], 255, FRAG_ONE / 2) << 16) | (frag_to_unorm(c[3], 255, FRAG_ONE / 2) << 24);
+#endif
+    }
+}
+
+/* RGBA8888, every channel written, SRC_ALPHA, ONE_MINUS_SRC_ALPHA with
+** FUNC_ADD (fragment_blend's arithmetic for those factors) */
+static void STAGE(stage_write_rgba8_alpha)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    (void)t;
+    uint32_t *dst = (uint32_t *)ctx->color + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
+    for (int j = 0; j < b->n; j++) {
+        const FRAGV *c = b->c[j];
+        uint32_t d = dst[b->k[j]], out = 0;
+#if CHAIN_SIMD && NUM_IS_FIXED
+        const __m256i cv = avx2_clamp01(avx2_load4(c)), sav = _mm256_permute4x64_epi64(cv, 0xFF);
+        const __m256i dav = _mm256_sub_epi64(_mm256_set1_epi64x(FRAG_ONE), sav);
+        dst[b->k[j]] = avx2_pack_unorm8(_mm256_add_epi64(avx2_mul_u(cv, sav), avx2_mul_u(avx2_unorm8(d), dav)));
+        (void)out;
+        continue;
+#endif
+        FRAGV sa = frag_clamp01(c[3]), da = FRAG_ONE - sa;
+        for (int i = 0; i < 4; i++) {
+            FRAGV v = frag_mul(frag_clamp01(c[i]), sa) + frag_mul(ctx->unorm8[(d >> (8 * i)) & 0xFFu], da);
+            out |= frag_to_unorm(v, 255, FRAG_ONE / 2) << (8 * i);
+        }
+        dst[b->k[j]] = out;
+    }
+}
+
+/* RGBA8888, every channel written, ONE, ONE with FUNC_ADD */
+static void STAGE(stage_write_rgba8_add)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    (void)t;
+    uint32_t *dst = (uint32_t *)ctx->color + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
+    for (int j = 0; j < b->n; j++) {
+        const FRAGV *c = b->c[j];
+        uint32_t d = dst[b->k[j]], out = 0;
+#if CHAIN_SIMD && NUM_IS_FIXED
+        /* frag_mul(x, FRAG_ONE) is x for x >= 0 */
+        dst[b->k[j]] = avx2_pack_unorm8(_mm256_add_epi64(avx2_clamp01(avx2_load4(c)), avx2_unorm8(d)));
+        (void)out;
+        continue;
+#endif
+        for (int i = 0; i < 4; i++) {
+            FRAGV v = frag_mul(frag_clamp01(c[i]), FRAG_ONE) + frag_mul(ctx->unorm8[(d >> (8 * i)) & 0xFFu], FRAG_ONE);
+            out |= frag_to_unorm(v, 255, FRAG_ONE / 2) << (8 * i);
+        }
+        dst[b->k[j]] = out;
+    }
+}
+
+/* RGB565, red, green and blue written, no blend or logic op */
+static void STAGE(stage_write_565)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    (void)t;
+    uint16_t *dst = (uint16_t *)ctx->color + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
+    const int dither = ctx->dither;
+    for (int j = 0; j < b->n; j++) {
+        FRAGV t_d = dither ? fragment_dither_threshold(b->x0 + b->k[j], b->y) : FRAG_ONE / 2;
+        dst[b->k[j]] = (uint16_t)pack565(b->c[j], dither, t_d);
+    }
+}
+
+/* RGB565, red, green and blue written, SRC_ALPHA, ONE_MINUS_SRC_ALPHA with
+** FUNC_ADD (fragment_blend's arithmetic for those factors) */
+static void STAGE(stage_write_565_alpha)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    (void)t;
+    uint16_t *dst = (uint16_t *)ctx->color + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
+    const int dither = ctx->dither;
+    for (int j = 0; j < b->n; j++) {
+        const FRAGV *c = b->c[j];
+        uint32_t d = dst[b->k[j]];
+        FRAGV sa = frag_clamp01(c[3]), da = FRAG_ONE - sa;
+        FRAGV dv[3] = { ctx->unorm5[d >> 11], ctx->unorm6[(d >> 5) & 63], ctx->unorm5[d & 31] };
+        FRAGV v[3];
+        for (int i = 0; i < 3; i++)
+            v[i] = frag_mul(frag_clamp01(c[i]), sa) + frag_mul(dv[i], da);
+        FRAGV t_d = dither ? fragment_dither_threshold(b->x0 + b->k[j], b->y) : FRAG_ONE / 2;
+        dst[b->k[j]] = (uint16_t)pack565(v, dither, t_d);
+    }
+}
+
+/* }==================================================================== */
+
+/* {====================================================================
+** composition and the driver */
+
+/* a rectangle's constant inputs for the chunk's slots (its first stage, so
+** every later slot a fragment can move to is among them) */
+static void STAGE(stage_rect_source)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    (void)t;
+    const FragIn *in = &b->rect->in;
+    const int texturing = ctx->tex_units_on != 0;
+    for (int j = 0; j < b->n; j++) {
+        b->z[j] = in->z;
+        for (int i = 0; i < 4; i++)
+            b->c[j][i] = texturing ? frag_clamp01(in->c[i]) : in->c[i];
+        if (texturing)
+            for (int i = 0; i < 4; i++)
+                b->cf[j][i] = b->c[j][i];
+    }
+}
+
+/* }==================================================================== */
+
+static const ChainStages STAGE(chain_stages) = {
+    .persp = STAGE(stage_persp),
+    .neighbours = STAGE(stage_neighbours),
+    .depth = STAGE(stage_depth),
+    .tests_early = STAGE(stage_tests_early),
+    .tests_late = STAGE(stage_tests_late),
+    .zless_early = STAGE(stage_zless_early),
+    .color = STAGE(stage_color),
+    .fetch = { STAGE(stage_fetch0), STAGE(stage_fetch1), STAGE(stage_fetch2), STAGE(stage_fetch3) },
+    .fetch_rect = { STAGE(stage_fetch_rect0), STAGE(stage_fetch_rect1), STAGE(stage_fetch_rect2),
+                    STAGE(stage_fetch_rect3) },
+    .env = { STAGE(stage_env0), STAGE(stage_env1), STAGE(stage_env2), STAGE(stage_env3) },
+    .fog = STAGE(stage_fog),
+    .fog_const = STAGE(stage_fog_const),
+    .alpha = STAGE(stage_alpha),
+    .write = STAGE(stage_write),
+    .write_rgba8 = STAGE(stage_write_rgba8),
+    .write_rgba8_alpha = STAGE(stage_write_rgba8_alpha),
+    .write_rgba8_add = STAGE(stage_write_rgba8_add),
+    .write_565 = STAGE(stage_write_565),
+    .write_565_alpha = STAGE(stage_write_565_alpha),
+    .rect_source = STAGE(stage_rect_source),
+};
+

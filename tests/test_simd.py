@@ -1,0 +1,123 @@
+"""The vector instance of the span stages against the baseline and the reference.
+
+Where the CPU has AVX2 (``ctx.simd == "avx2"``) the fragment chain and the
+texture samplers run an AVX2 instance (csrc/span_stages.h, span_avx2.h);
+``ctx.debug(16)`` runs the baseline instance, ``ctx.debug(1)`` the
+per-fragment reference. The random-state tests (test_span_chain.py,
+test_rect_chain.py) compare all three; these tests cover the kernels'
+operand ranges exhaustively: every framebuffer byte under every source
+alpha for the blending writers, and every texel byte under the bilinear
+weights' extremes.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from conftest import BUILDS, HAS_SIMD, make_ctx
+
+from gles import constants as C
+
+PATHS = {"reference": 1, "chain": 0, "baseline": 16}
+
+
+def test_simd_name_and_switch():
+    ctx = make_ctx("fixed", 4, 4)
+    assert ctx.simd in ("avx2", "baseline")
+    ctx.debug(16)
+    assert ctx.simd == "baseline"
+    ctx.debug(0)
+    assert ctx.simd == ("avx2" if HAS_SIMD else "baseline")
+
+
+def _texture(gl, img: np.ndarray, filt: int) -> None:
+    tex = gl.glGenTextures(1)
+    gl.glBindTexture(C.GL_TEXTURE_2D, tex)
+    for p, v in ((C.GL_TEXTURE_MIN_FILTER, filt), (C.GL_TEXTURE_MAG_FILTER, filt),
+                 (C.GL_TEXTURE_WRAP_S, C.GL_REPEAT), (C.GL_TEXTURE_WRAP_T, C.GL_REPEAT)):
+        gl.glTexParameteri(C.GL_TEXTURE_2D, p, v)
+    h, w = img.shape[:2]
+    gl.glTexImage2D(C.GL_TEXTURE_2D, 0, C.GL_RGBA, w, h, 0, C.GL_RGBA, C.GL_UNSIGNED_BYTE, img)
+
+
+def _blend_scene(numeric: str, flags: int, blend: tuple[int, int] | None) -> np.ndarray:
+    """A 256x256 framebuffer holding every byte value in every channel (a
+    REPLACE blit of a texture), then a smooth quad whose alpha runs over
+    [0, 1] across x and colour over [0, 1] across y, blended by `blend`."""
+    ctx = make_ctx(numeric, 256, 256)
+    ctx.debug(flags)
+    gl = ctx.gl
+    x, y = np.meshgrid(np.arange(256), np.arange(256))
+    dst = np.stack([x, y, 255 - x, (x + 3 * y) % 256], axis=-1).astype(np.uint8)
+    gl.glEnable(C.GL_TEXTURE_2D)
+    _texture(gl, dst, C.GL_NEAREST)
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_REPLACE)
+    gl.glDrawTexiOES(0, 0, 0, 256, 256)
+    gl.glDisable(C.GL_TEXTURE_2D)
+    if blend:
+        gl.glEnable(C.GL_BLEND)
+        gl.glBlendFunc(*blend)
+    gl.glMatrixMode(C.GL_PROJECTION)
+    gl.glOrthof(0, 256, 0, 256, -1, 1)
+    gl.glMatrixMode(C.GL_MODELVIEW)
+    verts = np.array([[0, 0], [256, 0], [256, 256], [0, 256]], np.float32)
+    cols = np.array([[0, 0, 1, 0], [1, 0.5, 0, 1], [0, 1, 1, 1], [1, 1, 0, 0]], np.float32)
+    gl.glEnableClientState(C.GL_VERTEX_ARRAY)
+    gl.glVertexPointer(2, C.GL_FLOAT, 0, verts)
+    gl.glEnableClientState(C.GL_COLOR_ARRAY)
+    gl.glColorPointer(4, C.GL_FLOAT, 0, cols)
+    gl.glShadeModel(C.GL_SMOOTH)
+    gl.glDrawArrays(C.GL_TRIANGLE_FAN, 0, 4)
+    assert gl.glGetError() == C.GL_NO_ERROR
+    return ctx.color_buffer()
+
+
+@pytest.mark.parametrize("numeric", BUILDS)
+@pytest.mark.parametrize("blend", [None, (C.GL_SRC_ALPHA, C.GL_ONE_MINUS_SRC_ALPHA), (C.GL_ONE, C.GL_ONE)],
+                         ids=["replace", "alpha", "add"])
+def test_writers_over_every_byte(numeric, blend):
+    """Every destination byte under every source alpha: the same bits on every path."""
+    ref = _blend_scene(numeric, PATHS["reference"], blend)
+    for name in ("chain", "baseline"):
+        np.testing.assert_array_equal(_blend_scene(numeric, PATHS[name], blend), ref, err_msg=name)
+
+
+def _bilinear_scene(numeric: str, flags: int, env: int) -> np.ndarray:
+    """A 16x16 texture of extreme and random bytes, magnified 16x with
+    GL_LINEAR (so the weights take every 1/16 step, 0 included) and
+    shifted by a fraction of a texel, under MODULATE or REPLACE."""
+    ctx = make_ctx(numeric, 128, 128)
+    ctx.debug(flags)
+    gl = ctx.gl
+    rng = np.random.default_rng(7)
+    img = rng.integers(0, 256, (16, 16, 4), dtype=np.uint8)
+    img[::3] = 255
+    img[1::5] = 0
+    gl.glEnable(C.GL_TEXTURE_2D)
+    _texture(gl, img, C.GL_LINEAR)
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, env)
+    gl.glMatrixMode(C.GL_PROJECTION)
+    gl.glOrthof(0, 128, 0, 128, -1, 1)
+    gl.glMatrixMode(C.GL_MODELVIEW)
+    verts = np.array([[0, 0], [128, 0], [128, 128], [0, 128]], np.float32)
+    tc = (np.array([[0, 0], [1, 0], [1, 1], [0, 1]], np.float32) * 0.5 + 0.013).astype(np.float32)
+    cols = np.array([[255, 0, 128, 255], [0, 255, 255, 128], [255, 255, 0, 0], [10, 200, 90, 255]], np.uint8)
+    gl.glEnableClientState(C.GL_VERTEX_ARRAY)
+    gl.glVertexPointer(2, C.GL_FLOAT, 0, verts)
+    gl.glEnableClientState(C.GL_TEXTURE_COORD_ARRAY)
+    gl.glTexCoordPointer(2, C.GL_FLOAT, 0, tc)
+    gl.glEnableClientState(C.GL_COLOR_ARRAY)
+    gl.glColorPointer(4, C.GL_UNSIGNED_BYTE, 0, cols)
+    gl.glEnable(C.GL_BLEND)
+    gl.glBlendFunc(C.GL_SRC_ALPHA, C.GL_ONE_MINUS_SRC_ALPHA)
+    gl.glDrawArrays(C.GL_TRIANGLE_FAN, 0, 4)
+    assert gl.glGetError() == C.GL_NO_ERROR
+    return ctx.color_buffer()
+
+
+@pytest.mark.parametrize("numeric", BUILDS)
+@pytest.mark.parametrize("env", [C.GL_MODULATE, C.GL_REPLACE], ids=["modulate", "replace"])
+def test_bilinear_over_extreme_texels(numeric, env):
+    ref = _bilinear_scene(numeric, PATHS["reference"], env)
+    for name in ("chain", "baseline"):
+        np.testing.assert_array_equal(_bilinear_scene(numeric, PATHS[name], env), ref, err_msg=name)
