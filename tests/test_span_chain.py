@@ -794,7 +794,7 @@ def check_scene(scene: dict) -> list[str]:
         assert base["error"] == ref["error"]
         for name in ("color", "depth", "stencil"):
             if ref[name] is not None:
-                np.testing.assert_array_equal(base[name], ref[name], err_msg=f"baseline stages, {name} buffer")
+                np.testing.assert_array_equal(base[name], ref[name], err_msg=f"baseline, {name}")
     assert ref["paths"] and all(p == "generic" for p in ref["paths"]), ref["paths"]
     assert all(isinstance(p, str) and p for p in out["paths"]), out["paths"]
     assert ref["error"] == C.GL_NO_ERROR, f"the scene itself is invalid: error {ref['error']:#x}"
