@@ -211,5 +211,102 @@ static inline void avx2_sample_linear(const TexImage *li, int n, const TexCoord 
     }
 }
 
+
+/* {====================================================================
+** V4: a fragment's four channels, the interface span_stages.h uses in
+** every build. v4_mul01 and v4_lerp3 take operands for which v4_fits and
+** v4_lerp_fits hold; the stages check and leave other fragments to the
+** scalar code. */
+typedef __m256i V4;
+AVX2_INLINE V4 v4_load(const FRAGV *c) { return avx2_load4(c); }
+AVX2_INLINE void v4_store(FRAGV *c, V4 v) { avx2_store4(c, v); }
+AVX2_INLINE V4 v4_clamp01(V4 v) { return avx2_clamp01(v); }
+AVX2_INLINE int v4_fits(V4 v) { return avx2_fits_u31(v); }
+AVX2_INLINE V4 v4_mul01(V4 a, V4 b) { return avx2_mul_u(a, b); }
+AVX2_INLINE V4 v4_add(V4 a, V4 b) { return _mm256_add_epi64(a, b); }
+AVX2_INLINE V4 v4_one_minus(V4 a) { return _mm256_sub_epi64(_mm256_set1_epi64x(FRAG_ONE), a); }
+AVX2_INLINE V4 v4_alpha(V4 a) { return _mm256_permute4x64_epi64(a, 0xFF); }
+AVX2_INLINE V4 v4_set1(FRAGV f) { return _mm256_set1_epi64x(f); }
+AVX2_INLINE V4 v4_rgb0(const FRAGV c[3]) { return _mm256_setr_epi64x(c[0], c[1], c[2], 0); }
+/* lanes 0-2 of m, lane 3 of c */
+AVX2_INLINE V4 v4_keep_alpha(V4 m, V4 c) { return _mm256_blend_epi32(m, c, 0xC0); }
+AVX2_INLINE V4 v4_unorm8(uint32_t word) { return avx2_unorm8(word); }
+/* frag_to_unorm(v, 255, 1/2) of each channel, packed as RGBA8888 */
+AVX2_INLINE uint32_t v4_pack_unorm8(V4 v) { return avx2_pack_unorm8(avx2_clamp01(v)); }
+AVX2_INLINE int v4_lerp_fits(V4 a) { return avx2_fits_i32(a); }
+AVX2_INLINE V4 v4_lerp3f(V4 a0, V4 a1, V4 a2, const WGT *p) { return avx2_lerp3f(a0, a1, a2, p); }
+/* }==================================================================== */
+#endif
+
+#if SIMD_X86 && !NUM_IS_FIXED
+#include <immintrin.h>
+
+#define AVX2_INLINE static inline __attribute__((always_inline))
+
+/* V4 (see the fixed build's above) for NUM = float (SSE) or double (AVX):
+** the same IEEE operations, lane by lane, in the scalar code's order */
+#if defined(GLES_NUM_FLOAT)
+typedef __m128 V4;
+#define V4_OP(op) _mm_##op##_ps
+AVX2_INLINE V4 v4_from_i32(__m128i v) { return _mm_cvtepi32_ps(v); }
+AVX2_INLINE __m128i v4_trunc_i32(V4 v) { return _mm_cvttps_epi32(v); }
+AVX2_INLINE V4 v4_gt(V4 a, V4 b) { return _mm_cmpgt_ps(a, b); }
+AVX2_INLINE V4 v4_ge(V4 a, V4 b) { return _mm_cmpge_ps(a, b); }
+AVX2_INLINE V4 v4_keep_alpha(V4 m, V4 c) { return _mm_blend_ps(m, c, 8); }
+AVX2_INLINE V4 v4_alpha(V4 a) { return _mm_shuffle_ps(a, a, 0xFF); }
+#else
+typedef __m256d V4;
+#define V4_OP(op) _mm256_##op##_pd
+AVX2_INLINE V4 v4_from_i32(__m128i v) { return _mm256_cvtepi32_pd(v); }
+AVX2_INLINE __m128i v4_trunc_i32(V4 v) { return _mm256_cvttpd_epi32(v); }
+AVX2_INLINE V4 v4_gt(V4 a, V4 b) { return _mm256_cmp_pd(a, b, _CMP_GT_OQ); }
+AVX2_INLINE V4 v4_ge(V4 a, V4 b) { return _mm256_cmp_pd(a, b, _CMP_GE_OQ); }
+AVX2_INLINE V4 v4_keep_alpha(V4 m, V4 c) { return _mm256_blend_pd(m, c, 8); }
+AVX2_INLINE V4 v4_alpha(V4 a) { return _mm256_permute4x64_pd(a, 0xFF); }
+#endif
+AVX2_INLINE V4 v4_load(const FRAGV *c) { return V4_OP(loadu)(c); }
+AVX2_INLINE void v4_store(FRAGV *c, V4 v) { V4_OP(storeu)(c, v); }
+AVX2_INLINE V4 v4_set1(FRAGV f) { return V4_OP(set1)(f); }
+AVX2_INLINE V4 v4_rgb0(const FRAGV c[3]) { return V4_OP(setr)(c[0], c[1], c[2], 0); }
+AVX2_INLINE V4 v4_add(V4 a, V4 b) { return V4_OP(add)(a, b); }
+AVX2_INLINE V4 v4_mul(V4 a, V4 b) { return V4_OP(mul)(a, b); }
+AVX2_INLINE V4 v4_mul01(V4 a, V4 b) { return V4_OP(mul)(a, b); }
+AVX2_INLINE V4 v4_one_minus(V4 a) { return V4_OP(sub)(V4_OP(set1)(1), a); }
+AVX2_INLINE int v4_fits(V4 v) { (void)v; return 1; }
+AVX2_INLINE int v4_lerp_fits(V4 v) { (void)v; return 1; }
+/* frag_clamp01: v < 0 ? 0 : (v > 1 ? 1 : v); max and min return their
+** second operand when unordered or equal, so NaN and -0 pass as there */
+AVX2_INLINE V4 v4_clamp01(V4 v) { return V4_OP(min)(V4_OP(set1)(1), V4_OP(max)(V4_OP(setzero)(), v)); }
+/* the four bytes of a word as d / 255 (frag_from_unorm, ctx->unorm8) */
+AVX2_INLINE V4 v4_unorm8(uint32_t word)
+{
+    return V4_OP(div)(v4_from_i32(_mm_cvtepu8_epi32(_mm_cvtsi32_si128((int)word))), V4_OP(set1)(255));
+}
+/* frag_to_unorm(v, 255, 1/2): 0 unless v > 0, 255 from 1 up, else v 255 + 1/2 truncated */
+AVX2_INLINE uint32_t v4_pack_unorm8(V4 v)
+{
+    const V4 zero = V4_OP(setzero)(), one = V4_OP(set1)(1);
+    V4 x = V4_OP(add)(V4_OP(mul)(v, V4_OP(set1)(255)), V4_OP(set1)(0.5));
+    x = V4_OP(blendv)(x, V4_OP(set1)(255), v4_ge(v, one));
+    x = V4_OP(blendv)(zero, x, v4_gt(v, zero));
+    __m128i i = v4_trunc_i32(x);
+    i = _mm_packus_epi16(_mm_packus_epi32(i, i), _mm_setzero_si128());
+    return (uint32_t)_mm_cvtsi128_si32(i);
+}
+/* frag_lerp3f: a0 w0 + a1 w1 + a2 w2 */
+AVX2_INLINE V4 v4_lerp3f(V4 a0, V4 a1, V4 a2, const WGT *p)
+{
+    return V4_OP(add)(V4_OP(add)(V4_OP(mul)(a0, V4_OP(set1)(p[0])), V4_OP(mul)(a1, V4_OP(set1)(p[1]))),
+                      V4_OP(mul)(a2, V4_OP(set1)(p[2])));
+}
+/* frag_bilerp_rgba8: (v00 (1-a) + v10 a)(1-b) + (v01 (1-a) + v11 a) b per channel */
+static inline void avx2_bilerp_rgba8(uint32_t c00, uint32_t c10, uint32_t c01, uint32_t c11, TEXW a, TEXW b,
+                                     FRAGV out[4])
+{
+    const V4 va = V4_OP(set1)(a), vb = V4_OP(set1)(b), ia = V4_OP(set1)(1 - a), ib = V4_OP(set1)(1 - b);
+    const V4 top = V4_OP(add)(V4_OP(mul)(v4_unorm8(c00), ia), V4_OP(mul)(v4_unorm8(c10), va));
+    const V4 bot = V4_OP(add)(V4_OP(mul)(v4_unorm8(c01), ia), V4_OP(mul)(v4_unorm8(c11), va));
+    v4_store(out, V4_OP(add)(V4_OP(mul)(top, ib), V4_OP(mul)(bot, vb)));
+}
 #endif
 #endif

@@ -2,9 +2,9 @@
 ** span_stages.h -- the span chain's stages, a template that span_chain.c
 ** instantiates twice: for the baseline instruction set, and (on x86-64)
 ** for AVX2, chosen at run time. STAGE(name) gives each instance's names;
-** CHAIN_SIMD is 1 in the AVX2 instance, where the hottest fixed-build
-** stages use the vector kernels of span_avx2.h and the rest are the same
-** loops, vectorized by the compiler for AVX2. Every instance computes the
+** CHAIN_SIMD is 1 in the AVX2 instance, where the hottest stages work on
+** a fragment's four channels at once (V4, span_avx2.h) and the rest are
+** the same loops, vectorized by the compiler for AVX2. Every instance computes the
 ** same bits as the per-fragment reference (fragment_process).
 */
 /* {====================================================================
@@ -82,17 +82,17 @@ static void STAGE(stage_zless_early)(GlesContext *ctx, const TriSetup *t, SpanBu
 static void STAGE(stage_color)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     const int texturing = ctx->tex_units_on != 0;
-#if CHAIN_SIMD && NUM_IS_FIXED
+#if CHAIN_SIMD
     if (t->smooth) {
-        const __m256i a0 = avx2_load4(t->col[0]), a1 = avx2_load4(t->col[1]), a2 = avx2_load4(t->col[2]);
-        if (avx2_fits_i32(a0) && avx2_fits_i32(a1) && avx2_fits_i32(a2)) {
+        const V4 a0 = v4_load(t->col[0]), a1 = v4_load(t->col[1]), a2 = v4_load(t->col[2]);
+        if (v4_lerp_fits(a0) && v4_lerp_fits(a1) && v4_lerp_fits(a2)) {
             for (int j = 0; j < b->n; j++) {
-                __m256i c = avx2_lerp3f(a0, a1, a2, b->p[j]);
+                V4 c = v4_lerp3f(a0, a1, a2, b->p[j]);
                 if (texturing) {
-                    c = avx2_clamp01(c);
-                    avx2_store4(b->cf[j], c);
+                    c = v4_clamp01(c);
+                    v4_store(b->cf[j], c);
                 }
-                avx2_store4(b->c[j], c);
+                v4_store(b->c[j], c);
             }
             return;
         }
@@ -183,11 +183,11 @@ static void STAGE(stage_env)(GlesContext *ctx, SpanBuf *b, int u)
     const int k1 = fmt == GL_RGBA ? 4 : 3;
     if (tu->env_mode == GL_MODULATE && (fmt == GL_RGBA || fmt == GL_RGB)) {
         for (int j = 0; j < b->n; j++) {
-#if CHAIN_SIMD && NUM_IS_FIXED
-            const __m256i c = avx2_load4(b->c[j]), ct = avx2_load4(b->ct[j][u]);
-            if (avx2_fits_u31(c) && avx2_fits_u31(ct)) {
-                const __m256i m = avx2_mul_u(c, ct);
-                avx2_store4(b->c[j], k1 == 4 ? m : _mm256_blend_epi32(m, c, 0xC0));
+#if CHAIN_SIMD
+            const V4 c = v4_load(b->c[j]), ct = v4_load(b->ct[j][u]);
+            if (v4_fits(c) && v4_fits(ct)) {
+                const V4 m = v4_mul01(c, ct);
+                v4_store(b->c[j], k1 == 4 ? m : v4_keep_alpha(m, c));
                 continue;
             }
 #endif
@@ -228,13 +228,11 @@ UNIT_STAGES(3)
 /* fragment_fog of one fragment */
 static inline void STAGE(chunk_fog)(FRAGV c[4], FRAGV f, const FRAGV fc[3])
 {
-#if CHAIN_SIMD && NUM_IS_FIXED
-    /* f and the fog colour are in [0, 1]; the colour is clamped first */
-    const __m256i v = avx2_load4(c), fv = _mm256_set1_epi64x(f), g = _mm256_set1_epi64x(FRAG_ONE - f);
-    const __m256i fog = _mm256_setr_epi64x(fc[0], fc[1], fc[2], 0);
-    if (f >= 0 && f <= FRAG_ONE && avx2_fits_u31(fog)) {
-        const __m256i m = _mm256_add_epi64(avx2_mul_u(fv, avx2_clamp01(v)), avx2_mul_u(g, fog));
-        avx2_store4(c, _mm256_blend_epi32(m, v, 0xC0));
+#if CHAIN_SIMD
+    /* the colour is clamped first; f and the fog colour must fit */
+    const V4 v = v4_load(c), fv = v4_set1(f), g = v4_set1(FRAG_ONE - f), fog = v4_rgb0(fc);
+    if (v4_fits(fv) && v4_fits(g) && v4_fits(fog)) {
+        v4_store(c, v4_keep_alpha(v4_add(v4_mul01(fv, v4_clamp01(v)), v4_mul01(g, fog)), v));
         return;
     }
 #endif
@@ -298,8 +296,8 @@ static void STAGE(stage_write_rgba8)(GlesContext *ctx, const TriSetup *t, SpanBu
     uint32_t *dst = (uint32_t *)ctx->color + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
     for (int j = 0; j < b->n; j++) {
         const FRAGV *c = b->c[j];
-#if CHAIN_SIMD && NUM_IS_FIXED
-        dst[b->k[j]] = avx2_pack_unorm8(avx2_clamp01(avx2_load4(c)));
+#if CHAIN_SIMD
+        dst[b->k[j]] = v4_pack_unorm8(v4_load(c));
 #else
         dst[b->k[j]] = frag_to_unorm(c[0], 255, FRAG_ONE / 2) | (frag_to_unorm(c[1], 255, FRAG_ONE / 2) << 8)
                      | (frag_to_unorm(c[2], 255, FRAG_ONE / 2) << 16) | (frag_to_unorm(c[3], 255, FRAG_ONE / 2) << 24);
@@ -316,10 +314,9 @@ static void STAGE(stage_write_rgba8_alpha)(GlesContext *ctx, const TriSetup *t, 
     for (int j = 0; j < b->n; j++) {
         const FRAGV *c = b->c[j];
         uint32_t d = dst[b->k[j]], out = 0;
-#if CHAIN_SIMD && NUM_IS_FIXED
-        const __m256i cv = avx2_clamp01(avx2_load4(c)), sav = _mm256_permute4x64_epi64(cv, 0xFF);
-        const __m256i dav = _mm256_sub_epi64(_mm256_set1_epi64x(FRAG_ONE), sav);
-        dst[b->k[j]] = avx2_pack_unorm8(_mm256_add_epi64(avx2_mul_u(cv, sav), avx2_mul_u(avx2_unorm8(d), dav)));
+#if CHAIN_SIMD
+        const V4 cv = v4_clamp01(v4_load(c)), va = v4_alpha(cv);
+        dst[b->k[j]] = v4_pack_unorm8(v4_add(v4_mul01(cv, va), v4_mul01(v4_unorm8(d), v4_one_minus(va))));
         (void)out;
         continue;
 #endif
@@ -340,9 +337,9 @@ static void STAGE(stage_write_rgba8_add)(GlesContext *ctx, const TriSetup *t, Sp
     for (int j = 0; j < b->n; j++) {
         const FRAGV *c = b->c[j];
         uint32_t d = dst[b->k[j]], out = 0;
-#if CHAIN_SIMD && NUM_IS_FIXED
-        /* frag_mul(x, FRAG_ONE) is x for x >= 0 */
-        dst[b->k[j]] = avx2_pack_unorm8(_mm256_add_epi64(avx2_clamp01(avx2_load4(c)), avx2_unorm8(d)));
+#if CHAIN_SIMD
+        /* frag_mul(x, FRAG_ONE) is x for x in [0, 1] */
+        dst[b->k[j]] = v4_pack_unorm8(v4_add(v4_clamp01(v4_load(c)), v4_unorm8(d)));
         (void)out;
         continue;
 #endif

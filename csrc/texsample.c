@@ -80,7 +80,7 @@ SAMPLE_INLINE void sample_level(const Texture *t, int level, unsigned int filter
     int x0 = wrap_index(i0, w, ws), x1 = wrap_index(i0 + 1, w, ws);
     int y0 = wrap_index(j0, h, wt), y1 = wrap_index(j0 + 1, h, wt);
     const uint32_t *r0 = li->texels + (size_t)y0 * w, *r1 = li->texels + (size_t)y1 * w;
-#if SIMD_X86 && NUM_IS_FIXED
+#if SIMD_X86
     if (simd) {
         avx2_bilerp_rgba8(r0[x0], r0[x1], r1[x0], r1[x1], a, b, out);
         return;
