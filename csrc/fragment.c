@@ -202,27 +202,9 @@ int fragment_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)
 /* {====================================================================
 ** per-pixel arithmetic */
 
-int fragment_compare(unsigned int func, uint32_t a, uint32_t b)
-{
-    switch (func) {
-    case GL_NEVER: return 0;
-    case GL_LESS: return a < b;
-    case GL_EQUAL: return a == b;
-    case GL_LEQUAL: return a <= b;
-    case GL_GREATER: return a > b;
-    case GL_NOTEQUAL: return a != b;
-    case GL_GEQUAL: return a >= b;
-    default: return 1;
-    }
-}
-
-/* §4.1.4, compared at 8 bits as the framebuffer's colour precision: an
-** EQUAL test then matches the alpha a ubyte colour or texel gives */
 int fragment_alpha_pass(const GlesContext *ctx, FRAGV alpha)
 {
-    uint32_t a = frag_to_unorm(alpha, 255, FRAG_ONE / 2);
-    uint32_t r = (uint32_t)dbl_to_i64(ctx->alpha_ref * 255.0, 0, 255);
-    return fragment_compare(ctx->alpha_func, a, r);
+    return fragment_compare(ctx->alpha_func, fragment_alpha8(alpha), fragment_alpha_ref8(ctx));
 }
 
 /* §4.1.5: the reference is clamped to [0, 2^s - 1]; both sides masked */

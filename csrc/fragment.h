@@ -36,7 +36,27 @@ static inline uint32_t fragment_channel(FRAGV v, int bits, int dither, FRAGV t)
     return dither ? frag_to_unorm(v, (1u << bits) - 1, t) : frag_to_msb(v, bits);
 }
 int fragment_get(GlesContext *ctx, unsigned int pname, double *out, int *kind);
-int fragment_compare(unsigned int func, uint32_t a, uint32_t b);
+/* the comparison of a test function (§4.1.4-4.1.6): a FUNC b */
+static inline int fragment_compare(unsigned int func, uint32_t a, uint32_t b)
+{
+    switch (func) {
+    case GL_NEVER: return 0;
+    case GL_LESS: return a < b;
+    case GL_EQUAL: return a == b;
+    case GL_LEQUAL: return a <= b;
+    case GL_GREATER: return a > b;
+    case GL_NOTEQUAL: return a != b;
+    case GL_GEQUAL: return a >= b;
+    default: return 1;
+    }
+}
+/* §4.1.4, compared at 8 bits as the framebuffer's colour precision: an
+** EQUAL test then matches the alpha a ubyte colour or texel gives */
+static inline uint32_t fragment_alpha8(FRAGV alpha) { return frag_to_unorm(alpha, 255, FRAG_ONE / 2); }
+static inline uint32_t fragment_alpha_ref8(const GlesContext *ctx)
+{
+    return (uint32_t)dbl_to_i64(ctx->alpha_ref * 255.0, 0, 255);
+}
 int fragment_alpha_pass(const GlesContext *ctx, FRAGV alpha);
 int fragment_stencil_pass(const GlesContext *ctx, uint8_t stored);
 uint8_t fragment_stencil_op(const GlesContext *ctx, unsigned int op, uint8_t s);

@@ -29,33 +29,51 @@ typedef struct RectSetup {
     int64_t sprite_x, sprite_y, sprite_size;            /* subpixels */
 } RectSetup;
 
-/* DrawTex's coordinates of unit u at pixel (px, py) and its right and
-** upper neighbours: linear in the window position, formed in double */
+/* DrawTex's coordinates of unit u: s at pixel column px, t at row py,
+** linear in the window position at the pixel centre, formed in double */
+static inline TEXC rect_linear_s(const RectSetup *r, int u, int64_t px)
+{
+    return texc_from_double(r->as[u] + r->bs[u] * ((double)px + 0.5));
+}
+static inline TEXC rect_linear_t(const RectSetup *r, int u, int64_t py)
+{
+    return texc_from_double(r->at[u] + r->bt[u] * ((double)py + 0.5));
+}
+
+/* the coordinates at pixel (px, py) and its right and upper neighbours */
 static inline void rect_linear_coords(const RectSetup *r, int u, int64_t px, int64_t py, TexCoord *tc, TexCoord *tx,
                                       TexCoord *ty)
 {
-    const double X = (double)px + 0.5, Y = (double)py + 0.5;
-    tc->s = texc_from_double(r->as[u] + r->bs[u] * X);
-    tc->t = texc_from_double(r->at[u] + r->bt[u] * Y);
-    tx->s = texc_from_double(r->as[u] + r->bs[u] * (X + 1));
+    tc->s = rect_linear_s(r, u, px);
+    tc->t = rect_linear_t(r, u, py);
+    tx->s = rect_linear_s(r, u, px + 1);
     tx->t = tc->t;
     ty->s = tc->s;
-    ty->t = texc_from_double(r->at[u] + r->bt[u] * (Y + 1));
+    ty->t = rect_linear_t(r, u, py + 1);
 }
 
-/* A point sprite's coordinates at pixel (px, py) and its neighbours, for a
-** point at window (x, y) of `size`, all in subpixels (OES_point_sprite):
-** s = 1/2 + (x_f + 1/2 - x_w) / size, t = 1/2 - (y_f + 1/2 - y_w) / size */
+/* A point sprite's coordinates for a point at window (x, y) of `size`,
+** all in subpixels (OES_point_sprite): s = 1/2 + (x_f + 1/2 - x_w) / size
+** at pixel column px, t = 1/2 - (y_f + 1/2 - y_w) / size at row py */
+static inline TEXC sprite_s(int64_t x, int64_t size, int64_t px)
+{
+    return texc_ratio(size / 2 + px * GLES_SUBPIXEL_ONE + GLES_SUBPIXEL_ONE / 2 - x, size);
+}
+static inline TEXC sprite_t(int64_t y, int64_t size, int64_t py)
+{
+    return texc_ratio(size / 2 - (py * GLES_SUBPIXEL_ONE + GLES_SUBPIXEL_ONE / 2 - y), size);
+}
+
+/* the coordinates at pixel (px, py) and its right and upper neighbours */
 static inline void sprite_coords(int64_t x, int64_t y, int64_t size, int64_t px, int64_t py, TexCoord *tc,
                                  TexCoord *tx, TexCoord *ty)
 {
-    const int64_t one = GLES_SUBPIXEL_ONE, half = one / 2;
-    tc->s = texc_ratio(size / 2 + px * one + half - x, size);
-    tc->t = texc_ratio(size / 2 - (py * one + half - y), size);
-    tx->s = texc_ratio(size / 2 + (px + 1) * one + half - x, size);
+    tc->s = sprite_s(x, size, px);
+    tc->t = sprite_t(y, size, py);
+    tx->s = sprite_s(x, size, px + 1);
     tx->t = tc->t;
     ty->s = tc->s;
-    ty->t = texc_ratio(size / 2 - ((py + 1) * one + half - y), size);
+    ty->t = sprite_t(y, size, py + 1);
 }
 
 /* One chunk of a row's run: the live fragments and what the stages have

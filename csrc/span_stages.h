@@ -96,6 +96,14 @@ static void STAGE(stage_color)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
             }
             return;
         }
+    } else {
+        const V4 c = texturing ? v4_clamp01(v4_load(t->flat)) : v4_load(t->flat);
+        for (int j = 0; j < b->n; j++) {
+            v4_store(b->c[j], c);
+            if (texturing)
+                v4_store(b->cf[j], c);
+        }
+        return;
     }
 #endif
     for (int j = 0; j < b->n; j++) {
@@ -154,15 +162,41 @@ static void STAGE(stage_fetch_rect)(GlesContext *ctx, const TriSetup *t, SpanBuf
     (void)t;
     const RectSetup *r = b->rect;
     switch (r->coord[u]) {
-    case RECT_COORD_LINEAR:
-        for (int j = 0; j < b->n; j++)
-            rect_linear_coords(r, u, b->x0 + b->k[j], b->y, &b->tc[j], &b->tx[j], &b->ty[j]);
+    case RECT_COORD_LINEAR: {
+        /* rect_linear_coords, with t once per row and the neighbours only
+        ** where the filter reads them */
+        const TEXC t0 = rect_linear_t(r, u, b->y);
+        if (texture_needs_lod(ctx->units[u].bound)) {
+            const TEXC t1 = rect_linear_t(r, u, b->y + 1);
+            for (int j = 0; j < b->n; j++) {
+                const int64_t px = b->x0 + b->k[j];
+                b->tc[j] = (TexCoord){ rect_linear_s(r, u, px), t0 };
+                b->tx[j] = (TexCoord){ rect_linear_s(r, u, px + 1), t0 };
+                b->ty[j] = (TexCoord){ b->tc[j].s, t1 };
+            }
+        } else {
+            for (int j = 0; j < b->n; j++)
+                b->tc[j] = (TexCoord){ rect_linear_s(r, u, b->x0 + b->k[j]), t0 };
+        }
         break;
-    case RECT_COORD_SPRITE:
-        for (int j = 0; j < b->n; j++)
-            sprite_coords(r->sprite_x, r->sprite_y, r->sprite_size, b->x0 + b->k[j], b->y, &b->tc[j], &b->tx[j],
-                          &b->ty[j]);
+    }
+    case RECT_COORD_SPRITE: {
+        /* sprite_coords, the same way */
+        const TEXC t0 = sprite_t(r->sprite_y, r->sprite_size, b->y);
+        if (texture_needs_lod(ctx->units[u].bound)) {
+            const TEXC t1 = sprite_t(r->sprite_y, r->sprite_size, b->y + 1);
+            for (int j = 0; j < b->n; j++) {
+                const int64_t px = b->x0 + b->k[j];
+                b->tc[j] = (TexCoord){ sprite_s(r->sprite_x, r->sprite_size, px), t0 };
+                b->tx[j] = (TexCoord){ sprite_s(r->sprite_x, r->sprite_size, px + 1), t0 };
+                b->ty[j] = (TexCoord){ b->tc[j].s, t1 };
+            }
+        } else {
+            for (int j = 0; j < b->n; j++)
+                b->tc[j] = (TexCoord){ sprite_s(r->sprite_x, r->sprite_size, b->x0 + b->k[j]), t0 };
+        }
         break;
+    }
     default:
         for (int j = 0; j < b->n; j++) {
             b->tc[j] = r->in.tc[u];
@@ -197,9 +231,15 @@ static void STAGE(stage_env)(GlesContext *ctx, SpanBuf *b, int u)
         return;
     }
     if (tu->env_mode == GL_REPLACE && (fmt == GL_RGBA || fmt == GL_RGB)) {
-        for (int j = 0; j < b->n; j++)
+        for (int j = 0; j < b->n; j++) {
+#if CHAIN_SIMD
+            const V4 ct = v4_load(b->ct[j][u]);
+            v4_store(b->c[j], k1 == 4 ? ct : v4_keep_alpha(ct, v4_load(b->c[j])));
+#else
             for (int i = 0; i < k1; i++)
                 b->c[j][i] = b->ct[j][u][i];
+#endif
+        }
         return;
     }
     texture_env_span(ctx, u, b->n, (const FRAGV (*)[4])b->cf, b->ct, b->c);
@@ -268,8 +308,23 @@ static void STAGE(stage_alpha)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     (void)t;
     uint8_t keep[SPAN_CHUNK];
-    for (int j = 0; j < b->n; j++)
-        keep[j] = (uint8_t)fragment_alpha_pass(ctx, b->c[j][3]);
+    const uint32_t ref = fragment_alpha_ref8(ctx);
+    /* fragment_alpha_pass, with the function fixed for the chunk */
+#define ALPHA_LOOP(FUNC) \
+    for (int j = 0; j < b->n; j++) \
+        keep[j] = (uint8_t)fragment_compare(FUNC, fragment_alpha8(b->c[j][3]), ref); \
+    break;
+    switch (ctx->alpha_func) {
+    case GL_NEVER: ALPHA_LOOP(GL_NEVER)
+    case GL_LESS: ALPHA_LOOP(GL_LESS)
+    case GL_EQUAL: ALPHA_LOOP(GL_EQUAL)
+    case GL_LEQUAL: ALPHA_LOOP(GL_LEQUAL)
+    case GL_GREATER: ALPHA_LOOP(GL_GREATER)
+    case GL_NOTEQUAL: ALPHA_LOOP(GL_NOTEQUAL)
+    case GL_GEQUAL: ALPHA_LOOP(GL_GEQUAL)
+    default: ALPHA_LOOP(GL_ALWAYS)
+    }
+#undef ALPHA_LOOP
     chunk_compact(b, keep, 1);
 }
 
