@@ -2,7 +2,7 @@
 ** span.c -- choosing the fragment stage for a triangle's rows.
 ** Consumes: a TriSetup and a covered run (y, x0 .. x0+n-1).
 ** Produces: framebuffer writes after every per-fragment operation.
-** Fused instances of span_tmpl.h cover the plain untextured states, the
+** Fused instances of span_fused.h cover the plain untextured states, the
 ** chain of stages (span_chain.c) every other; span_generic runs each
 ** fragment through fragment_process and is the reference both must match
 ** bit for bit. fragment_inputs gives a primitive's fragment inputs at
@@ -92,77 +92,34 @@ static void span_generic(GlesContext *ctx, const TriSetup *t, int y, int x0, int
         fragment_from_setup(ctx, t, e, x0 + k, y, FRAG_ONE, NULL, NULL, NULL);
 }
 
-#define SPAN_NAME span_flat
-#define SPAN_SMOOTH 0
-#define SPAN_DEPTH 0
-#define SPAN_BLEND 0
-#include "span_tmpl.h"
+/* the fused spans: name, smooth, depth, blend (span_fused.h) */
+#define FUSED_SPANS(X)                                                                             \
+    X(flat, 0, 0, 0) X(smooth, 1, 0, 0) X(flat_zless, 0, 1, 0) X(smooth_zless, 1, 1, 0)              \
+    X(flat_alpha, 0, 0, 1) X(smooth_alpha, 1, 0, 1) X(flat_zless_alpha, 0, 1, 1)                      \
+    X(smooth_zless_alpha, 1, 1, 1) X(flat_add, 0, 0, 2) X(smooth_add, 1, 0, 2) X(flat_zless_add, 0, 1, 2) \
+    X(smooth_zless_add, 1, 1, 2)
 
-#define SPAN_NAME span_smooth
-#define SPAN_SMOOTH 1
-#define SPAN_DEPTH 0
-#define SPAN_BLEND 0
-#include "span_tmpl.h"
+#define SPAN_FN(name) name##_base
+#define CHAIN_SIMD 0
+#include "span_fused.h"
+#undef SPAN_FN
+#undef CHAIN_SIMD
 
-#define SPAN_NAME span_flat_zless
-#define SPAN_SMOOTH 0
-#define SPAN_DEPTH 1
-#define SPAN_BLEND 0
-#include "span_tmpl.h"
+#if SIMD_X86
+#pragma GCC push_options
+#pragma GCC target("avx2")
+#include "span_avx2.h"
+#define SPAN_FN(name) name##_avx2
+#define CHAIN_SIMD 1
+#include "span_fused.h"
+#undef SPAN_FN
+#undef CHAIN_SIMD
+#pragma GCC pop_options
+#endif
 
-#define SPAN_NAME span_smooth_zless
-#define SPAN_SMOOTH 1
-#define SPAN_DEPTH 1
-#define SPAN_BLEND 0
-#include "span_tmpl.h"
-
-#define SPAN_NAME span_flat_alpha
-#define SPAN_SMOOTH 0
-#define SPAN_DEPTH 0
-#define SPAN_BLEND 1
-#include "span_tmpl.h"
-
-#define SPAN_NAME span_smooth_alpha
-#define SPAN_SMOOTH 1
-#define SPAN_DEPTH 0
-#define SPAN_BLEND 1
-#include "span_tmpl.h"
-
-#define SPAN_NAME span_flat_zless_alpha
-#define SPAN_SMOOTH 0
-#define SPAN_DEPTH 1
-#define SPAN_BLEND 1
-#include "span_tmpl.h"
-
-#define SPAN_NAME span_smooth_zless_alpha
-#define SPAN_SMOOTH 1
-#define SPAN_DEPTH 1
-#define SPAN_BLEND 1
-#include "span_tmpl.h"
-
-#define SPAN_NAME span_flat_add
-#define SPAN_SMOOTH 0
-#define SPAN_DEPTH 0
-#define SPAN_BLEND 2
-#include "span_tmpl.h"
-
-#define SPAN_NAME span_smooth_add
-#define SPAN_SMOOTH 1
-#define SPAN_DEPTH 0
-#define SPAN_BLEND 2
-#include "span_tmpl.h"
-
-#define SPAN_NAME span_flat_zless_add
-#define SPAN_SMOOTH 0
-#define SPAN_DEPTH 1
-#define SPAN_BLEND 2
-#include "span_tmpl.h"
-
-#define SPAN_NAME span_smooth_zless_add
-#define SPAN_SMOOTH 1
-#define SPAN_DEPTH 1
-#define SPAN_BLEND 2
-#include "span_tmpl.h"
+#define FUSED_NAME(name, SMOOTH, DEPTH, BLEND) [DEPTH][BLEND][SMOOTH] = #name,
+static const char *const fused_names[2][3][2] = { FUSED_SPANS(FUSED_NAME) };
+#undef FUSED_NAME
 
 /* the state conditions every specialised span shares, texturing aside */
 static int simple_but_texture(const GlesContext *ctx, int bk)
@@ -175,17 +132,11 @@ static int simple_but_texture(const GlesContext *ctx, int bk)
 
 void span_choose(GlesContext *ctx)
 {
-    /* [depth][blend][smooth] */
-    static const SpanFunc table[2][3][2] = {
-        { { span_flat, span_smooth }, { span_flat_alpha, span_smooth_alpha }, { span_flat_add, span_smooth_add } },
-        { { span_flat_zless, span_smooth_zless }, { span_flat_zless_alpha, span_smooth_zless_alpha },
-          { span_flat_zless_add, span_smooth_zless_add } },
-    };
-    static const char *names[2][3][2] = {
-        { { "flat", "smooth" }, { "flat_alpha", "smooth_alpha" }, { "flat_add", "smooth_add" } },
-        { { "flat_zless", "smooth_zless" }, { "flat_zless_alpha", "smooth_zless_alpha" },
-          { "flat_zless_add", "smooth_zless_add" } },
-    };
+    const SpanFunc(*table)[3][2] = fused_spans_base;
+#if SIMD_X86
+    if (ctx_simd(ctx) >= SIMD_AVX2)
+        table = fused_spans_avx2;
+#endif
     const int depth = ctx->depth_test && ctx->depth;
     const int smooth = ctx->shade_model == GL_SMOOTH;
     const int bk = span_blend_kind(ctx);
@@ -194,7 +145,7 @@ void span_choose(GlesContext *ctx)
     if (simple && (!depth || zless)) {
         ctx->span = table[depth][bk][smooth];
         ctx->span_const = table[depth][bk][0];
-        ctx->span_name = names[depth][bk][smooth];
+        ctx->span_name = fused_names[depth][bk][smooth];
     } else if (ctx->debug & GLES_DEBUG_GENERIC_SPANS) {
         ctx->span = ctx->span_const = span_generic;
         ctx->span_name = "generic";

@@ -1,4 +1,4 @@
-"""Specialised blend spans against the generic one (csrc/span.c, span_tmpl.h).
+"""Specialised blend spans against the generic one (csrc/span.c, span_fused.h).
 
 SRC_ALPHA/ONE_MINUS_SRC_ALPHA and ONE/ONE (FUNC_ADD for colour and alpha)
 have their own span functions, flat or smooth, without depth or with depth

@@ -1,0 +1,115 @@
+/*
+** span_fused.h -- the fused span functions of the plain untextured states,
+** a template that span.c instantiates once per instruction set (as
+** span_chain.c does span_stages.h): SPAN_FN(name) gives the instance's
+** names, CHAIN_SIMD is 1 in the AVX2 instance, where the blends and the
+** write work on the four channels at once (V4, span_avx2.h).
+**
+** Every instance is span_fused with its parameters fixed (the compiler
+** folds them): smooth (interpolate colour perspective-correctly, else the
+** flat colour), depth (depth test LESS with depth writes) and blend (0 none,
+** 1 SRC_ALPHA, ONE_MINUS_SRC_ALPHA, 2 ONE, ONE, both with FUNC_ADD).
+** Preconditions (span_choose checks them): RGBA8888, colour mask all on, no
+** alpha test, stencil, fog, logic op or polygon offset, scissor applied by
+** the caller. The arithmetic is fragment_process's for these states, so
+** the pixels are the same; the random-state tests check it.
+*/
+
+static inline __attribute__((always_inline)) void SPAN_FN(span_fused)(GlesContext *ctx, const TriSetup *t, int y,
+                                                                      int x0, int n, const int smooth,
+                                                                      const int depth, const int blend)
+{
+    uint32_t *dst = (uint32_t *)ctx->color + (size_t)y * (size_t)ctx->width + x0;
+    uint32_t *zb = depth ? ctx->depth + (size_t)y * (size_t)ctx->width + x0 : NULL;
+    const uint32_t zmax = ctx->depth_max;
+    int64_t e[3];
+    for (int i = 0; i < 3; i++)
+        e[i] = t->ea[i] * x0 + t->eb[i] * y + t->ec[i];
+    const Vertex *v0 = t->v[0], *v1 = t->v[1], *v2 = t->v[2];
+    const FRAGV *c0 = t->col[0], *c1 = t->col[1], *c2 = t->col[2];
+    /* a constant source: its blend term is the same for the whole span */
+    FRAGV sterm[4], sa = 0, da = 0;
+    if (!smooth && blend) {
+        sa = frag_clamp01(t->flat[3]);
+        da = FRAG_ONE - sa;
+        for (int i = 0; i < 4; i++)
+            sterm[i] = blend == 1 ? frag_mul(frag_clamp01(t->flat[i]), sa) : frag_clamp01(t->flat[i]);
+    }
+#if CHAIN_SIMD
+    const V4 sterm_v = !smooth && blend ? v4_load(sterm) : v4_set1(0), da_v = v4_set1(da);
+    const int vector_ok = smooth || !blend || (v4_fits(sterm_v) && v4_fits(da_v));
+#endif
+    for (int k = 0; k < n; k++, e[0] += t->ea[0], e[1] += t->ea[1], e[2] += t->ea[2]) {
+        if (depth) {
+            WGT l[3];
+            wgt_linear(&t->wgt, e, l);
+            uint32_t z = wgt_depth3(v0->wz, v1->wz, v2->wz, l[0], l[1], l[2], zmax);
+            if (!(z < zb[k]))
+                continue;
+            zb[k] = z;
+        }
+        if (!smooth && !blend) {
+            dst[k] = t->flat_packed;
+            continue;
+        }
+        FRAGV c[4];
+        if (smooth) {
+            WGT p[3];
+            wgt_persp(&t->wgt, e, p);
+            for (int i = 0; i < 4; i++)
+                c[i] = frag_lerp3f(c0[i], c1[i], c2[i], p[0], p[1], p[2]);
+        }
+        const uint32_t d = dst[k];
+#if CHAIN_SIMD
+        if (vector_ok) {
+            if (!blend) {
+                dst[k] = v4_pack_unorm8(v4_load(c));
+                continue;
+            }
+            V4 s = sterm_v, dv = da_v;
+            if (smooth) {
+                const V4 cv = v4_clamp01(v4_load(c));
+                s = cv;
+                if (blend == 1) {
+                    const V4 va = v4_alpha(cv);
+                    s = v4_mul01(cv, va);
+                    dv = v4_one_minus(va);
+                }
+            }
+            dst[k] = v4_pack_unorm8(v4_add(s, blend == 1 ? v4_mul01(v4_unorm8(d), dv) : v4_unorm8(d)));
+            continue;
+        }
+#endif
+        if (!blend) {
+            dst[k] = frag_to_unorm(c[0], 255, FRAG_ONE / 2) | (frag_to_unorm(c[1], 255, FRAG_ONE / 2) << 8)
+                   | (frag_to_unorm(c[2], 255, FRAG_ONE / 2) << 16) | (frag_to_unorm(c[3], 255, FRAG_ONE / 2) << 24);
+            continue;
+        }
+        if (smooth) {
+            sa = frag_clamp01(c[3]);
+            da = FRAG_ONE - sa;
+            for (int i = 0; i < 4; i++)
+                sterm[i] = blend == 1 ? frag_mul(frag_clamp01(c[i]), sa) : frag_clamp01(c[i]);
+        }
+        uint32_t out = 0;
+        for (int i = 0; i < 4; i++) {
+            FRAGV dv = ctx->unorm8[(d >> (8 * i)) & 0xFFu];
+            FRAGV v = sterm[i] + (blend == 1 ? frag_mul(dv, da) : dv);
+            out |= frag_to_unorm(v, 255, FRAG_ONE / 2) << (8 * i);
+        }
+        dst[k] = out;
+    }
+}
+
+#define FUSED_INSTANCE(name, SMOOTH, DEPTH, BLEND)                                                 \
+    static void SPAN_FN(span_##name)(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)   \
+    {                                                                                              \
+        SPAN_FN(span_fused)(ctx, t, y, x0, n, SMOOTH, DEPTH, BLEND);                                \
+    }
+FUSED_SPANS(FUSED_INSTANCE)
+#undef FUSED_INSTANCE
+
+/* [depth][blend][smooth] */
+#define FUSED_ENTRY(name, SMOOTH, DEPTH, BLEND) [DEPTH][BLEND][SMOOTH] = SPAN_FN(span_##name),
+static const SpanFunc SPAN_FN(fused_spans)[2][3][2] = { FUSED_SPANS(FUSED_ENTRY) };
+#undef FUSED_ENTRY
