@@ -207,31 +207,6 @@ int fragment_alpha_pass(const GlesContext *ctx, FRAGV alpha)
     return fragment_compare(ctx->alpha_func, fragment_alpha8(alpha), fragment_alpha_ref8(ctx));
 }
 
-/* §4.1.5: the reference is clamped to [0, 2^s - 1]; both sides masked */
-int fragment_stencil_pass(const GlesContext *ctx, uint8_t stored)
-{
-    uint32_t ref = (uint32_t)i64_clamp(ctx->stencil_ref, 0, 255);
-    uint32_t m = ctx->stencil_value_mask & 0xFFu;
-    return fragment_compare(ctx->stencil_func, ref & m, stored & m);
-}
-
-uint8_t fragment_stencil_op(const GlesContext *ctx, unsigned int op, uint8_t s)
-{
-    uint32_t v;
-    switch (op) {
-    case GL_ZERO: v = 0; break;
-    case GL_REPLACE: v = (uint32_t)i64_clamp(ctx->stencil_ref, 0, 255); break;
-    case GL_INCR: v = s == 255 ? 255 : s + 1u; break;
-    case GL_DECR: v = s == 0 ? 0 : s - 1u; break;
-    case GL_INVERT: v = ~(uint32_t)s & 0xFFu; break;
-    case GL_INCR_WRAP_OES: v = (s + 1u) & 0xFFu; break;
-    case GL_DECR_WRAP_OES: v = (s + 255u) & 0xFFu; break;
-    default: v = s; break; /* GL_KEEP */
-    }
-    uint32_t wm = ctx->stencil_writemask & 0xFFu;
-    return (uint8_t)((s & ~wm) | (v & wm));
-}
-
 /* one blend factor for channel k (0..2 colour, 3 alpha), Table 4.1 */
 static FRAGV factor(unsigned int f, int k, const FRAGV *src, const FRAGV *dst)
 {
@@ -337,7 +312,9 @@ void fragment_process(GlesContext *ctx, int x, int y, const FragIn *in)
         c[3] = frag_mul(frag_clamp01(c[3]), in->coverage);
     if (ctx->alpha_test && !fragment_alpha_pass(ctx, c[3]))
         return;
-    if (!fragment_tests(ctx, at, in->z))
+    FragTests ft;
+    fragment_tests_setup(ctx, &ft);
+    if (!fragment_tests(&ft, at, in->z, ft.depth_func))
         return;
     FragWrite w;
     fragment_write_setup(ctx, &w);

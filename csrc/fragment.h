@@ -58,8 +58,6 @@ static inline uint32_t fragment_alpha_ref8(const GlesContext *ctx)
     return (uint32_t)dbl_to_i64(ctx->alpha_ref * 255.0, 0, 255);
 }
 int fragment_alpha_pass(const GlesContext *ctx, FRAGV alpha);
-int fragment_stencil_pass(const GlesContext *ctx, uint8_t stored);
-uint8_t fragment_stencil_op(const GlesContext *ctx, unsigned int op, uint8_t s);
 /* blended colour (not yet clamped) from source and destination in FRAGV */
 void fragment_blend(const GlesContext *ctx, const FRAGV src[4], const FRAGV dst[4], FRAGV out[4]);
 uint32_t fragment_logic_op(unsigned int op, uint32_t s, uint32_t d);
@@ -82,27 +80,89 @@ static inline void fragment_fog(FRAGV c[4], FRAGV f, const FRAGV fc[3])
         c[i] = frag_mul(f, frag_clamp01(c[i])) + frag_mul(FRAG_ONE - f, fc[i]);
 }
 
-/* the stencil and depth tests of the fragment at index `at` with window
-** depth z, with their writes (§4.1.5-4.1.6); 1 when it passes both */
-static inline int fragment_tests(GlesContext *ctx, size_t at, uint32_t z)
+/* what the stencil and depth tests need of the state, found once per span
+** (the tests' buffer writes could otherwise alias every field) */
+typedef struct FragTests {
+    uint8_t *stencil;           /* NULL: no stencil test */
+    uint32_t *depth;            /* NULL: no depth test */
+    int depth_mask;
+    unsigned int stencil_func, depth_func, fail, zfail, zpass;
+    uint32_t ref, value_mask, write_mask;   /* 8 bits; ref clamped (§4.1.5) */
+    /* NULL, or per stored value: the test's outcome, then the value after
+    ** the fail, zfail and zpass ops (fragment_stencil_lut) */
+    const uint8_t (*lut)[256];
+} FragTests;
+
+static inline void fragment_tests_setup(const GlesContext *ctx, FragTests *ft)
 {
-    const int stencil = ctx->stencil_test && ctx->stencil;
+    ft->stencil = ctx->stencil_test && ctx->stencil ? ctx->stencil : NULL;
+    ft->depth = ctx->depth_test && ctx->depth ? ctx->depth : NULL;
+    ft->depth_mask = ctx->depth_mask;
+    ft->stencil_func = ctx->stencil_func;
+    ft->depth_func = ctx->depth_func;
+    ft->fail = ctx->stencil_fail;
+    ft->zfail = ctx->stencil_zfail;
+    ft->zpass = ctx->stencil_zpass;
+    ft->ref = (uint32_t)i64_clamp(ctx->stencil_ref, 0, 255);
+    ft->value_mask = ctx->stencil_value_mask & 0xFFu;
+    ft->write_mask = ctx->stencil_writemask & 0xFFu;
+    ft->lut = NULL;
+}
+
+/* §4.1.5: the reference and the stored value, both masked */
+static inline int fragment_stencil_pass(const FragTests *ft, uint8_t stored)
+{
+    return fragment_compare(ft->stencil_func, ft->ref & ft->value_mask, stored & ft->value_mask);
+}
+
+/* the stencil value after `op`, through the write mask */
+static inline uint8_t fragment_stencil_op(const FragTests *ft, unsigned int op, uint8_t s)
+{
+    uint32_t v;
+    switch (op) {
+    case GL_ZERO: v = 0; break;
+    case GL_REPLACE: v = ft->ref; break;
+    case GL_INCR: v = s == 255 ? 255 : s + 1u; break;
+    case GL_DECR: v = s == 0 ? 0 : s - 1u; break;
+    case GL_INVERT: v = ~(uint32_t)s & 0xFFu; break;
+    case GL_INCR_WRAP_OES: v = (s + 1u) & 0xFFu; break;
+    case GL_DECR_WRAP_OES: v = (s + 255u) & 0xFFu; break;
+    default: v = s; break; /* GL_KEEP */
+    }
+    return (uint8_t)((s & ~ft->write_mask) | (v & ft->write_mask));
+}
+
+/* the table of ft->lut for the state in ft */
+static inline void fragment_stencil_lut(const FragTests *ft, uint8_t lut[4][256])
+{
+    for (uint32_t s = 0; s < 256; s++) {
+        lut[0][s] = (uint8_t)fragment_stencil_pass(ft, (uint8_t)s);
+        lut[1][s] = fragment_stencil_op(ft, ft->fail, (uint8_t)s);
+        lut[2][s] = fragment_stencil_op(ft, ft->zfail, (uint8_t)s);
+        lut[3][s] = fragment_stencil_op(ft, ft->zpass, (uint8_t)s);
+    }
+}
+
+/* the stencil and depth tests of the fragment at index `at` with window
+** depth z, with their writes (§4.1.5-4.1.6); 1 when it passes both.
+** depth_func is ft->depth_func (an argument, so that a caller can fix it) */
+static inline int fragment_tests(const FragTests *ft, size_t at, uint32_t z, unsigned int depth_func)
+{
     uint8_t s = 0;
-    if (stencil) {
-        s = ctx->stencil[at];
-        if (!fragment_stencil_pass(ctx, s)) {
-            ctx->stencil[at] = fragment_stencil_op(ctx, ctx->stencil_fail, s);
+    if (ft->stencil) {
+        s = ft->stencil[at];
+        if (!(ft->lut ? ft->lut[0][s] : fragment_stencil_pass(ft, s))) {
+            ft->stencil[at] = ft->lut ? ft->lut[1][s] : fragment_stencil_op(ft, ft->fail, s);
             return 0;
         }
     }
-    const int depth = ctx->depth_test && ctx->depth;
-    int zpass = depth ? fragment_compare(ctx->depth_func, z, ctx->depth[at]) : 1;
-    if (stencil)
-        ctx->stencil[at] = fragment_stencil_op(ctx, zpass ? ctx->stencil_zpass : ctx->stencil_zfail, s);
+    int zpass = ft->depth ? fragment_compare(depth_func, z, ft->depth[at]) : 1;
+    if (ft->stencil)
+        ft->stencil[at] = ft->lut ? ft->lut[zpass ? 3 : 2][s] : fragment_stencil_op(ft, zpass ? ft->zpass : ft->zfail, s);
     if (!zpass)
         return 0;
-    if (depth && ctx->depth_mask)
-        ctx->depth[at] = z;
+    if (ft->depth && ft->depth_mask)
+        ft->depth[at] = z;
     return 1;
 }
 

@@ -46,8 +46,25 @@ static void tests(GlesContext *ctx, SpanBuf *b, int with_color)
 {
     const size_t row = (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
     uint8_t keep[SPAN_CHUNK];
-    for (int j = 0; j < b->n; j++)
-        keep[j] = (uint8_t)fragment_tests(ctx, row + b->k[j], b->z[j]);
+    FragTests ft;
+    fragment_tests_setup(ctx, &ft);
+    ft.lut = (const uint8_t (*)[256])ctx->stencil_lut;
+    /* fragment_tests with the depth function fixed for the chunk */
+#define TESTS_LOOP(FUNC) \
+    for (int j = 0; j < b->n; j++) \
+        keep[j] = (uint8_t)fragment_tests(&ft, row + b->k[j], b->z[j], FUNC); \
+    break;
+    switch (ft.depth ? ft.depth_func : GL_ALWAYS) {
+    case GL_NEVER: TESTS_LOOP(GL_NEVER)
+    case GL_LESS: TESTS_LOOP(GL_LESS)
+    case GL_EQUAL: TESTS_LOOP(GL_EQUAL)
+    case GL_LEQUAL: TESTS_LOOP(GL_LEQUAL)
+    case GL_GREATER: TESTS_LOOP(GL_GREATER)
+    case GL_NOTEQUAL: TESTS_LOOP(GL_NOTEQUAL)
+    case GL_GEQUAL: TESTS_LOOP(GL_GEQUAL)
+    default: TESTS_LOOP(GL_ALWAYS)
+    }
+#undef TESTS_LOOP
     chunk_compact(b, keep, with_color);
 }
 
@@ -127,6 +144,11 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     /* the tests may run first when nothing after them can discard */
     const int early = !ctx->alpha_test;
     int lod = 0;
+    if (stencil) {
+        FragTests ft;
+        fragment_tests_setup(ctx, &ft);
+        fragment_stencil_lut(&ft, ctx->stencil_lut);
+    }
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
         if (units & (1u << u)) {
             lod |= texture_needs_lod(ctx->units[u].bound);

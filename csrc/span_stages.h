@@ -43,7 +43,21 @@ static void STAGE(stage_neighbours)(GlesContext *ctx, const TriSetup *t, SpanBuf
 /* every live fragment's window depth, with polygon offset */
 static void STAGE(stage_depth)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
-    for (int j = 0; j < b->n; j++) {
+    int j = 0;
+#if CHAIN_SIMD && NUM_IS_FIXED
+    const DEPTHV zv[3] = { t->v[0]->wz, t->v[1]->wz, t->v[2]->wz };
+    for (; j + 4 <= b->n; j += 4) {
+        int64_t e[4][3];
+        for (int k = 0; k < 4; k++)
+            chunk_edges(t, b, b->k[j + k], e[k]);
+        if (!avx2_depth4(&t->wgt, (const int64_t (*)[3])e, zv, ctx->depth_max, &b->z[j]))
+            break;
+        if (t->depth_offset)
+            for (int k = 0; k < 4; k++)
+                b->z[j + k] = raster_offset_depth(ctx, t, b->z[j + k]);
+    }
+#endif
+    for (; j < b->n; j++) {
         int64_t e[3];
         chunk_edges(t, b, b->k[j], e);
         WGT l[3];

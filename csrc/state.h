@@ -333,6 +333,7 @@ struct GlesContext {
     const char *span_name;
     SpanStage chain[GLES_MAX_STAGES];   /* the chain's stages, when span is span_chain */
     int chain_len;
+    uint8_t stencil_lut[4][256];        /* the chain's stencil tables (fragment_stencil_lut) */
     TexSpanSampler samplers[GLES_MAX_TEXTURE_UNITS];   /* each unit's, for the chain (texsample.c) */
     int debug;
     int simd;                   /* SIMD_* the CPU runs (simd_detect) */
