@@ -11,10 +11,12 @@
 **
 ** The core keeps the framebuffer inside its context, so an EGL context
 ** creates its core context when it is first made current, with the size
-** and formats of that draw surface, and stays bound to that surface: making
-** it current with another surface, or a surface with another context, is
-** EGL_BAD_MATCH (as is draw != read). The surface's pixels are the core
-** context's; glReadPixels reads them.
+** and formats of that draw surface. A surface's pixels live in the core of
+** the context last bound to it; when a context moves to another surface, or
+** a surface to another context, the pixels move with the surface. A core's
+** framebuffer keeps its first size: binding a context to a surface of
+** another size is EGL_BAD_MATCH, as is draw != read (one framebuffer per
+** context).
 */
 #define _GNU_SOURCE 1   /* dladdr */
 #include <dlfcn.h>
@@ -65,6 +67,7 @@ typedef struct Surface {
     const Config *config;
     EGLint width, height, largest, mipmap_level;
     Context *owner;        /* the context whose core holds the pixels */
+    unsigned char *saved;  /* else the pixels (colour, depth, stencil), or NULL */
     int current;           /* current in some thread */
     int destroyed;         /* the handle is dead; freed once not current */
 } Surface;
@@ -166,6 +169,51 @@ static Context *check_context(EGLDisplay dpy, EGLContext context)
     return c;
 }
 
+/* the bytes of a core context's colour, depth and stencil buffers */
+static size_t pixel_bytes(GlesContext *core, const Config *cfg, size_t part[3])
+{
+    size_t n = (size_t)gles_width(core) * (size_t)gles_height(core);
+    part[0] = n * (cfg->color_format == GLES_COLOR_RGB565 ? 2 : 4);
+    part[1] = cfg->depth ? n * 4 : 0;
+    part[2] = cfg->stencil ? n : 0;
+    return part[0] + part[1] + part[2];
+}
+
+/* move the pixels of c's core into its surface and unbind the two;
+** 0 if there is no memory for them */
+static int detach(Context *c)
+{
+    Surface *s = c->surface;
+    size_t part[3];
+    size_t total = pixel_bytes(c->core, c->config, part);
+    if (!s->saved && !(s->saved = malloc(total)))
+        return 0;
+    memcpy(s->saved, gles_color_buffer(c->core), part[0]);
+    if (part[1])
+        memcpy(s->saved + part[0], gles_depth_buffer(c->core), part[1]);
+    if (part[2])
+        memcpy(s->saved + part[0] + part[1], gles_stencil_buffer(c->core), part[2]);
+    s->owner = NULL;
+    c->surface = NULL;
+    return 1;
+}
+
+/* the surface's saved pixels (if it has any) into c's core */
+static void attach(Context *c, Surface *s)
+{
+    if (s->saved) {
+        size_t part[3];
+        pixel_bytes(c->core, c->config, part);
+        memcpy(gles_color_buffer(c->core), s->saved, part[0]);
+        if (part[1])
+            memcpy(gles_depth_buffer(c->core), s->saved + part[0], part[1]);
+        if (part[2])
+            memcpy(gles_stencil_buffer(c->core), s->saved + part[0] + part[1], part[2]);
+    }
+    c->surface = s;
+    s->owner = c;
+}
+
 /* free the destroyed objects no thread has current */
 static void collect(void)
 {
@@ -173,8 +221,11 @@ static void collect(void)
         Context *c = *pp;
         if (c->destroyed && !c->current) {
             *pp = c->next;
-            if (c->surface)
+            /* the surface keeps its pixels (if there is memory for them) */
+            if (c->surface && !detach(c)) {
                 c->surface->owner = NULL;
+                c->surface = NULL;
+            }
             if (c->core)
                 gles_context_destroy(c->core);
             free(c);
@@ -188,6 +239,7 @@ static void collect(void)
             *pp = s->next;
             if (s->owner)
                 s->owner->surface = NULL;
+            free(s->saved);
             free(s);
         } else {
             pp = &s->next;
@@ -887,28 +939,32 @@ EGLAPI EGLBoolean EGLAPIENTRY eglQueryContext(EGLDisplay dpy, EGLContext context
     return ok();
 }
 
-/* bind ctx to s (under the lock): creates the core context on first use */
+/* bind ctx to s (under the lock): the core context is created at the first
+** bind, with s's size and formats; the pixels move between a core and the
+** surfaces it is bound to in turn */
 static EGLint bind(Context *ctx, Surface *s)
 {
     if (ctx->config != s->config)
         return EGL_BAD_MATCH;
     if (ctx->surface == s)
         return EGL_SUCCESS;
-    if (s->owner || (ctx->core && ctx->surface))
-        return EGL_BAD_MATCH;          /* one surface per context, for life */
-    if (ctx->core && (gles_width(ctx->core) != (s->width ? s->width : 1)
-                      || gles_height(ctx->core) != (s->height ? s->height : 1)))
-        return EGL_BAD_MATCH;          /* its first surface is gone; a new one must match its size */
+    /* the core's framebuffer is at least 1x1; a 0x0 pbuffer draws nowhere visible */
+    int w = s->width ? s->width : 1, h = s->height ? s->height : 1;
+    if (ctx->core && (gles_width(ctx->core) != w || gles_height(ctx->core) != h))
+        return EGL_BAD_MATCH;          /* a core's framebuffer keeps the size of its first surface */
     if (!ctx->core) {
-        /* the core's framebuffer is at least 1x1; a 0x0 pbuffer draws nowhere visible */
-        ctx->core = gles_context_create(s->width ? s->width : 1, s->height ? s->height : 1,
-                                        s->config->color_format, s->config->depth, s->config->stencil,
+        ctx->core = gles_context_create(w, h, s->config->color_format, s->config->depth, s->config->stencil,
                                         GLES_CABI_COMMON ? GLES_PROFILE_COMMON : GLES_PROFILE_COMMON_LITE);
         if (!ctx->core)
             return EGL_BAD_ALLOC;
     }
-    ctx->surface = s;
-    s->owner = ctx;
+    /* s's pixels are in its previous context's core (not current anywhere,
+    ** or current here and being replaced): take them back first */
+    if (s->owner && !detach(s->owner))
+        return EGL_BAD_ALLOC;
+    if (ctx->surface && !detach(ctx))
+        return EGL_BAD_ALLOC;
+    attach(ctx, s);
     return EGL_SUCCESS;
 }
 

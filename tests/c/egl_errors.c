@@ -136,6 +136,28 @@ int main(void)
     EXPECT(glGetError() == GL_NO_ERROR, "no GL error");
     EXPECT(eglSwapBuffers(dpy, surface), "eglSwapBuffers on a pbuffer");
 
+    /* a surface keeps its pixels when its context moves to another surface,
+    ** and when another context takes it over */
+    EGLSurface other = eglCreatePbufferSurface(dpy, config, size);
+    EXPECT(other != EGL_NO_SURFACE && eglMakeCurrent(dpy, other, other, ctx), "a second surface");
+    glClearColorx(0, 0, FX(1), FX(1));
+    glClear(GL_COLOR_BUFFER_BIT);
+    EXPECT(eglMakeCurrent(dpy, surface, surface, ctx), "back to the first surface");
+    glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    EXPECT(px[1] == 255 && px[2] == 0, "the first surface is still green");
+    EGLContext ctx2 = eglCreateContext(dpy, config, EGL_NO_CONTEXT, es1);
+    EXPECT(ctx2 != EGL_NO_CONTEXT && eglMakeCurrent(dpy, other, other, ctx2), "a second context");
+    glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    EXPECT(px[1] == 0 && px[2] == 255, "the second surface is still blue in another context");
+    EXPECT_ERROR(eglMakeCurrent(dpy, surface, other, ctx2), EGL_FALSE, EGL_BAD_MATCH);  /* draw != read */
+    const EGLint small[] = {EGL_WIDTH, W / 2, EGL_HEIGHT, H / 2, EGL_NONE};
+    EGLSurface smaller = eglCreatePbufferSurface(dpy, config, small);
+    EXPECT_ERROR(eglMakeCurrent(dpy, smaller, smaller, ctx2), EGL_FALSE, EGL_BAD_MATCH);  /* core size */
+    EXPECT(eglGetCurrentContext() == ctx2, "a failed eglMakeCurrent changes nothing");
+    EXPECT(eglMakeCurrent(dpy, surface, surface, ctx), "the first context again");
+    EXPECT(eglDestroyContext(dpy, ctx2) && eglDestroySurface(dpy, other) && eglDestroySurface(dpy, smaller),
+           "destroying what is not current");
+
     /* a current surface and context destroyed stay usable until released */
     EXPECT(eglDestroySurface(dpy, surface), "eglDestroySurface (current)");
     EXPECT(eglDestroyContext(dpy, ctx), "eglDestroyContext (current)");
