@@ -448,3 +448,44 @@ def test_readme_lines_build_and_run_a_program(tmp_path: Path) -> None:
     subprocess.run(cmd, check=True, cwd=tmp_path)
     image = run_ours(app, tmp_path / "px.raw", "fixed", "common")
     assert np.array_equal(image, run_python("triangle", "fixed", "common"))
+
+
+def test_failed_queries_write_nothing() -> None:
+    """A query that records a GL error leaves its output untouched (§2.5),
+    and GetString of an unknown name is NULL with INVALID_ENUM."""
+    from gles import mesa
+
+    egl, lib = cabi.library("EGL", "fixed", "common"), cabi.library("GLESv1_CM", "fixed", "common")
+    ctx = mesa.LibraryContext(8, 8, str(egl), str(lib))
+    try:
+        ctx.make_current()
+        gl = ctypes.CDLL(str(lib))
+        gl.glGetError.restype = ctypes.c_uint
+        gl.glGetString.restype = ctypes.c_char_p
+        assert gl.glGetError() == C.GL_NO_ERROR
+        out = ctypes.c_void_p(0x1234)
+        gl.glGetPointerv(C.GL_TEXTURE_2D, ctypes.byref(out))
+        assert out.value == 0x1234 and gl.glGetError() == C.GL_INVALID_ENUM
+        eq = (ctypes.c_int * 4)(7, 7, 7, 7)
+        gl.glGetClipPlanex(C.GL_CLIP_PLANE0 + 99, eq)
+        assert list(eq) == [7, 7, 7, 7] and gl.glGetError() == C.GL_INVALID_ENUM
+        ints = (ctypes.c_int * 16)(*([5] * 16))
+        gl.glGetIntegerv(0x7777, ints)
+        assert list(ints) == [5] * 16 and gl.glGetError() == C.GL_INVALID_ENUM
+        assert gl.glGetString(0x7777) is None and gl.glGetError() == C.GL_INVALID_ENUM
+        # the first error sticks through the probes: a later successful query keeps it
+        gl.glEnable(0x7777)
+        gl.glGetPointerv(C.GL_VERTEX_ARRAY_POINTER, ctypes.byref(out))
+        assert out.value is None and gl.glGetError() == C.GL_INVALID_ENUM and gl.glGetError() == 0
+        # §6.1.2 through the C entry points: colours map to the whole int range
+        # in GetIntegerv, GetFixedv leaves enums unscaled
+        gl.glClearColorx(65536, 0, 32768, 65536)
+        gl.glGetIntegerv(C.GL_COLOR_CLEAR_VALUE, ints)
+        assert list(ints[:4]) == [2**31 - 1, 0, 2**30 - 1, 2**31 - 1]   # ((2^32 - 1) c - 1) / 2, rounded
+        fixed = (ctypes.c_int * 16)()
+        gl.glGetFixedv(C.GL_DEPTH_FUNC, fixed)
+        assert fixed[0] == C.GL_LESS
+        gl.glGetFixedv(C.GL_LINE_WIDTH, fixed)
+        assert fixed[0] == 65536
+    finally:
+        ctx.close()
