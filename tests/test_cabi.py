@@ -436,18 +436,37 @@ def test_libdir_command_and_pkg_config(tmp_path: Path) -> None:
 
 
 def test_readme_lines_build_and_run_a_program(tmp_path: Path) -> None:
-    """The README's two shell lines, as a user types them (the headers from
-    the system, where it has them; else from `python -m gles libdir --include`)."""
+    """The README's two shell lines, as a user types them, on examples/triangle.c
+    (the headers from the system where it has them, else from
+    `python -m gles libdir --include`); its picture is the Python binding's."""
     import sys
 
     libdir = subprocess.run([sys.executable, "-m", "gles", "libdir"], capture_output=True, text=True,
                             check=True).stdout.strip()
     include = [] if Path("/usr/include/GLES/gl.h").is_file() else [f"-I{cabi.include_dir()}"]
-    app = tmp_path / "app"
-    cmd = [CC, str(CDIR / "triangle.c"), *include, f"-L{libdir}", "-lGLESv1_CM", "-lEGL", "-o", str(app)]
-    subprocess.run(cmd, check=True, cwd=tmp_path)
-    image = run_ours(app, tmp_path / "px.raw", "fixed", "common")
-    assert np.array_equal(image, run_python("triangle", "fixed", "common"))
+    source = CDIR.parent.parent / "examples" / "triangle.c"
+    subprocess.run([CC, str(source), *include, f"-L{libdir}", "-lGLESv1_CM", "-lEGL", "-o", "triangle"],
+                   check=True, cwd=tmp_path)
+    subprocess.run(["./triangle"], check=True, cwd=tmp_path, env={**os.environ, "LD_LIBRARY_PATH": libdir},
+                   timeout=60)
+    ppm = (tmp_path / "triangle.ppm").read_bytes()
+    header = b"P6 128 128 255\n"
+    assert ppm.startswith(header)
+    image = np.frombuffer(ppm[len(header):], dtype=np.uint8).reshape(128, 128, 3)
+
+    ctx = gles.Context(128, 128, depth=0, stencil=0, range_check="off")
+    gl = ctx.gl
+    gl.glClearColorx(0, 0, 16384, 65536)
+    gl.glClear(C.GL_COLOR_BUFFER_BIT)
+    gl.glEnableClientState(C.GL_VERTEX_ARRAY)
+    gl.glEnableClientState(C.GL_COLOR_ARRAY)
+    gl.glVertexPointer(2, C.GL_FIXED, 0, np.array([-52428, -45875, 52428, -26214, 0, 55705], np.int32))
+    gl.glColorPointer(4, C.GL_UNSIGNED_BYTE, 0,
+                      np.array([255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255], np.uint8))
+    gl.glDrawArrays(C.GL_TRIANGLES, 0, 3)
+    assert np.array_equal(image, ctx.image()[..., :3])
+    # a triangle over the clear colour: its three corners' colours are there
+    assert (image == [0, 0, 64]).all(axis=2).mean() > 0.4
 
 
 def test_failed_queries_write_nothing() -> None:
