@@ -2,7 +2,8 @@
 
 Each program under tests/c/ is compiled with the system compiler against the
 libraries and headers `gles.cabi` points at, renders into a pbuffer and
-writes the pixels it reads back. Its image must be byte-identical to the
+writes the pixels it reads back (egl_errors.c and threads.c check EGL's
+errors and its per-thread current context themselves). Its image must be byte-identical to the
 same calls made through the Python binding on the same numeric build and
 profile (the two share one compiled core, so any difference is a
 conversion the C entry points make differently from gl.py), and, on the
@@ -30,7 +31,7 @@ from gles import constants as C
 CDIR = Path(__file__).resolve().parent / "c"
 W = H = 64
 CC = shutil.which(os.environ.get("CC", "cc"))
-CFLAGS = ["-std=c11", "-Wall", "-Wextra", "-Werror", "-pedantic"]
+CFLAGS = ["-std=c11", "-Wall", "-Wextra", "-Werror", "-pedantic", "-pthread"]
 
 pytestmark = pytest.mark.skipif(CC is None, reason="no C compiler")
 
@@ -335,6 +336,18 @@ def test_egl_error_walk(binaries: Callable[[str, str], Path], tmp_path: Path, nu
     proc = _run(binaries("egl_errors", profile), tmp_path / "unused", env)
     assert proc.returncode == 0, proc.stdout + proc.stderr
     assert proc.stdout.strip() == "all checks passed"
+
+
+@pytest.mark.parametrize("numeric", cabi.NUMERICS)
+def test_current_context_is_per_thread(binaries: Callable[[str, str], Path], tmp_path: Path,
+                                       numeric: str) -> None:
+    """Two threads render at once, each on its own context (tests/c/threads.c);
+    a context current in one thread is EGL_BAD_ACCESS in another."""
+    for profile in cabi.PROFILES:
+        env = {"LD_LIBRARY_PATH": str(cabi.libdir(numeric, profile))}
+        proc = _run(binaries("threads", profile), tmp_path / "unused", env)
+        assert proc.returncode == 0, proc.stdout + proc.stderr
+        assert proc.stdout.strip() == "all checks passed"
 
 
 # {====================================================================
