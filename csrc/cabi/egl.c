@@ -653,8 +653,11 @@ EGLAPI EGLSurface EGLAPIENTRY eglCreateWindowSurface(EGLDisplay dpy, EGLConfig c
     pthread_mutex_lock(&lock);
     Display *d = check_display(dpy);
     pthread_mutex_unlock(&lock);
+    /* there is no window system, so no handle is a native window; the
+    ** configs have no EGL_WINDOW_BIT either (EGL_BAD_MATCH), and EGL lets
+    ** an implementation report either error: this one says why */
     if (d && check_config(config))
-        fail(EGL_BAD_NATIVE_WINDOW);   /* there is no window system */
+        fail(EGL_BAD_NATIVE_WINDOW);
     return EGL_NO_SURFACE;
 }
 
@@ -877,8 +880,14 @@ EGLAPI EGLContext EGLAPIENTRY eglCreateContext(EGLDisplay dpy, EGLConfig config,
         }
         version = a[1];
     }
+    if (version == 2 || version == 3) {
+        /* EGL: a config whose EGL_RENDERABLE_TYPE lacks the ES2 (ES3) bit
+        ** cannot make that version's context; ours are OpenGL ES 1 only */
+        fail(EGL_BAD_CONFIG);
+        return EGL_NO_CONTEXT;
+    }
     if (version != 1) {
-        fail(EGL_BAD_MATCH);           /* OpenGL ES 1.x only */
+        fail(EGL_BAD_ATTRIBUTE);       /* no OpenGL ES of that version exists */
         return EGL_NO_CONTEXT;
     }
     Context *ctx = calloc(1, sizeof *ctx);

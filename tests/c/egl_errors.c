@@ -102,7 +102,10 @@ int main(void)
     EXPECT_ERROR(eglBindAPI(EGL_OPENVG_API), EGL_FALSE, EGL_BAD_PARAMETER);
     EXPECT(eglQueryAPI() == EGL_OPENGL_ES_API, "the bound API is still OpenGL ES");
     const EGLint es2[] = {EGL_CONTEXT_CLIENT_VERSION, 2, EGL_NONE};
-    EXPECT_ERROR(eglCreateContext(dpy, config, EGL_NO_CONTEXT, es2), EGL_NO_CONTEXT, EGL_BAD_MATCH);
+    /* an OpenGL ES 2 context from a config without EGL_OPENGL_ES2_BIT */
+    EXPECT_ERROR(eglCreateContext(dpy, config, EGL_NO_CONTEXT, es2), EGL_NO_CONTEXT, EGL_BAD_CONFIG);
+    const EGLint es7[] = {EGL_CONTEXT_CLIENT_VERSION, 7, EGL_NONE};
+    EXPECT_ERROR(eglCreateContext(dpy, config, EGL_NO_CONTEXT, es7), EGL_NO_CONTEXT, EGL_BAD_ATTRIBUTE);
     const EGLint odd[] = {0x7777, 1, EGL_NONE};
     EXPECT_ERROR(eglCreateContext(dpy, config, EGL_NO_CONTEXT, odd), EGL_NO_CONTEXT, EGL_BAD_ATTRIBUTE);
     EXPECT_ERROR(eglCreateContext(dpy, config, (EGLContext)(uintptr_t)0x10, NULL), EGL_NO_CONTEXT, EGL_BAD_CONTEXT);
