@@ -11,6 +11,13 @@ got), ``profile``, ``read_rgba()`` and ``close()``.
   makes a Common context; with profile "common-lite" its ``gl`` hides the
   Common-only float commands, so a test written for Common-Lite cannot use
   them by accident.
+* :class:`LibraryBackend` wraps a ``gles.mesa.LibraryContext``: any EGL +
+  GLES 1 library pair by path, driven like Mesa. The ``cabi-*`` backends run
+  it on gles's own C ABI (``gles.cabi``: libEGL and libGLESv1_CM of one
+  numeric build, the Common or Common-Lite library as the profile asks);
+  ``library`` on the pair named by ``GLES_CONFORMANCE_LIBRARY``
+  ("/path/libEGL.so.1:/path/libGLESv1_CM.so.1"), a Common library whose
+  ``gl`` hides the float commands in Common-Lite runs, as Mesa's does.
 
 :data:`BACKENDS` names every backend the suite knows, each as a
 :class:`BackendSpec` that says whether it can run here and makes contexts.
@@ -18,6 +25,7 @@ got), ``profile``, ``read_rgba()`` and ``close()``.
 
 from __future__ import annotations
 
+import os
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any, Protocol
@@ -168,6 +176,48 @@ class MesaBackend:
         self.gl = None
 
 
+class LibraryBackend:
+    """A context of an EGL + GLES 1 library pair on an EGL pbuffer."""
+
+    def __init__(self, name: str, egl: str, gles_lib: str, visual: Visual, *, profile: str = "common",
+                 hide_float: bool = False, width: int = 64, height: int = 64) -> None:
+        from gles import gl as glmod
+        from gles import mesa
+
+        self.name = name
+        self.profile = profile
+        self.width, self.height = width, height
+        self.context = mesa.LibraryContext(width, height, egl, gles_lib, color=visual.color,
+                                           depth=visual.depth, stencil=visual.stencil)
+        cfg = self.context.config
+        self.visual = Visual(visual.color, int(cfg["depth"]), int(cfg["stencil"]))
+        self.notes = []
+        if (self.visual.depth, self.visual.stencil) != (visual.depth, visual.stencil):
+            self.notes.append(f"asked for {visual.name}, EGL gave {self.visual.name}")
+        self.inert_states: dict[str, str] = {}
+        gl = self.context.gl
+        self.gl = _CommonLiteView(gl, frozenset(glmod.FLOAT_COMMANDS)) if hide_float else gl
+
+    def read_rgba(self) -> np.ndarray:
+        """The window as float RGBA in [0, 1], bottom row first."""
+        return _read_rgba(self.gl, self.width, self.height)
+
+    def close(self) -> None:
+        """Destroy the EGL context and surface."""
+        if self.context is not None:
+            self.context.close()
+        self.context = None
+        self.gl = None
+
+
+def _library_env() -> tuple[str, str] | None:
+    value = os.environ.get("GLES_CONFORMANCE_LIBRARY", "")
+    if ":" not in value:
+        return None
+    egl, gles_lib = value.split(":", 1)
+    return egl, gles_lib
+
+
 @dataclass(frozen=True)
 class BackendSpec:
     """A named backend: can it run here, and how to make one of its contexts."""
@@ -189,6 +239,18 @@ class BackendSpec:
         if self.kind == "gles":
             return GlesBackend(self.variant, profile, vis, width=width, height=height,
                                debug_flags=debug_flags)
+        if self.kind == "cabi":
+            from gles import cabi
+
+            return LibraryBackend(self.name, str(cabi.library("EGL", self.variant, profile)),
+                                  str(cabi.library("GLESv1_CM", self.variant, profile)), vis,
+                                  profile=profile, width=width, height=height)
+        if self.kind == "library":
+            pair = _library_env()
+            if pair is None:
+                raise RuntimeError("GLES_CONFORMANCE_LIBRARY is not set")
+            return LibraryBackend(self.name, pair[0], pair[1], vis, profile=profile,
+                                  hide_float=profile == "common-lite", width=width, height=height)
         return MesaBackend(self.variant, vis, profile=profile, width=width, height=height)
 
 
@@ -217,10 +279,36 @@ def _mesa_reason(driver: str) -> Callable[[], str | None]:
     return reason
 
 
+def _cabi_reason(numeric: str) -> Callable[[], str | None]:
+    def reason() -> str | None:
+        try:
+            from gles import cabi
+
+            for profile in PROFILES:
+                cabi.libdir(numeric, profile)
+        except Exception as exc:
+            return f"gles C ABI ({numeric}) unavailable: {type(exc).__name__}: {exc}"
+        return None
+
+    return reason
+
+
+def _library_reason() -> str | None:
+    pair = _library_env()
+    if pair is None:
+        return "GLES_CONFORMANCE_LIBRARY is not set (/path/libEGL.so.1:/path/libGLESv1_CM.so.1)"
+    missing = [p for p in pair if not os.path.exists(p)]
+    return f"no such library: {', '.join(missing)}" if missing else None
+
+
 BACKENDS: dict[str, BackendSpec] = {
     "gles-fixed": BackendSpec("gles-fixed", "gles", "fixed", _reason=_gles_reason("fixed")),
     "gles-float": BackendSpec("gles-float", "gles", "float", _reason=_gles_reason("float")),
     "gles-double": BackendSpec("gles-double", "gles", "double", _reason=_gles_reason("double")),
     "mesa-llvmpipe": BackendSpec("mesa-llvmpipe", "mesa", "llvmpipe", _reason=_mesa_reason("llvmpipe")),
     "mesa-softpipe": BackendSpec("mesa-softpipe", "mesa", "softpipe", _reason=_mesa_reason("softpipe")),
+    "cabi-fixed": BackendSpec("cabi-fixed", "cabi", "fixed", _reason=_cabi_reason("fixed")),
+    "cabi-float": BackendSpec("cabi-float", "cabi", "float", _reason=_cabi_reason("float")),
+    "cabi-double": BackendSpec("cabi-double", "cabi", "double", _reason=_cabi_reason("double")),
+    "library": BackendSpec("library", "library", "env", _reason=_library_reason),
 }

@@ -17,6 +17,7 @@ from __future__ import annotations
 import argparse
 import hashlib
 import json
+import os
 import platform
 import sys
 import time
@@ -356,6 +357,9 @@ def _parser() -> argparse.ArgumentParser:
                     "and on Mesa through EGL, at path levels 0..4.")
     p.add_argument("--backend", action="append", choices=sorted(BACKENDS), metavar="NAME",
                    help="backend to run (repeatable): " + ", ".join(BACKENDS) + "; default: all")
+    p.add_argument("--library", metavar="EGL:GLES",
+                   help="the EGL and GLES 1 libraries of the 'library' backend, as two paths joined "
+                        "by ':' (sets GLES_CONFORMANCE_LIBRARY; implies --backend library)")
     p.add_argument("--profile", action="append", choices=PROFILES,
                    help="profile (repeatable); default: both")
     p.add_argument("--path", default=f"0-{MAX_LEVEL}", metavar="LEVELS",
@@ -393,7 +397,13 @@ def main(argv: Sequence[str] | None = None) -> int:
     if not tests:
         print("error: no test matches " + ", ".join(args.keywords), file=sys.stderr)
         return 2
-    names = args.backend or list(BACKENDS)
+    if args.library:
+        if ":" not in args.library:
+            print("error: --library needs /path/libEGL.so.1:/path/libGLESv1_CM.so.1", file=sys.stderr)
+            return 2
+        os.environ["GLES_CONFORMANCE_LIBRARY"] = args.library
+        args.backend = [*(args.backend or []), "library"]
+    names = args.backend or [n for n in BACKENDS if n != "library" or BACKENDS[n].available() is None]
     specs = [BACKENDS[n] for n in dict.fromkeys(names)]
     profiles = list(dict.fromkeys(args.profile or PROFILES))
     for spec in specs:

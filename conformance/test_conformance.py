@@ -2,7 +2,11 @@
 visual, path level).
 
 The default matrix keeps the run short: gles-fixed in both profiles at every
-path level, the other backends in the Common profile at path levels 0 and 4.
+path level, the other backends in the Common profile at path levels 0 and 4,
+and the C ABI (cabi-*: libEGL + libGLESv1_CM of each build, driven through
+EGL like Mesa) at path level 0, cabi-fixed in both profiles. A cabi run must
+give the same verdict and the same final image as the cffi binding's run of
+the same job (the same compiled core behind two faces).
 ``GLES_CONFORMANCE_FULL=1`` runs every backend in both profiles at every
 level (what ``python -m conformance`` does). A Mesa backend whose libraries
 are missing is skipped with the reason ``gles.mesa.available()`` gives.
@@ -16,6 +20,7 @@ them as failures, as it should.
 from __future__ import annotations
 
 import os
+from dataclasses import replace
 from typing import NamedTuple
 
 import pytest
@@ -35,6 +40,10 @@ MATRIX: dict[str, tuple[tuple[str, ...], tuple[int, ...]]] = {
     "gles-double": (("common",), (0, MAX_LEVEL)),
     "mesa-llvmpipe": (("common",), (0, MAX_LEVEL)),
     "mesa-softpipe": (("common",), (0, MAX_LEVEL)),
+    "cabi-fixed": (PROFILES, (0,)),
+    "cabi-float": (("common",), (0,)),
+    "cabi-double": (("common",), (0,)),
+    "library": (PROFILES, (0,)),      # only with GLES_CONFORMANCE_LIBRARY set
 }
 
 
@@ -102,6 +111,8 @@ def _jobs() -> list[Job]:
     tests = select_tests(load_categories())
     jobs: list[Job] = []
     for name, spec in BACKENDS.items():
+        if spec.kind == "library" and spec.available() is not None:
+            continue                  # no library pair named: nothing to parametrise
         profiles, levels = (PROFILES, ALL_LEVELS) if FULL else MATRIX[name]
         jobs += plan(tests, [spec], profiles, levels)
     return jobs
@@ -117,6 +128,22 @@ def _params() -> list:
 
 
 _INVARIANCE = PathInvariance()   # level 0 of a group runs before its other levels
+# the cffi binding's results, for the C ABI's runs of the same jobs to match
+_GLES_RESULTS: dict[tuple[str, str, str, str, int], tuple[str, str]] = {}
+
+
+def _key(job: Job, numeric: str) -> tuple[str, str, str, str, int]:
+    return (job.test.name, numeric, job.profile, job.visual, job.path)
+
+
+def _gles_result(job: Job) -> tuple[str, str]:
+    """(status, digest) of the cffi binding on the job a cabi backend ran."""
+    numeric = job.backend.variant
+    key = _key(job, numeric)
+    if key not in _GLES_RESULTS:
+        res = run_job(replace(job, backend=BACKENDS[f"gles-{numeric}"]))
+        _GLES_RESULTS[key] = (res.status, res.digest)
+    return _GLES_RESULTS[key]
 
 
 @pytest.mark.parametrize("job", _params())
@@ -126,6 +153,12 @@ def test_conformance(job: Job) -> None:
     if why is not None:
         pytest.skip(why)
     res = _INVARIANCE.check(run_job(job))
+    if job.backend.kind == "gles":
+        _GLES_RESULTS[_key(job, job.backend.variant)] = (res.status, res.digest)
+    elif job.backend.kind == "cabi":
+        ours = (res.status, res.digest)
+        assert ours == _gles_result(job), \
+            f"the C ABI gave {ours}, the cffi binding {_gles_result(job)} (status, image digest)"
     if res.status == "skip":
         pytest.skip(res.message)
     if res.status in ("fail", "error"):

@@ -1,10 +1,13 @@
-"""Rebuild the three cores in place for an editable install, atomically.
+"""Rebuild the three cores and the C ABI in place for an editable install, atomically.
 
     python tools/devbuild.py
 
-Compiles each build into build/cffi and renames the result over
-src/gles/_core_<kind>.abi3.so, so processes that have the old library loaded
-keep running on it (a copy over the open file would not be safe).
+Builds the core libraries, libGLESv1_CM and libEGL (src/_gles_build/native.py)
+into build/native and copies them into src/gles/lib and src/gles/include,
+then compiles each cffi module into build/cffi and renames the result over
+src/gles/_core_<kind>.abi3.so. Every file is renamed into place, so
+processes that have the old libraries loaded keep running on them (a copy
+over the open file would not be safe).
 """
 
 from __future__ import annotations
@@ -16,17 +19,22 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "src" / "_gles_build"))
 
+import native  # noqa: E402
+
 import build  # noqa: E402
 
 
 def main() -> None:
+    out = native.build()
+    native.install(out, ROOT / "src" / "gles")
+    print(f"libraries: {ROOT / 'src' / 'gles' / 'lib'}")
     tmp = ROOT / "build" / "cffi"
     for kind in ("fixed", "float", "double"):
         ffi = getattr(build, f"ffi_{kind}")
-        out = Path(ffi.compile(tmpdir=str(tmp)))
+        built = Path(ffi.compile(tmpdir=str(tmp)))
         dest = ROOT / "src" / "gles" / f"_core_{kind}.abi3.so"
         staged = dest.with_suffix(".new")
-        staged.write_bytes(out.read_bytes())
+        staged.write_bytes(built.read_bytes())
         os.replace(staged, dest)
         print(f"{kind}: {dest}")
 

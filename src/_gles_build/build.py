@@ -1,9 +1,12 @@
 """cffi build script: one C core, three numeric builds.
 
-Each build compiles csrc/core_all.c as a single translation unit with one of
-GLES_NUM_FIXED, GLES_NUM_FLOAT or GLES_NUM_DOUBLE defined, into
-gles._core_fixed, gles._core_float and gles._core_double. The cdef is
-csrc/gles_core.h itself, less its preprocessor lines.
+Each numeric build's core is a plain shared library, lib/libgles_<kind>.so
+(csrc/core_all.c as one translation unit with GLES_NUM_FIXED, _FLOAT or
+_DOUBLE defined; built by native.py, which also builds the C ABI on it). The
+cffi modules gles._core_fixed, _core_float and _core_double are only the
+glue: each links against its core library (rpath $ORIGIN/lib), so Python and
+C programs run the same compiled core. The cdef is csrc/gles_core.h itself,
+less its preprocessor lines.
 
 Environment:
   GLES_CFLAGS   extra compiler flags (the sanitizer build in CI sets
@@ -17,6 +20,11 @@ import re
 from pathlib import Path
 
 from cffi import FFI
+
+try:
+    from . import native
+except ImportError:     # loaded by path (setup.py's cffi_modules, tools/devbuild.py)
+    import native  # type: ignore[no-redef]
 
 ROOT = Path(__file__).resolve().parent.parent.parent
 CSRC = ROOT / "csrc"
@@ -40,20 +48,17 @@ def _make(kind: str) -> FFI:
     ffi = FFI()
     ffi.cdef(_cdef())
     extra = os.environ.get("GLES_CFLAGS", "").split()
-    # -O3: the fragment chain's span loops (measured: 20-28% fewer instructions
-    # per frame than -O2 on the textured scenes). -ffp-contract=off: a compiler
-    # targeting a CPU with FMA must not fuse a*b+c, so the float and double
-    # builds round the same on every machine.
-    opt = [] if any(f.startswith("-O") for f in extra) else ["-O3"]
+    # the core's own flags (-O3, -ffp-contract=off: see native.cflags) are
+    # those of its library; this module is the call glue only
     ffi.set_source(
         f"gles._core_{kind}",
-        f'#define GLES_NUM_{kind.upper()} 1\n#include "gles_core.h"\n#include "core_all.c"\n',
+        '#include "gles_core.h"\n',
         include_dirs=[str(CSRC)],
-        # -fno-wrapv undoes CPython's -fwrapv: signed overflow stays undefined,
-        # so the sanitizer build reports it instead of wrapping silently
-        extra_compile_args=["-std=c11", "-Wall", "-Wextra", "-fno-wrapv", "-ffp-contract=off", *opt, *extra],
-        extra_link_args=[f for f in extra if f.startswith("-fsanitize")],
-        depends=sorted(str(p) for p in CSRC.glob("*.[ch]")),
+        libraries=[f"gles_{kind}"],
+        library_dirs=[str(native.OUT / "lib")],
+        extra_compile_args=["-std=c11", "-Wall", "-Wextra", *extra],
+        extra_link_args=["-Wl,-rpath,$ORIGIN/lib", *[f for f in extra if f.startswith("-fsanitize")]],
+        depends=[str(CSRC / "gles_core.h"), str(native.OUT / "lib" / native.core_lib_name(kind))],
     )
     return ffi
 
@@ -64,5 +69,6 @@ ffi_double = _make("double")
 
 
 if __name__ == "__main__":
+    native.build()
     for f in (ffi_fixed, ffi_float, ffi_double):
         f.compile(tmpdir=str(ROOT / "build" / "cffi"), verbose=True)

@@ -5,6 +5,9 @@
 * ``compare SCENE.py``: one scene on the builds and peers, a table of time
   against error, and optionally the images and heatmaps.
 * ``render SCENE.py -o OUT.png``: one scene on one build, to a PNG.
+* ``libdir [--numeric N] [--profile P] [--include]``: the directory of
+  libGLESv1_CM and libEGL (and their pkg-config files) for C programs, or
+  with ``--include`` that of the Khronos headers.
 """
 
 from __future__ import annotations
@@ -76,6 +79,13 @@ def _cmd_report(args: argparse.Namespace) -> int:
     return 0
 
 
+def _cmd_libdir(args: argparse.Namespace) -> int:
+    from . import cabi
+
+    print(cabi.include_dir() if args.include else cabi.libdir(args.numeric, args.profile))
+    return 0
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m gles", description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -112,6 +122,12 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--numeric", default="fixed", choices=[*cmp.BUILDS, *cmp.PEERS])
     p.add_argument("--size", type=_size, default=_size("256x256"), help="WxH (default 256x256)")
     p.set_defaults(run=_cmd_render)
+
+    p = sub.add_parser("libdir", help="print the directory of libGLESv1_CM and libEGL for C programs")
+    p.add_argument("--numeric", default="fixed", choices=["fixed", "float", "double"])
+    p.add_argument("--profile", default="common", choices=["common", "common-lite"])
+    p.add_argument("--include", action="store_true", help="print the Khronos headers' directory instead")
+    p.set_defaults(run=_cmd_libdir)
 
     args = parser.parse_args(argv)
     try:

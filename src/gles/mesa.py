@@ -54,6 +54,9 @@ from __future__ import annotations
 import ctypes
 import os
 import re
+import shutil
+import subprocess
+import sysconfig
 import threading
 from typing import Any
 
@@ -61,7 +64,7 @@ import numpy as np
 
 from gles import constants as C
 
-__all__ = ["DRIVERS", "COLOR_FORMATS", "MesaContext", "available"]
+__all__ = ["DRIVERS", "COLOR_FORMATS", "LibraryContext", "MesaContext", "available"]
 
 DRIVERS = ("llvmpipe", "softpipe")
 COLOR_FORMATS = {"rgba8888": (8, 8, 8, 8), "rgb565": (5, 6, 5, 0)}
@@ -917,12 +920,44 @@ _FACTORIES: dict[str, Any] = _compile_factories()
 # --------------------------------------------------------------------------
 # Libraries and displays
 
+def _system_library(soname: str) -> str:
+    """The path of the library the dynamic loader would find for `soname`.
+
+    Mesa's libraries are opened by path, not by soname: once another library
+    with the same soname is loaded (gles's own libEGL.so.1, through
+    :class:`LibraryContext`), opening the soname would return that one.
+    """
+    dirs = [d for d in os.environ.get("LD_LIBRARY_PATH", "").split(":") if d]
+    ldconfig = shutil.which("ldconfig") or next(
+        (p for p in ("/sbin/ldconfig", "/usr/sbin/ldconfig") if os.path.exists(p)), None)
+    cached: list[str] = []
+    if ldconfig:
+        try:
+            out = subprocess.run([ldconfig, "-p"], capture_output=True, text=True, timeout=10).stdout
+        except (OSError, subprocess.SubprocessError):
+            out = ""
+        for line in out.splitlines():
+            name, _, path = line.strip().partition(" => ")
+            if name.split(" ")[0] == soname:
+                cached.append(path.strip())
+    multiarch = sysconfig.get_config_var("MULTIARCH") or ""
+    # this interpreter's architecture first (the cache lists 32-bit copies too)
+    cached.sort(key=lambda p: not (multiarch and multiarch in p))
+    dirs += [os.path.dirname(p) for p in cached]
+    dirs += [f"/lib/{multiarch}", f"/usr/lib/{multiarch}", "/usr/lib64", "/lib64", "/usr/lib", "/lib"]
+    for d in dirs:
+        path = os.path.join(d, soname)
+        if os.path.exists(path):
+            return path
+    return soname
+
+
 class _Libs:
     """libEGL and libGLESv1_CM with their prototypes set, loaded once."""
 
-    def __init__(self) -> None:
-        egl = ctypes.CDLL(_EGL_LIB)
-        gles = ctypes.CDLL(_GLES_LIB)
+    def __init__(self, egl_path: str | None = None, gles_path: str | None = None, mesa: bool = True) -> None:
+        egl = ctypes.CDLL(egl_path or _system_library(_EGL_LIB))
+        gles = ctypes.CDLL(gles_path or _system_library(_GLES_LIB))
         vp, i, u = ctypes.c_void_p, ctypes.c_int, ctypes.c_uint
         for fname, res, args in (
             ("eglGetProcAddress", vp, [ctypes.c_char_p]),
@@ -939,17 +974,22 @@ class _Libs:
             ("eglDestroySurface", u, [vp, vp]),
             ("eglGetCurrentContext", vp, []),
             ("eglBindAPI", u, [u]),
+            ("eglGetDisplay", vp, [vp]),
         ):
             f = getattr(egl, fname)
             f.restype = res
             f.argtypes = args
         client_extensions = (egl.eglQueryString(None, _EGL_EXTENSIONS) or b"").split()
-        if b"EGL_MESA_platform_surfaceless" not in client_extensions:
+        # the surfaceless platform where the library has it (Mesa must)
+        self.get_platform_display: Any = None
+        if b"EGL_MESA_platform_surfaceless" in client_extensions:
+            addr = egl.eglGetProcAddress(b"eglGetPlatformDisplayEXT")
+            if addr:
+                self.get_platform_display = ctypes.CFUNCTYPE(vp, u, vp, vp)(addr)
+        if mesa and b"EGL_MESA_platform_surfaceless" not in client_extensions:
             raise RuntimeError("EGL lacks EGL_MESA_platform_surfaceless (not Mesa?)")
-        addr = egl.eglGetProcAddress(b"eglGetPlatformDisplayEXT")
-        if not addr:
+        if mesa and self.get_platform_display is None:
             raise RuntimeError("EGL has no eglGetPlatformDisplayEXT")
-        self.get_platform_display = ctypes.CFUNCTYPE(vp, u, vp, vp)(addr)
         self.egl = egl
         self.gles = gles
         self._functions: dict[str, Any] | None = None
@@ -1134,36 +1174,37 @@ for _key in dir(C):
         setattr(_GLNamespace, _key, getattr(C, _key))
 
 
-class MesaContext:
-    """An OpenGL ES 1.1 context of Mesa (llvmpipe or softpipe) on a pbuffer.
+class _EGLContextBase:
+    """What every EGL pbuffer context here shares: config, surface, context,
+    the generated GL wrappers (see the module docstring), make_current, close."""
 
-    ``ctx.gl`` holds the GL commands (see the module docstring for their Python
-    conventions). The context is made current on creation.
-    """
+    width: int
+    height: int
+    color: str
+    renderer: str
+    version: str
+    extensions: frozenset
 
-    def __init__(self, width: int, height: int, driver: str = "llvmpipe",
-                 color: str = "rgba8888", depth: int = 24, stencil: int = 8) -> None:
-        if driver not in DRIVERS:
-            raise ValueError(f"driver must be one of {DRIVERS}, got {driver!r}")
+    def _check_args(self, width: int, height: int, color: str) -> None:
         if color not in COLOR_FORMATS:
             raise ValueError(f"color must be one of {tuple(COLOR_FORMATS)}, got {color!r}")
         if width < 1 or height < 1:
             raise ValueError(f"bad size {width}x{height}")
         self.width = int(width)
         self.height = int(height)
-        self.driver = driver
         self.color = color
         self._closed = True
         self._keep: dict[Any, Any] = {}
-        libs = _libs()
+
+    def _verify(self) -> None:
+        """Raise if the context is not what was asked for (called once, made current)."""
+
+    def _open(self, libs: _Libs, handle: int, depth: int, stencil: int) -> None:
         self._libs = libs
         egl = libs.egl
-        display = _acquire_display(libs, driver)
-        self._display = display
-        handle = display.handle
         self._surface = self._context = None
         try:
-            cfg, self.config = _choose_config(libs, handle, COLOR_FORMATS[color],
+            cfg, self.config = _choose_config(libs, handle, COLOR_FORMATS[self.color],
                                               depth, stencil)
             surf_attribs = (ctypes.c_int * 5)(_EGL_WIDTH, self.width,
                                               _EGL_HEIGHT, self.height, _EGL_NONE)
@@ -1185,8 +1226,7 @@ class MesaContext:
             self.version = (get_string(C.GL_VERSION) or b"").decode()
             self.extensions = frozenset(
                 (get_string(C.GL_EXTENSIONS) or b"").decode().split())
-            if driver not in self.renderer:
-                raise RuntimeError(f"asked for {driver}, Mesa gave {self.renderer!r}")
+            self._verify()
         except BaseException:
             self.close()
             raise
@@ -1226,7 +1266,7 @@ class MesaContext:
     def make_current(self) -> None:
         """Make this context current on the calling thread."""
         if self._closed:
-            raise RuntimeError("MesaContext is closed")
+            raise RuntimeError(f"{type(self).__name__} is closed")
         h = self._display.handle
         if not self._libs.egl.eglMakeCurrent(h, self._surface, self._surface,
                                              self._context):
@@ -1258,9 +1298,12 @@ class MesaContext:
             self._context = self._surface = None
             self._keep.clear()
             self._display = None
-            _release_display(display)
+            self._release(display)
 
-    def __enter__(self) -> MesaContext:
+    def _release(self, display: Any) -> None:
+        """Give the display back (after the context and surface are gone)."""
+
+    def __enter__(self) -> _EGLContextBase:
         return self
 
     def __exit__(self, *exc: object) -> None:
@@ -1272,7 +1315,91 @@ class MesaContext:
         except Exception:
             pass
 
+
+class MesaContext(_EGLContextBase):
+    """An OpenGL ES 1.1 context of Mesa (llvmpipe or softpipe) on a pbuffer.
+
+    ``ctx.gl`` holds the GL commands (see the module docstring for their Python
+    conventions). The context is made current on creation.
+    """
+
+    def __init__(self, width: int, height: int, driver: str = "llvmpipe",
+                 color: str = "rgba8888", depth: int = 24, stencil: int = 8) -> None:
+        if driver not in DRIVERS:
+            raise ValueError(f"driver must be one of {DRIVERS}, got {driver!r}")
+        self._check_args(width, height, color)
+        self.driver = driver
+        libs = _libs()
+        display = _acquire_display(libs, driver)
+        self._display = display
+        self._open(libs, display.handle, depth, stencil)
+
+    def _verify(self) -> None:
+        if self.driver not in self.renderer:
+            raise RuntimeError(f"asked for {self.driver}, Mesa gave {self.renderer!r}")
+
+    def _release(self, display: Any) -> None:
+        _release_display(display)
+
+    def __enter__(self) -> MesaContext:
+        return self
+
     def __repr__(self) -> str:
         state = "closed" if self._closed else self.renderer
         return (f"<MesaContext {self.width}x{self.height} {self.driver} "
                 f"{self.color} ({state})>")
+
+
+class _LibraryDisplay:
+    """The one initialised display of a library pair (never terminated)."""
+
+    def __init__(self, handle: int) -> None:
+        self.handle = handle
+
+
+_LIBRARIES: dict[tuple[str, str], tuple[_Libs, _LibraryDisplay]] = {}
+
+
+def _library(egl: str, gles: str) -> tuple[_Libs, _LibraryDisplay]:
+    key = (str(egl), str(gles))
+    with _LOCK:
+        if key not in _LIBRARIES:
+            libs = _Libs(key[0], key[1], mesa=False)
+            if libs.get_platform_display is not None:
+                handle = libs.get_platform_display(_EGL_PLATFORM_SURFACELESS_MESA, None, None)
+            else:
+                handle = libs.egl.eglGetDisplay(None)
+            if not handle:
+                raise RuntimeError(f"no EGL display from {egl}: {libs.error()}")
+            major, minor = ctypes.c_int(), ctypes.c_int()
+            if not libs.egl.eglInitialize(handle, ctypes.byref(major), ctypes.byref(minor)):
+                raise RuntimeError(f"eglInitialize failed: {libs.error()}")
+            _LIBRARIES[key] = (libs, _LibraryDisplay(handle))
+        return _LIBRARIES[key]
+
+
+class LibraryContext(_EGLContextBase):
+    """An OpenGL ES 1.1 context of any EGL + GLES 1 library pair, on a pbuffer.
+
+    ``egl`` and ``gles`` are the paths of the two libraries (for example
+    those of :func:`gles.cabi.library`, gles's own C ABI). The display is the
+    surfaceless platform's where the library offers it, else the default
+    display. ``ctx.gl`` follows the conventions of the module docstring;
+    commands the library does not export (a Common-Lite library's float
+    commands) are absent.
+    """
+
+    def __init__(self, width: int, height: int, egl: str, gles: str, color: str = "rgba8888",
+                 depth: int = 24, stencil: int = 8) -> None:
+        self._check_args(width, height, color)
+        libs, display = _library(egl, gles)
+        self._display = display
+        self.libraries = (str(egl), str(gles))
+        self._open(libs, display.handle, depth, stencil)
+
+    def __enter__(self) -> LibraryContext:
+        return self
+
+    def __repr__(self) -> str:
+        state = "closed" if self._closed else self.renderer
+        return f"<LibraryContext {self.width}x{self.height} {self.libraries[0]} {self.color} ({state})>"

@@ -1,0 +1,145 @@
+"""Build the plain shared libraries: one core per numeric build, and the C ABI on it.
+
+For each numeric build ``n`` (fixed, float, double):
+
+* ``lib/libgles_<n>.so``: the core (csrc/cabi/core_lib.c, which is
+  csrc/core_all.c with the gles_core.h API exported and everything else
+  hidden). The cffi module gles._core_<n> links against it (rpath
+  ``$ORIGIN/lib``), so Python and C programs use the same compiled core.
+* ``lib/<n>/<profile>/`` for profile ``common`` and ``common-lite``:
+  ``libGLESv1_CM.so.1`` (csrc/cabi/gl.c) and ``libEGL.so.1`` (csrc/cabi/egl.c),
+  both linked against that core (rpath ``$ORIGIN/../..``), a copy of each as
+  ``.so`` for the link editor's ``-l``, and ``glesv1_cm.pc`` / ``egl.pc``.
+
+``include/`` holds the Khronos headers (csrc/khronos). Everything is written
+under one directory, laid out as it is inside the installed ``gles`` package.
+
+Environment: ``CC`` (default ``cc``), and ``GLES_CFLAGS`` as for build.py.
+"""
+
+from __future__ import annotations
+
+import os
+import shlex
+import shutil
+import subprocess
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent.parent
+CSRC = ROOT / "csrc"
+OUT = ROOT / "build" / "native"          # what build.py links the cffi modules against
+
+NUMERICS = ("fixed", "float", "double")
+PROFILES = ("common", "common-lite")
+VERSION = "0.1.0"
+
+
+def _extra() -> list[str]:
+    return shlex.split(os.environ.get("GLES_CFLAGS", ""))
+
+
+def cflags() -> list[str]:
+    """The compiler flags of every library (the core's, see docs/architecture.md)."""
+    extra = _extra()
+    opt = [] if any(f.startswith("-O") for f in extra) else ["-O3"]
+    return ["-std=c11", "-Wall", "-Wextra", "-ffp-contract=off", "-DNDEBUG", "-fPIC",
+            "-fvisibility=hidden", *opt, *extra]
+
+
+def ldflags() -> list[str]:
+    """Link flags: shared, every symbol defined, the sanitizer runtime if asked for."""
+    return ["-shared", "-Wl,-z,defs", *[f for f in _extra() if f.startswith("-fsanitize")]]
+
+
+def _run(cmd: list[str]) -> None:
+    proc = subprocess.run(cmd, capture_output=True, text=True)
+    if proc.returncode != 0 or proc.stderr.strip():
+        # warnings count as failures: the libraries build -Wall -Wextra clean
+        raise RuntimeError(f"{shlex.join(cmd)}\n{proc.stdout}{proc.stderr}")
+
+
+def core_lib_name(numeric: str) -> str:
+    return f"libgles_{numeric}.so"
+
+
+def _pc(name: str, description: str, lib: str, numeric: str, profile: str) -> str:
+    return (
+        "libdir=${pcfiledir}\n"
+        "includedir=${pcfiledir}/../../../include\n\n"
+        f"Name: {name}\n"
+        f"Description: {description} (gles, {numeric} build, {profile} profile)\n"
+        f"Version: {VERSION}\n"
+        "Cflags: -I${includedir}\n"
+        f"Libs: -L${{libdir}} -l{lib}\n"
+    )
+
+
+def build(out: Path = OUT) -> Path:
+    """Compile every library into ``out`` (lib/ and include/); returns ``out``."""
+    cc = shlex.split(os.environ.get("CC", "cc"))
+    lib = out / "lib"
+    lib.mkdir(parents=True, exist_ok=True)
+    flags = cflags()
+    inc = ["-I" + str(CSRC), "-I" + str(CSRC / "khronos")]
+
+    core_inputs = [*CSRC.glob("*.[ch]"), CSRC / "cabi" / "core_lib.c", CSRC / "cabi" / "cabi.h"]
+    newest = max(p.stat().st_mtime for p in core_inputs)
+
+    def core(numeric: str) -> None:
+        target = lib / core_lib_name(numeric)
+        stamp = target.with_name(target.name + ".flags")
+        key = shlex.join([*cc, *flags, *ldflags()])
+        fresh = target.exists() and target.stat().st_mtime > newest
+        if fresh and stamp.exists() and stamp.read_text() == key:
+            return   # up to date (the core takes most of the build time)
+        _run([*cc, *flags, f"-DGLES_NUM_{numeric.upper()}=1", *inc, str(CSRC / "cabi" / "core_lib.c"),
+              "-o", str(target) + ".tmp", *ldflags(), f"-Wl,-soname,{core_lib_name(numeric)}",
+              "-Wl,-Bsymbolic", "-lm"])
+        os.replace(str(target) + ".tmp", target)
+        stamp.write_text(key)
+
+    def abi(numeric: str, profile: str) -> None:
+        d = lib / numeric / profile
+        d.mkdir(parents=True, exist_ok=True)
+        common = "1" if profile == "common" else "0"
+        link = [f"-L{lib}", f"-lgles_{numeric}", "-Wl,-rpath,$ORIGIN/../..", "-lm"]
+        for src, name, extra in (("gl.c", "libGLESv1_CM.so.1", []),
+                                 ("egl.c", "libEGL.so.1", ["-ldl", "-lpthread"])):
+            _run([*cc, *flags, f"-DGLES_CABI_COMMON={common}", *inc, str(CSRC / "cabi" / src),
+                  "-o", str(d / name) + ".tmp", *ldflags(), f"-Wl,-soname,{name}", *link, *extra])
+            os.replace(str(d / name) + ".tmp", d / name)
+            shutil.copyfile(d / name, d / name[: -len(".1")])
+        (d / "glesv1_cm.pc").write_text(_pc("glesv1_cm", "OpenGL ES 1.1 Common" +
+                                            ("" if profile == "common" else "-Lite"),
+                                            "GLESv1_CM", numeric, profile))
+        (d / "egl.pc").write_text(_pc("egl", "EGL 1.4 (pbuffers)", "EGL", numeric, profile))
+
+    with ThreadPoolExecutor(max_workers=2) as pool:
+        list(pool.map(core, NUMERICS))
+        list(pool.map(lambda np: abi(*np), [(n, p) for n in NUMERICS for p in PROFILES]))
+    include = out / "include"
+    if include.exists():
+        shutil.rmtree(include)
+    shutil.copytree(CSRC / "khronos", include)
+    return out
+
+
+def install(src: Path, package_dir: Path) -> None:
+    """Copy lib/ and include/ of a build into a ``gles`` package directory,
+    each file renamed into place (processes with the old libraries loaded
+    keep running on them)."""
+    for sub in ("lib", "include"):
+        for path in sorted((src / sub).rglob("*")):
+            if path.is_dir() or path.name.endswith(".flags"):
+                continue
+            dest = package_dir / path.relative_to(src)
+            dest.parent.mkdir(parents=True, exist_ok=True)
+            staged = dest.with_name(dest.name + ".new")
+            shutil.copyfile(path, staged)
+            shutil.copymode(path, staged)
+            os.replace(staged, dest)
+
+
+if __name__ == "__main__":
+    print(build())
