@@ -213,40 +213,46 @@ static inline void avx2_sample_linear(const TexImage *li, int n, const TexCoord 
 
 
 
-/* wgt_linear then wgt_depth3 of four fragments, edge values e[lane]; 0 when
-** an operand leaves the kernel's range (edge values e_i >> eshift outside
-** [0, 2^31), or lin_recip of 2^32 or more), and nothing is written. The
-** (WGT) casts of the scalar code are the low 32 bits vpmuldq reads. */
-AVX2_INLINE int avx2_depth4(const WgtSetup *s, const int64_t e[4][3], const DEPTHV z[3], uint32_t maxval,
-                            uint32_t out[4])
+/* wgt_linear of four fragments, edge values e[lane]: the weights l0..l2
+** as 64-bit lanes whose low 32 bits are the scalar code's (WGT) casts (what
+** vpmuldq reads); 0 when an operand leaves the kernel's range (edge values
+** e_i >> eshift outside [0, 2^31), or lin_recip of 2^32 or more) */
+AVX2_INLINE int avx2_linear4(const WgtSetup *s, const int64_t e[4][3], __m256i l[3])
 {
     if (s->lin_recip < 0 || s->lin_recip >= ((int64_t)1 << 32))
         return 0;
+    const __m256i r1 = _mm256_setr_epi64x(e[0][1], e[1][1], e[2][1], e[3][1]);
+    const __m256i r2 = _mm256_setr_epi64x(e[0][2], e[1][2], e[2][2], e[3][2]);
     const __m128i sh = _mm_cvtsi32_si128(s->eshift);
-    const __m256i e1 = _mm256_srl_epi64(_mm256_setr_epi64x(e[0][1], e[1][1], e[2][1], e[3][1]), sh);
-    const __m256i e2 = _mm256_srl_epi64(_mm256_setr_epi64x(e[0][2], e[1][2], e[2][2], e[3][2]), sh);
-    /* a negative e shifts in zeros here, and fails the test as well */
-    const __m256i wide = _mm256_set1_epi64x(~(int64_t)0x7FFFFFFF);
-    if (!_mm256_testz_si256(_mm256_or_si256(_mm256_setr_epi64x(e[0][1], e[1][1], e[2][1], e[3][1]),
-                                            _mm256_setr_epi64x(e[0][2], e[1][2], e[2][2], e[3][2])),
-                            _mm256_set1_epi64x(INT64_MIN))
-        || !_mm256_testz_si256(_mm256_or_si256(e1, e2), wide))
+    const __m256i e1 = _mm256_srl_epi64(r1, sh), e2 = _mm256_srl_epi64(r2, sh);
+    if (!_mm256_testz_si256(_mm256_or_si256(r1, r2), _mm256_set1_epi64x(INT64_MIN))
+        || !_mm256_testz_si256(_mm256_or_si256(e1, e2), _mm256_set1_epi64x(~(int64_t)0x7FFFFFFF)))
         return 0;
     const __m256i recip = _mm256_set1_epi64x(s->lin_recip), round = _mm256_set1_epi64x((int64_t)1 << 30);
-    const __m256i l1 = _mm256_srli_epi64(_mm256_add_epi64(_mm256_mul_epu32(e1, recip), round), 31);
-    const __m256i l2 = _mm256_srli_epi64(_mm256_add_epi64(_mm256_mul_epu32(e2, recip), round), 31);
-    const __m256i l0 = _mm256_sub_epi64(_mm256_sub_epi64(_mm256_set1_epi64x(WGT_ONE), l1), l2);
-    __m256i acc = _mm256_add_epi64(_mm256_add_epi64(_mm256_mul_epi32(_mm256_set1_epi64x(z[0] >> 12), l0),
-                                                    _mm256_mul_epi32(_mm256_set1_epi64x(z[1] >> 12), l1)),
-                                   _mm256_mul_epi32(_mm256_set1_epi64x(z[2] >> 12), l2));
+    l[1] = _mm256_srli_epi64(_mm256_add_epi64(_mm256_mul_epu32(e1, recip), round), 31);
+    l[2] = _mm256_srli_epi64(_mm256_add_epi64(_mm256_mul_epu32(e2, recip), round), 31);
+    l[0] = _mm256_sub_epi64(_mm256_sub_epi64(_mm256_set1_epi64x(WGT_ONE), l[1]), l[2]);
+    return 1;
+}
+
+/* the low 32 bits of each lane, as int32 lanes 0..3 */
+AVX2_INLINE __m128i avx2_low32(__m256i v)
+{
+    return _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(v, _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7)));
+}
+
+/* wgt_depth3 of the four fragments' linear weights l */
+AVX2_INLINE void avx2_depth4(const __m256i l[3], const DEPTHV z[3], uint32_t maxval, uint32_t out[4])
+{
+    __m256i acc = _mm256_add_epi64(_mm256_add_epi64(_mm256_mul_epi32(_mm256_set1_epi64x(z[0] >> 12), l[0]),
+                                                    _mm256_mul_epi32(_mm256_set1_epi64x(z[1] >> 12), l[1])),
+                                   _mm256_mul_epi32(_mm256_set1_epi64x(z[2] >> 12), l[2]));
     acc = _mm256_add_epi64(acc, _mm256_set1_epi64x((int64_t)1 << 33));
-    acc = _mm256_andnot_si256(_mm256_cmpgt_epi64(_mm256_setzero_si256(), acc), acc);
+    acc = _mm256_andnot_si256(_mm256_cmpgt_epi64(_mm256_setzero_si256(), acc), acc);   /* v < 0 clamps to 0 */
     __m256i v = _mm256_srli_epi64(acc, 34);
     const __m256i top = _mm256_set1_epi64x(maxval);
     v = _mm256_blendv_epi8(v, top, _mm256_cmpgt_epi64(v, top));
-    const __m256i pick = _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7);
-    _mm_storeu_si128((__m128i *)(void *)out, _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(v, pick)));
-    return 1;
+    _mm_storeu_si128((__m128i *)(void *)out, avx2_low32(v));
 }
 
 /* {====================================================================

@@ -13,7 +13,25 @@
 static void STAGE(stage_persp)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     (void)ctx;
-    for (int j = 0; j < b->n; j++) {
+    int j = 0;
+#if CHAIN_SIMD && NUM_IS_FIXED
+    /* wgt_persp is wgt_linear where the triangle is affine */
+    for (; t->wgt.affine && j + 4 <= b->n; j += 4) {
+        int64_t e[4][3];
+        __m256i l[3];
+        for (int k = 0; k < 4; k++)
+            chunk_edges(t, b, b->k[j + k], e[k]);
+        if (!avx2_linear4(&t->wgt, (const int64_t (*)[3])e, l))
+            break;
+        int32_t w[3][4];
+        for (int i = 0; i < 3; i++)
+            _mm_storeu_si128((__m128i *)(void *)w[i], avx2_low32(l[i]));
+        for (int k = 0; k < 4; k++)
+            for (int i = 0; i < 3; i++)
+                b->p[j + k][i] = w[i][k];
+    }
+#endif
+    for (; j < b->n; j++) {
         int64_t e[3];
         chunk_edges(t, b, b->k[j], e);
         wgt_persp(&t->wgt, e, b->p[j]);
@@ -50,8 +68,10 @@ static void STAGE(stage_depth)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
         int64_t e[4][3];
         for (int k = 0; k < 4; k++)
             chunk_edges(t, b, b->k[j + k], e[k]);
-        if (!avx2_depth4(&t->wgt, (const int64_t (*)[3])e, zv, ctx->depth_max, &b->z[j]))
+        __m256i l[3];
+        if (!avx2_linear4(&t->wgt, (const int64_t (*)[3])e, l))
             break;
+        avx2_depth4(l, zv, ctx->depth_max, &b->z[j]);
         if (t->depth_offset)
             for (int k = 0; k < 4; k++)
                 b->z[j + k] = raster_offset_depth(ctx, t, b->z[j + k]);
