@@ -94,9 +94,12 @@ static inline void avx2_bilerp_rgba8(uint32_t c00, uint32_t c10, uint32_t c01, u
 ** fewer fraction bits: the a lanes in int32 range, the weights any WGT */
 AVX2_INLINE __m256i avx2_lerp3(__m256i a0, __m256i a1, __m256i a2, const WGT *p, int shift)
 {
-    __m256i acc = _mm256_add_epi64(
-        _mm256_add_epi64(_mm256_mul_epi32(a0, _mm256_set1_epi64x(p[0])), _mm256_mul_epi32(a1, _mm256_set1_epi64x(p[1]))),
-        _mm256_mul_epi32(a2, _mm256_set1_epi64x(p[2])));
+    /* the three weights, each in the low dword of every lane (vpmuldq reads those) */
+    const __m128i w = _mm_insert_epi32(_mm_loadl_epi64((const __m128i *)(const void *)p), p[2], 2);
+    const __m256i ww = _mm256_broadcastsi128_si256(w);
+    __m256i acc = _mm256_add_epi64(_mm256_add_epi64(_mm256_mul_epi32(a0, _mm256_shuffle_epi32(ww, 0x00)),
+                                                    _mm256_mul_epi32(a1, _mm256_shuffle_epi32(ww, 0x55))),
+                                   _mm256_mul_epi32(a2, _mm256_shuffle_epi32(ww, 0xAA)));
     const __m256i sign = _mm256_cmpgt_epi64(_mm256_setzero_si256(), acc);
     __m256i mag = _mm256_sub_epi64(_mm256_xor_si256(acc, sign), sign);
     mag = _mm256_srli_epi64(_mm256_add_epi64(mag, _mm256_set1_epi64x((int64_t)1 << (shift - 1))), shift);
