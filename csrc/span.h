@@ -95,6 +95,22 @@ struct SpanBuf {
     TexCoord tc[SPAN_CHUNK], tx[SPAN_CHUNK], ty[SPAN_CHUNK];   /* one unit's, and its neighbours' */
 };
 
+/* fragment_write's arithmetic on RGBA8888 with every channel written and no
+** logic op, for blend kind 0 (none), 1 (SRC_ALPHA, ONE_MINUS_SRC_ALPHA) or
+** 2 (ONE, ONE), both FUNC_ADD: colour c over the stored word d */
+static inline uint32_t span_rgba8(const GlesContext *ctx, const FRAGV c[4], uint32_t d, int kind)
+{
+    const FRAGV sa = kind == 1 ? frag_clamp01(c[3]) : FRAG_ONE, da = kind == 1 ? FRAG_ONE - sa : FRAG_ONE;
+    uint32_t out = 0;
+    for (int i = 0; i < 4; i++) {
+        FRAGV v = c[i];
+        if (kind)
+            v = frag_mul(frag_clamp01(c[i]), sa) + frag_mul(ctx->unorm8[(d >> (8 * i)) & 0xFFu], da);
+        out |= frag_to_unorm(v, 255, FRAG_ONE / 2) << (8 * i);
+    }
+    return out;
+}
+
 /* choose the span function (and compose the chain) for the current state */
 void span_choose(GlesContext *ctx);
 /* the chain's stages for the current state, into ctx->chain */

@@ -355,4 +355,19 @@ static inline void avx2_bilerp_rgba8(uint32_t c00, uint32_t c10, uint32_t c01, u
     v4_store(out, V4_OP(add)(V4_OP(mul)(top, ib), V4_OP(mul)(bot, vb)));
 }
 #endif
+
+#if SIMD_X86
+/* span_rgba8 of a fragment's four channels (the same arithmetic: for kind
+** 2, frag_mul(x, FRAG_ONE) is x) */
+AVX2_INLINE uint32_t v4_rgba8(V4 c, uint32_t d, int kind)
+{
+    if (kind == 0)
+        return v4_pack_unorm8(c);
+    const V4 cv = v4_clamp01(c);
+    if (kind == 2)
+        return v4_pack_unorm8(v4_add(cv, v4_unorm8(d)));
+    const V4 va = v4_alpha(cv);
+    return v4_pack_unorm8(v4_add(v4_mul01(cv, va), v4_mul01(v4_unorm8(d), v4_one_minus(va))));
+}
+#endif
 #endif

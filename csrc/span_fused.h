@@ -37,7 +37,9 @@ static inline __attribute__((always_inline)) void SPAN_FN(span_fused)(GlesContex
     }
 #if CHAIN_SIMD
     const V4 sterm_v = !smooth && blend ? v4_load(sterm) : v4_set1(0), da_v = v4_set1(da);
-    const int vector_ok = smooth || !blend || (v4_fits(sterm_v) && v4_fits(da_v));
+    const int vector_ok = v4_fits(sterm_v) && v4_fits(da_v);
+    const V4 a0 = v4_load(c0), a1 = v4_load(c1), a2 = v4_load(c2);
+    const int lerp_ok = v4_lerp_fits(a0) && v4_lerp_fits(a1) && v4_lerp_fits(a2);
 #endif
     for (int k = 0; k < n; k++, e[0] += t->ea[0], e[1] += t->ea[1], e[2] += t->ea[2]) {
         if (depth) {
@@ -53,43 +55,29 @@ static inline __attribute__((always_inline)) void SPAN_FN(span_fused)(GlesContex
             continue;
         }
         FRAGV c[4];
+        WGT p[3];
         if (smooth) {
-            WGT p[3];
             wgt_persp(&t->wgt, e, p);
-            for (int i = 0; i < 4; i++)
-                c[i] = frag_lerp3f(c0[i], c1[i], c2[i], p[0], p[1], p[2]);
+#if CHAIN_SIMD
+            if (!lerp_ok)
+#endif
+                for (int i = 0; i < 4; i++)
+                    c[i] = frag_lerp3f(c0[i], c1[i], c2[i], p[0], p[1], p[2]);
         }
         const uint32_t d = dst[k];
 #if CHAIN_SIMD
+        if (smooth) {
+            dst[k] = v4_rgba8(lerp_ok ? v4_lerp3f(a0, a1, a2, p) : v4_load(c), d, blend);
+            continue;
+        }
         if (vector_ok) {
-            if (!blend) {
-                dst[k] = v4_pack_unorm8(v4_load(c));
-                continue;
-            }
-            V4 s = sterm_v, dv = da_v;
-            if (smooth) {
-                const V4 cv = v4_clamp01(v4_load(c));
-                s = cv;
-                if (blend == 1) {
-                    const V4 va = v4_alpha(cv);
-                    s = v4_mul01(cv, va);
-                    dv = v4_one_minus(va);
-                }
-            }
-            dst[k] = v4_pack_unorm8(v4_add(s, blend == 1 ? v4_mul01(v4_unorm8(d), dv) : v4_unorm8(d)));
+            dst[k] = v4_pack_unorm8(v4_add(sterm_v, blend == 1 ? v4_mul01(v4_unorm8(d), da_v) : v4_unorm8(d)));
             continue;
         }
 #endif
-        if (!blend) {
-            dst[k] = frag_to_unorm(c[0], 255, FRAG_ONE / 2) | (frag_to_unorm(c[1], 255, FRAG_ONE / 2) << 8)
-                   | (frag_to_unorm(c[2], 255, FRAG_ONE / 2) << 16) | (frag_to_unorm(c[3], 255, FRAG_ONE / 2) << 24);
-            continue;
-        }
         if (smooth) {
-            sa = frag_clamp01(c[3]);
-            da = FRAG_ONE - sa;
-            for (int i = 0; i < 4; i++)
-                sterm[i] = blend == 1 ? frag_mul(frag_clamp01(c[i]), sa) : frag_clamp01(c[i]);
+            dst[k] = span_rgba8(ctx, c, d, blend);
+            continue;
         }
         uint32_t out = 0;
         for (int i = 0; i < 4; i++) {

@@ -378,66 +378,37 @@ static void STAGE(stage_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
         fragment_write(ctx, &w, b->x0 + b->k[j], b->y, row + b->k[j], b->c[j]);
 }
 
-/* RGBA8888, every channel written, no blend or logic op */
+/* RGBA8888, every channel written, no logic op, blend kind 0 (none), 1
+** (SRC_ALPHA, ONE_MINUS_SRC_ALPHA) or 2 (ONE, ONE), both with FUNC_ADD */
+static inline void STAGE(write_rgba8)(GlesContext *ctx, SpanBuf *b, int kind)
+{
+    uint32_t *dst = (uint32_t *)ctx->color + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
+    for (int j = 0; j < b->n; j++) {
+        uint32_t *at = &dst[b->k[j]];
+#if CHAIN_SIMD
+        *at = v4_rgba8(v4_load(b->c[j]), *at, kind);
+#else
+        *at = span_rgba8(ctx, b->c[j], *at, kind);
+#endif
+    }
+}
+
 static void STAGE(stage_write_rgba8)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     (void)t;
-    uint32_t *dst = (uint32_t *)ctx->color + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
-    for (int j = 0; j < b->n; j++) {
-        const FRAGV *c = b->c[j];
-#if CHAIN_SIMD
-        dst[b->k[j]] = v4_pack_unorm8(v4_load(c));
-#else
-        dst[b->k[j]] = frag_to_unorm(c[0], 255, FRAG_ONE / 2) | (frag_to_unorm(c[1], 255, FRAG_ONE / 2) << 8)
-                     | (frag_to_unorm(c[2], 255, FRAG_ONE / 2) << 16) | (frag_to_unorm(c[3], 255, FRAG_ONE / 2) << 24);
-#endif
-    }
+    STAGE(write_rgba8)(ctx, b, 0);
 }
 
-/* RGBA8888, every channel written, SRC_ALPHA, ONE_MINUS_SRC_ALPHA with
-** FUNC_ADD (fragment_blend's arithmetic for those factors) */
 static void STAGE(stage_write_rgba8_alpha)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     (void)t;
-    uint32_t *dst = (uint32_t *)ctx->color + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
-    for (int j = 0; j < b->n; j++) {
-        const FRAGV *c = b->c[j];
-        uint32_t d = dst[b->k[j]], out = 0;
-#if CHAIN_SIMD
-        const V4 cv = v4_clamp01(v4_load(c)), va = v4_alpha(cv);
-        dst[b->k[j]] = v4_pack_unorm8(v4_add(v4_mul01(cv, va), v4_mul01(v4_unorm8(d), v4_one_minus(va))));
-        (void)out;
-        continue;
-#endif
-        FRAGV sa = frag_clamp01(c[3]), da = FRAG_ONE - sa;
-        for (int i = 0; i < 4; i++) {
-            FRAGV v = frag_mul(frag_clamp01(c[i]), sa) + frag_mul(ctx->unorm8[(d >> (8 * i)) & 0xFFu], da);
-            out |= frag_to_unorm(v, 255, FRAG_ONE / 2) << (8 * i);
-        }
-        dst[b->k[j]] = out;
-    }
+    STAGE(write_rgba8)(ctx, b, 1);
 }
 
-/* RGBA8888, every channel written, ONE, ONE with FUNC_ADD */
 static void STAGE(stage_write_rgba8_add)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     (void)t;
-    uint32_t *dst = (uint32_t *)ctx->color + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
-    for (int j = 0; j < b->n; j++) {
-        const FRAGV *c = b->c[j];
-        uint32_t d = dst[b->k[j]], out = 0;
-#if CHAIN_SIMD
-        /* frag_mul(x, FRAG_ONE) is x for x in [0, 1] */
-        dst[b->k[j]] = v4_pack_unorm8(v4_add(v4_clamp01(v4_load(c)), v4_unorm8(d)));
-        (void)out;
-        continue;
-#endif
-        for (int i = 0; i < 4; i++) {
-            FRAGV v = frag_mul(frag_clamp01(c[i]), FRAG_ONE) + frag_mul(ctx->unorm8[(d >> (8 * i)) & 0xFFu], FRAG_ONE);
-            out |= frag_to_unorm(v, 255, FRAG_ONE / 2) << (8 * i);
-        }
-        dst[b->k[j]] = out;
-    }
+    STAGE(write_rgba8)(ctx, b, 2);
 }
 
 /* RGB565, red, green and blue written, no blend or logic op */
