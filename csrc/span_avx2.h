@@ -280,6 +280,26 @@ AVX2_INLINE V4 v4_unorm8(uint32_t word) { return avx2_unorm8(word); }
 /* frag_to_unorm(v, 255, 1/2) of each channel, packed as RGBA8888 */
 AVX2_INLINE uint32_t v4_pack_unorm8(V4 v) { return avx2_pack_unorm8(avx2_clamp01(v)); }
 AVX2_INLINE int v4_lerp_fits(V4 a) { return avx2_fits_i32(a); }
+/* pack565 of lanes 0-2 (lane 3 is ignored): fragment_channel with 5, 6, 5
+** bits, dithered by threshold t, or keeping the high bits */
+AVX2_INLINE uint32_t v4_pack565(V4 v, int dither, FRAGV t)
+{
+    const __m256i top = _mm256_setr_epi64x(31, 63, 31, 0);
+    v = _mm256_andnot_si256(_mm256_cmpgt_epi64(_mm256_setzero_si256(), v), v);
+    __m256i r;
+    if (dither) {
+        const __m256i one = _mm256_set1_epi64x(FRAG_ONE);
+        v = _mm256_blendv_epi8(v, one, _mm256_cmpgt_epi64(v, one));
+        r = _mm256_srli_epi64(_mm256_add_epi64(_mm256_mul_epu32(v, top), _mm256_set1_epi64x(t)), 30);
+    } else {
+        r = _mm256_srlv_epi64(v, _mm256_setr_epi64x(25, 24, 25, 63));
+        r = _mm256_blendv_epi8(r, top, _mm256_cmpgt_epi64(r, top));
+    }
+    r = _mm256_sllv_epi64(r, _mm256_setr_epi64x(11, 5, 0, 0));
+    __m128i x = _mm_or_si128(_mm256_castsi256_si128(r), _mm256_extracti128_si256(r, 1));
+    x = _mm_or_si128(x, _mm_unpackhi_epi64(x, x));
+    return (uint32_t)_mm_cvtsi128_si32(x);
+}
 AVX2_INLINE V4 v4_lerp3f(V4 a0, V4 a1, V4 a2, const WGT *p) { return avx2_lerp3f(a0, a1, a2, p); }
 /* }==================================================================== */
 #endif

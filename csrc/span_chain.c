@@ -71,6 +71,13 @@ static void tests(GlesContext *ctx, SpanBuf *b, int with_color)
 
 /* RGB565 with red, green and blue written, dithered or not (fragment_write's
 ** conversion for these states) */
+/* the dither thresholds of the chunk's row by x & 3 (1/2 without dither) */
+static inline void dither_row(const SpanBuf *b, int dither, FRAGV t_row[4])
+{
+    for (int x = 0; x < 4; x++)
+        t_row[x] = dither ? fragment_dither_threshold(x, b->y) : FRAG_ONE / 2;
+}
+
 static inline uint32_t pack565(const FRAGV v[3], int dither, FRAGV t_d)
 {
     return (fragment_channel(v[0], 5, dither, t_d) << 11) | (fragment_channel(v[1], 6, dither, t_d) << 5)

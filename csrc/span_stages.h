@@ -417,9 +417,15 @@ static void STAGE(stage_write_565)(GlesContext *ctx, const TriSetup *t, SpanBuf 
     (void)t;
     uint16_t *dst = (uint16_t *)ctx->color + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
     const int dither = ctx->dither;
+    FRAGV t_row[4];
+    dither_row(b, dither, t_row);
     for (int j = 0; j < b->n; j++) {
-        FRAGV t_d = dither ? fragment_dither_threshold(b->x0 + b->k[j], b->y) : FRAG_ONE / 2;
+        const FRAGV t_d = t_row[(b->x0 + b->k[j]) & 3];
+#if CHAIN_SIMD && NUM_IS_FIXED
+        dst[b->k[j]] = (uint16_t)v4_pack565(v4_load(b->c[j]), dither, t_d);
+#else
         dst[b->k[j]] = (uint16_t)pack565(b->c[j], dither, t_d);
+#endif
     }
 }
 
@@ -430,16 +436,24 @@ static void STAGE(stage_write_565_alpha)(GlesContext *ctx, const TriSetup *t, Sp
     (void)t;
     uint16_t *dst = (uint16_t *)ctx->color + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
     const int dither = ctx->dither;
+    FRAGV t_row[4];
+    dither_row(b, dither, t_row);
     for (int j = 0; j < b->n; j++) {
         const FRAGV *c = b->c[j];
         uint32_t d = dst[b->k[j]];
+        const FRAGV t_d = t_row[(b->x0 + b->k[j]) & 3];
+        FRAGV dv[4] = { ctx->unorm5[d >> 11], ctx->unorm6[(d >> 5) & 63], ctx->unorm5[d & 31], 0 };
+#if CHAIN_SIMD && NUM_IS_FIXED
+        const V4 cv = v4_clamp01(v4_load(c)), va = v4_alpha(cv);
+        const V4 v = v4_add(v4_mul01(cv, va), v4_mul01(v4_load(dv), v4_one_minus(va)));
+        dst[b->k[j]] = (uint16_t)v4_pack565(v, dither, t_d);
+#else
         FRAGV sa = frag_clamp01(c[3]), da = FRAG_ONE - sa;
-        FRAGV dv[3] = { ctx->unorm5[d >> 11], ctx->unorm6[(d >> 5) & 63], ctx->unorm5[d & 31] };
         FRAGV v[3];
         for (int i = 0; i < 3; i++)
             v[i] = frag_mul(frag_clamp01(c[i]), sa) + frag_mul(dv[i], da);
-        FRAGV t_d = dither ? fragment_dither_threshold(b->x0 + b->k[j], b->y) : FRAG_ONE / 2;
         dst[b->k[j]] = (uint16_t)pack565(v, dither, t_d);
+#endif
     }
 }
 

@@ -40,13 +40,16 @@ def _texture(gl, img: np.ndarray, filt: int) -> None:
     gl.glTexImage2D(C.GL_TEXTURE_2D, 0, C.GL_RGBA, w, h, 0, C.GL_RGBA, C.GL_UNSIGNED_BYTE, img)
 
 
-def _blend_scene(numeric: str, flags: int, blend: tuple[int, int] | None) -> np.ndarray:
+def _blend_scene(numeric: str, flags: int, blend: tuple[int, int] | None, color: str = "rgba8888",
+                 dither: bool = True) -> np.ndarray:
     """A 256x256 framebuffer holding every byte value in every channel (a
     REPLACE blit of a texture), then a smooth quad whose alpha runs over
     [0, 1] across x and colour over [0, 1] across y, blended by `blend`."""
-    ctx = make_ctx(numeric, 256, 256)
+    ctx = make_ctx(numeric, 256, 256, color=color)
     ctx.debug(flags)
     gl = ctx.gl
+    if not dither:
+        gl.glDisable(C.GL_DITHER)
     x, y = np.meshgrid(np.arange(256), np.arange(256))
     dst = np.stack([x, y, 255 - x, (x + 3 * y) % 256], axis=-1).astype(np.uint8)
     gl.glEnable(C.GL_TEXTURE_2D)
@@ -80,6 +83,18 @@ def test_writers_over_every_byte(numeric, blend):
     ref = _blend_scene(numeric, PATHS["reference"], blend)
     for name in ("chain", "baseline"):
         np.testing.assert_array_equal(_blend_scene(numeric, PATHS[name], blend), ref, err_msg=name)
+
+
+@pytest.mark.parametrize("numeric", BUILDS)
+@pytest.mark.parametrize("blend", [None, (C.GL_SRC_ALPHA, C.GL_ONE_MINUS_SRC_ALPHA)],
+                         ids=["replace", "alpha"])
+@pytest.mark.parametrize("dither", [True, False], ids=["dither", "no-dither"])
+def test_565_writers_over_every_value(numeric, blend, dither):
+    """The same on RGB565: every 5- and 6-bit destination value, dithered or not."""
+    ref = _blend_scene(numeric, PATHS["reference"], blend, "rgb565", dither)
+    for name in ("chain", "baseline"):
+        np.testing.assert_array_equal(_blend_scene(numeric, PATHS[name], blend, "rgb565", dither), ref,
+                                      err_msg=name)
 
 
 def _bilinear_scene(numeric: str, flags: int, env: int) -> np.ndarray:
