@@ -146,7 +146,9 @@ static inline void fragment_stencil_lut(const FragTests *ft, uint8_t lut[4][256]
 /* the stencil and depth tests of the fragment at index `at` with window
 ** depth z, with their writes (§4.1.5-4.1.6); 1 when it passes both.
 ** depth_func is ft->depth_func (an argument, so that a caller can fix it) */
-static inline int fragment_tests(const FragTests *ft, size_t at, uint32_t z, unsigned int depth_func)
+/* always inline: the chain calls it in loops with depth_func a constant */
+static inline __attribute__((always_inline)) int fragment_tests(const FragTests *ft, size_t at, uint32_t z,
+                                                                 unsigned int depth_func)
 {
     uint8_t s = 0;
     if (ft->stencil) {

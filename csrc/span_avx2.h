@@ -219,10 +219,10 @@ static inline void avx2_sample_linear(const TexImage *li, int n, const TexCoord 
 /* wgt_linear of four fragments, edge values e[lane]: the weights l0..l2
 ** as 64-bit lanes whose low 32 bits are the scalar code's (WGT) casts (what
 ** vpmuldq reads); 0 when an operand leaves the kernel's range (edge values
-** e_i >> eshift outside [0, 2^31), or lin_recip of 2^32 or more) */
+** e_i >> eshift outside [0, 2^31)) */
 AVX2_INLINE int avx2_linear4(const WgtSetup *s, const int64_t e[4][3], __m256i l[3])
 {
-    if (s->lin_recip < 0 || s->lin_recip >= ((int64_t)1 << 32))
+    if (s->lin_recip < 0)
         return 0;
     const __m256i r1 = _mm256_setr_epi64x(e[0][1], e[1][1], e[2][1], e[3][1]);
     const __m256i r2 = _mm256_setr_epi64x(e[0][2], e[1][2], e[2][2], e[3][2]);
@@ -231,9 +231,13 @@ AVX2_INLINE int avx2_linear4(const WgtSetup *s, const int64_t e[4][3], __m256i l
     if (!_mm256_testz_si256(_mm256_or_si256(r1, r2), _mm256_set1_epi64x(INT64_MIN))
         || !_mm256_testz_si256(_mm256_or_si256(e1, e2), _mm256_set1_epi64x(~(int64_t)0x7FFFFFFF)))
         return 0;
-    const __m256i recip = _mm256_set1_epi64x(s->lin_recip), round = _mm256_set1_epi64x((int64_t)1 << 30);
-    l[1] = _mm256_srli_epi64(_mm256_add_epi64(_mm256_mul_epu32(e1, recip), round), 31);
-    l[2] = _mm256_srli_epi64(_mm256_add_epi64(_mm256_mul_epu32(e2, recip), round), 31);
+    /* e lin_recip as e lo + (e hi << 32): the scalar product, which fits int64 */
+    const __m256i lo = _mm256_set1_epi64x(s->lin_recip & 0xFFFFFFFF), hi = _mm256_set1_epi64x(s->lin_recip >> 32);
+    const __m256i round = _mm256_set1_epi64x((int64_t)1 << 30);
+    const __m256i p1 = _mm256_add_epi64(_mm256_mul_epu32(e1, lo), _mm256_slli_epi64(_mm256_mul_epu32(e1, hi), 32));
+    const __m256i p2 = _mm256_add_epi64(_mm256_mul_epu32(e2, lo), _mm256_slli_epi64(_mm256_mul_epu32(e2, hi), 32));
+    l[1] = _mm256_srli_epi64(_mm256_add_epi64(p1, round), 31);
+    l[2] = _mm256_srli_epi64(_mm256_add_epi64(p2, round), 31);
     l[0] = _mm256_sub_epi64(_mm256_sub_epi64(_mm256_set1_epi64x(WGT_ONE), l[1]), l[2]);
     return 1;
 }
