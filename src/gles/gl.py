@@ -190,7 +190,8 @@ def _values(data: Any, n: int, what: str, dtype: Any = np.float64) -> np.ndarray
         raise type(e)(f"{what}: {e}") from None
     if arr.size < n:
         raise ValueError(f"{what} needs {n} values, got {arr.size}")
-    if arr.dtype.kind == "i" and arr.size and (arr[:n].min(initial=0) < _INT_MIN or arr[:n].max(initial=0) > _INT_MAX):
+    head = arr[:n]
+    if arr.dtype.kind == "i" and head.size and (head.min() < _INT_MIN or head.max() > _INT_MAX):
         raise ValueError(f"{what}: a value does not fit 32 bits")
     return arr
 
