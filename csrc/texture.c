@@ -638,11 +638,11 @@ int gles_CompressedTexImage2D(GlesContext *ctx, unsigned int target, int level, 
         ctx_error(ctx, GL_INVALID_ENUM);
         return GLES_OK;
     }
-    int levels = -level + 1;
-    if (level > 0 || levels - 1 > max_level_of_size() || check_image(0, width, height, border)) {
+    if (level > 0 || level < -max_level_of_size() || check_image(0, width, height, border)) {
         ctx_error(ctx, GL_INVALID_VALUE);
         return GLES_OK;
     }
+    int levels = -level + 1;
     int64_t need = texture_paletted_bytes(internalformat, levels, width, height);
     if (image_size < 0 || image_size != need) {
         ctx_error(ctx, GL_INVALID_VALUE);

@@ -338,6 +338,17 @@ def test_paletted_compressed_tex_image_2d_rules(fmt: int, bits: int, palette: in
     assert g.glGetError() == G.GL_INVALID_VALUE
 
 
+@pytest.mark.parametrize("level", [INT_MIN, -12, 1, INT_MAX])
+def test_compressed_level_out_of_range(level: int) -> None:
+    """A level below -(log2(MAX_TEXTURE_SIZE)) or above 0 is INVALID_VALUE
+    (INT_MIN used to be negated in C, which overflows)."""
+    ctx = ctx_of()
+    before = snapshot(ctx)
+    ctx.gl.glCompressedTexImage2D(G.GL_TEXTURE_2D, level, G.GL_PALETTE4_RGB8_OES, 4, 1, 0, 50, bytes(300))
+    assert ctx.gl.glGetError() == G.GL_INVALID_VALUE
+    assert same(before, snapshot(ctx))
+
+
 def test_compressed_gl_rule_before_the_data_length() -> None:
     """imageSize against the format decides first (INVALID_VALUE); short data
     raises ValueError only for a GL-valid call, which would read past it."""

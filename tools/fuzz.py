@@ -1069,7 +1069,7 @@ def _outcome(setup: Setup, calls: list[Call], timeout: float) -> str | None:
         os.unlink(path)
     if p.returncode == 0:
         return None
-    if p.returncode == 1:
+    if p.returncode == 1 and "Traceback" in p.stderr and "runtime error" not in p.stderr:
         return "harness error"  # a Python traceback outside the invariant
     if p.returncode == 3:
         line = [ln for ln in p.stdout.splitlines() if ln.startswith("fail ")][-1]
