@@ -220,7 +220,9 @@ def _c_arg_error(name: str, ctype: Any, args: tuple, exc: Exception) -> Exceptio
                 return ValueError(f"{_describe(a, fallback)} is too large for a real")
             except (TypeError, ValueError):
                 return TypeError(f"{_describe(a, fallback)} is not a number")
-    return exc
+    if isinstance(exc, OverflowError):
+        return ValueError(f"{name}: {exc}")
+    return TypeError(f"{name}: {exc}")
 
 
 class _CoreFunctions:
