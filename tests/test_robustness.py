@@ -440,3 +440,33 @@ def test_memory_limit_setter_and_validation() -> None:
         ctx.memory_limit = -1
     with pytest.raises(TypeError, match="memory_limit"):
         gles.Context(4, 4, memory_limit=1.5)  # type: ignore[arg-type]
+
+
+# {====================================================================
+# 16.16 sums that need more than 64 bits (found under UBSan)
+
+
+def test_fixed_matrix_products_of_extreme_entries() -> None:
+    """Four products of 32-bit entries need 65 bits: the fixed build's matrix
+    product and vertex transform sum them exactly and saturate (the sum used
+    to overflow int64). Batched (0) and per-vertex (8) transforms agree."""
+    images = []
+    for flags in (0, 8):
+        ctx = ctx_of("fixed", 16, 16)
+        ctx.debug(flags)
+        g = ctx.gl
+        g.glLoadMatrixx([256664, -123369, 32768, 0, 1, 32768, -78494, -250749, 13107200, INT_MIN, INT_MAX,
+                         13107200, 0, 222269, 119203, 117248])
+        g.glTranslatex(INT_MIN, 65536, 6109)
+        g.glMultMatrixx([13107200, -171321, INT_MAX, INT_MIN, INT_MIN, 167681, 143237, 118763, -1, 13107200,
+                         -199916, 0, 130608, -138471, -1, 32768])
+        g.glEnableClientState(G.GL_VERTEX_ARRAY)
+        verts = np.array([INT_MAX, INT_MAX, INT_MAX, INT_MIN, 0, INT_MAX, 0, INT_MIN, INT_MIN, 65536, 0, 0],
+                         dtype=np.int32)
+        g.glVertexPointer(3, G.GL_FIXED, 0, verts)
+        g.glDrawArrays(G.GL_TRIANGLE_STRIP, 0, 4)
+        g.glDrawArrays(G.GL_POINTS, 0, 4)
+        assert g.glGetError() == G.GL_NO_ERROR
+        images.append(ctx.color_buffer())
+    assert np.array_equal(images[0], images[1])
+
