@@ -641,10 +641,15 @@ static inline NUM num_lerp(NUM a, NUM b, CLIPT t)
     return num_sat((int64_t)a + num_from_scaled(((int64_t)b - a) * t, 46));
 }
 
-/* round(x / w * scale) for w > 0, as a 64-bit integer */
+/* round(x / w * scale) for w > 0, as a 64-bit integer, clamped to
+** +-NUM_PROJ_GUARD: a clipped vertex has |x / w| <= 1 and scale <= 2^19
+** (half of MAX_VIEWPORT_DIMS in subpixels), so the clamp only holds the
+** window coordinates of a vertex that non-finite input let past the clip
+** tests to what the rasterizer's 64-bit edge arithmetic expects */
+#define NUM_PROJ_GUARD ((int64_t)1 << 20)
 static inline int64_t num_proj(NUM x, NUM w, int64_t scale)
 {
-    return i64_round_div((int64_t)x * scale, w);
+    return i64_clamp(i64_round_div((int64_t)x * scale, w), -NUM_PROJ_GUARD, NUM_PROJ_GUARD);
 }
 
 /* window depth of clip z, w: (n + (f - n) * (z/w + 1) / 2) * maxval */
@@ -797,12 +802,15 @@ static inline CLIPT num_clip_t(NUM dp, NUM dq)
 
 static inline NUM num_lerp(NUM a, NUM b, CLIPT t) { return a + (b - a) * t; }
 
+#define NUM_PROJ_GUARD ((int64_t)1 << 20)      /* as the fixed build's */
+
 static inline int64_t num_proj(NUM x, NUM w, int64_t scale)
 {
     /* ties away from zero, as the fixed build's i64_round_div: every build
     ** snaps a vertex exactly between two subpixels to the same one */
+    /* clamped as the fixed build's (NaN gives 0) */
     double v = (double)((x / w) * (NUM)scale);
-    return v < 0 ? -dbl_to_i64(-v, 0, (int64_t)1 << 40) : dbl_to_i64(v, 0, (int64_t)1 << 40);
+    return v < 0 ? -dbl_to_i64(-v, 0, NUM_PROJ_GUARD) : dbl_to_i64(v, 0, NUM_PROJ_GUARD);
 }
 
 static inline DEPTHV depthv_from_clip(NUM z, NUM w, NUM n, NUM f, uint32_t maxval)
