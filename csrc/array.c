@@ -155,9 +155,11 @@ void array_init(GlesContext *ctx)
     ctx->arrays[ARR_WEIGHT].size = 0;
 }
 
-static void buffer_free(BufferObject *b)
+static void buffer_free(GlesContext *ctx, BufferObject *b)
 {
     if (b) {
+        if (b->data)
+            ctx->mem_used -= b->size;
         free(b->data);
         free(b);
     }
@@ -168,7 +170,7 @@ void array_free(GlesContext *ctx)
     NameTable *t = &ctx->buffers;
     for (uint32_t i = 0; i < t->capacity; i++)
         if (t->keys[i] != NAME_EMPTY && t->keys[i] != NAME_DELETED)
-            buffer_free(t->values[i]);
+            buffer_free(ctx, t->values[i]);
     names_free(t);
 }
 
@@ -467,7 +469,7 @@ void gles_DeleteBuffers(GlesContext *ctx, int n, const unsigned int *names)
         if (b) {
             ctx->buffer_serial++;
             unbind_everywhere(ctx, b);
-            buffer_free(b);
+            buffer_free(ctx, b);
         }
     }
 }
@@ -522,16 +524,20 @@ int gles_BufferData(GlesContext *ctx, unsigned int target, int64_t size, const v
         ctx_error(ctx, GL_INVALID_OPERATION);
         return GLES_OK;
     }
-    uint8_t *store = malloc(size ? (size_t)size : 1);
+    /* past the memory budget (or malloc's) the buffer stays as it was */
+    int64_t held = b->data ? b->size : 0;
+    uint8_t *store = ctx_mem_fits(ctx, size, held) && (uint64_t)size <= SIZE_MAX ? malloc(size ? (size_t)size : 1)
+                                                                                 : NULL;
     if (!store) {
         ctx_error(ctx, GL_OUT_OF_MEMORY);
-        return GLES_EMEMORY;
+        return GLES_OK;
     }
     if (data)
         memcpy(store, data, (size_t)size);
     else
         memset(store, 0, (size_t)size);
     free(b->data);
+    ctx->mem_used += size - held;
     ctx->buffer_serial++;
     b->data = store;
     b->size = size;

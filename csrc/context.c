@@ -124,6 +124,7 @@ GlesContext *gles_context_create(int width, int height, int color_format,
         ctx->hints[i] = GL_DONT_CARE;
     ctx->hint_generate_mipmap = GL_DONT_CARE;
     ctx->pack_alignment = ctx->unpack_alignment = 4;
+    ctx->mem_limit = GLES_DEFAULT_MEMORY_LIMIT;
     ctx->active_texture = ctx->client_active_texture = GL_TEXTURE0;
 
     matrix_stack_init(&ctx->modelview, GLES_MODELVIEW_STACK_DEPTH);
@@ -162,6 +163,13 @@ GlesContext *gles_context_create(int width, int height, int color_format,
     ctx->dirty = DIRTY_ALL;
     return ctx;
 }
+
+void gles_memory_limit(GlesContext *ctx, int64_t limit)
+{
+    ctx->mem_limit = limit < 0 ? 0 : limit;
+}
+
+int64_t gles_memory_used(GlesContext *ctx) { return ctx->mem_used; }
 
 void gles_context_destroy(GlesContext *ctx)
 {

@@ -118,6 +118,11 @@ int gles_ReadPixels(GlesContext *ctx, int x, int y, int width, int height,
     int bpp = rgba ? 4 : 2;
     int64_t rowbytes = (int64_t)width * bpp;
     int64_t stride = (rowbytes + ctx->pack_alignment - 1) / ctx->pack_alignment * ctx->pack_alignment;
+    /* width, height < 2^31 and stride < 2^34: the product can pass 2^63,
+    ** so compare by division first (a huge read never fits a real buffer) */
+    if (height > 1 && stride > (INT64_MAX - rowbytes) / (height - 1))
+        return ctx_message(ctx, GLES_EVALUE, "ReadPixels of %d x %d pixels needs more bytes than the buffer holds",
+                           width, height);
     int64_t need = height ? stride * (height - 1) + rowbytes : 0;
     if (need > nbytes)
         return ctx_message(ctx, GLES_EVALUE, "ReadPixels needs %lld bytes, the buffer holds %lld",

@@ -50,6 +50,11 @@ const char *gles_last_message(GlesContext *ctx);
 void *gles_color_buffer(GlesContext *ctx);     /* bottom row first */
 void *gles_depth_buffer(GlesContext *ctx);     /* uint32 per pixel */
 void *gles_stencil_buffer(GlesContext *ctx);   /* uint8 per pixel */
+/* the budget of texture images and buffer data together, in bytes (the
+** default is 256 MiB): an allocation past it is OUT_OF_MEMORY and changes
+** nothing; a limit below the current use only stops further growth */
+void gles_memory_limit(GlesContext *ctx, int64_t limit);
+int64_t gles_memory_used(GlesContext *ctx);
 int gles_width(GlesContext *ctx);
 int gles_height(GlesContext *ctx);
 /* debug switches for tests: 1 forces the generic span path; 2 and 4 break

@@ -20,6 +20,20 @@
 
 #define LINE_WIDTH_LIMIT 64
 
+/* the minor coordinate at major offset n of a line from na with minor
+** extent dn over major extent D (|n| <= |D|): exact while the product
+** fits 64 bits, else in double (only window coordinates far outside any
+** viewport get there) */
+static int64_t line_minor(int64_t na, int64_t dn, int64_t n, int64_t D)
+{
+    const int64_t lim = (int64_t)1 << 31;
+    if (dn > -lim && dn < lim && n > -lim && n < lim)
+        return na + i64_round_div(dn * n, D);
+    double m = (double)na + (double)dn * ((double)n / (double)D);
+    const double big = 4611686018427387904.0;   /* 2^62 */
+    return m < -big ? -((int64_t)1 << 62) : (m > big ? (int64_t)1 << 62 : (int64_t)m);
+}
+
 static void line_setup(GlesContext *ctx, TriSetup *t, const Vertex *a, const Vertex *b, const Vertex *pv,
                        int64_t len)
 {
@@ -71,6 +85,15 @@ void raster_line(GlesContext *ctx, const Vertex *a, const Vertex *b, const Verte
         p1 = i64_floor_div(ma - half, one);
     }
     const ClipRect clip = raster_clip_rect(ctx);
+    /* step only over the columns (rows) the clip rectangle holds: the
+    ** others produce no fragment, and a line whose window coordinates are
+    ** huge (non-finite input) then costs no more than one across the window */
+    int64_t cm0 = xmajor ? clip.x0 : clip.y0, cm1 = xmajor ? clip.x1 : clip.y1;
+    int64_t cn0 = xmajor ? clip.y0 : clip.x0, cn1 = xmajor ? clip.y1 : clip.x1;
+    if (p0 < cm0)
+        p0 = cm0;
+    if (p1 > cm1 - 1)
+        p1 = cm1 - 1;
     int smooth = ctx->line_smooth;
     int64_t w = (int64_t)floor(width + 0.5);
     if (w < 1)
@@ -81,7 +104,7 @@ void raster_line(GlesContext *ctx, const Vertex *a, const Vertex *b, const Verte
         int64_t n = c - ma, an = n < 0 ? -n : n;
         int64_t e[3] = { len - an, an, 0 };
         /* minor coordinate of the line at the centre, in subpixels */
-        int64_t m = na + i64_round_div((nb - na) * n, D);
+        int64_t m = line_minor(na, nb - na, n, D);
         int64_t q0, q1;                         /* the minor pixels */
         if (smooth) {
             int64_t reach = (int64_t)ceil(width / 2 * (double)one * flen / (double)len) + one;
@@ -92,6 +115,10 @@ void raster_line(GlesContext *ctx, const Vertex *a, const Vertex *b, const Verte
             q0 = i64_ceil_div(m - w * one / 2 - half, one);
             q1 = i64_ceil_div(m + w * one / 2 - half, one) - 1;
         }
+        if (q0 < cn0)
+            q0 = cn0;
+        if (q1 > cn1 - 1)
+            q1 = cn1 - 1;
         for (int64_t pn = q0; pn <= q1; pn++) {
             int64_t px = xmajor ? pm : pn, py = xmajor ? pn : pm;
             if (px < clip.x0 || py < clip.y0 || px >= clip.x1 || py >= clip.y1)

@@ -325,14 +325,55 @@ static inline NUM num_from_snorm(int32_t c, uint32_t maxval)
 /* {==================================================================== */
 /* Dot products with one rounding (matrix and vector work) */
 
+#if NUM_IS_FIXED
+/* An exact sum of up to 16 products of two NUMs (32 fraction bits). One
+** product fits 63 bits but four need 65, so the sum is kept wider: in
+** __int128 where the compiler has it, else as the parts above and below
+** 2^16 added apart. num_acc_round gives the sum as 16.16, rounded once
+** (ties away from zero, as num_from_scaled) and saturated. */
+#if defined(__SIZEOF_INT128__)
+__extension__ typedef __int128 NumAcc;
+#define NUM_ACC_ADD(acc, p) ((acc) += (p))
+static inline NUM num_acc_round(NumAcc acc)
+{
+    const int64_t alim = INT64_MAX - ((int64_t)1 << 31);
+    if (acc >= alim)
+        return NUM_MAX;
+    if (acc <= -alim)
+        return NUM_MIN;
+    return num_from_scaled((int64_t)acc, 32);
+}
+#else
+typedef struct NumAcc { int64_t hi, lo; } NumAcc;
+#define NUM_ACC_ADD(acc, p) ((acc).hi += (p) / 65536, (acc).lo += (p) % 65536)
+static inline NUM num_acc_round(NumAcc acc)
+{
+    int64_t t = acc.hi + acc.lo / 65536, l = acc.lo % 65536;
+    const int64_t tlim = ((int64_t)1 << 47) - 2, alim = INT64_MAX - ((int64_t)1 << 31);
+    if (t > tlim)
+        return NUM_MAX;
+    if (t < -tlim)
+        return NUM_MIN;
+    int64_t v = t * 65536 + l;
+    if (v >= alim)
+        return NUM_MAX;
+    if (v <= -alim)
+        return NUM_MIN;
+    return num_from_scaled(v, 32);
+}
+#endif
+#endif
+
 /* sum of a[i*as] * b[i*bs] for i < n, rounded once */
 static inline NUM num_dot(const NUM *a, int as, const NUM *b, int bs, int n)
 {
 #if NUM_IS_FIXED
-    int64_t acc = 0;
-    for (int i = 0; i < n; i++)
-        acc += (int64_t)a[i * as] * b[i * bs];
-    return num_from_scaled(acc, 32);
+    NumAcc acc = { 0 };
+    for (int i = 0; i < n; i++) {
+        int64_t p = (int64_t)a[i * as] * b[i * bs];
+        NUM_ACC_ADD(acc, p);
+    }
+    return num_acc_round(acc);
 #else
     NUM acc = 0;
     for (int i = 0; i < n; i++)
@@ -600,10 +641,15 @@ static inline NUM num_lerp(NUM a, NUM b, CLIPT t)
     return num_sat((int64_t)a + num_from_scaled(((int64_t)b - a) * t, 46));
 }
 
-/* round(x / w * scale) for w > 0, as a 64-bit integer */
+/* round(x / w * scale) for w > 0, as a 64-bit integer, clamped to
+** +-NUM_PROJ_GUARD: a clipped vertex has |x / w| <= 1 and scale <= 2^19
+** (half of MAX_VIEWPORT_DIMS in subpixels), so the clamp only holds the
+** window coordinates of a vertex that non-finite input let past the clip
+** tests to what the rasterizer's 64-bit edge arithmetic expects */
+#define NUM_PROJ_GUARD ((int64_t)1 << 20)
 static inline int64_t num_proj(NUM x, NUM w, int64_t scale)
 {
-    return i64_round_div((int64_t)x * scale, w);
+    return i64_clamp(i64_round_div((int64_t)x * scale, w), -NUM_PROJ_GUARD, NUM_PROJ_GUARD);
 }
 
 /* window depth of clip z, w: (n + (f - n) * (z/w + 1) / 2) * maxval */
@@ -756,12 +802,15 @@ static inline CLIPT num_clip_t(NUM dp, NUM dq)
 
 static inline NUM num_lerp(NUM a, NUM b, CLIPT t) { return a + (b - a) * t; }
 
+#define NUM_PROJ_GUARD ((int64_t)1 << 20)      /* as the fixed build's */
+
 static inline int64_t num_proj(NUM x, NUM w, int64_t scale)
 {
     /* ties away from zero, as the fixed build's i64_round_div: every build
     ** snaps a vertex exactly between two subpixels to the same one */
+    /* clamped as the fixed build's (NaN gives 0) */
     double v = (double)((x / w) * (NUM)scale);
-    return v < 0 ? -dbl_to_i64(-v, 0, (int64_t)1 << 40) : dbl_to_i64(v, 0, (int64_t)1 << 40);
+    return v < 0 ? -dbl_to_i64(-v, 0, NUM_PROJ_GUARD) : dbl_to_i64(v, 0, NUM_PROJ_GUARD);
 }
 
 static inline DEPTHV depthv_from_clip(NUM z, NUM w, NUM n, NUM f, uint32_t maxval)
@@ -1091,16 +1140,25 @@ static inline void num_dot4_lanes_mask(NUM m0, NUM m1, NUM m2, NUM m3, const NUM
 {
     const int64_t c3 = (int64_t)m3 * NUM_ONE;
     NUM_FOR_LANES(i, cnt) {
-        int64_t acc = 0;
-        if (mask & 1)
-            acc += (int64_t)m0 * x[i];
-        if (mask & 2)
-            acc += (int64_t)m1 * y[i];
-        if (mask & 4)
-            acc += (int64_t)m2 * z[i];
-        if (mask & 8)
-            acc += w_one ? c3 : (int64_t)m3 * w[i];
-        out[i] = num_from_scaled(acc, 32);
+        NumAcc acc = { 0 };
+        int64_t p;
+        if (mask & 1) {
+            p = (int64_t)m0 * x[i];
+            NUM_ACC_ADD(acc, p);
+        }
+        if (mask & 2) {
+            p = (int64_t)m1 * y[i];
+            NUM_ACC_ADD(acc, p);
+        }
+        if (mask & 4) {
+            p = (int64_t)m2 * z[i];
+            NUM_ACC_ADD(acc, p);
+        }
+        if (mask & 8) {
+            p = w_one ? c3 : (int64_t)m3 * w[i];
+            NUM_ACC_ADD(acc, p);
+        }
+        out[i] = num_acc_round(acc);
     }
 }
 
@@ -1146,14 +1204,21 @@ static inline void num_dot3_lanes_mask(NUM m0, NUM m1, NUM m2, const NUM *x, con
                                        NUM *restrict out, int cnt, const int mask)
 {
     NUM_FOR_LANES(i, cnt) {
-        int64_t acc = 0;
-        if (mask & 1)
-            acc += (int64_t)m0 * x[i];
-        if (mask & 2)
-            acc += (int64_t)m1 * y[i];
-        if (mask & 4)
-            acc += (int64_t)m2 * z[i];
-        out[i] = num_from_scaled(acc, 32);
+        NumAcc acc = { 0 };
+        int64_t p;
+        if (mask & 1) {
+            p = (int64_t)m0 * x[i];
+            NUM_ACC_ADD(acc, p);
+        }
+        if (mask & 2) {
+            p = (int64_t)m1 * y[i];
+            NUM_ACC_ADD(acc, p);
+        }
+        if (mask & 4) {
+            p = (int64_t)m2 * z[i];
+            NUM_ACC_ADD(acc, p);
+        }
+        out[i] = num_acc_round(acc);
     }
 }
 

@@ -132,6 +132,9 @@ typedef struct Material {
 #define GLES_MAX_TEXTURE_SIZE 2048
 #define GLES_MAX_TEXTURE_LEVELS 12      /* 2048 .. 1 */
 
+/* the default memory budget of a context's textures and buffers */
+#define GLES_DEFAULT_MEMORY_LIMIT ((int64_t)256 << 20)
+
 typedef struct TexImage {
     int width, height;                  /* 0 while undefined */
     uint32_t *texels;
@@ -304,6 +307,10 @@ struct GlesContext {
     BufferObject *array_buffer, *element_buffer;
     uint32_t buffer_serial;     /* advances whenever any buffer's contents change */
 
+    /* the memory budget of texture images and buffer data together, in
+    ** bytes (gles_memory_limit): an allocation past it is OUT_OF_MEMORY */
+    int64_t mem_used, mem_limit;
+
     /* the per-draw overflow rule (range.c): GLES_RANGE_* mode, counts and
     ** the last violation's c, s, t and c*s + t */
     int range_mode;
@@ -368,6 +375,13 @@ static inline int ctx_simd(const GlesContext *ctx)
 }
 
 int ctx_message(GlesContext *ctx, int status, const char *fmt, ...);
+
+/* may `add` bytes be allocated while `release` bytes held now are freed
+** (the memory budget of textures and buffers) */
+static inline int ctx_mem_fits(const GlesContext *ctx, int64_t add, int64_t release)
+{
+    return add <= release || add - release <= ctx->mem_limit - ctx->mem_used;
+}
 /* store an RGBA colour clamped to [0,1], as queried (d) and as computed (n) */
 void ctx_set_clamped_color(double *d, NUM *n, const double *rgba);
 

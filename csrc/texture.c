@@ -28,9 +28,39 @@ static void texture_defaults(Texture *t, unsigned int name)
     t->wrap_s = t->wrap_t = GL_REPEAT;
 }
 
-static void texture_release(Texture *t)
+/* bytes a level's texels hold (the memory budget counts them) */
+static int64_t level_bytes(const TexImage *li)
+{
+    return li->texels ? (int64_t)li->width * li->height * (int64_t)sizeof *li->texels : 0;
+}
+
+/* bytes held by levels [from, to) */
+static int64_t levels_bytes(const Texture *t, int from, int to)
+{
+    int64_t n = 0;
+    for (int i = from; i < to; i++)
+        n += level_bytes(&t->level[i]);
+    return n;
+}
+
+/* bytes of the levels GENERATE_MIPMAP derives below a w x h level 0 */
+static int64_t chain_bytes(int w, int h)
+{
+    int64_t n = 0;
+    if (w <= 0 || h <= 0)
+        return 0;
+    while (w > 1 || h > 1) {
+        w = w > 1 ? w / 2 : 1;
+        h = h > 1 ? h / 2 : 1;
+        n += (int64_t)w * h * (int64_t)sizeof(uint32_t);
+    }
+    return n;
+}
+
+static void texture_release(GlesContext *ctx, Texture *t)
 {
     for (int i = 0; i < GLES_MAX_TEXTURE_LEVELS; i++) {
+        ctx->mem_used -= level_bytes(&t->level[i]);
         free(t->level[i].texels);
         t->level[i].texels = NULL;
     }
@@ -64,12 +94,12 @@ void texture_free(GlesContext *ctx)
     for (uint32_t i = 0; i < nt->capacity; i++) {
         Texture *t = nt->keys[i] && nt->keys[i] != ~0u ? nt->values[i] : NULL;
         if (t) {
-            texture_release(t);
+            texture_release(ctx, t);
             free(t);
         }
     }
     names_free(nt);
-    texture_release(&ctx->default_texture);
+    texture_release(ctx, &ctx->default_texture);
 }
 
 static TexUnit *active_unit(GlesContext *ctx) { return &ctx->units[ctx->active_texture - GL_TEXTURE0]; }
@@ -147,7 +177,7 @@ void gles_DeleteTextures(GlesContext *ctx, int n, const unsigned int *names)
         for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
             if (ctx->units[u].bound == t)
                 ctx->units[u].bound = &ctx->default_texture;
-        texture_release(t);
+        texture_release(ctx, t);
         free(t);
     }
     ctx->dirty |= DIRTY_TEXTURE;
@@ -252,28 +282,39 @@ static int max_level_of_size(void)
     return l;
 }
 
-/* (re)allocate a level; returns 0 on no memory */
-static int level_alloc(TexImage *li, int width, int height)
+/* (re)allocate a level; returns 0 on no memory (malloc's or the budget's) */
+static int level_alloc(GlesContext *ctx, TexImage *li, int width, int height)
 {
     size_t n = (size_t)width * (size_t)height;
+    int64_t add = (int64_t)n * (int64_t)sizeof(uint32_t), release = level_bytes(li);
+    if (!ctx_mem_fits(ctx, add, release))
+        return 0;
     uint32_t *texels = n ? calloc(n, sizeof *texels) : NULL;
     if (n && !texels)
         return 0;
     free(li->texels);
+    ctx->mem_used += add - release;
     li->texels = texels;
     li->width = width;
     li->height = height;
     return 1;
 }
 
-/* GENERATE_MIPMAP: every level below 0 from a 2x2 box filter, rounded */
-static int generate_mipmaps(Texture *t)
+/* GENERATE_MIPMAP: every level below 0 from a 2x2 box filter, rounded; an
+** empty level 0 leaves every level below it empty too */
+static int generate_mipmaps(GlesContext *ctx, Texture *t)
 {
     int w = t->level[0].width, h = t->level[0].height;
+    if (w <= 0 || h <= 0 || !t->level[0].texels) {
+        for (int i = 1; i < GLES_MAX_TEXTURE_LEVELS; i++)
+            if (!level_alloc(ctx, &t->level[i], 0, 0))
+                return 0;
+        return 1;
+    }
     for (int i = 1; w > 1 || h > 1; i++) {
         int nw = w > 1 ? w / 2 : 1, nh = h > 1 ? h / 2 : 1;
         TexImage *src = &t->level[i - 1], *dst = &t->level[i];
-        if (!level_alloc(dst, nw, nh))
+        if (!level_alloc(ctx, dst, nw, nh))
             return 0;
         t->level_format[i] = t->format;
         for (int y = 0; y < nh; y++)
@@ -299,10 +340,22 @@ static int generate_mipmaps(Texture *t)
 
 static void image_changed(GlesContext *ctx, Texture *t, int level)
 {
-    if (level == 0 && t->generate_mipmap && !generate_mipmaps(t))
+    if (level == 0 && t->generate_mipmap && !generate_mipmaps(ctx, t))
         ctx_error(ctx, GL_OUT_OF_MEMORY);
     texture_complete(t);
     ctx->dirty |= DIRTY_TEXTURE;
+}
+
+/* does the budget allow level `level` of t to become w x h, with the
+** levels GENERATE_MIPMAP then derives from it */
+static int image_fits(const GlesContext *ctx, const Texture *t, int level, int w, int h)
+{
+    int64_t add = (int64_t)w * h * (int64_t)sizeof(uint32_t), release = level_bytes(&t->level[level]);
+    if (level == 0 && t->generate_mipmap) {
+        add += chain_bytes(w, h);
+        release += levels_bytes(t, 1, GLES_MAX_TEXTURE_LEVELS);
+    }
+    return ctx_mem_fits(ctx, add, release);
 }
 
 /* common checks of TexImage2D-like calls; returns the GL error or 0 */
@@ -316,9 +369,19 @@ static unsigned int check_image(int level, int width, int height, int border)
     return 0;
 }
 
+static int is_palette_format(unsigned int f) { return f >= GL_PALETTE4_RGB8_OES && f <= GL_PALETTE8_RGB5_A1_OES; }
+
 int gles_TexImage2D(GlesContext *ctx, unsigned int target, int level, int internalformat, int width, int height,
                     int border, unsigned int format, unsigned int type, const void *pixels, int64_t nbytes)
 {
+    /* a PALETTE* internal format is not one of Table 3.8's: INVALID_VALUE
+    ** (§3.7.1), whatever format and type say (as piglit's paletted API
+    ** test expects of ES; the extension's INVALID_OPERATION is for the
+    ** sub-image commands) */
+    if (target == GL_TEXTURE_2D && is_palette_format((unsigned int)internalformat)) {
+        ctx_error(ctx, GL_INVALID_VALUE);
+        return GLES_OK;
+    }
     if (target != GL_TEXTURE_2D || !is_base_format(format)
         || (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT_5_6_5 && type != GL_UNSIGNED_SHORT_4_4_4_4
             && type != GL_UNSIGNED_SHORT_5_5_5_1)) {
@@ -340,9 +403,9 @@ int gles_TexImage2D(GlesContext *ctx, unsigned int target, int level, int intern
                            (long long)need, (long long)nbytes);
     Texture *t = active_unit(ctx)->bound;
     TexImage *li = &t->level[level];
-    if (!level_alloc(li, width, height)) {
+    if (!image_fits(ctx, t, level, width, height) || !level_alloc(ctx, li, width, height)) {
         ctx_error(ctx, GL_OUT_OF_MEMORY);
-        return GLES_EMEMORY;
+        return GLES_OK;
     }
     t->level_format[level] = format;
     if (level == 0) {
@@ -394,6 +457,10 @@ int gles_TexSubImage2D(GlesContext *ctx, unsigned int target, int level, int xof
     if (nbytes >= 0 && need > nbytes)
         return ctx_message(ctx, GLES_EVALUE, "TexSubImage2D reads %lld bytes, the pixel data holds %lld",
                            (long long)need, (long long)nbytes);
+    if (!image_fits(ctx, t, level, li->width, li->height)) {
+        ctx_error(ctx, GL_OUT_OF_MEMORY);
+        return GLES_OK;
+    }
     int bpp = pixel_bytes(format, type);
     int64_t stride = unpack_stride(ctx, width, bpp);
     for (int y = 0; y < height; y++)
@@ -457,6 +524,10 @@ void gles_CopyTexImage2D(GlesContext *ctx, unsigned int target, int level, unsig
     Texture *t = active_unit(ctx)->bound;
     TexImage *li = &t->level[level];
     size_t count = (size_t)width * (size_t)height;
+    if (!image_fits(ctx, t, level, width, height)) {
+        ctx_error(ctx, GL_OUT_OF_MEMORY);
+        return;
+    }
     uint32_t *tmp = count ? malloc(count * sizeof *tmp) : NULL;
     if (count && !tmp) {
         ctx_error(ctx, GL_OUT_OF_MEMORY);
@@ -465,10 +536,12 @@ void gles_CopyTexImage2D(GlesContext *ctx, unsigned int target, int level, unsig
     for (int j = 0; j < height; j++)
         for (int i = 0; i < width; i++)
             tmp[(size_t)j * width + i] = as_base_format(framebuffer_texel(ctx, (int64_t)x + i, (int64_t)y + j), internalformat);
+    ctx->mem_used -= level_bytes(li);
     free(li->texels);
     li->texels = tmp;
     li->width = width;
     li->height = height;
+    ctx->mem_used += level_bytes(li);
     t->level_format[level] = internalformat;
     if (level == 0) {
         t->format = internalformat;
@@ -496,6 +569,10 @@ void gles_CopyTexSubImage2D(GlesContext *ctx, unsigned int target, int level, in
     }
     if (t->paletted || !copy_compatible(ctx, t->level_format[level])) {
         ctx_error(ctx, GL_INVALID_OPERATION);
+        return;
+    }
+    if (width && height && !image_fits(ctx, t, level, li->width, li->height)) {
+        ctx_error(ctx, GL_OUT_OF_MEMORY);
         return;
     }
     for (int j = 0; j < height; j++)
@@ -561,11 +638,11 @@ int gles_CompressedTexImage2D(GlesContext *ctx, unsigned int target, int level, 
         ctx_error(ctx, GL_INVALID_ENUM);
         return GLES_OK;
     }
-    int levels = -level + 1;
-    if (level > 0 || levels - 1 > max_level_of_size() || check_image(0, width, height, border)) {
+    if (level > 0 || level < -max_level_of_size() || check_image(0, width, height, border)) {
         ctx_error(ctx, GL_INVALID_VALUE);
         return GLES_OK;
     }
+    int levels = -level + 1;
     int64_t need = texture_paletted_bytes(internalformat, levels, width, height);
     if (image_size < 0 || image_size != need) {
         ctx_error(ctx, GL_INVALID_VALUE);
@@ -575,6 +652,20 @@ int gles_CompressedTexImage2D(GlesContext *ctx, unsigned int target, int level, 
         return ctx_message(ctx, GLES_EVALUE, "CompressedTexImage2D reads %lld bytes, the data holds %lld",
                            (long long)need, (long long)nbytes);
     Texture *t = active_unit(ctx)->bound;
+    int64_t add = 0, release = levels_bytes(t, 0, levels);
+    for (int l = 0, w = width, h = height; l < levels; l++) {
+        add += (int64_t)w * h * (int64_t)sizeof(uint32_t);
+        w = w > 1 ? w / 2 : 1;
+        h = h > 1 ? h / 2 : 1;
+    }
+    if (levels == 1 && t->generate_mipmap) {
+        add += chain_bytes(width, height);
+        release = levels_bytes(t, 0, GLES_MAX_TEXTURE_LEVELS);
+    }
+    if (!ctx_mem_fits(ctx, add, release)) {
+        ctx_error(ctx, GL_OUT_OF_MEMORY);
+        return GLES_OK;
+    }
     const uint8_t *p = data;
     int entries = 1 << pf->index_bits;
     uint32_t palette[256];
@@ -584,9 +675,9 @@ int gles_CompressedTexImage2D(GlesContext *ctx, unsigned int target, int level, 
     int w = width, h = height;
     for (int l = 0; l < levels; l++) {
         TexImage *li = &t->level[l];
-        if (!level_alloc(li, w, h)) {
+        if (!level_alloc(ctx, li, w, h)) {
             ctx_error(ctx, GL_OUT_OF_MEMORY);
-            return GLES_EMEMORY;
+            return GLES_OK;
         }
         t->level_format[l] = pf->base;
         int64_t n = (int64_t)w * h;

@@ -27,6 +27,8 @@ for _base, _key in ((GLBase, "common-lite"), (GLCommon, "common")):
 
 COLOR_FORMATS = {"rgba8888": 0, "rgb565": 1}
 
+DEFAULT_MEMORY_LIMIT = 256 << 20    # bytes of texture images and buffer data per context
+
 VENDOR = "gles"
 EXTENSIONS = {
     "common": ["GL_OES_byte_coordinates", "GL_OES_fixed_point", "GL_OES_single_precision",
@@ -62,6 +64,10 @@ class Context:
             that break the overflow rule c*s + t < 16384: "warn", "raise",
             "clamp" or "off" (see :mod:`gles.profile`). Default: "warn" for
             the fixed build, "off" for float and double.
+        memory_limit: the bytes a context's texture images (4 per texel,
+            every level) and buffer objects' data may hold together; a
+            command that would pass it records GL_OUT_OF_MEMORY and changes
+            nothing. Default 256 MiB. Settable later as ``ctx.memory_limit``.
 
     Contexts are independent: each has its own lock, and draws release the
     GIL, so contexts in different threads render at the same time.
@@ -69,7 +75,7 @@ class Context:
 
     def __init__(self, width: int, height: int, *, profile: str = "common", numeric: str = "fixed",
                  color: str = "rgba8888", depth: int = 24, stencil: int = 8,
-                 range_check: str | None = None) -> None:
+                 range_check: str | None = None, memory_limit: int | None = None) -> None:
         if profile not in PROFILES:
             raise ValueError(f"profile must be one of {sorted(PROFILES)}, not {profile!r}")
         if color not in COLOR_FORMATS:
@@ -82,6 +88,9 @@ class Context:
             range_check = "warn" if numeric == "fixed" else "off"
         if range_check not in POLICIES:
             raise ValueError(f"range_check must be one of {list(POLICIES)}, not {range_check!r}")
+        if memory_limit is None:
+            memory_limit = DEFAULT_MEMORY_LIMIT
+        memory_limit = self._check_limit(memory_limit)
         width, height = int(width), int(height)
         if not (1 <= width <= 4096 and 1 <= height <= 4096):
             raise ValueError(f"width and height must be in 1..4096, not {width}x{height}")
@@ -100,6 +109,8 @@ class Context:
         self._check_errors = False
         self._range = RangeMonitor(range_check)
         self._lib.gles_range_set(self._ptr, _RANGE_MODE[range_check])
+        self._memory_limit = memory_limit
+        self._lib.gles_memory_limit(self._ptr, memory_limit)
         self.gl: GLBase = self._gl_class()(self)
 
     def __repr__(self) -> str:
@@ -149,6 +160,33 @@ class Context:
             with self._lock:
                 self._lib.gles_range_reset(self._ptr)
         return report
+
+    @staticmethod
+    def _check_limit(limit: Any) -> int:
+        if isinstance(limit, bool) or not isinstance(limit, (int, np.integer)):
+            raise TypeError(f"memory_limit must be an int (bytes), not {type(limit).__name__}")
+        if not 0 <= int(limit) <= 2**62:
+            raise ValueError(f"memory_limit must be in 0..2**62 bytes, not {limit}")
+        return int(limit)
+
+    @property
+    def memory_limit(self) -> int:
+        """Bytes the context's texture images and buffer data may hold
+        together (settable; a limit below the current use only stops growth)."""
+        return self._memory_limit
+
+    @memory_limit.setter
+    def memory_limit(self, limit: int) -> None:
+        limit = self._check_limit(limit)
+        with self._lock:
+            self._lib.gles_memory_limit(self._ptr, limit)
+        self._memory_limit = limit
+
+    @property
+    def memory_used(self) -> int:
+        """Bytes the context's texture images and buffer data hold now."""
+        with self._lock:
+            return int(self._lib.gles_memory_used(self._ptr))
 
     @property
     def check_errors(self) -> bool:

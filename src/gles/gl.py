@@ -26,7 +26,9 @@ Conventions (those of PyOpenGL's GLES1 bindings):
 
 from __future__ import annotations
 
+import math
 import operator
+import sys
 import threading
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any, Union
@@ -75,26 +77,192 @@ _PARAM_COUNT = {
 }
 
 
+_INT_MIN, _INT_MAX = -(2**31), 2**31 - 1
+
+# the C types of the core's integer parameters: (lowest, highest, GL name)
+_C_RANGES = {
+    "int": (_INT_MIN, _INT_MAX, "GLint (32-bit signed)"),
+    "unsigned int": (0, 2**32 - 1, "GLenum/GLuint (32-bit unsigned)"),
+    "unsigned char": (0, 255, "GLboolean/GLubyte (8-bit unsigned)"),
+    "int64_t": (-(2**63), 2**63 - 1, "GLsizeiptr/GLintptr (64-bit signed)"),
+}
+
+
+def _arg_name(value: Any) -> tuple[str | None, str | None]:
+    """(command, parameter) of the innermost gl* command on the stack that
+    was given `value`; (None, None) when none was (the value was derived)."""
+    f = sys._getframe(1)
+    for _ in range(12):
+        if f is None:
+            break
+        code = f.f_code
+        if code.co_name.startswith("gl"):
+            for pname in code.co_varnames[:code.co_argcount]:
+                if pname == "self":
+                    continue
+                v = f.f_locals.get(pname)
+                if v is value or (type(v) is type(value) and not isinstance(v, np.ndarray) and v == value):
+                    return code.co_name, pname
+        f = f.f_back
+    return None, None
+
+
+def _describe(value: Any, fallback: str) -> str:
+    """'glX: name=value' for an argument value, naming it as the caller did."""
+    cmd, pname = _arg_name(value)
+    if pname is None:
+        return f"{fallback}={value!r}"
+    return f"{cmd}: {pname}={value!r}"
+
+
 def _index(v: Any) -> int:
     """An integer argument; floats are refused rather than truncated."""
-    return operator.index(v)
+    try:
+        return operator.index(v)
+    except TypeError:
+        raise TypeError(f"{_describe(v, 'argument')} is not an integer") from None
+
+
+def _finite_or_zero(v: float) -> float:
+    return 0.0 if math.isnan(v) else v
+
+
+def _to_int(v: float) -> int:
+    """§6.1.2: a real as an integer query answers it: rounded to nearest and
+    clamped to the GLint range (NaN, which has no nearest integer, gives 0)."""
+    v = _finite_or_zero(v)
+    return int(min(max(math.floor(v + 0.5), _INT_MIN), _INT_MAX)) if math.isfinite(v) else \
+        (_INT_MAX if v > 0 else _INT_MIN)
+
+
+def _to_fixed(v: float) -> int:
+    """§6.1.2: a real as a fixed-point query answers it: times 2^16, rounded,
+    saturated to the GLfixed range (NaN gives 0)."""
+    return _to_int(_finite_or_zero(v) * 65536.0)
 
 
 def _norm_to_int(v: float) -> int:
     """§6.1.2: a value in [-1, 1] to the whole int range, ((2^32 - 1) v - 1) / 2."""
-    return int(np.clip(np.floor(((2.0**32 - 1) * v - 1) / 2 + 0.5), -(2**31), 2**31 - 1))
+    return _to_int(((2.0**32 - 1) * _finite_or_zero(v) - 1) / 2)
+
+
+def _mask(v: Any) -> int:
+    """A GLuint bit mask; -1 and other negative GLint values stand for their
+    32-bit two's complement, as they would in C."""
+    i = _index(v)
+    if not _INT_MIN <= i <= 2**32 - 1:
+        raise ValueError(f"{_describe(v, 'mask')} does not fit a 32-bit mask")
+    return i & 0xFFFFFFFF
+
+
+def _names(n: Any, names: Any, what: str) -> Any:
+    """n GLuint object names as a C array (Delete*)."""
+    try:
+        arr = np.atleast_1d(np.asarray(names, dtype=np.int64)).reshape(-1)
+    except OverflowError:
+        raise ValueError(f"{what}: a name does not fit GLuint") from None
+    except (TypeError, ValueError) as e:
+        raise type(e)(f"{what}: {e}") from None
+    if n > arr.size:
+        raise ValueError(f"{what}: n is {n} but {arr.size} names were given")
+    head = arr[: max(n, 0)]
+    if head.size and (head.min() < 0 or head.max() > 2**32 - 1):
+        raise ValueError(f"{what}: a name does not fit GLuint (32-bit unsigned)")
+    return head
 
 
 def _fixed(v: Any) -> float:
-    """A 16.16 argument as the exact real it stands for."""
-    return operator.index(v) * _FIX
+    """A 16.16 (GLfixed) argument as the exact real it stands for."""
+    i = _index(v)
+    if not _INT_MIN <= i <= _INT_MAX:
+        raise ValueError(f"{_describe(v, 'argument')} does not fit GLfixed (32-bit signed)")
+    return i * _FIX
 
 
 def _values(data: Any, n: int, what: str, dtype: Any = np.float64) -> np.ndarray:
-    arr = np.asarray(data, dtype=dtype).reshape(-1)
+    """At least n values of `data` as a flat array of dtype; an integer
+    dtype (GLfixed, GLint and GLshort vectors) takes 32-bit values only."""
+    try:
+        arr = np.asarray(data, dtype=dtype).reshape(-1)
+    except OverflowError:
+        raise ValueError(f"{what}: a value does not fit 32 bits") from None
+    except (TypeError, ValueError) as e:
+        raise type(e)(f"{what}: {e}") from None
     if arr.size < n:
         raise ValueError(f"{what} needs {n} values, got {arr.size}")
+    head = arr[:n]
+    if arr.dtype.kind == "i" and head.size and (head.min() < _INT_MIN or head.max() > _INT_MAX):
+        raise ValueError(f"{what}: a value does not fit 32 bits")
     return arr
+
+
+def _c_arg_error(name: str, ctype: Any, args: tuple, exc: Exception) -> Exception:
+    """The TypeError or ValueError naming the argument the core's function
+    `name` could not take (cffi converts before any C code runs)."""
+    for i, (a, t) in enumerate(zip(args, ctype.args)):
+        if t.kind != "primitive":
+            continue
+        rng = _C_RANGES.get(t.cname)
+        fallback = f"{name} argument {i}"
+        if rng is not None:
+            if isinstance(a, bool):
+                continue
+            try:
+                v = operator.index(a)
+            except TypeError:
+                return TypeError(f"{_describe(a, fallback)} is not an integer")
+            if not rng[0] <= v <= rng[1]:
+                return ValueError(f"{_describe(a, fallback)} does not fit {rng[2]}")
+        elif t.cname in ("double", "float"):
+            try:
+                float(a)
+            except OverflowError:
+                return ValueError(f"{_describe(a, fallback)} is too large for a real")
+            except (TypeError, ValueError):
+                return TypeError(f"{_describe(a, fallback)} is not a number")
+    if isinstance(exc, OverflowError):
+        return ValueError(f"{name}: {exc}")
+    return TypeError(f"{name}: {exc}")
+
+
+class _CoreFunctions:
+    """The core's functions with argument conversion errors (cffi's
+    OverflowError, TypeError) turned into ValueError/TypeError naming the
+    argument. Nothing reaches C when conversion fails."""
+
+    def __init__(self, lib: Any, ffi: Any) -> None:
+        self._lib_ = lib
+        self._ffi_ = ffi
+
+    def __getattr__(self, name: str) -> Any:
+        fn = getattr(self._lib_, name)
+        try:
+            ctype = self._ffi_.typeof(fn)
+        except TypeError:
+            return fn
+        if ctype.kind != "function":
+            return fn
+
+        def call(*args: Any) -> Any:
+            try:
+                return fn(*args)
+            except (OverflowError, TypeError) as e:
+                raise _c_arg_error(name, ctype, args, e) from None
+
+        call.__name__ = name
+        setattr(self, name, call)
+        return call
+
+
+_CORE_FUNCTIONS: dict[int, _CoreFunctions] = {}
+
+
+def _core_functions(lib: Any, ffi: Any) -> _CoreFunctions:
+    """One wrapper per compiled core, shared by its contexts."""
+    key = id(lib)
+    if key not in _CORE_FUNCTIONS:
+        _CORE_FUNCTIONS[key] = _CoreFunctions(lib, ffi)
+    return _CORE_FUNCTIONS[key]
 
 
 class GLBase:
@@ -102,7 +270,7 @@ class GLBase:
 
     def __init__(self, context: Context) -> None:
         self._context = context
-        self._lib = context._lib
+        self._lib = _core_functions(context._lib, context._ffi)
         self._ffi = context._ffi
         self._p = context._ptr
         self._lock: threading.Lock = context._lock
@@ -126,7 +294,9 @@ class GLBase:
             off = int(data)
             if off < 0:
                 raise ValueError(f"{what}: negative buffer offset {off}")
-            if self._bound(binding) == 0 and off != 0:
+            if off > 2**63 - 1:
+                raise ValueError(f"{what}: buffer offset {off} does not fit GLintptr")
+            if binding == 0 or (self._bound(binding) == 0 and off != 0):
                 raise ValueError(f"{what}: an int is a byte offset and needs a bound buffer object")
             return ffi.cast("void *", off), -1, None
         want = _DTYPES.get(gltype) if gltype is not None else None
@@ -153,10 +323,21 @@ class GLBase:
                 mask = self._lib.gles_range_last(self._p, last, arrays)
             self._context._range.draw(call, tuple(last), {i: arrays[i] for i in range(10) if mask >> i & 1})
             return
-        msg = self._ffi.string(self._lib.gles_last_message(self._p)).decode()
         if st == _STATUS_MEMORY:
-            raise MemoryError(msg)
+            return      # the core recorded OUT_OF_MEMORY and changed nothing
+        msg = self._ffi.string(self._lib.gles_last_message(self._p)).decode()
         raise ValueError(msg)
+
+    def _names_too_many(self, n: int) -> bool:
+        """Glgen* of more names than the memory budget's bytes can list:
+        OUT_OF_MEMORY, nothing generated."""
+        if n > _INT_MAX:
+            raise ValueError(f"{_describe(n, 'n')} does not fit GLsizei (32-bit signed)")
+        if n * 4 <= self._context.memory_limit:
+            return False
+        with self._lock:
+            self._lib.gles_set_error(self._p, C.GL_OUT_OF_MEMORY)
+        return True
 
     def _get(self, pname: int) -> tuple[list[float], int]:
         with self._lock:
@@ -182,22 +363,17 @@ class GLBase:
     def glGetIntegerv(self, pname: int) -> Any:
         """Integer state; colours, depth values and normals map [-1, 1] to the int range (§6.1.2)."""
         vals, kind = self._get(pname)
-        out = []
-        for v in vals:
-            if kind == _KIND_NORM:
-                out.append(_norm_to_int(v))
-            else:
-                # unsigned masks (0xFFFFFFFF) clamp to the GLint range
-                out.append(int(np.clip(np.floor(v + 0.5), -(2**31), 2**31 - 1)))
+        # unsigned masks (0xFFFFFFFF) clamp to the GLint range
+        out = [_norm_to_int(v) if kind == _KIND_NORM else _to_int(v) for v in vals]
         return self._result(out, np.int32)
 
     def glGetFixedv(self, pname: int) -> Any:
         """State as 16.16; enums are returned unscaled (§6.1.2)."""
         vals, kind = self._get(pname)
         if kind == _KIND_ENUM:
-            out = [int(v) for v in vals]
+            out = [_to_int(v) for v in vals]
         else:
-            out = [int(np.clip(np.floor(v * 65536.0 + 0.5), -(2**31), 2**31 - 1)) for v in vals]
+            out = [_to_fixed(v) for v in vals]
         return self._result(out, np.int32)
 
     def glGetBooleanv(self, pname: int) -> Any:
@@ -222,7 +398,7 @@ class GLBase:
         eq = self._ffi.new("double[4]")
         with self._lock:
             self._lib.gles_GetClipPlane(self._p, _index(plane), eq)
-        return np.array([int(np.floor(eq[i] * 65536.0 + 0.5)) for i in range(4)], dtype=np.int32)
+        return np.array([_to_fixed(eq[i]) for i in range(4)], dtype=np.int32)
 
     def glGetBufferParameteriv(self, target: int, pname: int) -> int:
         out = self._ffi.new("int[1]")
@@ -420,7 +596,10 @@ class GLBase:
 
     def glColor4ub(self, r: int, g: int, b: int, a: int) -> None:
         # Table 2.7: c / 255
-        vals = [_index(c) & 0xFF for c in (r, g, b, a)]
+        vals = [_index(c) for c in (r, g, b, a)]
+        for c in vals:
+            if not 0 <= c <= 255:
+                raise ValueError(f"{_describe(c, 'glColor4ub argument')} does not fit GLubyte")
         with self._lock:
             self._lib.gles_Color4(self._p, vals[0] / 255.0, vals[1] / 255.0, vals[2] / 255.0, vals[3] / 255.0)
 
@@ -483,12 +662,14 @@ class GLBase:
         return [out[i] for i in range(n)]
 
     def glGetLightxv(self, light: int, pname: int) -> Any:
+        """Light state as 16.16, saturated to the GLfixed range (§6.1.2)."""
         vals = self._get_lm(self._lib.gles_GetLight, light, pname)
-        return self._result([int(np.floor(v * 65536.0 + 0.5)) for v in vals], np.int32)
+        return self._result([_to_fixed(v) for v in vals], np.int32)
 
     def glGetMaterialxv(self, face: int, pname: int) -> Any:
+        """Material state as 16.16, saturated to the GLfixed range (§6.1.2)."""
         vals = self._get_lm(self._lib.gles_GetMaterial, face, pname)
-        return self._result([int(np.floor(v * 65536.0 + 0.5)) for v in vals], np.int32)
+        return self._result([_to_fixed(v) for v in vals], np.int32)
 
     # {================================================================
     # per-fragment operations (§4.1) and fog (§3.8)
@@ -499,7 +680,7 @@ class GLBase:
 
     def glStencilFunc(self, func: int, ref: int, mask: int) -> None:
         with self._lock:
-            self._lib.gles_StencilFunc(self._p, func, ref, _index(mask) & 0xFFFFFFFF)
+            self._lib.gles_StencilFunc(self._p, func, ref, _mask(mask))
 
     def glStencilOp(self, fail: int, zfail: int, zpass: int) -> None:
         with self._lock:
@@ -507,7 +688,7 @@ class GLBase:
 
     def glStencilMask(self, mask: int) -> None:
         with self._lock:
-            self._lib.gles_StencilMask(self._p, _index(mask) & 0xFFFFFFFF)
+            self._lib.gles_StencilMask(self._p, _mask(mask))
 
     def glBlendFunc(self, sfactor: int, dfactor: int) -> None:
         with self._lock:
@@ -562,6 +743,8 @@ class GLBase:
 
     def glGenTextures(self, n: int) -> Any:
         n = _index(n)
+        if self._names_too_many(n):
+            return None
         out = self._ffi.new("unsigned int[]", max(n, 1))
         with self._lock:
             self._lib.gles_GenTextures(self._p, n, out if n >= 0 else self._ffi.NULL)
@@ -572,10 +755,8 @@ class GLBase:
 
     def glDeleteTextures(self, n: int, textures: Any) -> None:
         n = _index(n)
-        names = np.atleast_1d(np.asarray(textures, dtype=np.int64))
-        if n > names.size:
-            raise ValueError(f"glDeleteTextures: n is {n} but {names.size} names were given")
-        buf = self._ffi.new("unsigned int[]", [int(v) & 0xFFFFFFFF for v in names[: max(n, 0)]] or [0])
+        head = _names(n, textures, "glDeleteTextures")
+        buf = self._ffi.new("unsigned int[]", [int(v) for v in head] or [0])
         with self._lock:
             self._lib.gles_DeleteTextures(self._p, n, buf)
 
@@ -626,10 +807,9 @@ class GLBase:
                                border: int, imageSize: int, data: Pointer) -> None:
         """OES_compressed_paletted_texture: the ten PALETTE*_OES formats; a
         negative level gives -level + 1 mip levels in one image."""
+        # the GL rules (imageSize against the format, size and levels) come
+        # first; the core raises for data shorter than it would read only after
         ptr, nbytes, keep = self._pixels(data, "glCompressedTexImage2D")
-        if nbytes >= 0 and _index(imageSize) > nbytes:
-            raise ValueError(
-                f"glCompressedTexImage2D: imageSize is {imageSize} but the data holds {nbytes} bytes")
         with self._lock:
             st = self._lib.gles_CompressedTexImage2D(self._p, target, level, internalformat, width, height,
                                                      border, imageSize, ptr, nbytes)
@@ -705,11 +885,11 @@ class GLBase:
         if form == "f":
             return self._result([float(v) for v in vals], np.float32)
         if form == "x":
-            conv = [int(np.floor(v * 65536.0 + 0.5)) if real else int(v) for v in vals]
+            conv = [_to_fixed(v) if real else _to_int(v) for v in vals]
         elif int(pname) == C.GL_TEXTURE_ENV_COLOR:
             conv = [_norm_to_int(v) for v in vals]
         else:
-            conv = [int(np.floor(v + 0.5)) for v in vals]
+            conv = [_to_int(v) for v in vals]
         return self._result(conv, np.int32)
 
     def glGetTexParameteriv(self, target: int, pname: int) -> Any:
@@ -828,6 +1008,8 @@ class GLBase:
 
     def glGenBuffers(self, n: int) -> Any:
         n = _index(n)
+        if self._names_too_many(n):
+            return None
         if n < 0:
             with self._lock:
                 self._lib.gles_GenBuffers(self._p, n, self._ffi.NULL)
@@ -840,10 +1022,8 @@ class GLBase:
 
     def glDeleteBuffers(self, n: int, buffers: Any) -> None:
         n = _index(n)
-        names = np.atleast_1d(np.asarray(buffers, dtype=np.int64))
-        if n > names.size:
-            raise ValueError(f"glDeleteBuffers: n is {n} but {names.size} names were given")
-        buf = self._ffi.new("unsigned int[]", [int(v) & 0xFFFFFFFF for v in names[: max(n, 0)]] or [0])
+        head = _names(n, buffers, "glDeleteBuffers")
+        buf = self._ffi.new("unsigned int[]", [int(v) for v in head] or [0])
         with self._lock:
             self._lib.gles_DeleteBuffers(self._p, n, buf)
 
@@ -855,26 +1035,55 @@ class GLBase:
         with self._lock:
             return bool(self._lib.gles_IsBuffer(self._p, buffer))
 
+    def _buffer_data(self, data: Pointer, what: str) -> tuple[Any, int, Any]:
+        """The bytes a Buffer(Sub)Data call copies from: an array, bytes or a
+        sequence, never an int (no command reads from an address)."""
+        if isinstance(data, (int, np.integer)):
+            raise TypeError(f"{what}: data must be an array, bytes or None, not an int")
+        return self._pointer(data, None, 0, what)
+
+    def _bound_buffer_size(self, target: int) -> int | None:
+        """Size of the buffer bound to target (None: no buffer or a bad target)."""
+        binding = {C.GL_ARRAY_BUFFER: C.GL_ARRAY_BUFFER_BINDING,
+                   C.GL_ELEMENT_ARRAY_BUFFER: C.GL_ELEMENT_ARRAY_BUFFER_BINDING}.get(target)
+        if binding is None or self._bound(binding) == 0:
+            return None
+        out = self._ffi.new("int[1]")
+        self._lib.gles_GetBufferParameteriv(self._p, target, C.GL_BUFFER_SIZE, out)
+        return int(out[0])
+
     def glBufferData(self, target: int, size: int, data: Pointer, usage: int) -> None:
+        """Replace the bound buffer's store with size bytes (zeros when data
+        is None). Past the context's memory budget: OUT_OF_MEMORY, the buffer
+        unchanged."""
         size = _index(size)
         if data is None:
-            ptr, nbytes = self._ffi.NULL, size
-            keep = None
+            ptr, nbytes, keep = self._ffi.NULL, size, None
         else:
-            ptr, nbytes, keep = self._pointer(data, None, 0, "glBufferData")
-            if nbytes >= 0 and size > nbytes:
-                raise ValueError(f"glBufferData: size is {size} but the data holds {nbytes} bytes")
+            ptr, nbytes, keep = self._buffer_data(data, "glBufferData")
         with self._lock:
+            if nbytes >= 0 and size > nbytes:
+                # a GL error decides first; only a call that would copy
+                # past the data raises
+                if (target in (C.GL_ARRAY_BUFFER, C.GL_ELEMENT_ARRAY_BUFFER)
+                        and usage in (C.GL_STATIC_DRAW, C.GL_DYNAMIC_DRAW)
+                        and self._bound_buffer_size(target) is not None):
+                    raise ValueError(f"glBufferData: size is {size} but the data holds {nbytes} bytes")
+                ptr = self._ffi.NULL
             st = self._lib.gles_BufferData(self._p, target, size, ptr, usage)
         del keep
         self._status(st)
 
     def glBufferSubData(self, target: int, offset: int, size: int, data: Pointer) -> None:
-        size = _index(size)
-        ptr, nbytes, keep = self._pointer(data, None, 0, "glBufferSubData")
-        if nbytes >= 0 and size > nbytes:
-            raise ValueError(f"glBufferSubData: size is {size} but the data holds {nbytes} bytes")
+        """Copy size bytes of data into the bound buffer at offset."""
+        size, offset = _index(size), _index(offset)
+        ptr, nbytes, keep = self._buffer_data(data, "glBufferSubData")
         with self._lock:
+            if nbytes >= 0 and size > nbytes:
+                held = self._bound_buffer_size(target)
+                if held is not None and 0 <= offset <= held and 0 <= size <= held - offset:
+                    raise ValueError(f"glBufferSubData: size is {size} but the data holds {nbytes} bytes")
+                ptr = self._ffi.NULL    # the core records the GL error and copies nothing
             self._lib.gles_BufferSubData(self._p, target, offset, size, ptr)
         del keep
 
@@ -916,18 +1125,29 @@ class GLBase:
         """
         width, height = _index(width), _index(height)
         if array is not None:
-            buf = self._ffi.from_buffer(array, require_writable=True)
+            try:
+                buf = self._ffi.from_buffer(array, require_writable=True)
+            except TypeError:
+                raise TypeError("glReadPixels: array must be a writable buffer") from None
             with self._lock:
                 st = self._lib.gles_ReadPixels(self._p, x, y, width, height, format, type, buf, len(buf))
             self._status(st)
             return None
-        if width < 0 or height < 0:
-            with self._lock:
-                self._lib.gles_ReadPixels(self._p, x, y, width, height, format, type, self._ffi.NULL, 0)
-            return None
         bpp = 4 if (format, type) == (C.GL_RGBA, C.GL_UNSIGNED_BYTE) else 2
         align = self._bound(C.GL_PACK_ALIGNMENT)
-        stride = -(-width * bpp // align) * align
+        stride = -(-max(width, 0) * bpp // align) * align
+        if width < 0 or height < 0 or stride * height > self._context.memory_limit:
+            # GL errors first; a valid read this large raises (pass `array`)
+            with self._lock:
+                err_before = self._lib.gles_GetError(self._p)
+                self._lib.gles_ReadPixels(self._p, x, y, width, height, format, type, self._ffi.NULL, 0)
+                err = self._lib.gles_GetError(self._p)
+                if err_before or err:
+                    self._lib.gles_set_error(self._p, err_before or err)
+            if err:
+                return None
+            raise ValueError(f"glReadPixels: {width} x {height} pixels need {stride * height} bytes, "
+                             f"past the context's memory_limit")
         raw = np.zeros(max(stride * height, 1), dtype=np.uint8)
         with self._lock:
             err_before = self._lib.gles_GetError(self._p)

@@ -320,7 +320,7 @@ def _scalar_checker(name: str, positions: tuple[int, ...]) -> Callable[[RangeMon
                 break
             try:
                 x = float(args[i])
-            except (TypeError, ValueError):
+            except (TypeError, ValueError, OverflowError):
                 continue      # the command itself reports the misuse
             kind = classify(x)
             if kind:
@@ -341,7 +341,7 @@ def _vector_checker(name: str, at: int,
             return args
         try:
             vals = np.asarray(args[at], dtype=np.float64).reshape(-1)
-        except (TypeError, ValueError):
+        except (TypeError, ValueError, OverflowError):
             return args
         if vals.size < n:
             return args       # the command raises for a short vector

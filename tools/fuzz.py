@@ -1,0 +1,1212 @@
+"""A stateful fuzzer of the GL ES 1.1 commands.
+
+    python tools/fuzz.py --minutes N --seed S      # seeds S, S+1, ... for N minutes
+    python tools/fuzz.py --seeds 0:200             # a fixed seed range (CI)
+    python tools/fuzz.py --replay 123              # one sequence, in this process
+
+Each seed makes one context (random build, profile, colour format, depth and
+stencil bits, size, range-check policy and memory limit) and a sequence of
+random calls of every command of its profile. Values come from classes:
+valid and invalid enums; ints at the edges of their C types and beyond; NaN,
+infinities, 1e30, -0.0 and denormals; fixed values near +-2^31; textures of
+every format and size (zero sizes, GENERATE_MIPMAP); buffers (deleting a
+bound one); arrays of every type and stride; draws with out-of-range counts,
+offsets and indices; matrix stacks past their depth.
+
+After every call the invariant must hold: the call returned or raised
+GLError, TypeError or ValueError; glGetError returns NO_ERROR or one of the
+six error codes; and a call that raised or recorded an error left the state
+as it was (a snapshot of queried state, the framebuffer and the memory in
+use, compared before and after).
+
+Sequences run in worker processes, so a crash or a hang (a call taking more
+than --call-timeout seconds) is caught too. A failing sequence is shrunk to
+a minimal one that fails the same way and printed as a few lines of Python.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import pickle
+import queue
+import random
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+import warnings
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Callable
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parent.parent
+
+import gles  # noqa: E402
+from gles import constants as C  # noqa: E402
+from gles.errors import GLError  # noqa: E402
+
+ERRORS = {
+    C.GL_NO_ERROR,
+    C.GL_INVALID_ENUM,
+    C.GL_INVALID_VALUE,
+    C.GL_INVALID_OPERATION,
+    C.GL_STACK_OVERFLOW,
+    C.GL_STACK_UNDERFLOW,
+    C.GL_OUT_OF_MEMORY,
+}
+ALL_ENUMS = sorted({int(getattr(C, n)) for n in C.__all__ if n.startswith("GL_")})
+_NAME_OF: dict[int, str] = {}
+for _n in C.__all__:
+    if _n.startswith("GL_"):
+        _NAME_OF.setdefault(int(getattr(C, _n)), _n)
+
+# {====================================================================
+# values: (python value, source text)
+
+
+@dataclass
+class Val:
+    value: Any
+    text: str
+
+
+def _float_text(x: float) -> str:
+    if math.isnan(x):
+        return "float('nan')"
+    if math.isinf(x):
+        return "float('inf')" if x > 0 else "float('-inf')"
+    return repr(float(x))
+
+
+def _list_text(vals: list[Any]) -> str:
+    return "[" + ", ".join(_float_text(v) if isinstance(v, float) else repr(v) for v in vals) + "]"
+
+
+def _array_text(a: np.ndarray) -> str:
+    return f"np.array({_list_text(a.tolist())}, dtype=np.{a.dtype})"
+
+
+INT_EDGES = [0, 1, -1, 2, 7, 2**31 - 1, -(2**31), 2**31, 2**32 - 1, 2**32, -(2**31) - 1, 2**63, 2**15, 65535]
+FLOATS = [
+    float("nan"),
+    float("inf"),
+    float("-inf"),
+    1e30,
+    -1e30,
+    -0.0,
+    0.0,
+    5e-324,
+    1e-310,
+    1e-40,
+    0.5,
+    1.0,
+    -1.0,
+    2.0,
+    255.0,
+    32768.0,
+    1e6,
+    3.4e38,
+]
+FIXED_EDGES = [0, 65536, -65536, 32768, 2**31 - 1, -(2**31), 2**31, -(2**31) - 1, 1, -1, 2**24, 2**16 * 200]
+
+
+class Gen:
+    """Random values by class, from one seeded generator."""
+
+    def __init__(self, rng: random.Random) -> None:
+        self.r = rng
+
+    def enum(self, valid: list[int]) -> Val:
+        r = self.r.random()
+        if valid and r < 0.8:
+            v = int(self.r.choice(valid))  # a plain int: sequences are pickled
+        elif r < 0.9:
+            v = self.r.choice(ALL_ENUMS)
+        else:
+            v = self.r.choice([0, 1, 0xFFFF, 2**32 - 1, 0x1234, -1, 2**32])
+        return Val(v, f"G.{_NAME_OF[v]}" if v in _NAME_OF and v > 1 else repr(v))
+
+    def int(self, lo: int = 0, hi: int = 8) -> Val:
+        v = self.r.randint(lo, hi) if self.r.random() < 0.8 else self.r.choice(INT_EDGES)
+        return Val(v, repr(v))
+
+    def size(self) -> Val:
+        r = self.r.random()
+        if r < 0.6:
+            v = self.r.choice([0, 1, 2, 4, 8, 16, 32, 64])
+        elif r < 0.75:
+            v = self.r.choice([3, 5, 128, 256, 2048, 4096])
+        else:
+            v = self.r.choice(INT_EDGES)
+        return Val(v, repr(v))
+
+    def real(self) -> float:
+        r = self.r.random()
+        if r < 0.6:
+            return self.r.choice(
+                [self.r.uniform(-2, 2), self.r.uniform(-100, 100), float(self.r.randint(-3, 3))]
+            )
+        return self.r.choice(FLOATS) * self.r.choice([1, 1, -1])
+
+    def float(self) -> Val:
+        v = self.real()
+        return Val(v, _float_text(v))
+
+    def fixed_int(self) -> int:
+        r = self.r.random()
+        if r < 0.6:
+            return self.r.randint(-4 * 65536, 4 * 65536)
+        return self.r.choice(FIXED_EDGES)
+
+    def fixed(self) -> Val:
+        v = self.fixed_int()
+        return Val(v, repr(v))
+
+    def bool(self) -> Val:
+        v = self.r.choice([True, False, 0, 1, 2])
+        return Val(v, repr(v))
+
+    def vec(self, n: int, kind: str) -> Val:
+        k = n if self.r.random() < 0.9 else self.r.randint(0, n + 2)
+        if kind == "f":
+            vals: list[Any] = [self.real() for _ in range(k)]
+        elif kind == "x":
+            vals = [self.fixed_int() for _ in range(k)]
+        else:
+            vals = [self.int(-4, 16).value for _ in range(k)]
+        if k == 1 and self.r.random() < 0.3:
+            v = vals[0]
+            return Val(v, _float_text(v) if isinstance(v, float) else repr(v))
+        return Val(vals, _list_text(vals))
+
+    def data(self, nbytes: int) -> Val:
+        r = self.r.random()
+        if r < 0.15:
+            return Val(None, "None")
+        if r < 0.2:
+            v = self.r.choice([0, 4096, 2**40])
+            return Val(v, repr(v))
+        if r < 0.35:
+            nbytes = self.r.randint(0, max(nbytes, 1) * 2)
+        nbytes = min(max(nbytes, 0), 1 << 22)
+        return Val(bytes(nbytes), f"bytes({nbytes})")
+
+    def array(self, gltype: int, n: int) -> Val:
+        dt = {
+            C.GL_BYTE: np.int8,
+            C.GL_UNSIGNED_BYTE: np.uint8,
+            C.GL_SHORT: np.int16,
+            C.GL_UNSIGNED_SHORT: np.uint16,
+            C.GL_FIXED: np.int32,
+            C.GL_FLOAT: np.float32,
+        }.get(gltype, np.float32)
+        if self.r.random() < 0.1:
+            dt = self.r.choice([np.float64, np.int64, np.uint8])
+        if np.dtype(dt).kind == "f":
+            a = np.array([self.real() for _ in range(n)], dtype=np.float64).astype(dt)
+        else:
+            info = np.iinfo(dt)
+            a = np.array(
+                [
+                    self.r.choice(
+                        [
+                            0,
+                            1,
+                            -1 if info.min else 2,
+                            info.min,
+                            info.max,
+                            self.r.randint(max(info.min, -40), min(info.max, 40)),
+                        ]
+                    )
+                    for _ in range(n)
+                ],
+                dtype=dt,
+            )
+        return Val(a, _array_text(a))
+
+    def pointer(self, gltype: int) -> Val:
+        r = self.r.random()
+        if r < 0.15:
+            v = self.r.choice([0, 4, 16, 64, 2**31, 2**63, -4])
+            return Val(v, repr(v))
+        if r < 0.2:
+            return Val(None, "None")
+        return self.array(gltype, self.r.choice([0, 1, 3, 8, 16, 32, 64]))
+
+
+# {====================================================================
+# the commands and their argument classes
+
+CAPS = [
+    C.GL_ALPHA_TEST,
+    C.GL_BLEND,
+    C.GL_COLOR_LOGIC_OP,
+    C.GL_COLOR_MATERIAL,
+    C.GL_CULL_FACE,
+    C.GL_DEPTH_TEST,
+    C.GL_DITHER,
+    C.GL_FOG,
+    C.GL_LIGHTING,
+    C.GL_LIGHT0,
+    C.GL_LIGHT1,
+    C.GL_LINE_SMOOTH,
+    C.GL_MULTISAMPLE,
+    C.GL_NORMALIZE,
+    C.GL_POINT_SMOOTH,
+    C.GL_POINT_SPRITE_OES,
+    C.GL_POLYGON_OFFSET_FILL,
+    C.GL_RESCALE_NORMAL,
+    C.GL_SAMPLE_ALPHA_TO_COVERAGE,
+    C.GL_SAMPLE_ALPHA_TO_ONE,
+    C.GL_SAMPLE_COVERAGE,
+    C.GL_SCISSOR_TEST,
+    C.GL_STENCIL_TEST,
+    C.GL_TEXTURE_2D,
+    C.GL_CLIP_PLANE0,
+    C.GL_MATRIX_PALETTE_OES,
+]
+CLIENT = [
+    C.GL_VERTEX_ARRAY,
+    C.GL_NORMAL_ARRAY,
+    C.GL_COLOR_ARRAY,
+    C.GL_TEXTURE_COORD_ARRAY,
+    C.GL_POINT_SIZE_ARRAY_OES,
+    C.GL_MATRIX_INDEX_ARRAY_OES,
+    C.GL_WEIGHT_ARRAY_OES,
+]
+MODES = [
+    C.GL_POINTS,
+    C.GL_LINES,
+    C.GL_LINE_LOOP,
+    C.GL_LINE_STRIP,
+    C.GL_TRIANGLES,
+    C.GL_TRIANGLE_STRIP,
+    C.GL_TRIANGLE_FAN,
+]
+TYPES = [C.GL_BYTE, C.GL_UNSIGNED_BYTE, C.GL_SHORT, C.GL_UNSIGNED_SHORT, C.GL_FIXED, C.GL_FLOAT]
+BASE = [C.GL_ALPHA, C.GL_LUMINANCE, C.GL_LUMINANCE_ALPHA, C.GL_RGB, C.GL_RGBA]
+PALETTE = list(range(C.GL_PALETTE4_RGB8_OES, C.GL_PALETTE8_RGB5_A1_OES + 1))
+PIXTYPES = [
+    C.GL_UNSIGNED_BYTE,
+    C.GL_UNSIGNED_SHORT_5_6_5,
+    C.GL_UNSIGNED_SHORT_4_4_4_4,
+    C.GL_UNSIGNED_SHORT_5_5_5_1,
+]
+FUNCS = list(range(C.GL_NEVER, C.GL_ALWAYS + 1))
+FACTORS = [
+    C.GL_ZERO,
+    C.GL_ONE,
+    C.GL_SRC_COLOR,
+    C.GL_ONE_MINUS_SRC_COLOR,
+    C.GL_SRC_ALPHA,
+    C.GL_ONE_MINUS_SRC_ALPHA,
+    C.GL_DST_ALPHA,
+    C.GL_ONE_MINUS_DST_ALPHA,
+    C.GL_DST_COLOR,
+    C.GL_ONE_MINUS_DST_COLOR,
+    C.GL_SRC_ALPHA_SATURATE,
+]
+STENCIL_OPS = [
+    C.GL_KEEP,
+    C.GL_ZERO,
+    C.GL_REPLACE,
+    C.GL_INCR,
+    C.GL_DECR,
+    C.GL_INVERT,
+    C.GL_INCR_WRAP_OES,
+    C.GL_DECR_WRAP_OES,
+]
+LIGHTS = [C.GL_LIGHT0, C.GL_LIGHT1, C.GL_LIGHT7, C.GL_LIGHT0 + 8]
+LIGHT_P = [
+    C.GL_AMBIENT,
+    C.GL_DIFFUSE,
+    C.GL_SPECULAR,
+    C.GL_POSITION,
+    C.GL_SPOT_DIRECTION,
+    C.GL_SPOT_EXPONENT,
+    C.GL_SPOT_CUTOFF,
+    C.GL_CONSTANT_ATTENUATION,
+    C.GL_LINEAR_ATTENUATION,
+    C.GL_QUADRATIC_ATTENUATION,
+]
+MAT_P = [C.GL_AMBIENT, C.GL_DIFFUSE, C.GL_SPECULAR, C.GL_EMISSION, C.GL_SHININESS, C.GL_AMBIENT_AND_DIFFUSE]
+FACES = [C.GL_FRONT, C.GL_BACK, C.GL_FRONT_AND_BACK]
+LM_P = [C.GL_LIGHT_MODEL_AMBIENT, C.GL_LIGHT_MODEL_TWO_SIDE]
+FOG_P = [C.GL_FOG_MODE, C.GL_FOG_DENSITY, C.GL_FOG_START, C.GL_FOG_END, C.GL_FOG_COLOR]
+FOG_MODES = [C.GL_LINEAR, C.GL_EXP, C.GL_EXP2]
+TEXP = [
+    C.GL_TEXTURE_MIN_FILTER,
+    C.GL_TEXTURE_MAG_FILTER,
+    C.GL_TEXTURE_WRAP_S,
+    C.GL_TEXTURE_WRAP_T,
+    C.GL_GENERATE_MIPMAP,
+    C.GL_TEXTURE_CROP_RECT_OES,
+]
+TEXP_V = [
+    C.GL_NEAREST,
+    C.GL_LINEAR,
+    C.GL_NEAREST_MIPMAP_NEAREST,
+    C.GL_LINEAR_MIPMAP_LINEAR,
+    C.GL_NEAREST_MIPMAP_LINEAR,
+    C.GL_LINEAR_MIPMAP_NEAREST,
+    C.GL_REPEAT,
+    C.GL_CLAMP_TO_EDGE,
+    C.GL_MIRRORED_REPEAT_OES,
+    1,
+    0,
+]
+ENV_T = [C.GL_TEXTURE_ENV, C.GL_POINT_SPRITE_OES]
+ENV_P = [
+    C.GL_TEXTURE_ENV_MODE,
+    C.GL_TEXTURE_ENV_COLOR,
+    C.GL_COMBINE_RGB,
+    C.GL_COMBINE_ALPHA,
+    C.GL_SRC0_RGB,
+    C.GL_SRC1_RGB,
+    C.GL_SRC2_ALPHA,
+    C.GL_OPERAND0_RGB,
+    C.GL_OPERAND2_ALPHA,
+    C.GL_RGB_SCALE,
+    C.GL_ALPHA_SCALE,
+    C.GL_COORD_REPLACE_OES,
+]
+ENV_V = [
+    C.GL_MODULATE,
+    C.GL_REPLACE,
+    C.GL_DECAL,
+    C.GL_BLEND,
+    C.GL_ADD,
+    C.GL_COMBINE,
+    C.GL_ADD_SIGNED,
+    C.GL_INTERPOLATE,
+    C.GL_SUBTRACT,
+    C.GL_DOT3_RGB,
+    C.GL_DOT3_RGBA,
+    C.GL_TEXTURE,
+    C.GL_CONSTANT,
+    C.GL_PRIMARY_COLOR,
+    C.GL_PREVIOUS,
+    C.GL_SRC_COLOR,
+    C.GL_ONE_MINUS_SRC_ALPHA,
+    C.GL_TEXTURE1,
+    1,
+    2,
+    4,
+]
+POINT_P = [
+    C.GL_POINT_SIZE_MIN,
+    C.GL_POINT_SIZE_MAX,
+    C.GL_POINT_FADE_THRESHOLD_SIZE,
+    C.GL_POINT_DISTANCE_ATTENUATION,
+]
+HINT_T = [
+    C.GL_PERSPECTIVE_CORRECTION_HINT,
+    C.GL_POINT_SMOOTH_HINT,
+    C.GL_LINE_SMOOTH_HINT,
+    C.GL_FOG_HINT,
+    C.GL_GENERATE_MIPMAP_HINT,
+]
+HINT_V = [C.GL_FASTEST, C.GL_NICEST, C.GL_DONT_CARE]
+MATRIX_MODES = [C.GL_MODELVIEW, C.GL_PROJECTION, C.GL_TEXTURE, C.GL_MATRIX_PALETTE_OES]
+UNITS = [C.GL_TEXTURE0, C.GL_TEXTURE1, C.GL_TEXTURE0 + 2, C.GL_TEXTURE0 + 4]
+BUF_T = [C.GL_ARRAY_BUFFER, C.GL_ELEMENT_ARRAY_BUFFER]
+USAGE = [C.GL_STATIC_DRAW, C.GL_DYNAMIC_DRAW]
+PLANES = [C.GL_CLIP_PLANE0, C.GL_CLIP_PLANE0 + 1, C.GL_CLIP_PLANE0 + 5]
+GET_P = [
+    C.GL_VIEWPORT,
+    C.GL_MODELVIEW_MATRIX,
+    C.GL_FOG_END,
+    C.GL_CURRENT_COLOR,
+    C.GL_DEPTH_RANGE,
+    C.GL_COLOR_CLEAR_VALUE,
+    C.GL_POINT_SIZE,
+    C.GL_STENCIL_WRITEMASK,
+    C.GL_MAX_TEXTURE_SIZE,
+    C.GL_CURRENT_NORMAL,
+    C.GL_ALPHA_TEST_REF,
+    C.GL_MODELVIEW_MATRIX_FLOAT_AS_INT_BITS_OES,
+    C.GL_COMPRESSED_TEXTURE_FORMATS,
+    C.GL_LIGHT_MODEL_AMBIENT,
+    C.GL_POINT_DISTANCE_ATTENUATION,
+]
+POINTER_P = [C.GL_VERTEX_ARRAY_POINTER, C.GL_COLOR_ARRAY_POINTER, C.GL_TEXTURE_COORD_ARRAY_POINTER]
+PIXEL_P = [C.GL_PACK_ALIGNMENT, C.GL_UNPACK_ALIGNMENT]
+
+Spec = Callable[[Gen], list[Val]]
+
+
+def _tex_image(g: Gen) -> list[Val]:
+    fmt = g.enum(BASE + PALETTE[:1])
+    w, h = g.size(), g.size()
+    typ = g.enum(PIXTYPES)
+    nb = (
+        (w.value * 4 + 8) * h.value
+        if isinstance(w.value, int) and 0 <= w.value <= 2048 and 0 <= h.value <= 2048
+        else 64
+    )
+    return [
+        g.enum([C.GL_TEXTURE_2D]),
+        g.int(0, 11),
+        fmt,
+        w,
+        h,
+        g.int(0, 0),
+        fmt if g.r.random() < 0.8 else g.enum(BASE),
+        typ,
+        g.data(nb),
+    ]
+
+
+def _tex_sub(g: Gen) -> list[Val]:
+    w, h = g.size(), g.size()
+    nb = (
+        (w.value * 4 + 8) * h.value
+        if isinstance(w.value, int) and 0 <= w.value <= 2048 and 0 <= h.value <= 2048
+        else 64
+    )
+    return [
+        g.enum([C.GL_TEXTURE_2D]),
+        g.int(0, 4),
+        g.int(0, 8),
+        g.int(0, 8),
+        w,
+        h,
+        g.enum(BASE),
+        g.enum(PIXTYPES),
+        g.data(nb),
+    ]
+
+
+def _compressed(g: Gen) -> list[Val]:
+    level = g.int(-5, 0)
+    n = g.r.choice([0, 16, 48, 176, 300, 1024, 2048])
+    return [
+        g.enum([C.GL_TEXTURE_2D]),
+        level,
+        g.enum(PALETTE),
+        g.size(),
+        g.size(),
+        g.int(0, 0),
+        g.int(0, 2048),
+        g.data(n),
+    ]
+
+
+def _draw_elements(g: Gen) -> list[Val]:
+    typ = g.enum([C.GL_UNSIGNED_BYTE, C.GL_UNSIGNED_SHORT])
+    return [g.enum(MODES), g.int(0, 24), typ, g.pointer(typ.value)]
+
+
+def _array_ptr(sizes: list[int], types: list[int], with_size: bool = True) -> Spec:
+    def spec(g: Gen) -> list[Val]:
+        typ = g.enum(types)
+        out = [Val(g.r.choice(sizes), "")] if with_size else []
+        if out:
+            out[0] = g.int(min(sizes), max(sizes)) if g.r.random() < 0.9 else g.int(0, 8)
+        return out + [typ, g.int(0, 16) if g.r.random() < 0.8 else g.int(-4, 64), g.pointer(typ.value)]
+
+    return spec
+
+
+def _read_pixels(g: Gen) -> list[Val]:
+    fmt = g.enum([C.GL_RGBA, C.GL_RGB])
+    typ = g.enum([C.GL_UNSIGNED_BYTE, C.GL_UNSIGNED_SHORT_5_6_5])
+    args = [g.int(-4, 8), g.int(-4, 8), g.size(), g.size(), fmt, typ]
+    if g.r.random() < 0.3:
+        n = g.r.choice([0, 16, 1024, 65536])
+        args.append(Val(bytearray(n), f"bytearray({n})"))
+    return args
+
+
+def _names(g: Gen) -> list[Val]:
+    k = g.r.randint(0, 4)
+    names = [g.int(0, 8).value for _ in range(k)]
+    n = g.int(0, k) if g.r.random() < 0.9 else g.int(0, 8)
+    return [n, Val(names, repr(names))]
+
+
+def _f(n: int) -> Spec:
+    return lambda g: [g.float() for _ in range(n)]
+
+
+def _x(n: int) -> Spec:
+    return lambda g: [g.fixed() for _ in range(n)]
+
+
+def _e(*lists: list[int]) -> Spec:
+    return lambda g: [g.enum(lst) for lst in lists]
+
+
+def _scalar_param(
+    targets: list[int], pnames: list[int], kind: str, vector_n: int = 0, values: list[int] | None = None
+) -> Spec:
+    def spec(g: Gen) -> list[Val]:
+        args = [g.enum(targets)] if targets else []
+        args.append(g.enum(pnames))
+        if values and g.r.random() < 0.5:
+            v = g.enum(values)
+            args.append(
+                Val([v.value] * vector_n, "[" + ", ".join([v.text] * vector_n) + "]") if vector_n else v
+            )
+        elif vector_n:
+            args.append(g.vec(vector_n, kind))
+        else:
+            args.append({"f": g.float, "x": g.fixed, "i": lambda: g.int(-2, 8)}[kind]())
+        return args
+
+    return spec
+
+
+SPECS: dict[str, Spec] = {
+    "glActiveTexture": _e(UNITS),
+    "glClientActiveTexture": _e(UNITS),
+    "glAlphaFunc": lambda g: [g.enum(FUNCS), g.float()],
+    "glAlphaFuncx": lambda g: [g.enum(FUNCS), g.fixed()],
+    "glBindBuffer": lambda g: [g.enum(BUF_T), g.int(0, 6)],
+    "glBindTexture": lambda g: [g.enum([C.GL_TEXTURE_2D]), g.int(0, 6)],
+    "glBlendEquationOES": _e([C.GL_FUNC_ADD_OES, C.GL_FUNC_SUBTRACT_OES, C.GL_FUNC_REVERSE_SUBTRACT_OES]),
+    "glBlendEquationSeparateOES": _e(
+        [C.GL_FUNC_ADD_OES, C.GL_FUNC_SUBTRACT_OES], [C.GL_FUNC_ADD_OES, C.GL_FUNC_REVERSE_SUBTRACT_OES]
+    ),
+    "glBlendFunc": _e(FACTORS, FACTORS),
+    "glBlendFuncSeparateOES": _e(FACTORS, FACTORS, FACTORS, FACTORS),
+    "glBufferData": lambda g: (
+        lambda s: [g.enum(BUF_T), s, g.data(s.value if isinstance(s.value, int) else 0), g.enum(USAGE)]
+    )(g.size()),
+    "glBufferSubData": lambda g: (
+        lambda s: [g.enum(BUF_T), g.int(0, 32), s, g.data(s.value if isinstance(s.value, int) else 0)]
+    )(g.size()),
+    "glClear": lambda g: [
+        Val(v, hex(v)) for v in [g.r.choice([0x4100, 0x4500, 0x400, 0x100, 0x4000, 0, 0x1, 0xFFFFFFFF])]
+    ],
+    "glClearColor": _f(4),
+    "glClearColorx": _x(4),
+    "glClearDepthf": _f(1),
+    "glClearDepthx": _x(1),
+    "glClearStencil": lambda g: [g.int(0, 300)],
+    "glClipPlanef": lambda g: [g.enum(PLANES), g.vec(4, "f")],
+    "glClipPlanex": lambda g: [g.enum(PLANES), g.vec(4, "x")],
+    "glColor4f": _f(4),
+    "glColor4x": _x(4),
+    "glColor4ub": lambda g: [g.int(0, 255) for _ in range(4)],
+    "glColorMask": lambda g: [g.bool() for _ in range(4)],
+    "glColorPointer": _array_ptr([4], [C.GL_UNSIGNED_BYTE, C.GL_FIXED, C.GL_FLOAT]),
+    "glCompressedTexImage2D": _compressed,
+    "glCompressedTexSubImage2D": lambda g: [
+        g.enum([C.GL_TEXTURE_2D]),
+        g.int(0, 2),
+        g.int(0, 4),
+        g.int(0, 4),
+        g.size(),
+        g.size(),
+        g.enum(PALETTE),
+        g.int(0, 64),
+        g.data(64),
+    ],
+    "glCopyTexImage2D": lambda g: [
+        g.enum([C.GL_TEXTURE_2D]),
+        g.int(0, 6),
+        g.enum(BASE),
+        g.int(-8, 8),
+        g.int(-8, 8),
+        g.size(),
+        g.size(),
+        g.int(0, 0),
+    ],
+    "glCopyTexSubImage2D": lambda g: [
+        g.enum([C.GL_TEXTURE_2D]),
+        g.int(0, 4),
+        g.int(0, 8),
+        g.int(0, 8),
+        g.int(-8, 8),
+        g.int(-8, 8),
+        g.size(),
+        g.size(),
+    ],
+    "glCullFace": _e(FACES),
+    "glFrontFace": _e([C.GL_CW, C.GL_CCW]),
+    "glCurrentPaletteMatrixOES": lambda g: [g.int(0, 12)],
+    "glDeleteBuffers": _names,
+    "glDeleteTextures": _names,
+    "glDepthFunc": _e(FUNCS),
+    "glDepthMask": lambda g: [g.bool()],
+    "glDepthRangef": _f(2),
+    "glDepthRangex": _x(2),
+    "glDisable": _e(CAPS),
+    "glEnable": _e(CAPS),
+    "glIsEnabled": _e(CAPS),
+    "glDisableClientState": _e(CLIENT),
+    "glEnableClientState": _e(CLIENT),
+    "glDrawArrays": lambda g: [g.enum(MODES), g.int(0, 8), g.int(0, 24)],
+    "glDrawElements": _draw_elements,
+    "glDrawTexfOES": _f(5),
+    "glDrawTexxOES": _x(5),
+    "glDrawTexiOES": lambda g: [g.int(-8, 40) for _ in range(5)],
+    "glDrawTexsOES": lambda g: [g.int(-8, 40) for _ in range(5)],
+    "glDrawTexfvOES": lambda g: [g.vec(5, "f")],
+    "glDrawTexxvOES": lambda g: [g.vec(5, "x")],
+    "glDrawTexivOES": lambda g: [g.vec(5, "i")],
+    "glDrawTexsvOES": lambda g: [g.vec(5, "i")],
+    "glFinish": lambda g: [],
+    "glFlush": lambda g: [],
+    "glFogf": _scalar_param([], FOG_P, "f", values=FOG_MODES),
+    "glFogx": _scalar_param([], FOG_P, "x", values=FOG_MODES),
+    "glFogfv": _scalar_param([], FOG_P, "f", 4, FOG_MODES),
+    "glFogxv": _scalar_param([], FOG_P, "x", 4, FOG_MODES),
+    "glFrustumf": _f(6),
+    "glFrustumx": _x(6),
+    "glOrthof": _f(6),
+    "glOrthox": _x(6),
+    "glGenBuffers": lambda g: [g.int(0, 3)],
+    "glGenTextures": lambda g: [g.int(0, 3)],
+    "glGetBooleanv": _e(GET_P),
+    "glGetFixedv": _e(GET_P),
+    "glGetFloatv": _e(GET_P),
+    "glGetIntegerv": _e(GET_P),
+    "glGetBufferParameteriv": _e(BUF_T, [C.GL_BUFFER_SIZE, C.GL_BUFFER_USAGE]),
+    "glGetClipPlanef": _e(PLANES),
+    "glGetClipPlanex": _e(PLANES),
+    "glGetLightfv": _e(LIGHTS, LIGHT_P),
+    "glGetLightxv": _e(LIGHTS, LIGHT_P),
+    "glGetMaterialfv": _e(FACES, MAT_P),
+    "glGetMaterialxv": _e(FACES, MAT_P),
+    "glGetPointerv": _e(POINTER_P),
+    "glGetString": _e([C.GL_VENDOR, C.GL_RENDERER, C.GL_VERSION, C.GL_EXTENSIONS]),
+    "glGetTexEnvfv": _e(ENV_T, ENV_P),
+    "glGetTexEnviv": _e(ENV_T, ENV_P),
+    "glGetTexEnvxv": _e(ENV_T, ENV_P),
+    "glGetTexParameterfv": _e([C.GL_TEXTURE_2D], TEXP),
+    "glGetTexParameteriv": _e([C.GL_TEXTURE_2D], TEXP),
+    "glGetTexParameterxv": _e([C.GL_TEXTURE_2D], TEXP),
+    "glHint": _e(HINT_T, HINT_V),
+    "glIsBuffer": lambda g: [g.int(0, 6)],
+    "glIsTexture": lambda g: [g.int(0, 6)],
+    "glLightModelf": _scalar_param([], LM_P, "f"),
+    "glLightModelx": _scalar_param([], LM_P, "x"),
+    "glLightModelfv": _scalar_param([], LM_P, "f", 4),
+    "glLightModelxv": _scalar_param([], LM_P, "x", 4),
+    "glLightf": _scalar_param(LIGHTS, LIGHT_P, "f"),
+    "glLightx": _scalar_param(LIGHTS, LIGHT_P, "x"),
+    "glLightfv": _scalar_param(LIGHTS, LIGHT_P, "f", 4),
+    "glLightxv": _scalar_param(LIGHTS, LIGHT_P, "x", 4),
+    "glLineWidth": _f(1),
+    "glLineWidthx": _x(1),
+    "glPointSize": _f(1),
+    "glPointSizex": _x(1),
+    "glLoadIdentity": lambda g: [],
+    "glPushMatrix": lambda g: [],
+    "glPopMatrix": lambda g: [],
+    "glLoadMatrixf": lambda g: [g.vec(16, "f")],
+    "glLoadMatrixx": lambda g: [g.vec(16, "x")],
+    "glMultMatrixf": lambda g: [g.vec(16, "f")],
+    "glMultMatrixx": lambda g: [g.vec(16, "x")],
+    "glLoadPaletteFromModelViewMatrixOES": lambda g: [],
+    "glLogicOp": _e(list(range(C.GL_CLEAR, C.GL_SET + 1))),
+    "glMaterialf": _scalar_param(FACES, MAT_P, "f"),
+    "glMaterialx": _scalar_param(FACES, MAT_P, "x"),
+    "glMaterialfv": _scalar_param(FACES, MAT_P, "f", 4),
+    "glMaterialxv": _scalar_param(FACES, MAT_P, "x", 4),
+    "glMatrixIndexPointerOES": _array_ptr([0, 1, 2, 3], [C.GL_UNSIGNED_BYTE]),
+    "glWeightPointerOES": _array_ptr([0, 1, 2, 3], [C.GL_FIXED, C.GL_FLOAT]),
+    "glMatrixMode": _e(MATRIX_MODES),
+    "glMultiTexCoord4f": lambda g: [g.enum(UNITS)] + _f(4)(g),
+    "glMultiTexCoord4x": lambda g: [g.enum(UNITS)] + _x(4)(g),
+    "glNormal3f": _f(3),
+    "glNormal3x": _x(3),
+    "glNormalPointer": _array_ptr([3], [C.GL_BYTE, C.GL_SHORT, C.GL_FIXED, C.GL_FLOAT], with_size=False),
+    "glPixelStorei": lambda g: [g.enum(PIXEL_P), g.int(0, 8)],
+    "glPointParameterf": _scalar_param([], POINT_P, "f"),
+    "glPointParameterx": _scalar_param([], POINT_P, "x"),
+    "glPointParameterfv": _scalar_param([], POINT_P, "f", 3),
+    "glPointParameterxv": _scalar_param([], POINT_P, "x", 3),
+    "glPointSizePointerOES": _array_ptr([1], [C.GL_FIXED, C.GL_FLOAT], with_size=False),
+    "glPolygonOffset": _f(2),
+    "glPolygonOffsetx": _x(2),
+    "glQueryMatrixxOES": lambda g: [],
+    "glReadPixels": _read_pixels,
+    "glRotatef": _f(4),
+    "glRotatex": _x(4),
+    "glScalef": _f(3),
+    "glScalex": _x(3),
+    "glTranslatef": _f(3),
+    "glTranslatex": _x(3),
+    "glSampleCoverage": lambda g: [g.float(), g.bool()],
+    "glSampleCoveragex": lambda g: [g.fixed(), g.bool()],
+    "glScissor": lambda g: [g.int(-4, 8), g.int(-4, 8), g.size(), g.size()],
+    "glViewport": lambda g: [g.int(-4, 8), g.int(-4, 8), g.size(), g.size()],
+    "glShadeModel": _e([C.GL_FLAT, C.GL_SMOOTH]),
+    "glStencilFunc": lambda g: [g.enum(FUNCS), g.int(0, 300), g.int(0, 255)],
+    "glStencilMask": lambda g: [g.int(0, 255)],
+    "glStencilOp": _e(STENCIL_OPS, STENCIL_OPS, STENCIL_OPS),
+    "glTexCoordPointer": _array_ptr([2, 3, 4], [C.GL_BYTE, C.GL_SHORT, C.GL_FIXED, C.GL_FLOAT]),
+    "glVertexPointer": _array_ptr([2, 3, 4], [C.GL_BYTE, C.GL_SHORT, C.GL_FIXED, C.GL_FLOAT]),
+    "glTexEnvf": _scalar_param(ENV_T, ENV_P, "f", values=ENV_V),
+    "glTexEnvi": _scalar_param(ENV_T, ENV_P, "i", values=ENV_V),
+    "glTexEnvx": _scalar_param(ENV_T, ENV_P, "x", values=ENV_V),
+    "glTexEnvfv": _scalar_param(ENV_T, ENV_P, "f", 4, ENV_V),
+    "glTexEnviv": _scalar_param(ENV_T, ENV_P, "i", 4, ENV_V),
+    "glTexEnvxv": _scalar_param(ENV_T, ENV_P, "x", 4, ENV_V),
+    "glTexImage2D": _tex_image,
+    "glTexSubImage2D": _tex_sub,
+    "glTexParameterf": _scalar_param([C.GL_TEXTURE_2D], TEXP, "f", values=TEXP_V),
+    "glTexParameteri": _scalar_param([C.GL_TEXTURE_2D], TEXP, "i", values=TEXP_V),
+    "glTexParameterx": _scalar_param([C.GL_TEXTURE_2D], TEXP, "x", values=TEXP_V),
+    "glTexParameterfv": _scalar_param([C.GL_TEXTURE_2D], TEXP, "f", 4, TEXP_V),
+    "glTexParameteriv": _scalar_param([C.GL_TEXTURE_2D], TEXP, "i", 4, TEXP_V),
+    "glTexParameterxv": _scalar_param([C.GL_TEXTURE_2D], TEXP, "x", 4, TEXP_V),
+}
+# commands drawn more often: they make the state the others act on
+WEIGHTS = {
+    "glDrawArrays": 8,
+    "glDrawElements": 4,
+    "glVertexPointer": 4,
+    "glEnableClientState": 4,
+    "glTexImage2D": 3,
+    "glEnable": 3,
+    "glBindBuffer": 2,
+    "glBufferData": 2,
+    "glBindTexture": 2,
+    "glLoadMatrixf": 2,
+    "glPushMatrix": 2,
+    "glColorPointer": 2,
+    "glTexCoordPointer": 2,
+}
+
+
+# {====================================================================
+# sequences
+
+
+@dataclass
+class Setup:
+    width: int
+    height: int
+    profile: str
+    numeric: str
+    color: str
+    depth: int
+    stencil: int
+    range_check: str
+    memory_limit: int
+
+    def text(self) -> str:
+        return (
+            f"ctx = gles.Context({self.width}, {self.height}, profile={self.profile!r}, "
+            f"numeric={self.numeric!r}, color={self.color!r}, depth={self.depth}, "
+            f"stencil={self.stencil}, range_check={self.range_check!r}, memory_limit={self.memory_limit})"
+        )
+
+
+@dataclass
+class Call:
+    name: str
+    args: list[Val]
+
+    def text(self) -> str:
+        return f"g.{self.name}({', '.join(a.text for a in self.args)})"
+
+
+def make_sequence(seed: int, max_calls: int = 120) -> tuple[Setup, list[Call]]:
+    """The context and the calls of one seed (deterministic)."""
+    r = random.Random(seed)
+    setup = Setup(
+        r.randint(1, 40),
+        r.randint(1, 40),
+        r.choice(["common", "common-lite"]),
+        r.choice(["fixed", "float", "double"]),
+        r.choice(["rgba8888", "rgb565"]),
+        r.choice([0, 16, 24]),
+        r.choice([0, 8]),
+        r.choice(["off", "warn", "clamp", "raise"]),
+        r.choice([1 << 12, 1 << 16, 1 << 20, 1 << 24, 256 << 20]),
+    )
+    from gles import gl
+
+    names = gl.COMMON_COMMANDS if setup.profile == "common" else gl.COMMON_LITE_COMMANDS
+    pool = [n for n in names if n in SPECS]
+    weights = [WEIGHTS.get(n, 1) for n in pool]
+    g = Gen(r)
+    calls = [Call(name, SPECS[name](g)) for name in r.choices(pool, weights, k=r.randint(10, max_calls))]
+    return setup, calls
+
+
+def commands_covered() -> tuple[set[str], set[str]]:
+    """(commands with a generator, commands of the Common profile without one)."""
+    from gles import gl
+
+    every = set(gl.COMMON_COMMANDS) - {"glGetError"}
+    return every & set(SPECS), every - set(SPECS)
+
+
+# {====================================================================
+# running and the invariant
+
+ALLOWED = (GLError, TypeError, ValueError)
+
+
+def snapshot(ctx: gles.Context) -> tuple:
+    """The state an erring call must leave alone, as exact doubles."""
+    g = ctx.gl
+    s: list[Any] = []
+    for p in SNAP_GET:
+        s.append(tuple(g._get(p)[0]))
+    for p in CAPS + CLIENT:
+        s.append(g.glIsEnabled(p))
+    for p in POINTER_P:
+        s.append(g.glGetPointerv(p))
+    for light in (C.GL_LIGHT0, C.GL_LIGHT1):
+        for p in LIGHT_P:
+            s.append(tuple(g._get_lm(g._lib.gles_GetLight, light, p)))
+    for face in (C.GL_FRONT, C.GL_BACK):
+        for p in MAT_P[:5]:
+            s.append(tuple(g._get_lm(g._lib.gles_GetMaterial, face, p)))
+    for p in ENV_P[:-1]:
+        s.append(tuple(g._get_lm(g._lib.gles_GetTexEnv, C.GL_TEXTURE_ENV, p)))
+    for p in TEXP:
+        s.append(tuple(g._get_lm(g._lib.gles_GetTexParameter, C.GL_TEXTURE_2D, p)))
+    eq = g._ffi.new("double[4]")
+    g._lib.gles_GetClipPlane(g._p, C.GL_CLIP_PLANE0, eq)
+    s.append(tuple(eq))
+    for name in range(1, 7):
+        s.append((g.glIsBuffer(name), g.glIsTexture(name)))
+    for t in BUF_T:
+        out = g._ffi.new("int[1]")
+        g._lib.gles_GetBufferParameteriv(g._p, t, C.GL_BUFFER_SIZE, out)
+        s.append(int(out[0]))
+    s.append(ctx.memory_used)
+    s.append(ctx.color_buffer().tobytes())
+    d, st = ctx.depth_buffer(), ctx.stencil_buffer()
+    s.append(None if d is None else d.tobytes())
+    s.append(None if st is None else st.tobytes())
+    g._lib.gles_GetError(g._p)  # the snapshot's own queries must not leave an error
+    return tuple(repr(v) if isinstance(v, tuple) else v for v in s)
+
+
+SNAP_GET = [
+    C.GL_VIEWPORT,
+    C.GL_SCISSOR_BOX,
+    C.GL_DEPTH_FUNC,
+    C.GL_CULL_FACE_MODE,
+    C.GL_FRONT_FACE,
+    C.GL_SHADE_MODEL,
+    C.GL_MATRIX_MODE,
+    C.GL_PACK_ALIGNMENT,
+    C.GL_UNPACK_ALIGNMENT,
+    C.GL_ACTIVE_TEXTURE,
+    C.GL_CLIENT_ACTIVE_TEXTURE,
+    C.GL_ARRAY_BUFFER_BINDING,
+    C.GL_ELEMENT_ARRAY_BUFFER_BINDING,
+    C.GL_MODELVIEW_STACK_DEPTH,
+    C.GL_PROJECTION_STACK_DEPTH,
+    C.GL_TEXTURE_STACK_DEPTH,
+    C.GL_VERTEX_ARRAY_SIZE,
+    C.GL_VERTEX_ARRAY_TYPE,
+    C.GL_VERTEX_ARRAY_STRIDE,
+    C.GL_COLOR_ARRAY_SIZE,
+    C.GL_COLOR_ARRAY_TYPE,
+    C.GL_TEXTURE_COORD_ARRAY_SIZE,
+    C.GL_NORMAL_ARRAY_TYPE,
+    C.GL_POINT_SIZE_ARRAY_TYPE_OES,
+    C.GL_STENCIL_CLEAR_VALUE,
+    C.GL_COLOR_WRITEMASK,
+    C.GL_DEPTH_WRITEMASK,
+    C.GL_ALPHA_TEST_FUNC,
+    C.GL_STENCIL_FUNC,
+    C.GL_STENCIL_REF,
+    C.GL_STENCIL_VALUE_MASK,
+    C.GL_STENCIL_WRITEMASK,
+    C.GL_STENCIL_FAIL,
+    C.GL_BLEND_SRC,
+    C.GL_BLEND_DST,
+    C.GL_LOGIC_OP_MODE,
+    C.GL_FOG_MODE,
+    C.GL_TEXTURE_BINDING_2D,
+    C.GL_MODELVIEW_MATRIX,
+    C.GL_PROJECTION_MATRIX,
+    C.GL_TEXTURE_MATRIX,
+    C.GL_CURRENT_COLOR,
+    C.GL_CURRENT_NORMAL,
+    C.GL_CURRENT_TEXTURE_COORDS,
+    C.GL_DEPTH_RANGE,
+    C.GL_COLOR_CLEAR_VALUE,
+    C.GL_DEPTH_CLEAR_VALUE,
+    C.GL_ALPHA_TEST_REF,
+    C.GL_FOG_DENSITY,
+    C.GL_FOG_START,
+    C.GL_FOG_END,
+    C.GL_FOG_COLOR,
+    C.GL_LIGHT_MODEL_AMBIENT,
+    C.GL_LIGHT_MODEL_TWO_SIDE,
+    C.GL_POINT_SIZE,
+    C.GL_LINE_WIDTH,
+    C.GL_POINT_SIZE_MIN,
+    C.GL_POINT_SIZE_MAX,
+    C.GL_POINT_FADE_THRESHOLD_SIZE,
+    C.GL_POINT_DISTANCE_ATTENUATION,
+    C.GL_POLYGON_OFFSET_FACTOR,
+    C.GL_POLYGON_OFFSET_UNITS,
+    C.GL_SAMPLE_COVERAGE_VALUE,
+    C.GL_SAMPLE_COVERAGE_INVERT,
+    C.GL_MATRIX_INDEX_ARRAY_SIZE_OES,
+    C.GL_WEIGHT_ARRAY_SIZE_OES,
+    C.GL_CURRENT_PALETTE_MATRIX_OES,
+    C.GL_GENERATE_MIPMAP_HINT,
+    C.GL_BLEND_EQUATION_RGB_OES,
+    C.GL_BLEND_EQUATION_ALPHA_OES,
+    C.GL_BLEND_SRC_RGB_OES,
+    C.GL_BLEND_DST_ALPHA_OES,
+]
+
+
+class Failure(Exception):
+    """The invariant broke at call `index`."""
+
+    def __init__(self, index: int, kind: str, detail: str) -> None:
+        super().__init__(f"call {index}: {kind}: {detail}")
+        self.index, self.kind, self.detail = index, kind, detail
+
+
+def run_sequence(setup: Setup, calls: list[Call], check_state: bool = True) -> int:
+    """Run the calls on a new context; raise Failure where the invariant
+    breaks. Returns the number of calls made."""
+    ctx = gles.Context(
+        setup.width,
+        setup.height,
+        profile=setup.profile,
+        numeric=setup.numeric,
+        color=setup.color,
+        depth=setup.depth,
+        stencil=setup.stencil,
+        range_check=setup.range_check,
+        memory_limit=setup.memory_limit,
+    )
+    g = ctx.gl
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        for i, call in enumerate(calls):
+            before = snapshot(ctx) if check_state else None
+            raised = None
+            try:
+                getattr(g, call.name)(*[a.value for a in call.args])
+            except ALLOWED as e:
+                raised = e
+            except Exception as e:  # noqa: BLE001 -- anything else breaks the invariant
+                raise Failure(i, f"{type(e).__name__} in {call.name}", f"{call.name}: {e}") from e
+            err = g.glGetError()
+            if err not in ERRORS:
+                raise Failure(i, f"bad error code after {call.name}", f"glGetError returned {err:#x}")
+            if raised is not None and err != C.GL_NO_ERROR:
+                raise Failure(
+                    i,
+                    f"error and exception in {call.name}",
+                    f"{call.name}: raised {type(raised).__name__} and recorded {err:#x}",
+                )
+            if check_state and (raised is not None or err != C.GL_NO_ERROR):
+                after = snapshot(ctx)
+                if after != before:
+                    diff = [k for k, (a, b) in enumerate(zip(before, after)) if a != b]
+                    why = f"raised {type(raised).__name__}" if raised is not None else f"error {err:#x}"
+                    raise Failure(
+                        i,
+                        f"state changed by {call.name}",
+                        f"{call.name} ({why}) changed snapshot entries {diff[:6]}",
+                    )
+    return len(calls)
+
+
+def reproduction(setup: Setup, calls: list[Call]) -> str:
+    lines = ["import numpy as np", "import gles", "from gles import gl as G", setup.text(), "g = ctx.gl"]
+    lines += [c.text() for c in calls]
+    return "\n".join(lines)
+
+
+# {====================================================================
+# workers, shrinking and the command line
+
+
+def _worker(first: int, last: int, max_calls: int) -> None:
+    """Run seeds first..last-1, one line per sequence on stdout."""
+    for seed in range(first, last):
+        setup, calls = make_sequence(seed, max_calls)
+        print(f"start {seed}", flush=True)
+        try:
+            n = run_sequence(setup, calls)
+        except Failure as f:
+            print(f"fail {seed} {f.index} {f.kind}|{f.detail}", flush=True)
+            sys.exit(3)
+        print(f"ok {seed} {n}", flush=True)
+
+
+def _run_file(path: str) -> None:
+    """Run a pickled (setup, calls) in this process; exit 3 on a Failure."""
+    with open(path, "rb") as fh:
+        setup, calls = pickle.load(fh)
+    try:
+        run_sequence(setup, calls)
+    except Failure as f:
+        print(f"fail {f.index} {f.kind}|{f.detail}", flush=True)
+        sys.exit(3)
+
+
+def _outcome(setup: Setup, calls: list[Call], timeout: float) -> str | None:
+    """How a candidate sequence fails in a fresh process ("crash", "hang",
+    or the invariant's kind), or None when it passes."""
+    with tempfile.NamedTemporaryFile("wb", suffix=".pkl", delete=False) as fh:
+        pickle.dump((setup, calls), fh)
+        path = fh.name
+    try:
+        p = subprocess.run(
+            [sys.executable, __file__, "--run-file", path], capture_output=True, text=True, timeout=timeout
+        )
+    except subprocess.TimeoutExpired:
+        return "hang"
+    finally:
+        os.unlink(path)
+    if p.returncode == 0:
+        return None
+    if p.returncode == 1 and "Traceback" in p.stderr and "runtime error" not in p.stderr:
+        return "harness error"  # a Python traceback outside the invariant
+    if p.returncode == 3:
+        line = [ln for ln in p.stdout.splitlines() if ln.startswith("fail ")][-1]
+        return line.split(" ", 2)[2].split("|")[0]
+    return "crash"
+
+
+def shrink(setup: Setup, calls: list[Call], kind: str, timeout: float, budget: float = 300.0) -> list[Call]:
+    """The smallest subsequence found (removing chunks, then single calls)
+    that still fails the same way."""
+    t_end = time.monotonic() + budget
+    chunk = max(len(calls) // 2, 1)
+    while chunk >= 1 and time.monotonic() < t_end:
+        i, changed = 0, False
+        while i < len(calls) and time.monotonic() < t_end:
+            cand = calls[:i] + calls[i + chunk :]
+            if cand and _outcome(setup, cand, timeout) == kind:
+                calls, changed = cand, True
+            else:
+                i += chunk
+        if not changed:
+            chunk //= 2
+    return calls
+
+
+def fuzz(
+    seeds: range | None, minutes: float, start: int, max_calls: int, seq_timeout: float, batch: int = 25
+) -> int:
+    """Run seeds (a fixed range, or from `start` for `minutes`); returns the
+    number of failing sequences found."""
+    t_end = time.monotonic() + minutes * 60 if seeds is None else float("inf")
+    seq = calls_total = failures = 0
+    nxt = start if seeds is None else seeds.start
+    stop = None if seeds is None else seeds.stop
+    t0 = time.monotonic()
+    while (stop is None or nxt < stop) and time.monotonic() < t_end:
+        last = nxt + batch if stop is None else min(nxt + batch, stop)
+        proc = subprocess.Popen(
+            [sys.executable, __file__, "--worker", f"{nxt}:{last}", "--max-calls", str(max_calls)],
+            stdout=subprocess.PIPE,
+            text=True,
+        )
+        current, failed = None, None
+        lines = _lines(proc)
+        while True:
+            try:
+                line = lines.get(timeout=seq_timeout)
+            except queue.Empty:  # a hang
+                proc.kill()
+                failed = (current, "hang", f"no sequence end in {seq_timeout} s")
+                break
+            if not line:
+                break
+            word, rest = line.split(" ", 1)
+            if word == "start":
+                current = int(rest)
+            elif word == "ok":
+                seq += 1
+                calls_total += int(rest.split()[1])
+                current = None
+            elif word == "fail":
+                s, _, what = rest.split(" ", 2)
+                failed = (int(s), what.split("|")[0], what)
+        rc = proc.wait()
+        if failed is None and rc != 0 and current is not None:
+            failed = (current, "crash", f"worker exit status {rc}")
+        if failed is not None and failed[0] is not None:
+            failures += 1
+            s, kind, what = failed
+            setup, calls = make_sequence(s, max_calls)
+            print(f"seed {s}: {what}", flush=True)
+            small = shrink(setup, calls, kind, seq_timeout)
+            print(f"--- seed {s}, {kind}, shrunk from {len(calls)} to {len(small)} calls:")
+            print(reproduction(setup, small))
+            print("---", flush=True)
+            nxt = s + 1
+        else:
+            nxt = last
+    dt = time.monotonic() - t0
+    first = start if seeds is None else seeds.start
+    print(
+        f"fuzz: {seq} sequences, {calls_total} calls, seeds {first}..{nxt - 1}, {dt / 60:.1f} min, "
+        f"{failures} failing",
+        flush=True,
+    )
+    return failures
+
+
+def _lines(proc: subprocess.Popen) -> queue.Queue:
+    """The worker's stdout lines, read by a thread ('' at its end)."""
+    q: queue.Queue = queue.Queue()
+
+    def read() -> None:
+        assert proc.stdout is not None
+        for line in proc.stdout:
+            q.put(line.strip())
+        q.put("")
+
+    threading.Thread(target=read, daemon=True).start()
+    return q
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--minutes", type=float, default=1.0, help="how long to run (default 1)")
+    ap.add_argument("--seed", type=int, default=0, help="the first seed (default 0)")
+    ap.add_argument("--seeds", help="a fixed seed range A:B instead of --minutes")
+    ap.add_argument("--max-calls", type=int, default=120, help="longest sequence (default 120)")
+    ap.add_argument(
+        "--seq-timeout",
+        type=float,
+        default=60.0,
+        help="seconds one sequence may take before it counts as a hang (default 60)",
+    )
+    ap.add_argument("--replay", type=int, help="run one seed here and print its reproduction on failure")
+    ap.add_argument("--worker", help=argparse.SUPPRESS)
+    ap.add_argument("--run-file", help=argparse.SUPPRESS)
+    a = ap.parse_args(argv)
+    if a.worker:
+        lo, hi = (int(v) for v in a.worker.split(":"))
+        _worker(lo, hi, a.max_calls)
+        return 0
+    if a.run_file:
+        _run_file(a.run_file)
+        return 0
+    if a.replay is not None:
+        setup, calls = make_sequence(a.replay, a.max_calls)
+        print(reproduction(setup, calls))
+        run_sequence(setup, calls)
+        print("ok")
+        return 0
+    seeds = None
+    if a.seeds:
+        lo, hi = (int(v) for v in a.seeds.split(":"))
+        seeds = range(lo, hi)
+    return 1 if fuzz(seeds, a.minutes, a.seed, a.max_calls, a.seq_timeout) else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
