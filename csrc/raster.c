@@ -20,9 +20,10 @@
 ** per-pixel inside test, so every pixel a span function receives is covered;
 ** this does the work a block rasterizer does for fully covered blocks on
 ** every pixel, and never tests a pixel outside the triangle. Edge functions
-** are in int64: window coordinates stay within +-2^21 subpixels (draw.c
-** skips drawing when the viewport misses the framebuffer), so products stay
-** below 2^44.
+** are in int64: window coordinates stay within about +-2^22 subpixels (the
+** viewport's offset plus num_proj's clamp of x/w to +-2^20, NUM_PROJ_GUARD;
+** draw.c skips drawing when the viewport misses the framebuffer), so
+** products stay below 2^46.
 */
 #include <string.h>
 #include "raster.h"
