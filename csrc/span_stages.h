@@ -171,22 +171,18 @@ static void STAGE(stage_fetch)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, 
     const __m256i a[3] = { avx2_load_num4(t->v[0]->tex[u]), avx2_load_num4(t->v[1]->tex[u]),
                            avx2_load_num4(t->v[2]->tex[u]) };
     const int proj = (t->tex_projective >> u) & 1;
-    for (int j = 0; j < b->n; j++)
-        avx2_tex_coord(proj, a, b->p[j], &b->tc[j]);
-    if (lod)
-        for (int j = 0; j < b->n; j++) {
-            avx2_tex_coord(proj, a, b->px[j], &b->tx[j]);
-            avx2_tex_coord(proj, a, b->py[j], &b->ty[j]);
-        }
+#define TEX_COORD(p, out) avx2_tex_coord(proj, a, p, out)
 #else
+#define TEX_COORD(p, out) span_tex_coord(t, u, p, out)
+#endif
     for (int j = 0; j < b->n; j++)
-        span_tex_coord(t, u, b->p[j], &b->tc[j]);
+        TEX_COORD(b->p[j], &b->tc[j]);
     if (lod)
         for (int j = 0; j < b->n; j++) {
-            span_tex_coord(t, u, b->px[j], &b->tx[j]);
-            span_tex_coord(t, u, b->py[j], &b->ty[j]);
+            TEX_COORD(b->px[j], &b->tx[j]);
+            TEX_COORD(b->py[j], &b->ty[j]);
         }
-#endif
+#undef TEX_COORD
     STAGE(chunk_sample)(ctx, b, u);
 }
 
