@@ -67,6 +67,12 @@ void gles_debug_set(GlesContext *ctx, int flags);
 const char *gles_last_span_name(GlesContext *ctx);
 /* the instruction set the span stages run with: "avx2" or "baseline" */
 const char *gles_simd_name(GlesContext *ctx);
+/* for tests: the texels unit's span sampler gives for n fragments (at
+** most 4096) at coords (s, t, then the right and upper neighbours' s, t,
+** six doubles a fragment), as FRAGV values in double (0.30 integers in the
+** fixed build), through the vector instance (simd != 0, where the CPU has
+** one) or the baseline; 0 when the unit samples no complete texture */
+int gles_debug_sample(GlesContext *ctx, int unit, int simd, int n, const double *coords, double *out);
 
 /* the numeric layer, for tests: converts a and b to NUM (exact for
 ** multiples of 2^-16 in the fixed build), applies op, returns the result

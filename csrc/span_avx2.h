@@ -184,18 +184,100 @@ AVX2_INLINE void avx2_linear_axis(__m256i s, int log2n, int repeat, __m128i *i0,
     }
 }
 
+/* the s and t of four fragments' coordinates c[0..3] as two registers */
+AVX2_INLINE void avx2_load_st4(const TexCoord *c, __m256i *sv, __m256i *tv)
+{
+    const __m256i p01 = _mm256_loadu_si256((const __m256i *)(const void *)&c[0]);
+    const __m256i p23 = _mm256_loadu_si256((const __m256i *)(const void *)&c[2]);
+    *sv = _mm256_permute4x64_epi64(_mm256_unpacklo_epi64(p01, p23), 0xD8);
+    *tv = _mm256_permute4x64_epi64(_mm256_unpackhi_epi64(p01, p23), 0xD8);
+}
+
+/* frag_bilerp_rgba8's value of one channel (bits sh..sh+7 of the texel
+** words) for eight fragments at once, in 32-bit lanes. With h0 = c00 ia +
+** c10 a and h1 = c01 ia + c11 a (each < 2^24), the scalar code's
+** (ib h0 + b h1 + 128) >> 8 needs 40 bits; split h = 2^8 hh + hl, it is
+** ib hh0 + b hh1 + ((ib hl0 + b hl1 + 128) >> 8) exactly (the first sum
+** is a multiple of 2^8 in the whole), and with ib + b = 2^16 both parts
+** fit 32 unsigned bits, as does their sum (< 2^32, the scalar bound). */
+AVX2_INLINE __m256i avx2_bilerp8_channel(const __m256i g[4], int sh, __m256i a, __m256i ia, __m256i b, __m256i ib)
+{
+    const __m256i byte = _mm256_set1_epi32(0xFF);
+    __m256i c[4];
+    for (int i = 0; i < 4; i++)
+        c[i] = sh == 24 ? _mm256_srli_epi32(g[i], 24) : _mm256_and_si256(_mm256_srli_epi32(g[i], sh), byte);
+    const __m256i h0 = _mm256_add_epi32(_mm256_mullo_epi32(c[0], ia), _mm256_mullo_epi32(c[1], a));
+    const __m256i h1 = _mm256_add_epi32(_mm256_mullo_epi32(c[2], ia), _mm256_mullo_epi32(c[3], a));
+    const __m256i hi = _mm256_add_epi32(_mm256_mullo_epi32(_mm256_srli_epi32(h0, 8), ib),
+                                        _mm256_mullo_epi32(_mm256_srli_epi32(h1, 8), b));
+    __m256i lo = _mm256_add_epi32(_mm256_mullo_epi32(_mm256_and_si256(h0, byte), ib),
+                                  _mm256_mullo_epi32(_mm256_and_si256(h1, byte), b));
+    lo = _mm256_srli_epi32(_mm256_add_epi32(lo, _mm256_set1_epi32(128)), 8);
+    return _mm256_add_epi32(hi, lo);
+}
+
+/* r (< 2^32) to 0.30 as frag_bilerp_rgba8 converts it: (r 16843009 + 2^25) >> 26,
+** for the four fragments of one 128-bit half */
+AVX2_INLINE __m256i avx2_bilerp_to_frag(__m128i r)
+{
+    const __m256i p = _mm256_mul_epu32(_mm256_cvtepu32_epi64(r), _mm256_set1_epi64x(16843009));
+    return _mm256_srli_epi64(_mm256_add_epi64(p, _mm256_set1_epi64x((int64_t)1 << 25)), 26);
+}
+
+/* four fragments' channels, one register per channel (lane = fragment),
+** stored as each fragment's FRAGV[4] at out + k * stride */
+AVX2_INLINE void avx2_store_transposed4(__m256i r, __m256i g, __m256i b, __m256i a, FRAGV *out, size_t stride)
+{
+    const __m256i t0 = _mm256_unpacklo_epi64(r, g), t1 = _mm256_unpackhi_epi64(r, g);
+    const __m256i t2 = _mm256_unpacklo_epi64(b, a), t3 = _mm256_unpackhi_epi64(b, a);
+    avx2_store4(out, _mm256_permute2x128_si256(t0, t2, 0x20));
+    avx2_store4(out + stride, _mm256_permute2x128_si256(t1, t3, 0x20));
+    avx2_store4(out + 2 * stride, _mm256_permute2x128_si256(t0, t2, 0x31));
+    avx2_store4(out + 3 * stride, _mm256_permute2x128_si256(t1, t3, 0x31));
+}
+
 /* sample_level's GL_LINEAR of a power-of-two level for fragments 0..n-1
-** (n a multiple of 4), REPEAT or CLAMP_TO_EDGE on each axis (not forced
-** inline, as avx2_bilerp_rgba8) */
+** (n a multiple of 4), REPEAT or CLAMP_TO_EDGE on each axis: eight
+** fragments at a time in 32-bit lanes (texels gathered, channels apart),
+** a last four one fragment at a time (not forced inline, as
+** avx2_bilerp_rgba8) */
 static inline void avx2_sample_linear(const TexImage *li, int n, const TexCoord *c, FRAGV *out, size_t stride,
                                     int repeat_s, int repeat_t)
 {
     const int log2w = __builtin_ctz((unsigned)li->width), log2h = __builtin_ctz((unsigned)li->height);
-    for (int j = 0; j < n; j += 4) {
-        const __m256i p01 = _mm256_loadu_si256((const __m256i *)(const void *)&c[j]);
-        const __m256i p23 = _mm256_loadu_si256((const __m256i *)(const void *)&c[j + 2]);
-        const __m256i sv = _mm256_permute4x64_epi64(_mm256_unpacklo_epi64(p01, p23), 0xD8);
-        const __m256i tv = _mm256_permute4x64_epi64(_mm256_unpackhi_epi64(p01, p23), 0xD8);
+    const int *tx32 = (const int *)(const void *)li->texels;
+    const __m256i one16 = _mm256_set1_epi32(65536);
+    int j = 0;
+    for (; j + 8 <= n; j += 8) {
+        __m128i x0[2], x1[2], wa[2], y0[2], y1[2], wb[2];
+        for (int h = 0; h < 2; h++) {
+            __m256i sv, tv;
+            avx2_load_st4(&c[j + 4 * h], &sv, &tv);
+            avx2_linear_axis(sv, log2w, repeat_s, &x0[h], &x1[h], &wa[h]);
+            avx2_linear_axis(tv, log2h, repeat_t, &y0[h], &y1[h], &wb[h]);
+        }
+#define AVX2_JOIN(v) _mm256_inserti128_si256(_mm256_castsi128_si256(v[0]), v[1], 1)
+        const __m256i xa = AVX2_JOIN(x0), xb = AVX2_JOIN(x1), a = AVX2_JOIN(wa), b = AVX2_JOIN(wb);
+        const __m256i r0 = _mm256_slli_epi32(AVX2_JOIN(y0), log2w), r1 = _mm256_slli_epi32(AVX2_JOIN(y1), log2w);
+#undef AVX2_JOIN
+        const __m256i g[4] = { _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r0, xa), 4),
+                               _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r0, xb), 4),
+                               _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r1, xa), 4),
+                               _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r1, xb), 4) };
+        const __m256i ia = _mm256_sub_epi32(one16, a), ib = _mm256_sub_epi32(one16, b);
+        __m256i ch[4];
+        for (int k = 0; k < 4; k++)
+            ch[k] = avx2_bilerp8_channel(g, 8 * k, a, ia, b, ib);
+        for (int h = 0; h < 2; h++) {
+            __m256i v[4];
+            for (int k = 0; k < 4; k++)
+                v[k] = avx2_bilerp_to_frag(h ? _mm256_extracti128_si256(ch[k], 1) : _mm256_castsi256_si128(ch[k]));
+            avx2_store_transposed4(v[0], v[1], v[2], v[3], out + (size_t)(j + 4 * h) * stride, stride);
+        }
+    }
+    for (; j < n; j += 4) {
+        __m256i sv, tv;
+        avx2_load_st4(&c[j], &sv, &tv);
         __m128i x0, x1, a, y0, y1, bw;
         avx2_linear_axis(sv, log2w, repeat_s, &x0, &x1, &a);
         avx2_linear_axis(tv, log2h, repeat_t, &y0, &y1, &bw);

@@ -9,6 +9,10 @@
 */
 #include "state.h"
 #include "texture.h"
+#include "span.h"
+
+/* the most fragments a span sampler is given at once (a chunk) */
+#define SPAN_SAMPLE_MAX SPAN_CHUNK
 
 #if SIMD_X86
 #pragma GCC push_options
@@ -90,26 +94,25 @@ SAMPLE_INLINE void sample_level(const Texture *t, int level, unsigned int filter
     frag_bilerp_rgba8(r0[x0], r0[x1], r1[x0], r1[x1], a, b, out, unorm);
 }
 
-SAMPLE_INLINE void sample_w(const Texture *t, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
-                            FRAGV out[4], const FRAGV *unorm, unsigned int ws, unsigned int wt, int simd)
+/* what §3.7.7-3.7.8 ask of one fragment: level `level` with `filter`, and
+** where `two`, also level + 1, mixed by frac */
+typedef struct LodChoice {
+    int level, two;
+    unsigned int filter;
+    FRAGV frac;
+} LodChoice;
+
+SAMPLE_INLINE LodChoice lod_choose(const Texture *t, const TexCoord *c, const TexCoord *dx, const TexCoord *dy)
 {
-    if (!dx || !dy) {
-        sample_level(t, 0, t->mag_filter, c->s, c->t, out, unorm, ws, wt, simd);
-        return;
-    }
+    LodChoice ch = { 0, 0, t->mag_filter, 0 };
     /* rho in texel units of level 0: the largest of the four derivatives;
     ** coordinates are first limited to +-2^18 so that differences scaled
     ** by the size stay in range even where q -> 0 saturated them */
     int w = t->level[0].width, h = t->level[0].height;
     const TEXC lim = texc_scale(TEXC_ONE, 1 << 18);
-    TexCoord cc = { texc_clamp(c->s, lim), texc_clamp(c->t, lim) };
-    TexCoord cx = { texc_clamp(dx->s, lim), texc_clamp(dx->t, lim) };
-    TexCoord cy = { texc_clamp(dy->s, lim), texc_clamp(dy->t, lim) };
-    c = &cc;
-    dx = &cx;
-    dy = &cy;
-    TEXC d1 = texc_abs(texc_scale(dx->s - c->s, w)), d2 = texc_abs(texc_scale(dy->s - c->s, w));
-    TEXC d3 = texc_abs(texc_scale(dx->t - c->t, h)), d4 = texc_abs(texc_scale(dy->t - c->t, h));
+    const TEXC cs = texc_clamp(c->s, lim), ct = texc_clamp(c->t, lim);
+    TEXC d1 = texc_abs(texc_scale(texc_clamp(dx->s, lim) - cs, w)), d2 = texc_abs(texc_scale(texc_clamp(dy->s, lim) - cs, w));
+    TEXC d3 = texc_abs(texc_scale(texc_clamp(dx->t, lim) - ct, h)), d4 = texc_abs(texc_scale(texc_clamp(dy->t, lim) - ct, h));
     TEXC rho = d1;
     if (d2 > rho) rho = d2;
     if (d3 > rho) rho = d3;
@@ -119,16 +122,12 @@ SAMPLE_INLINE void sample_w(const Texture *t, const TexCoord *c, const TexCoord 
     /* §3.7.8: c = 0.5 when MAG is LINEAR and MIN is NEAREST_MIPMAP_* */
     LODV cshift = (t->mag_filter == GL_LINEAR && (minf == GL_NEAREST_MIPMAP_NEAREST || minf == GL_NEAREST_MIPMAP_LINEAR))
                       ? lod_from_ratio(1, 2) : 0;
-    if (lambda <= cshift) {
-        sample_level(t, 0, t->mag_filter, c->s, c->t, out, unorm, ws, wt, simd);
-        return;
-    }
-    unsigned int filter = (minf == GL_NEAREST || minf == GL_NEAREST_MIPMAP_NEAREST || minf == GL_NEAREST_MIPMAP_LINEAR)
-                              ? GL_NEAREST : GL_LINEAR;
-    if (minf == GL_NEAREST || minf == GL_LINEAR) {
-        sample_level(t, 0, filter, c->s, c->t, out, unorm, ws, wt, simd);
-        return;
-    }
+    if (lambda <= cshift)
+        return ch;
+    ch.filter = (minf == GL_NEAREST || minf == GL_NEAREST_MIPMAP_NEAREST || minf == GL_NEAREST_MIPMAP_LINEAR)
+                    ? GL_NEAREST : GL_LINEAR;
+    if (minf == GL_NEAREST || minf == GL_LINEAR)
+        return ch;
     int q = t->max_level;
     if (minf == GL_NEAREST_MIPMAP_NEAREST || minf == GL_LINEAR_MIPMAP_NEAREST) {
         /* d = ceil(lambda + 1/2) - 1 for lambda > 1/2, else 0 */
@@ -138,23 +137,44 @@ SAMPLE_INLINE void sample_w(const Texture *t, const TexCoord *c, const TexCoord 
             int64_t fl = lod_ifloor(x);
             d = (lod_frac(x) != 0 ? fl + 1 : fl) - 1;
         }
-        if (d > q)
-            d = q;
-        sample_level(t, (int)d, filter, c->s, c->t, out, unorm, ws, wt, simd);
-        return;
+        ch.level = (int)(d > q ? q : d);
+        return ch;
     }
     /* *_MIPMAP_LINEAR: levels floor(lambda) and the next, by frac(lambda) */
     int64_t d1i = lod_ifloor(lambda);
     if (d1i >= q) {
-        sample_level(t, q, filter, c->s, c->t, out, unorm, ws, wt, simd);
-        return;
+        ch.level = q;
+        return ch;
     }
-    FRAGV f = lod_frac(lambda);
-    FRAGV t1[4], t2[4];
-    sample_level(t, (int)d1i, filter, c->s, c->t, t1, unorm, ws, wt, simd);
-    sample_level(t, (int)d1i + 1, filter, c->s, c->t, t2, unorm, ws, wt, simd);
+    ch.level = (int)d1i;
+    ch.two = 1;
+    ch.frac = lod_frac(lambda);
+    return ch;
+}
+
+/* the trilinear mix of two levels' texels */
+static inline void lod_mix(FRAGV f, const FRAGV t1[4], const FRAGV t2[4], FRAGV out[4])
+{
     for (int k = 0; k < 4; k++)
         out[k] = t1[k] + frag_mul(f, t2[k] - t1[k]);
+}
+
+SAMPLE_INLINE void sample_w(const Texture *t, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
+                            FRAGV out[4], const FRAGV *unorm, unsigned int ws, unsigned int wt, int simd)
+{
+    if (!dx || !dy) {
+        sample_level(t, 0, t->mag_filter, c->s, c->t, out, unorm, ws, wt, simd);
+        return;
+    }
+    const LodChoice ch = lod_choose(t, c, dx, dy);
+    if (!ch.two) {
+        sample_level(t, ch.level, ch.filter, c->s, c->t, out, unorm, ws, wt, simd);
+        return;
+    }
+    FRAGV t1[4], t2[4];
+    sample_level(t, ch.level, ch.filter, c->s, c->t, t1, unorm, ws, wt, simd);
+    sample_level(t, ch.level + 1, ch.filter, c->s, c->t, t2, unorm, ws, wt, simd);
+    lod_mix(ch.frac, t1, t2, out);
 }
 
 void texture_sample(const Texture *t, const TexCoord *c, const TexCoord *dx, const TexCoord *dy, FRAGV out[4],
@@ -176,7 +196,7 @@ void texture_sample(const Texture *t, const TexCoord *c, const TexCoord *dx, con
             int j = SIMD && FILTER == GL_LINEAR ? linear_block(t, n, c, out, stride, ws, wt) : 0;         \
             for (; j < n; j++)                                                                             \
                 sample_level(t, 0, FILTER, c[j].s, c[j].t, out + (size_t)j * stride, unorm, ws, wt, SIMD); \
-        } else {                                                                                           \
+        } else if (!(SIMD && lod_block(t, n, c, dx, dy, out, stride, unorm, ws, wt))) {                    \
             for (int j = 0; j < n; j++)                                                                    \
                 sample_w(t, &c[j], &dx[j], &dy[j], out + (size_t)j * stride, unorm, ws, wt, SIMD);         \
         }                                                                                                  \
@@ -198,6 +218,82 @@ static inline int linear_block(const Texture *t, int n, const TexCoord *c, FRAGV
 #endif
     (void)t, (void)n, (void)c, (void)out, (void)stride, (void)ws, (void)wt;
     return 0;
+}
+
+/* sample_w of n fragments with the vector kernel doing the GL_LINEAR
+** samples: each fragment's level of detail first (lod_choose), then every
+** level's GL_LINEAR samples together (gathered by level, avx2_sample_linear),
+** the rest one by one, then the mix of two levels. The same arithmetic per
+** sample as sample_w; returns 0 where it does not apply (as linear_block) */
+static int lod_block(const Texture *t, int n, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
+                     FRAGV *out, size_t stride, const FRAGV *unorm, unsigned int ws, unsigned int wt)
+{
+#if SIMD_X86 && NUM_IS_FIXED
+    const TexImage *l0 = &t->level[0];
+    const int pot = (l0->width & (l0->width - 1)) == 0 && (l0->height & (l0->height - 1)) == 0;
+    if (!pot || !(ws == GL_REPEAT || ws == GL_CLAMP_TO_EDGE) || !(wt == GL_REPEAT || wt == GL_CLAMP_TO_EDGE)
+        || n > SPAN_SAMPLE_MAX)
+        return 0;
+    LodChoice ch[SPAN_SAMPLE_MAX];
+    FRAGV second[SPAN_SAMPLE_MAX][4];
+    /* the GL_LINEAR samples by level: counts, then slots (fragment j's
+    ** first sample is 2j, its second 2j + 1) */
+    int count[GLES_MAX_TEXTURE_LEVELS] = { 0 }, first[GLES_MAX_TEXTURE_LEVELS];
+    for (int j = 0; j < n; j++) {
+        ch[j] = lod_choose(t, &c[j], &dx[j], &dy[j]);
+        if (ch[j].filter == GL_LINEAR) {
+            count[ch[j].level]++;
+            if (ch[j].two)
+                count[ch[j].level + 1]++;
+        } else {
+            sample_level(t, ch[j].level, GL_NEAREST, c[j].s, c[j].t, out + (size_t)j * stride, unorm, ws, wt, 1);
+            if (ch[j].two)
+                sample_level(t, ch[j].level + 1, GL_NEAREST, c[j].s, c[j].t, second[j], unorm, ws, wt, 1);
+        }
+    }
+    int total = 0;
+    for (int l = 0; l < GLES_MAX_TEXTURE_LEVELS; l++) {
+        first[l] = total;
+        total += count[l];
+    }
+    if (total) {
+        TexCoord coords[2 * SPAN_SAMPLE_MAX];
+        FRAGV texels[2 * SPAN_SAMPLE_MAX][4];
+        uint16_t slot[2 * SPAN_SAMPLE_MAX];
+        int at[GLES_MAX_TEXTURE_LEVELS];
+        for (int l = 0; l < GLES_MAX_TEXTURE_LEVELS; l++)
+            at[l] = first[l];
+        for (int j = 0; j < n; j++)
+            if (ch[j].filter == GL_LINEAR)
+                for (int k = 0; k <= ch[j].two; k++) {
+                    const int i = at[ch[j].level + k]++;
+                    coords[i] = c[j];
+                    slot[i] = (uint16_t)(2 * j + k);
+                }
+        for (int l = 0; l < GLES_MAX_TEXTURE_LEVELS; l++) {
+            const int m = count[l], m4 = m & ~3;
+            if (!m)
+                continue;
+            const TexImage *li = &t->level[l];
+            avx2_sample_linear(li, m4, coords + first[l], texels[first[l]], 4, ws == GL_REPEAT, wt == GL_REPEAT);
+            for (int i = first[l] + m4; i < first[l] + m; i++)
+                sample_level(t, l, GL_LINEAR, coords[i].s, coords[i].t, texels[i], unorm, ws, wt, 1);
+        }
+        for (int i = 0; i < total; i++) {
+            const int j = slot[i] >> 1;
+            FRAGV *dst = slot[i] & 1 ? second[j] : out + (size_t)j * stride;
+            for (int k = 0; k < 4; k++)
+                dst[k] = texels[i][k];
+        }
+    }
+    for (int j = 0; j < n; j++)
+        if (ch[j].two)
+            lod_mix(ch[j].frac, out + (size_t)j * stride, second[j], out + (size_t)j * stride);
+    return 1;
+#else
+    (void)t, (void)n, (void)c, (void)dx, (void)dy, (void)out, (void)stride, (void)unorm, (void)ws, (void)wt;
+    return 0;
+#endif
 }
 
 /* every [wrap: repeat, clamp, other][nearest, linear, with a level of
@@ -244,3 +340,43 @@ TexSpanSampler texture_span_sampler(const Texture *t, int simd)
 }
 
 
+
+/* {====================================================================
+** a test's view of the span samplers */
+
+int gles_debug_sample(GlesContext *ctx, int unit, int simd, int n, const double *coords, double *out)
+{
+    if (unit < 0 || unit >= GLES_MAX_TEXTURE_UNITS || n < 0 || n > 4096)
+        return 0;
+    const Texture *t = texture_active(ctx, unit);
+    if (!t)
+        return 0;
+    TexCoord *c = malloc(3 * (size_t)(n ? n : 1) * sizeof *c);
+    FRAGV(*texels)[4] = malloc((size_t)(n ? n : 1) * sizeof *texels);
+    if (!c || !texels) {
+        free(c);
+        free(texels);
+        return 0;
+    }
+    TexCoord *dx = c + n, *dy = c + 2 * n;
+    for (int j = 0; j < n; j++) {
+        const double *p = coords + 6 * (size_t)j;
+        c[j] = (TexCoord){ texc_from_double(p[0]), texc_from_double(p[1]) };
+        dx[j] = (TexCoord){ texc_from_double(p[2]), texc_from_double(p[3]) };
+        dy[j] = (TexCoord){ texc_from_double(p[4]), texc_from_double(p[5]) };
+    }
+    /* in chunks, as the span stages call it */
+    const TexSpanSampler sampler = texture_span_sampler(t, simd ? ctx->simd : SIMD_BASELINE);
+    for (int j = 0; j < n; j += SPAN_SAMPLE_MAX) {
+        const int m = n - j < SPAN_SAMPLE_MAX ? n - j : SPAN_SAMPLE_MAX;
+        sampler(t, m, c + j, dx + j, dy + j, texels[j], 4, ctx->texel_unorm8);
+    }
+    for (int j = 0; j < n; j++)
+        for (int i = 0; i < 4; i++)
+            out[4 * (size_t)j + i] = (double)texels[j][i];
+    free(c);
+    free(texels);
+    return 1;
+}
+
+/* }==================================================================== */
