@@ -4,7 +4,8 @@
 static 32-bit ARM (ARMv5TE, ARM state, soft-float) program of the core
 (csrc/core_all.c) and the replayer (csrc/replay/), built with Debian's
 ``arm-linux-gnueabi-gcc`` when it is installed (nothing is built otherwise).
-gles.target runs these under an emulator and counts their instructions.
+gles.target runs these under an emulator and counts their instructions,
+with the block hook ``lib/target/libgles_blockcount.so`` (built for the host).
 
 Environment: ``GLES_TARGET_CC`` (default ``arm-linux-gnueabi-gcc``; ``none``
 skips the target build).
@@ -70,5 +71,13 @@ def build(lib: Path) -> list[Path]:
         stamp.write_text(key)
         return target
 
+    # the emulator's block-counting hook, for this host (csrc/replay/blockcount.c)
+    host_cc = shlex.split(os.environ.get("CC", "cc"))
+    counter = out / "libgles_blockcount.so"
+    proc = subprocess.run([*host_cc, "-std=c11", "-Wall", "-Wextra", "-O2", "-fPIC", "-shared",
+                           "-fvisibility=hidden", str(CSRC / "replay" / "blockcount.c"), "-o", str(counter)],
+                          capture_output=True, text=True)
+    if proc.returncode != 0 or proc.stderr.strip():
+        raise RuntimeError(f"blockcount.c:\n{proc.stdout}{proc.stderr}")
     with ThreadPoolExecutor(max_workers=2) as pool:
-        return list(pool.map(one, BUILDS))
+        return [*pool.map(one, BUILDS), counter]
