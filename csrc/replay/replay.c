@@ -221,8 +221,12 @@ static int read_header(Replay *rp, Reader *r)
         set_error(rp, "not a gles trace (bad magic)");
         return -1;
     }
+    if (r->end - r->base < REPLAY_HEADER_SIZE) {
+        set_error(rp, "truncated trace header (%lu bytes)", (unsigned long)(r->end - r->base));
+        return -1;
+    }
     unsigned version = rd_u16(r), header_size = rd_u16(r);
-    if (r->failed || version != REPLAY_VERSION) {
+    if (version != REPLAY_VERSION) {
         set_error(rp, "trace format version %u, this replayer reads version %d", version, REPLAY_VERSION);
         return -1;
     }
