@@ -90,3 +90,12 @@ def test_trace_module_needs_no_target() -> None:
     # recording and host replay do not depend on the target toolchain
     t = gles.trace(buffers_scene, 8, 8)
     assert T.replay(t, raw=True) == t.color_buffer
+
+
+@needs_target
+def test_profile_adds_up_to_the_count() -> None:
+    t = gles.trace(buffers_scene, 16, 12, numeric="float")
+    per_function = target.profile_trace(t.data, "float")
+    assert sum(per_function.values()) == target.run_trace(t.data, "float").total_instructions
+    # the float build's arithmetic is the soft-float library's
+    assert any(name.startswith(("__aeabi_f", "__addsf3", "__mulsf3")) for name in per_function)

@@ -23,6 +23,7 @@ says what to install, and :func:`target_cost` raises :class:`TargetUnavailable`.
 
 from __future__ import annotations
 
+import bisect
 import ctypes
 import struct
 from dataclasses import dataclass
@@ -178,10 +179,13 @@ class _Process:
             self._add_c_block_hook()
         elif counter == "python":
             uc.hook_add(UC_HOOK_BLOCK, self._on_block)
+        elif counter == "profile":              # the Python block hook, counting per block address
+            self.block_bytes: dict[int, int] = {}
+            uc.hook_add(UC_HOOK_BLOCK, self._on_block_profiled)
         elif counter == "instruction":       # one callback per instruction: slow, for tests
             uc.hook_add(UC_HOOK_CODE, self._on_instruction)
         else:
-            raise ValueError(f"counter must be 'c', 'python' or 'instruction', not {counter!r}")
+            raise ValueError(f"counter must be 'c', 'python', 'profile' or 'instruction', not {counter!r}")
         uc.hook_add(UC_HOOK_INTR, self._on_interrupt)
 
     def _add_c_block_hook(self) -> None:
@@ -225,6 +229,10 @@ class _Process:
 
     def _on_block(self, uc: Any, address: int, size: int, user: Any) -> None:
         self._count.value += size
+
+    def _on_block_profiled(self, uc: Any, address: int, size: int, user: Any) -> None:
+        self._count.value += size
+        self.block_bytes[address] = self.block_bytes.get(address, 0) + size
 
     def _on_instruction(self, uc: Any, address: int, size: int, user: Any) -> None:
         self._count.value += size
@@ -355,6 +363,44 @@ def run_trace(data: bytes, build: str, counter: str = "c") -> TargetRun:
     frame_bytes = proc.marks[_MARK_END] - proc.marks[_MARK_BEGIN]
     return TargetRun(build, frame_bytes // 4, proc.bytes_executed // 4, bytes(proc.stdout),
                      proc.exit_code, err)
+
+
+def _functions(image: bytes) -> list[tuple[int, int, str]]:
+    """(address, size, name) of the function symbols of an ELF32 file, by address."""
+    shoff, = struct.unpack_from("<I", image, 32)
+    shentsize, shnum = struct.unpack_from("<HH", image, 46)
+    sections = [struct.unpack_from("<IIIIIIIIII", image, shoff + i * shentsize) for i in range(shnum)]
+    out = []
+    for _name, sh_type, _fl, _addr, off, size, link, _info, _al, entsize in sections:
+        if sh_type != 2 or entsize != 16:        # SHT_SYMTAB
+            continue
+        str_off = sections[link][4]
+        for k in range(size // 16):
+            st_name, value, st_size, info, _other, _shndx = struct.unpack_from("<IIIBBH", image, off + 16 * k)
+            if info & 0xF == 2 and st_size:      # STT_FUNC
+                end = image.index(b"\0", str_off + st_name)
+                out.append((value & ~1, st_size, image[str_off + st_name:end].decode()))
+    return sorted(out)
+
+
+def profile_trace(data: bytes, build: str) -> dict[str, int]:
+    """Instructions per function over the whole run of the target replayer on
+    a trace (setup included), most first: where a frame's instructions go.
+    Slow (a Python hook per block)."""
+    why = target_missing()
+    if why is not None:
+        raise TargetUnavailable(why)
+    exe = program(build)
+    proc = _Process(exe, data, "profile")
+    proc.run()
+    funcs = _functions(exe.read_bytes())
+    starts = [f[0] for f in funcs]
+    per: dict[str, int] = {}
+    for address, nbytes in proc.block_bytes.items():
+        i = bisect.bisect_right(starts, address) - 1
+        name = funcs[i][2] if i >= 0 and address < funcs[i][0] + funcs[i][1] else "?"
+        per[name] = per.get(name, 0) + nbytes // 4
+    return dict(sorted(per.items(), key=lambda kv: -kv[1]))
 
 
 def target_cost(scene: Callable[[Any, int, int], Any], build: str,
