@@ -99,3 +99,37 @@ def test_profile_adds_up_to_the_count() -> None:
     assert sum(per_function.values()) == target.run_trace(t.data, "float").total_instructions
     # the float build's arithmetic is the soft-float library's
     assert any(name.startswith(("__aeabi_f", "__addsf3", "__mulsf3")) for name in per_function)
+
+
+class _Render:
+    def __init__(self, ms: float) -> None:
+        self.times_ms = [ms]
+        self.time_ms = ms
+
+
+class _Comparison:
+    def __init__(self) -> None:
+        self.renders = {"fixed": _Render(1.5), "float": _Render(0.5)}
+
+
+class _Entry:
+    name = "alpha_sprites"
+    scene = staticmethod(GALLERY["alpha_sprites"][1])
+
+
+def test_report_section_without_the_target(monkeypatch: Any, tmp_path: Any) -> None:
+    monkeypatch.setattr(target, "_COUNTER_LIB", tmp_path / "none.so")
+    md, page = target.report_section([(_Entry(), _Comparison())], 40, 30)
+    assert "## Target cost" in md and "n/a" in md and target.APT_COMMAND in md
+    assert "n/a" in page and target.APT_COMMAND in page
+
+
+@needs_target
+def test_report_section_with_the_target() -> None:
+    md, page = target.report_section([(_Entry(), _Comparison())], 40, 30)
+    fixed = target.target_cost(_Entry.scene, "fixed", (40, 30))
+    flt = target.target_cost(_Entry.scene, "float", (40, 30))
+    row = f"| alpha_sprites | 1.50 | 0.50 | {fixed:,} | {flt:,} | {fixed / flt:.2f} |"
+    assert row in md.splitlines()
+    assert "host ms fixed" in md and "host ms fixed" in page and f"{fixed:,}" in page
+    assert target.report_size(256, 256) == (96, 72)

@@ -17,7 +17,8 @@ from gles.hardcases import HARD_CASES
 
 
 def main() -> int:
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--size", default="96x72")
     parser.add_argument("--hard", action="store_true", help="the hard cases too")
     args = parser.parse_args()

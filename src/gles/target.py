@@ -418,3 +418,95 @@ def target_cost(scene: Callable[[Any, int, int], Any], build: str,
     w, h = size
     recorded = _trace.trace(scene, w, h, numeric=build)
     return run_trace(recorded.data, build).frame_instructions
+
+
+# {====================================================================
+# the report's target columns
+
+REPORT_MAX_SIZE = (96, 72)      # an emulated float frame at this size takes a few seconds
+
+
+@dataclass
+class SceneCost:
+    """One scene's target cost beside its host time."""
+
+    scene: str
+    host_ms: dict[str, float | None]        # per build: this host's ms per frame (None: not rendered)
+    instructions: dict[str, int | None]     # per build: target instructions per frame (None: failed)
+    error: str = ""
+
+    @property
+    def ratio(self) -> float | None:
+        """Fixed over float target instructions (below 1: fixed is cheaper)."""
+        fx, fl = self.instructions.get("fixed"), self.instructions.get("float")
+        return fx / fl if fx and fl else None
+
+
+def report_size(width: int, height: int) -> tuple[int, int]:
+    """The size the report measures target costs at: its own, at most 96x72."""
+    return min(width, REPORT_MAX_SIZE[0]), min(height, REPORT_MAX_SIZE[1])
+
+
+def scene_costs(results: Any, width: int, height: int) -> list[SceneCost]:
+    """Target costs of the report's scenes (``results``: (entry, Comparison)
+    pairs, entry having ``name`` and ``scene``); empty when the target is missing."""
+    if not target_available():
+        return []
+    size = report_size(width, height)
+    out = []
+    for entry, comp in results:
+        host = {}
+        for b in BUILDS:
+            r = comp.renders.get(b)
+            host[b] = r.time_ms if r is not None and r.times_ms else None
+        counts: dict[str, int | None] = {}
+        error = ""
+        for b in BUILDS:
+            try:
+                counts[b] = target_cost(entry.scene, b, size)
+            except (TargetError, ValueError, RuntimeError) as exc:   # a scene that fails is reported
+                counts[b], error = None, f"{b}: {exc}"
+        out.append(SceneCost(entry.name, host, counts, error))
+    return out
+
+
+def _cell_ms(v: float | None) -> str:
+    return "–" if v is None else f"{v:.2f}"
+
+
+def _cell_count(v: int | None) -> str:
+    return "–" if v is None else f"{v:,}"
+
+
+def _rows(costs: list[SceneCost]) -> list[list[str]]:
+    return [[c.scene, _cell_ms(c.host_ms.get("fixed")), _cell_ms(c.host_ms.get("float")),
+             _cell_count(c.instructions.get("fixed")), _cell_count(c.instructions.get("float")),
+             "–" if c.ratio is None else f"{c.ratio:.2f}"] for c in costs]
+
+
+_HEADER = ["scene", "host ms fixed", "host ms float", "target fixed (instr/frame)",
+           "target float (instr/frame)", "target fixed / float"]
+
+
+def report_section(results: Any, width: int, height: int) -> tuple[str, str]:
+    """The report's "Target cost" section, as (Markdown, HTML)."""
+    import html
+
+    missing = target_missing()
+    w, h = report_size(width, height)
+    intro = (f"Instructions per frame on {TARGET} at {w}x{h}, counted exactly in an emulator "
+             f"(docs/target.md), beside this host's time per frame. Fixed / float below 1: fixed point "
+             f"runs fewer instructions where there is no FPU.")
+    if missing is not None:
+        md = f"\n## Target cost\n\nTarget instructions per frame: {missing}.\n"
+        note = html.escape(missing)
+        return md, f"<h2>Target cost</h2><p class='note'>Target instructions per frame: {note}.</p>"
+    rows = _rows(scene_costs(results, width, height))
+    md_lines = ["", "## Target cost", "", intro, "", "| " + " | ".join(_HEADER) + " |",
+                "|---|" + "--:|" * (len(_HEADER) - 1)]
+    md_lines += ["| " + " | ".join(r) + " |" for r in rows]
+    parts = ["<h2>Target cost</h2>", f"<p class='note'>{html.escape(intro)}</p>",
+             "<table><tr>" + "".join(f"<th>{html.escape(c)}</th>" for c in _HEADER) + "</tr>"]
+    parts += ["<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in r) + "</tr>" for r in rows]
+    parts.append("</table>")
+    return "\n".join(md_lines) + "\n", "\n".join(parts)
