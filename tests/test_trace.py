@@ -129,6 +129,7 @@ def test_rgb565_and_file_round_trip(tmp_path: Any) -> None:
     np.testing.assert_array_equal(t.image, plain_run(scene, "fixed", color="rgb565"))
     assert len(t.color_buffer) == W * H * 2
     assert T.replay(path, raw=True) == t.color_buffer
+    np.testing.assert_array_equal(T.replay(path), t.image)
     # the program itself, as the CLI prints it
     out = tmp_path / "image.raw"
     subprocess.run([str(T.replayer("fixed")), str(path), "-o", str(out)], check=True)
