@@ -85,8 +85,11 @@ def _cmd_trace(args: argparse.Namespace) -> int:
     scene = cmp.load_scene(args.scene, args.function)
     w, h = args.size
     t = trace.trace(scene, w, h, numeric=args.numeric, color=args.color, path=args.output)
-    print(f"{args.output}: {t.calls} calls, {len(t.data)} bytes, {w}x{h} on {args.numeric} "
-          f"(replay: {trace.replayer(args.numeric)} {args.output} -o image.raw)")
+    print(f"{args.output}: {t.calls} calls, {len(t.data)} bytes, {w}x{h} on {args.numeric}")
+    try:
+        print(f"replay: {trace.replayer(args.numeric)} {args.output} -o image.raw")
+    except FileNotFoundError as exc:
+        print(exc, file=sys.stderr)
     return 0
 
 
