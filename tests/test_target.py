@@ -86,6 +86,14 @@ def test_missing_toolchain_says_what_to_install(monkeypatch: Any, tmp_path: Any)
     assert target.PIP_COMMAND in str(target.target_missing())
 
 
+def test_target_can_be_turned_off(monkeypatch: Any) -> None:
+    monkeypatch.setenv("GLES_TARGET", "off")
+    assert not target.target_available()
+    assert "GLES_TARGET=off" in str(target.target_missing())
+    md, _ = target.report_section([(_Entry(), _Comparison())], 40, 30)
+    assert "n/a" in md
+
+
 def test_trace_module_needs_no_target() -> None:
     # recording and host replay do not depend on the target toolchain
     t = gles.trace(buffers_scene, 8, 8)

@@ -19,12 +19,15 @@ the image are not counted.
 
 Without the cross compiler (apt) or unicorn (pip) :func:`target_missing`
 says what to install, and :func:`target_cost` raises :class:`TargetUnavailable`.
+``GLES_TARGET=off`` in the environment turns the target off (the report then
+skips its target section's emulation, which takes a few seconds a scene).
 """
 
 from __future__ import annotations
 
 import bisect
 import ctypes
+import os
 import struct
 from dataclasses import dataclass
 from pathlib import Path
@@ -70,7 +73,10 @@ def program(build: str) -> Path:
 
 
 def target_missing() -> str | None:
-    """None when target costs can be measured here, else what to install."""
+    """None when target costs can be measured here, else what to install
+    (or that the environment variable GLES_TARGET=off turned them off)."""
+    if os.environ.get("GLES_TARGET", "").lower() == "off":
+        return "n/a: turned off (GLES_TARGET=off)"
     need = []
     if not all(program(b).is_file() for b in BUILDS) or not _COUNTER_LIB.is_file():
         need.append(f"the cross compiler ({APT_COMMAND}, then reinstall gles: it builds "
