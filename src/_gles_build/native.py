@@ -26,6 +26,11 @@ import subprocess
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
+try:
+    from . import target_build
+except ImportError:     # imported as a plain module (setup.py, tools/devbuild.py)
+    import target_build  # type: ignore[no-redef]
+
 ROOT = Path(__file__).resolve().parent.parent.parent
 CSRC = ROOT / "csrc"
 OUT = ROOT / "build" / "native"          # what build.py links the cffi modules against
@@ -115,9 +120,20 @@ def build(out: Path = OUT) -> Path:
                                             "GLESv1_CM", numeric, profile))
         (d / "egl.pc").write_text(_pc("egl", "EGL 1.4 (pbuffers)", "EGL", numeric, profile))
 
+    def replayer(numeric: str) -> None:
+        # gles-replay (csrc/replay/): plays a trace file on this build's core
+        d = lib / numeric
+        d.mkdir(parents=True, exist_ok=True)
+        _run([*cc, *flags, *inc, str(CSRC / "replay" / "replay.c"), str(CSRC / "replay" / "replay_main.c"),
+              "-o", str(d / "gles-replay") + ".tmp", *[f for f in _extra() if f.startswith("-fsanitize")],
+              f"-L{lib}", f"-lgles_{numeric}", "-Wl,-rpath,$ORIGIN/..", "-lm"])
+        os.replace(str(d / "gles-replay") + ".tmp", d / "gles-replay")
+
     with ThreadPoolExecutor(max_workers=2) as pool:
         list(pool.map(core, NUMERICS))
         list(pool.map(lambda np: abi(*np), [(n, p) for n in NUMERICS for p in PROFILES]))
+        list(pool.map(replayer, NUMERICS))
+    target_build.build(lib)   # the no-FPU target's replayers, when the cross compiler is there
     include = out / "include"
     if include.exists():
         shutil.rmtree(include)

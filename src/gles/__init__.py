@@ -16,9 +16,9 @@ from __future__ import annotations
 
 __version__ = "0.1.0"
 
-from . import compare  # noqa: E402  (callable: gles.compare(scene, w, h, ...))
+from . import compare, trace  # noqa: E402  (callable: gles.compare(scene, w, h, ...), gles.trace(...))
 from .context import Context  # noqa: E402
 from .errors import GLError  # noqa: E402
 from .profile import RangeError, RangeWarning  # noqa: E402
 
-__all__ = ["Context", "GLError", "RangeError", "RangeWarning", "compare", "__version__"]
+__all__ = ["Context", "GLError", "RangeError", "RangeWarning", "compare", "trace", "__version__"]

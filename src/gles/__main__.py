@@ -79,6 +79,20 @@ def _cmd_report(args: argparse.Namespace) -> int:
     return 0
 
 
+def _cmd_trace(args: argparse.Namespace) -> int:
+    from . import trace
+
+    scene = cmp.load_scene(args.scene, args.function)
+    w, h = args.size
+    t = trace.trace(scene, w, h, numeric=args.numeric, color=args.color, path=args.output)
+    print(f"{args.output}: {t.calls} calls, {len(t.data)} bytes, {w}x{h} on {args.numeric}")
+    try:
+        print(f"replay: {trace.replayer(args.numeric)} {args.output} -o image.raw")
+    except FileNotFoundError as exc:
+        print(exc, file=sys.stderr)
+    return 0
+
+
 def _cmd_libdir(args: argparse.Namespace) -> int:
     from . import cabi
 
@@ -122,6 +136,15 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--numeric", default="fixed", choices=[*cmp.BUILDS, *cmp.PEERS])
     p.add_argument("--size", type=_size, default=_size("256x256"), help="WxH (default 256x256)")
     p.set_defaults(run=_cmd_render)
+
+    p = sub.add_parser("trace", help="record one scene's core calls into a trace file (see gles.trace)")
+    p.add_argument("scene", help="a Python file defining scene(gl, w, h)")
+    p.add_argument("-o", "--output", required=True, help="trace file to write (.glestrace)")
+    p.add_argument("--function", default=None, help="the scene function's name (default: scene)")
+    p.add_argument("--numeric", default="fixed", choices=list(cmp.BUILDS))
+    p.add_argument("--color", default="rgba8888", choices=["rgba8888", "rgb565"])
+    p.add_argument("--size", type=_size, default=_size("256x256"), help="WxH (default 256x256)")
+    p.set_defaults(run=_cmd_trace)
 
     p = sub.add_parser("libdir", help="print the directory of libGLESv1_CM and libEGL for C programs")
     p.add_argument("--numeric", default="fixed", choices=["fixed", "float", "double"])

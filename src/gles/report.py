@@ -320,9 +320,15 @@ def build_report(out: str | Path, width: int = 256, height: int = 256, runs: int
     svg = speed_error_svg(results)
     (out / "speed_vs_psnr.svg").write_text(svg, encoding="utf-8")
     md = _markdown(results, renderers, width, height, runs, elapsed)
+    page_html = _html(results, renderers, width, height, runs, elapsed, svg)
+    # the no-FPU target's instructions per frame beside the host's ms (gles.target; n/a without it)
+    from . import target
+    target_md, target_html = target.report_section(results, width, height)
+    md += target_md
+    page_html = page_html.replace("</body></html>", target_html + "\n</body></html>")
     (out / "report.md").write_text(md, encoding="utf-8")
     page = out / "report.html"
-    page.write_text(_html(results, renderers, width, height, runs, elapsed, svg), encoding="utf-8")
+    page.write_text(page_html, encoding="utf-8")
     stamp = datetime.datetime.now().isoformat(timespec="seconds")
     (out / "README.txt").write_text(f"gles report written {stamp}: open report.html\n", encoding="utf-8")
     return page
