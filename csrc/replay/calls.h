@@ -3,12 +3,13 @@
 ** One case per recorded core function: read its arguments from the trace,
 ** then (when run is set) call it. Included by replay.c only.
 */
-#define REPLAY_CALL_COUNT 103
-#define REPLAY_TABLE_HASH 0x4C1EEC2Cu
+#define REPLAY_CALL_COUNT 104
+#define REPLAY_TABLE_HASH 0xE3C60A9Du
 
 static const char *const replay_call_names[REPLAY_CALL_COUNT] = {
     "gles_memory_limit",
     "gles_debug_set",
+    "gles_debug_sample",
     "gles_range_set",
     "gles_range_last",
     "gles_range_counts",
@@ -127,31 +128,41 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_debug_set(rp->ctx, a0);
         break;
     }
-    case 2: { /* gles_range_set */
+    case 2: { /* gles_debug_sample */
+        int a0 = rd_i32(r);
+        int a1 = rd_i32(r);
+        int a2 = rd_i32(r);
+        double a3[16]; rd_doubles(r, a3);
+        ReplayDatum a4; rd_output(rp, r, &a4, 0);
+        if (r->failed || !run) break;
+        (void)gles_debug_sample(rp->ctx, a0, a1, a2, a3, a4.ptr);
+        break;
+    }
+    case 3: { /* gles_range_set */
         int a0 = rd_i32(r);
         if (r->failed || !run) break;
         (void)gles_range_set(rp->ctx, a0);
         break;
     }
-    case 3: { /* gles_range_last */
+    case 4: { /* gles_range_last */
         ReplayDatum a0; rd_output(rp, r, &a0, 0);
         ReplayDatum a1; rd_output(rp, r, &a1, 1);
         if (r->failed || !run) break;
         (void)gles_range_last(rp->ctx, a0.ptr, a1.ptr);
         break;
     }
-    case 4: { /* gles_range_counts */
+    case 5: { /* gles_range_counts */
         ReplayDatum a0; rd_output(rp, r, &a0, 0);
         if (r->failed || !run) break;
         (void)gles_range_counts(rp->ctx, a0.ptr);
         break;
     }
-    case 5: { /* gles_range_reset */
+    case 6: { /* gles_range_reset */
         if (r->failed || !run) break;
         (void)gles_range_reset(rp->ctx);
         break;
     }
-    case 6: { /* gles_get */
+    case 7: { /* gles_get */
         unsigned int a0 = rd_u32(r);
         ReplayDatum a1; rd_output(rp, r, &a1, 0);
         ReplayDatum a2; rd_output(rp, r, &a2, 1);
@@ -159,48 +170,48 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_get(rp->ctx, a0, a1.ptr, a2.ptr);
         break;
     }
-    case 7: { /* gles_GetError */
+    case 8: { /* gles_GetError */
         if (r->failed || !run) break;
         (void)gles_GetError(rp->ctx);
         break;
     }
-    case 8: { /* gles_IsEnabled */
+    case 9: { /* gles_IsEnabled */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_IsEnabled(rp->ctx, a0);
         break;
     }
-    case 9: { /* gles_set_error */
+    case 10: { /* gles_set_error */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_set_error(rp->ctx, a0);
         break;
     }
-    case 10: { /* gles_Enable */
+    case 11: { /* gles_Enable */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_Enable(rp->ctx, a0);
         break;
     }
-    case 11: { /* gles_Disable */
+    case 12: { /* gles_Disable */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_Disable(rp->ctx, a0);
         break;
     }
-    case 12: { /* gles_EnableClientState */
+    case 13: { /* gles_EnableClientState */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_EnableClientState(rp->ctx, a0);
         break;
     }
-    case 13: { /* gles_DisableClientState */
+    case 14: { /* gles_DisableClientState */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_DisableClientState(rp->ctx, a0);
         break;
     }
-    case 14: { /* gles_Viewport */
+    case 15: { /* gles_Viewport */
         int a0 = rd_i32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -209,7 +220,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_Viewport(rp->ctx, a0, a1, a2, a3);
         break;
     }
-    case 15: { /* gles_Scissor */
+    case 16: { /* gles_Scissor */
         int a0 = rd_i32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -218,14 +229,14 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_Scissor(rp->ctx, a0, a1, a2, a3);
         break;
     }
-    case 16: { /* gles_DepthRange */
+    case 17: { /* gles_DepthRange */
         double a0 = rd_f64(r);
         double a1 = rd_f64(r);
         if (r->failed || !run) break;
         (void)gles_DepthRange(rp->ctx, a0, a1);
         break;
     }
-    case 17: { /* gles_ClearColor */
+    case 18: { /* gles_ClearColor */
         double a0 = rd_f64(r);
         double a1 = rd_f64(r);
         double a2 = rd_f64(r);
@@ -234,19 +245,19 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_ClearColor(rp->ctx, a0, a1, a2, a3);
         break;
     }
-    case 18: { /* gles_ClearDepth */
+    case 19: { /* gles_ClearDepth */
         double a0 = rd_f64(r);
         if (r->failed || !run) break;
         (void)gles_ClearDepth(rp->ctx, a0);
         break;
     }
-    case 19: { /* gles_ClearStencil */
+    case 20: { /* gles_ClearStencil */
         int a0 = rd_i32(r);
         if (r->failed || !run) break;
         (void)gles_ClearStencil(rp->ctx, a0);
         break;
     }
-    case 20: { /* gles_ColorMask */
+    case 21: { /* gles_ColorMask */
         unsigned char a0 = rd_u8(r);
         unsigned char a1 = rd_u8(r);
         unsigned char a2 = rd_u8(r);
@@ -255,96 +266,96 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_ColorMask(rp->ctx, a0, a1, a2, a3);
         break;
     }
-    case 21: { /* gles_DepthMask */
+    case 22: { /* gles_DepthMask */
         unsigned char a0 = rd_u8(r);
         if (r->failed || !run) break;
         (void)gles_DepthMask(rp->ctx, a0);
         break;
     }
-    case 22: { /* gles_DepthFunc */
+    case 23: { /* gles_DepthFunc */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_DepthFunc(rp->ctx, a0);
         break;
     }
-    case 23: { /* gles_CullFace */
+    case 24: { /* gles_CullFace */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_CullFace(rp->ctx, a0);
         break;
     }
-    case 24: { /* gles_FrontFace */
+    case 25: { /* gles_FrontFace */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_FrontFace(rp->ctx, a0);
         break;
     }
-    case 25: { /* gles_ShadeModel */
+    case 26: { /* gles_ShadeModel */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_ShadeModel(rp->ctx, a0);
         break;
     }
-    case 26: { /* gles_Hint */
+    case 27: { /* gles_Hint */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_Hint(rp->ctx, a0, a1);
         break;
     }
-    case 27: { /* gles_PixelStorei */
+    case 28: { /* gles_PixelStorei */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         if (r->failed || !run) break;
         (void)gles_PixelStorei(rp->ctx, a0, a1);
         break;
     }
-    case 28: { /* gles_ActiveTexture */
+    case 29: { /* gles_ActiveTexture */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_ActiveTexture(rp->ctx, a0);
         break;
     }
-    case 29: { /* gles_ClientActiveTexture */
+    case 30: { /* gles_ClientActiveTexture */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_ClientActiveTexture(rp->ctx, a0);
         break;
     }
-    case 30: { /* gles_MatrixMode */
+    case 31: { /* gles_MatrixMode */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_MatrixMode(rp->ctx, a0);
         break;
     }
-    case 31: { /* gles_LoadIdentity */
+    case 32: { /* gles_LoadIdentity */
         if (r->failed || !run) break;
         (void)gles_LoadIdentity(rp->ctx);
         break;
     }
-    case 32: { /* gles_LoadMatrix */
+    case 33: { /* gles_LoadMatrix */
         double a0[16]; rd_doubles(r, a0);
         if (r->failed || !run) break;
         (void)gles_LoadMatrix(rp->ctx, a0);
         break;
     }
-    case 33: { /* gles_MultMatrix */
+    case 34: { /* gles_MultMatrix */
         double a0[16]; rd_doubles(r, a0);
         if (r->failed || !run) break;
         (void)gles_MultMatrix(rp->ctx, a0);
         break;
     }
-    case 34: { /* gles_PushMatrix */
+    case 35: { /* gles_PushMatrix */
         if (r->failed || !run) break;
         (void)gles_PushMatrix(rp->ctx);
         break;
     }
-    case 35: { /* gles_PopMatrix */
+    case 36: { /* gles_PopMatrix */
         if (r->failed || !run) break;
         (void)gles_PopMatrix(rp->ctx);
         break;
     }
-    case 36: { /* gles_Translate */
+    case 37: { /* gles_Translate */
         double a0 = rd_f64(r);
         double a1 = rd_f64(r);
         double a2 = rd_f64(r);
@@ -352,7 +363,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_Translate(rp->ctx, a0, a1, a2);
         break;
     }
-    case 37: { /* gles_Scale */
+    case 38: { /* gles_Scale */
         double a0 = rd_f64(r);
         double a1 = rd_f64(r);
         double a2 = rd_f64(r);
@@ -360,7 +371,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_Scale(rp->ctx, a0, a1, a2);
         break;
     }
-    case 38: { /* gles_Rotate */
+    case 39: { /* gles_Rotate */
         double a0 = rd_f64(r);
         double a1 = rd_f64(r);
         double a2 = rd_f64(r);
@@ -369,7 +380,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_Rotate(rp->ctx, a0, a1, a2, a3);
         break;
     }
-    case 39: { /* gles_Frustum */
+    case 40: { /* gles_Frustum */
         double a0 = rd_f64(r);
         double a1 = rd_f64(r);
         double a2 = rd_f64(r);
@@ -380,7 +391,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_Frustum(rp->ctx, a0, a1, a2, a3, a4, a5);
         break;
     }
-    case 40: { /* gles_Ortho */
+    case 41: { /* gles_Ortho */
         double a0 = rd_f64(r);
         double a1 = rd_f64(r);
         double a2 = rd_f64(r);
@@ -391,25 +402,25 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_Ortho(rp->ctx, a0, a1, a2, a3, a4, a5);
         break;
     }
-    case 41: { /* gles_ClipPlane */
+    case 42: { /* gles_ClipPlane */
         unsigned int a0 = rd_u32(r);
         double a1[16]; rd_doubles(r, a1);
         if (r->failed || !run) break;
         (void)gles_ClipPlane(rp->ctx, a0, a1);
         break;
     }
-    case 42: { /* gles_CurrentPaletteMatrixOES */
+    case 43: { /* gles_CurrentPaletteMatrixOES */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_CurrentPaletteMatrixOES(rp->ctx, a0);
         break;
     }
-    case 43: { /* gles_LoadPaletteFromModelViewMatrixOES */
+    case 44: { /* gles_LoadPaletteFromModelViewMatrixOES */
         if (r->failed || !run) break;
         (void)gles_LoadPaletteFromModelViewMatrixOES(rp->ctx);
         break;
     }
-    case 44: { /* gles_MatrixIndexPointerOES */
+    case 45: { /* gles_MatrixIndexPointerOES */
         int a0 = rd_i32(r);
         unsigned int a1 = rd_u32(r);
         int a2 = rd_i32(r);
@@ -418,7 +429,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_MatrixIndexPointerOES(rp->ctx, a0, a1, a2, a3.ptr, a3.nbytes);
         break;
     }
-    case 45: { /* gles_WeightPointerOES */
+    case 46: { /* gles_WeightPointerOES */
         int a0 = rd_i32(r);
         unsigned int a1 = rd_u32(r);
         int a2 = rd_i32(r);
@@ -427,14 +438,14 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_WeightPointerOES(rp->ctx, a0, a1, a2, a3.ptr, a3.nbytes);
         break;
     }
-    case 46: { /* gles_GetClipPlane */
+    case 47: { /* gles_GetClipPlane */
         unsigned int a0 = rd_u32(r);
         ReplayDatum a1; rd_output(rp, r, &a1, 0);
         if (r->failed || !run) break;
         (void)gles_GetClipPlane(rp->ctx, a0, a1.ptr);
         break;
     }
-    case 47: { /* gles_Light */
+    case 48: { /* gles_Light */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         double a2[16]; rd_doubles(r, a2);
@@ -443,7 +454,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_Light(rp->ctx, a0, a1, a2, a3);
         break;
     }
-    case 48: { /* gles_LightModel */
+    case 49: { /* gles_LightModel */
         unsigned int a0 = rd_u32(r);
         double a1[16]; rd_doubles(r, a1);
         int a2 = rd_i32(r);
@@ -451,7 +462,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_LightModel(rp->ctx, a0, a1, a2);
         break;
     }
-    case 49: { /* gles_Material */
+    case 50: { /* gles_Material */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         double a2[16]; rd_doubles(r, a2);
@@ -460,7 +471,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_Material(rp->ctx, a0, a1, a2, a3);
         break;
     }
-    case 50: { /* gles_GetLight */
+    case 51: { /* gles_GetLight */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         ReplayDatum a2; rd_output(rp, r, &a2, 0);
@@ -468,7 +479,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GetLight(rp->ctx, a0, a1, a2.ptr);
         break;
     }
-    case 51: { /* gles_GetMaterial */
+    case 52: { /* gles_GetMaterial */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         ReplayDatum a2; rd_output(rp, r, &a2, 0);
@@ -476,14 +487,14 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GetMaterial(rp->ctx, a0, a1, a2.ptr);
         break;
     }
-    case 52: { /* gles_AlphaFunc */
+    case 53: { /* gles_AlphaFunc */
         unsigned int a0 = rd_u32(r);
         double a1 = rd_f64(r);
         if (r->failed || !run) break;
         (void)gles_AlphaFunc(rp->ctx, a0, a1);
         break;
     }
-    case 53: { /* gles_StencilFunc */
+    case 54: { /* gles_StencilFunc */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         unsigned int a2 = rd_u32(r);
@@ -491,7 +502,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_StencilFunc(rp->ctx, a0, a1, a2);
         break;
     }
-    case 54: { /* gles_StencilOp */
+    case 55: { /* gles_StencilOp */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         unsigned int a2 = rd_u32(r);
@@ -499,20 +510,20 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_StencilOp(rp->ctx, a0, a1, a2);
         break;
     }
-    case 55: { /* gles_StencilMask */
+    case 56: { /* gles_StencilMask */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_StencilMask(rp->ctx, a0);
         break;
     }
-    case 56: { /* gles_BlendFunc */
+    case 57: { /* gles_BlendFunc */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_BlendFunc(rp->ctx, a0, a1);
         break;
     }
-    case 57: { /* gles_BlendFuncSeparateOES */
+    case 58: { /* gles_BlendFuncSeparateOES */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         unsigned int a2 = rd_u32(r);
@@ -521,33 +532,33 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_BlendFuncSeparateOES(rp->ctx, a0, a1, a2, a3);
         break;
     }
-    case 58: { /* gles_BlendEquationOES */
+    case 59: { /* gles_BlendEquationOES */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_BlendEquationOES(rp->ctx, a0);
         break;
     }
-    case 59: { /* gles_BlendEquationSeparateOES */
+    case 60: { /* gles_BlendEquationSeparateOES */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_BlendEquationSeparateOES(rp->ctx, a0, a1);
         break;
     }
-    case 60: { /* gles_LogicOp */
+    case 61: { /* gles_LogicOp */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_LogicOp(rp->ctx, a0);
         break;
     }
-    case 61: { /* gles_SampleCoverage */
+    case 62: { /* gles_SampleCoverage */
         double a0 = rd_f64(r);
         unsigned char a1 = rd_u8(r);
         if (r->failed || !run) break;
         (void)gles_SampleCoverage(rp->ctx, a0, a1);
         break;
     }
-    case 62: { /* gles_Fog */
+    case 63: { /* gles_Fog */
         unsigned int a0 = rd_u32(r);
         double a1[16]; rd_doubles(r, a1);
         int a2 = rd_i32(r);
@@ -555,7 +566,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_Fog(rp->ctx, a0, a1, a2);
         break;
     }
-    case 63: { /* gles_GenTextures */
+    case 64: { /* gles_GenTextures */
         int a0 = rd_i32(r);
         ReplayDatum a1; rd_output(rp, r, &a1, 0);
         if (a0 > 0 && (a1.ptr == NULL || (uint64_t)a0 * 4u > (uint64_t)a1.nbytes)) rd_fail(r, "n exceeds the output stored");
@@ -563,7 +574,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GenTextures(rp->ctx, a0, a1.ptr);
         break;
     }
-    case 64: { /* gles_DeleteTextures */
+    case 65: { /* gles_DeleteTextures */
         int a0 = rd_i32(r);
         const unsigned int *a1; uint32_t a1_n = rd_uints(r, &a1);
         if (a0 > 0 && (uint32_t)a0 > a1_n) rd_fail(r, "n exceeds the names stored");
@@ -571,20 +582,20 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DeleteTextures(rp->ctx, a0, a1);
         break;
     }
-    case 65: { /* gles_BindTexture */
+    case 66: { /* gles_BindTexture */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_BindTexture(rp->ctx, a0, a1);
         break;
     }
-    case 66: { /* gles_IsTexture */
+    case 67: { /* gles_IsTexture */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_IsTexture(rp->ctx, a0);
         break;
     }
-    case 67: { /* gles_TexImage2D */
+    case 68: { /* gles_TexImage2D */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -598,7 +609,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_TexImage2D(rp->ctx, a0, a1, a2, a3, a4, a5, a6, a7, a8.ptr, a8.nbytes);
         break;
     }
-    case 68: { /* gles_TexSubImage2D */
+    case 69: { /* gles_TexSubImage2D */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -612,7 +623,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_TexSubImage2D(rp->ctx, a0, a1, a2, a3, a4, a5, a6, a7, a8.ptr, a8.nbytes);
         break;
     }
-    case 69: { /* gles_CopyTexImage2D */
+    case 70: { /* gles_CopyTexImage2D */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         unsigned int a2 = rd_u32(r);
@@ -625,7 +636,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_CopyTexImage2D(rp->ctx, a0, a1, a2, a3, a4, a5, a6, a7);
         break;
     }
-    case 70: { /* gles_CopyTexSubImage2D */
+    case 71: { /* gles_CopyTexSubImage2D */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -638,7 +649,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_CopyTexSubImage2D(rp->ctx, a0, a1, a2, a3, a4, a5, a6, a7);
         break;
     }
-    case 71: { /* gles_CompressedTexImage2D */
+    case 72: { /* gles_CompressedTexImage2D */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         unsigned int a2 = rd_u32(r);
@@ -651,7 +662,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_CompressedTexImage2D(rp->ctx, a0, a1, a2, a3, a4, a5, a6, a7.ptr, a7.nbytes);
         break;
     }
-    case 72: { /* gles_CompressedTexSubImage2D */
+    case 73: { /* gles_CompressedTexSubImage2D */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -666,7 +677,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_CompressedTexSubImage2D(rp->ctx, a0, a1, a2, a3, a4, a5, a6, a7, a8.ptr);
         break;
     }
-    case 73: { /* gles_TexParameter */
+    case 74: { /* gles_TexParameter */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         double a2[16]; rd_doubles(r, a2);
@@ -675,7 +686,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_TexParameter(rp->ctx, a0, a1, a2, a3);
         break;
     }
-    case 74: { /* gles_GetTexParameter */
+    case 75: { /* gles_GetTexParameter */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         ReplayDatum a2; rd_output(rp, r, &a2, 0);
@@ -683,7 +694,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GetTexParameter(rp->ctx, a0, a1, a2.ptr);
         break;
     }
-    case 75: { /* gles_TexEnv */
+    case 76: { /* gles_TexEnv */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         double a2[16]; rd_doubles(r, a2);
@@ -692,7 +703,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_TexEnv(rp->ctx, a0, a1, a2, a3);
         break;
     }
-    case 76: { /* gles_GetTexEnv */
+    case 77: { /* gles_GetTexEnv */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         ReplayDatum a2; rd_output(rp, r, &a2, 0);
@@ -700,19 +711,19 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GetTexEnv(rp->ctx, a0, a1, a2.ptr);
         break;
     }
-    case 77: { /* gles_PointSize */
+    case 78: { /* gles_PointSize */
         double a0 = rd_f64(r);
         if (r->failed || !run) break;
         (void)gles_PointSize(rp->ctx, a0);
         break;
     }
-    case 78: { /* gles_LineWidth */
+    case 79: { /* gles_LineWidth */
         double a0 = rd_f64(r);
         if (r->failed || !run) break;
         (void)gles_LineWidth(rp->ctx, a0);
         break;
     }
-    case 79: { /* gles_PointParameter */
+    case 80: { /* gles_PointParameter */
         unsigned int a0 = rd_u32(r);
         double a1[16]; rd_doubles(r, a1);
         int a2 = rd_i32(r);
@@ -720,14 +731,14 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_PointParameter(rp->ctx, a0, a1, a2);
         break;
     }
-    case 80: { /* gles_PolygonOffset */
+    case 81: { /* gles_PolygonOffset */
         double a0 = rd_f64(r);
         double a1 = rd_f64(r);
         if (r->failed || !run) break;
         (void)gles_PolygonOffset(rp->ctx, a0, a1);
         break;
     }
-    case 81: { /* gles_DrawTexOES */
+    case 82: { /* gles_DrawTexOES */
         double a0 = rd_f64(r);
         double a1 = rd_f64(r);
         double a2 = rd_f64(r);
@@ -737,7 +748,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DrawTexOES(rp->ctx, a0, a1, a2, a3, a4);
         break;
     }
-    case 82: { /* gles_Color4 */
+    case 83: { /* gles_Color4 */
         double a0 = rd_f64(r);
         double a1 = rd_f64(r);
         double a2 = rd_f64(r);
@@ -746,7 +757,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_Color4(rp->ctx, a0, a1, a2, a3);
         break;
     }
-    case 83: { /* gles_Normal3 */
+    case 84: { /* gles_Normal3 */
         double a0 = rd_f64(r);
         double a1 = rd_f64(r);
         double a2 = rd_f64(r);
@@ -754,7 +765,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_Normal3(rp->ctx, a0, a1, a2);
         break;
     }
-    case 84: { /* gles_MultiTexCoord4 */
+    case 85: { /* gles_MultiTexCoord4 */
         unsigned int a0 = rd_u32(r);
         double a1 = rd_f64(r);
         double a2 = rd_f64(r);
@@ -764,7 +775,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_MultiTexCoord4(rp->ctx, a0, a1, a2, a3, a4);
         break;
     }
-    case 85: { /* gles_VertexPointer */
+    case 86: { /* gles_VertexPointer */
         int a0 = rd_i32(r);
         unsigned int a1 = rd_u32(r);
         int a2 = rd_i32(r);
@@ -773,7 +784,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_VertexPointer(rp->ctx, a0, a1, a2, a3.ptr, a3.nbytes);
         break;
     }
-    case 86: { /* gles_ColorPointer */
+    case 87: { /* gles_ColorPointer */
         int a0 = rd_i32(r);
         unsigned int a1 = rd_u32(r);
         int a2 = rd_i32(r);
@@ -782,7 +793,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_ColorPointer(rp->ctx, a0, a1, a2, a3.ptr, a3.nbytes);
         break;
     }
-    case 87: { /* gles_NormalPointer */
+    case 88: { /* gles_NormalPointer */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         ReplayDatum a2; rd_datum(rp, r, &a2, 1, 0x8894u, run);
@@ -790,7 +801,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_NormalPointer(rp->ctx, a0, a1, a2.ptr, a2.nbytes);
         break;
     }
-    case 88: { /* gles_TexCoordPointer */
+    case 89: { /* gles_TexCoordPointer */
         int a0 = rd_i32(r);
         unsigned int a1 = rd_u32(r);
         int a2 = rd_i32(r);
@@ -799,7 +810,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_TexCoordPointer(rp->ctx, a0, a1, a2, a3.ptr, a3.nbytes);
         break;
     }
-    case 89: { /* gles_PointSizePointerOES */
+    case 90: { /* gles_PointSizePointerOES */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         ReplayDatum a2; rd_datum(rp, r, &a2, 1, 0x8894u, run);
@@ -807,7 +818,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_PointSizePointerOES(rp->ctx, a0, a1, a2.ptr, a2.nbytes);
         break;
     }
-    case 90: { /* gles_GenBuffers */
+    case 91: { /* gles_GenBuffers */
         int a0 = rd_i32(r);
         ReplayDatum a1; rd_output(rp, r, &a1, 0);
         if (a0 > 0 && (a1.ptr == NULL || (uint64_t)a0 * 4u > (uint64_t)a1.nbytes)) rd_fail(r, "n exceeds the output stored");
@@ -815,7 +826,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GenBuffers(rp->ctx, a0, a1.ptr);
         break;
     }
-    case 91: { /* gles_DeleteBuffers */
+    case 92: { /* gles_DeleteBuffers */
         int a0 = rd_i32(r);
         const unsigned int *a1; uint32_t a1_n = rd_uints(r, &a1);
         if (a0 > 0 && (uint32_t)a0 > a1_n) rd_fail(r, "n exceeds the names stored");
@@ -823,14 +834,14 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DeleteBuffers(rp->ctx, a0, a1);
         break;
     }
-    case 92: { /* gles_BindBuffer */
+    case 93: { /* gles_BindBuffer */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_BindBuffer(rp->ctx, a0, a1);
         break;
     }
-    case 93: { /* gles_BufferData */
+    case 94: { /* gles_BufferData */
         unsigned int a0 = rd_u32(r);
         int64_t a1 = rd_i64(r);
         ReplayDatum a2; rd_datum(rp, r, &a2, 0, 0x8894u, run);
@@ -840,7 +851,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_BufferData(rp->ctx, a0, a1, a2.ptr, a3);
         break;
     }
-    case 94: { /* gles_BufferSubData */
+    case 95: { /* gles_BufferSubData */
         unsigned int a0 = rd_u32(r);
         int64_t a1 = rd_i64(r);
         int64_t a2 = rd_i64(r);
@@ -850,13 +861,13 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_BufferSubData(rp->ctx, a0, a1, a2, a3.ptr);
         break;
     }
-    case 95: { /* gles_IsBuffer */
+    case 96: { /* gles_IsBuffer */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_IsBuffer(rp->ctx, a0);
         break;
     }
-    case 96: { /* gles_GetBufferParameteriv */
+    case 97: { /* gles_GetBufferParameteriv */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         ReplayDatum a2; rd_output(rp, r, &a2, 0);
@@ -864,7 +875,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GetBufferParameteriv(rp->ctx, a0, a1, a2.ptr);
         break;
     }
-    case 97: { /* gles_DrawArrays */
+    case 98: { /* gles_DrawArrays */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -872,7 +883,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DrawArrays(rp->ctx, a0, a1, a2);
         break;
     }
-    case 98: { /* gles_DrawElements */
+    case 99: { /* gles_DrawElements */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         unsigned int a2 = rd_u32(r);
@@ -881,13 +892,13 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DrawElements(rp->ctx, a0, a1, a2, a3.ptr, a3.nbytes);
         break;
     }
-    case 99: { /* gles_Clear */
+    case 100: { /* gles_Clear */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_Clear(rp->ctx, a0);
         break;
     }
-    case 100: { /* gles_ReadPixels */
+    case 101: { /* gles_ReadPixels */
         int a0 = rd_i32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -899,12 +910,12 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_ReadPixels(rp->ctx, a0, a1, a2, a3, a4, a5, a6.ptr, a6.nbytes);
         break;
     }
-    case 101: { /* gles_Finish */
+    case 102: { /* gles_Finish */
         if (r->failed || !run) break;
         (void)gles_Finish(rp->ctx);
         break;
     }
-    case 102: { /* gles_Flush */
+    case 103: { /* gles_Flush */
         if (r->failed || !run) break;
         (void)gles_Flush(rp->ctx);
         break;
