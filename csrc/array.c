@@ -366,7 +366,8 @@ int array_check_range(GlesContext *ctx, int64_t max_index)
         int64_t need = max_index * a->step + a->elem_bytes;
         if (a->buffer) {
             /* the buffer may have been deleted and re-specified since */
-            if ((uintptr_t)a->ptr > (uint64_t)INT64_MAX || (int64_t)(uintptr_t)a->ptr + need > a->buffer->size || !a->buffer->data)
+            const uint64_t offset = (uintptr_t)a->ptr;   /* 64 bits wide on every target */
+            if (offset > (uint64_t)INT64_MAX || (int64_t)offset + need > a->buffer->size || !a->buffer->data)
                 return ctx_message(ctx, GLES_EVALUE,
                                    "the %s array reads %lld bytes from offset %llu of buffer %u, which holds %lld",
                                    array_label(i), (long long)need, (unsigned long long)(uintptr_t)a->ptr,
