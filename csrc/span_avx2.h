@@ -298,6 +298,17 @@ static inline void avx2_sample_linear(const TexImage *li, int n, const TexCoord 
 
 
 
+/* the trilinear mix t1 + frag_mul(f, t2 - t1) of texels in [0, 2^30]:
+** t2 - t1 and f fit vpmuldq's operands, and adding 2^60 before the shift
+** makes frag_mul's arithmetic shift a logical one (then 2^30 comes off) */
+static inline void avx2_lod_mix(FRAGV f, const FRAGV t1[4], const FRAGV t2[4], FRAGV out[4])
+{
+    const __m256i a = avx2_load4(t1), d = _mm256_sub_epi64(avx2_load4(t2), a);
+    const __m256i p = _mm256_add_epi64(_mm256_mul_epi32(d, _mm256_set1_epi64x(f)),
+                                       _mm256_set1_epi64x(((int64_t)1 << 60) + ((int64_t)1 << 29)));
+    avx2_store4(out, _mm256_add_epi64(a, _mm256_sub_epi64(_mm256_srli_epi64(p, 30), _mm256_set1_epi64x(FRAG_ONE))));
+}
+
 /* wgt_linear of four fragments, edge values e[lane]: the weights l0..l2
 ** as 64-bit lanes whose low 32 bits are the scalar code's (WGT) casts (what
 ** vpmuldq reads); 0 when an operand leaves the kernel's range (edge values

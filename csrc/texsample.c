@@ -221,10 +221,12 @@ static inline int linear_block(const Texture *t, int n, const TexCoord *c, FRAGV
 }
 
 /* sample_w of n fragments with the vector kernel doing the GL_LINEAR
-** samples: each fragment's level of detail first (lod_choose), then every
-** level's GL_LINEAR samples together (gathered by level, avx2_sample_linear),
-** the rest one by one, then the mix of two levels. The same arithmetic per
-** sample as sample_w; returns 0 where it does not apply (as linear_block) */
+** samples: each fragment's level of detail first (lod_choose), then each
+** run of neighbouring fragments that read the same levels with GL_LINEAR
+** through avx2_sample_linear (a level's run, and the next level's into
+** `second`), other samples one by one, then the mix of two levels. The
+** same arithmetic per sample as sample_w; returns 0 where it does not
+** apply (as linear_block) */
 static int lod_block(const Texture *t, int n, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
                      FRAGV *out, size_t stride, const FRAGV *unorm, unsigned int ws, unsigned int wt)
 {
@@ -236,59 +238,32 @@ static int lod_block(const Texture *t, int n, const TexCoord *c, const TexCoord 
         return 0;
     LodChoice ch[SPAN_SAMPLE_MAX];
     FRAGV second[SPAN_SAMPLE_MAX][4];
-    /* the GL_LINEAR samples by level: counts, then slots (fragment j's
-    ** first sample is 2j, its second 2j + 1) */
-    int count[GLES_MAX_TEXTURE_LEVELS] = { 0 }, first[GLES_MAX_TEXTURE_LEVELS];
+    int any_two = 0;
     for (int j = 0; j < n; j++) {
         ch[j] = lod_choose(t, &c[j], &dx[j], &dy[j]);
-        if (ch[j].filter == GL_LINEAR) {
-            count[ch[j].level]++;
-            if (ch[j].two)
-                count[ch[j].level + 1]++;
-        } else {
-            sample_level(t, ch[j].level, GL_NEAREST, c[j].s, c[j].t, out + (size_t)j * stride, unorm, ws, wt, 1);
-            if (ch[j].two)
-                sample_level(t, ch[j].level + 1, GL_NEAREST, c[j].s, c[j].t, second[j], unorm, ws, wt, 1);
+        any_two |= ch[j].two;
+    }
+    for (int j = 0; j < n;) {
+        const LodChoice *cj = &ch[j];
+        int e = j + 1;
+        while (e < n && ch[e].level == cj->level && ch[e].two == cj->two && ch[e].filter == cj->filter)
+            e++;
+        int m4 = cj->filter == GL_LINEAR ? (e - j) & ~3 : 0;
+        for (int k = 0; k <= cj->two; k++) {
+            FRAGV *dst = k ? second[j] : out + (size_t)j * stride;
+            const size_t dstride = k ? 4 : stride;
+            if (m4)
+                avx2_sample_linear(&t->level[cj->level + k], m4, c + j, dst, dstride, ws == GL_REPEAT, wt == GL_REPEAT);
+            for (int i = m4; i < e - j; i++)
+                sample_level(t, cj->level + k, cj->filter, c[j + i].s, c[j + i].t, dst + (size_t)i * dstride, unorm,
+                             ws, wt, 1);
         }
+        j = e;
     }
-    int total = 0;
-    for (int l = 0; l < GLES_MAX_TEXTURE_LEVELS; l++) {
-        first[l] = total;
-        total += count[l];
-    }
-    if (total) {
-        TexCoord coords[2 * SPAN_SAMPLE_MAX];
-        FRAGV texels[2 * SPAN_SAMPLE_MAX][4];
-        uint16_t slot[2 * SPAN_SAMPLE_MAX];
-        int at[GLES_MAX_TEXTURE_LEVELS];
-        for (int l = 0; l < GLES_MAX_TEXTURE_LEVELS; l++)
-            at[l] = first[l];
+    if (any_two)
         for (int j = 0; j < n; j++)
-            if (ch[j].filter == GL_LINEAR)
-                for (int k = 0; k <= ch[j].two; k++) {
-                    const int i = at[ch[j].level + k]++;
-                    coords[i] = c[j];
-                    slot[i] = (uint16_t)(2 * j + k);
-                }
-        for (int l = 0; l < GLES_MAX_TEXTURE_LEVELS; l++) {
-            const int m = count[l], m4 = m & ~3;
-            if (!m)
-                continue;
-            const TexImage *li = &t->level[l];
-            avx2_sample_linear(li, m4, coords + first[l], texels[first[l]], 4, ws == GL_REPEAT, wt == GL_REPEAT);
-            for (int i = first[l] + m4; i < first[l] + m; i++)
-                sample_level(t, l, GL_LINEAR, coords[i].s, coords[i].t, texels[i], unorm, ws, wt, 1);
-        }
-        for (int i = 0; i < total; i++) {
-            const int j = slot[i] >> 1;
-            FRAGV *dst = slot[i] & 1 ? second[j] : out + (size_t)j * stride;
-            for (int k = 0; k < 4; k++)
-                dst[k] = texels[i][k];
-        }
-    }
-    for (int j = 0; j < n; j++)
-        if (ch[j].two)
-            lod_mix(ch[j].frac, out + (size_t)j * stride, second[j], out + (size_t)j * stride);
+            if (ch[j].two)
+                avx2_lod_mix(ch[j].frac, out + (size_t)j * stride, second[j], out + (size_t)j * stride);
     return 1;
 #else
     (void)t, (void)n, (void)c, (void)dx, (void)dy, (void)out, (void)stride, (void)unorm, (void)ws, (void)wt;
