@@ -309,6 +309,33 @@ static inline void avx2_lod_mix(FRAGV f, const FRAGV t1[4], const FRAGV t2[4], F
     avx2_store4(out, _mm256_add_epi64(a, _mm256_sub_epi64(_mm256_srli_epi64(p, 30), _mm256_set1_epi64x(FRAG_ONE))));
 }
 
+/* rect_linear_s of the four pixel columns x0 + k[0..3], stored as the s of
+** tc[0..3] with t0 as their t: the same double operations (a + b (x + 1/2),
+** scaled by 2^32, then floor(v + 1/2)), and the conversion to int64 exact
+** by the 2^52 + 2^51 bias while |v| < 2^51; 0 (nothing stored) when a lane
+** is past that or NaN, for the scalar code */
+AVX2_INLINE int avx2_rect_linear_s4(double a, double b, int x0, const uint8_t *k, TEXC t0, TexCoord *tc)
+{
+    uint32_t k4;
+    memcpy(&k4, k, sizeof k4);
+    const __m128i px = _mm_add_epi32(_mm_cvtepu8_epi32(_mm_cvtsi32_si128((int)k4)), _mm_set1_epi32(x0));
+    const __m256d x = _mm256_add_pd(_mm256_cvtepi32_pd(px), _mm256_set1_pd(0.5));
+    const __m256d v = _mm256_mul_pd(_mm256_add_pd(_mm256_set1_pd(a), _mm256_mul_pd(_mm256_set1_pd(b), x)),
+                                    _mm256_set1_pd(4294967296.0));
+    const __m256d lim = _mm256_set1_pd(2251799813685248.0);   /* 2^51 */
+    const __m256d abs = _mm256_andnot_pd(_mm256_set1_pd(-0.0), v);
+    if (_mm256_movemask_pd(_mm256_cmp_pd(abs, lim, _CMP_LT_OQ)) != 0xF)
+        return 0;
+    const __m256d r = _mm256_floor_pd(_mm256_add_pd(v, _mm256_set1_pd(0.5)));
+    const __m256d magic = _mm256_set1_pd(6755399441055744.0);  /* 2^52 + 2^51 */
+    const __m256i s = _mm256_sub_epi64(_mm256_castpd_si256(_mm256_add_pd(r, magic)), _mm256_castpd_si256(magic));
+    const __m256i t = _mm256_set1_epi64x(t0);
+    const __m256i lo = _mm256_unpacklo_epi64(s, t), hi = _mm256_unpackhi_epi64(s, t);   /* s0 t s2 t, s1 t s3 t */
+    _mm256_storeu_si256((__m256i *)(void *)tc, _mm256_permute2x128_si256(lo, hi, 0x20));
+    _mm256_storeu_si256((__m256i *)(void *)(tc + 2), _mm256_permute2x128_si256(lo, hi, 0x31));
+    return 1;
+}
+
 /* wgt_linear of four fragments, edge values e[lane]: the weights l0..l2
 ** as 64-bit lanes whose low 32 bits are the scalar code's (WGT) casts (what
 ** vpmuldq reads); 0 when an operand leaves the kernel's range (edge values

@@ -205,7 +205,12 @@ static void STAGE(stage_fetch_rect)(GlesContext *ctx, const TriSetup *t, SpanBuf
                 b->ty[j] = (TexCoord){ b->tc[j].s, t1 };
             }
         } else {
-            for (int j = 0; j < b->n; j++)
+            int j = 0;
+#if CHAIN_SIMD && NUM_IS_FIXED
+            while (j + 4 <= b->n && avx2_rect_linear_s4(r->as[u], r->bs[u], b->x0, &b->k[j], t0, &b->tc[j]))
+                j += 4;
+#endif
+            for (; j < b->n; j++)
                 b->tc[j] = (TexCoord){ rect_linear_s(r, u, b->x0 + b->k[j]), t0 };
         }
         break;
