@@ -77,7 +77,8 @@ class Render:
     heatmap: np.ndarray | None = None  # uint8 (h, w, 3)
     range: RangeReport | None = None  # the fixed build's range checks
     gl_error: int = 0                 # glGetError after the last frame
-    skipped: str | None = None        # why it did not run (a peer missing, an exception)
+    skipped: str | None = None        # why it did not run: a peer this machine lacks
+    error: str | None = None          # why it failed: the exception the scene or renderer raised
 
     @property
     def time_ms(self) -> float:
@@ -95,6 +96,11 @@ class Comparison:
     reference: str
     renders: dict[str, Render]
 
+    @property
+    def failed(self) -> dict[str, str]:
+        """Renderer -> the exception it failed with (a skipped peer is not a failure)."""
+        return {n: r.error for n, r in self.renders.items() if r.error is not None}
+
     def table(self) -> str:
         """A Markdown table: one row per renderer."""
         head = ("| renderer | ms/frame | max abs | mean abs | RMSE | PSNR (dB) | >1 LSB | range events |\n"
@@ -103,6 +109,9 @@ class Comparison:
         for r in self.renders.values():
             if r.skipped:
                 rows.append(f"| {r.renderer} | skipped: {r.skipped} | | | | | | |")
+                continue
+            if r.error:
+                rows.append(f"| {r.renderer} | FAILED: {r.error} | | | | | | |")
                 continue
             m = r.metrics.row() if r.metrics else ["", "", "", "", ""]
             rng = str(r.range.total) if r.range is not None else ""
@@ -218,8 +227,9 @@ def compare(scene: Scene, width: int, height: int, builds: Sequence[str] = BUILD
 
     The reference is rendered even when it is not among `builds` (it is not
     timed then). A peer that is not available on this machine is reported as
-    skipped; so is a renderer whose scene raised (the exception's text is
-    kept), so that one failure does not lose the others.
+    skipped. A renderer whose scene raised is reported as failed, with the
+    exception's text in its ``error`` (and in ``Comparison.failed``), so that
+    one failure does not lose the others yet is never mistaken for a skip.
     """
     names = list(dict.fromkeys([*builds, *peers]))
     renders: dict[str, Render] = {}
@@ -229,7 +239,7 @@ def compare(scene: Scene, width: int, height: int, builds: Sequence[str] = BUILD
         try:
             renders[name] = render(scene, name, width, height, runs)
         except Exception as exc:  # noqa: BLE001 -- reported per renderer
-            renders[name] = Render(name, None, skipped=f"{type(exc).__name__}: {exc}")
+            renders[name] = Render(name, None, error=f"{type(exc).__name__}: {exc}")
     ref = renders.get(reference)
     if ref is None:
         ref = render(scene, reference, width, height, runs=1)

@@ -1377,6 +1377,12 @@ def _checked_class(base: type) -> type:
     return type(f"Checked{base.__name__}", (base,), attrs)
 
 
+# every GL_* constant is also an attribute of each command set, so that a
+# scene written against ``gl`` (ctx.gl, or a Mesa peer's namespace) finds
+# gl.GL_TEXTURE_2D wherever it runs
+for _n in C.__all__:
+    setattr(GLBase, _n, getattr(C, _n))
+
 MISSING: dict[str, str] = {}
 for _stage, _names in _MISSING_BOTH.items():
     for _n in _names.split():
