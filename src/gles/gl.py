@@ -64,6 +64,14 @@ _MISSING_COMMON = {
 }
 
 
+# the dtype of client pixel data of each pixel type (§3.6.2, Table 3.4)
+_PIXEL_DTYPES = {
+    C.GL_UNSIGNED_BYTE: np.dtype(np.uint8),
+    C.GL_UNSIGNED_SHORT_5_6_5: np.dtype(np.uint16),
+    C.GL_UNSIGNED_SHORT_4_4_4_4: np.dtype(np.uint16),
+    C.GL_UNSIGNED_SHORT_5_5_5_1: np.dtype(np.uint16),
+}
+
 # texture parameters whose values are reals (x forms scale them by 2^16,
 # i forms map them like colours); every other one is an enum or an integer
 _TEX_REAL = {C.GL_TEXTURE_ENV_COLOR, C.GL_RGB_SCALE, C.GL_ALPHA_SCALE}
@@ -123,6 +131,25 @@ def _index(v: Any) -> int:
         raise TypeError(f"{_describe(v, 'argument')} is not an integer") from None
 
 
+def _glint(v: Any, name: str) -> int:
+    """A GLint or GLsizei argument: TypeError for a non-integer, ValueError
+    outside 32 bits, both naming the argument."""
+    i = _index(v)
+    if not _INT_MIN <= i <= _INT_MAX:
+        raise ValueError(f"{_describe(v, name)} does not fit GLint (32-bit signed)")
+    return i
+
+
+def _real(v: Any) -> float:
+    """A real argument; strings and other non-numbers are refused, naming it."""
+    if isinstance(v, (str, bytes, bytearray)):
+        raise TypeError(f"{_describe(v, 'argument')} is not a number")
+    try:
+        return float(v)
+    except (TypeError, ValueError):
+        raise TypeError(f"{_describe(v, 'argument')} is not a number") from None
+
+
 def _finite_or_zero(v: float) -> float:
     return 0.0 if math.isnan(v) else v
 
@@ -155,6 +182,37 @@ def _mask(v: Any) -> int:
     return i & 0xFFFFFFFF
 
 
+class _Infer:
+    """The default of an argument PyOpenGL lets the caller leave out."""
+
+    def __repr__(self) -> str:
+        return "<inferred>"
+
+
+_INFER: Any = _Infer()
+
+# the queries that answer a 4x4 matrix: returned with shape (4, 4)
+_MATRIX_PNAMES = frozenset({
+    C.GL_MODELVIEW_MATRIX, C.GL_PROJECTION_MATRIX, C.GL_TEXTURE_MATRIX,
+    C.GL_MODELVIEW_MATRIX_FLOAT_AS_INT_BITS_OES, C.GL_PROJECTION_MATRIX_FLOAT_AS_INT_BITS_OES,
+    C.GL_TEXTURE_MATRIX_FLOAT_AS_INT_BITS_OES,
+})
+
+
+def _count_names(n: Any, names: Any, what: str) -> tuple[int, Any]:
+    """(n, names) of a Delete* call given as (names) or as (n, names)."""
+    if names is _INFER:
+        names = n
+        if isinstance(names, (int, np.integer)) and not isinstance(names, bool):
+            return 1, [names]
+        try:
+            return len(names), names
+        except TypeError:
+            raise TypeError(f"{what}: names must be a sequence of ints or an int, "
+                            f"not {type(names).__name__}") from None
+    return _index(n), names
+
+
 def _names(n: Any, names: Any, what: str) -> Any:
     """n GLuint object names as a C array (Delete*)."""
     try:
@@ -169,6 +227,23 @@ def _names(n: Any, names: Any, what: str) -> Any:
     if head.size and (head.min() < 0 or head.max() > 2**32 - 1):
         raise ValueError(f"{what}: a name does not fit GLuint (32-bit unsigned)")
     return head
+
+
+def _converted(data: Any, dtype: np.dtype, what: str) -> np.ndarray:
+    """A sequence (or one number) as a contiguous array of dtype: TypeError
+    for what is not numbers, ValueError for a value the dtype cannot hold."""
+    try:
+        src = np.asarray(data)
+    except (TypeError, ValueError) as e:
+        raise TypeError(f"{what}: data must be an array, bytes or a sequence of numbers ({e})") from None
+    if src.dtype.kind not in "biuf":
+        raise TypeError(f"{what}: data must be numbers, not {src.dtype} values")
+    if dtype.kind in "iu":
+        if src.dtype.kind == "f":
+            raise TypeError(f"{what}: {dtype} data expected, got reals")
+        if src.size and (src.min() < np.iinfo(dtype).min or src.max() > np.iinfo(dtype).max):
+            raise ValueError(f"{what}: a value does not fit {dtype}")
+    return np.ascontiguousarray(src.astype(dtype))
 
 
 def _fixed(v: Any) -> float:
@@ -308,7 +383,7 @@ class GLBase:
         elif isinstance(data, (bytes, bytearray, memoryview)):
             arr = np.frombuffer(data, dtype=np.uint8)
         else:
-            arr = np.ascontiguousarray(np.asarray(data, dtype=want if want is not None else np.uint8))
+            arr = _converted(data, want if want is not None else np.dtype(np.uint8), what)
         return ffi.from_buffer(arr), arr.nbytes, arr
 
     def _status(self, st: int, call: str = "") -> None:
@@ -345,12 +420,16 @@ class GLBase:
             return [self._d16[i] for i in range(n)], self._kind[0]
 
     @staticmethod
-    def _result(vals: list, dtype: Any) -> Any:
+    def _result(vals: list, dtype: Any, pname: Any = None) -> Any:
         if not vals:
             return None
         if len(vals) == 1:
             return vals[0]
-        return np.array(vals, dtype=dtype)
+        out = np.array(vals, dtype=dtype)
+        if pname in _MATRIX_PNAMES:
+            # as PyOpenGL: the 16 values in GL's (column-major) order, 4 to a row
+            out = out.reshape(4, 4)
+        return out
 
     # {================================================================
     # errors and queries
@@ -365,7 +444,7 @@ class GLBase:
         vals, kind = self._get(pname)
         # unsigned masks (0xFFFFFFFF) clamp to the GLint range
         out = [_norm_to_int(v) if kind == _KIND_NORM else _to_int(v) for v in vals]
-        return self._result(out, np.int32)
+        return self._result(out, np.int32, pname)
 
     def glGetFixedv(self, pname: int) -> Any:
         """State as 16.16; enums are returned unscaled (§6.1.2)."""
@@ -374,20 +453,22 @@ class GLBase:
             out = [_to_int(v) for v in vals]
         else:
             out = [_to_fixed(v) for v in vals]
-        return self._result(out, np.int32)
+        return self._result(out, np.int32, pname)
 
     def glGetBooleanv(self, pname: int) -> Any:
         """State as booleans: nonzero is True."""
         vals, _ = self._get(pname)
-        return self._result([bool(v != 0) for v in vals], np.bool_)
+        return self._result([bool(v != 0) for v in vals], np.bool_, pname)
 
     def glIsEnabled(self, cap: int) -> bool:
         with self._lock:
             return bool(self._lib.gles_IsEnabled(self._p, _index(cap)))
 
-    def glGetString(self, name: int) -> str | None:
-        """VENDOR, RENDERER, VERSION or EXTENSIONS."""
-        return self._context._string(_index(name))
+    def glGetString(self, name: int) -> bytes | None:
+        """VENDOR, RENDERER, VERSION or EXTENSIONS, as bytes (PyOpenGL's
+        habit: the C function returns a GLubyte string)."""
+        text = self._context._string(_index(name))
+        return None if text is None else text.encode("ascii")
 
     def glGetPointerv(self, pname: int) -> int:
         """The pointer (as an address) or buffer offset last given for an array."""
@@ -615,7 +696,7 @@ class GLBase:
     # lighting (§2.12)
 
     def _params(self, pname: int, params: Any, fixed: bool, what: str) -> Any:
-        n = _PARAM_COUNT.get(int(pname), 1)
+        n = _PARAM_COUNT.get(_index(pname), 1)
         vals = _values(params, n, what, np.int64 if fixed else np.float64)[:n]
         out = [0.0, 0.0, 0.0, 0.0]
         for i in range(n):
@@ -623,7 +704,7 @@ class GLBase:
         return self._ffi.new("double[4]", out)
 
     def _scalar(self, param: Any, fixed: bool) -> Any:
-        return self._ffi.new("double[4]", [_fixed(param) if fixed else float(param), 0.0, 0.0, 0.0])
+        return self._ffi.new("double[4]", [_fixed(param) if fixed else _real(param), 0.0, 0.0, 0.0])
 
     def glLightx(self, light: int, pname: int, param: int) -> None:
         buf = self._scalar(param, True)
@@ -719,10 +800,10 @@ class GLBase:
 
     def _fog_scalar(self, pname: int, param: Any, fixed: bool) -> Any:
         # FOG_MODE takes an enum, never scaled
-        if int(pname) == C.GL_FOG_MODE:
-            v = float(_index(param)) if fixed else float(param)
+        if _index(pname) == C.GL_FOG_MODE:
+            v = float(_index(param)) if fixed else _real(param)
         else:
-            v = _fixed(param) if fixed else float(param)
+            v = _fixed(param) if fixed else _real(param)
         return self._ffi.new("double[4]", [v, 0.0, 0.0, 0.0])
 
     def glFogx(self, pname: int, param: int) -> None:
@@ -731,7 +812,7 @@ class GLBase:
             self._lib.gles_Fog(self._p, pname, buf, 0)
 
     def glFogxv(self, pname: int, params: Any) -> None:
-        if int(pname) == C.GL_FOG_MODE:
+        if _index(pname) == C.GL_FOG_MODE:
             buf = self._fog_scalar(pname, _values(params, 1, "glFogxv", np.int64)[0], True)
         else:
             buf = self._params(pname, params, True, "glFogxv")
@@ -753,8 +834,10 @@ class GLBase:
         names = [int(out[i]) for i in range(n)]
         return names[0] if n == 1 else np.array(names, dtype=np.uint32)
 
-    def glDeleteTextures(self, n: int, textures: Any) -> None:
-        n = _index(n)
+    def glDeleteTextures(self, n: Any, textures: Any = _INFER) -> None:
+        """Delete texture objects: ``glDeleteTextures(names)`` (n is the
+        sequence's length, as PyOpenGL) or the C form ``(n, names)``."""
+        n, textures = _count_names(n, textures, "glDeleteTextures")
         head = _names(n, textures, "glDeleteTextures")
         buf = self._ffi.new("unsigned int[]", [int(v) for v in head] or [0])
         with self._lock:
@@ -768,16 +851,40 @@ class GLBase:
         with self._lock:
             return bool(self._lib.gles_IsTexture(self._p, texture))
 
-    def _pixels(self, data: Pointer, what: str) -> tuple[Any, int, Any]:
+    def _pixels(self, data: Pointer, what: str, gltype: Any = None) -> tuple[Any, int, Any]:
+        """Client image data: an array whose dtype fits `gltype` (uint8 for
+        UNSIGNED_BYTE; uint16 for the packed 16-bit types, or uint8 as their
+        raw bytes), bytes, or a sequence of values converted to that dtype.
+        Compressed data (no `gltype`) is raw bytes."""
         if data is None:
             return self._ffi.NULL, -1, None
         if isinstance(data, (int, np.integer)) and not isinstance(data, bool):
             raise TypeError(f"{what}: pixel data must be an array or bytes (ES 1.1 has no pixel buffers)")
-        return self._pointer(data, None, 0, what)
+        want = _PIXEL_DTYPES.get(int(gltype)) if isinstance(gltype, (int, np.integer)) else None
+        if want is None:
+            # compressed data, or a type the core refuses with INVALID_ENUM
+            return self._pointer(data, None, 0, what)
+        if isinstance(data, np.ndarray):
+            if data.dtype != want and data.dtype != np.uint8:
+                raise TypeError(f"{what}: pixels dtype {data.dtype} does not fit {C.NAMES.get(int(gltype))} "
+                                f"({want}" + (")" if want == np.uint8 else ", or uint8 raw bytes)"))
+            return self._pointer(data, None, 0, what)
+        if isinstance(data, (bytes, bytearray, memoryview)):
+            return self._pointer(data, None, 0, what)
+        try:
+            arr = np.asarray(data)
+        except (TypeError, ValueError) as e:
+            raise TypeError(f"{what}: pixels must be an array, bytes or numbers ({e})") from None
+        if arr.dtype.kind not in "biu":
+            raise TypeError(f"{what}: pixels hold {arr.dtype} values; {C.NAMES.get(int(gltype))} takes "
+                            f"integers ({want})")
+        if arr.size and (arr.min() < 0 or arr.max() > np.iinfo(want).max):
+            raise ValueError(f"{what}: a pixel value does not fit {want}")
+        return self._pointer(arr.astype(want), None, 0, what)
 
     def glTexImage2D(self, target: int, level: int, internalformat: int, width: int, height: int, border: int,
                      format: int, type: int, pixels: Pointer) -> None:
-        ptr, nbytes, keep = self._pixels(pixels, "glTexImage2D")
+        ptr, nbytes, keep = self._pixels(pixels, "glTexImage2D", type)
         with self._lock:
             st = self._lib.gles_TexImage2D(self._p, target, level, internalformat, width, height, border,
                                            format, type, ptr, nbytes)
@@ -786,7 +893,7 @@ class GLBase:
 
     def glTexSubImage2D(self, target: int, level: int, xoffset: int, yoffset: int, width: int, height: int,
                         format: int, type: int, pixels: Pointer) -> None:
-        ptr, nbytes, keep = self._pixels(pixels, "glTexSubImage2D")
+        ptr, nbytes, keep = self._pixels(pixels, "glTexSubImage2D", type)
         with self._lock:
             st = self._lib.gles_TexSubImage2D(self._p, target, level, xoffset, yoffset, width, height,
                                               format, type, ptr, nbytes)
@@ -827,16 +934,16 @@ class GLBase:
     def _tex_values(self, pname: int, params: Any, form: str, vector: bool, what: str) -> Any:
         """Doubles for a texture parameter: x forms scale reals, i forms
         map reals like colours, enums and integers pass unchanged."""
-        n = _TEX_COUNT.get(int(pname), 1) if vector else 1
+        n = _TEX_COUNT.get(_index(pname), 1) if vector else 1
         raw = _values(params if vector else [params], n, what,
                       np.float64 if form == "f" else np.int64)[:n]
-        real = int(pname) in _TEX_REAL
+        real = _index(pname) in _TEX_REAL
         out = [0.0, 0.0, 0.0, 0.0]
         for i in range(n):
             v = raw[i]
             if form == "x" and real:
                 out[i] = int(v) * _FIX
-            elif form == "i" and real and int(pname) == C.GL_TEXTURE_ENV_COLOR:
+            elif form == "i" and real and _index(pname) == C.GL_TEXTURE_ENV_COLOR:
                 out[i] = (2.0 * int(v) + 1.0) / (2.0**32 - 1.0)
             else:
                 out[i] = float(v)
@@ -881,12 +988,12 @@ class GLBase:
         with self._lock:
             n = fn(self._p, target, pname, out)
         vals = [out[i] for i in range(n)]
-        real = int(pname) in _TEX_REAL
+        real = _index(pname) in _TEX_REAL
         if form == "f":
             return self._result([float(v) for v in vals], np.float32)
         if form == "x":
             conv = [_to_fixed(v) if real else _to_int(v) for v in vals]
-        elif int(pname) == C.GL_TEXTURE_ENV_COLOR:
+        elif _index(pname) == C.GL_TEXTURE_ENV_COLOR:
             conv = [_norm_to_int(v) for v in vals]
         else:
             conv = [_to_int(v) for v in vals]
@@ -1020,8 +1127,10 @@ class GLBase:
         names = [int(out[i]) for i in range(n)]
         return names[0] if n == 1 else np.array(names, dtype=np.uint32)
 
-    def glDeleteBuffers(self, n: int, buffers: Any) -> None:
-        n = _index(n)
+    def glDeleteBuffers(self, n: Any, buffers: Any = _INFER) -> None:
+        """Delete buffer objects: ``glDeleteBuffers(names)`` (n is the
+        sequence's length, as PyOpenGL) or the C form ``(n, names)``."""
+        n, buffers = _count_names(n, buffers, "glDeleteBuffers")
         head = _names(n, buffers, "glDeleteBuffers")
         buf = self._ffi.new("unsigned int[]", [int(v) for v in head] or [0])
         with self._lock:
@@ -1052,10 +1161,20 @@ class GLBase:
         self._lib.gles_GetBufferParameteriv(self._p, target, C.GL_BUFFER_SIZE, out)
         return int(out[0])
 
-    def glBufferData(self, target: int, size: int, data: Pointer, usage: int) -> None:
+    def glBufferData(self, target: int, size: Any, data: Pointer = _INFER, usage: Any = _INFER) -> None:
         """Replace the bound buffer's store with size bytes (zeros when data
         is None). Past the context's memory budget: OUT_OF_MEMORY, the buffer
-        unchanged."""
+        unchanged. ``glBufferData(target, data, usage)`` takes the size from
+        the data, as PyOpenGL does."""
+        if usage is _INFER:
+            if data is _INFER:
+                raise TypeError("glBufferData takes (target, size, data, usage) or (target, data, usage)")
+            size, data, usage = _INFER, size, data
+        if size is _INFER:
+            if data is None or isinstance(data, (int, np.integer)):
+                raise TypeError("glBufferData(target, data, usage): data must be an array, bytes or "
+                                f"a sequence to take the size from, not {type(data).__name__}")
+            _, size, _ = self._buffer_data(data, "glBufferData")
         size = _index(size)
         if data is None:
             ptr, nbytes, keep = self._ffi.NULL, size, None
@@ -1074,8 +1193,16 @@ class GLBase:
         del keep
         self._status(st)
 
-    def glBufferSubData(self, target: int, offset: int, size: int, data: Pointer) -> None:
-        """Copy size bytes of data into the bound buffer at offset."""
+    def glBufferSubData(self, target: int, offset: int, size: Any, data: Pointer = _INFER) -> None:
+        """Copy size bytes of data into the bound buffer at offset.
+        ``glBufferSubData(target, offset, data)`` copies all of the data, as
+        PyOpenGL does."""
+        if data is _INFER:
+            data = size
+            if data is None or isinstance(data, (int, np.integer)):
+                raise TypeError("glBufferSubData(target, offset, data): data must be an array, bytes or "
+                                f"a sequence to take the size from, not {type(data).__name__}")
+            _, size, _ = self._buffer_data(data, "glBufferSubData")
         size, offset = _index(size), _index(offset)
         ptr, nbytes, keep = self._buffer_data(data, "glBufferSubData")
         with self._lock:
@@ -1117,13 +1244,18 @@ class GLBase:
                      array: Any = None) -> Any:
         """Read a rectangle, bottom row first as GL defines.
 
-        Returns uint8 (h, w, 4) for GL_RGBA/GL_UNSIGNED_BYTE and uint16 (h, w)
-        for GL_RGB/GL_UNSIGNED_SHORT_5_6_5. With ``array`` (a writable buffer)
-        the raw rows are written into it with PACK_ALIGNMENT padding instead,
-        and None is returned. On a GL error nothing is written and None is
+        Returns the part of the rectangle inside the framebuffer (§4.3.1:
+        pixels outside it are undefined, so they are neither read nor
+        allocated): rows from max(y, 0), columns from max(x, 0); uint8
+        (h, w, 4) for GL_RGBA/GL_UNSIGNED_BYTE and uint16 (h, w) for
+        GL_RGB/GL_UNSIGNED_SHORT_5_6_5. With ``array`` (a writable buffer)
+        the whole rectangle's raw rows are written into it with
+        PACK_ALIGNMENT padding instead (zeros outside the framebuffer), and
+        None is returned. On a GL error nothing is written and None is
         returned.
         """
-        width, height = _index(width), _index(height)
+        x, y, width, height = (_glint(v, name) for v, name in
+                               ((x, "x"), (y, "y"), (width, "width"), (height, "height")))
         if array is not None:
             try:
                 buf = self._ffi.from_buffer(array, require_writable=True)
@@ -1133,22 +1265,17 @@ class GLBase:
                 st = self._lib.gles_ReadPixels(self._p, x, y, width, height, format, type, buf, len(buf))
             self._status(st)
             return None
+        if width >= 0 and height >= 0:
+            # clip to the framebuffer; a negative size goes on unchanged so
+            # that the core records INVALID_VALUE
+            x0, y0 = max(x, 0), max(y, 0)
+            width = max(min(x + width, self._context.width) - x0, 0)
+            height = max(min(y + height, self._context.height) - y0, 0)
+            x, y = x0, y0
         bpp = 4 if (format, type) == (C.GL_RGBA, C.GL_UNSIGNED_BYTE) else 2
         align = self._bound(C.GL_PACK_ALIGNMENT)
         stride = -(-max(width, 0) * bpp // align) * align
-        if width < 0 or height < 0 or stride * height > self._context.memory_limit:
-            # GL errors first; a valid read this large raises (pass `array`)
-            with self._lock:
-                err_before = self._lib.gles_GetError(self._p)
-                self._lib.gles_ReadPixels(self._p, x, y, width, height, format, type, self._ffi.NULL, 0)
-                err = self._lib.gles_GetError(self._p)
-                if err_before or err:
-                    self._lib.gles_set_error(self._p, err_before or err)
-            if err:
-                return None
-            raise ValueError(f"glReadPixels: {width} x {height} pixels need {stride * height} bytes, "
-                             f"past the context's memory_limit")
-        raw = np.zeros(max(stride * height, 1), dtype=np.uint8)
+        raw = np.zeros(max(stride * max(height, 0), 1), dtype=np.uint8)
         with self._lock:
             err_before = self._lib.gles_GetError(self._p)
             st = self._lib.gles_ReadPixels(self._p, x, y, width, height, format, type,
@@ -1172,7 +1299,7 @@ class GLCommon(GLBase):
 
     def glGetFloatv(self, pname: int) -> Any:
         vals, _ = self._get(pname)
-        return self._result([float(v) for v in vals], np.float32)
+        return self._result([float(v) for v in vals], np.float32, pname)
 
     def glLightf(self, light: int, pname: int, param: float) -> None:
         buf = self._scalar(param, False)
@@ -1224,7 +1351,7 @@ class GLCommon(GLBase):
             self._lib.gles_Fog(self._p, pname, buf, 0)
 
     def glFogfv(self, pname: int, params: Any) -> None:
-        if int(pname) == C.GL_FOG_MODE:
+        if _index(pname) == C.GL_FOG_MODE:
             buf = self._fog_scalar(pname, _values(params, 1, "glFogfv")[0], False)
         else:
             buf = self._params(pname, params, False, "glFogfv")
@@ -1272,7 +1399,7 @@ class GLCommon(GLBase):
             self._lib.gles_PolygonOffset(self._p, factor, units)
 
     def glDrawTexfOES(self, x: float, y: float, z: float, width: float, height: float) -> None:
-        self._draw_tex([float(v) for v in (x, y, z, width, height)])
+        self._draw_tex([_real(v) for v in (x, y, z, width, height)])
 
     def glDrawTexfvOES(self, coords: Any) -> None:
         self._draw_tex([float(v) for v in _values(coords, 5, "glDrawTexfvOES")[:5]])

@@ -24,12 +24,16 @@ Conventions of ``ctx.gl`` (shared with ``gles``):
   call of the same function (per client-active texture unit for texture
   coordinates);
 * ``glGen*(n)`` returns an int for ``n == 1``, else a uint32 array;
-  ``glDelete*(n, names)`` takes an int or a sequence;
+  ``glDelete*(names)`` takes an int or a sequence (the C form ``(n, names)``
+  works too); ``glBufferData(target, data, usage)`` and
+  ``glBufferSubData(target, offset, data)`` take the size from the data;
 * ``glGet*v(...)`` take every argument except the output pointer and return a
-  scalar for one value, else a numpy array;
-* ``glReadPixels(x, y, w, h, format, type)`` returns a new unpadded array, bottom
-  row first: uint8 (h, w, 4) for RGBA/UNSIGNED_BYTE, (h, w, 3) for RGB, uint16
-  (h, w) for the packed 16-bit types; for a pair it does not know, GL is still
+  scalar for one value, else a numpy array, shape (4, 4) for a matrix;
+  ``glGetString`` returns bytes;
+* ``glReadPixels(x, y, w, h, format, type)`` returns a new unpadded array of
+  the part of the rectangle inside the surface, bottom row first: uint8
+  (h, w, 4) for RGBA/UNSIGNED_BYTE, (h, w, 3) for RGB, uint16 (h, w) for the
+  packed 16-bit types; for a pair it does not know, GL is still
   called (so that it records its error) and the result is None;
 * ``glQueryMatrixxOES()`` returns (mantissa[16], exponent[16], status);
   ``glGetPointerv`` and ``glMapBufferOES`` return addresses as ints;
@@ -741,7 +745,42 @@ class _State:
 
 _STATE = _State()
 
+class _Infer:
+    """The default of an argument PyOpenGL lets the caller leave out."""
+
+    def __repr__(self) -> str:
+        return "<inferred>"
+
+
+_INFER: Any = _Infer()
+
+_MATRIX_PNAMES = frozenset(int(getattr(C, "GL_" + n)) for n in (
+    "MODELVIEW_MATRIX PROJECTION_MATRIX TEXTURE_MATRIX MODELVIEW_MATRIX_FLOAT_AS_INT_BITS_OES "
+    "PROJECTION_MATRIX_FLOAT_AS_INT_BITS_OES TEXTURE_MATRIX_FLOAT_AS_INT_BITS_OES").split())
+
+
+def _count(names: Any) -> tuple[int, Any]:
+    """(n, names) of a one-argument Delete* call: an int or a sequence."""
+    if isinstance(names, _INTEGER) and not isinstance(names, bool):
+        return 1, names
+    try:
+        return len(names), names
+    except TypeError:
+        raise TypeError(f"names must be a sequence of ints or an int, not {type(names).__name__}") from None
+
+
+def _nbytes(data: Any, what: str) -> int:
+    """The size of data a size-less glBufferData/glBufferSubData copies."""
+    if isinstance(data, np.ndarray):
+        return int(data.nbytes)
+    if isinstance(data, _BYTES_LIKE):
+        return memoryview(data).nbytes
+    raise TypeError(f"{what}: without a size, data must be a numpy array or bytes, "
+                    f"not {type(data).__name__}")
+
+
 _GEN_GLOBALS: dict[str, Any] = {
+    "_INFER": _INFER, "_count": _count, "_nbytes": _nbytes, "_MATRIX_PNAMES": _MATRIX_PNAMES,
     "np": np, "ctypes": ctypes, "_addr": _addr, "_vec": _vec, "_data": _data,
     "_raw": _raw, "_check_image": _check_image, "_check_indices": _check_indices,
     "_cnt": _COUNTS.get,
@@ -785,11 +824,32 @@ def _source(proto: _Proto) -> str:
     call = list(names)
 
     if name == "glGetString":
-        ret = "s = _fn({})\n        return None if s is None else s.decode()"
+        ret = "return _fn({})"          # bytes, as PyOpenGL returns them
+    elif name == "glBufferData":
+        # (target, data, usage): the size is the data's, as in PyOpenGL
+        sig = ["target", "size", "data=_INFER", "usage=_INFER"]
+        body.append("        if usage is _INFER:\n"
+                    "            size, data, usage = _INFER, size, data\n"
+                    "        if size is _INFER:\n"
+                    "            size = _nbytes(data, 'glBufferData')\n"
+                    "        data_a, data_k = _raw(data, size)\n")
+        call[2] = "data_a"
+    elif name == "glBufferSubData":
+        sig = ["target", "offset", "size", "data=_INFER"]
+        body.append("        if data is _INFER:\n"
+                    "            size, data = _nbytes(size, 'glBufferSubData'), size\n"
+                    "        data_a, data_k = _raw(data, size)\n")
+        call[3] = "data_a"
     elif name == "glReadPixels":
         sig = names[:-1]
         body.append(
             "        layout = _READ_LAYOUTS.get((format, type))\n"
+            "        if width >= 0 and height >= 0:\n"
+            "            # only the part inside the surface, as gles returns it\n"
+            "            x0, y0 = max(x, 0), max(y, 0)\n"
+            "            width = max(min(x + width, _ctx.width) - x0, 0)\n"
+            "            height = max(min(y + height, _ctx.height) - y0, 0)\n"
+            "            x, y = x0, y0\n"
             "        w = max(width, 0)\n"
             "        h = max(height, 0)\n"
             "        if layout is None:\n"
@@ -820,7 +880,10 @@ def _source(proto: _Proto) -> str:
     elif (name.startswith("glDelete") and len(params) == 2 and names[0] == "n"
           and params[1].pointer):
         p = names[1]
+        sig = ["n", f"{p}=_INFER"]
         body.append(
+            f"        if {p} is _INFER:\n"
+            f"            n, {p} = _count(n)\n"
             f"        if isinstance({p}, (int, np.integer)):\n"
             f"            {p} = np.array([{p}], np.uint32)\n"
             f"        {p}_a, {p}_k = _vec({p}, _DT_GLuint, n)\n")
@@ -848,6 +911,12 @@ def _source(proto: _Proto) -> str:
                         f"        _fn({', '.join(sig + ['out'])})\n")
             ret = (f"return out[0] if n == 1 else "
                    f"np.array(out[:n], _DT_{last.base})")
+            if "pname" in sig:
+                # matrices come back (4, 4), as PyOpenGL returns them
+                ret = (f"arr = np.array(out[:n], _DT_{last.base})\n"
+                       f"        if n == 16 and pname in _MATRIX_PNAMES:\n"
+                       f"            return arr.reshape(4, 4)\n"
+                       f"        return out[0] if n == 1 else arr")
     elif name == "glMultiDrawElementsEXT":
         body.append(
             "        count_a, count_k = _vec(count, _DT_GLsizei, primcount)\n"

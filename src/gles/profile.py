@@ -131,6 +131,11 @@ def _margin(x: float, kind: str) -> float:
     return UNDERFLOW_LIMIT / abs(x)
 
 
+def _times(margin: float) -> str:
+    """'2.5x' for a margin; an infinite or NaN one (an inf or NaN value) has no multiple."""
+    return f"{margin:.3g}x" if math.isfinite(margin) else "infinitely beyond"
+
+
 @dataclass(frozen=True)
 class RangeEvent:
     """One value or draw outside the 16.16 range."""
@@ -198,12 +203,12 @@ class RangeMonitor:
         if x != x:
             msg = f"{call}: {arg} is NaN, which 16.16 cannot hold; the fixed core takes it as 0"
         elif kind == "overflow":
-            msg = (f"{call}: {arg} = {x:g} is outside 16.16 (|x| >= 32768, {margin:.3g}x the limit); "
+            msg = (f"{call}: {arg} = {x:g} is outside 16.16 (|x| >= 32768, {_times(margin)} the limit); "
                    + ("the fixed core saturates it to "
                    + (f"{math.copysign(FIXED_MAX, x):.5f}" if x == x else "0 (NaN)")))
         else:
             msg = (f"{call}: {arg} = {x:g} is nonzero but rounds to 0 in 16.16 "
-                   f"(|x| <= 2^-17, {margin:.3g}x below the smallest value kept)")
+                   f"(|x| <= 2^-17, {_times(margin)} below the smallest value kept)")
         self._record(RangeEvent(kind, f"{call}({arg})", x, margin, msg))
         return _clamped(x, kind) if self.policy == "clamp" else x
 
@@ -215,7 +220,7 @@ class RangeMonitor:
             source = _ARRAY_SOURCES[index]
             margin = big / OVERFLOW_LIMIT if big == big else math.inf
             msg = (f"{call}: the {_ARRAY_NAMES[index]} array ({source}) holds |x| = {big:g} in the vertices "
-                   f"drawn, outside 16.16 ({margin:.3g}x the limit); the fixed core saturates it")
+                   f"drawn, outside 16.16 ({_times(margin)} the limit); the fixed core saturates it")
             if self.policy == "raise":
                 msg += "; nothing was drawn"
             self._record(RangeEvent("overflow", f"{call}: {source}", big, margin, msg))
@@ -228,7 +233,7 @@ class RangeMonitor:
         margin = lhs / RULE_LIMIT if lhs == lhs else math.inf
         msg = (f"{call}: P*MV and the vertex array break the 16.16 overflow rule c*s + t < {RULE_LIMIT:g}: "
                f"c = {c:g} (largest |vertex component|), s = {s:g} (largest |upper 3x3 element| of P*MV), "
-               f"t = {t:g} (largest |4th column element|), c*s + t = {lhs:g}, {margin:.3g}x the limit")
+               f"t = {t:g} (largest |4th column element|), c*s + t = {lhs:g}, {_times(margin)} the limit")
         if self.policy == "raise":
             msg += "; nothing was drawn"
         self._record(RangeEvent("rule", call, lhs, margin, msg))
@@ -258,7 +263,7 @@ def _by_pname(table: dict[int, int], pname_at: int, default: int = 1,
     def count(args: tuple) -> int:
         try:
             pname = int(args[pname_at])
-        except (TypeError, ValueError, IndexError):
+        except (TypeError, ValueError, OverflowError, IndexError):
             return 0
         return 0 if pname in skip else table.get(pname, default)
     return count
@@ -267,7 +272,7 @@ def _by_pname(table: dict[int, int], pname_at: int, default: int = 1,
 def _tex_env_count(args: tuple) -> int:
     try:
         pname = int(args[1])
-    except (TypeError, ValueError, IndexError):
+    except (TypeError, ValueError, OverflowError, IndexError):
         return 0
     if pname not in _TEX_REAL:
         return 0              # enums (modes, sources, operands) are not 16.16 values
