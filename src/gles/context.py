@@ -2,15 +2,15 @@
 
 from __future__ import annotations
 
+import os
 import threading
-from pathlib import Path
-from typing import Any
+from typing import Any, BinaryIO
 
 import numpy as np
 
 from . import _binding
 from . import constants as C
-from ._png import write_png
+from ._png import encode_png, write_png
 from .gl import GLBase, GLCommon, _checked_class, _current, _set_current
 from .profile import POLICIES, RangedGLCommon, RangeMonitor, RangeReport
 
@@ -266,9 +266,24 @@ class Context:
             raw = out
         return raw[::-1].copy()
 
-    def save(self, path: str | Path) -> None:
-        """Write the colour buffer to a PNG file (top row first)."""
-        write_png(path, self.image())
+    def save(self, file: str | os.PathLike[str] | BinaryIO) -> None:
+        """Write the colour buffer as PNG (top row first) to a path or to a
+        binary file object (anything with ``write(bytes)``)."""
+        if isinstance(file, (str, os.PathLike)):
+            write_png(file, self.image())
+            return
+        write = getattr(file, "write", None)
+        if not callable(write):
+            raise TypeError(f"save() takes a path or a binary file object, not {type(file).__name__}")
+        data = encode_png(self.image())
+        try:
+            write(data)
+        except TypeError:
+            raise TypeError("save(): the file object must be opened in binary mode ('wb')") from None
+
+    def _repr_png_(self) -> bytes:
+        """The colour buffer as PNG bytes: Jupyter shows a context as its image."""
+        return encode_png(self.image())
 
     # {================================================================
     # introspection for tests
