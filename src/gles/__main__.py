@@ -130,7 +130,7 @@ def main(argv: list[str] | None = None) -> int:
     p.set_defaults(run=_cmd_render)
 
     p = sub.add_parser("libdir", help="print the directory of libGLESv1_CM and libEGL for C programs")
-    p.add_argument("--numeric", default="fixed", choices=["fixed", "float", "double"])
+    p.add_argument("--numeric", default="fixed", choices=list(cmp.BUILDS))
     p.add_argument("--profile", default="common", choices=["common", "common-lite"])
     p.add_argument("--include", action="store_true", help="print the Khronos headers' directory instead")
     p.set_defaults(run=_cmd_libdir)

@@ -41,12 +41,13 @@ from typing import Any, Callable
 
 import numpy as np
 
+from ._binding import NUMERICS
 from .context import Context
 from .profile import RangeReport
 
 Scene = Callable[[Any, int, int], Any]
 
-BUILDS = ("fixed", "float", "double")
+BUILDS = NUMERICS
 PEERS = ("mesa-llvmpipe", "mesa-softpipe")
 
 

@@ -11,11 +11,14 @@ import numpy as np
 from . import _binding
 from . import constants as C
 from ._png import encode_png, write_png
-from .gl import GLBase, GLCommon, _checked_class, _current, _set_current
+from .gl import CoreHandle, GLBase, GLCommon, _checked_class, _current, _set_current
 from .profile import POLICIES, RangedGLCommon, RangeMonitor, RangeReport
 
-PROFILES = {"common": 0, "common-lite": 1}
-_RANGE_MODE = {"off": 0, "warn": 1, "clamp": 1, "raise": 2}   # GLES_RANGE_* of the per-draw rule
+_LIB = _binding.core(_binding.NUMERICS[0]).lib    # the core's numbers (every build exports the same)
+PROFILES = {"common": _LIB.GLES_PROFILE_COMMON, "common-lite": _LIB.GLES_PROFILE_COMMON_LITE}
+# the core's per-draw rule under each policy: "raise" skips the draw that breaks it
+_RANGE_MODE = {"off": _LIB.GLES_RANGE_OFF, "warn": _LIB.GLES_RANGE_CHECK, "clamp": _LIB.GLES_RANGE_CHECK,
+               "raise": _LIB.GLES_RANGE_SKIP}
 
 # the command-set class for (profile, range checks on, check_errors)
 _GL_CLASSES: dict[tuple[str, bool, bool], type] = {}
@@ -25,26 +28,22 @@ for _base, _key in ((GLBase, "common-lite"), (GLCommon, "common")):
         _GL_CLASSES[(_key, _ranged, False)] = _cls
         _GL_CLASSES[(_key, _ranged, True)] = _checked_class(_cls)
 
-COLOR_FORMATS = {"rgba8888": 0, "rgb565": 1}
+COLOR_FORMATS = {"rgba8888": _LIB.GLES_COLOR_RGBA8888, "rgb565": _LIB.GLES_COLOR_RGB565}
 
 DEFAULT_MEMORY_LIMIT = 256 << 20    # bytes of texture images and buffer data per context
 
 VENDOR = "gles"
+# the extensions of the Common profile; Common-Lite has all but the float commands
+_COMMON_EXTENSIONS = (
+    "GL_OES_byte_coordinates", "GL_OES_fixed_point", "GL_OES_single_precision", "GL_OES_matrix_get",
+    "GL_OES_query_matrix", "GL_OES_read_format", "GL_OES_matrix_palette", "GL_OES_blend_subtract",
+    "GL_OES_blend_func_separate", "GL_OES_blend_equation_separate", "GL_OES_stencil_wrap",
+    "GL_OES_compressed_paletted_texture", "GL_OES_texture_mirrored_repeat", "GL_OES_texture_env_crossbar",
+    "GL_OES_point_size_array", "GL_OES_point_sprite", "GL_OES_draw_texture",
+)
 EXTENSIONS = {
-    "common": ["GL_OES_byte_coordinates", "GL_OES_fixed_point", "GL_OES_single_precision",
-               "GL_OES_matrix_get", "GL_OES_query_matrix",
-               "GL_OES_read_format", "GL_OES_matrix_palette", "GL_OES_blend_subtract",
-               "GL_OES_blend_func_separate", "GL_OES_blend_equation_separate", "GL_OES_stencil_wrap",
-               "GL_OES_compressed_paletted_texture", "GL_OES_texture_mirrored_repeat",
-               "GL_OES_texture_env_crossbar", "GL_OES_point_size_array", "GL_OES_point_sprite",
-               "GL_OES_draw_texture"],
-    "common-lite": ["GL_OES_byte_coordinates", "GL_OES_fixed_point", "GL_OES_matrix_get",
-                    "GL_OES_query_matrix",
-                    "GL_OES_read_format", "GL_OES_matrix_palette", "GL_OES_blend_subtract",
-                    "GL_OES_blend_func_separate", "GL_OES_blend_equation_separate", "GL_OES_stencil_wrap",
-                    "GL_OES_compressed_paletted_texture", "GL_OES_texture_mirrored_repeat",
-                    "GL_OES_texture_env_crossbar", "GL_OES_point_size_array", "GL_OES_point_sprite",
-                    "GL_OES_draw_texture"],
+    "common": list(_COMMON_EXTENSIONS),
+    "common-lite": [e for e in _COMMON_EXTENSIONS if e != "GL_OES_single_precision"],
 }
 
 
@@ -109,9 +108,10 @@ class Context:
         self._check_errors = False
         self._range = RangeMonitor(range_check)
         self._lib.gles_range_set(self._ptr, _RANGE_MODE[range_check])
-        self._memory_limit = memory_limit
         self._lib.gles_memory_limit(self._ptr, memory_limit)
-        self.gl: GLBase = self._gl_class()(self)
+        self._handle = CoreHandle(self._lib, self._ffi, self._ptr, self._lock, self._range, width, height,
+                                  self._strings(), memory_limit)
+        self.gl: GLBase = self._gl_class()(self._handle)
 
     def __repr__(self) -> str:
         return (f"<gles.Context {self.width}x{self.height} {self.profile} {self.numeric} "
@@ -128,7 +128,7 @@ class Context:
             return
         was_current = getattr(_current, "gl", None) is self.gl
         keep = self.gl._keep
-        self.gl = cls(self)
+        self.gl = cls(self._handle)
         self.gl._keep = keep          # arrays the core still points at
         if was_current:
             _set_current(self.gl)
@@ -173,14 +173,14 @@ class Context:
     def memory_limit(self) -> int:
         """Bytes the context's texture images and buffer data may hold
         together (settable; a limit below the current use only stops growth)."""
-        return self._memory_limit
+        return self._handle.memory_limit
 
     @memory_limit.setter
     def memory_limit(self, limit: int) -> None:
         limit = self._check_limit(limit)
         with self._lock:
             self._lib.gles_memory_limit(self._ptr, limit)
-        self._memory_limit = limit
+        self._handle.memory_limit = limit
 
     @property
     def memory_used(self) -> int:
@@ -205,18 +205,14 @@ class Context:
         _set_current(self.gl)
         return self
 
-    def _string(self, name: int) -> str | None:
-        if name == C.GL_VENDOR:
-            return VENDOR
-        if name == C.GL_RENDERER:
-            return f"gles software renderer ({self.numeric})"
-        if name == C.GL_VERSION:
-            return "OpenGL ES-CM 1.1" if self.profile == "common" else "OpenGL ES-CL 1.1"
-        if name == C.GL_EXTENSIONS:
-            return " ".join(EXTENSIONS[self.profile])
-        with self._lock:
-            self._lib.gles_set_error(self._ptr, C.GL_INVALID_ENUM)
-        return None
+    def _strings(self) -> dict[int, str]:
+        """The GetString answers (§6.1.5)."""
+        return {
+            C.GL_VENDOR: VENDOR,
+            C.GL_RENDERER: f"gles software renderer ({self.numeric})",
+            C.GL_VERSION: "OpenGL ES-CM 1.1" if self.profile == "common" else "OpenGL ES-CL 1.1",
+            C.GL_EXTENSIONS: " ".join(EXTENSIONS[self.profile]),
+        }
 
     # {================================================================
     # pixels

@@ -31,15 +31,14 @@ import operator
 import sys
 import threading
 from collections.abc import Sequence
-from typing import TYPE_CHECKING, Any, Union
+from typing import Any, Union
 
 import numpy as np
 
+from . import _binding
 from . import constants as C
 from .constants import *  # noqa: F403  (the GL_* names are part of this module's API)
-
-if TYPE_CHECKING:
-    from .context import Context
+from .errors import GLError
 
 Pointer = Union[np.ndarray, bytes, bytearray, memoryview, Sequence, int, None]
 
@@ -52,16 +51,15 @@ _DTYPES = {
     C.GL_FLOAT: np.dtype(np.float32),
 }
 
-_KIND_INT, _KIND_ENUM, _KIND_BOOL, _KIND_FLOAT, _KIND_NORM = 1, 2, 3, 4, 5
-_STATUS_VALUE, _STATUS_MEMORY, _STATUS_RANGE = -1, -2, 1
+# the core's own numbers, read from it (every build exports the same)
+_CORE_LIB = _binding.core(_binding.NUMERICS[0]).lib
+# what gles_get says a state value is: enums are returned unscaled by
+# GetFixedv, normalized values map to the whole int range
+_KIND_ENUM, _KIND_NORM = _CORE_LIB.GLES_KIND_ENUM, _CORE_LIB.GLES_KIND_NORM
+_STATUS_MEMORY, _STATUS_RANGE = _CORE_LIB.GLES_EMEMORY, _CORE_LIB.GLES_RANGE
+_RANGE_ARRAYS = _CORE_LIB.GLES_RANGE_ARRAYS
 _FIX = 1.0 / 65536.0
 
-# The ES 1.1 commands whose pipeline stage is not built yet. Each exists and
-# raises NotImplementedError naming its stage; README.md lists them.
-_MISSING_BOTH = {
-}
-_MISSING_COMMON = {
-}
 
 
 # the dtype of client pixel data of each pixel type (§3.6.2, Table 3.4)
@@ -340,15 +338,35 @@ def _core_functions(lib: Any, ffi: Any) -> _CoreFunctions:
     return _CORE_FUNCTIONS[key]
 
 
-class GLBase:
-    """The Common-Lite command set, bound to one context."""
+class CoreHandle:
+    """What a command set needs of its context, and nothing more: the core's
+    functions, the context's pointer and lock, its range monitor, the
+    framebuffer size, the GetString answers and the memory budget (which the
+    context updates)."""
 
-    def __init__(self, context: Context) -> None:
-        self._context = context
-        self._lib = _core_functions(context._lib, context._ffi)
-        self._ffi = context._ffi
-        self._p = context._ptr
-        self._lock: threading.Lock = context._lock
+    __slots__ = ("lib", "ffi", "ptr", "lock", "range", "width", "height", "strings", "memory_limit")
+
+    def __init__(self, lib: Any, ffi: Any, ptr: Any, lock: threading.Lock, range_monitor: Any,
+                 width: int, height: int, strings: dict[int, str], memory_limit: int) -> None:
+        self.lib = _core_functions(lib, ffi)
+        self.ffi = ffi
+        self.ptr = ptr
+        self.lock = lock
+        self.range = range_monitor
+        self.width, self.height = width, height
+        self.strings = strings
+        self.memory_limit = memory_limit
+
+
+class GLBase:
+    """The Common-Lite command set, bound to one context through its handle."""
+
+    def __init__(self, handle: CoreHandle) -> None:
+        self.handle = handle
+        self._lib = handle.lib
+        self._ffi = handle.ffi
+        self._p = handle.ptr
+        self._lock: threading.Lock = handle.lock
         self._keep: dict[Any, Any] = {}
         self._d16 = self._ffi.new("double[16]")
         self._kind = self._ffi.new("int *")
@@ -393,10 +411,11 @@ class GLBase:
             # the draw broke the overflow rule or read a FLOAT array value
             # 16.16 cannot hold (profile.py acts on the policy)
             last = self._ffi.new("double[4]")
-            arrays = self._ffi.new("double[10]")
+            arrays = self._ffi.new("double[]", _RANGE_ARRAYS)
             with self._lock:
                 mask = self._lib.gles_range_last(self._p, last, arrays)
-            self._context._range.draw(call, tuple(last), {i: arrays[i] for i in range(10) if mask >> i & 1})
+            self.handle.range.draw(call, tuple(last),
+                                   {i: arrays[i] for i in range(_RANGE_ARRAYS) if mask >> i & 1})
             return
         if st == _STATUS_MEMORY:
             return      # the core recorded OUT_OF_MEMORY and changed nothing
@@ -408,7 +427,7 @@ class GLBase:
         OUT_OF_MEMORY, nothing generated."""
         if n > _INT_MAX:
             raise ValueError(f"{_describe(n, 'n')} does not fit GLsizei (32-bit signed)")
-        if n * 4 <= self._context.memory_limit:
+        if n * 4 <= self.handle.memory_limit:
             return False
         with self._lock:
             self._lib.gles_set_error(self._p, C.GL_OUT_OF_MEMORY)
@@ -467,8 +486,12 @@ class GLBase:
     def glGetString(self, name: int) -> bytes | None:
         """VENDOR, RENDERER, VERSION or EXTENSIONS, as bytes (PyOpenGL's
         habit: the C function returns a GLubyte string)."""
-        text = self._context._string(_index(name))
-        return None if text is None else text.encode("ascii")
+        text = self.handle.strings.get(_index(name))
+        if text is None:
+            with self._lock:
+                self._lib.gles_set_error(self._p, C.GL_INVALID_ENUM)
+            return None
+        return text.encode("ascii")
 
     def glGetPointerv(self, pname: int) -> int:
         """The pointer (as an address) or buffer offset last given for an array."""
@@ -1269,8 +1292,8 @@ class GLBase:
             # clip to the framebuffer; a negative size goes on unchanged so
             # that the core records INVALID_VALUE
             x0, y0 = max(x, 0), max(y, 0)
-            width = max(min(x + width, self._context.width) - x0, 0)
-            height = max(min(y + height, self._context.height) - y0, 0)
+            width = max(min(x + width, self.handle.width) - x0, 0)
+            height = max(min(y + height, self.handle.height) - y0, 0)
             x, y = x0, y0
         bpp = 4 if (format, type) == (C.GL_RGBA, C.GL_UNSIGNED_BYTE) else 2
         align = self._bound(C.GL_PACK_ALIGNMENT)
@@ -1472,15 +1495,6 @@ class GLCommon(GLBase):
             self._lib.gles_MultiTexCoord4(self._p, target, s, t, r, q)
 
 
-def _missing(name: str, stage: str) -> Any:
-    def command(self: GLBase, *args: Any) -> None:
-        raise NotImplementedError(f"{name}: {stage} is not implemented yet (see the README's table)")
-
-    command.__name__ = name
-    command.__doc__ = f"Not implemented yet: part of {stage}."
-    return command
-
-
 def _checked_class(base: type) -> type:
     """A subclass of `base` whose every command raises GLError on a GL error,
     like PyOpenGL's error checking (glGetError itself is left alone)."""
@@ -1490,8 +1504,6 @@ def _checked_class(base: type) -> type:
             result = fn(self, *args)
             err = self._lib.gles_GetError(self._p)
             if err:
-                from .errors import GLError
-
                 raise GLError(err, name, args)
             return result
 
@@ -1510,15 +1522,9 @@ def _checked_class(base: type) -> type:
 for _n in C.__all__:
     setattr(GLBase, _n, getattr(C, _n))
 
+# ES 1.1 commands that exist but whose stage is not built (each would raise
+# NotImplementedError naming it): none
 MISSING: dict[str, str] = {}
-for _stage, _names in _MISSING_BOTH.items():
-    for _n in _names.split():
-        setattr(GLBase, _n, _missing(_n, _stage))
-        MISSING[_n] = _stage
-for _stage, _names in _MISSING_COMMON.items():
-    for _n in _names.split():
-        setattr(GLCommon, _n, _missing(_n, _stage))
-        MISSING[_n] = _stage
 
 COMMON_LITE_COMMANDS = sorted(n for n in dir(GLBase) if n.startswith("gl"))
 COMMON_COMMANDS = sorted(n for n in dir(GLCommon) if n.startswith("gl"))

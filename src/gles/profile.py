@@ -403,7 +403,7 @@ def ranged_class(base: type) -> type:
             if kwargs:
                 bound = params.bind(self, *args, **kwargs)
                 args = tuple(bound.args[1:])
-            return fn(self, *check(self._context._range, args))
+            return fn(self, *check(self.handle.range, args))
 
         if name in _SCALAR_REALS:
             command = _fast_scalar(name, fn, _SCALAR_REALS[name], command)
