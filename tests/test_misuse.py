@@ -172,7 +172,7 @@ def test_non_numbers_name_the_argument() -> None:
         g.glMatrixMode("projection")
     with pytest.raises(TypeError, match=r"glTranslatex: y=1.5 is not an integer"):
         g.glTranslatex(0, 1.5, 0)
-    with pytest.raises(TypeError, match=r"glClearColor: g='red' is not a number"):
+    with pytest.raises(TypeError, match=r"glClearColor: green='red' is not a number"):
         fresh("float").gl.glClearColor(0, "red", 0, 1)
     assert g.glGetIntegerv(C.GL_MATRIX_MODE) == C.GL_MODELVIEW
 

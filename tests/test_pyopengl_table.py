@@ -192,7 +192,7 @@ def test_row_P12_fixed_arguments() -> None:
     g = make().gl
     g.glClearColorx(65536, 0, 32768, 65536)
     assert np.allclose(g.glGetFloatv(C.GL_COLOR_CLEAR_VALUE), [1, 0, 0.5, 1])
-    with pytest.raises(TypeError, match="glClearColorx: g=0.5"):
+    with pytest.raises(TypeError, match="glClearColorx: green=0.5"):
         g.glClearColorx(65536, 0.5, 0, 65536)
     assert np.allclose(g.glGetFloatv(C.GL_COLOR_CLEAR_VALUE), [1, 0, 0.5, 1])
 

@@ -194,7 +194,7 @@ RANGE_CASES: list[tuple[str, Callable[[Any], Any], str]] = [
     ("fixed vector", lambda g: g.glLoadMatrixx([2**40] * 16), "glLoadMatrixx"),
     ("ubyte", lambda g: g.glColor4ub(0, 256, 0, 0), "256"),
     ("names", lambda g: g.glDeleteTextures(1, [-1]), "glDeleteTextures"),
-    ("float", lambda g: g.glClearColor(2**1100, 0, 0, 0), "r="),
+    ("float", lambda g: g.glClearColor(2**1100, 0, 0, 0), "red="),
     ("buffer size", lambda g: g.glBufferData(G.GL_ARRAY_BUFFER, 2**63, None, G.GL_STATIC_DRAW), "size="),
     ("offset", lambda g: g.glVertexPointer(2, G.GL_FLOAT, 0, 2**64), "offset"),
     ("mask", lambda g: g.glStencilMask(2**32), "mask=4294967296"),

@@ -37,6 +37,7 @@ import numpy as np
 
 from . import _binding
 from . import constants as C
+from .commands import COMMANDS, Command, Param
 from .constants import *  # noqa: F403  (the GL_* names are part of this module's API)
 from .errors import GLError
 
@@ -534,169 +535,19 @@ class GLBase:
         return mant, expo, status
 
     # {================================================================
-    # simple state
-
-    def glEnable(self, cap: int) -> None:
-        with self._lock:
-            self._lib.gles_Enable(self._p, cap)
-
-    def glDisable(self, cap: int) -> None:
-        with self._lock:
-            self._lib.gles_Disable(self._p, cap)
-
-    def glEnableClientState(self, array: int) -> None:
-        with self._lock:
-            self._lib.gles_EnableClientState(self._p, array)
-
-    def glDisableClientState(self, array: int) -> None:
-        with self._lock:
-            self._lib.gles_DisableClientState(self._p, array)
-
-    def glViewport(self, x: int, y: int, width: int, height: int) -> None:
-        with self._lock:
-            self._lib.gles_Viewport(self._p, x, y, width, height)
-
-    def glScissor(self, x: int, y: int, width: int, height: int) -> None:
-        with self._lock:
-            self._lib.gles_Scissor(self._p, x, y, width, height)
-
-    def glDepthRangex(self, n: int, f: int) -> None:
-        with self._lock:
-            self._lib.gles_DepthRange(self._p, _fixed(n), _fixed(f))
-
-    def glClearColorx(self, r: int, g: int, b: int, a: int) -> None:
-        with self._lock:
-            self._lib.gles_ClearColor(self._p, _fixed(r), _fixed(g), _fixed(b), _fixed(a))
-
-    def glClearDepthx(self, depth: int) -> None:
-        with self._lock:
-            self._lib.gles_ClearDepth(self._p, _fixed(depth))
-
-    def glClearStencil(self, s: int) -> None:
-        with self._lock:
-            self._lib.gles_ClearStencil(self._p, s)
-
-    def glColorMask(self, r: bool, g: bool, b: bool, a: bool) -> None:
-        with self._lock:
-            self._lib.gles_ColorMask(self._p, bool(r), bool(g), bool(b), bool(a))
-
-    def glDepthMask(self, flag: bool) -> None:
-        with self._lock:
-            self._lib.gles_DepthMask(self._p, bool(flag))
-
-    def glDepthFunc(self, func: int) -> None:
-        with self._lock:
-            self._lib.gles_DepthFunc(self._p, func)
-
-    def glCullFace(self, mode: int) -> None:
-        with self._lock:
-            self._lib.gles_CullFace(self._p, mode)
-
-    def glFrontFace(self, mode: int) -> None:
-        with self._lock:
-            self._lib.gles_FrontFace(self._p, mode)
-
-    def glShadeModel(self, mode: int) -> None:
-        with self._lock:
-            self._lib.gles_ShadeModel(self._p, mode)
-
-    def glHint(self, target: int, mode: int) -> None:
-        with self._lock:
-            self._lib.gles_Hint(self._p, target, mode)
-
-    def glPixelStorei(self, pname: int, param: int) -> None:
-        with self._lock:
-            self._lib.gles_PixelStorei(self._p, pname, param)
-
-    def glActiveTexture(self, texture: int) -> None:
-        with self._lock:
-            self._lib.gles_ActiveTexture(self._p, texture)
-
-    def glClientActiveTexture(self, texture: int) -> None:
-        with self._lock:
-            self._lib.gles_ClientActiveTexture(self._p, texture)
-
-    def glFinish(self) -> None:
-        with self._lock:
-            self._lib.gles_Finish(self._p)
-
-    def glFlush(self) -> None:
-        with self._lock:
-            self._lib.gles_Flush(self._p)
-
-    # {================================================================
     # matrices
 
-    def glMatrixMode(self, mode: int) -> None:
-        with self._lock:
-            self._lib.gles_MatrixMode(self._p, mode)
-
-    def glLoadIdentity(self) -> None:
-        with self._lock:
-            self._lib.gles_LoadIdentity(self._p)
-
-    def glPushMatrix(self) -> None:
-        with self._lock:
-            self._lib.gles_PushMatrix(self._p)
-
-    def glPopMatrix(self) -> None:
-        with self._lock:
-            self._lib.gles_PopMatrix(self._p)
-
-    def _matrix(self, m: Any, fixed: bool, what: str) -> Any:
-        if fixed:
-            arr = _values(m, 16, what, np.int64)[:16] * _FIX
+    def _vector(self, values: Any, count: int, ctype: str, what: str) -> Any:
+        """The core's double[count] for a fixed-length vector argument:
+        GLfixed values as the reals they stand for, GLfloat ones as they are."""
+        if "GLfixed" in ctype:
+            vals = _values(values, count, what, np.int64)[:count] * _FIX
         else:
-            arr = _values(m, 16, what)[:16]
-        buf = self._ffi.new("double[16]", arr.tolist())
-        return buf
-
-    def glLoadMatrixx(self, m: Any) -> None:
-        buf = self._matrix(m, True, "glLoadMatrixx")
-        with self._lock:
-            self._lib.gles_LoadMatrix(self._p, buf)
-
-    def glMultMatrixx(self, m: Any) -> None:
-        buf = self._matrix(m, True, "glMultMatrixx")
-        with self._lock:
-            self._lib.gles_MultMatrix(self._p, buf)
-
-    def glTranslatex(self, x: int, y: int, z: int) -> None:
-        with self._lock:
-            self._lib.gles_Translate(self._p, _fixed(x), _fixed(y), _fixed(z))
-
-    def glScalex(self, x: int, y: int, z: int) -> None:
-        with self._lock:
-            self._lib.gles_Scale(self._p, _fixed(x), _fixed(y), _fixed(z))
-
-    def glRotatex(self, angle: int, x: int, y: int, z: int) -> None:
-        with self._lock:
-            self._lib.gles_Rotate(self._p, _fixed(angle), _fixed(x), _fixed(y), _fixed(z))
-
-    def glFrustumx(self, left: int, right: int, bottom: int, top: int, near: int, far: int) -> None:
-        with self._lock:
-            self._lib.gles_Frustum(
-                self._p, _fixed(left), _fixed(right), _fixed(bottom), _fixed(top), _fixed(near), _fixed(far)
-            )
-
-    def glOrthox(self, left: int, right: int, bottom: int, top: int, near: int, far: int) -> None:
-        with self._lock:
-            self._lib.gles_Ortho(
-                self._p, _fixed(left), _fixed(right), _fixed(bottom), _fixed(top), _fixed(near), _fixed(far)
-            )
-
-    def glClipPlanex(self, plane: int, equation: Any) -> None:
-        eq = _values(equation, 4, "glClipPlanex", np.int64)[:4] * _FIX
-        buf = self._ffi.new("double[4]", eq.tolist())
-        with self._lock:
-            self._lib.gles_ClipPlane(self._p, plane, buf)
+            vals = _values(values, count, what)[:count]
+        return self._ffi.new(f"double[{count}]", vals.tolist())
 
     # {================================================================
     # current values
-
-    def glColor4x(self, r: int, g: int, b: int, a: int) -> None:
-        with self._lock:
-            self._lib.gles_Color4(self._p, _fixed(r), _fixed(g), _fixed(b), _fixed(a))
 
     def glColor4ub(self, r: int, g: int, b: int, a: int) -> None:
         # Table 2.7: c / 255
@@ -706,14 +557,6 @@ class GLBase:
                 raise ValueError(f"{_describe(c, 'glColor4ub argument')} does not fit GLubyte")
         with self._lock:
             self._lib.gles_Color4(self._p, vals[0] / 255.0, vals[1] / 255.0, vals[2] / 255.0, vals[3] / 255.0)
-
-    def glNormal3x(self, nx: int, ny: int, nz: int) -> None:
-        with self._lock:
-            self._lib.gles_Normal3(self._p, _fixed(nx), _fixed(ny), _fixed(nz))
-
-    def glMultiTexCoord4x(self, target: int, s: int, t: int, r: int, q: int) -> None:
-        with self._lock:
-            self._lib.gles_MultiTexCoord4(self._p, target, _fixed(s), _fixed(t), _fixed(r), _fixed(q))
 
     # {================================================================
     # lighting (§2.12)
@@ -729,35 +572,18 @@ class GLBase:
     def _scalar(self, param: Any, fixed: bool) -> Any:
         return self._ffi.new("double[4]", [_fixed(param) if fixed else _real(param), 0.0, 0.0, 0.0])
 
-    def glLightx(self, light: int, pname: int, param: int) -> None:
-        buf = self._scalar(param, True)
-        with self._lock:
-            self._lib.gles_Light(self._p, light, pname, buf, 0)
-
-    def glLightxv(self, light: int, pname: int, params: Any) -> None:
-        buf = self._params(pname, params, True, "glLightxv")
-        with self._lock:
-            self._lib.gles_Light(self._p, light, pname, buf, 1)
-
-    def glLightModelx(self, pname: int, param: int) -> None:
-        buf = self._scalar(param, True)
-        with self._lock:
-            self._lib.gles_LightModel(self._p, pname, buf, 0)
-
-    def glLightModelxv(self, pname: int, params: Any) -> None:
-        buf = self._params(pname, params, True, "glLightModelxv")
-        with self._lock:
-            self._lib.gles_LightModel(self._p, pname, buf, 1)
-
-    def glMaterialx(self, face: int, pname: int, param: int) -> None:
-        buf = self._scalar(param, True)
-        with self._lock:
-            self._lib.gles_Material(self._p, face, pname, buf, 0)
-
-    def glMaterialxv(self, face: int, pname: int, params: Any) -> None:
-        buf = self._params(pname, params, True, "glMaterialxv")
-        with self._lock:
-            self._lib.gles_Material(self._p, face, pname, buf, 1)
+    def _pname_values(self, family: str, pname: Any, value: Any, form: str, vector: bool, what: str) -> Any:
+        """The core's double[4] for the value(s) of a pname command: `form` is
+        its suffix (x: 16.16, f: reals, i: integers), `family` says how its
+        pnames read them ("tex": _tex_values; "fog": FOG_MODE is an enum;
+        "lighting": a count per pname, reals)."""
+        if family == "tex":
+            return self._tex_values(pname, value, form, vector, what)
+        fixed = form == "x"
+        if family == "fog" and _index(pname) == C.GL_FOG_MODE:
+            mode = _values(value, 1, what, np.int64 if fixed else np.float64)[0] if vector else value
+            return self._fog_scalar(pname, mode, fixed)
+        return self._params(pname, value, fixed, what) if vector else self._scalar(value, fixed)
 
     def _get_lm(self, fn: Any, target: int, pname: int) -> list[float]:
         out = self._ffi.new("double[4]")
@@ -778,49 +604,6 @@ class GLBase:
     # {================================================================
     # per-fragment operations (§4.1) and fog (§3.8)
 
-    def glAlphaFuncx(self, func: int, ref: int) -> None:
-        with self._lock:
-            self._lib.gles_AlphaFunc(self._p, func, _fixed(ref))
-
-    def glStencilFunc(self, func: int, ref: int, mask: int) -> None:
-        with self._lock:
-            self._lib.gles_StencilFunc(self._p, func, ref, _mask(mask))
-
-    def glStencilOp(self, fail: int, zfail: int, zpass: int) -> None:
-        with self._lock:
-            self._lib.gles_StencilOp(self._p, fail, zfail, zpass)
-
-    def glStencilMask(self, mask: int) -> None:
-        with self._lock:
-            self._lib.gles_StencilMask(self._p, _mask(mask))
-
-    def glBlendFunc(self, sfactor: int, dfactor: int) -> None:
-        with self._lock:
-            self._lib.gles_BlendFunc(self._p, sfactor, dfactor)
-
-    def glBlendFuncSeparateOES(self, src_rgb: int, dst_rgb: int, src_alpha: int, dst_alpha: int) -> None:
-        """OES_blend_func_separate."""
-        with self._lock:
-            self._lib.gles_BlendFuncSeparateOES(self._p, src_rgb, dst_rgb, src_alpha, dst_alpha)
-
-    def glBlendEquationOES(self, mode: int) -> None:
-        """OES_blend_subtract."""
-        with self._lock:
-            self._lib.gles_BlendEquationOES(self._p, mode)
-
-    def glBlendEquationSeparateOES(self, mode_rgb: int, mode_alpha: int) -> None:
-        """OES_blend_equation_separate."""
-        with self._lock:
-            self._lib.gles_BlendEquationSeparateOES(self._p, mode_rgb, mode_alpha)
-
-    def glLogicOp(self, opcode: int) -> None:
-        with self._lock:
-            self._lib.gles_LogicOp(self._p, opcode)
-
-    def glSampleCoveragex(self, value: int, invert: bool) -> None:
-        with self._lock:
-            self._lib.gles_SampleCoverage(self._p, _fixed(value), bool(invert))
-
     def _fog_scalar(self, pname: int, param: Any, fixed: bool) -> Any:
         # FOG_MODE takes an enum, never scaled
         if _index(pname) == C.GL_FOG_MODE:
@@ -829,50 +612,38 @@ class GLBase:
             v = _fixed(param) if fixed else _real(param)
         return self._ffi.new("double[4]", [v, 0.0, 0.0, 0.0])
 
-    def glFogx(self, pname: int, param: int) -> None:
-        buf = self._fog_scalar(pname, param, True)
-        with self._lock:
-            self._lib.gles_Fog(self._p, pname, buf, 0)
-
-    def glFogxv(self, pname: int, params: Any) -> None:
-        if _index(pname) == C.GL_FOG_MODE:
-            buf = self._fog_scalar(pname, _values(params, 1, "glFogxv", np.int64)[0], True)
-        else:
-            buf = self._params(pname, params, True, "glFogxv")
-        with self._lock:
-            self._lib.gles_Fog(self._p, pname, buf, 1)
-
     # {================================================================
     # textures (§3.7)
 
-    def glGenTextures(self, n: int) -> Any:
+    def _gen(self, core: Any, n: Any) -> Any:
+        """glGen*: an int for n == 1, else a uint32 array (None on a GL error)."""
         n = _index(n)
         if self._names_too_many(n):
             return None
         out = self._ffi.new("unsigned int[]", max(n, 1))
         with self._lock:
-            self._lib.gles_GenTextures(self._p, n, out if n >= 0 else self._ffi.NULL)
+            core(self._p, n, out if n >= 0 else self._ffi.NULL)
         if n < 0:
             return None
         names = [int(out[i]) for i in range(n)]
         return names[0] if n == 1 else np.array(names, dtype=np.uint32)
 
+    def _delete(self, core: Any, n: Any, names: Any, what: str) -> None:
+        """glDelete*: (names) with n their count, as PyOpenGL, or (n, names)."""
+        n, names = _count_names(n, names, what)
+        head = _names(n, names, what)
+        buf = self._ffi.new("unsigned int[]", [int(v) for v in head] or [0])
+        with self._lock:
+            core(self._p, n, buf)
+
+    def glGenTextures(self, n: int) -> Any:
+        """Texture object names: an int for n == 1, else a uint32 array."""
+        return self._gen(self._lib.gles_GenTextures, n)
+
     def glDeleteTextures(self, n: Any, textures: Any = _INFER) -> None:
         """Delete texture objects: ``glDeleteTextures(names)`` (n is the
         sequence's length, as PyOpenGL) or the C form ``(n, names)``."""
-        n, textures = _count_names(n, textures, "glDeleteTextures")
-        head = _names(n, textures, "glDeleteTextures")
-        buf = self._ffi.new("unsigned int[]", [int(v) for v in head] or [0])
-        with self._lock:
-            self._lib.gles_DeleteTextures(self._p, n, buf)
-
-    def glBindTexture(self, target: int, texture: int) -> None:
-        with self._lock:
-            self._lib.gles_BindTexture(self._p, target, texture)
-
-    def glIsTexture(self, texture: int) -> bool:
-        with self._lock:
-            return bool(self._lib.gles_IsTexture(self._p, texture))
+        self._delete(self._lib.gles_DeleteTextures, n, textures, "glDeleteTextures")
 
     def _pixels(self, data: Pointer, what: str, gltype: Any = None) -> tuple[Any, int, Any]:
         """Client image data: an array whose dtype fits `gltype` (uint8 for
@@ -905,33 +676,26 @@ class GLBase:
             raise ValueError(f"{what}: a pixel value does not fit {want}")
         return self._pointer(arr.astype(want), None, 0, what)
 
-    def glTexImage2D(self, target: int, level: int, internalformat: int, width: int, height: int, border: int,
-                     format: int, type: int, pixels: Pointer) -> None:
-        ptr, nbytes, keep = self._pixels(pixels, "glTexImage2D", type)
+    def _image(self, core: Any, args: tuple, type: Any, pixels: Pointer, what: str) -> None:
+        """TexImage2D/TexSubImage2D: `args` up to the type, then the pixels
+        (checked against the type) with their length."""
+        ptr, nbytes, keep = self._pixels(pixels, what, type)
         with self._lock:
-            st = self._lib.gles_TexImage2D(self._p, target, level, internalformat, width, height, border,
-                                           format, type, ptr, nbytes)
+            st = core(self._p, *args, type, ptr, nbytes)
         del keep
         self._status(st)
+
+    def glTexImage2D(self, target: int, level: int, internalformat: int, width: int, height: int, border: int,
+                     format: int, type: int, pixels: Pointer) -> None:
+        """Specify a texture image (§3.7.1); pixels None leaves it undefined."""
+        self._image(self._lib.gles_TexImage2D, (target, level, internalformat, width, height, border, format),
+                    type, pixels, "glTexImage2D")
 
     def glTexSubImage2D(self, target: int, level: int, xoffset: int, yoffset: int, width: int, height: int,
                         format: int, type: int, pixels: Pointer) -> None:
-        ptr, nbytes, keep = self._pixels(pixels, "glTexSubImage2D", type)
-        with self._lock:
-            st = self._lib.gles_TexSubImage2D(self._p, target, level, xoffset, yoffset, width, height,
-                                              format, type, ptr, nbytes)
-        del keep
-        self._status(st)
-
-    def glCopyTexImage2D(self, target: int, level: int, internalformat: int, x: int, y: int, width: int,
-                         height: int, border: int) -> None:
-        with self._lock:
-            self._lib.gles_CopyTexImage2D(self._p, target, level, internalformat, x, y, width, height, border)
-
-    def glCopyTexSubImage2D(self, target: int, level: int, xoffset: int, yoffset: int, x: int, y: int,
-                            width: int, height: int) -> None:
-        with self._lock:
-            self._lib.gles_CopyTexSubImage2D(self._p, target, level, xoffset, yoffset, x, y, width, height)
+        """Replace a rectangle of a texture image (§3.7.2)."""
+        self._image(self._lib.gles_TexSubImage2D, (target, level, xoffset, yoffset, width, height, format),
+                    type, pixels, "glTexSubImage2D")
 
     def glCompressedTexImage2D(self, target: int, level: int, internalformat: int, width: int, height: int,
                                border: int, imageSize: int, data: Pointer) -> None:
@@ -972,40 +736,6 @@ class GLBase:
                 out[i] = float(v)
         return self._ffi.new("double[4]", out)
 
-    def _tex_param(self, target: int, pname: int, params: Any, form: str, vector: bool, what: str) -> None:
-        buf = self._tex_values(pname, params, form, vector, what)
-        with self._lock:
-            self._lib.gles_TexParameter(self._p, target, pname, buf, int(vector))
-
-    def glTexParameteri(self, target: int, pname: int, param: int) -> None:
-        self._tex_param(target, pname, param, "i", False, "glTexParameteri")
-
-    def glTexParameteriv(self, target: int, pname: int, params: Any) -> None:
-        self._tex_param(target, pname, params, "i", True, "glTexParameteriv")
-
-    def glTexParameterx(self, target: int, pname: int, param: int) -> None:
-        self._tex_param(target, pname, param, "x", False, "glTexParameterx")
-
-    def glTexParameterxv(self, target: int, pname: int, params: Any) -> None:
-        self._tex_param(target, pname, params, "x", True, "glTexParameterxv")
-
-    def _tex_env(self, target: int, pname: int, params: Any, form: str, vector: bool, what: str) -> None:
-        buf = self._tex_values(pname, params, form, vector, what)
-        with self._lock:
-            self._lib.gles_TexEnv(self._p, target, pname, buf, int(vector))
-
-    def glTexEnvi(self, target: int, pname: int, param: int) -> None:
-        self._tex_env(target, pname, param, "i", False, "glTexEnvi")
-
-    def glTexEnviv(self, target: int, pname: int, params: Any) -> None:
-        self._tex_env(target, pname, params, "i", True, "glTexEnviv")
-
-    def glTexEnvx(self, target: int, pname: int, param: int) -> None:
-        self._tex_env(target, pname, param, "x", False, "glTexEnvx")
-
-    def glTexEnvxv(self, target: int, pname: int, params: Any) -> None:
-        self._tex_env(target, pname, params, "x", True, "glTexEnvxv")
-
     def _tex_get(self, fn: Any, target: int, pname: int, form: str) -> Any:
         out = self._ffi.new("double[4]")
         with self._lock:
@@ -1036,28 +766,6 @@ class GLBase:
 
     # {================================================================
     # points, lines and polygon offset (§3.3-3.5)
-
-    def glPointSizex(self, size: int) -> None:
-        with self._lock:
-            self._lib.gles_PointSize(self._p, _fixed(size))
-
-    def glLineWidthx(self, width: int) -> None:
-        with self._lock:
-            self._lib.gles_LineWidth(self._p, _fixed(width))
-
-    def glPointParameterx(self, pname: int, param: int) -> None:
-        buf = self._scalar(param, True)
-        with self._lock:
-            self._lib.gles_PointParameter(self._p, pname, buf, 0)
-
-    def glPointParameterxv(self, pname: int, params: Any) -> None:
-        buf = self._params(pname, params, True, "glPointParameterxv")
-        with self._lock:
-            self._lib.gles_PointParameter(self._p, pname, buf, 1)
-
-    def glPolygonOffsetx(self, factor: int, units: int) -> None:
-        with self._lock:
-            self._lib.gles_PolygonOffset(self._p, _fixed(factor), _fixed(units))
 
     # {================================================================
     # OES_draw_texture
@@ -1126,46 +834,14 @@ class GLBase:
         self._set_pointer("weight", self._lib.gles_WeightPointerOES, (size, type, stride), type, pointer,
                           "glWeightPointerOES")
 
-    def glCurrentPaletteMatrixOES(self, index: int) -> None:
-        """OES_matrix_palette: the palette matrix that matrix commands change."""
-        with self._lock:
-            self._lib.gles_CurrentPaletteMatrixOES(self._p, index)
-
-    def glLoadPaletteFromModelViewMatrixOES(self) -> None:
-        """OES_matrix_palette: copy the modelview matrix into the current palette matrix."""
-        with self._lock:
-            self._lib.gles_LoadPaletteFromModelViewMatrixOES(self._p)
-
     def glGenBuffers(self, n: int) -> Any:
-        n = _index(n)
-        if self._names_too_many(n):
-            return None
-        if n < 0:
-            with self._lock:
-                self._lib.gles_GenBuffers(self._p, n, self._ffi.NULL)
-            return None
-        out = self._ffi.new("unsigned int[]", max(n, 1))
-        with self._lock:
-            self._lib.gles_GenBuffers(self._p, n, out)
-        names = [int(out[i]) for i in range(n)]
-        return names[0] if n == 1 else np.array(names, dtype=np.uint32)
+        """Buffer object names: an int for n == 1, else a uint32 array."""
+        return self._gen(self._lib.gles_GenBuffers, n)
 
     def glDeleteBuffers(self, n: Any, buffers: Any = _INFER) -> None:
         """Delete buffer objects: ``glDeleteBuffers(names)`` (n is the
         sequence's length, as PyOpenGL) or the C form ``(n, names)``."""
-        n, buffers = _count_names(n, buffers, "glDeleteBuffers")
-        head = _names(n, buffers, "glDeleteBuffers")
-        buf = self._ffi.new("unsigned int[]", [int(v) for v in head] or [0])
-        with self._lock:
-            self._lib.gles_DeleteBuffers(self._p, n, buf)
-
-    def glBindBuffer(self, target: int, buffer: int) -> None:
-        with self._lock:
-            self._lib.gles_BindBuffer(self._p, target, buffer)
-
-    def glIsBuffer(self, buffer: int) -> bool:
-        with self._lock:
-            return bool(self._lib.gles_IsBuffer(self._p, buffer))
+        self._delete(self._lib.gles_DeleteBuffers, n, buffers, "glDeleteBuffers")
 
     def _buffer_data(self, data: Pointer, what: str) -> tuple[Any, int, Any]:
         """The bytes a Buffer(Sub)Data call copies from: an array, bytes or a
@@ -1259,10 +935,6 @@ class GLBase:
         if st:
             self._status(st, "glDrawElements")
 
-    def glClear(self, mask: int) -> None:
-        with self._lock:
-            self._lib.gles_Clear(self._p, mask)
-
     def glReadPixels(self, x: int, y: int, width: int, height: int, format: int, type: int,
                      array: Any = None) -> Any:
         """Read a rectangle, bottom row first as GL defines.
@@ -1324,102 +996,17 @@ class GLCommon(GLBase):
         vals, _ = self._get(pname)
         return self._result([float(v) for v in vals], np.float32, pname)
 
-    def glLightf(self, light: int, pname: int, param: float) -> None:
-        buf = self._scalar(param, False)
-        with self._lock:
-            self._lib.gles_Light(self._p, light, pname, buf, 0)
-
-    def glLightfv(self, light: int, pname: int, params: Any) -> None:
-        buf = self._params(pname, params, False, "glLightfv")
-        with self._lock:
-            self._lib.gles_Light(self._p, light, pname, buf, 1)
-
-    def glLightModelf(self, pname: int, param: float) -> None:
-        buf = self._scalar(param, False)
-        with self._lock:
-            self._lib.gles_LightModel(self._p, pname, buf, 0)
-
-    def glLightModelfv(self, pname: int, params: Any) -> None:
-        buf = self._params(pname, params, False, "glLightModelfv")
-        with self._lock:
-            self._lib.gles_LightModel(self._p, pname, buf, 1)
-
-    def glMaterialf(self, face: int, pname: int, param: float) -> None:
-        buf = self._scalar(param, False)
-        with self._lock:
-            self._lib.gles_Material(self._p, face, pname, buf, 0)
-
-    def glMaterialfv(self, face: int, pname: int, params: Any) -> None:
-        buf = self._params(pname, params, False, "glMaterialfv")
-        with self._lock:
-            self._lib.gles_Material(self._p, face, pname, buf, 1)
-
     def glGetLightfv(self, light: int, pname: int) -> Any:
         return self._result(self._get_lm(self._lib.gles_GetLight, light, pname), np.float32)
 
     def glGetMaterialfv(self, face: int, pname: int) -> Any:
         return self._result(self._get_lm(self._lib.gles_GetMaterial, face, pname), np.float32)
 
-    def glAlphaFunc(self, func: int, ref: float) -> None:
-        with self._lock:
-            self._lib.gles_AlphaFunc(self._p, func, ref)
-
-    def glSampleCoverage(self, value: float, invert: bool) -> None:
-        with self._lock:
-            self._lib.gles_SampleCoverage(self._p, value, bool(invert))
-
-    def glFogf(self, pname: int, param: float) -> None:
-        buf = self._fog_scalar(pname, param, False)
-        with self._lock:
-            self._lib.gles_Fog(self._p, pname, buf, 0)
-
-    def glFogfv(self, pname: int, params: Any) -> None:
-        if _index(pname) == C.GL_FOG_MODE:
-            buf = self._fog_scalar(pname, _values(params, 1, "glFogfv")[0], False)
-        else:
-            buf = self._params(pname, params, False, "glFogfv")
-        with self._lock:
-            self._lib.gles_Fog(self._p, pname, buf, 1)
-
-    def glTexParameterf(self, target: int, pname: int, param: float) -> None:
-        self._tex_param(target, pname, param, "f", False, "glTexParameterf")
-
-    def glTexParameterfv(self, target: int, pname: int, params: Any) -> None:
-        self._tex_param(target, pname, params, "f", True, "glTexParameterfv")
-
-    def glTexEnvf(self, target: int, pname: int, param: float) -> None:
-        self._tex_env(target, pname, param, "f", False, "glTexEnvf")
-
-    def glTexEnvfv(self, target: int, pname: int, params: Any) -> None:
-        self._tex_env(target, pname, params, "f", True, "glTexEnvfv")
-
     def glGetTexParameterfv(self, target: int, pname: int) -> Any:
         return self._tex_get(self._lib.gles_GetTexParameter, target, pname, "f")
 
     def glGetTexEnvfv(self, target: int, pname: int) -> Any:
         return self._tex_get(self._lib.gles_GetTexEnv, target, pname, "f")
-
-    def glPointSize(self, size: float) -> None:
-        with self._lock:
-            self._lib.gles_PointSize(self._p, size)
-
-    def glLineWidth(self, width: float) -> None:
-        with self._lock:
-            self._lib.gles_LineWidth(self._p, width)
-
-    def glPointParameterf(self, pname: int, param: float) -> None:
-        buf = self._scalar(param, False)
-        with self._lock:
-            self._lib.gles_PointParameter(self._p, pname, buf, 0)
-
-    def glPointParameterfv(self, pname: int, params: Any) -> None:
-        buf = self._params(pname, params, False, "glPointParameterfv")
-        with self._lock:
-            self._lib.gles_PointParameter(self._p, pname, buf, 1)
-
-    def glPolygonOffset(self, factor: float, units: float) -> None:
-        with self._lock:
-            self._lib.gles_PolygonOffset(self._p, factor, units)
 
     def glDrawTexfOES(self, x: float, y: float, z: float, width: float, height: float) -> None:
         self._draw_tex([_real(v) for v in (x, y, z, width, height)])
@@ -1432,67 +1019,6 @@ class GLCommon(GLBase):
         with self._lock:
             self._lib.gles_GetClipPlane(self._p, _index(plane), eq)
         return np.array([eq[i] for i in range(4)], dtype=np.float32)
-
-    def glDepthRangef(self, n: float, f: float) -> None:
-        with self._lock:
-            self._lib.gles_DepthRange(self._p, n, f)
-
-    def glClearColor(self, r: float, g: float, b: float, a: float) -> None:
-        with self._lock:
-            self._lib.gles_ClearColor(self._p, r, g, b, a)
-
-    def glClearDepthf(self, depth: float) -> None:
-        with self._lock:
-            self._lib.gles_ClearDepth(self._p, depth)
-
-    def glLoadMatrixf(self, m: Any) -> None:
-        buf = self._matrix(m, False, "glLoadMatrixf")
-        with self._lock:
-            self._lib.gles_LoadMatrix(self._p, buf)
-
-    def glMultMatrixf(self, m: Any) -> None:
-        buf = self._matrix(m, False, "glMultMatrixf")
-        with self._lock:
-            self._lib.gles_MultMatrix(self._p, buf)
-
-    def glTranslatef(self, x: float, y: float, z: float) -> None:
-        with self._lock:
-            self._lib.gles_Translate(self._p, x, y, z)
-
-    def glScalef(self, x: float, y: float, z: float) -> None:
-        with self._lock:
-            self._lib.gles_Scale(self._p, x, y, z)
-
-    def glRotatef(self, angle: float, x: float, y: float, z: float) -> None:
-        with self._lock:
-            self._lib.gles_Rotate(self._p, angle, x, y, z)
-
-    def glFrustumf(self, left: float, right: float, bottom: float, top: float, near: float,
-                   far: float) -> None:
-        with self._lock:
-            self._lib.gles_Frustum(self._p, left, right, bottom, top, near, far)
-
-    def glOrthof(self, left: float, right: float, bottom: float, top: float, near: float, far: float) -> None:
-        with self._lock:
-            self._lib.gles_Ortho(self._p, left, right, bottom, top, near, far)
-
-    def glClipPlanef(self, plane: int, equation: Any) -> None:
-        eq = _values(equation, 4, "glClipPlanef")[:4]
-        buf = self._ffi.new("double[4]", eq.tolist())
-        with self._lock:
-            self._lib.gles_ClipPlane(self._p, plane, buf)
-
-    def glColor4f(self, r: float, g: float, b: float, a: float) -> None:
-        with self._lock:
-            self._lib.gles_Color4(self._p, r, g, b, a)
-
-    def glNormal3f(self, nx: float, ny: float, nz: float) -> None:
-        with self._lock:
-            self._lib.gles_Normal3(self._p, nx, ny, nz)
-
-    def glMultiTexCoord4f(self, target: int, s: float, t: float, r: float, q: float) -> None:
-        with self._lock:
-            self._lib.gles_MultiTexCoord4(self._p, target, s, t, r, q)
 
 
 def _checked_class(base: type) -> type:
@@ -1516,6 +1042,130 @@ def _checked_class(base: type) -> type:
     return type(f"Checked{base.__name__}", (base,), attrs)
 
 
+# {====================================================================
+# the commands built from the command table
+#
+# Three families are not written out by hand: their methods are generated
+# from their rows of gles.commands, under the rows' parameter names, at
+# import. A plain command's arguments are all scalars the core takes as they
+# are (16.16 arguments become the reals they stand for, GLboolean ones
+# bools); a pname command (glLightxv, glTexEnvi, ...) passes its value or
+# values through _pname_values, by its x/f/i form, to the core function of
+# its family; a vector command (glLoadMatrixx, glClipPlanef, ...) passes a
+# fixed number of values through _vector. Only the commands that need more
+# (pointers, Get*, Gen/Delete, DrawArrays' status) are written above.
+
+def _core_entry(cmd: Command) -> str:
+    """The core function of a plain command: gles_ plus its name without
+    gl and, for the x and f forms, without the suffix (glTranslatex and
+    glTranslatef both call gles_Translate)."""
+    stem = cmd.name[2:]
+    candidates = [stem]
+    if any(p.kind in ("fixed", "float") for p in cmd.params) and stem[-1] in "xf":
+        candidates.append(stem[:-1])
+    for c in candidates:
+        if hasattr(_CORE_LIB, f"gles_{c}"):
+            return f"gles_{c}"
+    raise ImportError(f"{cmd.name}: the core has none of {['gles_' + c for c in candidates]}")
+
+
+def _plain_argument(param: Param) -> str:
+    """The expression that passes one scalar argument on to the core."""
+    if param.kind == "fixed":
+        return f"_fixed({param.name})"
+    if param.kind == "bool":
+        return f"bool({param.name})"
+    if param.kind == "uint" and param.name == "mask":
+        return f"_mask({param.name})"      # -1 is all ones, as in C
+    return param.name                      # _CoreFunctions names what cffi refuses
+
+
+def _plain_source(cmd: Command) -> str:
+    names = [p.name for p in cmd.params]
+    call = f"self._lib.{_core_entry(cmd)}(self._p{''.join(', ' + _plain_argument(p) for p in cmd.params)})"
+    result = f"bool({call})" if cmd.ret == "GLboolean" else call
+    return (f"def {cmd.name}(self{''.join(', ' + n for n in names)}):\n"
+            f"    with self._lock:\n"
+            f"        return {result}\n")
+
+
+def _is_plain(cmd: Command) -> bool:
+    return cmd.ret in ("void", "GLboolean") and all(p.kind in _PLAIN_KINDS for p in cmd.params)
+
+
+_PLAIN_KINDS = frozenset({"enum", "int", "sizei", "uint", "bitfield", "bool", "fixed", "float"})
+
+
+# the pname commands (glLightxv, glTexEnvi, ...): how each family's values
+# read, by the core function they call
+_PNAME_FAMILIES = {"Light": "lighting", "LightModel": "lighting", "Material": "lighting",
+                   "PointParameter": "lighting", "Fog": "fog", "TexParameter": "tex", "TexEnv": "tex"}
+
+
+def _pname_form(cmd: Command) -> tuple[str, str, bool] | None:
+    """(family, form, vector) of a pname command that sets state, else None."""
+    if cmd.name.startswith("glGet") or not any(p.name == "pname" for p in cmd.params):
+        return None
+    stem = cmd.name[2:]
+    vector = stem.endswith("v")
+    stem = stem[:-1] if vector else stem
+    family = _PNAME_FAMILIES.get(stem[:-1])
+    return None if family is None or stem[-1] not in "xfi" else (family, stem[-1], vector)
+
+
+def _pname_source(cmd: Command, family: str, form: str, vector: bool) -> str:
+    *lead, value = [p.name for p in cmd.params]
+    core = "gles_" + cmd.name[2:].rstrip("v")[:-1]
+    return (f"def {cmd.name}(self, {', '.join(lead + [value])}):\n"
+            f"    buf = self._pname_values({family!r}, pname, {value}, {form!r}, {vector}, {cmd.name!r})\n"
+            f"    with self._lock:\n"
+            f"        self._lib.{core}(self._p, {', '.join(lead)}, buf, {int(vector)})\n")
+
+
+# the fixed-length vector commands: how many values each reads, by the core
+# function it calls (§2.10.2, §2.11)
+_VECTOR_COUNTS = {"LoadMatrix": 16, "MultMatrix": 16, "ClipPlane": 4}
+
+
+def _vector_source(cmd: Command, count: int) -> str:
+    *lead, values = cmd.params
+    names = [p.name for p in lead]
+    core = "gles_" + cmd.name[2:-1]
+    return (f"def {cmd.name}(self, {', '.join(names + [values.name])}):\n"
+            f"    buf = self._vector({values.name}, {count}, {values.ctype!r}, {cmd.name!r})\n"
+            f"    with self._lock:\n"
+            f"        self._lib.{core}(self._p, {''.join(n + ', ' for n in names)}buf)\n")
+
+
+def _add_plain_commands() -> None:
+    scope: dict[str, Any] = {"_fixed": _fixed, "_mask": _mask}
+    for cmd in COMMANDS.values():
+        cls = GLCommon if cmd.profile == "common" else GLBase
+        if cmd.name in vars(cls):
+            continue
+        pname = _pname_form(cmd)
+        count = _VECTOR_COUNTS.get(cmd.name[2:-1]) if cmd.params and cmd.params[-1].kind == "values" else None
+        if pname is not None:
+            source = _pname_source(cmd, *pname)
+        elif count is not None:
+            source = _vector_source(cmd, count)
+        elif _is_plain(cmd):
+            source = _plain_source(cmd)
+        else:
+            continue
+        exec(compile(source, f"<gles.gl {cmd.name}>", "exec"), scope)  # noqa: S102 -- from the table
+        fn = scope[cmd.name]
+        fn.__qualname__ = f"{cls.__name__}.{cmd.name}"
+        fn.__doc__ = cmd.prototype() + (f" ({cmd.extension[3:]})" if cmd.extension else "")
+        setattr(cls, cmd.name, fn)
+    missing = [c.name for c in COMMANDS.values()
+               if not hasattr(GLCommon if c.profile == "common" else GLBase, c.name)]
+    if missing:
+        raise ImportError(f"table commands with neither a hand-written nor a generated method: {missing}")
+
+
+_add_plain_commands()
+
 # every GL_* constant is also an attribute of each command set, so that a
 # scene written against ``gl`` (ctx.gl, or a Mesa peer's namespace) finds
 # gl.GL_TEXTURE_2D wherever it runs
@@ -1526,9 +1176,10 @@ for _n in C.__all__:
 # NotImplementedError naming it): none
 MISSING: dict[str, str] = {}
 
-COMMON_LITE_COMMANDS = sorted(n for n in dir(GLBase) if n.startswith("gl"))
-COMMON_COMMANDS = sorted(n for n in dir(GLCommon) if n.startswith("gl"))
-FLOAT_COMMANDS = sorted(set(COMMON_COMMANDS) - set(COMMON_LITE_COMMANDS))
+# the command sets, from the table (the import checks above saw each has its method)
+COMMON_LITE_COMMANDS = sorted(n for n, c in COMMANDS.items() if c.profile == "both")
+COMMON_COMMANDS = sorted(COMMANDS)
+FLOAT_COMMANDS = sorted(n for n, c in COMMANDS.items() if c.profile == "common")
 
 # {====================================================================
 # module-level functions on the current context

@@ -57,6 +57,7 @@ from typing import Any, Callable
 import numpy as np
 
 from . import constants as C
+from .commands import COMMANDS
 from .gl import (
     _PARAM_COUNT,
     _TEX_REAL,
@@ -279,14 +280,13 @@ def _tex_env_count(args: tuple) -> int:
     return 4 if pname == C.GL_TEXTURE_ENV_COLOR else 1
 
 
-# command -> the argument positions that are real scalars
+# command -> the argument positions that are real scalars: from the command
+# table, every float argument of a command without a pname (those with one
+# carry enums for some pnames, below)
 _SCALAR_REALS: dict[str, tuple[int, ...]] = {
-    "glAlphaFunc": (1,), "glClearColor": (0, 1, 2, 3), "glClearDepthf": (0,),
-    "glDepthRangef": (0, 1), "glTranslatef": (0, 1, 2), "glScalef": (0, 1, 2),
-    "glRotatef": (0, 1, 2, 3), "glFrustumf": (0, 1, 2, 3, 4, 5), "glOrthof": (0, 1, 2, 3, 4, 5),
-    "glColor4f": (0, 1, 2, 3), "glNormal3f": (0, 1, 2), "glMultiTexCoord4f": (1, 2, 3, 4),
-    "glPointSize": (0,), "glLineWidth": (0,), "glPolygonOffset": (0, 1), "glSampleCoverage": (0,),
-    "glDrawTexfOES": (0, 1, 2, 3, 4),
+    cmd.name: tuple(i for i, p in enumerate(cmd.params) if p.kind == "float")
+    for cmd in COMMANDS.values()
+    if all(p.name != "pname" for p in cmd.params) and any(p.kind == "float" for p in cmd.params)
 }
 
 _FOG_ENUM = frozenset({C.GL_FOG_MODE})
@@ -307,6 +307,7 @@ _VECTOR_REALS: dict[str, tuple[int, Callable[[tuple], int]]] = {
 }
 
 # glTexParameterf/fv carry only enums, integers and booleans in ES 1.1: nothing to check
+UNCHECKED_FLOAT_COMMANDS = ("glTexParameterf", "glTexParameterfv")
 CHECKED_COMMANDS = sorted(set(_SCALAR_REALS) | set(_VECTOR_REALS))
 
 
