@@ -4,8 +4,9 @@ Run: python tools/gen_commands.py [--check]
 
 Every prototype of GLES/gl.h (OpenGL ES 1.1) and those of GLES/glext.h that
 belong to the extensions gles implements become one row: the name, the C
-return type, each parameter's name, C type and kind, the profile and the
-extension. gles.gl builds its plain commands from the rows, profile.py finds
+return type, each parameter's name (the header's, with the one-letter names
+of Frustum, Ortho, DepthRange, ClearDepth and ClipPlane spelled out), C type
+and kind, the profile and the extension. gles.gl builds its plain commands from the rows, profile.py finds
 the real arguments to check in them, gles.mesa takes its ES 1.1 prototypes
 from them, and tests/test_command_table.py holds every command of gl.h to
 its row. With --check, exit 1 if the checked-in file is not what the
@@ -30,6 +31,15 @@ EXTENSIONS = (
 
 PROTO = re.compile(r"^GL_API\s+(?P<ret>[\w\s\*]+?)\s*GL_APIENTRY\s+(?P<name>gl\w+)\s*\((?P<params>[^)]*)\);")
 EXT_OPEN = re.compile(r"^#ifndef\s+(GL_[A-Z]+_\w+)\s*$")
+
+# the header's one-letter parameter names that Python messages would show
+# ("glFrustumf: f = 1e+05 ..."): spelled out, as the x forms and the spec do
+_CLIP = {"l": "left", "r": "right", "b": "bottom", "t": "top", "n": "near", "f": "far"}
+RENAMES = {
+    **{name: _CLIP for name in ("glFrustumf", "glFrustumx", "glOrthof", "glOrthox", "glDepthRangef",
+                                "glDepthRangex")},
+    "glClearDepthf": {"d": "depth"}, "glClipPlanef": {"p": "plane", "eqn": "equation"},
+}
 
 # the kind of each scalar C type (value kinds the binding converts by)
 SCALAR_KINDS = {
@@ -78,7 +88,8 @@ def parse(path: Path, wanted: tuple[str, ...] | None) -> list[Row]:
                 pm = re.match(r"^(?P<type>.*?)(?P<name>\w+)$", part.strip())
                 assert pm, part
                 ctype = " ".join(pm.group("type").replace("*", " * ").split()).replace(" *", "*")
-                params.append((pm.group("name"), ctype.replace("* *", "**")))
+                pname = RENAMES.get(m.group("name"), {}).get(pm.group("name"), pm.group("name"))
+                params.append((pname, ctype.replace("* *", "**")))
         out.append((m.group("name"), " ".join(m.group("ret").split()), params,
                     None if wanted is None else ext))
     return out
