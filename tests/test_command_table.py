@@ -86,6 +86,19 @@ def test_module_functions_and_sets_come_from_the_table() -> None:
     lite = gles.Context(2, 2, profile="common-lite").gl
     for name in gl.FLOAT_COMMANDS:
         assert not hasattr(lite, name)
+    # the module functions show and take the table's parameter names
+    frustum = [p.name for p in COMMANDS["glFrustumf"].params]
+    assert list(inspect.signature(gl.glFrustumf).parameters) == frustum
+    ctx = gles.Context(2, 2)
+    ctx.make_current()
+    try:
+        gl.glTranslatef(x=1.0, y=2.0, z=3.0)
+        ctx.check_errors = True
+        ctx.gl.glScalef(2.0, y=1.0, z=1.0)
+        assert list(gl.glGetFloatv(gl.GL_MODELVIEW_MATRIX)[3]) == [1.0, 2.0, 3.0, 1.0]
+        assert list(gl.glGetFloatv(gl.GL_MODELVIEW_MATRIX)[0]) == [2.0, 0.0, 0.0, 0.0]
+    finally:
+        gl._set_current(None)
 
 
 def test_the_mesa_peer_takes_its_es11_prototypes_from_the_table() -> None:

@@ -26,6 +26,7 @@ Conventions (those of PyOpenGL's GLES1 bindings):
 
 from __future__ import annotations
 
+import inspect
 import math
 import operator
 import sys
@@ -1026,8 +1027,8 @@ def _checked_class(base: type) -> type:
     like PyOpenGL's error checking (glGetError itself is left alone)."""
 
     def wrap(name: str, fn: Any) -> Any:
-        def command(self: GLBase, *args: Any) -> Any:
-            result = fn(self, *args)
+        def command(self: GLBase, *args: Any, **kwargs: Any) -> Any:
+            result = fn(self, *args, **kwargs)
             err = self._lib.gles_GetError(self._p)
             if err:
                 raise GLError(err, name, args)
@@ -1200,7 +1201,7 @@ def current_gl() -> GLBase:
 
 
 def _forwarder(name: str) -> Any:
-    def command(*args: Any) -> Any:
+    def command(*args: Any, **kwargs: Any) -> Any:
         gl = getattr(_current, "gl", None)
         if gl is None:
             gl = current_gl()
@@ -1210,11 +1211,15 @@ def _forwarder(name: str) -> Any:
             raise AttributeError(
                 f"{name} is a Common-profile command; the current context is Common-Lite"
             ) from None
-        return fn(*args)
+        return fn(*args, **kwargs)
 
     command.__name__ = name
     command.__qualname__ = name
-    command.__doc__ = getattr(GLCommon, name).__doc__
+    method = getattr(GLCommon, name)
+    command.__doc__ = method.__doc__
+    # help() shows the command's own parameters (the method's, without self)
+    sig = inspect.signature(method)
+    command.__signature__ = sig.replace(parameters=list(sig.parameters.values())[1:])  # type: ignore[attr-defined]
     return command
 
 
