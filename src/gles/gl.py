@@ -9,19 +9,25 @@ Two ways to call them:
   functions that act on the calling thread's current context
   (``ctx.make_current()``).
 
-Conventions (those of PyOpenGL's GLES1 bindings):
+Conventions (PyOpenGL's; README.md's "PyOpenGL → gles" table lists every
+difference):
 
-* Names, argument order and constants are the C API's. ``x`` forms take
-  16.16 ints; ``f`` forms (Common profile only) take floats.
+* Names, argument order, parameter names and constants are the C API's
+  (gles.commands, from the Khronos headers). ``x`` forms take 16.16 ints;
+  ``f`` forms (Common profile only) take floats. Every command set also
+  carries the GL_* constants (``ctx.gl.GL_TEXTURE_2D``).
 * Pointer arguments take a numpy array, bytes, a sequence of numbers, or an
   int byte offset while a buffer object is bound. Arrays given to the
   ``*Pointer`` commands are kept alive until the pointer is replaced.
-* ``glGen*(n)`` returns an int for n == 1, else a numpy array; ``glGet*v``
-  returns a scalar for a single value, else a numpy array.
+* ``glGen*(n)`` returns an int for n == 1, else a numpy array;
+  ``glDelete*(names)`` takes the names alone (or the C form ``(n, names)``);
+  ``glBufferData(target, data, usage)`` takes the size from the data;
+  ``glGet*v`` returns a scalar for a single value, a (4, 4) array for a
+  matrix, else a numpy array; ``glGetString`` returns bytes.
 * GL errors are recorded and returned by ``glGetError`` as the spec says.
-  Python-level misuse (wrong dtype, an array shorter than a draw reads, an
-  index out of range) raises TypeError or ValueError before the core reads
-  any memory.
+  Python-level misuse (a dtype that does not fit the type, an array shorter
+  than a draw reads, an int past its C type, a non-number) raises TypeError
+  or ValueError naming the argument before the core reads any memory.
 """
 
 from __future__ import annotations
