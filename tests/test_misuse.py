@@ -183,6 +183,13 @@ def test_infinite_margins_read_as_words() -> None:
         ctx.gl.glTranslatef(math.inf, 0, 0)
     text = str(caught[0].message)
     assert "infx" not in text and "infinitely beyond the limit" in text
+    with pytest.warns(gles.RangeWarning) as caught:
+        ctx.gl.glTranslatef(5e-324, 0, 0)       # 2^-17 / 5e-324 overflows to inf
+    text = str(caught[0].message)
+    assert "infx" not in text and "infinitely below the smallest value kept" in text
+    with pytest.warns(gles.RangeWarning) as caught:
+        ctx.gl.glTranslatef(2.0**-20, 0, 0)
+    assert "8x below the smallest value kept" in str(caught[0].message)
 
 
 @pytest.mark.parametrize("bad", [math.nan, math.inf])

@@ -132,9 +132,12 @@ def _margin(x: float, kind: str) -> float:
     return UNDERFLOW_LIMIT / abs(x)
 
 
-def _times(margin: float) -> str:
-    """'2.5x' for a margin; an infinite or NaN one (an inf or NaN value) has no multiple."""
-    return f"{margin:.3g}x" if math.isfinite(margin) else "infinitely beyond"
+def _times(margin: float, side: str = "") -> str:
+    """'2.5x' (and `side`) for a margin; an infinite one (an inf or NaN
+    value, or a subnormal too small to divide by) has no multiple."""
+    if math.isfinite(margin):
+        return f"{margin:.3g}x" + (f" {side}" if side else "")
+    return f"infinitely {side or 'beyond'}"
 
 
 @dataclass(frozen=True)
@@ -209,7 +212,7 @@ class RangeMonitor:
                    + (f"{math.copysign(FIXED_MAX, x):.5f}" if x == x else "0 (NaN)")))
         else:
             msg = (f"{call}: {arg} = {x:g} is nonzero but rounds to 0 in 16.16 "
-                   f"(|x| <= 2^-17, {_times(margin)} below the smallest value kept)")
+                   f"(|x| <= 2^-17, {_times(margin, 'below')} the smallest value kept)")
         self._record(RangeEvent(kind, f"{call}({arg})", x, margin, msg))
         return _clamped(x, kind) if self.policy == "clamp" else x
 
