@@ -208,3 +208,32 @@ def test_nan_is_reported_like_inf(bad: float) -> None:
     assert rep.counts["overflow"] == 2 and rep.counts["rule"] == 1
     with pytest.raises(gles.RangeError):
         gles.Context(8, 8, numeric="fixed", range_check="raise").gl.glClearColor(bad, 0, 0, 1)
+
+
+@pytest.mark.parametrize("bad", [math.nan, math.inf])
+@pytest.mark.parametrize("where", ["buffer vertices", "normals", "colours"])
+def test_nan_arrays_are_reported_like_inf(bad: float, where: str) -> None:
+    ctx = gles.Context(8, 8, numeric="fixed", range_check="warn")
+    g = ctx.gl
+    verts = np.array([0, 0, 0, 1, 1, 0, 0, 1, 0], np.float32)
+    g.glEnableClientState(C.GL_VERTEX_ARRAY)
+    if where == "buffer vertices":
+        verts[0] = bad
+        g.glBindBuffer(C.GL_ARRAY_BUFFER, g.glGenBuffers(1))
+        g.glBufferData(C.GL_ARRAY_BUFFER, verts, C.GL_STATIC_DRAW)
+        g.glVertexPointer(3, C.GL_FLOAT, 0, 0)
+    else:
+        g.glVertexPointer(3, C.GL_FLOAT, 0, verts)
+        values = np.zeros(12, np.float32)
+        values[1] = bad
+        if where == "normals":
+            g.glEnableClientState(C.GL_NORMAL_ARRAY)
+            g.glNormalPointer(C.GL_FLOAT, 0, values)
+        else:
+            g.glEnableClientState(C.GL_COLOR_ARRAY)
+            g.glColorPointer(4, C.GL_FLOAT, 0, values)
+    with pytest.warns(gles.RangeWarning, match="outside 16.16"):
+        g.glDrawArrays(C.GL_TRIANGLES, 0, 3)
+    counts = ctx.range_report().counts
+    assert counts["overflow"] == 1
+    assert counts["rule"] == (1 if where == "buffer vertices" else 0)
