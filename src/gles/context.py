@@ -33,18 +33,19 @@ COLOR_FORMATS = {"rgba8888": _LIB.GLES_COLOR_RGBA8888, "rgb565": _LIB.GLES_COLOR
 DEFAULT_MEMORY_LIMIT = 256 << 20    # bytes of texture images and buffer data per context
 
 VENDOR = "gles"
-# the extensions of the Common profile; Common-Lite has all but the float commands
-_COMMON_EXTENSIONS = (
-    "GL_OES_byte_coordinates", "GL_OES_fixed_point", "GL_OES_single_precision", "GL_OES_matrix_get",
-    "GL_OES_query_matrix", "GL_OES_read_format", "GL_OES_matrix_palette", "GL_OES_blend_subtract",
-    "GL_OES_blend_func_separate", "GL_OES_blend_equation_separate", "GL_OES_stencil_wrap",
-    "GL_OES_compressed_paletted_texture", "GL_OES_texture_mirrored_repeat", "GL_OES_texture_env_crossbar",
-    "GL_OES_point_size_array", "GL_OES_point_sprite", "GL_OES_draw_texture",
-)
-EXTENSIONS = {
-    "common": list(_COMMON_EXTENSIONS),
-    "common-lite": [e for e in _COMMON_EXTENSIONS if e != "GL_OES_single_precision"],
+# every extension and the profiles that have it: Common-Lite has all but the
+# float commands (a literal, which tools/gen_cabi.py reads for the C ABI)
+EXTENSION_PROFILES = {
+    "GL_OES_byte_coordinates": "both", "GL_OES_fixed_point": "both", "GL_OES_single_precision": "common",
+    "GL_OES_matrix_get": "both", "GL_OES_query_matrix": "both", "GL_OES_read_format": "both",
+    "GL_OES_matrix_palette": "both", "GL_OES_blend_subtract": "both", "GL_OES_blend_func_separate": "both",
+    "GL_OES_blend_equation_separate": "both", "GL_OES_stencil_wrap": "both",
+    "GL_OES_compressed_paletted_texture": "both", "GL_OES_texture_mirrored_repeat": "both",
+    "GL_OES_texture_env_crossbar": "both", "GL_OES_point_size_array": "both", "GL_OES_point_sprite": "both",
+    "GL_OES_draw_texture": "both",
 }
+EXTENSIONS = {profile: [e for e, where in EXTENSION_PROFILES.items() if where in ("both", profile)]
+              for profile in ("common", "common-lite")}
 
 
 class Context:
