@@ -95,8 +95,7 @@ def draw_tris(gl: Any, verts_xy_window: Any, colors: Any = None, mode: int = C.G
     object's context).
     """
     if w is None or h is None:
-        ctx = gl._context
-        w, h = ctx.width, ctx.height
+        w, h = gl.handle.width, gl.handle.height
     set_ortho(gl, w, h)
     draw_arrays(gl, np.asarray(verts_xy_window, dtype=np.float32),
                 None if colors is None else np.asarray(colors, dtype=np.uint8), mode,

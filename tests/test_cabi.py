@@ -184,7 +184,7 @@ def paletted(gl: Any) -> None:
 
 
 def matrix_palette(gl: Any) -> None:
-    assert "GL_OES_matrix_palette" in gl.glGetString(C.GL_EXTENSIONS)
+    assert b"GL_OES_matrix_palette" in gl.glGetString(C.GL_EXTENSIONS).split()
     gl.glClearColorx(0, 0, 0, FX(1))
     gl.glClear(C.GL_COLOR_BUFFER_BIT)
     gl.glMatrixMode(C.GL_MODELVIEW)

@@ -134,7 +134,8 @@ def test_compare_end_to_end() -> None:
 def test_reference_outside_builds_and_unknown_renderer() -> None:
     res = cmp.compare(triangle_scene, 16, 16, builds=("fixed",), peers=("nonsense",), runs=1)
     assert res.renders["fixed"].metrics is not None
-    assert res.renders["nonsense"].skipped.startswith("ValueError")
+    assert res.renders["nonsense"].error.startswith("ValueError")
+    assert res.renders["nonsense"].skipped is None and list(res.failed) == ["nonsense"]
 
 
 def test_scene_without_frame_is_timed_whole() -> None:

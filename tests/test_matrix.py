@@ -153,8 +153,8 @@ def test_load_and_mult_are_column_major(numeric):
     g = make(numeric).gl
     g.glLoadMatrixf(gl_of(a))
     assert_matrix(queried(g, G.GL_MODELVIEW_MATRIX), a, exact=True)
-    # the raw query is column-major: element 12 is row 0, column 3
-    assert g.glGetFloatv(G.GL_MODELVIEW_MATRIX)[12] == a[0, 3]
+    # the query is column-major, 4 to a row (as PyOpenGL): [3, 0] is row 0, column 3
+    assert g.glGetFloatv(G.GL_MODELVIEW_MATRIX)[3, 0] == a[0, 3]
     g.glMultMatrixf(gl_of(b))
     assert_matrix(queried(g, G.GL_MODELVIEW_MATRIX), a @ b, exact=True)
     g.glLoadIdentity()
@@ -260,7 +260,7 @@ def test_queries_return_the_double_form_in_every_build():
             @ np.array([1, 0.1, 0, 0, 0.2, 1, 0, 0, 0, 0.3, 1, 0, 0.01, 0.02, 0.03, 1.0]).reshape(4, 4).T)
     assert_matrix(answers[0][0].astype(np.float64).reshape(4, 4).T, want)
     # GetFixedv: each entry times 2^16, rounded to nearest (§6.1.2)
-    np.testing.assert_array_equal(answers[0][2], np.floor(want.flatten(order="F") * 65536 + 0.5))
+    np.testing.assert_array_equal(answers[0][2].reshape(16), np.floor(want.flatten(order="F") * 65536 + 0.5))
 
 
 # {====================================================================

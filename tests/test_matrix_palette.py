@@ -136,7 +136,7 @@ BONES = [_mat(t=(32.0, 30.0, 0.0)), _mat(_rot_z(50.0), (32.0, 30.0, 0.0))]
 def test_limits_and_initial_state(numeric: str, profile: str) -> None:
     """MAX_PALETTE_MATRICES_OES 32, MAX_VERTEX_UNITS_OES 4, and the extension's initial state."""
     gl = gles.Context(4, 4, numeric=numeric, profile=profile).gl
-    assert "GL_OES_matrix_palette" in gl.glGetString(C.GL_EXTENSIONS).split()
+    assert b"GL_OES_matrix_palette" in gl.glGetString(C.GL_EXTENSIONS).split()
     assert gl.glGetIntegerv(C.GL_MAX_PALETTE_MATRICES_OES) == 32
     assert gl.glGetIntegerv(C.GL_MAX_VERTEX_UNITS_OES) == 4
     assert gl.glGetIntegerv(C.GL_CURRENT_PALETTE_MATRIX_OES) == 0

@@ -185,7 +185,7 @@ def test_clamp_keeps_values_in_range() -> None:
     # the near plane became 2^-16 (not 0, which would be INVALID_VALUE), far the largest 16.16 value
     assert g.glGetError() == 0
     n, f = 2.0**-16, FIXED_MAX
-    p = g.glGetFloatv(C.GL_PROJECTION_MATRIX).astype(np.float64)
+    p = g.glGetFloatv(C.GL_PROJECTION_MATRIX).astype(np.float64).reshape(16)
     assert p[10] == pytest.approx(np.float32(-(f + n) / (f - n)))
     assert p[14] == pytest.approx(np.float32(-2 * f * n / (f - n)), rel=1e-6)
     assert ctx.range_report().counts == {"overflow": 1, "underflow": 1, "rule": 0}

@@ -173,12 +173,12 @@ def test_matrix_get_bits_and_query(numeric: str, profile: str) -> None:
     m = np.diag([3.0, 0.25, -2.0, 1.0])
     m[:3, 3] = (1.75, -2.25, 0.75)
     want = m.T.reshape(-1)
-    bits = np.asarray(gl.glGetIntegerv(C.GL_TEXTURE_MATRIX_FLOAT_AS_INT_BITS_OES), np.int32)
+    bits = np.asarray(gl.glGetIntegerv(C.GL_TEXTURE_MATRIX_FLOAT_AS_INT_BITS_OES), np.int32).reshape(16)
     np.testing.assert_array_equal(bits, want.astype(np.float32).view(np.int32))
     mant, expo, status = gl.glQueryMatrixxOES()
     assert status == 0
     np.testing.assert_array_equal(mant / 65536.0 * np.exp2(expo), want)
-    np.testing.assert_array_equal(np.asarray(gl.glGetFixedv(C.GL_TEXTURE_MATRIX)), np.round(want * 65536))
+    np.testing.assert_array_equal(gl.glGetFixedv(C.GL_TEXTURE_MATRIX).reshape(16), np.round(want * 65536))
     # GetIntegerv rounds matrix elements to nearest (not the colour mapping)
-    np.testing.assert_array_equal(np.asarray(gl.glGetIntegerv(C.GL_TEXTURE_MATRIX)),
+    np.testing.assert_array_equal(gl.glGetIntegerv(C.GL_TEXTURE_MATRIX).reshape(16),
                                   [3, 0, 0, 0, 0, 0, 0, 0, 0, 0, -2, 0, 2, -2, 1, 1])

@@ -209,10 +209,11 @@ def extensions() -> dict[str, str]:
     """The GL_EXTENSIONS strings of src/gles/context.py, per profile."""
     tree = ast.parse((ROOT / "src" / "gles" / "context.py").read_text())
     for node in tree.body:
-        if isinstance(node, ast.Assign) and any(getattr(t, "id", "") == "EXTENSIONS" for t in node.targets):
+        if isinstance(node, ast.Assign) and any(getattr(t, "id", "") == "EXTENSION_PROFILES" for t in node.targets):
             value = ast.literal_eval(node.value)
-            return {k: " ".join(v) for k, v in value.items()}
-    raise SystemExit("src/gles/context.py has no EXTENSIONS table")
+            return {p: " ".join(e for e, where in value.items() if where in ("both", p))
+                    for p in ("common", "common-lite")}
+    raise SystemExit("src/gles/context.py has no EXTENSION_PROFILES table")
 
 
 def rows() -> list[tuple[str, bool, str]]:

@@ -735,7 +735,7 @@ def covgl_commands(profile: str, extensions: frozenset[str] = frozenset()) -> li
 def covgl(t: TestContext) -> None:
     """Every entry point accepts legal arguments without a GL error."""
     gl = t.gl
-    extensions = frozenset((gl.glGetString(gl.GL_EXTENSIONS) or "").split())
+    extensions = frozenset((gl.glGetString(gl.GL_EXTENSIONS) or b"").decode().split())
     t.check_gl_error("glGetString(GL_EXTENSIONS)")
     wanted = set(covgl_commands(t.profile, extensions))
     table = {name for name, _, _ in COVGL_CALLS}

@@ -135,7 +135,7 @@ def _expect_state(t: TestContext, what: str, got: Any, want: Any, section: str) 
 
 
 def _has_extension(t: TestContext, name: str) -> bool:
-    ext = t.gl.glGetString(t.gl.GL_EXTENSIONS) or ""
+    ext = (t.gl.glGetString(t.gl.GL_EXTENSIONS) or b"").decode()
     return name in (ext.decode() if isinstance(ext, bytes) else ext).split()
 
 

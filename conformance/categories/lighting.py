@@ -1002,7 +1002,7 @@ def atn_errors(t: TestContext) -> None:
 
 
 def _has_palette(gl: Any) -> None:
-    ext = (gl.glGetString(gl.GL_EXTENSIONS) or "").split()
+    ext = (gl.glGetString(gl.GL_EXTENSIONS) or b"").decode().split()
     if "GL_OES_matrix_palette" not in ext:
         raise Unsupported("GL_OES_matrix_palette is not in GL_EXTENSIONS (an optional extension)")
 

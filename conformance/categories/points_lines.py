@@ -30,7 +30,7 @@ WHITE = (255, 255, 255, 255)
 
 
 def _need_extension(t: TestContext, name: str) -> None:
-    ext = t.gl.glGetString(t.gl.GL_EXTENSIONS) or ""
+    ext = (t.gl.glGetString(t.gl.GL_EXTENSIONS) or b"").decode()
     if name not in (ext.decode() if isinstance(ext, bytes) else ext).split():
         raise Unsupported(f"{name} is not in GL_EXTENSIONS")
 

@@ -414,7 +414,7 @@ def check_row(
 def env_of(t: TestContext) -> Env:
     """The context as its VERSION string describes it (Mesa is always Common)."""
     v = t.visual
-    lite = "ES-CL" in (t.gl.glGetString(C.GL_VERSION) or "")
+    lite = "ES-CL" in (t.gl.glGetString(C.GL_VERSION) or b"").decode()
     return Env(t.width, t.height, v.bits, v.depth, v.stencil, lite)
 
 
@@ -994,7 +994,7 @@ def misc_problems(gl: Any, common: bool, *, exact_version: str | None) -> list[s
     problems = []
     if gl.glGetError() != 0:
         problems.append("GetError is not NO_ERROR initially (Table 6.24)")
-    version = gl.glGetString(C.GL_VERSION) or ""
+    version = (gl.glGetString(C.GL_VERSION) or b"").decode()
     if exact_version is not None and not version.startswith(exact_version):
         problems.append(f"VERSION is {version!r}, expected {exact_version!r}")
     if not re.match(r"OpenGL ES-C[ML] 1\.1", version):
@@ -1002,7 +1002,7 @@ def misc_problems(gl: Any, common: bool, *, exact_version: str | None) -> list[s
     for s in (C.GL_VENDOR, C.GL_RENDERER):
         if not gl.glGetString(s):
             problems.append(f"GetString(0x{s:04X}) is empty")
-    ext = (gl.glGetString(C.GL_EXTENSIONS) or "").split()
+    ext = (gl.glGetString(C.GL_EXTENSIONS) or b"").decode().split()
     for e in (
         "GL_OES_read_format",
         "GL_OES_compressed_paletted_texture",
@@ -1134,7 +1134,7 @@ def gets(t: TestContext) -> None:
 
 
 def _matrix(gl: Any) -> np.ndarray:
-    return np.asarray(gl.glGetFixedv(C.GL_MODELVIEW_MATRIX), np.float64) / ONE
+    return np.asarray(gl.glGetFixedv(C.GL_MODELVIEW_MATRIX), np.float64).reshape(-1) / ONE
 
 
 @conformance_test("MatrixGetTest", section="6.1.2", uses=_ALL_PATH_STATES)
@@ -1149,7 +1149,7 @@ def matrix_get(t: TestContext) -> None:
     )
     for mode, pname in cases:
         gl.glMatrixMode(getattr(C, mode))
-        ident = np.asarray(gl.glGetIntegerv(getattr(C, pname)), np.int64)
+        ident = np.asarray(gl.glGetIntegerv(getattr(C, pname)), np.int64).reshape(-1)
         want = np.array(I4, np.float32).view(np.int32)
         if not np.array_equal(ident, want):
             t.fail(f"{pname} initially {ident.tolist()}, expected identity bits {want.tolist()}")
@@ -1159,7 +1159,7 @@ def matrix_get(t: TestContext) -> None:
         m = np.diag([3.0, 0.25, -2.0, 1.0])
         m[:3, 3] = (1.5, -2.25, 0.5)
         want = m.T.reshape(-1).astype(np.float32).view(np.int32)
-        got = np.asarray(gl.glGetIntegerv(getattr(C, pname)), np.int64)
+        got = np.asarray(gl.glGetIntegerv(getattr(C, pname)), np.int64).reshape(-1)
         if not np.array_equal(got, want):
             t.fail(
                 f"{pname} after Translate/Scale: {got.tolist()}, expected {want.tolist()} "
@@ -1168,7 +1168,8 @@ def matrix_get(t: TestContext) -> None:
         # a rotation by 90 degrees about z: elements 0, +-1 exactly representable; allow 1 ulp-ish
         gl.glLoadIdentity()
         gl.glRotatex(fx(90), 0, 0, ONE)
-        got = np.asarray(gl.glGetIntegerv(getattr(C, pname)), np.int64).astype(np.int32).view(np.float32)
+        bits = np.asarray(gl.glGetIntegerv(getattr(C, pname)), np.int64).reshape(-1)
+        got = bits.astype(np.int32).view(np.float32)
         want_f = np.array([0, 1, 0, 0, -1, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1], np.float32)
         if np.max(np.abs(got - want_f)) > 2.0**-14:
             t.fail(f"{pname} after Rotate(90, z) reads {got.tolist()} as floats")
@@ -1181,7 +1182,7 @@ def matrix_get(t: TestContext) -> None:
 def matrix_query(t: TestContext) -> None:
     """OES_query_matrix: mantissa and exponent reconstruct the matrix, status 0."""
     gl = t.gl
-    ext = (gl.glGetString(C.GL_EXTENSIONS) or "").split()
+    ext = (gl.glGetString(C.GL_EXTENSIONS) or b"").decode().split()
     if "GL_OES_query_matrix" not in ext or not hasattr(gl, "glQueryMatrixxOES"):
         raise Unsupported("GL_OES_query_matrix is not exported")
     t.clear()  # nothing is drawn: a known picture for the path comparison

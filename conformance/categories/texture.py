@@ -706,7 +706,7 @@ def texture_mirror(t: TestContext) -> None:
     ones, then clamped like CLAMP_TO_EDGE, with NEAREST and LINEAR."""
     from ..harness import Unsupported
 
-    if "GL_OES_texture_mirrored_repeat" not in (t.gl.glGetString(t.gl.GL_EXTENSIONS) or ""):
+    if "GL_OES_texture_mirrored_repeat" not in (t.gl.glGetString(t.gl.GL_EXTENSIONS) or b"").decode():
         raise Unsupported("GL_OES_texture_mirrored_repeat is not in GL_EXTENSIONS")
     rng = np.random.default_rng(7)
     tex = rng.integers(0, 256, size=(4, 8, 4), dtype=np.uint8)
@@ -839,7 +839,7 @@ def tex_combine_crossbar(t: TestContext) -> None:
     """OES_texture_env_crossbar: TEXTURE0 and TEXTURE1 as sources of either unit."""
     from ..harness import Unsupported
 
-    if "GL_OES_texture_env_crossbar" not in (t.gl.glGetString(t.gl.GL_EXTENSIONS) or ""):
+    if "GL_OES_texture_env_crossbar" not in (t.gl.glGetString(t.gl.GL_EXTENSIONS) or b"").decode():
         raise Unsupported("GL_OES_texture_env_crossbar is not in GL_EXTENSIONS")
     _run_combine(t, _combine_configs(True), "TexCombine.crossbar")
 

@@ -16,9 +16,23 @@ from __future__ import annotations
 
 __version__ = "0.1.0"
 
-from . import compare, trace  # noqa: E402  (callable: gles.compare(scene, w, h, ...), gles.trace(...))
+from typing import Any  # noqa: E402
+
 from .context import Context  # noqa: E402
 from .errors import GLError  # noqa: E402
 from .profile import RangeError, RangeWarning  # noqa: E402
 
 __all__ = ["Context", "GLError", "RangeError", "RangeWarning", "compare", "trace", "__version__"]
+
+# the evaluation lab (gles.lab) and the trace and target tools under their
+# public names, imported on first use so that the product does not load them
+# (callable modules: gles.compare(scene, w, h, ...), gles.trace(scene, ...))
+_LAB_MODULES = ("compare", "report", "gallery", "hardcases", "mesa", "trace", "target")
+
+
+def __getattr__(name: str) -> Any:
+    if name in _LAB_MODULES:
+        import importlib
+
+        return importlib.import_module(f"{__name__}.{name}")    # callable: gles.compare(scene, w, h, ...)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -54,13 +54,19 @@ def _cmd_compare(args: argparse.Namespace) -> int:
             if r.heatmap is not None:
                 write_png(out / f"{result.scene}_{r.renderer}_diff.png", r.heatmap)
         print(f"\nimages in {out}")
-    return 0
+    for name, why in result.failed.items():
+        print(f"python -m gles compare: {name} failed: {why}", file=sys.stderr)
+    return 1 if result.failed else 0
 
 
 def _cmd_render(args: argparse.Namespace) -> int:
     scene = cmp.load_scene(args.scene, args.function)
     w, h = args.size
-    r = cmp.render(scene, args.numeric, w, h, runs=1)
+    try:
+        r = cmp.render(scene, args.numeric, w, h, runs=1)
+    except Exception as exc:  # noqa: BLE001 -- the scene's own failure, reported
+        print(f"{args.numeric}: {type(exc).__name__}: {exc}", file=sys.stderr)
+        return 1
     if r.image is None:
         print(f"{args.numeric}: {r.skipped}", file=sys.stderr)
         return 1
@@ -147,7 +153,7 @@ def main(argv: list[str] | None = None) -> int:
     p.set_defaults(run=_cmd_trace)
 
     p = sub.add_parser("libdir", help="print the directory of libGLESv1_CM and libEGL for C programs")
-    p.add_argument("--numeric", default="fixed", choices=["fixed", "float", "double"])
+    p.add_argument("--numeric", default="fixed", choices=list(cmp.BUILDS))
     p.add_argument("--profile", default="common", choices=["common", "common-lite"])
     p.add_argument("--include", action="store_true", help="print the Khronos headers' directory instead")
     p.set_defaults(run=_cmd_libdir)

@@ -9,6 +9,7 @@ from __future__ import annotations
 import importlib
 from typing import Any
 
+# the numeric builds, the one list of them in the package
 NUMERICS = ("fixed", "float", "double")
 _cache: dict[str, Any] = {}
 

@@ -2,20 +2,23 @@
 
 from __future__ import annotations
 
+import os
 import threading
-from pathlib import Path
-from typing import Any
+from typing import Any, BinaryIO
 
 import numpy as np
 
 from . import _binding
 from . import constants as C
-from ._png import write_png
-from .gl import GLBase, GLCommon, _checked_class, _current, _set_current
+from ._png import encode_png, write_png
+from .gl import CoreHandle, GLBase, GLCommon, _checked_class, _current, _set_current
 from .profile import POLICIES, RangedGLCommon, RangeMonitor, RangeReport
 
-PROFILES = {"common": 0, "common-lite": 1}
-_RANGE_MODE = {"off": 0, "warn": 1, "clamp": 1, "raise": 2}   # GLES_RANGE_* of the per-draw rule
+_LIB = _binding.core(_binding.NUMERICS[0]).lib    # the core's numbers (every build exports the same)
+PROFILES = {"common": _LIB.GLES_PROFILE_COMMON, "common-lite": _LIB.GLES_PROFILE_COMMON_LITE}
+# the core's per-draw rule under each policy: "raise" skips the draw that breaks it
+_RANGE_MODE = {"off": _LIB.GLES_RANGE_OFF, "warn": _LIB.GLES_RANGE_CHECK, "clamp": _LIB.GLES_RANGE_CHECK,
+               "raise": _LIB.GLES_RANGE_SKIP}
 
 # the command-set class for (profile, range checks on, check_errors)
 _GL_CLASSES: dict[tuple[str, bool, bool], type] = {}
@@ -25,27 +28,24 @@ for _base, _key in ((GLBase, "common-lite"), (GLCommon, "common")):
         _GL_CLASSES[(_key, _ranged, False)] = _cls
         _GL_CLASSES[(_key, _ranged, True)] = _checked_class(_cls)
 
-COLOR_FORMATS = {"rgba8888": 0, "rgb565": 1}
+COLOR_FORMATS = {"rgba8888": _LIB.GLES_COLOR_RGBA8888, "rgb565": _LIB.GLES_COLOR_RGB565}
 
 DEFAULT_MEMORY_LIMIT = 256 << 20    # bytes of texture images and buffer data per context
 
 VENDOR = "gles"
-EXTENSIONS = {
-    "common": ["GL_OES_byte_coordinates", "GL_OES_fixed_point", "GL_OES_single_precision",
-               "GL_OES_matrix_get", "GL_OES_query_matrix",
-               "GL_OES_read_format", "GL_OES_matrix_palette", "GL_OES_blend_subtract",
-               "GL_OES_blend_func_separate", "GL_OES_blend_equation_separate", "GL_OES_stencil_wrap",
-               "GL_OES_compressed_paletted_texture", "GL_OES_texture_mirrored_repeat",
-               "GL_OES_texture_env_crossbar", "GL_OES_point_size_array", "GL_OES_point_sprite",
-               "GL_OES_draw_texture"],
-    "common-lite": ["GL_OES_byte_coordinates", "GL_OES_fixed_point", "GL_OES_matrix_get",
-                    "GL_OES_query_matrix",
-                    "GL_OES_read_format", "GL_OES_matrix_palette", "GL_OES_blend_subtract",
-                    "GL_OES_blend_func_separate", "GL_OES_blend_equation_separate", "GL_OES_stencil_wrap",
-                    "GL_OES_compressed_paletted_texture", "GL_OES_texture_mirrored_repeat",
-                    "GL_OES_texture_env_crossbar", "GL_OES_point_size_array", "GL_OES_point_sprite",
-                    "GL_OES_draw_texture"],
+# every extension and the profiles that have it: Common-Lite has all but the
+# float commands (a literal, which tools/gen_cabi.py reads for the C ABI)
+EXTENSION_PROFILES = {
+    "GL_OES_byte_coordinates": "both", "GL_OES_fixed_point": "both", "GL_OES_single_precision": "common",
+    "GL_OES_matrix_get": "both", "GL_OES_query_matrix": "both", "GL_OES_read_format": "both",
+    "GL_OES_matrix_palette": "both", "GL_OES_blend_subtract": "both", "GL_OES_blend_func_separate": "both",
+    "GL_OES_blend_equation_separate": "both", "GL_OES_stencil_wrap": "both",
+    "GL_OES_compressed_paletted_texture": "both", "GL_OES_texture_mirrored_repeat": "both",
+    "GL_OES_texture_env_crossbar": "both", "GL_OES_point_size_array": "both", "GL_OES_point_sprite": "both",
+    "GL_OES_draw_texture": "both",
 }
+EXTENSIONS = {profile: [e for e, where in EXTENSION_PROFILES.items() if where in ("both", profile)]
+              for profile in ("common", "common-lite")}
 
 
 class Context:
@@ -109,9 +109,10 @@ class Context:
         self._check_errors = False
         self._range = RangeMonitor(range_check)
         self._lib.gles_range_set(self._ptr, _RANGE_MODE[range_check])
-        self._memory_limit = memory_limit
         self._lib.gles_memory_limit(self._ptr, memory_limit)
-        self.gl: GLBase = self._gl_class()(self)
+        self._handle = CoreHandle(self._lib, self._ffi, self._ptr, self._lock, self._range, width, height,
+                                  self._strings(), memory_limit)
+        self.gl: GLBase = self._gl_class()(self._handle)
 
     def __repr__(self) -> str:
         return (f"<gles.Context {self.width}x{self.height} {self.profile} {self.numeric} "
@@ -128,7 +129,7 @@ class Context:
             return
         was_current = getattr(_current, "gl", None) is self.gl
         keep = self.gl._keep
-        self.gl = cls(self)
+        self.gl = cls(self._handle)
         self.gl._keep = keep          # arrays the core still points at
         if was_current:
             _set_current(self.gl)
@@ -173,14 +174,14 @@ class Context:
     def memory_limit(self) -> int:
         """Bytes the context's texture images and buffer data may hold
         together (settable; a limit below the current use only stops growth)."""
-        return self._memory_limit
+        return self._handle.memory_limit
 
     @memory_limit.setter
     def memory_limit(self, limit: int) -> None:
         limit = self._check_limit(limit)
         with self._lock:
             self._lib.gles_memory_limit(self._ptr, limit)
-        self._memory_limit = limit
+        self._handle.memory_limit = limit
 
     @property
     def memory_used(self) -> int:
@@ -205,18 +206,14 @@ class Context:
         _set_current(self.gl)
         return self
 
-    def _string(self, name: int) -> str | None:
-        if name == C.GL_VENDOR:
-            return VENDOR
-        if name == C.GL_RENDERER:
-            return f"gles software renderer ({self.numeric})"
-        if name == C.GL_VERSION:
-            return "OpenGL ES-CM 1.1" if self.profile == "common" else "OpenGL ES-CL 1.1"
-        if name == C.GL_EXTENSIONS:
-            return " ".join(EXTENSIONS[self.profile])
-        with self._lock:
-            self._lib.gles_set_error(self._ptr, C.GL_INVALID_ENUM)
-        return None
+    def _strings(self) -> dict[int, str]:
+        """The GetString answers (§6.1.5)."""
+        return {
+            C.GL_VENDOR: VENDOR,
+            C.GL_RENDERER: f"gles software renderer ({self.numeric})",
+            C.GL_VERSION: "OpenGL ES-CM 1.1" if self.profile == "common" else "OpenGL ES-CL 1.1",
+            C.GL_EXTENSIONS: " ".join(EXTENSIONS[self.profile]),
+        }
 
     # {================================================================
     # pixels
@@ -266,9 +263,24 @@ class Context:
             raw = out
         return raw[::-1].copy()
 
-    def save(self, path: str | Path) -> None:
-        """Write the colour buffer to a PNG file (top row first)."""
-        write_png(path, self.image())
+    def save(self, file: str | os.PathLike[str] | BinaryIO) -> None:
+        """Write the colour buffer as PNG (top row first) to a path or to a
+        binary file object (anything with ``write(bytes)``)."""
+        if isinstance(file, (str, os.PathLike)):
+            write_png(file, self.image())
+            return
+        write = getattr(file, "write", None)
+        if not callable(write):
+            raise TypeError(f"save() takes a path or a binary file object, not {type(file).__name__}")
+        data = encode_png(self.image())
+        try:
+            write(data)
+        except TypeError:
+            raise TypeError("save(): the file object must be opened in binary mode ('wb')") from None
+
+    def _repr_png_(self) -> bytes:
+        """The colour buffer as PNG bytes: Jupyter shows a context as its image."""
+        return encode_png(self.image())
 
     # {================================================================
     # introspection for tests

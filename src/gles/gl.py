@@ -9,37 +9,44 @@ Two ways to call them:
   functions that act on the calling thread's current context
   (``ctx.make_current()``).
 
-Conventions (those of PyOpenGL's GLES1 bindings):
+Conventions (PyOpenGL's; README.md's "PyOpenGL → gles" table lists every
+difference):
 
-* Names, argument order and constants are the C API's. ``x`` forms take
-  16.16 ints; ``f`` forms (Common profile only) take floats.
+* Names, argument order, parameter names and constants are the C API's
+  (gles.commands, from the Khronos headers). ``x`` forms take 16.16 ints;
+  ``f`` forms (Common profile only) take floats. Every command set also
+  carries the GL_* constants (``ctx.gl.GL_TEXTURE_2D``).
 * Pointer arguments take a numpy array, bytes, a sequence of numbers, or an
   int byte offset while a buffer object is bound. Arrays given to the
   ``*Pointer`` commands are kept alive until the pointer is replaced.
-* ``glGen*(n)`` returns an int for n == 1, else a numpy array; ``glGet*v``
-  returns a scalar for a single value, else a numpy array.
+* ``glGen*(n)`` returns an int for n == 1, else a numpy array;
+  ``glDelete*(names)`` takes the names alone (or the C form ``(n, names)``);
+  ``glBufferData(target, data, usage)`` takes the size from the data;
+  ``glGet*v`` returns a scalar for a single value, a (4, 4) array for a
+  matrix, else a numpy array; ``glGetString`` returns bytes.
 * GL errors are recorded and returned by ``glGetError`` as the spec says.
-  Python-level misuse (wrong dtype, an array shorter than a draw reads, an
-  index out of range) raises TypeError or ValueError before the core reads
-  any memory.
+  Python-level misuse (a dtype that does not fit the type, an array shorter
+  than a draw reads, an int past its C type, a non-number) raises TypeError
+  or ValueError naming the argument before the core reads any memory.
 """
 
 from __future__ import annotations
 
+import inspect
 import math
 import operator
 import sys
 import threading
 from collections.abc import Sequence
-from typing import TYPE_CHECKING, Any, Union
+from typing import Any, Union
 
 import numpy as np
 
+from . import _binding
 from . import constants as C
+from .commands import COMMANDS, Command, Param
 from .constants import *  # noqa: F403  (the GL_* names are part of this module's API)
-
-if TYPE_CHECKING:
-    from .context import Context
+from .errors import GLError
 
 Pointer = Union[np.ndarray, bytes, bytearray, memoryview, Sequence, int, None]
 
@@ -52,17 +59,24 @@ _DTYPES = {
     C.GL_FLOAT: np.dtype(np.float32),
 }
 
-_KIND_INT, _KIND_ENUM, _KIND_BOOL, _KIND_FLOAT, _KIND_NORM = 1, 2, 3, 4, 5
-_STATUS_VALUE, _STATUS_MEMORY, _STATUS_RANGE = -1, -2, 1
+# the core's own numbers, read from it (every build exports the same)
+_CORE_LIB = _binding.core(_binding.NUMERICS[0]).lib
+# what gles_get says a state value is: enums are returned unscaled by
+# GetFixedv, normalized values map to the whole int range
+_KIND_ENUM, _KIND_NORM = _CORE_LIB.GLES_KIND_ENUM, _CORE_LIB.GLES_KIND_NORM
+_STATUS_MEMORY, _STATUS_RANGE = _CORE_LIB.GLES_EMEMORY, _CORE_LIB.GLES_RANGE
+_RANGE_ARRAYS = _CORE_LIB.GLES_RANGE_ARRAYS
 _FIX = 1.0 / 65536.0
 
-# The ES 1.1 commands whose pipeline stage is not built yet. Each exists and
-# raises NotImplementedError naming its stage; README.md lists them.
-_MISSING_BOTH = {
-}
-_MISSING_COMMON = {
-}
 
+
+# the dtype of client pixel data of each pixel type (§3.6.2, Table 3.4)
+_PIXEL_DTYPES = {
+    C.GL_UNSIGNED_BYTE: np.dtype(np.uint8),
+    C.GL_UNSIGNED_SHORT_5_6_5: np.dtype(np.uint16),
+    C.GL_UNSIGNED_SHORT_4_4_4_4: np.dtype(np.uint16),
+    C.GL_UNSIGNED_SHORT_5_5_5_1: np.dtype(np.uint16),
+}
 
 # texture parameters whose values are reals (x forms scale them by 2^16,
 # i forms map them like colours); every other one is an enum or an integer
@@ -123,6 +137,25 @@ def _index(v: Any) -> int:
         raise TypeError(f"{_describe(v, 'argument')} is not an integer") from None
 
 
+def _glint(v: Any, name: str) -> int:
+    """A GLint or GLsizei argument: TypeError for a non-integer, ValueError
+    outside 32 bits, both naming the argument."""
+    i = _index(v)
+    if not _INT_MIN <= i <= _INT_MAX:
+        raise ValueError(f"{_describe(v, name)} does not fit GLint (32-bit signed)")
+    return i
+
+
+def _real(v: Any) -> float:
+    """A real argument; strings and other non-numbers are refused, naming it."""
+    if isinstance(v, (str, bytes, bytearray)):
+        raise TypeError(f"{_describe(v, 'argument')} is not a number")
+    try:
+        return float(v)
+    except (TypeError, ValueError):
+        raise TypeError(f"{_describe(v, 'argument')} is not a number") from None
+
+
 def _finite_or_zero(v: float) -> float:
     return 0.0 if math.isnan(v) else v
 
@@ -155,6 +188,37 @@ def _mask(v: Any) -> int:
     return i & 0xFFFFFFFF
 
 
+class _Infer:
+    """The default of an argument PyOpenGL lets the caller leave out."""
+
+    def __repr__(self) -> str:
+        return "<inferred>"
+
+
+_INFER: Any = _Infer()
+
+# the queries that answer a 4x4 matrix: returned with shape (4, 4)
+_MATRIX_PNAMES = frozenset({
+    C.GL_MODELVIEW_MATRIX, C.GL_PROJECTION_MATRIX, C.GL_TEXTURE_MATRIX,
+    C.GL_MODELVIEW_MATRIX_FLOAT_AS_INT_BITS_OES, C.GL_PROJECTION_MATRIX_FLOAT_AS_INT_BITS_OES,
+    C.GL_TEXTURE_MATRIX_FLOAT_AS_INT_BITS_OES,
+})
+
+
+def _count_names(n: Any, names: Any, what: str) -> tuple[int, Any]:
+    """(n, names) of a Delete* call given as (names) or as (n, names)."""
+    if names is _INFER:
+        names = n
+        if isinstance(names, (int, np.integer)) and not isinstance(names, bool):
+            return 1, [names]
+        try:
+            return len(names), names
+        except TypeError:
+            raise TypeError(f"{what}: names must be a sequence of ints or an int, "
+                            f"not {type(names).__name__}") from None
+    return _index(n), names
+
+
 def _names(n: Any, names: Any, what: str) -> Any:
     """n GLuint object names as a C array (Delete*)."""
     try:
@@ -169,6 +233,23 @@ def _names(n: Any, names: Any, what: str) -> Any:
     if head.size and (head.min() < 0 or head.max() > 2**32 - 1):
         raise ValueError(f"{what}: a name does not fit GLuint (32-bit unsigned)")
     return head
+
+
+def _converted(data: Any, dtype: np.dtype, what: str) -> np.ndarray:
+    """A sequence (or one number) as a contiguous array of dtype: TypeError
+    for what is not numbers, ValueError for a value the dtype cannot hold."""
+    try:
+        src = np.asarray(data)
+    except (TypeError, ValueError) as e:
+        raise TypeError(f"{what}: data must be an array, bytes or a sequence of numbers ({e})") from None
+    if src.dtype.kind not in "biuf":
+        raise TypeError(f"{what}: data must be numbers, not {src.dtype} values")
+    if dtype.kind in "iu":
+        if src.dtype.kind == "f":
+            raise TypeError(f"{what}: {dtype} data expected, got reals")
+        if src.size and (src.min() < np.iinfo(dtype).min or src.max() > np.iinfo(dtype).max):
+            raise ValueError(f"{what}: a value does not fit {dtype}")
+    return np.ascontiguousarray(src.astype(dtype))
 
 
 def _fixed(v: Any) -> float:
@@ -265,15 +346,35 @@ def _core_functions(lib: Any, ffi: Any) -> _CoreFunctions:
     return _CORE_FUNCTIONS[key]
 
 
-class GLBase:
-    """The Common-Lite command set, bound to one context."""
+class CoreHandle:
+    """What a command set needs of its context, and nothing more: the core's
+    functions, the context's pointer and lock, its range monitor, the
+    framebuffer size, the GetString answers and the memory budget (which the
+    context updates)."""
 
-    def __init__(self, context: Context) -> None:
-        self._context = context
-        self._lib = _core_functions(context._lib, context._ffi)
-        self._ffi = context._ffi
-        self._p = context._ptr
-        self._lock: threading.Lock = context._lock
+    __slots__ = ("lib", "ffi", "ptr", "lock", "range", "width", "height", "strings", "memory_limit")
+
+    def __init__(self, lib: Any, ffi: Any, ptr: Any, lock: threading.Lock, range_monitor: Any,
+                 width: int, height: int, strings: dict[int, str], memory_limit: int) -> None:
+        self.lib = _core_functions(lib, ffi)
+        self.ffi = ffi
+        self.ptr = ptr
+        self.lock = lock
+        self.range = range_monitor
+        self.width, self.height = width, height
+        self.strings = strings
+        self.memory_limit = memory_limit
+
+
+class GLBase:
+    """The Common-Lite command set, bound to one context through its handle."""
+
+    def __init__(self, handle: CoreHandle) -> None:
+        self.handle = handle
+        self._lib = handle.lib
+        self._ffi = handle.ffi
+        self._p = handle.ptr
+        self._lock: threading.Lock = handle.lock
         self._keep: dict[Any, Any] = {}
         self._d16 = self._ffi.new("double[16]")
         self._kind = self._ffi.new("int *")
@@ -308,7 +409,7 @@ class GLBase:
         elif isinstance(data, (bytes, bytearray, memoryview)):
             arr = np.frombuffer(data, dtype=np.uint8)
         else:
-            arr = np.ascontiguousarray(np.asarray(data, dtype=want if want is not None else np.uint8))
+            arr = _converted(data, want if want is not None else np.dtype(np.uint8), what)
         return ffi.from_buffer(arr), arr.nbytes, arr
 
     def _status(self, st: int, call: str = "") -> None:
@@ -318,10 +419,11 @@ class GLBase:
             # the draw broke the overflow rule or read a FLOAT array value
             # 16.16 cannot hold (profile.py acts on the policy)
             last = self._ffi.new("double[4]")
-            arrays = self._ffi.new("double[10]")
+            arrays = self._ffi.new("double[]", _RANGE_ARRAYS)
             with self._lock:
                 mask = self._lib.gles_range_last(self._p, last, arrays)
-            self._context._range.draw(call, tuple(last), {i: arrays[i] for i in range(10) if mask >> i & 1})
+            self.handle.range.draw(call, tuple(last),
+                                   {i: arrays[i] for i in range(_RANGE_ARRAYS) if mask >> i & 1})
             return
         if st == _STATUS_MEMORY:
             return      # the core recorded OUT_OF_MEMORY and changed nothing
@@ -333,7 +435,7 @@ class GLBase:
         OUT_OF_MEMORY, nothing generated."""
         if n > _INT_MAX:
             raise ValueError(f"{_describe(n, 'n')} does not fit GLsizei (32-bit signed)")
-        if n * 4 <= self._context.memory_limit:
+        if n * 4 <= self.handle.memory_limit:
             return False
         with self._lock:
             self._lib.gles_set_error(self._p, C.GL_OUT_OF_MEMORY)
@@ -345,12 +447,16 @@ class GLBase:
             return [self._d16[i] for i in range(n)], self._kind[0]
 
     @staticmethod
-    def _result(vals: list, dtype: Any) -> Any:
+    def _result(vals: list, dtype: Any, pname: Any = None) -> Any:
         if not vals:
             return None
         if len(vals) == 1:
             return vals[0]
-        return np.array(vals, dtype=dtype)
+        out = np.array(vals, dtype=dtype)
+        if pname in _MATRIX_PNAMES:
+            # as PyOpenGL: the 16 values in GL's (column-major) order, 4 to a row
+            out = out.reshape(4, 4)
+        return out
 
     # {================================================================
     # errors and queries
@@ -365,7 +471,7 @@ class GLBase:
         vals, kind = self._get(pname)
         # unsigned masks (0xFFFFFFFF) clamp to the GLint range
         out = [_norm_to_int(v) if kind == _KIND_NORM else _to_int(v) for v in vals]
-        return self._result(out, np.int32)
+        return self._result(out, np.int32, pname)
 
     def glGetFixedv(self, pname: int) -> Any:
         """State as 16.16; enums are returned unscaled (§6.1.2)."""
@@ -374,20 +480,26 @@ class GLBase:
             out = [_to_int(v) for v in vals]
         else:
             out = [_to_fixed(v) for v in vals]
-        return self._result(out, np.int32)
+        return self._result(out, np.int32, pname)
 
     def glGetBooleanv(self, pname: int) -> Any:
         """State as booleans: nonzero is True."""
         vals, _ = self._get(pname)
-        return self._result([bool(v != 0) for v in vals], np.bool_)
+        return self._result([bool(v != 0) for v in vals], np.bool_, pname)
 
     def glIsEnabled(self, cap: int) -> bool:
         with self._lock:
             return bool(self._lib.gles_IsEnabled(self._p, _index(cap)))
 
-    def glGetString(self, name: int) -> str | None:
-        """VENDOR, RENDERER, VERSION or EXTENSIONS."""
-        return self._context._string(_index(name))
+    def glGetString(self, name: int) -> bytes | None:
+        """VENDOR, RENDERER, VERSION or EXTENSIONS, as bytes (PyOpenGL's
+        habit: the C function returns a GLubyte string)."""
+        text = self.handle.strings.get(_index(name))
+        if text is None:
+            with self._lock:
+                self._lib.gles_set_error(self._p, C.GL_INVALID_ENUM)
+            return None
+        return text.encode("ascii")
 
     def glGetPointerv(self, pname: int) -> int:
         """The pointer (as an address) or buffer offset last given for an array."""
@@ -430,169 +542,19 @@ class GLBase:
         return mant, expo, status
 
     # {================================================================
-    # simple state
-
-    def glEnable(self, cap: int) -> None:
-        with self._lock:
-            self._lib.gles_Enable(self._p, cap)
-
-    def glDisable(self, cap: int) -> None:
-        with self._lock:
-            self._lib.gles_Disable(self._p, cap)
-
-    def glEnableClientState(self, array: int) -> None:
-        with self._lock:
-            self._lib.gles_EnableClientState(self._p, array)
-
-    def glDisableClientState(self, array: int) -> None:
-        with self._lock:
-            self._lib.gles_DisableClientState(self._p, array)
-
-    def glViewport(self, x: int, y: int, width: int, height: int) -> None:
-        with self._lock:
-            self._lib.gles_Viewport(self._p, x, y, width, height)
-
-    def glScissor(self, x: int, y: int, width: int, height: int) -> None:
-        with self._lock:
-            self._lib.gles_Scissor(self._p, x, y, width, height)
-
-    def glDepthRangex(self, n: int, f: int) -> None:
-        with self._lock:
-            self._lib.gles_DepthRange(self._p, _fixed(n), _fixed(f))
-
-    def glClearColorx(self, r: int, g: int, b: int, a: int) -> None:
-        with self._lock:
-            self._lib.gles_ClearColor(self._p, _fixed(r), _fixed(g), _fixed(b), _fixed(a))
-
-    def glClearDepthx(self, depth: int) -> None:
-        with self._lock:
-            self._lib.gles_ClearDepth(self._p, _fixed(depth))
-
-    def glClearStencil(self, s: int) -> None:
-        with self._lock:
-            self._lib.gles_ClearStencil(self._p, s)
-
-    def glColorMask(self, r: bool, g: bool, b: bool, a: bool) -> None:
-        with self._lock:
-            self._lib.gles_ColorMask(self._p, bool(r), bool(g), bool(b), bool(a))
-
-    def glDepthMask(self, flag: bool) -> None:
-        with self._lock:
-            self._lib.gles_DepthMask(self._p, bool(flag))
-
-    def glDepthFunc(self, func: int) -> None:
-        with self._lock:
-            self._lib.gles_DepthFunc(self._p, func)
-
-    def glCullFace(self, mode: int) -> None:
-        with self._lock:
-            self._lib.gles_CullFace(self._p, mode)
-
-    def glFrontFace(self, mode: int) -> None:
-        with self._lock:
-            self._lib.gles_FrontFace(self._p, mode)
-
-    def glShadeModel(self, mode: int) -> None:
-        with self._lock:
-            self._lib.gles_ShadeModel(self._p, mode)
-
-    def glHint(self, target: int, mode: int) -> None:
-        with self._lock:
-            self._lib.gles_Hint(self._p, target, mode)
-
-    def glPixelStorei(self, pname: int, param: int) -> None:
-        with self._lock:
-            self._lib.gles_PixelStorei(self._p, pname, param)
-
-    def glActiveTexture(self, texture: int) -> None:
-        with self._lock:
-            self._lib.gles_ActiveTexture(self._p, texture)
-
-    def glClientActiveTexture(self, texture: int) -> None:
-        with self._lock:
-            self._lib.gles_ClientActiveTexture(self._p, texture)
-
-    def glFinish(self) -> None:
-        with self._lock:
-            self._lib.gles_Finish(self._p)
-
-    def glFlush(self) -> None:
-        with self._lock:
-            self._lib.gles_Flush(self._p)
-
-    # {================================================================
     # matrices
 
-    def glMatrixMode(self, mode: int) -> None:
-        with self._lock:
-            self._lib.gles_MatrixMode(self._p, mode)
-
-    def glLoadIdentity(self) -> None:
-        with self._lock:
-            self._lib.gles_LoadIdentity(self._p)
-
-    def glPushMatrix(self) -> None:
-        with self._lock:
-            self._lib.gles_PushMatrix(self._p)
-
-    def glPopMatrix(self) -> None:
-        with self._lock:
-            self._lib.gles_PopMatrix(self._p)
-
-    def _matrix(self, m: Any, fixed: bool, what: str) -> Any:
-        if fixed:
-            arr = _values(m, 16, what, np.int64)[:16] * _FIX
+    def _vector(self, values: Any, count: int, ctype: str, what: str) -> Any:
+        """The core's double[count] for a fixed-length vector argument:
+        GLfixed values as the reals they stand for, GLfloat ones as they are."""
+        if "GLfixed" in ctype:
+            vals = _values(values, count, what, np.int64)[:count] * _FIX
         else:
-            arr = _values(m, 16, what)[:16]
-        buf = self._ffi.new("double[16]", arr.tolist())
-        return buf
-
-    def glLoadMatrixx(self, m: Any) -> None:
-        buf = self._matrix(m, True, "glLoadMatrixx")
-        with self._lock:
-            self._lib.gles_LoadMatrix(self._p, buf)
-
-    def glMultMatrixx(self, m: Any) -> None:
-        buf = self._matrix(m, True, "glMultMatrixx")
-        with self._lock:
-            self._lib.gles_MultMatrix(self._p, buf)
-
-    def glTranslatex(self, x: int, y: int, z: int) -> None:
-        with self._lock:
-            self._lib.gles_Translate(self._p, _fixed(x), _fixed(y), _fixed(z))
-
-    def glScalex(self, x: int, y: int, z: int) -> None:
-        with self._lock:
-            self._lib.gles_Scale(self._p, _fixed(x), _fixed(y), _fixed(z))
-
-    def glRotatex(self, angle: int, x: int, y: int, z: int) -> None:
-        with self._lock:
-            self._lib.gles_Rotate(self._p, _fixed(angle), _fixed(x), _fixed(y), _fixed(z))
-
-    def glFrustumx(self, left: int, right: int, bottom: int, top: int, near: int, far: int) -> None:
-        with self._lock:
-            self._lib.gles_Frustum(
-                self._p, _fixed(left), _fixed(right), _fixed(bottom), _fixed(top), _fixed(near), _fixed(far)
-            )
-
-    def glOrthox(self, left: int, right: int, bottom: int, top: int, near: int, far: int) -> None:
-        with self._lock:
-            self._lib.gles_Ortho(
-                self._p, _fixed(left), _fixed(right), _fixed(bottom), _fixed(top), _fixed(near), _fixed(far)
-            )
-
-    def glClipPlanex(self, plane: int, equation: Any) -> None:
-        eq = _values(equation, 4, "glClipPlanex", np.int64)[:4] * _FIX
-        buf = self._ffi.new("double[4]", eq.tolist())
-        with self._lock:
-            self._lib.gles_ClipPlane(self._p, plane, buf)
+            vals = _values(values, count, what)[:count]
+        return self._ffi.new(f"double[{count}]", vals.tolist())
 
     # {================================================================
     # current values
-
-    def glColor4x(self, r: int, g: int, b: int, a: int) -> None:
-        with self._lock:
-            self._lib.gles_Color4(self._p, _fixed(r), _fixed(g), _fixed(b), _fixed(a))
 
     def glColor4ub(self, r: int, g: int, b: int, a: int) -> None:
         # Table 2.7: c / 255
@@ -603,19 +565,11 @@ class GLBase:
         with self._lock:
             self._lib.gles_Color4(self._p, vals[0] / 255.0, vals[1] / 255.0, vals[2] / 255.0, vals[3] / 255.0)
 
-    def glNormal3x(self, nx: int, ny: int, nz: int) -> None:
-        with self._lock:
-            self._lib.gles_Normal3(self._p, _fixed(nx), _fixed(ny), _fixed(nz))
-
-    def glMultiTexCoord4x(self, target: int, s: int, t: int, r: int, q: int) -> None:
-        with self._lock:
-            self._lib.gles_MultiTexCoord4(self._p, target, _fixed(s), _fixed(t), _fixed(r), _fixed(q))
-
     # {================================================================
     # lighting (§2.12)
 
     def _params(self, pname: int, params: Any, fixed: bool, what: str) -> Any:
-        n = _PARAM_COUNT.get(int(pname), 1)
+        n = _PARAM_COUNT.get(_index(pname), 1)
         vals = _values(params, n, what, np.int64 if fixed else np.float64)[:n]
         out = [0.0, 0.0, 0.0, 0.0]
         for i in range(n):
@@ -623,37 +577,20 @@ class GLBase:
         return self._ffi.new("double[4]", out)
 
     def _scalar(self, param: Any, fixed: bool) -> Any:
-        return self._ffi.new("double[4]", [_fixed(param) if fixed else float(param), 0.0, 0.0, 0.0])
+        return self._ffi.new("double[4]", [_fixed(param) if fixed else _real(param), 0.0, 0.0, 0.0])
 
-    def glLightx(self, light: int, pname: int, param: int) -> None:
-        buf = self._scalar(param, True)
-        with self._lock:
-            self._lib.gles_Light(self._p, light, pname, buf, 0)
-
-    def glLightxv(self, light: int, pname: int, params: Any) -> None:
-        buf = self._params(pname, params, True, "glLightxv")
-        with self._lock:
-            self._lib.gles_Light(self._p, light, pname, buf, 1)
-
-    def glLightModelx(self, pname: int, param: int) -> None:
-        buf = self._scalar(param, True)
-        with self._lock:
-            self._lib.gles_LightModel(self._p, pname, buf, 0)
-
-    def glLightModelxv(self, pname: int, params: Any) -> None:
-        buf = self._params(pname, params, True, "glLightModelxv")
-        with self._lock:
-            self._lib.gles_LightModel(self._p, pname, buf, 1)
-
-    def glMaterialx(self, face: int, pname: int, param: int) -> None:
-        buf = self._scalar(param, True)
-        with self._lock:
-            self._lib.gles_Material(self._p, face, pname, buf, 0)
-
-    def glMaterialxv(self, face: int, pname: int, params: Any) -> None:
-        buf = self._params(pname, params, True, "glMaterialxv")
-        with self._lock:
-            self._lib.gles_Material(self._p, face, pname, buf, 1)
+    def _pname_values(self, family: str, pname: Any, value: Any, form: str, vector: bool, what: str) -> Any:
+        """The core's double[4] for the value(s) of a pname command: `form` is
+        its suffix (x: 16.16, f: reals, i: integers), `family` says how its
+        pnames read them ("tex": _tex_values; "fog": FOG_MODE is an enum;
+        "lighting": a count per pname, reals)."""
+        if family == "tex":
+            return self._tex_values(pname, value, form, vector, what)
+        fixed = form == "x"
+        if family == "fog" and _index(pname) == C.GL_FOG_MODE:
+            mode = _values(value, 1, what, np.int64 if fixed else np.float64)[0] if vector else value
+            return self._fog_scalar(pname, mode, fixed)
+        return self._params(pname, value, fixed, what) if vector else self._scalar(value, fixed)
 
     def _get_lm(self, fn: Any, target: int, pname: int) -> list[float]:
         out = self._ffi.new("double[4]")
@@ -674,134 +611,98 @@ class GLBase:
     # {================================================================
     # per-fragment operations (§4.1) and fog (§3.8)
 
-    def glAlphaFuncx(self, func: int, ref: int) -> None:
-        with self._lock:
-            self._lib.gles_AlphaFunc(self._p, func, _fixed(ref))
-
-    def glStencilFunc(self, func: int, ref: int, mask: int) -> None:
-        with self._lock:
-            self._lib.gles_StencilFunc(self._p, func, ref, _mask(mask))
-
-    def glStencilOp(self, fail: int, zfail: int, zpass: int) -> None:
-        with self._lock:
-            self._lib.gles_StencilOp(self._p, fail, zfail, zpass)
-
-    def glStencilMask(self, mask: int) -> None:
-        with self._lock:
-            self._lib.gles_StencilMask(self._p, _mask(mask))
-
-    def glBlendFunc(self, sfactor: int, dfactor: int) -> None:
-        with self._lock:
-            self._lib.gles_BlendFunc(self._p, sfactor, dfactor)
-
-    def glBlendFuncSeparateOES(self, src_rgb: int, dst_rgb: int, src_alpha: int, dst_alpha: int) -> None:
-        """OES_blend_func_separate."""
-        with self._lock:
-            self._lib.gles_BlendFuncSeparateOES(self._p, src_rgb, dst_rgb, src_alpha, dst_alpha)
-
-    def glBlendEquationOES(self, mode: int) -> None:
-        """OES_blend_subtract."""
-        with self._lock:
-            self._lib.gles_BlendEquationOES(self._p, mode)
-
-    def glBlendEquationSeparateOES(self, mode_rgb: int, mode_alpha: int) -> None:
-        """OES_blend_equation_separate."""
-        with self._lock:
-            self._lib.gles_BlendEquationSeparateOES(self._p, mode_rgb, mode_alpha)
-
-    def glLogicOp(self, opcode: int) -> None:
-        with self._lock:
-            self._lib.gles_LogicOp(self._p, opcode)
-
-    def glSampleCoveragex(self, value: int, invert: bool) -> None:
-        with self._lock:
-            self._lib.gles_SampleCoverage(self._p, _fixed(value), bool(invert))
-
     def _fog_scalar(self, pname: int, param: Any, fixed: bool) -> Any:
         # FOG_MODE takes an enum, never scaled
-        if int(pname) == C.GL_FOG_MODE:
-            v = float(_index(param)) if fixed else float(param)
+        if _index(pname) == C.GL_FOG_MODE:
+            v = float(_index(param)) if fixed else _real(param)
         else:
-            v = _fixed(param) if fixed else float(param)
+            v = _fixed(param) if fixed else _real(param)
         return self._ffi.new("double[4]", [v, 0.0, 0.0, 0.0])
-
-    def glFogx(self, pname: int, param: int) -> None:
-        buf = self._fog_scalar(pname, param, True)
-        with self._lock:
-            self._lib.gles_Fog(self._p, pname, buf, 0)
-
-    def glFogxv(self, pname: int, params: Any) -> None:
-        if int(pname) == C.GL_FOG_MODE:
-            buf = self._fog_scalar(pname, _values(params, 1, "glFogxv", np.int64)[0], True)
-        else:
-            buf = self._params(pname, params, True, "glFogxv")
-        with self._lock:
-            self._lib.gles_Fog(self._p, pname, buf, 1)
 
     # {================================================================
     # textures (§3.7)
 
-    def glGenTextures(self, n: int) -> Any:
+    def _gen(self, core: Any, n: Any) -> Any:
+        """glGen*: an int for n == 1, else a uint32 array (None on a GL error)."""
         n = _index(n)
         if self._names_too_many(n):
             return None
         out = self._ffi.new("unsigned int[]", max(n, 1))
         with self._lock:
-            self._lib.gles_GenTextures(self._p, n, out if n >= 0 else self._ffi.NULL)
+            core(self._p, n, out if n >= 0 else self._ffi.NULL)
         if n < 0:
             return None
         names = [int(out[i]) for i in range(n)]
         return names[0] if n == 1 else np.array(names, dtype=np.uint32)
 
-    def glDeleteTextures(self, n: int, textures: Any) -> None:
-        n = _index(n)
-        head = _names(n, textures, "glDeleteTextures")
+    def _delete(self, core: Any, n: Any, names: Any, what: str) -> None:
+        """glDelete*: (names) with n their count, as PyOpenGL, or (n, names)."""
+        n, names = _count_names(n, names, what)
+        head = _names(n, names, what)
         buf = self._ffi.new("unsigned int[]", [int(v) for v in head] or [0])
         with self._lock:
-            self._lib.gles_DeleteTextures(self._p, n, buf)
+            core(self._p, n, buf)
 
-    def glBindTexture(self, target: int, texture: int) -> None:
-        with self._lock:
-            self._lib.gles_BindTexture(self._p, target, texture)
+    def glGenTextures(self, n: int) -> Any:
+        """Texture object names: an int for n == 1, else a uint32 array."""
+        return self._gen(self._lib.gles_GenTextures, n)
 
-    def glIsTexture(self, texture: int) -> bool:
-        with self._lock:
-            return bool(self._lib.gles_IsTexture(self._p, texture))
+    def glDeleteTextures(self, n: Any, textures: Any = _INFER) -> None:
+        """Delete texture objects: ``glDeleteTextures(names)`` (n is the
+        sequence's length, as PyOpenGL) or the C form ``(n, names)``."""
+        self._delete(self._lib.gles_DeleteTextures, n, textures, "glDeleteTextures")
 
-    def _pixels(self, data: Pointer, what: str) -> tuple[Any, int, Any]:
+    def _pixels(self, data: Pointer, what: str, gltype: Any = None) -> tuple[Any, int, Any]:
+        """Client image data: an array whose dtype fits `gltype` (uint8 for
+        UNSIGNED_BYTE; uint16 for the packed 16-bit types, or uint8 as their
+        raw bytes), bytes, or a sequence of values converted to that dtype.
+        Compressed data (no `gltype`) is raw bytes."""
         if data is None:
             return self._ffi.NULL, -1, None
         if isinstance(data, (int, np.integer)) and not isinstance(data, bool):
             raise TypeError(f"{what}: pixel data must be an array or bytes (ES 1.1 has no pixel buffers)")
-        return self._pointer(data, None, 0, what)
+        want = _PIXEL_DTYPES.get(int(gltype)) if isinstance(gltype, (int, np.integer)) else None
+        if want is None:
+            # compressed data, or a type the core refuses with INVALID_ENUM
+            return self._pointer(data, None, 0, what)
+        if isinstance(data, np.ndarray):
+            if data.dtype != want and data.dtype != np.uint8:
+                raise TypeError(f"{what}: pixels dtype {data.dtype} does not fit {C.NAMES.get(int(gltype))} "
+                                f"({want}" + (")" if want == np.uint8 else ", or uint8 raw bytes)"))
+            return self._pointer(data, None, 0, what)
+        if isinstance(data, (bytes, bytearray, memoryview)):
+            return self._pointer(data, None, 0, what)
+        try:
+            arr = np.asarray(data)
+        except (TypeError, ValueError) as e:
+            raise TypeError(f"{what}: pixels must be an array, bytes or numbers ({e})") from None
+        if arr.dtype.kind not in "biu":
+            raise TypeError(f"{what}: pixels hold {arr.dtype} values; {C.NAMES.get(int(gltype))} takes "
+                            f"integers ({want})")
+        if arr.size and (arr.min() < 0 or arr.max() > np.iinfo(want).max):
+            raise ValueError(f"{what}: a pixel value does not fit {want}")
+        return self._pointer(arr.astype(want), None, 0, what)
+
+    def _image(self, core: Any, args: tuple, type: Any, pixels: Pointer, what: str) -> None:
+        """TexImage2D/TexSubImage2D: `args` up to the type, then the pixels
+        (checked against the type) with their length."""
+        ptr, nbytes, keep = self._pixels(pixels, what, type)
+        with self._lock:
+            st = core(self._p, *args, type, ptr, nbytes)
+        del keep
+        self._status(st)
 
     def glTexImage2D(self, target: int, level: int, internalformat: int, width: int, height: int, border: int,
                      format: int, type: int, pixels: Pointer) -> None:
-        ptr, nbytes, keep = self._pixels(pixels, "glTexImage2D")
-        with self._lock:
-            st = self._lib.gles_TexImage2D(self._p, target, level, internalformat, width, height, border,
-                                           format, type, ptr, nbytes)
-        del keep
-        self._status(st)
+        """Specify a texture image (§3.7.1); pixels None leaves it undefined."""
+        self._image(self._lib.gles_TexImage2D, (target, level, internalformat, width, height, border, format),
+                    type, pixels, "glTexImage2D")
 
     def glTexSubImage2D(self, target: int, level: int, xoffset: int, yoffset: int, width: int, height: int,
                         format: int, type: int, pixels: Pointer) -> None:
-        ptr, nbytes, keep = self._pixels(pixels, "glTexSubImage2D")
-        with self._lock:
-            st = self._lib.gles_TexSubImage2D(self._p, target, level, xoffset, yoffset, width, height,
-                                              format, type, ptr, nbytes)
-        del keep
-        self._status(st)
-
-    def glCopyTexImage2D(self, target: int, level: int, internalformat: int, x: int, y: int, width: int,
-                         height: int, border: int) -> None:
-        with self._lock:
-            self._lib.gles_CopyTexImage2D(self._p, target, level, internalformat, x, y, width, height, border)
-
-    def glCopyTexSubImage2D(self, target: int, level: int, xoffset: int, yoffset: int, x: int, y: int,
-                            width: int, height: int) -> None:
-        with self._lock:
-            self._lib.gles_CopyTexSubImage2D(self._p, target, level, xoffset, yoffset, x, y, width, height)
+        """Replace a rectangle of a texture image (§3.7.2)."""
+        self._image(self._lib.gles_TexSubImage2D, (target, level, xoffset, yoffset, width, height, format),
+                    type, pixels, "glTexSubImage2D")
 
     def glCompressedTexImage2D(self, target: int, level: int, internalformat: int, width: int, height: int,
                                border: int, imageSize: int, data: Pointer) -> None:
@@ -827,66 +728,32 @@ class GLBase:
     def _tex_values(self, pname: int, params: Any, form: str, vector: bool, what: str) -> Any:
         """Doubles for a texture parameter: x forms scale reals, i forms
         map reals like colours, enums and integers pass unchanged."""
-        n = _TEX_COUNT.get(int(pname), 1) if vector else 1
+        n = _TEX_COUNT.get(_index(pname), 1) if vector else 1
         raw = _values(params if vector else [params], n, what,
                       np.float64 if form == "f" else np.int64)[:n]
-        real = int(pname) in _TEX_REAL
+        real = _index(pname) in _TEX_REAL
         out = [0.0, 0.0, 0.0, 0.0]
         for i in range(n):
             v = raw[i]
             if form == "x" and real:
                 out[i] = int(v) * _FIX
-            elif form == "i" and real and int(pname) == C.GL_TEXTURE_ENV_COLOR:
+            elif form == "i" and real and _index(pname) == C.GL_TEXTURE_ENV_COLOR:
                 out[i] = (2.0 * int(v) + 1.0) / (2.0**32 - 1.0)
             else:
                 out[i] = float(v)
         return self._ffi.new("double[4]", out)
-
-    def _tex_param(self, target: int, pname: int, params: Any, form: str, vector: bool, what: str) -> None:
-        buf = self._tex_values(pname, params, form, vector, what)
-        with self._lock:
-            self._lib.gles_TexParameter(self._p, target, pname, buf, int(vector))
-
-    def glTexParameteri(self, target: int, pname: int, param: int) -> None:
-        self._tex_param(target, pname, param, "i", False, "glTexParameteri")
-
-    def glTexParameteriv(self, target: int, pname: int, params: Any) -> None:
-        self._tex_param(target, pname, params, "i", True, "glTexParameteriv")
-
-    def glTexParameterx(self, target: int, pname: int, param: int) -> None:
-        self._tex_param(target, pname, param, "x", False, "glTexParameterx")
-
-    def glTexParameterxv(self, target: int, pname: int, params: Any) -> None:
-        self._tex_param(target, pname, params, "x", True, "glTexParameterxv")
-
-    def _tex_env(self, target: int, pname: int, params: Any, form: str, vector: bool, what: str) -> None:
-        buf = self._tex_values(pname, params, form, vector, what)
-        with self._lock:
-            self._lib.gles_TexEnv(self._p, target, pname, buf, int(vector))
-
-    def glTexEnvi(self, target: int, pname: int, param: int) -> None:
-        self._tex_env(target, pname, param, "i", False, "glTexEnvi")
-
-    def glTexEnviv(self, target: int, pname: int, params: Any) -> None:
-        self._tex_env(target, pname, params, "i", True, "glTexEnviv")
-
-    def glTexEnvx(self, target: int, pname: int, param: int) -> None:
-        self._tex_env(target, pname, param, "x", False, "glTexEnvx")
-
-    def glTexEnvxv(self, target: int, pname: int, params: Any) -> None:
-        self._tex_env(target, pname, params, "x", True, "glTexEnvxv")
 
     def _tex_get(self, fn: Any, target: int, pname: int, form: str) -> Any:
         out = self._ffi.new("double[4]")
         with self._lock:
             n = fn(self._p, target, pname, out)
         vals = [out[i] for i in range(n)]
-        real = int(pname) in _TEX_REAL
+        real = _index(pname) in _TEX_REAL
         if form == "f":
             return self._result([float(v) for v in vals], np.float32)
         if form == "x":
             conv = [_to_fixed(v) if real else _to_int(v) for v in vals]
-        elif int(pname) == C.GL_TEXTURE_ENV_COLOR:
+        elif _index(pname) == C.GL_TEXTURE_ENV_COLOR:
             conv = [_norm_to_int(v) for v in vals]
         else:
             conv = [_to_int(v) for v in vals]
@@ -906,28 +773,6 @@ class GLBase:
 
     # {================================================================
     # points, lines and polygon offset (§3.3-3.5)
-
-    def glPointSizex(self, size: int) -> None:
-        with self._lock:
-            self._lib.gles_PointSize(self._p, _fixed(size))
-
-    def glLineWidthx(self, width: int) -> None:
-        with self._lock:
-            self._lib.gles_LineWidth(self._p, _fixed(width))
-
-    def glPointParameterx(self, pname: int, param: int) -> None:
-        buf = self._scalar(param, True)
-        with self._lock:
-            self._lib.gles_PointParameter(self._p, pname, buf, 0)
-
-    def glPointParameterxv(self, pname: int, params: Any) -> None:
-        buf = self._params(pname, params, True, "glPointParameterxv")
-        with self._lock:
-            self._lib.gles_PointParameter(self._p, pname, buf, 1)
-
-    def glPolygonOffsetx(self, factor: int, units: int) -> None:
-        with self._lock:
-            self._lib.gles_PolygonOffset(self._p, _fixed(factor), _fixed(units))
 
     # {================================================================
     # OES_draw_texture
@@ -996,44 +841,14 @@ class GLBase:
         self._set_pointer("weight", self._lib.gles_WeightPointerOES, (size, type, stride), type, pointer,
                           "glWeightPointerOES")
 
-    def glCurrentPaletteMatrixOES(self, index: int) -> None:
-        """OES_matrix_palette: the palette matrix that matrix commands change."""
-        with self._lock:
-            self._lib.gles_CurrentPaletteMatrixOES(self._p, index)
-
-    def glLoadPaletteFromModelViewMatrixOES(self) -> None:
-        """OES_matrix_palette: copy the modelview matrix into the current palette matrix."""
-        with self._lock:
-            self._lib.gles_LoadPaletteFromModelViewMatrixOES(self._p)
-
     def glGenBuffers(self, n: int) -> Any:
-        n = _index(n)
-        if self._names_too_many(n):
-            return None
-        if n < 0:
-            with self._lock:
-                self._lib.gles_GenBuffers(self._p, n, self._ffi.NULL)
-            return None
-        out = self._ffi.new("unsigned int[]", max(n, 1))
-        with self._lock:
-            self._lib.gles_GenBuffers(self._p, n, out)
-        names = [int(out[i]) for i in range(n)]
-        return names[0] if n == 1 else np.array(names, dtype=np.uint32)
+        """Buffer object names: an int for n == 1, else a uint32 array."""
+        return self._gen(self._lib.gles_GenBuffers, n)
 
-    def glDeleteBuffers(self, n: int, buffers: Any) -> None:
-        n = _index(n)
-        head = _names(n, buffers, "glDeleteBuffers")
-        buf = self._ffi.new("unsigned int[]", [int(v) for v in head] or [0])
-        with self._lock:
-            self._lib.gles_DeleteBuffers(self._p, n, buf)
-
-    def glBindBuffer(self, target: int, buffer: int) -> None:
-        with self._lock:
-            self._lib.gles_BindBuffer(self._p, target, buffer)
-
-    def glIsBuffer(self, buffer: int) -> bool:
-        with self._lock:
-            return bool(self._lib.gles_IsBuffer(self._p, buffer))
+    def glDeleteBuffers(self, n: Any, buffers: Any = _INFER) -> None:
+        """Delete buffer objects: ``glDeleteBuffers(names)`` (n is the
+        sequence's length, as PyOpenGL) or the C form ``(n, names)``."""
+        self._delete(self._lib.gles_DeleteBuffers, n, buffers, "glDeleteBuffers")
 
     def _buffer_data(self, data: Pointer, what: str) -> tuple[Any, int, Any]:
         """The bytes a Buffer(Sub)Data call copies from: an array, bytes or a
@@ -1052,10 +867,20 @@ class GLBase:
         self._lib.gles_GetBufferParameteriv(self._p, target, C.GL_BUFFER_SIZE, out)
         return int(out[0])
 
-    def glBufferData(self, target: int, size: int, data: Pointer, usage: int) -> None:
+    def glBufferData(self, target: int, size: Any, data: Pointer = _INFER, usage: Any = _INFER) -> None:
         """Replace the bound buffer's store with size bytes (zeros when data
         is None). Past the context's memory budget: OUT_OF_MEMORY, the buffer
-        unchanged."""
+        unchanged. ``glBufferData(target, data, usage)`` takes the size from
+        the data, as PyOpenGL does."""
+        if usage is _INFER:
+            if data is _INFER:
+                raise TypeError("glBufferData takes (target, size, data, usage) or (target, data, usage)")
+            size, data, usage = _INFER, size, data
+        if size is _INFER:
+            if data is None or isinstance(data, (int, np.integer)):
+                raise TypeError("glBufferData(target, data, usage): data must be an array, bytes or "
+                                f"a sequence to take the size from, not {type(data).__name__}")
+            _, size, _ = self._buffer_data(data, "glBufferData")
         size = _index(size)
         if data is None:
             ptr, nbytes, keep = self._ffi.NULL, size, None
@@ -1074,8 +899,16 @@ class GLBase:
         del keep
         self._status(st)
 
-    def glBufferSubData(self, target: int, offset: int, size: int, data: Pointer) -> None:
-        """Copy size bytes of data into the bound buffer at offset."""
+    def glBufferSubData(self, target: int, offset: int, size: Any, data: Pointer = _INFER) -> None:
+        """Copy size bytes of data into the bound buffer at offset.
+        ``glBufferSubData(target, offset, data)`` copies all of the data, as
+        PyOpenGL does."""
+        if data is _INFER:
+            data = size
+            if data is None or isinstance(data, (int, np.integer)):
+                raise TypeError("glBufferSubData(target, offset, data): data must be an array, bytes or "
+                                f"a sequence to take the size from, not {type(data).__name__}")
+            _, size, _ = self._buffer_data(data, "glBufferSubData")
         size, offset = _index(size), _index(offset)
         ptr, nbytes, keep = self._buffer_data(data, "glBufferSubData")
         with self._lock:
@@ -1109,21 +942,22 @@ class GLBase:
         if st:
             self._status(st, "glDrawElements")
 
-    def glClear(self, mask: int) -> None:
-        with self._lock:
-            self._lib.gles_Clear(self._p, mask)
-
     def glReadPixels(self, x: int, y: int, width: int, height: int, format: int, type: int,
                      array: Any = None) -> Any:
         """Read a rectangle, bottom row first as GL defines.
 
-        Returns uint8 (h, w, 4) for GL_RGBA/GL_UNSIGNED_BYTE and uint16 (h, w)
-        for GL_RGB/GL_UNSIGNED_SHORT_5_6_5. With ``array`` (a writable buffer)
-        the raw rows are written into it with PACK_ALIGNMENT padding instead,
-        and None is returned. On a GL error nothing is written and None is
+        Returns the part of the rectangle inside the framebuffer (§4.3.1:
+        pixels outside it are undefined, so they are neither read nor
+        allocated): rows from max(y, 0), columns from max(x, 0); uint8
+        (h, w, 4) for GL_RGBA/GL_UNSIGNED_BYTE and uint16 (h, w) for
+        GL_RGB/GL_UNSIGNED_SHORT_5_6_5. With ``array`` (a writable buffer)
+        the whole rectangle's raw rows are written into it with
+        PACK_ALIGNMENT padding instead (zeros outside the framebuffer), and
+        None is returned. On a GL error nothing is written and None is
         returned.
         """
-        width, height = _index(width), _index(height)
+        x, y, width, height = (_glint(v, name) for v, name in
+                               ((x, "x"), (y, "y"), (width, "width"), (height, "height")))
         if array is not None:
             try:
                 buf = self._ffi.from_buffer(array, require_writable=True)
@@ -1133,22 +967,17 @@ class GLBase:
                 st = self._lib.gles_ReadPixels(self._p, x, y, width, height, format, type, buf, len(buf))
             self._status(st)
             return None
+        if width >= 0 and height >= 0:
+            # clip to the framebuffer; a negative size goes on unchanged so
+            # that the core records INVALID_VALUE
+            x0, y0 = max(x, 0), max(y, 0)
+            width = max(min(x + width, self.handle.width) - x0, 0)
+            height = max(min(y + height, self.handle.height) - y0, 0)
+            x, y = x0, y0
         bpp = 4 if (format, type) == (C.GL_RGBA, C.GL_UNSIGNED_BYTE) else 2
         align = self._bound(C.GL_PACK_ALIGNMENT)
         stride = -(-max(width, 0) * bpp // align) * align
-        if width < 0 or height < 0 or stride * height > self._context.memory_limit:
-            # GL errors first; a valid read this large raises (pass `array`)
-            with self._lock:
-                err_before = self._lib.gles_GetError(self._p)
-                self._lib.gles_ReadPixels(self._p, x, y, width, height, format, type, self._ffi.NULL, 0)
-                err = self._lib.gles_GetError(self._p)
-                if err_before or err:
-                    self._lib.gles_set_error(self._p, err_before or err)
-            if err:
-                return None
-            raise ValueError(f"glReadPixels: {width} x {height} pixels need {stride * height} bytes, "
-                             f"past the context's memory_limit")
-        raw = np.zeros(max(stride * height, 1), dtype=np.uint8)
+        raw = np.zeros(max(stride * max(height, 0), 1), dtype=np.uint8)
         with self._lock:
             err_before = self._lib.gles_GetError(self._p)
             st = self._lib.gles_ReadPixels(self._p, x, y, width, height, format, type,
@@ -1172,37 +1001,7 @@ class GLCommon(GLBase):
 
     def glGetFloatv(self, pname: int) -> Any:
         vals, _ = self._get(pname)
-        return self._result([float(v) for v in vals], np.float32)
-
-    def glLightf(self, light: int, pname: int, param: float) -> None:
-        buf = self._scalar(param, False)
-        with self._lock:
-            self._lib.gles_Light(self._p, light, pname, buf, 0)
-
-    def glLightfv(self, light: int, pname: int, params: Any) -> None:
-        buf = self._params(pname, params, False, "glLightfv")
-        with self._lock:
-            self._lib.gles_Light(self._p, light, pname, buf, 1)
-
-    def glLightModelf(self, pname: int, param: float) -> None:
-        buf = self._scalar(param, False)
-        with self._lock:
-            self._lib.gles_LightModel(self._p, pname, buf, 0)
-
-    def glLightModelfv(self, pname: int, params: Any) -> None:
-        buf = self._params(pname, params, False, "glLightModelfv")
-        with self._lock:
-            self._lib.gles_LightModel(self._p, pname, buf, 1)
-
-    def glMaterialf(self, face: int, pname: int, param: float) -> None:
-        buf = self._scalar(param, False)
-        with self._lock:
-            self._lib.gles_Material(self._p, face, pname, buf, 0)
-
-    def glMaterialfv(self, face: int, pname: int, params: Any) -> None:
-        buf = self._params(pname, params, False, "glMaterialfv")
-        with self._lock:
-            self._lib.gles_Material(self._p, face, pname, buf, 1)
+        return self._result([float(v) for v in vals], np.float32, pname)
 
     def glGetLightfv(self, light: int, pname: int) -> Any:
         return self._result(self._get_lm(self._lib.gles_GetLight, light, pname), np.float32)
@@ -1210,69 +1009,14 @@ class GLCommon(GLBase):
     def glGetMaterialfv(self, face: int, pname: int) -> Any:
         return self._result(self._get_lm(self._lib.gles_GetMaterial, face, pname), np.float32)
 
-    def glAlphaFunc(self, func: int, ref: float) -> None:
-        with self._lock:
-            self._lib.gles_AlphaFunc(self._p, func, ref)
-
-    def glSampleCoverage(self, value: float, invert: bool) -> None:
-        with self._lock:
-            self._lib.gles_SampleCoverage(self._p, value, bool(invert))
-
-    def glFogf(self, pname: int, param: float) -> None:
-        buf = self._fog_scalar(pname, param, False)
-        with self._lock:
-            self._lib.gles_Fog(self._p, pname, buf, 0)
-
-    def glFogfv(self, pname: int, params: Any) -> None:
-        if int(pname) == C.GL_FOG_MODE:
-            buf = self._fog_scalar(pname, _values(params, 1, "glFogfv")[0], False)
-        else:
-            buf = self._params(pname, params, False, "glFogfv")
-        with self._lock:
-            self._lib.gles_Fog(self._p, pname, buf, 1)
-
-    def glTexParameterf(self, target: int, pname: int, param: float) -> None:
-        self._tex_param(target, pname, param, "f", False, "glTexParameterf")
-
-    def glTexParameterfv(self, target: int, pname: int, params: Any) -> None:
-        self._tex_param(target, pname, params, "f", True, "glTexParameterfv")
-
-    def glTexEnvf(self, target: int, pname: int, param: float) -> None:
-        self._tex_env(target, pname, param, "f", False, "glTexEnvf")
-
-    def glTexEnvfv(self, target: int, pname: int, params: Any) -> None:
-        self._tex_env(target, pname, params, "f", True, "glTexEnvfv")
-
     def glGetTexParameterfv(self, target: int, pname: int) -> Any:
         return self._tex_get(self._lib.gles_GetTexParameter, target, pname, "f")
 
     def glGetTexEnvfv(self, target: int, pname: int) -> Any:
         return self._tex_get(self._lib.gles_GetTexEnv, target, pname, "f")
 
-    def glPointSize(self, size: float) -> None:
-        with self._lock:
-            self._lib.gles_PointSize(self._p, size)
-
-    def glLineWidth(self, width: float) -> None:
-        with self._lock:
-            self._lib.gles_LineWidth(self._p, width)
-
-    def glPointParameterf(self, pname: int, param: float) -> None:
-        buf = self._scalar(param, False)
-        with self._lock:
-            self._lib.gles_PointParameter(self._p, pname, buf, 0)
-
-    def glPointParameterfv(self, pname: int, params: Any) -> None:
-        buf = self._params(pname, params, False, "glPointParameterfv")
-        with self._lock:
-            self._lib.gles_PointParameter(self._p, pname, buf, 1)
-
-    def glPolygonOffset(self, factor: float, units: float) -> None:
-        with self._lock:
-            self._lib.gles_PolygonOffset(self._p, factor, units)
-
     def glDrawTexfOES(self, x: float, y: float, z: float, width: float, height: float) -> None:
-        self._draw_tex([float(v) for v in (x, y, z, width, height)])
+        self._draw_tex([_real(v) for v in (x, y, z, width, height)])
 
     def glDrawTexfvOES(self, coords: Any) -> None:
         self._draw_tex([float(v) for v in _values(coords, 5, "glDrawTexfvOES")[:5]])
@@ -1283,88 +1027,16 @@ class GLCommon(GLBase):
             self._lib.gles_GetClipPlane(self._p, _index(plane), eq)
         return np.array([eq[i] for i in range(4)], dtype=np.float32)
 
-    def glDepthRangef(self, n: float, f: float) -> None:
-        with self._lock:
-            self._lib.gles_DepthRange(self._p, n, f)
-
-    def glClearColor(self, r: float, g: float, b: float, a: float) -> None:
-        with self._lock:
-            self._lib.gles_ClearColor(self._p, r, g, b, a)
-
-    def glClearDepthf(self, depth: float) -> None:
-        with self._lock:
-            self._lib.gles_ClearDepth(self._p, depth)
-
-    def glLoadMatrixf(self, m: Any) -> None:
-        buf = self._matrix(m, False, "glLoadMatrixf")
-        with self._lock:
-            self._lib.gles_LoadMatrix(self._p, buf)
-
-    def glMultMatrixf(self, m: Any) -> None:
-        buf = self._matrix(m, False, "glMultMatrixf")
-        with self._lock:
-            self._lib.gles_MultMatrix(self._p, buf)
-
-    def glTranslatef(self, x: float, y: float, z: float) -> None:
-        with self._lock:
-            self._lib.gles_Translate(self._p, x, y, z)
-
-    def glScalef(self, x: float, y: float, z: float) -> None:
-        with self._lock:
-            self._lib.gles_Scale(self._p, x, y, z)
-
-    def glRotatef(self, angle: float, x: float, y: float, z: float) -> None:
-        with self._lock:
-            self._lib.gles_Rotate(self._p, angle, x, y, z)
-
-    def glFrustumf(self, left: float, right: float, bottom: float, top: float, near: float,
-                   far: float) -> None:
-        with self._lock:
-            self._lib.gles_Frustum(self._p, left, right, bottom, top, near, far)
-
-    def glOrthof(self, left: float, right: float, bottom: float, top: float, near: float, far: float) -> None:
-        with self._lock:
-            self._lib.gles_Ortho(self._p, left, right, bottom, top, near, far)
-
-    def glClipPlanef(self, plane: int, equation: Any) -> None:
-        eq = _values(equation, 4, "glClipPlanef")[:4]
-        buf = self._ffi.new("double[4]", eq.tolist())
-        with self._lock:
-            self._lib.gles_ClipPlane(self._p, plane, buf)
-
-    def glColor4f(self, r: float, g: float, b: float, a: float) -> None:
-        with self._lock:
-            self._lib.gles_Color4(self._p, r, g, b, a)
-
-    def glNormal3f(self, nx: float, ny: float, nz: float) -> None:
-        with self._lock:
-            self._lib.gles_Normal3(self._p, nx, ny, nz)
-
-    def glMultiTexCoord4f(self, target: int, s: float, t: float, r: float, q: float) -> None:
-        with self._lock:
-            self._lib.gles_MultiTexCoord4(self._p, target, s, t, r, q)
-
-
-def _missing(name: str, stage: str) -> Any:
-    def command(self: GLBase, *args: Any) -> None:
-        raise NotImplementedError(f"{name}: {stage} is not implemented yet (see the README's table)")
-
-    command.__name__ = name
-    command.__doc__ = f"Not implemented yet: part of {stage}."
-    return command
-
 
 def _checked_class(base: type) -> type:
     """A subclass of `base` whose every command raises GLError on a GL error,
     like PyOpenGL's error checking (glGetError itself is left alone)."""
 
     def wrap(name: str, fn: Any) -> Any:
-        def command(self: GLBase, *args: Any) -> Any:
-            result = fn(self, *args)
+        def command(self: GLBase, *args: Any, **kwargs: Any) -> Any:
+            result = fn(self, *args, **kwargs)
             err = self._lib.gles_GetError(self._p)
             if err:
-                from .errors import GLError
-
                 raise GLError(err, name, args)
             return result
 
@@ -1377,19 +1049,144 @@ def _checked_class(base: type) -> type:
     return type(f"Checked{base.__name__}", (base,), attrs)
 
 
-MISSING: dict[str, str] = {}
-for _stage, _names in _MISSING_BOTH.items():
-    for _n in _names.split():
-        setattr(GLBase, _n, _missing(_n, _stage))
-        MISSING[_n] = _stage
-for _stage, _names in _MISSING_COMMON.items():
-    for _n in _names.split():
-        setattr(GLCommon, _n, _missing(_n, _stage))
-        MISSING[_n] = _stage
+# {====================================================================
+# the commands built from the command table
+#
+# Three families are not written out by hand: their methods are generated
+# from their rows of gles.commands, under the rows' parameter names, at
+# import. A plain command's arguments are all scalars the core takes as they
+# are (16.16 arguments become the reals they stand for, GLboolean ones
+# bools); a pname command (glLightxv, glTexEnvi, ...) passes its value or
+# values through _pname_values, by its x/f/i form, to the core function of
+# its family; a vector command (glLoadMatrixx, glClipPlanef, ...) passes a
+# fixed number of values through _vector. Only the commands that need more
+# (pointers, Get*, Gen/Delete, DrawArrays' status) are written above.
 
-COMMON_LITE_COMMANDS = sorted(n for n in dir(GLBase) if n.startswith("gl"))
-COMMON_COMMANDS = sorted(n for n in dir(GLCommon) if n.startswith("gl"))
-FLOAT_COMMANDS = sorted(set(COMMON_COMMANDS) - set(COMMON_LITE_COMMANDS))
+def _core_entry(cmd: Command) -> str:
+    """The core function of a plain command: gles_ plus its name without
+    gl and, for the x and f forms, without the suffix (glTranslatex and
+    glTranslatef both call gles_Translate)."""
+    stem = cmd.name[2:]
+    candidates = [stem]
+    if any(p.kind in ("fixed", "float") for p in cmd.params) and stem[-1] in "xf":
+        candidates.append(stem[:-1])
+    for c in candidates:
+        if hasattr(_CORE_LIB, f"gles_{c}"):
+            return f"gles_{c}"
+    raise ImportError(f"{cmd.name}: the core has none of {['gles_' + c for c in candidates]}")
+
+
+def _plain_argument(param: Param) -> str:
+    """The expression that passes one scalar argument on to the core."""
+    if param.kind == "fixed":
+        return f"_fixed({param.name})"
+    if param.kind == "bool":
+        return f"bool({param.name})"
+    if param.kind == "uint" and param.name == "mask":
+        return f"_mask({param.name})"      # -1 is all ones, as in C
+    return param.name                      # _CoreFunctions names what cffi refuses
+
+
+def _plain_source(cmd: Command) -> str:
+    names = [p.name for p in cmd.params]
+    call = f"self._lib.{_core_entry(cmd)}(self._p{''.join(', ' + _plain_argument(p) for p in cmd.params)})"
+    result = f"bool({call})" if cmd.ret == "GLboolean" else call
+    return (f"def {cmd.name}(self{''.join(', ' + n for n in names)}):\n"
+            f"    with self._lock:\n"
+            f"        return {result}\n")
+
+
+def _is_plain(cmd: Command) -> bool:
+    return cmd.ret in ("void", "GLboolean") and all(p.kind in _PLAIN_KINDS for p in cmd.params)
+
+
+_PLAIN_KINDS = frozenset({"enum", "int", "sizei", "uint", "bitfield", "bool", "fixed", "float"})
+
+
+# the pname commands (glLightxv, glTexEnvi, ...): how each family's values
+# read, by the core function they call
+_PNAME_FAMILIES = {"Light": "lighting", "LightModel": "lighting", "Material": "lighting",
+                   "PointParameter": "lighting", "Fog": "fog", "TexParameter": "tex", "TexEnv": "tex"}
+
+
+def _pname_form(cmd: Command) -> tuple[str, str, bool] | None:
+    """(family, form, vector) of a pname command that sets state, else None."""
+    if cmd.name.startswith("glGet") or not any(p.name == "pname" for p in cmd.params):
+        return None
+    stem = cmd.name[2:]
+    vector = stem.endswith("v")
+    stem = stem[:-1] if vector else stem
+    family = _PNAME_FAMILIES.get(stem[:-1])
+    return None if family is None or stem[-1] not in "xfi" else (family, stem[-1], vector)
+
+
+def _pname_source(cmd: Command, family: str, form: str, vector: bool) -> str:
+    *lead, value = [p.name for p in cmd.params]
+    core = "gles_" + cmd.name[2:].rstrip("v")[:-1]
+    return (f"def {cmd.name}(self, {', '.join(lead + [value])}):\n"
+            f"    buf = self._pname_values({family!r}, pname, {value}, {form!r}, {vector}, {cmd.name!r})\n"
+            f"    with self._lock:\n"
+            f"        self._lib.{core}(self._p, {', '.join(lead)}, buf, {int(vector)})\n")
+
+
+# the fixed-length vector commands: how many values each reads, by the core
+# function it calls (§2.10.2, §2.11)
+_VECTOR_COUNTS = {"LoadMatrix": 16, "MultMatrix": 16, "ClipPlane": 4}
+
+
+def _vector_source(cmd: Command, count: int) -> str:
+    *lead, values = cmd.params
+    names = [p.name for p in lead]
+    core = "gles_" + cmd.name[2:-1]
+    return (f"def {cmd.name}(self, {', '.join(names + [values.name])}):\n"
+            f"    buf = self._vector({values.name}, {count}, {values.ctype!r}, {cmd.name!r})\n"
+            f"    with self._lock:\n"
+            f"        self._lib.{core}(self._p, {''.join(n + ', ' for n in names)}buf)\n")
+
+
+def _add_plain_commands() -> None:
+    scope: dict[str, Any] = {"_fixed": _fixed, "_mask": _mask}
+    for cmd in COMMANDS.values():
+        cls = GLCommon if cmd.profile == "common" else GLBase
+        if cmd.name in vars(cls):
+            continue
+        pname = _pname_form(cmd)
+        count = _VECTOR_COUNTS.get(cmd.name[2:-1]) if cmd.params and cmd.params[-1].kind == "values" else None
+        if pname is not None:
+            source = _pname_source(cmd, *pname)
+        elif count is not None:
+            source = _vector_source(cmd, count)
+        elif _is_plain(cmd):
+            source = _plain_source(cmd)
+        else:
+            continue
+        exec(compile(source, f"<gles.gl {cmd.name}>", "exec"), scope)  # noqa: S102 -- from the table
+        fn = scope[cmd.name]
+        fn.__qualname__ = f"{cls.__name__}.{cmd.name}"
+        fn.__doc__ = cmd.prototype() + (f" ({cmd.extension[3:]})" if cmd.extension else "")
+        setattr(cls, cmd.name, fn)
+    missing = [c.name for c in COMMANDS.values()
+               if not hasattr(GLCommon if c.profile == "common" else GLBase, c.name)]
+    if missing:
+        raise ImportError(f"table commands with neither a hand-written nor a generated method: {missing}")
+
+
+_add_plain_commands()
+
+# every GL_* constant is also an attribute of each command set, so that a
+# scene written against ``gl`` (ctx.gl, or a Mesa peer's namespace) finds
+# gl.GL_TEXTURE_2D wherever it runs
+for _n in C.__all__:
+    setattr(GLBase, _n, getattr(C, _n))
+
+# ES 1.1 commands that exist but whose stage is not built (each would raise
+# NotImplementedError naming it): none
+MISSING: dict[str, str] = {}
+
+# the command sets, from the table (the import checks above saw each has its method)
+COMMON_LITE_COMMANDS = sorted(n for n, c in COMMANDS.items() if c.profile == "both")
+COMMON_COMMANDS = sorted(COMMANDS)
+FLOAT_COMMANDS = sorted(n for n, c in COMMANDS.items() if c.profile == "common")
 
 # {====================================================================
 # module-level functions on the current context
@@ -1410,7 +1207,7 @@ def current_gl() -> GLBase:
 
 
 def _forwarder(name: str) -> Any:
-    def command(*args: Any) -> Any:
+    def command(*args: Any, **kwargs: Any) -> Any:
         gl = getattr(_current, "gl", None)
         if gl is None:
             gl = current_gl()
@@ -1420,11 +1217,15 @@ def _forwarder(name: str) -> Any:
             raise AttributeError(
                 f"{name} is a Common-profile command; the current context is Common-Lite"
             ) from None
-        return fn(*args)
+        return fn(*args, **kwargs)
 
     command.__name__ = name
     command.__qualname__ = name
-    command.__doc__ = getattr(GLCommon, name).__doc__
+    method = getattr(GLCommon, name)
+    command.__doc__ = method.__doc__
+    # help() shows the command's own parameters (the method's, without self)
+    sig = inspect.signature(method)
+    command.__signature__ = sig.replace(parameters=list(sig.parameters.values())[1:])  # type: ignore[attr-defined]
     return command
 
 

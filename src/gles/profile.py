@@ -57,6 +57,7 @@ from typing import Any, Callable
 import numpy as np
 
 from . import constants as C
+from .commands import COMMANDS
 from .gl import (
     _PARAM_COUNT,
     _TEX_REAL,
@@ -131,6 +132,14 @@ def _margin(x: float, kind: str) -> float:
     return UNDERFLOW_LIMIT / abs(x)
 
 
+def _times(margin: float, side: str = "") -> str:
+    """'2.5x' (and `side`) for a margin; an infinite one (an inf or NaN
+    value, or a subnormal too small to divide by) has no multiple."""
+    if math.isfinite(margin):
+        return f"{margin:.3g}x" + (f" {side}" if side else "")
+    return f"infinitely {side or 'beyond'}"
+
+
 @dataclass(frozen=True)
 class RangeEvent:
     """One value or draw outside the 16.16 range."""
@@ -198,12 +207,12 @@ class RangeMonitor:
         if x != x:
             msg = f"{call}: {arg} is NaN, which 16.16 cannot hold; the fixed core takes it as 0"
         elif kind == "overflow":
-            msg = (f"{call}: {arg} = {x:g} is outside 16.16 (|x| >= 32768, {margin:.3g}x the limit); "
+            msg = (f"{call}: {arg} = {x:g} is outside 16.16 (|x| >= 32768, {_times(margin)} the limit); "
                    + ("the fixed core saturates it to "
                    + (f"{math.copysign(FIXED_MAX, x):.5f}" if x == x else "0 (NaN)")))
         else:
             msg = (f"{call}: {arg} = {x:g} is nonzero but rounds to 0 in 16.16 "
-                   f"(|x| <= 2^-17, {margin:.3g}x below the smallest value kept)")
+                   f"(|x| <= 2^-17, {_times(margin, 'below')} the smallest value kept)")
         self._record(RangeEvent(kind, f"{call}({arg})", x, margin, msg))
         return _clamped(x, kind) if self.policy == "clamp" else x
 
@@ -215,7 +224,7 @@ class RangeMonitor:
             source = _ARRAY_SOURCES[index]
             margin = big / OVERFLOW_LIMIT if big == big else math.inf
             msg = (f"{call}: the {_ARRAY_NAMES[index]} array ({source}) holds |x| = {big:g} in the vertices "
-                   f"drawn, outside 16.16 ({margin:.3g}x the limit); the fixed core saturates it")
+                   f"drawn, outside 16.16 ({_times(margin)} the limit); the fixed core saturates it")
             if self.policy == "raise":
                 msg += "; nothing was drawn"
             self._record(RangeEvent("overflow", f"{call}: {source}", big, margin, msg))
@@ -228,7 +237,7 @@ class RangeMonitor:
         margin = lhs / RULE_LIMIT if lhs == lhs else math.inf
         msg = (f"{call}: P*MV and the vertex array break the 16.16 overflow rule c*s + t < {RULE_LIMIT:g}: "
                f"c = {c:g} (largest |vertex component|), s = {s:g} (largest |upper 3x3 element| of P*MV), "
-               f"t = {t:g} (largest |4th column element|), c*s + t = {lhs:g}, {margin:.3g}x the limit")
+               f"t = {t:g} (largest |4th column element|), c*s + t = {lhs:g}, {_times(margin)} the limit")
         if self.policy == "raise":
             msg += "; nothing was drawn"
         self._record(RangeEvent("rule", call, lhs, margin, msg))
@@ -258,7 +267,7 @@ def _by_pname(table: dict[int, int], pname_at: int, default: int = 1,
     def count(args: tuple) -> int:
         try:
             pname = int(args[pname_at])
-        except (TypeError, ValueError, IndexError):
+        except (TypeError, ValueError, OverflowError, IndexError):
             return 0
         return 0 if pname in skip else table.get(pname, default)
     return count
@@ -267,21 +276,20 @@ def _by_pname(table: dict[int, int], pname_at: int, default: int = 1,
 def _tex_env_count(args: tuple) -> int:
     try:
         pname = int(args[1])
-    except (TypeError, ValueError, IndexError):
+    except (TypeError, ValueError, OverflowError, IndexError):
         return 0
     if pname not in _TEX_REAL:
         return 0              # enums (modes, sources, operands) are not 16.16 values
     return 4 if pname == C.GL_TEXTURE_ENV_COLOR else 1
 
 
-# command -> the argument positions that are real scalars
+# command -> the argument positions that are real scalars: from the command
+# table, every float argument of a command without a pname (those with one
+# carry enums for some pnames, below)
 _SCALAR_REALS: dict[str, tuple[int, ...]] = {
-    "glAlphaFunc": (1,), "glClearColor": (0, 1, 2, 3), "glClearDepthf": (0,),
-    "glDepthRangef": (0, 1), "glTranslatef": (0, 1, 2), "glScalef": (0, 1, 2),
-    "glRotatef": (0, 1, 2, 3), "glFrustumf": (0, 1, 2, 3, 4, 5), "glOrthof": (0, 1, 2, 3, 4, 5),
-    "glColor4f": (0, 1, 2, 3), "glNormal3f": (0, 1, 2), "glMultiTexCoord4f": (1, 2, 3, 4),
-    "glPointSize": (0,), "glLineWidth": (0,), "glPolygonOffset": (0, 1), "glSampleCoverage": (0,),
-    "glDrawTexfOES": (0, 1, 2, 3, 4),
+    cmd.name: tuple(i for i, p in enumerate(cmd.params) if p.kind == "float")
+    for cmd in COMMANDS.values()
+    if all(p.name != "pname" for p in cmd.params) and any(p.kind == "float" for p in cmd.params)
 }
 
 _FOG_ENUM = frozenset({C.GL_FOG_MODE})
@@ -302,6 +310,7 @@ _VECTOR_REALS: dict[str, tuple[int, Callable[[tuple], int]]] = {
 }
 
 # glTexParameterf/fv carry only enums, integers and booleans in ES 1.1: nothing to check
+UNCHECKED_FLOAT_COMMANDS = ("glTexParameterf", "glTexParameterfv")
 CHECKED_COMMANDS = sorted(set(_SCALAR_REALS) | set(_VECTOR_REALS))
 
 
@@ -398,7 +407,7 @@ def ranged_class(base: type) -> type:
             if kwargs:
                 bound = params.bind(self, *args, **kwargs)
                 args = tuple(bound.args[1:])
-            return fn(self, *check(self._context._range, args))
+            return fn(self, *check(self.handle.range, args))
 
         if name in _SCALAR_REALS:
             command = _fast_scalar(name, fn, _SCALAR_REALS[name], command)

@@ -178,7 +178,7 @@ def _summary_rows(results: list[tuple[Entry, Comparison]], renderers: list[str])
         row = [entry.name]
         for name in renderers:
             r = comp.renders.get(name)
-            if r is None or r.skipped or r.metrics is None:
+            if r is None or r.skipped or r.error or r.metrics is None:
                 row.append("–")
             else:
                 row.append(f"{r.time_ms:.2f} ms, {_fmt_psnr(r.metrics.psnr)}")
@@ -265,7 +265,7 @@ def _html(results: list[tuple[Entry, Comparison]], renderers: list[str], w: int,
         parts.append("<div class='images'>")
         for r in comp.renders.values():
             if r.image is None:
-                parts.append(f"<figure><figcaption>{e(r.renderer)}: {e(r.skipped or '')}"
+                parts.append(f"<figure><figcaption>{e(r.renderer)}: {e(r.skipped or r.error or '')}"
                              "</figcaption></figure>")
                 continue
             cap = e(r.renderer) + (f", {_fmt_psnr(r.metrics.psnr)}" if r.metrics else "")
@@ -276,8 +276,9 @@ def _html(results: list[tuple[Entry, Comparison]], renderers: list[str], w: int,
         parts.append("<table><tr><th>renderer</th><th>ms/frame</th><th>max abs</th><th>mean abs</th>"
                      "<th>RMSE</th><th>PSNR (dB)</th><th>&gt;1 LSB</th><th>range events</th></tr>")
         for r in comp.renders.values():
-            if r.skipped:
-                parts.append(f"<tr><td>{e(r.renderer)}</td><td colspan='7'>skipped: {e(r.skipped)}</td></tr>")
+            if r.skipped or r.error:
+                why = f"skipped: {r.skipped}" if r.skipped else f"FAILED: {r.error}"
+                parts.append(f"<tr><td>{e(r.renderer)}</td><td colspan='7'>{e(why)}</td></tr>")
                 continue
             m = r.metrics.row() if r.metrics else [""] * 5
             rng = str(r.range.total) if r.range is not None else ""
