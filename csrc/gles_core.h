@@ -73,6 +73,12 @@ const char *gles_simd_name(GlesContext *ctx);
 ** fixed build), through the vector instance (simd != 0, where the CPU has
 ** one) or the baseline; 0 when the unit samples no complete texture */
 int gles_debug_sample(GlesContext *ctx, int unit, int simd, int n, const double *coords, double *out);
+/* for tests, fixed build (0 elsewhere): the perspective weights of n points
+** with edge values e[3 j .. 3 j + 2] for a triangle of the given 1/w
+** mantissas and shifts (wgt_persp_any), into out[3 j ..], four at a time by
+** the vector kernel where simd != 0 and the CPU has one, else one by one */
+int gles_debug_persp_any(int simd, int eshift, const int64_t mant[3], const int qshift[3], int affine, int n,
+                         const int64_t *e, int32_t *out);
 
 /* the numeric layer, for tests: converts a and b to NUM (exact for
 ** multiples of 2^-16 in the fixed build), applies op, returns the result

@@ -336,6 +336,139 @@ AVX2_INLINE int avx2_rect_linear_s4(double a, double b, int x0, const uint8_t *k
     return 1;
 }
 
+/* i64_div_pow2 of each lane by the same k (truncation toward zero: the
+** magnitude shifted, the sign restored); lanes above -2^63 */
+AVX2_INLINE __m256i avx2_div_pow2(__m256i v, __m128i k)
+{
+    const __m256i sign = _mm256_cmpgt_epi64(_mm256_setzero_si256(), v);
+    const __m256i mag = _mm256_srl_epi64(_mm256_sub_epi64(_mm256_xor_si256(v, sign), sign), k);
+    return _mm256_sub_epi64(_mm256_xor_si256(mag, sign), sign);
+}
+
+/* the same with a shift per lane */
+AVX2_INLINE __m256i avx2_div_pow2v(__m256i v, __m256i k)
+{
+    const __m256i sign = _mm256_cmpgt_epi64(_mm256_setzero_si256(), v);
+    const __m256i mag = _mm256_srlv_epi64(_mm256_sub_epi64(_mm256_xor_si256(v, sign), sign), k);
+    return _mm256_sub_epi64(_mm256_xor_si256(mag, sign), sign);
+}
+
+AVX2_INLINE __m256i avx2_abs64(__m256i v)
+{
+    const __m256i sign = _mm256_cmpgt_epi64(_mm256_setzero_si256(), v);
+    return _mm256_sub_epi64(_mm256_xor_si256(v, sign), sign);
+}
+
+/* int64 lanes of magnitude below 2^51 as doubles, and back (exact: the
+** bias 2^52 + 2^51 puts the integer in the mantissa's low bits) */
+AVX2_INLINE __m256d avx2_i64_to_pd(__m256i v)
+{
+    const __m256d magic = _mm256_set1_pd(6755399441055744.0);
+    return _mm256_sub_pd(_mm256_castsi256_pd(_mm256_add_epi64(v, _mm256_castpd_si256(magic))), magic);
+}
+AVX2_INLINE __m256i avx2_pd_to_i64(__m256d v)
+{
+    const __m256d magic = _mm256_set1_pd(6755399441055744.0);
+    return _mm256_sub_epi64(_mm256_castpd_si256(_mm256_add_pd(v, magic)), _mm256_castpd_si256(magic));
+}
+
+/* trunc(n 2^30 / d) (C's division) for |n| <= 2^31 and 0 < d < 2^31, where
+** the quotient's magnitude stays below 2^31 - 2: the double quotient is
+** within 2^-22 of the exact one, so its truncation is off by at most one,
+** which the exact remainder n 2^30 - q d corrects; 0 when a lane's quotient
+** is out of that range */
+AVX2_INLINE int avx2_div30(__m256i n, __m256i d, __m256i *q)
+{
+    const __m256d qd = _mm256_round_pd(_mm256_div_pd(_mm256_mul_pd(avx2_i64_to_pd(n), _mm256_set1_pd(1073741824.0)),
+                                                     avx2_i64_to_pd(d)),
+                                       _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
+    const __m256d lim = _mm256_set1_pd(2147483645.0);
+    if (_mm256_movemask_pd(_mm256_cmp_pd(_mm256_andnot_pd(_mm256_set1_pd(-0.0), qd), lim, _CMP_LT_OQ)) != 0xF)
+        return 0;
+    __m256i qi = avx2_pd_to_i64(qd);
+    const __m256i r = _mm256_sub_epi64(_mm256_slli_epi64(n, 30), _mm256_mul_epi32(qi, d));
+    const __m256i one = _mm256_set1_epi64x(1), zero = _mm256_setzero_si256();
+    const __m256i neg_n = _mm256_cmpgt_epi64(zero, n);
+    /* n >= 0: 0 <= r < d; n < 0: -d < r <= 0 */
+    const __m256i too_low = _mm256_andnot_si256(neg_n, _mm256_cmpgt_epi64(zero, r));
+    const __m256i too_high = _mm256_andnot_si256(neg_n, _mm256_cmpgt_epi64(r, _mm256_sub_epi64(d, one)));
+    const __m256i too_low_n = _mm256_and_si256(neg_n, _mm256_cmpgt_epi64(_mm256_sub_epi64(one, d), r));
+    const __m256i too_high_n = _mm256_and_si256(neg_n, _mm256_cmpgt_epi64(r, zero));
+    qi = _mm256_add_epi64(qi, _mm256_or_si256(too_low, too_low_n));                    /* -1 where set */
+    qi = _mm256_sub_epi64(qi, _mm256_or_si256(too_high, too_high_n));                  /* +1 where set */
+    *q = qi;
+    return 1;
+}
+
+/* wgt_persp_any of four fragments' edge values e[lane][i] into out[lane];
+** 0 (nothing written) where an operand leaves the kernel's ranges, for the
+** scalar code */
+AVX2_INLINE int avx2_persp_any4(const WgtSetup *s, const int64_t e[4][3], WGT out[4][3])
+{
+    const __m128i esh = _mm_cvtsi32_si128(s->eshift);
+    __m256i n[3];
+    for (int i = 0; i < 3; i++) {
+        const __m256i ev = _mm256_setr_epi64x(e[0][i], e[1][i], e[2][i], e[3][i]);
+        if (!_mm256_testz_si256(_mm256_cmpeq_epi64(ev, _mm256_set1_epi64x(INT64_MIN)), _mm256_set1_epi64x(-1)))
+            return 0;
+        const __m256i ei = avx2_div_pow2(ev, esh);
+        if (s->affine) {
+            n[i] = ei;
+            continue;
+        }
+        if (!avx2_fits_i32(ei))
+            return 0;
+        const int sh = s->qshift[i] < 62 ? s->qshift[i] : 62;
+        n[i] = avx2_div_pow2(_mm256_mul_epi32(ei, _mm256_set1_epi64x(s->mant[i])), _mm_cvtsi32_si128(sh));
+    }
+    __m256i den = _mm256_add_epi64(_mm256_add_epi64(n[0], n[1]), n[2]);
+    /* the normalising shift k per lane, as the scalar code finds it */
+    __m256i m = avx2_abs64(den), a1 = avx2_abs64(n[1]), a2 = avx2_abs64(n[2]);
+    m = _mm256_blendv_epi8(m, a1, _mm256_cmpgt_epi64(a1, m));
+    m = _mm256_blendv_epi8(m, a2, _mm256_cmpgt_epi64(a2, m));
+    const int64_t lim = (int64_t)1 << 31;
+    int64_t mv[4], kv[4];
+    _mm256_storeu_si256((__m256i *)(void *)mv, m);
+    for (int l = 0; l < 4; l++) {
+        kv[l] = 0;
+        if (mv[l] < 0)
+            return 0;
+        if (mv[l] > lim) {
+            int k = u64_bits((uint64_t)mv[l]) - 32;
+            if (((uint64_t)mv[l] >> k) > (uint64_t)lim)
+                k++;
+            kv[l] = k;
+        }
+    }
+    const __m256i kvec = _mm256_loadu_si256((const __m256i *)(const void *)kv);
+    den = avx2_div_pow2v(den, kvec);
+    __m256i n1 = avx2_div_pow2v(n[1], kvec), n2 = avx2_div_pow2v(n[2], kvec);
+    den = _mm256_blendv_epi8(den, _mm256_set1_epi64x(1), _mm256_cmpeq_epi64(den, _mm256_setzero_si256()));
+    /* a negative denominator: trunc(n / d) = trunc(-n / -d) */
+    const __m256i dneg = _mm256_cmpgt_epi64(_mm256_setzero_si256(), den);
+    den = _mm256_sub_epi64(_mm256_xor_si256(den, dneg), dneg);
+    n1 = _mm256_sub_epi64(_mm256_xor_si256(n1, dneg), dneg);
+    n2 = _mm256_sub_epi64(_mm256_xor_si256(n2, dneg), dneg);
+    if (!_mm256_testz_si256(_mm256_cmpgt_epi64(den, _mm256_set1_epi64x(lim - 1)), _mm256_set1_epi64x(-1)))
+        return 0;
+    __m256i p1, p2;
+    if (!avx2_div30(n1, den, &p1) || !avx2_div30(n2, den, &p2))
+        return 0;
+    /* |p1|, |p2| < 2^31 - 2, so their clamps are no-ops; out0 is clamped */
+    __m256i p0 = _mm256_sub_epi64(_mm256_sub_epi64(_mm256_set1_epi64x(WGT_ONE), p1), p2);
+    const __m256i hi = _mm256_set1_epi64x(lim - 1), lo = _mm256_set1_epi64x(-(lim - 1));
+    p0 = _mm256_blendv_epi8(p0, hi, _mm256_cmpgt_epi64(p0, hi));
+    p0 = _mm256_blendv_epi8(p0, lo, _mm256_cmpgt_epi64(lo, p0));
+    int64_t w[3][4];
+    _mm256_storeu_si256((__m256i *)(void *)w[0], p0);
+    _mm256_storeu_si256((__m256i *)(void *)w[1], p1);
+    _mm256_storeu_si256((__m256i *)(void *)w[2], p2);
+    for (int l = 0; l < 4; l++)
+        for (int i = 0; i < 3; i++)
+            out[l][i] = (WGT)w[i][l];
+    return 1;
+}
+
 /* wgt_linear of four fragments, edge values e[lane]: the weights l0..l2
 ** as 64-bit lanes whose low 32 bits are the scalar code's (WGT) casts (what
 ** vpmuldq reads); 0 when an operand leaves the kernel's range (edge values

@@ -110,8 +110,44 @@ typedef struct ChainStages {
 #include "span_stages.h"
 #undef STAGE
 #undef CHAIN_SIMD
+#if NUM_IS_FIXED
+static int persp_any4_avx2(const WgtSetup *s, const int64_t e[4][3], WGT out[4][3])
+{
+    return avx2_persp_any4(s, e, out);
+}
+#endif
 #pragma GCC pop_options
 #endif
+
+int gles_debug_persp_any(int simd, int eshift, const int64_t mant[3], const int qshift[3], int affine, int n,
+                         const int64_t *e, int32_t *out)
+{
+#if NUM_IS_FIXED
+    if (n < 0 || eshift < 0 || eshift > 62)
+        return 0;
+    WgtSetup s = { .eshift = eshift, .affine = affine };
+    for (int i = 0; i < 3; i++) {
+        if (qshift[i] < 0 || mant[i] < 0 || mant[i] >= ((int64_t)1 << 31))
+            return 0;
+        s.mant[i] = mant[i];
+        s.qshift[i] = qshift[i];
+    }
+    int j = 0;
+#if SIMD_X86
+    if (simd && simd_detect() >= SIMD_AVX2)
+        for (; j + 4 <= n && persp_any4_avx2(&s, (const int64_t (*)[3])(e + 3 * (size_t)j), (WGT (*)[3])(out + 3 * (size_t)j));
+             j += 4)
+            ;
+#endif
+    (void)simd;
+    for (; j < n; j++)
+        wgt_persp_any(&s, e + 3 * (size_t)j, out + 3 * (size_t)j);
+    return 1;
+#else
+    (void)simd, (void)eshift, (void)mant, (void)qshift, (void)affine, (void)n, (void)e, (void)out;
+    return 0;
+#endif
+}
 
 /* {====================================================================
 ** composition and the driver */

@@ -43,7 +43,24 @@ static void STAGE(stage_persp)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 static void STAGE(stage_neighbours)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     (void)ctx;
-    for (int j = 0; j < b->n; j++) {
+    int j = 0;
+#if CHAIN_SIMD && NUM_IS_FIXED
+    for (; j + 4 <= b->n; j += 4) {
+        int64_t ex[4][3], ey[4][3];
+        for (int k = 0; k < 4; k++) {
+            int64_t e[3];
+            chunk_edges(t, b, b->k[j + k], e);
+            for (int i = 0; i < 3; i++) {
+                ex[k][i] = e[i] + t->ea[i];
+                ey[k][i] = e[i] + t->eb[i];
+            }
+        }
+        if (!avx2_persp_any4(&t->wgt, (const int64_t (*)[3])ex, &b->px[j])
+            || !avx2_persp_any4(&t->wgt, (const int64_t (*)[3])ey, &b->py[j]))
+            break;
+    }
+#endif
+    for (; j < b->n; j++) {
         int64_t e[3];
         chunk_edges(t, b, b->k[j], e);
         int64_t ex[3] = { e[0] + t->ea[0], e[1] + t->ea[1], e[2] + t->ea[2] };

@@ -195,3 +195,55 @@ def test_span_samplers_match_baseline(numeric, filt, wrap):
     for seed in range(3):
         vec, base = _sampler_case(numeric, seed, filt, wrap)
         np.testing.assert_array_equal(vec, base, err_msg=f"seed {seed}")
+
+
+def _persp_any(simd: int, eshift: int, mant, qshift, affine: int, e: np.ndarray) -> np.ndarray:
+    ctx = make_ctx("fixed", 1, 1)
+    ffi, lib = ctx._ffi, ctx._lib
+    e = np.ascontiguousarray(e, dtype=np.int64)
+    out = np.zeros(e.shape, np.int32)
+    ok = lib.gles_debug_persp_any(simd, eshift, list(map(int, mant)), list(map(int, qshift)), affine, len(e),
+                                  ffi.cast("int64_t *", e.ctypes.data), ffi.cast("int32_t *", out.ctypes.data))
+    assert ok == 1
+    return out
+
+
+def _division_edge_cases(rng: np.random.Generator, count: int) -> np.ndarray:
+    """Affine edge values whose weights n 2^30 / den lie just below (or,
+    negated, just above) an integer, 1/den away: a double quotient rounds
+    across the integer there, and only the exact remainder corrects it."""
+    rows = []
+    for _ in range(count):
+        d = int(rng.integers(1 << 29, (1 << 31) - 1)) | 1
+        inv = pow(1 << 30, -1, d)
+        n1 = (-inv) % d                              # n1 2^30 = -1 (mod d)
+        n2 = int(rng.integers(-(1 << 30), 1 << 30))
+        for s1, sd in ((1, 1), (-1, 1), (1, -1), (-1, -1)):
+            a, den = s1 * n1, sd * d
+            rows.append([den - a - n2, a, n2])
+    return np.array(rows, np.int64)
+
+
+@pytest.mark.skipif(not HAS_SIMD, reason="no vector instance on this CPU")
+def test_neighbour_weights_kernel_matches_scalar():
+    """The vector kernel of the level of detail's neighbour weights
+    (avx2_persp_any4) gives wgt_persp_any's weights bit for bit: on random
+    triangles and points, and on quotients one 2^-31 below an integer,
+    where only the remainder correction is right."""
+    rng = np.random.default_rng(11)
+    for trial in range(40):
+        eshift = int(rng.integers(0, 10))
+        mant = rng.integers(1 << 29, 1 << 30, 3)
+        qshift = rng.integers(0, 40, 3)
+        qshift[rng.integers(0, 3)] = 0
+        affine = int(trial % 4 == 0)
+        e = rng.integers(-(1 << 33), 1 << 33, (1024, 3)) >> rng.integers(0, 30, (1024, 1))
+        np.testing.assert_array_equal(_persp_any(1, eshift, mant, qshift, affine, e),
+                                      _persp_any(0, eshift, mant, qshift, affine, e), err_msg=f"trial {trial}")
+    e = _division_edge_cases(rng, 256)
+    vec = _persp_any(1, 0, [1 << 29] * 3, [0, 0, 0], 1, e)
+    np.testing.assert_array_equal(vec, _persp_any(0, 0, [1 << 29] * 3, [0, 0, 0], 1, e))
+    # and the weights are C's truncating division (an independent check)
+    n1, den = e[:, 1], e.sum(axis=1)
+    q = [(abs(int(a)) << 30) // abs(int(d)) * (1 if (a < 0) == (d < 0) else -1) for a, d in zip(n1, den)]
+    np.testing.assert_array_equal(vec[:, 1], np.array(q, np.int64))
