@@ -202,8 +202,9 @@ def _persp_any(simd: int, eshift: int, mant, qshift, affine: int, e: np.ndarray)
     ffi, lib = ctx._ffi, ctx._lib
     e = np.ascontiguousarray(e, dtype=np.int64)
     out = np.zeros(e.shape, np.int32)
-    ok = lib.gles_debug_persp_any(simd, eshift, list(map(int, mant)), list(map(int, qshift)), affine, len(e),
-                                  ffi.cast("int64_t *", e.ctypes.data), ffi.cast("int32_t *", out.ctypes.data))
+    ok = lib.gles_debug_persp_any(simd, eshift, [int(m) for m in mant], [int(q) for q in qshift], affine,
+                                  len(e), ffi.cast("int64_t *", e.ctypes.data),
+                                  ffi.cast("int32_t *", out.ctypes.data))
     assert ok == 1
     return out
 
@@ -238,8 +239,8 @@ def test_neighbour_weights_kernel_matches_scalar():
         qshift[rng.integers(0, 3)] = 0
         affine = int(trial % 4 == 0)
         e = rng.integers(-(1 << 33), 1 << 33, (1024, 3)) >> rng.integers(0, 30, (1024, 1))
-        np.testing.assert_array_equal(_persp_any(1, eshift, mant, qshift, affine, e),
-                                      _persp_any(0, eshift, mant, qshift, affine, e), err_msg=f"trial {trial}")
+        vec = _persp_any(1, eshift, mant, qshift, affine, e)
+        np.testing.assert_array_equal(vec, _persp_any(0, eshift, mant, qshift, affine, e), err_msg=f"trial {trial}")
     e = _division_edge_cases(rng, 256)
     vec = _persp_any(1, 0, [1 << 29] * 3, [0, 0, 0], 1, e)
     np.testing.assert_array_equal(vec, _persp_any(0, 0, [1 << 29] * 3, [0, 0, 0], 1, e))
