@@ -90,6 +90,15 @@ static inline void avx2_bilerp_rgba8(uint32_t c00, uint32_t c10, uint32_t c01, u
     avx2_store4(out, r);
 }
 
+/* each lane rounded half away from zero to `shift` fewer fraction bits */
+AVX2_INLINE __m256i avx2_round_shift(__m256i acc, int shift)
+{
+    const __m256i sign = _mm256_cmpgt_epi64(_mm256_setzero_si256(), acc);
+    __m256i mag = _mm256_sub_epi64(_mm256_xor_si256(acc, sign), sign);
+    mag = _mm256_srli_epi64(_mm256_add_epi64(mag, _mm256_set1_epi64x((int64_t)1 << (shift - 1))), shift);
+    return _mm256_sub_epi64(_mm256_xor_si256(mag, sign), sign);
+}
+
 /* a0 w0 + a1 w1 + a2 w2 per lane, rounded half away from zero to `shift`
 ** fewer fraction bits: the a lanes in int32 range, the weights any WGT */
 AVX2_INLINE __m256i avx2_lerp3(__m256i a0, __m256i a1, __m256i a2, const WGT *p, int shift)
@@ -100,10 +109,7 @@ AVX2_INLINE __m256i avx2_lerp3(__m256i a0, __m256i a1, __m256i a2, const WGT *p,
     __m256i acc = _mm256_add_epi64(_mm256_add_epi64(_mm256_mul_epi32(a0, _mm256_shuffle_epi32(ww, 0x00)),
                                                     _mm256_mul_epi32(a1, _mm256_shuffle_epi32(ww, 0x55))),
                                    _mm256_mul_epi32(a2, _mm256_shuffle_epi32(ww, 0xAA)));
-    const __m256i sign = _mm256_cmpgt_epi64(_mm256_setzero_si256(), acc);
-    __m256i mag = _mm256_sub_epi64(_mm256_xor_si256(acc, sign), sign);
-    mag = _mm256_srli_epi64(_mm256_add_epi64(mag, _mm256_set1_epi64x((int64_t)1 << (shift - 1))), shift);
-    return _mm256_sub_epi64(_mm256_xor_si256(mag, sign), sign);
+    return avx2_round_shift(acc, shift);
 }
 
 /* frag_lerp3f of the four channels */
@@ -130,6 +136,28 @@ AVX2_INLINE void avx2_tex_coord(int projective, const __m256i a[3], const WGT p[
     _mm256_storeu_si256((__m256i *)(void *)lanes, v);
     out->s = texc_div(lanes[0], lanes[3]);
     out->t = texc_div(lanes[1], lanes[3]);
+}
+
+/* texc_lerp3 of one coordinate (vertex values a[0..2], 16.16) for four
+** fragments' weights p[0..3] at once: lanes are fragments, and each lane's
+** sum and rounding are avx2_lerp3's */
+AVX2_INLINE __m256i avx2_texc_lerp3x4(const NUM a[3], const WGT (*p)[3])
+{
+    __m256i acc = _mm256_setzero_si256();
+    for (int i = 0; i < 3; i++)
+        acc = _mm256_add_epi64(acc, _mm256_mul_epi32(_mm256_set1_epi64x(a[i]),
+                                                     _mm256_setr_epi64x(p[0][i], p[1][i], p[2][i], p[3][i])));
+    return avx2_round_shift(acc, 14);
+}
+
+/* span_tex_coord without q (an affine unit) for four fragments: s and t
+** of vertex values sv[0..2], tv[0..2] at weights p[0..3], into out[0..3] */
+AVX2_INLINE void avx2_tex_coord_affine4(const NUM sv[3], const NUM tv[3], const WGT (*p)[3], TexCoord *out)
+{
+    const __m256i s = avx2_texc_lerp3x4(sv, p), t = avx2_texc_lerp3x4(tv, p);
+    const __m256i lo = _mm256_unpacklo_epi64(s, t), hi = _mm256_unpackhi_epi64(s, t);   /* s0 t0 s2 t2, s1 t1 s3 t3 */
+    _mm256_storeu_si256((__m256i *)(void *)out, _mm256_permute2x128_si256(lo, hi, 0x20));
+    _mm256_storeu_si256((__m256i *)(void *)(out + 2), _mm256_permute2x128_si256(lo, hi, 0x31));
 }
 
 /* 1 when every lane lies in the int32 range (an operand of vpmuldq) */

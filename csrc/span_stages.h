@@ -189,13 +189,25 @@ static void STAGE(stage_fetch)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, 
                            avx2_load_num4(t->v[2]->tex[u]) };
     const int proj = (t->tex_projective >> u) & 1;
 #define TEX_COORD(p, out) avx2_tex_coord(proj, a, p, out)
+    /* an affine unit's s and t for four fragments at a time */
+    const NUM sv[3] = { t->v[0]->tex[u][0], t->v[1]->tex[u][0], t->v[2]->tex[u][0] };
+    const NUM tv[3] = { t->v[0]->tex[u][1], t->v[1]->tex[u][1], t->v[2]->tex[u][1] };
+    const int four = proj ? 0 : b->n & ~3;
+    for (int j = 0; j < four; j += 4) {
+        avx2_tex_coord_affine4(sv, tv, &b->p[j], &b->tc[j]);
+        if (lod) {
+            avx2_tex_coord_affine4(sv, tv, &b->px[j], &b->tx[j]);
+            avx2_tex_coord_affine4(sv, tv, &b->py[j], &b->ty[j]);
+        }
+    }
 #else
 #define TEX_COORD(p, out) span_tex_coord(t, u, p, out)
+    const int four = 0;
 #endif
-    for (int j = 0; j < b->n; j++)
+    for (int j = four; j < b->n; j++)
         TEX_COORD(b->p[j], &b->tc[j]);
     if (lod)
-        for (int j = 0; j < b->n; j++) {
+        for (int j = four; j < b->n; j++) {
             TEX_COORD(b->px[j], &b->tx[j]);
             TEX_COORD(b->py[j], &b->ty[j]);
         }
