@@ -853,6 +853,15 @@ def make_sequence(seed: int, max_calls: int = 120, backend: str = "python") -> t
     setup.backend = backend
     if backend == "cabi":
         setup.range_check = "off"
+        # a few calls with NULL for their pointers (what only C can pass)
+        nr = random.Random(f"null {seed}")
+        for i, call in enumerate(calls):
+            if "*" in _c_params(call.name) and nr.random() < NULL_CALLS:
+                args = [
+                    Val(None, "None") if isinstance(a.value, (list, bytes, bytearray, np.ndarray)) else a
+                    for a in call.args
+                ]
+                calls[i] = Call("null_pointers", [Val(call.name, repr(call.name))] + args)
     return setup, calls
 
 
@@ -1125,6 +1134,7 @@ _POINTER_COMMANDS = {
     "glMatrixIndexPointerOES",
     "glWeightPointerOES",
 }
+NULL_CALLS = 0.05  # the share of C ABI calls with pointers that pass NULL
 _MAX_NAMES = 1 << 16  # glGen*(n): the names array the harness allocates
 _MAX_READ_PIXELS = 1 << 22  # glReadPixels: the pixels the harness allocates room for
 
@@ -1359,7 +1369,7 @@ def _guard(cc: CabiContext, name: str, args: list[Any]) -> None:
             if raw is None or need > len(raw):
                 raise ValueError(f"harness: the image reads {need} bytes of shorter data")
     elif name in ("glCompressedTexImage2D", "glCompressedTexSubImage2D", "glBufferData", "glBufferSubData"):
-        data = args[3] if name == "glBufferData" else args[-1]
+        data = args[2] if name == "glBufferData" else args[-1]
         if _is_address(data) and data:
             raise ValueError(f"harness: an int data pointer in {name}")
     elif name in ("glGenBuffers", "glGenTextures") and args and _is_address(args[0]):
@@ -1419,6 +1429,23 @@ class _GuardedGL:
 
         command.__name__ = name
         return command
+
+    def null_pointers(self, name: str, *args: Any) -> Any:
+        """Call the C entry point `name` with NULL for each pointer argument
+        (the other arguments in their places; output pointers the Python
+        convention leaves out are NULL too)."""
+        import ctypes
+
+        cc = self._cc
+        cargs = [
+            None if t == "*" else (args[i] if i < len(args) else 0) for i, t in enumerate(_c_params(name))
+        ]
+        _guard(cc, name, cargs)
+        cc.library.make_current()
+        try:
+            return cc.library._raw[name](*cargs)
+        except ctypes.ArgumentError as e:
+            raise TypeError(f"{name}: {e}") from None
 
 
 # {====================================================================
