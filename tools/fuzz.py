@@ -3,6 +3,7 @@
     python tools/fuzz.py --minutes N --seed S      # seeds S, S+1, ... for N minutes
     python tools/fuzz.py --seeds 0:200             # a fixed seed range (CI)
     python tools/fuzz.py --replay 123              # one sequence, in this process
+    python tools/fuzz.py --backend cabi ...        # the same through the C ABI
 
 Each seed makes one context (random build, profile, colour format, depth and
 stencil bits, size, range-check policy and memory limit) and a sequence of
@@ -18,6 +19,12 @@ GLError, TypeError or ValueError; glGetError returns NO_ERROR or one of the
 six error codes; and a call that raised or recorded an error left the state
 as it was (a snapshot of queried state, the framebuffer and the memory in
 use, compared before and after).
+
+--backend says what runs the calls: "python" (gles.Context, the default),
+"checked" (gles.Context with check_errors=True: every GL error must raise
+GLError at its call), "cabi" (gles's own libGLESv1_CM and libEGL through
+CabiContext below, a ctypes harness that passes only pointers a correct C
+program could, and now and then NULL) or "mixed" (one of the three per seed).
 
 Sequences run in worker processes, so a crash or a hang (a call taking more
 than --call-timeout seconds) is caught too. A failing sequence is shrunk to
