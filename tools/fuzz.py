@@ -831,8 +831,10 @@ def make_sequence(seed: int, max_calls: int = 120, backend: str = "python") -> t
     """The context and the calls of one seed on one backend (deterministic).
 
     backend "mixed" picks one per seed: python, checked, cabi for seed % 3 =
-    0, 1, 2. A seed makes the same calls on every backend; the C ABI has no
-    range-check policy, so its setups say "off".
+    0, 1, 2. A seed makes the same context and calls on every backend,
+    except that on the C ABI (which has no range-check policy: its setups
+    say "off") about one call in twenty that takes a pointer becomes the
+    same call with NULL pointers.
     """
     if backend == "mixed":
         backend = BACKENDS[seed % 3]
