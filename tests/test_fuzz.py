@@ -169,3 +169,23 @@ def test_the_c_abi_snapshot_sees_the_c_context(monkeypatch: pytest.MonkeyPatch) 
         fuzz.run_sequence(setup, calls)
     assert info.value.index == 1
     assert info.value.kind == "state changed by glLineWidthx"
+
+
+def test_the_checked_invariant_catches_an_error_not_raised(monkeypatch: pytest.MonkeyPatch) -> None:
+    """With check_errors=True every GL error must raise GLError at its call:
+    a command that records one silently (simulated) breaks the invariant."""
+    from gles import constants as C
+    from gles import context
+
+    checked = context._GL_CLASSES[("common", False, True)]
+
+    def silent(self: object) -> None:
+        self._lib.gles_set_error(self._p, C.GL_INVALID_OPERATION)  # type: ignore[attr-defined]
+
+    monkeypatch.setattr(checked, "glFlush", silent)
+    setup = fuzz.Setup(4, 4, "common", "double", "rgba8888", 0, 0, "off", 1 << 20, backend="checked")
+    calls = [fuzz.Call("glLineWidth", [fuzz.Val(-1.0, "-1.0")]), fuzz.Call("glFlush", [])]
+    with pytest.raises(fuzz.Failure) as info:
+        fuzz.run_sequence(setup, calls)
+    assert info.value.index == 1
+    assert info.value.kind == "error not raised by glFlush"
