@@ -1182,13 +1182,17 @@ def _c_params(name: str) -> list[str]:
     return _C_PARAMS.get(name, [])
 
 
-def _check_c_ints(name: str, args: list[Any]) -> None:
-    """Refuse an int a C caller could not pass: ctypes would wrap it silently,
-    while the harness sizes memory by the value given."""
+def _to_c_ints(name: str, args: list[Any]) -> list[Any]:
+    """The arguments with each int converted to its parameter's C type as C
+    converts it (modulo 2^bits), as the entry point will see it: ctypes
+    would wrap it silently, after the harness sized memory by the value."""
+    out = list(args)
     for i, (ctype, v) in enumerate(zip(_c_params(name), args)):
         bounds = _C_INT_RANGES.get(ctype)
         if bounds and _is_address(v) and not bounds[0] <= v <= bounds[1]:
-            raise ValueError(f"harness: argument {i + 1} of {name}, {v}, does not fit {ctype}")
+            lo, hi = bounds
+            out[i] = (int(v) - lo) % (hi - lo + 1) + lo
+    return out
 
 
 def _is_address(v: Any) -> bool:
@@ -1348,7 +1352,6 @@ class CabiContext:
 def _guard(cc: CabiContext, name: str, args: list[Any]) -> None:
     """Refuse (ValueError) a call whose pointers a correct C program would not pass."""
     v = cc.view
-    _check_c_ints(name, args)
     if name in _POINTER_COMMANDS:
         if _is_address(args[-1]) and args[-1] and not v.get_int(C.GL_ARRAY_BUFFER_BINDING):
             raise ValueError("harness: an int array pointer needs a bound array buffer")
@@ -1422,8 +1425,9 @@ class _GuardedGL:
             return fn
         cc = self._cc
 
-        def command(*args: Any) -> Any:
-            _guard(cc, name, list(args))
+        def command(*given: Any) -> Any:
+            args = _to_c_ints(name, list(given))
+            _guard(cc, name, args)
             if name in ("glBufferData", "glBufferSubData") and len(args) == 4:
                 target = args[0]
                 binding = {
@@ -1449,6 +1453,7 @@ class _GuardedGL:
         cargs = [
             None if t == "*" else (args[i] if i < len(args) else 0) for i, t in enumerate(_c_params(name))
         ]
+        cargs = _to_c_ints(name, cargs)
         _guard(cc, name, cargs)
         cc.library.make_current()
         try:
