@@ -547,3 +547,59 @@ def test_c_abi_null_pointers_do_nothing(profile: str) -> None:
     assert p.returncode == 0, p.stderr[-2000:]
     calls = int(p.stdout.split()[-1])
     assert calls >= (50 if profile == "common" else 33)
+
+
+_OVERREAD_SCRIPT = r"""
+import ctypes, mmap, sys
+from gles import cabi, constants as C
+from gles.mesa import LibraryContext
+
+profile = sys.argv[1]
+ctx = LibraryContext(4, 4, str(cabi.library("EGL", "fixed", profile)),
+                     str(cabi.library("GLESv1_CM", "fixed", profile)))
+gl = ctx.gl
+# one value just before an inaccessible page: reading a second one faults
+page = mmap.PAGESIZE
+libc = ctypes.CDLL(None)
+libc.mmap.restype = ctypes.c_void_p
+libc.mmap.argtypes = [ctypes.c_void_p, ctypes.c_size_t, ctypes.c_int, ctypes.c_int, ctypes.c_int,
+                      ctypes.c_long]
+libc.mprotect.argtypes = [ctypes.c_void_p, ctypes.c_size_t, ctypes.c_int]
+base = libc.mmap(None, 2 * page, mmap.PROT_READ | mmap.PROT_WRITE,
+                 mmap.MAP_PRIVATE | mmap.MAP_ANONYMOUS, -1, 0)
+assert libc.mprotect(base + page, page, 0) == 0   # PROT_NONE
+last = base + page - 4
+gl.glBindTexture(C.GL_TEXTURE_2D, 1)
+# (command, a pname with more values for another command, its target or light if any)
+cases = [("Fog", C.GL_AMBIENT, ()), ("LightModel", C.GL_FOG_COLOR, ()),
+         ("Light", C.GL_EMISSION, (C.GL_LIGHT0,)), ("Material", C.GL_POSITION, (C.GL_FRONT,)),
+         ("Material", C.GL_SPOT_DIRECTION, (C.GL_FRONT,)), ("PointParameter", C.GL_SPOT_DIRECTION, ()),
+         ("TexEnv", C.GL_TEXTURE_CROP_RECT_OES, (C.GL_TEXTURE_ENV,)),
+         ("TexParameter", C.GL_TEXTURE_ENV_COLOR, (C.GL_TEXTURE_2D,))]
+calls = 0
+for stem, pname, first in cases:
+    for suffix in ("xv", "fv", "iv"):
+        fn = ctx._raw.get("gl" + stem + suffix)
+        if fn is None:
+            continue
+        fn(*first, pname, last)
+        assert gl.glGetError() == C.GL_INVALID_ENUM, (stem + suffix, hex(pname))
+        calls += 1
+print("ok", calls)
+"""
+
+
+@pytest.mark.parametrize("profile", ["common", "common-lite"])
+def test_c_abi_vector_commands_read_what_the_command_takes(profile: str) -> None:
+    """glFogxv(GL_AMBIENT, params) read four values (AMBIENT takes four, for
+    lights) before the core refused the enum: a C caller's one value was
+    over-read. Each vector command now reads the count of a pname it
+    accepts, else one; here the value sits before an inaccessible page, so
+    a second read faults. Run in a subprocess so a crash fails the test."""
+    import subprocess
+    import sys
+
+    p = subprocess.run([sys.executable, "-c", _OVERREAD_SCRIPT, profile],
+                       capture_output=True, text=True, timeout=120)
+    assert p.returncode == 0, p.stderr[-2000:]
+    assert int(p.stdout.split()[-1]) == (18 if profile == "common" else 10)

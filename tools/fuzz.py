@@ -39,6 +39,7 @@ import os
 import pickle
 import queue
 import random
+import re
 import subprocess
 import sys
 import tempfile
@@ -1170,8 +1171,6 @@ _C_PARAMS: dict[str, list[str]] = {}
 def _c_params(name: str) -> list[str]:
     """The parameter types of a GL command in GLES/gl.h and glext.h ("*" for a pointer)."""
     if not _C_PARAMS:
-        import re
-
         from gles import cabi
 
         for header in ("gl.h", "glext.h"):
@@ -1223,8 +1222,10 @@ class CabiContext:
     own: an int address outside a buffer object, a draw reading past the
     client arrays given, image data shorter than the image, and output
     arrays too large to allocate. Every other argument reaches the C entry
-    point as given. ``view`` reads the core context behind the EGL context;
-    the memory budget (256 MiB by default for C contexts) is set through it.
+    point as given, ints converted to their C types as C converts them;
+    ``gl.null_pointers(name, ...)`` passes NULL for every pointer. ``view``
+    reads the core context behind the EGL context; the memory budget (256
+    MiB by default for C contexts) is set through it.
     """
 
     def __init__(
@@ -1349,9 +1350,46 @@ class CabiContext:
         return int(np.frombuffer(raw, dtype).max())
 
 
+# the values a vector command reads (csrc/cabi/gl.c's param_count): these
+# pnames' counts, else 1
+_VECTOR_COUNTS = {
+    "Light": {C.GL_AMBIENT: 4, C.GL_DIFFUSE: 4, C.GL_SPECULAR: 4, C.GL_POSITION: 4, C.GL_SPOT_DIRECTION: 3},
+    "Material": {
+        C.GL_AMBIENT: 4,
+        C.GL_DIFFUSE: 4,
+        C.GL_SPECULAR: 4,
+        C.GL_EMISSION: 4,
+        C.GL_AMBIENT_AND_DIFFUSE: 4,
+    },
+    "LightModel": {C.GL_LIGHT_MODEL_AMBIENT: 4},
+    "Fog": {C.GL_FOG_COLOR: 4},
+    "PointParameter": {C.GL_POINT_DISTANCE_ATTENUATION: 3},
+    "TexParameter": {C.GL_TEXTURE_CROP_RECT_OES: 4},
+    "TexEnv": {C.GL_TEXTURE_ENV_COLOR: 4},
+}
+_VECTOR_COMMAND = re.compile(r"gl(LightModel|Light|Material|Fog|PointParameter|TexParameter|TexEnv)[fix]v$")
+
+
+def _values(obj: Any) -> int | None:
+    """How many values a vector argument holds (None: the wrapper decides)."""
+    if isinstance(obj, np.ndarray):
+        return obj.size
+    if isinstance(obj, (bytes, bytearray)):
+        return len(obj) // 4
+    if isinstance(obj, (list, tuple)):
+        return len(obj)
+    return 1 if isinstance(obj, float) else None
+
+
 def _guard(cc: CabiContext, name: str, args: list[Any]) -> None:
     """Refuse (ValueError) a call whose pointers a correct C program would not pass."""
     v = cc.view
+    vector = _VECTOR_COMMAND.match(name)
+    if vector and len(args) >= 2 and args[-1] is not None:
+        need = _VECTOR_COUNTS[vector.group(1)].get(args[-2], 1)
+        held = _values(args[-1])
+        if held is not None and held < need:
+            raise ValueError(f"harness: {name} reads {need} values, the array holds {held}")
     if name in _POINTER_COMMANDS:
         if _is_address(args[-1]) and args[-1] and not v.get_int(C.GL_ARRAY_BUFFER_BINDING):
             raise ValueError("harness: an int array pointer needs a bound array buffer")
