@@ -1146,6 +1146,7 @@ _POINTER_COMMANDS = {
 }
 NULL_CALLS = 0.05  # the share of C ABI calls with pointers that pass NULL
 _MAX_NAMES = 1 << 16  # glGen*(n): the names array the harness allocates
+_MAX_IMAGE_SIDE = 1 << 16  # past GL_MAX_TEXTURE_SIZE
 _MAX_READ_PIXELS = 1 << 22  # glReadPixels: the pixels the harness allocates room for
 
 
@@ -1413,7 +1414,9 @@ def _guard(cc: CabiContext, name: str, args: list[Any]) -> None:
         if _is_address(data):
             if data:
                 raise ValueError("harness: an int image pointer (ES 1.1 has no pixel buffers)")
-        elif data is not None and all(_is_address(x) and -(2**31) <= x < 2**31 for x in (w, h, fmt, typ)):
+        elif data is not None and all(_is_address(x) and 0 < x <= _MAX_IMAGE_SIDE for x in (w, h)):
+            # texture_image_bytes is defined for sizes the core accepts; it
+            # refuses larger ones before it reads (if not, a sanitizer sees it)
             need = int(v.lib.texture_image_bytes(v.p, w, h, fmt & 0xFFFFFFFF, typ & 0xFFFFFFFF))
             raw = _client_bytes(data, np.uint8)
             if raw is None or need > len(raw):
