@@ -473,3 +473,136 @@ def test_fixed_matrix_products_of_extreme_entries() -> None:
         images.append(ctx.color_buffer())
     assert np.array_equal(images[0], images[1])
 
+
+
+# {====================================================================
+# the C ABI: NULL where a command reads or writes values
+
+_NULL_SCRIPT = r"""
+import sys
+sys.path.insert(0, sys.argv[3])
+import gen_cabi
+from gles import cabi, constants as C
+from gles.mesa import LibraryContext
+
+numeric, profile = sys.argv[1], sys.argv[2]
+ctx = LibraryContext(4, 4, str(cabi.library("EGL", numeric, profile)),
+                     str(cabi.library("GLESv1_CM", numeric, profile)))
+gl = ctx.gl
+gl.glBindTexture(C.GL_TEXTURE_2D, 1)
+gl.glBindBuffer(C.GL_ARRAY_BUFFER, 2)
+gl.glBufferData(C.GL_ARRAY_BUFFER, 16, None, C.GL_STATIC_DRAW)
+# a valid value for each scalar argument, so that only the pointer is wrong
+PNAME = {"glGetBufferParameteriv": C.GL_BUFFER_SIZE, "glGetPointerv": C.GL_VERTEX_ARRAY_POINTER,
+         "Fog": C.GL_FOG_COLOR, "LightModel": C.GL_LIGHT_MODEL_AMBIENT, "Light": C.GL_AMBIENT,
+         "Material": C.GL_AMBIENT, "TexEnv": C.GL_TEXTURE_ENV_COLOR,
+         "TexParameter": C.GL_TEXTURE_CROP_RECT_OES, "PointParameter": C.GL_POINT_DISTANCE_ATTENUATION}
+SCALAR = {"n": 4, "light": C.GL_LIGHT0, "face": C.GL_FRONT, "plane": C.GL_CLIP_PLANE0, "p": C.GL_CLIP_PLANE0,
+          "width": 2, "height": 2, "format": C.GL_RGBA, "type": C.GL_UNSIGNED_BYTE}
+
+
+def value(name, param):
+    if param == "pname":
+        return next((v for k, v in PNAME.items() if k in name), C.GL_VIEWPORT)
+    if param == "target":
+        return C.GL_TEXTURE_ENV if "TexEnv" in name else (
+            C.GL_ARRAY_BUFFER if "Buffer" in name else C.GL_TEXTURE_2D)
+    return SCALAR.get(param, 0)
+
+
+def state():
+    return [bytes(gl.glReadPixels(0, 0, 4, 4, C.GL_RGBA, C.GL_UNSIGNED_BYTE))] + [
+        gl.glGetFixedv(p).tobytes()
+        for p in (C.GL_MODELVIEW_MATRIX, C.GL_FOG_COLOR, C.GL_LIGHT_MODEL_AMBIENT)]
+
+
+before, calls = state(), 0
+for name, (ret, args, params) in sorted(gen_cabi.prototypes().items()):
+    fn = ctx._raw.get(name)
+    types = args.split(",")
+    checked = [p for p, t in zip(params, types) if "*" in t and gen_cabi.NULL_OK.get(name) != p]
+    if fn is None or not checked:
+        continue
+    fn(*[None if "*" in t else value(name, p) for p, t in zip(params, types)])
+    err = gl.glGetError()
+    assert err == 0, (name, hex(err))
+    calls += 1
+assert state() == before
+print("ok", calls)
+"""
+
+
+@pytest.mark.parametrize("profile", ["common", "common-lite"])
+def test_c_abi_null_pointers_do_nothing(profile: str) -> None:
+    """A C caller's NULL for a pointer the command reads or writes (a query's
+    output, a matrix, a parameter vector, glReadPixels' pixels, a names
+    array) used to be dereferenced: glReadPixels(..., NULL) crashed. Every
+    such entry point now does nothing (no error, no state change); NULL
+    where GL gives it a meaning (data, pixels, array pointers, indices)
+    still reaches the core. Run in a subprocess so a crash fails the test."""
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    tools = str(Path(__file__).resolve().parent.parent / "tools")
+    p = subprocess.run([sys.executable, "-c", _NULL_SCRIPT, "fixed", profile, tools],
+                       capture_output=True, text=True, timeout=120)
+    assert p.returncode == 0, p.stderr[-2000:]
+    calls = int(p.stdout.split()[-1])
+    assert calls >= (50 if profile == "common" else 33)
+
+
+_OVERREAD_SCRIPT = r"""
+import ctypes, mmap, sys
+from gles import cabi, constants as C
+from gles.mesa import LibraryContext
+
+profile = sys.argv[1]
+ctx = LibraryContext(4, 4, str(cabi.library("EGL", "fixed", profile)),
+                     str(cabi.library("GLESv1_CM", "fixed", profile)))
+gl = ctx.gl
+# one value just before an inaccessible page: reading a second one faults
+page = mmap.PAGESIZE
+libc = ctypes.CDLL(None)
+libc.mmap.restype = ctypes.c_void_p
+libc.mmap.argtypes = [ctypes.c_void_p, ctypes.c_size_t, ctypes.c_int, ctypes.c_int, ctypes.c_int,
+                      ctypes.c_long]
+libc.mprotect.argtypes = [ctypes.c_void_p, ctypes.c_size_t, ctypes.c_int]
+base = libc.mmap(None, 2 * page, mmap.PROT_READ | mmap.PROT_WRITE,
+                 mmap.MAP_PRIVATE | mmap.MAP_ANONYMOUS, -1, 0)
+assert libc.mprotect(base + page, page, 0) == 0   # PROT_NONE
+last = base + page - 4
+gl.glBindTexture(C.GL_TEXTURE_2D, 1)
+# (command, a pname with more values for another command, its target or light if any)
+cases = [("Fog", C.GL_AMBIENT, ()), ("LightModel", C.GL_FOG_COLOR, ()),
+         ("Light", C.GL_EMISSION, (C.GL_LIGHT0,)), ("Material", C.GL_POSITION, (C.GL_FRONT,)),
+         ("Material", C.GL_SPOT_DIRECTION, (C.GL_FRONT,)), ("PointParameter", C.GL_SPOT_DIRECTION, ()),
+         ("TexEnv", C.GL_TEXTURE_CROP_RECT_OES, (C.GL_TEXTURE_ENV,)),
+         ("TexParameter", C.GL_TEXTURE_ENV_COLOR, (C.GL_TEXTURE_2D,))]
+calls = 0
+for stem, pname, first in cases:
+    for suffix in ("xv", "fv", "iv"):
+        fn = ctx._raw.get("gl" + stem + suffix)
+        if fn is None:
+            continue
+        fn(*first, pname, last)
+        assert gl.glGetError() == C.GL_INVALID_ENUM, (stem + suffix, hex(pname))
+        calls += 1
+print("ok", calls)
+"""
+
+
+@pytest.mark.parametrize("profile", ["common", "common-lite"])
+def test_c_abi_vector_commands_read_what_the_command_takes(profile: str) -> None:
+    """glFogxv(GL_AMBIENT, params) read four values (AMBIENT takes four, for
+    lights) before the core refused the enum: a C caller's one value was
+    over-read. Each vector command now reads the count of a pname it
+    accepts, else one; here the value sits before an inaccessible page, so
+    a second read faults. Run in a subprocess so a crash fails the test."""
+    import subprocess
+    import sys
+
+    p = subprocess.run([sys.executable, "-c", _OVERREAD_SCRIPT, profile],
+                       capture_output=True, text=True, timeout=120)
+    assert p.returncode == 0, p.stderr[-2000:]
+    assert int(p.stdout.split()[-1]) == (18 if profile == "common" else 10)

@@ -3,6 +3,7 @@
     python tools/fuzz.py --minutes N --seed S      # seeds S, S+1, ... for N minutes
     python tools/fuzz.py --seeds 0:200             # a fixed seed range (CI)
     python tools/fuzz.py --replay 123              # one sequence, in this process
+    python tools/fuzz.py --backend cabi ...        # the same through the C ABI
 
 Each seed makes one context (random build, profile, colour format, depth and
 stencil bits, size, range-check policy and memory limit) and a sequence of
@@ -19,6 +20,12 @@ six error codes; and a call that raised or recorded an error left the state
 as it was (a snapshot of queried state, the framebuffer and the memory in
 use, compared before and after).
 
+--backend says what runs the calls: "python" (gles.Context, the default),
+"checked" (gles.Context with check_errors=True: every GL error must raise
+GLError at its call), "cabi" (gles's own libGLESv1_CM and libEGL through
+CabiContext below, a ctypes harness that passes only pointers a correct C
+program could, and now and then NULL) or "mixed" (one of the three per seed).
+
 Sequences run in worker processes, so a crash or a hang (a call taking more
 than --call-timeout seconds) is caught too. A failing sequence is shrunk to
 a minimal one that fails the same way and printed as a few lines of Python.
@@ -32,6 +39,7 @@ import os
 import pickle
 import queue
 import random
+import re
 import subprocess
 import sys
 import tempfile
@@ -793,12 +801,21 @@ class Setup:
     stencil: int
     range_check: str
     memory_limit: int
+    backend: str = "python"  # "python", "checked" (check_errors=True) or "cabi"
 
     def text(self) -> str:
+        if self.backend == "cabi":
+            return (
+                f"ctx = fuzz.CabiContext({self.width}, {self.height}, profile={self.profile!r}, "
+                f"numeric={self.numeric!r}, color={self.color!r}, depth={self.depth}, "
+                f"stencil={self.stencil}, memory_limit={self.memory_limit})"
+            )
+        checked = "\nctx.check_errors = True" if self.backend == "checked" else ""
         return (
             f"ctx = gles.Context({self.width}, {self.height}, profile={self.profile!r}, "
             f"numeric={self.numeric!r}, color={self.color!r}, depth={self.depth}, "
             f"stencil={self.stencil}, range_check={self.range_check!r}, memory_limit={self.memory_limit})"
+            + checked
         )
 
 
@@ -811,8 +828,19 @@ class Call:
         return f"g.{self.name}({', '.join(a.text for a in self.args)})"
 
 
-def make_sequence(seed: int, max_calls: int = 120) -> tuple[Setup, list[Call]]:
-    """The context and the calls of one seed (deterministic)."""
+def make_sequence(seed: int, max_calls: int = 120, backend: str = "python") -> tuple[Setup, list[Call]]:
+    """The context and the calls of one seed on one backend (deterministic).
+
+    backend "mixed" picks one per seed: python, checked, cabi for seed % 3 =
+    0, 1, 2. A seed makes the same context and calls on every backend,
+    except that on the C ABI (which has no range-check policy: its setups
+    say "off") about one call in twenty that takes a pointer becomes the
+    same call with NULL pointers.
+    """
+    if backend == "mixed":
+        backend = BACKENDS[seed % 3]
+    if backend not in BACKENDS:
+        raise ValueError(f"backend must be one of {BACKENDS} or 'mixed', not {backend!r}")
     r = random.Random(seed)
     setup = Setup(
         r.randint(1, 40),
@@ -832,6 +860,18 @@ def make_sequence(seed: int, max_calls: int = 120) -> tuple[Setup, list[Call]]:
     weights = [WEIGHTS.get(n, 1) for n in pool]
     g = Gen(r)
     calls = [Call(name, SPECS[name](g)) for name in r.choices(pool, weights, k=r.randint(10, max_calls))]
+    setup.backend = backend
+    if backend == "cabi":
+        setup.range_check = "off"
+        # a few calls with NULL for their pointers (what only C can pass)
+        nr = random.Random(f"null {seed}")
+        for i, call in enumerate(calls):
+            if "*" in _c_params(call.name) and nr.random() < NULL_CALLS:
+                args = [
+                    Val(None, "None") if isinstance(a.value, (list, bytes, bytearray, np.ndarray)) else a
+                    for a in call.args
+                ]
+                calls[i] = Call("null_pointers", [Val(call.name, repr(call.name))] + args)
     return setup, calls
 
 
@@ -847,43 +887,97 @@ def commands_covered() -> tuple[set[str], set[str]]:
 # running and the invariant
 
 ALLOWED = (GLError, TypeError, ValueError)
+BACKENDS = ("python", "checked", "cabi")
 
 
-def snapshot(ctx: gles.Context) -> tuple:
+class CoreView:
+    """The core context behind a backend, read through the core library's own
+    functions: exact doubles, the same for gles.Context and the C ABI (whose
+    entry points are a thin layer over the same core)."""
+
+    def __init__(
+        self, lib: Any, ffi: Any, p: Any, width: int, height: int, color: str, depth: int, stencil: int
+    ) -> None:
+        self.lib, self.ffi, self.p = lib, ffi, p
+        self.width, self.height, self.color, self.depth, self.stencil = width, height, color, depth, stencil
+        self._d16 = ffi.new("double[16]")
+        self._kind = ffi.new("int *")
+        self._d4 = ffi.new("double[4]")
+
+    def get(self, pname: int) -> tuple[float, ...]:
+        n = self.lib.gles_get(self.p, pname, self._d16, self._kind)
+        return tuple(self._d16[i] for i in range(n))
+
+    def get_int(self, pname: int) -> int:
+        v = self.get(pname)
+        return int(v[0]) if v else 0
+
+    def is_enabled(self, cap: int) -> bool:
+        return bool(self.lib.gles_IsEnabled(self.p, cap))
+
+    def pointer(self, pname: int) -> int:
+        return int(self.lib.gles_GetPointer(self.p, pname))
+
+    def lm(self, fn: str, target: int, pname: int) -> tuple[float, ...]:
+        n = getattr(self.lib, fn)(self.p, target, pname, self._d4)
+        return tuple(self._d4[i] for i in range(n))
+
+    def buffer_size(self, target: int) -> int:
+        out = self.ffi.new("int[1]")
+        self.lib.gles_GetBufferParameteriv(self.p, target, C.GL_BUFFER_SIZE, out)
+        return int(out[0])
+
+    def peek_error(self) -> int:
+        """The pending GL error, left pending."""
+        err = self.lib.gles_GetError(self.p)
+        if err:
+            self.lib.gles_set_error(self.p, err)
+        return int(err)
+
+    def framebuffer(self) -> tuple[bytes, bytes | None, bytes | None]:
+        n = self.width * self.height
+        lib, ffi, p = self.lib, self.ffi, self.p
+        color = bytes(ffi.buffer(lib.gles_color_buffer(p), n * (2 if self.color == "rgb565" else 4)))
+        depth = bytes(ffi.buffer(lib.gles_depth_buffer(p), n * 4)) if self.depth else None
+        stencil = bytes(ffi.buffer(lib.gles_stencil_buffer(p), n)) if self.stencil else None
+        return color, depth, stencil
+
+
+def context_view(ctx: gles.Context) -> CoreView:
+    return CoreView(
+        ctx._lib, ctx._ffi, ctx._ptr, ctx.width, ctx.height, ctx.color, ctx.depth_bits, ctx.stencil_bits
+    )
+
+
+def snapshot(view: CoreView) -> tuple:
     """The state an erring call must leave alone, as exact doubles."""
-    g = ctx.gl
     s: list[Any] = []
     for p in SNAP_GET:
-        s.append(tuple(g._get(p)[0]))
+        s.append(view.get(p))
     for p in CAPS + CLIENT:
-        s.append(g.glIsEnabled(p))
+        s.append(view.is_enabled(p))
     for p in POINTER_P:
-        s.append(g.glGetPointerv(p))
+        s.append(view.pointer(p))
     for light in (C.GL_LIGHT0, C.GL_LIGHT1):
         for p in LIGHT_P:
-            s.append(tuple(g._get_lm(g._lib.gles_GetLight, light, p)))
+            s.append(view.lm("gles_GetLight", light, p))
     for face in (C.GL_FRONT, C.GL_BACK):
         for p in MAT_P[:5]:
-            s.append(tuple(g._get_lm(g._lib.gles_GetMaterial, face, p)))
+            s.append(view.lm("gles_GetMaterial", face, p))
     for p in ENV_P[:-1]:
-        s.append(tuple(g._get_lm(g._lib.gles_GetTexEnv, C.GL_TEXTURE_ENV, p)))
+        s.append(view.lm("gles_GetTexEnv", C.GL_TEXTURE_ENV, p))
     for p in TEXP:
-        s.append(tuple(g._get_lm(g._lib.gles_GetTexParameter, C.GL_TEXTURE_2D, p)))
-    eq = g._ffi.new("double[4]")
-    g._lib.gles_GetClipPlane(g._p, C.GL_CLIP_PLANE0, eq)
+        s.append(view.lm("gles_GetTexParameter", C.GL_TEXTURE_2D, p))
+    eq = view.ffi.new("double[4]")
+    view.lib.gles_GetClipPlane(view.p, C.GL_CLIP_PLANE0, eq)
     s.append(tuple(eq))
     for name in range(1, 7):
-        s.append((g.glIsBuffer(name), g.glIsTexture(name)))
+        s.append((bool(view.lib.gles_IsBuffer(view.p, name)), bool(view.lib.gles_IsTexture(view.p, name))))
     for t in BUF_T:
-        out = g._ffi.new("int[1]")
-        g._lib.gles_GetBufferParameteriv(g._p, t, C.GL_BUFFER_SIZE, out)
-        s.append(int(out[0]))
-    s.append(ctx.memory_used)
-    s.append(ctx.color_buffer().tobytes())
-    d, st = ctx.depth_buffer(), ctx.stencil_buffer()
-    s.append(None if d is None else d.tobytes())
-    s.append(None if st is None else st.tobytes())
-    g._lib.gles_GetError(g._p)  # the snapshot's own queries must not leave an error
+        s.append(view.buffer_size(t))
+    s.append(int(view.lib.gles_memory_used(view.p)))
+    s.extend(view.framebuffer())
+    view.lib.gles_GetError(view.p)  # the snapshot's own queries must not leave an error
     return tuple(repr(v) if isinstance(v, tuple) else v for v in s)
 
 
@@ -971,9 +1065,462 @@ class Failure(Exception):
         self.index, self.kind, self.detail = index, kind, detail
 
 
-def run_sequence(setup: Setup, calls: list[Call], check_state: bool = True) -> int:
-    """Run the calls on a new context; raise Failure where the invariant
-    breaks. Returns the number of calls made."""
+# {====================================================================
+# the C ABI harness: what a careful C program may pass
+
+# per client array: (cap, size pname or a fixed size, type, stride, binding, pointer)
+_ARRAYS = [
+    (
+        C.GL_VERTEX_ARRAY,
+        C.GL_VERTEX_ARRAY_SIZE,
+        C.GL_VERTEX_ARRAY_TYPE,
+        C.GL_VERTEX_ARRAY_STRIDE,
+        C.GL_VERTEX_ARRAY_BUFFER_BINDING,
+        C.GL_VERTEX_ARRAY_POINTER,
+    ),
+    (
+        C.GL_NORMAL_ARRAY,
+        3,
+        C.GL_NORMAL_ARRAY_TYPE,
+        C.GL_NORMAL_ARRAY_STRIDE,
+        C.GL_NORMAL_ARRAY_BUFFER_BINDING,
+        C.GL_NORMAL_ARRAY_POINTER,
+    ),
+    (
+        C.GL_COLOR_ARRAY,
+        C.GL_COLOR_ARRAY_SIZE,
+        C.GL_COLOR_ARRAY_TYPE,
+        C.GL_COLOR_ARRAY_STRIDE,
+        C.GL_COLOR_ARRAY_BUFFER_BINDING,
+        C.GL_COLOR_ARRAY_POINTER,
+    ),
+    (
+        C.GL_POINT_SIZE_ARRAY_OES,
+        1,
+        C.GL_POINT_SIZE_ARRAY_TYPE_OES,
+        C.GL_POINT_SIZE_ARRAY_STRIDE_OES,
+        C.GL_POINT_SIZE_ARRAY_BUFFER_BINDING_OES,
+        C.GL_POINT_SIZE_ARRAY_POINTER_OES,
+    ),
+    (
+        C.GL_MATRIX_INDEX_ARRAY_OES,
+        C.GL_MATRIX_INDEX_ARRAY_SIZE_OES,
+        C.GL_MATRIX_INDEX_ARRAY_TYPE_OES,
+        C.GL_MATRIX_INDEX_ARRAY_STRIDE_OES,
+        C.GL_MATRIX_INDEX_ARRAY_BUFFER_BINDING_OES,
+        C.GL_MATRIX_INDEX_ARRAY_POINTER_OES,
+    ),
+    (
+        C.GL_WEIGHT_ARRAY_OES,
+        C.GL_WEIGHT_ARRAY_SIZE_OES,
+        C.GL_WEIGHT_ARRAY_TYPE_OES,
+        C.GL_WEIGHT_ARRAY_STRIDE_OES,
+        C.GL_WEIGHT_ARRAY_BUFFER_BINDING_OES,
+        C.GL_WEIGHT_ARRAY_POINTER_OES,
+    ),
+]
+_TEXCOORD_ARRAY = (
+    C.GL_TEXTURE_COORD_ARRAY,
+    C.GL_TEXTURE_COORD_ARRAY_SIZE,
+    C.GL_TEXTURE_COORD_ARRAY_TYPE,
+    C.GL_TEXTURE_COORD_ARRAY_STRIDE,
+    C.GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING,
+    C.GL_TEXTURE_COORD_ARRAY_POINTER,
+)
+_TYPE_BYTES = {
+    C.GL_BYTE: 1,
+    C.GL_UNSIGNED_BYTE: 1,
+    C.GL_SHORT: 2,
+    C.GL_UNSIGNED_SHORT: 2,
+    C.GL_FIXED: 4,
+    C.GL_FLOAT: 4,
+}
+_POINTER_COMMANDS = {
+    "glVertexPointer",
+    "glColorPointer",
+    "glNormalPointer",
+    "glTexCoordPointer",
+    "glPointSizePointerOES",
+    "glMatrixIndexPointerOES",
+    "glWeightPointerOES",
+}
+NULL_CALLS = 0.05  # the share of C ABI calls with pointers that pass NULL
+_MAX_NAMES = 1 << 16  # glGen*(n): the names array the harness allocates
+_MAX_IMAGE_SIDE = 1 << 16  # past GL_MAX_TEXTURE_SIZE
+_MAX_READ_PIXELS = 1 << 22  # glReadPixels: the pixels the harness allocates room for
+
+
+# the values a C caller can pass for each integer type of the Khronos headers
+_C_INT_RANGES = {
+    "GLenum": (0, 2**32 - 1),
+    "GLuint": (0, 2**32 - 1),
+    "GLbitfield": (0, 2**32 - 1),
+    "GLint": (-(2**31), 2**31 - 1),
+    "GLsizei": (-(2**31), 2**31 - 1),
+    "GLfixed": (-(2**31), 2**31 - 1),
+    "GLclampx": (-(2**31), 2**31 - 1),
+    "GLshort": (-(2**15), 2**15 - 1),
+    "GLbyte": (-128, 127),
+    "GLubyte": (0, 255),
+    "GLboolean": (0, 255),
+    "GLintptr": (-(2**63), 2**63 - 1),
+    "GLsizeiptr": (-(2**63), 2**63 - 1),
+}
+_C_PARAMS: dict[str, list[str]] = {}
+
+
+def _c_params(name: str) -> list[str]:
+    """The parameter types of a GL command in GLES/gl.h and glext.h ("*" for a pointer)."""
+    if not _C_PARAMS:
+        from gles import cabi
+
+        for header in ("gl.h", "glext.h"):
+            text = (cabi.include_dir() / "GLES" / header).read_text()
+            for m in re.finditer(r"GL_API \w[\w\s*]*?GL_APIENTRY (\w+) \(([^)]*)\);", text):
+                params = [q.strip() for q in m.group(2).split(",") if q.strip() not in ("", "void")]
+                _C_PARAMS[m.group(1)] = ["*" if "*" in q else q.split()[-2] for q in params]
+    return _C_PARAMS.get(name, [])
+
+
+def _to_c_ints(name: str, args: list[Any]) -> list[Any]:
+    """The arguments with each int converted to its parameter's C type as C
+    converts it (modulo 2^bits), as the entry point will see it: ctypes
+    would wrap it silently, after the harness sized memory by the value."""
+    out = list(args)
+    for i, (ctype, v) in enumerate(zip(_c_params(name), args)):
+        bounds = _C_INT_RANGES.get(ctype)
+        if bounds and _is_address(v) and not bounds[0] <= v <= bounds[1]:
+            lo, hi = bounds
+            out[i] = (int(v) - lo) % (hi - lo + 1) + lo
+    return out
+
+
+def _is_address(v: Any) -> bool:
+    return isinstance(v, (int, np.integer)) and not isinstance(v, bool)
+
+
+def _client_bytes(obj: Any, dtype: Any) -> bytes | None:
+    """The bytes the C ABI wrapper would pass for client data `obj`."""
+    if isinstance(obj, np.ndarray):
+        return obj.tobytes() if obj.flags.c_contiguous else None
+    if isinstance(obj, (bytes, bytearray, memoryview)):
+        return bytes(obj)
+    try:
+        a = np.asarray(obj)
+        if a.dtype.kind not in "biu":
+            return None
+        return np.ascontiguousarray(a, dtype).tobytes()
+    except (TypeError, ValueError, OverflowError):
+        return None
+
+
+class CabiContext:
+    """gles's own libEGL + libGLESv1_CM of one build and profile, driven
+    through gles.mesa.LibraryContext, with the care a correct C program takes.
+
+    C cannot check a pointer, so ``gl`` refuses (ValueError, before C runs)
+    what would make the library read or write memory the caller does not
+    own: an int address outside a buffer object, a draw reading past the
+    client arrays given, image data shorter than the image, and output
+    arrays too large to allocate. Every other argument reaches the C entry
+    point as given, ints converted to their C types as C converts them;
+    ``gl.null_pointers(name, ...)`` passes NULL for every pointer. ``view``
+    reads the core context behind the EGL context; the memory budget (256
+    MiB by default for C contexts) is set through it.
+    """
+
+    def __init__(
+        self,
+        width: int,
+        height: int,
+        *,
+        profile: str,
+        numeric: str,
+        color: str,
+        depth: int,
+        stencil: int,
+        memory_limit: int,
+    ) -> None:
+        import ctypes
+
+        from gles import _binding, cabi, mesa
+
+        self.library = mesa.LibraryContext(
+            width,
+            height,
+            str(cabi.library("EGL", numeric, profile)),
+            str(cabi.library("GLESv1_CM", numeric, profile)),
+            color=color,
+            depth=depth,
+            stencil=stencil,
+        )
+        core = ctypes.CDLL(str(cabi.libdir(numeric, profile).parent.parent / f"libgles_{numeric}.so"))
+        core.gles_cabi_current.restype = ctypes.c_void_p
+        address = core.gles_cabi_current()
+        if not address:
+            raise RuntimeError("the C ABI context has no core context")
+        mod = _binding.core(numeric)
+        self.view = CoreView(
+            mod.lib, mod.ffi, mod.ffi.cast("GlesContext *", address), width, height, color, depth, stencil
+        )
+        self.view.lib.gles_memory_limit(self.view.p, memory_limit)
+        self.buffers: dict[int, bytes | None] = {}  # what each buffer object holds (None: unknown)
+        self.gl = _GuardedGL(self)
+
+    def close(self) -> None:
+        self.library.close()
+
+    def __enter__(self) -> CabiContext:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    # -- what the guards need
+    def _owned(self) -> dict[int, int]:
+        """Address -> bytes of every client array the library may read."""
+        from gles import mesa
+
+        return {mesa._addr(k): k.nbytes for k in self.library._keep.values() if isinstance(k, np.ndarray)}
+
+    def check_arrays(self, max_index: int) -> None:
+        """Refuse a draw that would read a client array past its end."""
+        v = self.view
+        owned = self._owned()
+        units = v.get_int(C.GL_MAX_TEXTURE_UNITS)
+        active = v.get_int(C.GL_CLIENT_ACTIVE_TEXTURE)
+        arrays = [(a, None) for a in _ARRAYS] + [(_TEXCOORD_ARRAY, u) for u in range(units)]
+        try:
+            for (cap, size, typ, stride, binding, pointer), unit in arrays:
+                if unit is not None:
+                    v.lib.gles_ClientActiveTexture(v.p, C.GL_TEXTURE0 + unit)
+                if not v.is_enabled(cap) or v.get_int(binding):
+                    continue  # the core checks buffer objects itself
+                address = v.pointer(pointer)
+                if address == 0:
+                    continue  # the core refuses a NULL array
+                if address not in owned:
+                    raise ValueError(
+                        f"harness: an enabled array points at {address:#x}, memory it does not own"
+                    )
+                elem = (size if isinstance(size, int) and size < 16 else v.get_int(size)) * _TYPE_BYTES.get(
+                    v.get_int(typ), 4
+                )
+                need = max_index * (v.get_int(stride) or elem) + elem
+                if need > owned[address]:
+                    raise ValueError(f"harness: the draw reads {need} bytes of a {owned[address]}-byte array")
+        finally:
+            v.lib.gles_ClientActiveTexture(v.p, active)
+
+    def max_index(self, count: int, typ: int, indices: Any) -> int | None:
+        """The largest index glDrawElements would read (None: it reads none)."""
+        v = self.view
+        isize = {C.GL_UNSIGNED_BYTE: 1, C.GL_UNSIGNED_SHORT: 2}.get(typ)
+        if isize is None or count <= 0:
+            return None
+        dtype = np.uint8 if isize == 1 else np.uint16
+        element = v.get_int(C.GL_ELEMENT_ARRAY_BUFFER_BINDING)
+        if element:
+            if _is_address(indices):
+                offset = int(indices)
+            elif isinstance(indices, np.ndarray):
+                from gles import mesa
+
+                offset = mesa._addr(indices)
+            else:
+                offset = 0 if indices is None else -1
+            data = self.buffers.get(element)
+            if data is None:
+                return 255 if isize == 1 else 65535  # unknown contents: the worst case
+            if not 0 <= offset <= len(data) - count * isize:
+                return None  # the core refuses the range
+            raw = data[offset : offset + count * isize]
+        else:
+            if _is_address(indices):
+                if indices:
+                    raise ValueError("harness: an int index pointer needs a bound element buffer")
+                return None
+            if indices is None:
+                return None
+            raw = _client_bytes(indices, dtype)
+            if raw is None:
+                raise ValueError("harness: index data it cannot read")
+            if len(raw) < count * isize:
+                return None  # the wrapper refuses it (ValueError)
+            raw = raw[: count * isize]
+        return int(np.frombuffer(raw, dtype).max())
+
+
+# the values a vector command reads (csrc/cabi/gl.c's param_count): these
+# pnames' counts, else 1
+_VECTOR_COUNTS = {
+    "Light": {C.GL_AMBIENT: 4, C.GL_DIFFUSE: 4, C.GL_SPECULAR: 4, C.GL_POSITION: 4, C.GL_SPOT_DIRECTION: 3},
+    "Material": {
+        C.GL_AMBIENT: 4,
+        C.GL_DIFFUSE: 4,
+        C.GL_SPECULAR: 4,
+        C.GL_EMISSION: 4,
+        C.GL_AMBIENT_AND_DIFFUSE: 4,
+    },
+    "LightModel": {C.GL_LIGHT_MODEL_AMBIENT: 4},
+    "Fog": {C.GL_FOG_COLOR: 4},
+    "PointParameter": {C.GL_POINT_DISTANCE_ATTENUATION: 3},
+    "TexParameter": {C.GL_TEXTURE_CROP_RECT_OES: 4},
+    "TexEnv": {C.GL_TEXTURE_ENV_COLOR: 4},
+}
+_VECTOR_COMMAND = re.compile(r"gl(LightModel|Light|Material|Fog|PointParameter|TexParameter|TexEnv)[fix]v$")
+
+
+def _values(obj: Any) -> int | None:
+    """How many values a vector argument holds (None: the wrapper decides)."""
+    if isinstance(obj, np.ndarray):
+        return obj.size
+    if isinstance(obj, (bytes, bytearray)):
+        return len(obj) // 4
+    if isinstance(obj, (list, tuple)):
+        return len(obj)
+    return 1 if isinstance(obj, float) else None
+
+
+def _guard(cc: CabiContext, name: str, args: list[Any]) -> None:
+    """Refuse (ValueError) a call whose pointers a correct C program would not pass."""
+    v = cc.view
+    vector = _VECTOR_COMMAND.match(name)
+    if vector and len(args) >= 2 and args[-1] is not None:
+        need = _VECTOR_COUNTS[vector.group(1)].get(args[-2], 1)
+        held = _values(args[-1])
+        if held is not None and held < need:
+            raise ValueError(f"harness: {name} reads {need} values, the array holds {held}")
+    if name in _POINTER_COMMANDS:
+        if _is_address(args[-1]) and args[-1] and not v.get_int(C.GL_ARRAY_BUFFER_BINDING):
+            raise ValueError("harness: an int array pointer needs a bound array buffer")
+    elif name == "glDrawArrays" and len(args) == 3:
+        first, count = args[1], args[2]
+        if _is_address(first) and _is_address(count) and count > 0 and first >= 0:
+            cc.check_arrays(int(first) + int(count) - 1)
+    elif name == "glDrawElements" and len(args) == 4:
+        if _is_address(args[1]) and _is_address(args[2]) and 0 < args[1] < 2**31:
+            hi = cc.max_index(int(args[1]), int(args[2]), args[3])
+            if hi is not None:
+                cc.check_arrays(hi)
+    elif name in ("glTexImage2D", "glTexSubImage2D") and len(args) == 9:
+        data, w, h, fmt, typ = (
+            args[8],
+            args[3 if name == "glTexImage2D" else 4],
+            args[4 if name == "glTexImage2D" else 5],
+            args[6],
+            args[7],
+        )
+        if _is_address(data):
+            if data:
+                raise ValueError("harness: an int image pointer (ES 1.1 has no pixel buffers)")
+        elif data is not None and all(_is_address(x) and 0 < x <= _MAX_IMAGE_SIDE for x in (w, h)):
+            # texture_image_bytes is defined for sizes the core accepts; it
+            # refuses larger ones before it reads (if not, a sanitizer sees it)
+            need = int(v.lib.texture_image_bytes(v.p, w, h, fmt & 0xFFFFFFFF, typ & 0xFFFFFFFF))
+            raw = _client_bytes(data, np.uint8)
+            if raw is None or need > len(raw):
+                raise ValueError(f"harness: the image reads {need} bytes of shorter data")
+    elif name in ("glCompressedTexImage2D", "glCompressedTexSubImage2D", "glBufferData", "glBufferSubData"):
+        data = args[2] if name == "glBufferData" else args[-1]
+        if _is_address(data) and data:
+            raise ValueError(f"harness: an int data pointer in {name}")
+    elif name in ("glGenBuffers", "glGenTextures") and args and _is_address(args[0]):
+        if args[0] > _MAX_NAMES:
+            raise ValueError(f"harness: room for {args[0]} names")
+    elif name == "glReadPixels" and len(args) >= 4:
+        w, h = args[2], args[3]
+        if _is_address(w) and _is_address(h) and w > 0 and h > 0 and w * h > _MAX_READ_PIXELS:
+            raise ValueError(f"harness: room for {w}x{h} pixels")
+
+
+def _after_buffer_data(cc: CabiContext, name: str, args: list[Any], bound: int) -> None:
+    """Track what buffer objects hold, for the index range of glDrawElements."""
+    if not bound or cc.view.peek_error():
+        return
+    if name == "glBufferData":
+        size, data = int(args[1]), args[2]
+        if data is None:
+            cc.buffers[bound] = bytes(size) if size <= 1 << 24 else None
+        else:
+            raw = _client_bytes(data, np.uint8)
+            cc.buffers[bound] = None if raw is None else raw[:size]
+    else:
+        offset, size, old = int(args[1]), int(args[2]), cc.buffers.get(bound)
+        raw = _client_bytes(args[3], np.uint8)
+        if old is None or raw is None:
+            cc.buffers[bound] = None
+        else:
+            cc.buffers[bound] = old[:offset] + raw[:size] + old[offset + size :]
+
+
+class _GuardedGL:
+    """``ctx.gl`` of a CabiContext: the LibraryContext's commands behind the guards."""
+
+    def __init__(self, cc: CabiContext) -> None:
+        self._cc = cc
+
+    def __getattr__(self, name: str) -> Any:
+        fn = getattr(self._cc.library.gl, name)
+        if not name.startswith("gl"):
+            return fn
+        cc = self._cc
+
+        def command(*given: Any) -> Any:
+            args = _to_c_ints(name, list(given))
+            _guard(cc, name, args)
+            if name in ("glBufferData", "glBufferSubData") and len(args) == 4:
+                target = args[0]
+                binding = {
+                    C.GL_ARRAY_BUFFER: C.GL_ARRAY_BUFFER_BINDING,
+                    C.GL_ELEMENT_ARRAY_BUFFER: C.GL_ELEMENT_ARRAY_BUFFER_BINDING,
+                }.get(target)
+                bound = cc.view.get_int(binding) if binding else 0
+                out = fn(*args)
+                _after_buffer_data(cc, name, list(args), bound)
+                return out
+            return fn(*args)
+
+        command.__name__ = name
+        return command
+
+    def null_pointers(self, name: str, *args: Any) -> Any:
+        """Call the C entry point `name` with NULL for each pointer argument
+        (the other arguments in their places; output pointers the Python
+        convention leaves out are NULL too)."""
+        import ctypes
+
+        cc = self._cc
+        cargs = [
+            None if t == "*" else (args[i] if i < len(args) else 0) for i, t in enumerate(_c_params(name))
+        ]
+        cargs = _to_c_ints(name, cargs)
+        _guard(cc, name, cargs)
+        cc.library.make_current()
+        try:
+            return cc.library._raw[name](*cargs)
+        except ctypes.ArgumentError as e:
+            raise TypeError(f"{name}: {e}") from None
+
+
+# {====================================================================
+# running and the invariant
+
+
+def open_context(setup: Setup) -> tuple[Any, CoreView, Callable[[], None]]:
+    """(ctx.gl, the core view, close) of the setup's backend."""
+    if setup.backend == "cabi":
+        cc = CabiContext(
+            setup.width,
+            setup.height,
+            profile=setup.profile,
+            numeric=setup.numeric,
+            color=setup.color,
+            depth=setup.depth,
+            stencil=setup.stencil,
+            memory_limit=setup.memory_limit,
+        )
+        return cc.gl, cc.view, cc.close
     ctx = gles.Context(
         setup.width,
         setup.height,
@@ -985,42 +1532,61 @@ def run_sequence(setup: Setup, calls: list[Call], check_state: bool = True) -> i
         range_check=setup.range_check,
         memory_limit=setup.memory_limit,
     )
-    g = ctx.gl
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        for i, call in enumerate(calls):
-            before = snapshot(ctx) if check_state else None
-            raised = None
-            try:
-                getattr(g, call.name)(*[a.value for a in call.args])
-            except ALLOWED as e:
-                raised = e
-            except Exception as e:  # noqa: BLE001 -- anything else breaks the invariant
-                raise Failure(i, f"{type(e).__name__} in {call.name}", f"{call.name}: {e}") from e
-            err = g.glGetError()
-            if err not in ERRORS:
-                raise Failure(i, f"bad error code after {call.name}", f"glGetError returned {err:#x}")
-            if raised is not None and err != C.GL_NO_ERROR:
-                raise Failure(
-                    i,
-                    f"error and exception in {call.name}",
-                    f"{call.name}: raised {type(raised).__name__} and recorded {err:#x}",
-                )
-            if check_state and (raised is not None or err != C.GL_NO_ERROR):
-                after = snapshot(ctx)
-                if after != before:
-                    diff = [k for k, (a, b) in enumerate(zip(before, after)) if a != b]
-                    why = f"raised {type(raised).__name__}" if raised is not None else f"error {err:#x}"
-                    raise Failure(
-                        i,
-                        f"state changed by {call.name}",
-                        f"{call.name} ({why}) changed snapshot entries {diff[:6]}",
-                    )
+    ctx.check_errors = setup.backend == "checked"
+    return ctx.gl, context_view(ctx), lambda: None
+
+
+def run_sequence(setup: Setup, calls: list[Call], check_state: bool = True) -> int:
+    """Run the calls on a new context; raise Failure where the invariant
+    breaks. Returns the number of calls made."""
+    g, view, close = open_context(setup)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            for i, call in enumerate(calls):
+                _check_call(setup, g, view, i, call, check_state)
+    finally:
+        close()
     return len(calls)
 
 
+def _check_call(setup: Setup, g: Any, view: CoreView, i: int, call: Call, check_state: bool) -> None:
+    before = snapshot(view) if check_state else None
+    raised = None
+    try:
+        getattr(g, call.name)(*[a.value for a in call.args])
+    except ALLOWED as e:
+        raised = e
+    except Exception as e:  # noqa: BLE001 -- anything else breaks the invariant
+        raise Failure(i, f"{type(e).__name__} in {call.name}", f"{call.name}: {e}") from e
+    err = g.glGetError()
+    if err not in ERRORS:
+        raise Failure(i, f"bad error code after {call.name}", f"glGetError returned {err:#x}")
+    if raised is not None and err != C.GL_NO_ERROR:
+        raise Failure(
+            i,
+            f"error and exception in {call.name}",
+            f"{call.name}: raised {type(raised).__name__} and recorded {err:#x}",
+        )
+    if setup.backend == "checked" and err != C.GL_NO_ERROR:
+        raise Failure(i, f"error not raised by {call.name}", f"{call.name} recorded {err:#x} without GLError")
+    if check_state and (raised is not None or err != C.GL_NO_ERROR):
+        after = snapshot(view)
+        if after != before:
+            diff = [k for k, (a, b) in enumerate(zip(before, after)) if a != b]
+            why = f"raised {type(raised).__name__}" if raised is not None else f"error {err:#x}"
+            raise Failure(
+                i,
+                f"state changed by {call.name}",
+                f"{call.name} ({why}) changed snapshot entries {diff[:6]}",
+            )
+
+
 def reproduction(setup: Setup, calls: list[Call]) -> str:
-    lines = ["import numpy as np", "import gles", "from gles import gl as G", setup.text(), "g = ctx.gl"]
+    lines = ["import numpy as np", "import gles", "from gles import gl as G"]
+    if setup.backend == "cabi":
+        lines[1:2] = ["import sys", f"sys.path.insert(0, {str(ROOT / 'tools')!r})", "import fuzz"]
+    lines += [setup.text(), "g = ctx.gl"]
     lines += [c.text() for c in calls]
     return "\n".join(lines)
 
@@ -1029,10 +1595,10 @@ def reproduction(setup: Setup, calls: list[Call]) -> str:
 # workers, shrinking and the command line
 
 
-def _worker(first: int, last: int, max_calls: int) -> None:
+def _worker(first: int, last: int, max_calls: int, backend: str) -> None:
     """Run seeds first..last-1, one line per sequence on stdout."""
     for seed in range(first, last):
-        setup, calls = make_sequence(seed, max_calls)
+        setup, calls = make_sequence(seed, max_calls, backend)
         print(f"start {seed}", flush=True)
         try:
             n = run_sequence(setup, calls)
@@ -1096,7 +1662,13 @@ def shrink(setup: Setup, calls: list[Call], kind: str, timeout: float, budget: f
 
 
 def fuzz(
-    seeds: range | None, minutes: float, start: int, max_calls: int, seq_timeout: float, batch: int = 25
+    seeds: range | None,
+    minutes: float,
+    start: int,
+    max_calls: int,
+    seq_timeout: float,
+    batch: int = 25,
+    backend: str = "python",
 ) -> int:
     """Run seeds (a fixed range, or from `start` for `minutes`); returns the
     number of failing sequences found."""
@@ -1108,7 +1680,16 @@ def fuzz(
     while (stop is None or nxt < stop) and time.monotonic() < t_end:
         last = nxt + batch if stop is None else min(nxt + batch, stop)
         proc = subprocess.Popen(
-            [sys.executable, __file__, "--worker", f"{nxt}:{last}", "--max-calls", str(max_calls)],
+            [
+                sys.executable,
+                __file__,
+                "--worker",
+                f"{nxt}:{last}",
+                "--max-calls",
+                str(max_calls),
+                "--backend",
+                backend,
+            ],
             stdout=subprocess.PIPE,
             text=True,
         )
@@ -1139,7 +1720,7 @@ def fuzz(
         if failed is not None and failed[0] is not None:
             failures += 1
             s, kind, what = failed
-            setup, calls = make_sequence(s, max_calls)
+            setup, calls = make_sequence(s, max_calls, backend)
             print(f"seed {s}: {what}", flush=True)
             small = shrink(setup, calls, kind, seq_timeout)
             print(f"--- seed {s}, {kind}, shrunk from {len(calls)} to {len(small)} calls:")
@@ -1151,8 +1732,8 @@ def fuzz(
     dt = time.monotonic() - t0
     first = start if seeds is None else seeds.start
     print(
-        f"fuzz: {seq} sequences, {calls_total} calls, seeds {first}..{nxt - 1}, {dt / 60:.1f} min, "
-        f"{failures} failing",
+        f"fuzz ({backend}): {seq} sequences, {calls_total} calls, seeds {first}..{nxt - 1}, "
+        f"{dt / 60:.1f} min, {failures} failing",
         flush=True,
     )
     return failures
@@ -1184,19 +1765,29 @@ def main(argv: list[str] | None = None) -> int:
         default=60.0,
         help="seconds one sequence may take before it counts as a hang (default 60)",
     )
+    ap.add_argument(
+        "--backend",
+        choices=BACKENDS + ("mixed",),
+        default="python",
+        help="python: gles.Context; checked: with check_errors=True; cabi: the C ABI libraries "
+        "through a ctypes harness; mixed: one of the three per seed (default python)",
+    )
+    ap.add_argument("--cabi", action="store_true", help="the same as --backend cabi")
     ap.add_argument("--replay", type=int, help="run one seed here and print its reproduction on failure")
     ap.add_argument("--worker", help=argparse.SUPPRESS)
     ap.add_argument("--run-file", help=argparse.SUPPRESS)
     a = ap.parse_args(argv)
+    if a.cabi:
+        a.backend = "cabi"
     if a.worker:
         lo, hi = (int(v) for v in a.worker.split(":"))
-        _worker(lo, hi, a.max_calls)
+        _worker(lo, hi, a.max_calls, a.backend)
         return 0
     if a.run_file:
         _run_file(a.run_file)
         return 0
     if a.replay is not None:
-        setup, calls = make_sequence(a.replay, a.max_calls)
+        setup, calls = make_sequence(a.replay, a.max_calls, a.backend)
         print(reproduction(setup, calls))
         run_sequence(setup, calls)
         print("ok")
@@ -1205,7 +1796,7 @@ def main(argv: list[str] | None = None) -> int:
     if a.seeds:
         lo, hi = (int(v) for v in a.seeds.split(":"))
         seeds = range(lo, hi)
-    return 1 if fuzz(seeds, a.minutes, a.seed, a.max_calls, a.seq_timeout) else 0
+    return 1 if fuzz(seeds, a.minutes, a.seed, a.max_calls, a.seq_timeout, backend=a.backend) else 0
 
 
 if __name__ == "__main__":

@@ -9,7 +9,8 @@ of a 16.16 value, ``B(v)`` a GLboolean as 0/1, ``C`` the current context).
 Entries marked ``F`` are the Common profile's float commands: the generated
 file guards them with ``#if GLES_CABI_COMMON``. An entry whose body is a
 helper (lower-case name) calls the hand-written function of that name in
-csrc/cabi/gl.c. The file also carries the name -> function table
+csrc/cabi/gl.c. An entry point given NULL for a pointer the command reads or
+writes does nothing (NULL_OK lists the pointers that may be NULL). The file also carries the name -> function table
 eglGetProcAddress uses; gl_strings.h the GL_EXTENSIONS strings of
 src/gles/context.py.
 """
@@ -191,6 +192,27 @@ glQueryMatrixxOES               query_matrix(C, mantissa, exponent)
 glWeightPointerOES              gles_WeightPointerOES(C, size, type, stride, pointer, -1)
 """
 
+# Pointer arguments a C caller may pass as NULL: the core gives NULL its
+# meaning (no data yet, or offset 0 in a buffer object). Any other pointer
+# argument is checked: with it NULL the entry point does nothing, since NULL
+# is the one bad pointer C can recognise.
+NULL_OK = {
+    "glBufferData": "data",
+    "glBufferSubData": "data",
+    "glTexImage2D": "pixels",
+    "glTexSubImage2D": "pixels",
+    "glCompressedTexImage2D": "data",
+    "glCompressedTexSubImage2D": "data",
+    "glDrawElements": "indices",
+    "glColorPointer": "pointer",
+    "glNormalPointer": "pointer",
+    "glPointSizePointerOES": "pointer",
+    "glTexCoordPointer": "pointer",
+    "glVertexPointer": "pointer",
+    "glMatrixIndexPointerOES": "pointer",
+    "glWeightPointerOES": "pointer",
+}
+
 _PROTO_RE = re.compile(r"^GL_API\s+(?P<ret>[^\n]*?)\s*GL_APIENTRY\s+(?P<name>gl\w+)\s*\((?P<args>[^)]*)\);", re.M)
 
 
@@ -250,16 +272,18 @@ def generate() -> str:
         for arg in re.findall(r"\b[A-Za-z_]\w*\b", re.sub(r"\w+\s*\(", "", body)):
             if arg not in params and arg not in {"C", "X", "B", "int64_t", "INT64_MAX"}:
                 raise SystemExit(f"{name}: {arg!r} is not one of its arguments {params}")
+        pointers = [p for p, a in zip(params, args.split(",")) if "*" in a and NULL_OK.get(name) != p]
+        ready = " && ".join(["C"] + pointers)
         if common_only:
             lines.append("#if GLES_CABI_COMMON")
         lines.append(f"GL_API {ret} GL_APIENTRY {name} ({args})")
         lines.append("{")
         lines.append("    GlesContext *C = gles_cabi_current();")
         if ret == "void":
-            lines.append("    if (C)")
+            lines.append(f"    if ({ready})")
             lines.append(f"        {body};")
         else:
-            lines.append(f"    return C ? ({ret})({body}) : 0;")
+            lines.append(f"    return {ready} ? ({ret})({body}) : 0;")
         lines.append("}")
         if common_only:
             lines.append("#endif")

@@ -218,27 +218,33 @@ static GLbitfield query_matrix(GlesContext *C, GLfixed *mantissa, GLint *exponen
 /* {====================================================================
 ** lighting, fog, points: scalar and vector parameters */
 
-/* how many values a vector pname takes (gl.py's _PARAM_COUNT) */
-static int param_count(GLenum pname)
+/* how many values a vector command reads for pname: the count of a pname
+** the command accepts, else 1 (the core then records INVALID_ENUM), so that
+** a bad enum never reads past the one value every vector form points at */
+enum { P_LIGHT, P_MATERIAL, P_LIGHT_MODEL, P_FOG, P_POINT };
+
+static int param_count(int command, GLenum pname)
 {
-    switch (pname) {
-    case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_POSITION: case GL_EMISSION:
-    case GL_AMBIENT_AND_DIFFUSE: case GL_LIGHT_MODEL_AMBIENT: case GL_FOG_COLOR:
-        return 4;
-    case GL_SPOT_DIRECTION: case GL_POINT_DISTANCE_ATTENUATION:
-        return 3;
-    default:
-        return 1;
+    switch (command) {
+    case P_LIGHT:
+        return pname == GL_AMBIENT || pname == GL_DIFFUSE || pname == GL_SPECULAR || pname == GL_POSITION ? 4
+             : pname == GL_SPOT_DIRECTION ? 3 : 1;
+    case P_MATERIAL:
+        return pname == GL_AMBIENT || pname == GL_DIFFUSE || pname == GL_SPECULAR || pname == GL_EMISSION
+                   || pname == GL_AMBIENT_AND_DIFFUSE ? 4 : 1;
+    case P_LIGHT_MODEL: return pname == GL_LIGHT_MODEL_AMBIENT ? 4 : 1;
+    case P_FOG: return pname == GL_FOG_COLOR ? 4 : 1;
+    default: return pname == GL_POINT_DISTANCE_ATTENUATION ? 3 : 1;
     }
 }
 
-#define PARAMS_X(buf, pname, params) \
+#define PARAMS_X(buf, command, pname, params) \
     double buf[4] = {0, 0, 0, 0}; \
-    for (int i_ = 0, n_ = param_count(pname); i_ < n_; i_++) \
+    for (int i_ = 0, n_ = param_count(command, pname); i_ < n_; i_++) \
         buf[i_] = X((params)[i_])
-#define PARAMS_F(buf, pname, params) \
+#define PARAMS_F(buf, command, pname, params) \
     double buf[4] = {0, 0, 0, 0}; \
-    for (int i_ = 0, n_ = param_count(pname); i_ < n_; i_++) \
+    for (int i_ = 0, n_ = param_count(command, pname); i_ < n_; i_++) \
         buf[i_] = (double)(params)[i_]
 
 static void light_x(GlesContext *C, GLenum light, GLenum pname, GLfixed param)
@@ -249,7 +255,7 @@ static void light_x(GlesContext *C, GLenum light, GLenum pname, GLfixed param)
 
 static void light_xv(GlesContext *C, GLenum light, GLenum pname, const GLfixed *params)
 {
-    PARAMS_X(b, pname, params);
+    PARAMS_X(b, P_LIGHT, pname, params);
     gles_Light(C, light, pname, b, 1);
 }
 
@@ -261,7 +267,7 @@ static void light_model_x(GlesContext *C, GLenum pname, GLfixed param)
 
 static void light_model_xv(GlesContext *C, GLenum pname, const GLfixed *params)
 {
-    PARAMS_X(b, pname, params);
+    PARAMS_X(b, P_LIGHT_MODEL, pname, params);
     gles_LightModel(C, pname, b, 1);
 }
 
@@ -273,7 +279,7 @@ static void material_x(GlesContext *C, GLenum face, GLenum pname, GLfixed param)
 
 static void material_xv(GlesContext *C, GLenum face, GLenum pname, const GLfixed *params)
 {
-    PARAMS_X(b, pname, params);
+    PARAMS_X(b, P_MATERIAL, pname, params);
     gles_Material(C, face, pname, b, 1);
 }
 
@@ -285,7 +291,7 @@ static void point_parameter_x(GlesContext *C, GLenum pname, GLfixed param)
 
 static void point_parameter_xv(GlesContext *C, GLenum pname, const GLfixed *params)
 {
-    PARAMS_X(b, pname, params);
+    PARAMS_X(b, P_POINT, pname, params);
     gles_PointParameter(C, pname, b, 1);
 }
 
@@ -303,7 +309,7 @@ static void fog_xv(GlesContext *C, GLenum pname, const GLfixed *params)
         gles_Fog(C, pname, b, 1);
         return;
     }
-    PARAMS_X(b, pname, params);
+    PARAMS_X(b, P_FOG, pname, params);
     gles_Fog(C, pname, b, 1);
 }
 
@@ -334,7 +340,7 @@ static void light_f(GlesContext *C, GLenum light, GLenum pname, GLfloat param)
 
 static void light_fv(GlesContext *C, GLenum light, GLenum pname, const GLfloat *params)
 {
-    PARAMS_F(b, pname, params);
+    PARAMS_F(b, P_LIGHT, pname, params);
     gles_Light(C, light, pname, b, 1);
 }
 
@@ -346,7 +352,7 @@ static void light_model_f(GlesContext *C, GLenum pname, GLfloat param)
 
 static void light_model_fv(GlesContext *C, GLenum pname, const GLfloat *params)
 {
-    PARAMS_F(b, pname, params);
+    PARAMS_F(b, P_LIGHT_MODEL, pname, params);
     gles_LightModel(C, pname, b, 1);
 }
 
@@ -358,7 +364,7 @@ static void material_f(GlesContext *C, GLenum face, GLenum pname, GLfloat param)
 
 static void material_fv(GlesContext *C, GLenum face, GLenum pname, const GLfloat *params)
 {
-    PARAMS_F(b, pname, params);
+    PARAMS_F(b, P_MATERIAL, pname, params);
     gles_Material(C, face, pname, b, 1);
 }
 
@@ -370,7 +376,7 @@ static void point_parameter_f(GlesContext *C, GLenum pname, GLfloat param)
 
 static void point_parameter_fv(GlesContext *C, GLenum pname, const GLfloat *params)
 {
-    PARAMS_F(b, pname, params);
+    PARAMS_F(b, P_POINT, pname, params);
     gles_PointParameter(C, pname, b, 1);
 }
 
@@ -387,7 +393,7 @@ static void fog_fv(GlesContext *C, GLenum pname, const GLfloat *params)
         gles_Fog(C, pname, b, 1);
         return;
     }
-    PARAMS_F(b, pname, params);
+    PARAMS_F(b, P_FOG, pname, params);
     gles_Fog(C, pname, b, 1);
 }
 
@@ -452,7 +458,11 @@ static void clip_plane_f(GlesContext *C, GLenum plane, const GLfloat *equation)
 ** x forms scale the real-valued pnames, i forms map TEXTURE_ENV_COLOR like
 ** colours, enums and integers pass unchanged */
 
-static int tex_count(GLenum pname) { return pname == GL_TEXTURE_ENV_COLOR || pname == GL_TEXTURE_CROP_RECT_OES ? 4 : 1; }
+/* the values TexParameter*v and TexEnv*v read: 4 for the one 4-value pname
+** each accepts, else 1 (as param_count) */
+static int tex_parameter_count(GLenum pname) { return pname == GL_TEXTURE_CROP_RECT_OES ? 4 : 1; }
+
+static int tex_env_count(GLenum pname) { return pname == GL_TEXTURE_ENV_COLOR ? 4 : 1; }
 
 static int tex_real(GLenum pname) { return pname == GL_TEXTURE_ENV_COLOR || pname == GL_RGB_SCALE || pname == GL_ALPHA_SCALE; }
 
@@ -468,18 +478,18 @@ static void tex_values_i(GLenum pname, const GLint *p, int n, double out[4])
         out[i] = pname == GL_TEXTURE_ENV_COLOR ? (2.0 * p[i] + 1.0) / 4294967295.0 : (double)p[i];
 }
 
-#define TEX_SETTERS(Name, core) \
+#define TEX_SETTERS(Name, core, count) \
     static void Name##_i(GlesContext *C, GLenum target, GLenum pname, GLint param) \
     { double b[4] = {0, 0, 0, 0}; tex_values_i(pname, &param, 1, b); core(C, target, pname, b, 0); } \
     static void Name##_iv(GlesContext *C, GLenum target, GLenum pname, const GLint *params) \
-    { double b[4] = {0, 0, 0, 0}; tex_values_i(pname, params, tex_count(pname), b); core(C, target, pname, b, 1); } \
+    { double b[4] = {0, 0, 0, 0}; tex_values_i(pname, params, count(pname), b); core(C, target, pname, b, 1); } \
     static void Name##_x(GlesContext *C, GLenum target, GLenum pname, GLfixed param) \
     { double b[4] = {0, 0, 0, 0}; tex_values_x(pname, &param, 1, b); core(C, target, pname, b, 0); } \
     static void Name##_xv(GlesContext *C, GLenum target, GLenum pname, const GLfixed *params) \
-    { double b[4] = {0, 0, 0, 0}; tex_values_x(pname, params, tex_count(pname), b); core(C, target, pname, b, 1); }
+    { double b[4] = {0, 0, 0, 0}; tex_values_x(pname, params, count(pname), b); core(C, target, pname, b, 1); }
 
-TEX_SETTERS(tex_parameter, gles_TexParameter)
-TEX_SETTERS(tex_env, gles_TexEnv)
+TEX_SETTERS(tex_parameter, gles_TexParameter, tex_parameter_count)
+TEX_SETTERS(tex_env, gles_TexEnv, tex_env_count)
 
 #define TEX_GETTERS(Name, core) \
     static void Name##_i(GlesContext *C, GLenum target, GLenum pname, GLint *params) \
@@ -501,13 +511,13 @@ TEX_GETTERS(get_tex_parameter, gles_GetTexParameter)
 TEX_GETTERS(get_tex_env, gles_GetTexEnv)
 
 #if GLES_CABI_COMMON
-#define TEX_FLOAT(Name, core, getcore, getname) \
+#define TEX_FLOAT(Name, core, getcore, getname, count) \
     static void Name##_f(GlesContext *C, GLenum target, GLenum pname, GLfloat param) \
     { double b[4] = {param, 0, 0, 0}; core(C, target, pname, b, 0); } \
     static void Name##_fv(GlesContext *C, GLenum target, GLenum pname, const GLfloat *params) \
     { \
         double b[4] = {0, 0, 0, 0}; \
-        for (int i = 0, n = tex_count(pname); i < n; i++) \
+        for (int i = 0, n = count(pname); i < n; i++) \
             b[i] = params[i]; \
         core(C, target, pname, b, 1); \
     } \
@@ -519,8 +529,8 @@ TEX_GETTERS(get_tex_env, gles_GetTexEnv)
             params[i] = (GLfloat)v[i]; \
     }
 
-TEX_FLOAT(tex_parameter, gles_TexParameter, gles_GetTexParameter, get_tex_parameter)
-TEX_FLOAT(tex_env, gles_TexEnv, gles_GetTexEnv, get_tex_env)
+TEX_FLOAT(tex_parameter, gles_TexParameter, gles_GetTexParameter, get_tex_parameter, tex_parameter_count)
+TEX_FLOAT(tex_env, gles_TexEnv, gles_GetTexEnv, get_tex_env, tex_env_count)
 #endif
 
 /* {====================================================================

@@ -116,7 +116,7 @@ GL_API void GL_APIENTRY glClientActiveTexture (GLenum texture)
 GL_API void GL_APIENTRY glClipPlanef (GLenum p, const GLfloat *eqn)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && eqn)
         clip_plane_f(C, p, eqn);
 }
 #endif
@@ -124,7 +124,7 @@ GL_API void GL_APIENTRY glClipPlanef (GLenum p, const GLfloat *eqn)
 GL_API void GL_APIENTRY glClipPlanex (GLenum plane, const GLfixed *equation)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && equation)
         clip_plane_x(C, plane, equation);
 }
 
@@ -203,14 +203,14 @@ GL_API void GL_APIENTRY glCullFace (GLenum mode)
 GL_API void GL_APIENTRY glDeleteBuffers (GLsizei n, const GLuint *buffers)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && buffers)
         gles_DeleteBuffers(C, n, buffers);
 }
 
 GL_API void GL_APIENTRY glDeleteTextures (GLsizei n, const GLuint *textures)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && textures)
         gles_DeleteTextures(C, n, textures);
 }
 
@@ -313,7 +313,7 @@ GL_API void GL_APIENTRY glFogf (GLenum pname, GLfloat param)
 GL_API void GL_APIENTRY glFogfv (GLenum pname, const GLfloat *params)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && params)
         fog_fv(C, pname, params);
 }
 #endif
@@ -328,7 +328,7 @@ GL_API void GL_APIENTRY glFogx (GLenum pname, GLfixed param)
 GL_API void GL_APIENTRY glFogxv (GLenum pname, const GLfixed *param)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && param)
         fog_xv(C, pname, param);
 }
 
@@ -358,28 +358,28 @@ GL_API void GL_APIENTRY glFrustumx (GLfixed l, GLfixed r, GLfixed b, GLfixed t, 
 GL_API void GL_APIENTRY glGenBuffers (GLsizei n, GLuint *buffers)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && buffers)
         gles_GenBuffers(C, n, buffers);
 }
 
 GL_API void GL_APIENTRY glGenTextures (GLsizei n, GLuint *textures)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && textures)
         gles_GenTextures(C, n, textures);
 }
 
 GL_API void GL_APIENTRY glGetBooleanv (GLenum pname, GLboolean *data)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && data)
         get_booleanv(C, pname, data);
 }
 
 GL_API void GL_APIENTRY glGetBufferParameteriv (GLenum target, GLenum pname, GLint *params)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && params)
         gles_GetBufferParameteriv(C, target, pname, params);
 }
 
@@ -387,7 +387,7 @@ GL_API void GL_APIENTRY glGetBufferParameteriv (GLenum target, GLenum pname, GLi
 GL_API void GL_APIENTRY glGetClipPlanef (GLenum plane, GLfloat *equation)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && equation)
         get_clip_plane_f(C, plane, equation);
 }
 #endif
@@ -395,7 +395,7 @@ GL_API void GL_APIENTRY glGetClipPlanef (GLenum plane, GLfloat *equation)
 GL_API void GL_APIENTRY glGetClipPlanex (GLenum plane, GLfixed *equation)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && equation)
         get_clip_plane_x(C, plane, equation);
 }
 
@@ -408,7 +408,7 @@ GL_API GLenum GL_APIENTRY glGetError (void)
 GL_API void GL_APIENTRY glGetFixedv (GLenum pname, GLfixed *params)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && params)
         get_fixedv(C, pname, params);
 }
 
@@ -416,7 +416,7 @@ GL_API void GL_APIENTRY glGetFixedv (GLenum pname, GLfixed *params)
 GL_API void GL_APIENTRY glGetFloatv (GLenum pname, GLfloat *data)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && data)
         get_floatv(C, pname, data);
 }
 #endif
@@ -424,7 +424,7 @@ GL_API void GL_APIENTRY glGetFloatv (GLenum pname, GLfloat *data)
 GL_API void GL_APIENTRY glGetIntegerv (GLenum pname, GLint *data)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && data)
         get_integerv(C, pname, data);
 }
 
@@ -432,7 +432,7 @@ GL_API void GL_APIENTRY glGetIntegerv (GLenum pname, GLint *data)
 GL_API void GL_APIENTRY glGetLightfv (GLenum light, GLenum pname, GLfloat *params)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && params)
         get_light_f(C, light, pname, params);
 }
 #endif
@@ -440,7 +440,7 @@ GL_API void GL_APIENTRY glGetLightfv (GLenum light, GLenum pname, GLfloat *param
 GL_API void GL_APIENTRY glGetLightxv (GLenum light, GLenum pname, GLfixed *params)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && params)
         get_light_x(C, light, pname, params);
 }
 
@@ -448,7 +448,7 @@ GL_API void GL_APIENTRY glGetLightxv (GLenum light, GLenum pname, GLfixed *param
 GL_API void GL_APIENTRY glGetMaterialfv (GLenum face, GLenum pname, GLfloat *params)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && params)
         get_material_f(C, face, pname, params);
 }
 #endif
@@ -456,14 +456,14 @@ GL_API void GL_APIENTRY glGetMaterialfv (GLenum face, GLenum pname, GLfloat *par
 GL_API void GL_APIENTRY glGetMaterialxv (GLenum face, GLenum pname, GLfixed *params)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && params)
         get_material_x(C, face, pname, params);
 }
 
 GL_API void GL_APIENTRY glGetPointerv (GLenum pname, void **params)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && params)
         get_pointerv(C, pname, params);
 }
 
@@ -477,7 +477,7 @@ GL_API const GLubyte * GL_APIENTRY glGetString (GLenum name)
 GL_API void GL_APIENTRY glGetTexEnvfv (GLenum target, GLenum pname, GLfloat *params)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && params)
         get_tex_env_f(C, target, pname, params);
 }
 #endif
@@ -485,14 +485,14 @@ GL_API void GL_APIENTRY glGetTexEnvfv (GLenum target, GLenum pname, GLfloat *par
 GL_API void GL_APIENTRY glGetTexEnviv (GLenum target, GLenum pname, GLint *params)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && params)
         get_tex_env_i(C, target, pname, params);
 }
 
 GL_API void GL_APIENTRY glGetTexEnvxv (GLenum target, GLenum pname, GLfixed *params)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && params)
         get_tex_env_x(C, target, pname, params);
 }
 
@@ -500,7 +500,7 @@ GL_API void GL_APIENTRY glGetTexEnvxv (GLenum target, GLenum pname, GLfixed *par
 GL_API void GL_APIENTRY glGetTexParameterfv (GLenum target, GLenum pname, GLfloat *params)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && params)
         get_tex_parameter_f(C, target, pname, params);
 }
 #endif
@@ -508,14 +508,14 @@ GL_API void GL_APIENTRY glGetTexParameterfv (GLenum target, GLenum pname, GLfloa
 GL_API void GL_APIENTRY glGetTexParameteriv (GLenum target, GLenum pname, GLint *params)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && params)
         get_tex_parameter_i(C, target, pname, params);
 }
 
 GL_API void GL_APIENTRY glGetTexParameterxv (GLenum target, GLenum pname, GLfixed *params)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && params)
         get_tex_parameter_x(C, target, pname, params);
 }
 
@@ -557,7 +557,7 @@ GL_API void GL_APIENTRY glLightModelf (GLenum pname, GLfloat param)
 GL_API void GL_APIENTRY glLightModelfv (GLenum pname, const GLfloat *params)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && params)
         light_model_fv(C, pname, params);
 }
 #endif
@@ -572,7 +572,7 @@ GL_API void GL_APIENTRY glLightModelx (GLenum pname, GLfixed param)
 GL_API void GL_APIENTRY glLightModelxv (GLenum pname, const GLfixed *param)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && param)
         light_model_xv(C, pname, param);
 }
 
@@ -589,7 +589,7 @@ GL_API void GL_APIENTRY glLightf (GLenum light, GLenum pname, GLfloat param)
 GL_API void GL_APIENTRY glLightfv (GLenum light, GLenum pname, const GLfloat *params)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && params)
         light_fv(C, light, pname, params);
 }
 #endif
@@ -604,7 +604,7 @@ GL_API void GL_APIENTRY glLightx (GLenum light, GLenum pname, GLfixed param)
 GL_API void GL_APIENTRY glLightxv (GLenum light, GLenum pname, const GLfixed *params)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && params)
         light_xv(C, light, pname, params);
 }
 
@@ -635,7 +635,7 @@ GL_API void GL_APIENTRY glLoadIdentity (void)
 GL_API void GL_APIENTRY glLoadMatrixf (const GLfloat *m)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && m)
         load_matrix_f(C, m, 0);
 }
 #endif
@@ -643,7 +643,7 @@ GL_API void GL_APIENTRY glLoadMatrixf (const GLfloat *m)
 GL_API void GL_APIENTRY glLoadMatrixx (const GLfixed *m)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && m)
         load_matrix_x(C, m, 0);
 }
 
@@ -667,7 +667,7 @@ GL_API void GL_APIENTRY glMaterialf (GLenum face, GLenum pname, GLfloat param)
 GL_API void GL_APIENTRY glMaterialfv (GLenum face, GLenum pname, const GLfloat *params)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && params)
         material_fv(C, face, pname, params);
 }
 #endif
@@ -682,7 +682,7 @@ GL_API void GL_APIENTRY glMaterialx (GLenum face, GLenum pname, GLfixed param)
 GL_API void GL_APIENTRY glMaterialxv (GLenum face, GLenum pname, const GLfixed *param)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && param)
         material_xv(C, face, pname, param);
 }
 
@@ -697,7 +697,7 @@ GL_API void GL_APIENTRY glMatrixMode (GLenum mode)
 GL_API void GL_APIENTRY glMultMatrixf (const GLfloat *m)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && m)
         load_matrix_f(C, m, 1);
 }
 #endif
@@ -705,7 +705,7 @@ GL_API void GL_APIENTRY glMultMatrixf (const GLfloat *m)
 GL_API void GL_APIENTRY glMultMatrixx (const GLfixed *m)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && m)
         load_matrix_x(C, m, 1);
 }
 
@@ -784,7 +784,7 @@ GL_API void GL_APIENTRY glPointParameterf (GLenum pname, GLfloat param)
 GL_API void GL_APIENTRY glPointParameterfv (GLenum pname, const GLfloat *params)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && params)
         point_parameter_fv(C, pname, params);
 }
 #endif
@@ -799,7 +799,7 @@ GL_API void GL_APIENTRY glPointParameterx (GLenum pname, GLfixed param)
 GL_API void GL_APIENTRY glPointParameterxv (GLenum pname, const GLfixed *params)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && params)
         point_parameter_xv(C, pname, params);
 }
 
@@ -859,7 +859,7 @@ GL_API void GL_APIENTRY glPushMatrix (void)
 GL_API void GL_APIENTRY glReadPixels (GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type, void *pixels)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && pixels)
         gles_ReadPixels(C, x, y, width, height, format, type, pixels, INT64_MAX);
 }
 
@@ -966,7 +966,7 @@ GL_API void GL_APIENTRY glTexEnvf (GLenum target, GLenum pname, GLfloat param)
 GL_API void GL_APIENTRY glTexEnvfv (GLenum target, GLenum pname, const GLfloat *params)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && params)
         tex_env_fv(C, target, pname, params);
 }
 #endif
@@ -981,7 +981,7 @@ GL_API void GL_APIENTRY glTexEnvi (GLenum target, GLenum pname, GLint param)
 GL_API void GL_APIENTRY glTexEnviv (GLenum target, GLenum pname, const GLint *params)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && params)
         tex_env_iv(C, target, pname, params);
 }
 
@@ -995,7 +995,7 @@ GL_API void GL_APIENTRY glTexEnvx (GLenum target, GLenum pname, GLfixed param)
 GL_API void GL_APIENTRY glTexEnvxv (GLenum target, GLenum pname, const GLfixed *params)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && params)
         tex_env_xv(C, target, pname, params);
 }
 
@@ -1019,7 +1019,7 @@ GL_API void GL_APIENTRY glTexParameterf (GLenum target, GLenum pname, GLfloat pa
 GL_API void GL_APIENTRY glTexParameterfv (GLenum target, GLenum pname, const GLfloat *params)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && params)
         tex_parameter_fv(C, target, pname, params);
 }
 #endif
@@ -1034,7 +1034,7 @@ GL_API void GL_APIENTRY glTexParameteri (GLenum target, GLenum pname, GLint para
 GL_API void GL_APIENTRY glTexParameteriv (GLenum target, GLenum pname, const GLint *params)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && params)
         tex_parameter_iv(C, target, pname, params);
 }
 
@@ -1048,7 +1048,7 @@ GL_API void GL_APIENTRY glTexParameterx (GLenum target, GLenum pname, GLfixed pa
 GL_API void GL_APIENTRY glTexParameterxv (GLenum target, GLenum pname, const GLfixed *params)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && params)
         tex_parameter_xv(C, target, pname, params);
 }
 
@@ -1130,7 +1130,7 @@ GL_API void GL_APIENTRY glDrawTexfOES (GLfloat x, GLfloat y, GLfloat z, GLfloat 
 GL_API void GL_APIENTRY glDrawTexfvOES (const GLfloat *coords)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && coords)
         gles_DrawTexOES(C, coords[0], coords[1], coords[2], coords[3], coords[4]);
 }
 #endif
@@ -1145,7 +1145,7 @@ GL_API void GL_APIENTRY glDrawTexiOES (GLint x, GLint y, GLint z, GLint width, G
 GL_API void GL_APIENTRY glDrawTexivOES (const GLint *coords)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && coords)
         gles_DrawTexOES(C, coords[0], coords[1], coords[2], coords[3], coords[4]);
 }
 
@@ -1159,7 +1159,7 @@ GL_API void GL_APIENTRY glDrawTexsOES (GLshort x, GLshort y, GLshort z, GLshort 
 GL_API void GL_APIENTRY glDrawTexsvOES (const GLshort *coords)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && coords)
         gles_DrawTexOES(C, coords[0], coords[1], coords[2], coords[3], coords[4]);
 }
 
@@ -1173,7 +1173,7 @@ GL_API void GL_APIENTRY glDrawTexxOES (GLfixed x, GLfixed y, GLfixed z, GLfixed 
 GL_API void GL_APIENTRY glDrawTexxvOES (const GLfixed *coords)
 {
     GlesContext *C = gles_cabi_current();
-    if (C)
+    if (C && coords)
         gles_DrawTexOES(C, X(coords[0]), X(coords[1]), X(coords[2]), X(coords[3]), X(coords[4]));
 }
 
@@ -1194,7 +1194,7 @@ GL_API void GL_APIENTRY glMatrixIndexPointerOES (GLint size, GLenum type, GLsize
 GL_API GLbitfield GL_APIENTRY glQueryMatrixxOES (GLfixed *mantissa, GLint *exponent)
 {
     GlesContext *C = gles_cabi_current();
-    return C ? (GLbitfield)(query_matrix(C, mantissa, exponent)) : 0;
+    return C && mantissa && exponent ? (GLbitfield)(query_matrix(C, mantissa, exponent)) : 0;
 }
 
 GL_API void GL_APIENTRY glWeightPointerOES (GLint size, GLenum type, GLsizei stride, const void *pointer)
