@@ -16,6 +16,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+import gles
 from gles import constants as C
 from gles import mesa
 
@@ -27,11 +28,13 @@ _SOFTPIPE_REASON = mesa.available("softpipe") if _REASON is None else _REASON
 needs_softpipe = pytest.mark.skipif(_SOFTPIPE_REASON is not None,
                                     reason=f"softpipe unavailable: {_SOFTPIPE_REASON}")
 
-SRC = Path(__file__).resolve().parents[1] / "src"
+# the directory the gles under test was imported from (the installed
+# package in CI, src/ in a development tree)
+SRC = Path(gles.__file__).resolve().parents[1]
 
 
 def run_python(code: str) -> subprocess.CompletedProcess:
-    """Run ``code`` in a fresh interpreter that imports gles from this tree."""
+    """Run ``code`` in a fresh interpreter that imports the gles under test."""
     path = os.pathsep.join(filter(None, [str(SRC), os.environ.get("PYTHONPATH")]))
     return subprocess.run([sys.executable, "-c", code],
                           env={**os.environ, "PYTHONPATH": path},
