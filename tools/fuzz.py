@@ -1509,29 +1509,12 @@ class _GuardedGL:
 
 def open_context(setup: Setup) -> tuple[Any, CoreView, Callable[[], None]]:
     """(ctx.gl, the core view, close) of the setup's backend."""
+    config = dict(profile=setup.profile, numeric=setup.numeric, color=setup.color, depth=setup.depth,
+                  stencil=setup.stencil, memory_limit=setup.memory_limit)
     if setup.backend == "cabi":
-        cc = CabiContext(
-            setup.width,
-            setup.height,
-            profile=setup.profile,
-            numeric=setup.numeric,
-            color=setup.color,
-            depth=setup.depth,
-            stencil=setup.stencil,
-            memory_limit=setup.memory_limit,
-        )
+        cc = CabiContext(setup.width, setup.height, **config)
         return cc.gl, cc.view, cc.close
-    ctx = gles.Context(
-        setup.width,
-        setup.height,
-        profile=setup.profile,
-        numeric=setup.numeric,
-        color=setup.color,
-        depth=setup.depth,
-        stencil=setup.stencil,
-        range_check=setup.range_check,
-        memory_limit=setup.memory_limit,
-    )
+    ctx = gles.Context(setup.width, setup.height, range_check=setup.range_check, **config)
     ctx.check_errors = setup.backend == "checked"
     return ctx.gl, context_view(ctx), lambda: None
 
