@@ -138,6 +138,21 @@ def test_reference_outside_builds_and_unknown_renderer() -> None:
     assert res.renders["nonsense"].skipped is None and list(res.failed) == ["nonsense"]
 
 
+def test_unknown_build_or_mesa_driver_is_an_error_not_a_skip(tmp_path) -> None:
+    """A misspelt build or Mesa driver fails the comparison (status 1); only
+    a known peer that this machine lacks is skipped."""
+    res = cmp.compare(triangle_scene, 8, 8, builds=("fixd",), peers=("mesa-foo",), runs=1)
+    assert set(res.failed) == {"fixd", "mesa-foo"}
+    assert all(res.renders[r].skipped is None for r in ("fixd", "mesa-foo"))
+    path = tmp_path / "scene.py"
+    path.write_text("def scene(gl, w, h):\n    gl.glClear(gl.GL_COLOR_BUFFER_BIT)\n")
+    from gles.__main__ import main
+
+    common = ["compare", str(path), "--size", "8x8", "--runs", "1"]
+    assert main([*common, "--builds", "fixd", "--peers", ""]) == 1
+    assert main([*common, "--builds", "fixed", "--peers", "mesa-foo"]) == 1
+
+
 def test_scene_without_frame_is_timed_whole() -> None:
     calls = []
 

@@ -159,7 +159,7 @@ def _open(renderer: str, width: int, height: int) -> Any:
     if renderer in BUILDS:
         check = "warn" if renderer == "fixed" else "off"
         return Context(width, height, numeric=renderer, range_check=check)
-    if renderer.startswith("mesa-"):
+    if renderer in PEERS:
         from . import mesa
 
         # the single-thread figure the benchmarks use; read when Mesa starts
@@ -175,7 +175,9 @@ def _close(ctx: Any) -> None:
 
 
 def _peer_missing(renderer: str) -> str | None:
-    if not renderer.startswith("mesa-"):
+    """Why a known peer cannot run here (None when it can, or for anything
+    else: an unknown name is an error, not a skipped peer)."""
+    if renderer not in PEERS:
         return None
     from . import mesa
 
