@@ -90,14 +90,61 @@ static inline void avx2_bilerp_rgba8(uint32_t c00, uint32_t c10, uint32_t c01, u
     avx2_store4(out, r);
 }
 
+/* {====================================================================
+** signs and conversions of 64-bit lanes */
+
+/* all ones in the lanes that are negative */
+AVX2_INLINE __m256i avx2_negative(__m256i v) { return _mm256_cmpgt_epi64(_mm256_setzero_si256(), v); }
+/* v where mask is 0, -v where it is all ones (so |v| with mask = avx2_negative(v),
+** and the sign put back on a magnitude) */
+AVX2_INLINE __m256i avx2_negate_where(__m256i v, __m256i mask) { return _mm256_sub_epi64(_mm256_xor_si256(v, mask), mask); }
+AVX2_INLINE __m256i avx2_abs64(__m256i v) { return avx2_negate_where(v, avx2_negative(v)); }
+
 /* each lane rounded half away from zero to `shift` fewer fraction bits */
 AVX2_INLINE __m256i avx2_round_shift(__m256i acc, int shift)
 {
-    const __m256i sign = _mm256_cmpgt_epi64(_mm256_setzero_si256(), acc);
-    __m256i mag = _mm256_sub_epi64(_mm256_xor_si256(acc, sign), sign);
-    mag = _mm256_srli_epi64(_mm256_add_epi64(mag, _mm256_set1_epi64x((int64_t)1 << (shift - 1))), shift);
-    return _mm256_sub_epi64(_mm256_xor_si256(mag, sign), sign);
+    const __m256i sign = avx2_negative(acc);
+    const __m256i mag = _mm256_add_epi64(avx2_negate_where(acc, sign), _mm256_set1_epi64x((int64_t)1 << (shift - 1)));
+    return avx2_negate_where(_mm256_srli_epi64(mag, shift), sign);
 }
+
+/* i64_div_pow2 of each lane by the same k, and by a k per lane (truncation
+** toward zero: the magnitude shifted, the sign put back); lanes above -2^63 */
+AVX2_INLINE __m256i avx2_div_pow2(__m256i v, __m128i k)
+{
+    const __m256i sign = avx2_negative(v);
+    return avx2_negate_where(_mm256_srl_epi64(avx2_negate_where(v, sign), k), sign);
+}
+AVX2_INLINE __m256i avx2_div_pow2v(__m256i v, __m256i k)
+{
+    const __m256i sign = avx2_negative(v);
+    return avx2_negate_where(_mm256_srlv_epi64(avx2_negate_where(v, sign), k), sign);
+}
+
+/* int64 lanes of magnitude below 2^51 as doubles, and integral doubles of
+** magnitude below 2^51 as int64 (exact: the bias 2^52 + 2^51 puts the
+** integer in the mantissa's low bits) */
+#define AVX2_I64_BIAS 6755399441055744.0
+AVX2_INLINE __m256d avx2_i64_to_pd(__m256i v)
+{
+    const __m256d magic = _mm256_set1_pd(AVX2_I64_BIAS);
+    return _mm256_sub_pd(_mm256_castsi256_pd(_mm256_add_epi64(v, _mm256_castpd_si256(magic))), magic);
+}
+AVX2_INLINE __m256i avx2_pd_to_i64(__m256d v)
+{
+    const __m256d magic = _mm256_set1_pd(AVX2_I64_BIAS);
+    return _mm256_sub_epi64(_mm256_castpd_si256(_mm256_add_pd(v, magic)), _mm256_castpd_si256(magic));
+}
+
+/* four fragments' s and t (lanes = fragments) stored as TexCoord out[0..3] */
+AVX2_INLINE void avx2_store_st4(__m256i s, __m256i t, TexCoord *out)
+{
+    const __m256i lo = _mm256_unpacklo_epi64(s, t), hi = _mm256_unpackhi_epi64(s, t);   /* s0 t0 s2 t2, s1 t1 s3 t3 */
+    _mm256_storeu_si256((__m256i *)(void *)out, _mm256_permute2x128_si256(lo, hi, 0x20));
+    _mm256_storeu_si256((__m256i *)(void *)(out + 2), _mm256_permute2x128_si256(lo, hi, 0x31));
+}
+
+/* }==================================================================== */
 
 /* a0 w0 + a1 w1 + a2 w2 per lane, rounded half away from zero to `shift`
 ** fewer fraction bits: the a lanes in int32 range, the weights any WGT */
@@ -154,10 +201,7 @@ AVX2_INLINE __m256i avx2_texc_lerp3x4(const NUM a[3], const WGT (*p)[3])
 ** of vertex values sv[0..2], tv[0..2] at weights p[0..3], into out[0..3] */
 AVX2_INLINE void avx2_tex_coord_affine4(const NUM sv[3], const NUM tv[3], const WGT (*p)[3], TexCoord *out)
 {
-    const __m256i s = avx2_texc_lerp3x4(sv, p), t = avx2_texc_lerp3x4(tv, p);
-    const __m256i lo = _mm256_unpacklo_epi64(s, t), hi = _mm256_unpackhi_epi64(s, t);   /* s0 t0 s2 t2, s1 t1 s3 t3 */
-    _mm256_storeu_si256((__m256i *)(void *)out, _mm256_permute2x128_si256(lo, hi, 0x20));
-    _mm256_storeu_si256((__m256i *)(void *)(out + 2), _mm256_permute2x128_si256(lo, hi, 0x31));
+    avx2_store_st4(avx2_texc_lerp3x4(sv, p), avx2_texc_lerp3x4(tv, p), out);
 }
 
 /* 1 when every lane lies in the int32 range (an operand of vpmuldq) */
@@ -355,49 +399,8 @@ AVX2_INLINE int avx2_rect_linear_s4(double a, double b, int x0, const uint8_t *k
     if (_mm256_movemask_pd(_mm256_cmp_pd(abs, lim, _CMP_LT_OQ)) != 0xF)
         return 0;
     const __m256d r = _mm256_floor_pd(_mm256_add_pd(v, _mm256_set1_pd(0.5)));
-    const __m256d magic = _mm256_set1_pd(6755399441055744.0);  /* 2^52 + 2^51 */
-    const __m256i s = _mm256_sub_epi64(_mm256_castpd_si256(_mm256_add_pd(r, magic)), _mm256_castpd_si256(magic));
-    const __m256i t = _mm256_set1_epi64x(t0);
-    const __m256i lo = _mm256_unpacklo_epi64(s, t), hi = _mm256_unpackhi_epi64(s, t);   /* s0 t s2 t, s1 t s3 t */
-    _mm256_storeu_si256((__m256i *)(void *)tc, _mm256_permute2x128_si256(lo, hi, 0x20));
-    _mm256_storeu_si256((__m256i *)(void *)(tc + 2), _mm256_permute2x128_si256(lo, hi, 0x31));
+    avx2_store_st4(avx2_pd_to_i64(r), _mm256_set1_epi64x(t0), tc);
     return 1;
-}
-
-/* i64_div_pow2 of each lane by the same k (truncation toward zero: the
-** magnitude shifted, the sign restored); lanes above -2^63 */
-AVX2_INLINE __m256i avx2_div_pow2(__m256i v, __m128i k)
-{
-    const __m256i sign = _mm256_cmpgt_epi64(_mm256_setzero_si256(), v);
-    const __m256i mag = _mm256_srl_epi64(_mm256_sub_epi64(_mm256_xor_si256(v, sign), sign), k);
-    return _mm256_sub_epi64(_mm256_xor_si256(mag, sign), sign);
-}
-
-/* the same with a shift per lane */
-AVX2_INLINE __m256i avx2_div_pow2v(__m256i v, __m256i k)
-{
-    const __m256i sign = _mm256_cmpgt_epi64(_mm256_setzero_si256(), v);
-    const __m256i mag = _mm256_srlv_epi64(_mm256_sub_epi64(_mm256_xor_si256(v, sign), sign), k);
-    return _mm256_sub_epi64(_mm256_xor_si256(mag, sign), sign);
-}
-
-AVX2_INLINE __m256i avx2_abs64(__m256i v)
-{
-    const __m256i sign = _mm256_cmpgt_epi64(_mm256_setzero_si256(), v);
-    return _mm256_sub_epi64(_mm256_xor_si256(v, sign), sign);
-}
-
-/* int64 lanes of magnitude below 2^51 as doubles, and back (exact: the
-** bias 2^52 + 2^51 puts the integer in the mantissa's low bits) */
-AVX2_INLINE __m256d avx2_i64_to_pd(__m256i v)
-{
-    const __m256d magic = _mm256_set1_pd(6755399441055744.0);
-    return _mm256_sub_pd(_mm256_castsi256_pd(_mm256_add_epi64(v, _mm256_castpd_si256(magic))), magic);
-}
-AVX2_INLINE __m256i avx2_pd_to_i64(__m256d v)
-{
-    const __m256d magic = _mm256_set1_pd(6755399441055744.0);
-    return _mm256_sub_epi64(_mm256_castpd_si256(_mm256_add_pd(v, magic)), _mm256_castpd_si256(magic));
 }
 
 /* trunc(n 2^30 / d) (C's division) for |n| <= 2^31 and 0 < d < 2^31, where
@@ -416,7 +419,7 @@ AVX2_INLINE int avx2_div30(__m256i n, __m256i d, __m256i *q)
     __m256i qi = avx2_pd_to_i64(qd);
     const __m256i r = _mm256_sub_epi64(_mm256_slli_epi64(n, 30), _mm256_mul_epi32(qi, d));
     const __m256i one = _mm256_set1_epi64x(1), zero = _mm256_setzero_si256();
-    const __m256i neg_n = _mm256_cmpgt_epi64(zero, n);
+    const __m256i neg_n = avx2_negative(n);
     /* n >= 0: 0 <= r < d; n < 0: -d < r <= 0 */
     const __m256i too_low = _mm256_andnot_si256(neg_n, _mm256_cmpgt_epi64(zero, r));
     const __m256i too_high = _mm256_andnot_si256(neg_n, _mm256_cmpgt_epi64(r, _mm256_sub_epi64(d, one)));
@@ -473,10 +476,10 @@ AVX2_INLINE int avx2_persp_any4(const WgtSetup *s, const int64_t e[4][3], WGT ou
     __m256i n1 = avx2_div_pow2v(n[1], kvec), n2 = avx2_div_pow2v(n[2], kvec);
     den = _mm256_blendv_epi8(den, _mm256_set1_epi64x(1), _mm256_cmpeq_epi64(den, _mm256_setzero_si256()));
     /* a negative denominator: trunc(n / d) = trunc(-n / -d) */
-    const __m256i dneg = _mm256_cmpgt_epi64(_mm256_setzero_si256(), den);
-    den = _mm256_sub_epi64(_mm256_xor_si256(den, dneg), dneg);
-    n1 = _mm256_sub_epi64(_mm256_xor_si256(n1, dneg), dneg);
-    n2 = _mm256_sub_epi64(_mm256_xor_si256(n2, dneg), dneg);
+    const __m256i dneg = avx2_negative(den);
+    den = avx2_negate_where(den, dneg);
+    n1 = avx2_negate_where(n1, dneg);
+    n2 = avx2_negate_where(n2, dneg);
     if (!_mm256_testz_si256(_mm256_cmpgt_epi64(den, _mm256_set1_epi64x(lim - 1)), _mm256_set1_epi64x(-1)))
         return 0;
     __m256i p1, p2;

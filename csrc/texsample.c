@@ -202,16 +202,25 @@ void texture_sample(const Texture *t, const TexCoord *c, const TexCoord *dx, con
         }                                                                                                  \
     }
 
+/* whether avx2_sample_linear can filter a level of this texture: its
+** sizes are powers of two (so are every smaller level's) and each wrap mode
+** is REPEAT or CLAMP_TO_EDGE */
+static inline int linear_kernel_fits(const Texture *t, unsigned int ws, unsigned int wt)
+{
+    const TexImage *l0 = &t->level[0];
+    const int pot = (l0->width & (l0->width - 1)) == 0 && (l0->height & (l0->height - 1)) == 0;
+    return pot && (ws == GL_REPEAT || ws == GL_CLAMP_TO_EDGE) && (wt == GL_REPEAT || wt == GL_CLAMP_TO_EDGE);
+}
+
 /* the vector kernel's share of n level-0 GL_LINEAR samples (a multiple of
-** four; 0 where it does not apply: other wrap modes, sizes that are not
-** powers of two, or no kernel in this build) */
+** four; 0 where it does not apply: see linear_kernel_fits, or no kernel in
+** this build) */
 static inline int linear_block(const Texture *t, int n, const TexCoord *c, FRAGV *out, size_t stride, unsigned int ws,
                                unsigned int wt)
 {
 #if SIMD_X86 && NUM_IS_FIXED
     const TexImage *li = &t->level[0];
-    const int pot = (li->width & (li->width - 1)) == 0 && (li->height & (li->height - 1)) == 0;
-    if (pot && (ws == GL_REPEAT || ws == GL_CLAMP_TO_EDGE) && (wt == GL_REPEAT || wt == GL_CLAMP_TO_EDGE)) {
+    if (linear_kernel_fits(t, ws, wt)) {
         avx2_sample_linear(li, n & ~3, c, out, stride, ws == GL_REPEAT, wt == GL_REPEAT);
         return n & ~3;
     }
@@ -231,10 +240,7 @@ static int lod_block(const Texture *t, int n, const TexCoord *c, const TexCoord 
                      FRAGV *out, size_t stride, const FRAGV *unorm, unsigned int ws, unsigned int wt)
 {
 #if SIMD_X86 && NUM_IS_FIXED
-    const TexImage *l0 = &t->level[0];
-    const int pot = (l0->width & (l0->width - 1)) == 0 && (l0->height & (l0->height - 1)) == 0;
-    if (!pot || !(ws == GL_REPEAT || ws == GL_CLAMP_TO_EDGE) || !(wt == GL_REPEAT || wt == GL_CLAMP_TO_EDGE)
-        || n > SPAN_SAMPLE_MAX)
+    if (!linear_kernel_fits(t, ws, wt) || n > SPAN_SAMPLE_MAX)
         return 0;
     LodChoice ch[SPAN_SAMPLE_MAX];
     FRAGV second[SPAN_SAMPLE_MAX][4];
