@@ -94,6 +94,7 @@ GlesContext *gles_context_create(int width, int height, int color_format,
     ctx->width = width;
     ctx->height = height;
     ctx->color_format = color_format;
+    ctx->flat_cache_format = -1;
     ctx->depth_bits = depth_bits;
     ctx->stencil_bits = stencil_bits;
     ctx->depth_max = depth_bits ? (uint32_t)((1ull << depth_bits) - 1) : 0;

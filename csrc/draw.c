@@ -91,6 +91,7 @@ typedef struct Batch {
     int64_t last;        /* array index of the last slot */
     int visible;         /* viewport meets the framebuffer */
     int reference;       /* GLES_DEBUG_VERTEX_REFERENCE: per vertex */
+    ClipRect clip;       /* the pixels fragments may reach */
     /* vertices waiting for attributes, and the primitives that use them */
     int npend, nprim;
     int64_t pend[VERTEX_BATCH];
@@ -295,7 +296,8 @@ static void queue_triangle(Batch *b, int64_t i0, int64_t i1, int64_t i2)
     int64_t area2 = 0;
     if (!codes) {
         area2 = raster_area2(v0, v1, v2);
-        if (area2 == 0 || culled(b->ctx, area2))
+        ClipRect box;
+        if (area2 == 0 || culled(b->ctx, area2) || !raster_centre_box(&b->clip, v0, v1, v2, &box))
             return;
     }
     enqueue(b, PRIM_TRIANGLE, 3, i0, i1, i2, codes, area2);
@@ -489,6 +491,7 @@ static void batch_init(Batch *b, GlesContext *ctx, int64_t base, int64_t last)
     b->last = last;
     b->visible = viewport_visible(ctx);
     b->reference = (ctx->debug & GLES_DEBUG_VERTEX_REFERENCE) != 0;
+    b->clip = raster_clip_rect(ctx);
     b->npend = 0;
     b->nprim = 0;
 }

@@ -106,6 +106,11 @@ static inline void step_next(EdgeStep *e)
     }
 }
 
+static inline int same_color(const FRAGV *p, const FRAGV *q)
+{
+    return p[0] == q[0] && p[1] == q[1] && p[2] == q[2] && p[3] == q[3];
+}
+
 ClipRect raster_clip_rect(const GlesContext *ctx)
 {
     ClipRect r = { 0, 0, ctx->width, ctx->height };
@@ -120,6 +125,65 @@ ClipRect raster_clip_rect(const GlesContext *ctx)
     return r;
 }
 
+/* Bounding boxes of at most this many pixel centres are scanned pixel by
+** pixel: for the small triangles of a distant mesh that is cheaper than the
+** row bounds' divisions, and it finds the same runs (below). */
+#define RASTER_SCAN_MAX 32
+
+/* The covered run of each row of a small triangle: every pixel centre of
+** the bounding box is tested against the three edge inequalities that the
+** row bounds solve (E > 0, or E == 0 on a tie edge). A row's covered
+** pixels form one interval, as each inequality holds on a half-line of the
+** row, so the first and last covered pixel give the same run [lo, hi) as
+** the divisions. Writes (row, lo, hi) per row with a run; returns their
+** number. */
+static int scan_runs(const TriSetup *t, const int tie[3], const ClipRect *box, int drop_last,
+                     int64_t runs[RASTER_SCAN_MAX][3])
+{
+    int m = 0;
+    for (int64_t py = box->y0; py <= box->y1; py++) {
+        int64_t e0 = t->ea[0] * box->x0 + t->eb[0] * py + t->ec[0];
+        int64_t e1 = t->ea[1] * box->x0 + t->eb[1] * py + t->ec[1];
+        int64_t e2 = t->ea[2] * box->x0 + t->eb[2] * py + t->ec[2];
+        int64_t lo = 0, hi = 0;
+        int any = 0;
+        for (int64_t px = box->x0; px <= box->x1; px++) {
+            if ((e0 > 0 || (e0 == 0 && tie[0])) && (e1 > 0 || (e1 == 0 && tie[1]))
+                && (e2 > 0 || (e2 == 0 && tie[2]))) {
+                if (!any)
+                    lo = px;
+                any = 1;
+                hi = px + 1;
+            }
+            e0 += t->ea[0];
+            e1 += t->ea[1];
+            e2 += t->ea[2];
+        }
+        if (drop_last && hi > lo)
+            hi--;
+        if (any && lo < hi) {
+            runs[m][0] = py;
+            runs[m][1] = lo;
+            runs[m][2] = hi;
+            m++;
+        }
+    }
+    return m;
+}
+
+/* the flat colour in the framebuffer's format; neighbouring triangles of a
+** flat-lit face share it, so the last one is kept */
+static uint32_t packed_flat(GlesContext *ctx, const FRAGV c[4])
+{
+    if (ctx->flat_cache_format != ctx->color_format || !same_color(ctx->flat_cache_color, c)) {
+        for (int k = 0; k < 4; k++)
+            ctx->flat_cache_color[k] = c[k];
+        ctx->flat_cache_format = ctx->color_format;
+        ctx->flat_cache_packed = span_pack_color(ctx, c);
+    }
+    return ctx->flat_cache_packed;
+}
+
 void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const Vertex *c, const Vertex *pv,
                      int back)
 {
@@ -132,6 +196,14 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
         c = tmp;
         area2 = -area2;
     }
+    /* the rows and columns whose centres lie within the extent, clipped to
+    ** the framebuffer and the scissor box: nothing to set up without one */
+    const ClipRect clip = raster_clip_rect(ctx);
+    ClipRect box;
+    if (!raster_centre_box(&clip, a, b, c, &box))
+        return;
+    const int64_t y0 = box.y0, y1 = box.y1, cx0 = clip.x0, cx1 = clip.x1;
+    const int drop_last = (ctx->debug & GLES_DEBUG_DROP_LAST_PIXEL) != 0;
     TriSetup t;
     int tie[3];
     t.v[0] = a;
@@ -143,6 +215,13 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
     if (ctx->debug & GLES_DEBUG_FLIP_TIE_RULE)
         for (int i = 0; i < 3; i++)
             tie[i] = !tie[i]; /* shared edges now double-hit or gap */
+    int64_t runs[RASTER_SCAN_MAX][3];
+    int nruns = -1;  /* -1: the rows are bounded by division below */
+    if ((box.x1 - box.x0 + 1) * (box.y1 - box.y0 + 1) <= RASTER_SCAN_MAX) {
+        nruns = scan_runs(&t, tie, &box, drop_last, runs);
+        if (nruns == 0)
+            return;
+    }
     NUM w[3] = { a->clip[3], b->clip[3], c->clip[3] };
     RecipW q[3] = { a->rw, b->rw, c->rw };
     wgt_setup(&t.wgt, area2, w, q);
@@ -152,11 +231,9 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
     const FRAGV *pc = use_back ? pv->color_back : pv->color;
     for (int k = 0; k < 4; k++)
         t.flat[k] = pc[k];
-    t.flat_packed = span_pack_color(ctx, t.flat);
     /* smooth shading of three equal colours is that colour: use the
     ** constant-colour span, which every path agrees on */
-    t.smooth = ctx->shade_model == GL_SMOOTH
-            && (memcmp(t.col[0], t.col[1], 4 * sizeof(FRAGV)) | memcmp(t.col[0], t.col[2], 4 * sizeof(FRAGV)));
+    t.smooth = ctx->shade_model == GL_SMOOTH && !(same_color(t.col[0], t.col[1]) && same_color(t.col[0], t.col[2]));
     t.depth_offset = 0;
     if (ctx->polygon_offset_fill && ctx->depth) {
         /* §3.5.2: o = m factor + r units, m = max(|dz/dx|, |dz/dy|) (the
@@ -175,26 +252,15 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
         if ((ctx->tex_units_on & (1u << u)) && (a->tex[u][3] != NUM_ONE || b->tex[u][3] != NUM_ONE || c->tex[u][3] != NUM_ONE))
             t.tex_projective |= 1u << u;
+    /* only the constant-colour spans read the packed colour */
+    t.flat_packed = t.smooth ? 0 : packed_flat(ctx, t.flat);
     SpanFunc span = t.smooth ? ctx->span : ctx->span_const;
-
-    /* rows whose centres lie within the vertical extent, clipped to the
-    ** framebuffer and the scissor box */
-    int64_t miny = a->wy, maxy = a->wy;
-    if (b->wy < miny) miny = b->wy;
-    if (c->wy < miny) miny = c->wy;
-    if (b->wy > maxy) maxy = b->wy;
-    if (c->wy > maxy) maxy = c->wy;
-    const int64_t one = GLES_SUBPIXEL_ONE, half = GLES_SUBPIXEL_ONE / 2;
-    int64_t y0 = i64_ceil_div(miny - half, one);
-    int64_t y1 = i64_floor_div(maxy - half, one); /* inclusive */
-    const ClipRect clip = raster_clip_rect(ctx);
-    const int64_t cx0 = clip.x0, cx1 = clip.x1, cy0 = clip.y0, cy1 = clip.y1;
-    if (y0 < cy0) y0 = cy0;
-    if (y1 > cy1 - 1) y1 = cy1 - 1;
-    int drop_last = (ctx->debug & GLES_DEBUG_DROP_LAST_PIXEL) != 0;
-
-    if (y0 > y1)
+    if (nruns >= 0) {
+        for (int r = 0; r < nruns; r++)
+            span(ctx, &t, (int)runs[r][0], (int)runs[r][1], (int)(runs[r][2] - runs[r][1]));
         return;
+    }
+
     /* Per edge, the row's bound is sign * floor(n / d) + bias with n linear
     ** in the row: one division at the first row, then exact stepping. */
     EdgeStep st[3];

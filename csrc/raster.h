@@ -63,6 +63,46 @@ typedef struct ClipRect {
 } ClipRect;
 ClipRect raster_clip_rect(const GlesContext *ctx);
 
+/* floor(v / GLES_SUBPIXEL_ONE) and ceil, for window coordinates in subpixels */
+static inline int64_t raster_floor_px(int64_t v)
+{
+    return v >= 0 ? v / GLES_SUBPIXEL_ONE : -((-v + GLES_SUBPIXEL_ONE - 1) / GLES_SUBPIXEL_ONE);
+}
+static inline int64_t raster_ceil_px(int64_t v) { return -raster_floor_px(-v); }
+
+/* The pixel centres of `clip` in the bounding box of a triangle's window
+** coordinates, edges included (a centre on an edge may belong to the
+** triangle): columns box->x0..x1 and rows box->y0..y1, inclusive. Returns 0
+** when there is none: then the triangle yields no fragment under any fill
+** rule, and can be dropped before its vertices are lit or its edges set up
+** (small triangles far from the eye are often like this). */
+static inline int raster_centre_box(const ClipRect *clip, const Vertex *a, const Vertex *b, const Vertex *c,
+                                    ClipRect *box)
+{
+    const int64_t half = GLES_SUBPIXEL_ONE / 2;
+    int64_t lo = a->wx, hi = a->wx;
+    if (b->wx < lo) lo = b->wx;
+    if (c->wx < lo) lo = c->wx;
+    if (b->wx > hi) hi = b->wx;
+    if (c->wx > hi) hi = c->wx;
+    box->x0 = raster_ceil_px(lo - half);
+    box->x1 = raster_floor_px(hi - half);
+    if (box->x0 < clip->x0) box->x0 = clip->x0;
+    if (box->x1 > clip->x1 - 1) box->x1 = clip->x1 - 1;
+    if (box->x0 > box->x1)
+        return 0;
+    lo = hi = a->wy;
+    if (b->wy < lo) lo = b->wy;
+    if (c->wy < lo) lo = c->wy;
+    if (b->wy > hi) hi = b->wy;
+    if (c->wy > hi) hi = c->wy;
+    box->y0 = raster_ceil_px(lo - half);
+    box->y1 = raster_floor_px(hi - half);
+    if (box->y0 < clip->y0) box->y0 = clip->y0;
+    if (box->y1 > clip->y1 - 1) box->y1 = clip->y1 - 1;
+    return box->y0 <= box->y1;
+}
+
 /* draw.c: bring derived state up to date before drawing */
 void draw_validate(GlesContext *ctx);
 

@@ -341,6 +341,10 @@ struct GlesContext {
     SpanStage chain[GLES_MAX_STAGES];   /* the chain's stages, when span is span_chain */
     int chain_len;
     uint8_t stencil_lut[4][256];        /* the chain's stencil tables (fragment_stencil_lut) */
+    /* raster.c: the last flat colour packed for the framebuffer (format -1: none) */
+    FRAGV flat_cache_color[4];
+    int flat_cache_format;
+    uint32_t flat_cache_packed;
     TexSpanSampler samplers[GLES_MAX_TEXTURE_UNITS];   /* each unit's, for the chain (texsample.c) */
     int debug;
     int simd;                   /* SIMD_* the CPU runs (simd_detect) */
