@@ -348,6 +348,15 @@ def _vector_checker(name: str, at: int,
         n = count(args)
         if n == 0 or at >= len(args):
             return args
+        head = args[at]
+        if type(head) in (list, tuple) and len(head) >= n:
+            # a short list of plain numbers, all in range: no array needed
+            # (a value at a limit, NaN or anything else takes the full test)
+            try:
+                if all(UNDERFLOW_LIMIT < abs(x) < OVERFLOW_LIMIT or not x for x in head[:n]):
+                    return args
+            except TypeError:
+                pass
         try:
             vals = np.asarray(args[at], dtype=np.float64).reshape(-1)
         except (TypeError, ValueError, OverflowError):
