@@ -268,7 +268,7 @@ def test_cli_failing_build_exits_1_with_the_traceback(tmp_path: Path,
     assert "| double | FAILED: ZeroDivisionError: no double here |" in captured.out
     assert "Traceback (most recent call last):" in captured.err
     assert f'File "{scene}", line 4, in scene' in captured.err
-    assert "ZeroDivisionError: no double here" in captured.err
+    assert "compare: double failed: ZeroDivisionError: no double here" in captured.err
     # a peer missing from the machine is not a failure
     ok = tmp_path / "ok.py"
     ok.write_text("def scene(gl, w, h):\n    gl.glClear(0x4000)\n")
@@ -291,7 +291,7 @@ def test_cli_report_exits_1_with_the_traceback(tmp_path: Path, monkeypatch: pyte
     assert main(["report", "--out", str(out), "--size", "8x8", "--runs", "1", "--peers", "",
                  "--quiet"]) == 1
     err = capsys.readouterr().err
-    assert "fails_on_float failed on float: RuntimeError: this scene does not run on float" in err
+    assert "report: fails_on_float: float failed: RuntimeError: this scene does not run on float" in err
     assert "Traceback (most recent call last):" in err and "in fails_on_float" in err
     # the report is still written, with the failure in it
     assert "FAILED: RuntimeError" in (out / "report.md").read_text()

@@ -173,7 +173,7 @@ def test_cli_jobs_identical_and_unknown_names(tmp_path: Path, scene_file: Path,
     assert main(["compare", str(scene_file), "--function", "triangle", "--size", "8x8", "--runs", "1",
                  "--builds", "fixed,fixd", "--peers", "mesa-foo", "--jobs", "2"]) == 1
     err = capsys.readouterr().err
-    assert "failed on fixd: ValueError: unknown renderer 'fixd'" in err
-    assert "failed on mesa-foo" in err
+    assert "fixd failed: ValueError: unknown renderer 'fixd'" in err
+    assert "mesa-foo failed: " in err
     with pytest.raises(SystemExit):
         main(["compare", str(scene_file), "--jobs", "0"])

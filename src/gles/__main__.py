@@ -68,12 +68,13 @@ def _cmd_compare(args: argparse.Namespace) -> int:
         print(f"\nimages in {out}")
     for r in result.renders.values():
         if r.error is not None:
-            _print_failure("compare", result.scene, r)
+            _print_failure("compare", None, r)
     return 1 if result.failed else 0
 
 
-def _print_failure(command: str, scene: str, r: cmp.Render) -> None:
-    print(f"python -m gles {command}: {scene} failed on {r.renderer}: {r.error}", file=sys.stderr)
+def _print_failure(command: str, scene: str | None, r: cmp.Render) -> None:
+    where = f"{scene}: " if scene else ""
+    print(f"python -m gles {command}: {where}{r.renderer} failed: {r.error}", file=sys.stderr)
     if r.traceback:
         print(r.traceback.rstrip("\n"), file=sys.stderr)
 
