@@ -392,7 +392,7 @@ def compare_scenes(scenes: Sequence[Scene], width: int, height: int, builds: Seq
                 progress(i // per, work[i][1])
     finally:
         if own is not None:
-            own.shutdown()
+            own.shutdown(cancel_futures=True)   # after an error, drop the jobs not started
     out = []
     for k, scene in enumerate(scenes):
         mine = results[k * per:(k + 1) * per]
