@@ -218,3 +218,188 @@ def test_gles_compare_is_callable_and_a_module() -> None:
     res = gles.compare(triangle_scene, 8, 8, builds=("double",), peers=(), runs=1)
     assert isinstance(res, cmp.Comparison)
     assert gles.compare.metrics is cmp.metrics
+
+
+# {====================================================================
+# failures, range counts per frame, the notebook view
+
+def fails_on_float(gl, w, h):
+    """Clears on every build but float, where it raises."""
+    if b"(float)" in gl.glGetString(C.GL_RENDERER):
+        raise RuntimeError("this scene does not run on float")
+    gl.glClearColor(0.25, 0.5, 0.75, 1)
+    gl.glClear(C.GL_COLOR_BUFFER_BIT)
+
+
+def test_a_build_that_raises_is_failed_with_its_traceback() -> None:
+    res = cmp.compare(fails_on_float, 8, 8, peers=(), runs=2)
+    assert list(res.renders) == ["fixed", "float", "double"]
+    bad = res.renders["float"]
+    assert bad.error == "RuntimeError: this scene does not run on float"
+    assert bad.skipped is None and bad.image is None and bad.metrics is None
+    assert bad.traceback.startswith("Traceback (most recent call last):")
+    assert "in fails_on_float" in bad.traceback and "raise RuntimeError" in bad.traceback
+    assert list(res.failed) == ["float"]
+    assert "| float | FAILED: RuntimeError" in res.table()
+    # the others still ran and were measured: 0.25, 0.5, 0.75 of 255 round to 64, 128, 191
+    for name in ("fixed", "double"):
+        r = res.renders[name]
+        assert r.error is None and r.traceback is None
+        assert (r.image[..., :3] == (64, 128, 191)).all() and math.isinf(r.metrics.psnr)
+
+
+def test_a_failing_reference_outside_the_builds_is_listed() -> None:
+    res = cmp.compare(fails_on_float, 8, 8, builds=("fixed",), peers=(), runs=1, reference="float")
+    assert list(res.renders) == ["fixed", "float"] and list(res.failed) == ["float"]
+    assert res.renders["fixed"].image is not None and res.renders["fixed"].metrics is None
+
+
+def test_cli_failing_build_exits_1_with_the_traceback(tmp_path: Path,
+                                                      capsys: pytest.CaptureFixture[str]) -> None:
+    scene = tmp_path / "bad.py"
+    scene.write_text(
+        "from gles import constants as C\n"
+        "def scene(gl, w, h):\n"
+        "    if b'(double)' in gl.glGetString(C.GL_RENDERER):\n"
+        "        raise ZeroDivisionError('no double here')\n"
+        "    gl.glClear(C.GL_COLOR_BUFFER_BIT)\n")
+    assert main(["compare", str(scene), "--size", "8x8", "--runs", "1", "--peers", ""]) == 1
+    captured = capsys.readouterr()
+    assert "| double | FAILED: ZeroDivisionError: no double here |" in captured.out
+    assert "Traceback (most recent call last):" in captured.err
+    assert f'File "{scene}", line 4, in scene' in captured.err
+    assert "compare: double failed: ZeroDivisionError: no double here" in captured.err
+    # a peer missing from the machine is not a failure
+    ok = tmp_path / "ok.py"
+    ok.write_text("def scene(gl, w, h):\n    gl.glClear(0x4000)\n")
+    from gles import mesa
+
+    if mesa.available("softpipe") is not None:
+        assert main(["compare", str(ok), "--size", "8x8", "--runs", "1", "--peers", "mesa-softpipe"]) == 0
+
+
+def test_cli_report_exits_1_with_the_traceback(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+                                               capsys: pytest.CaptureFixture[str]) -> None:
+    from gles import report
+
+    def only_the_failing(only=None):
+        return [report.Entry("fails_on_float", "Fails on float", "Techniques", fails_on_float)]
+
+    monkeypatch.setattr(report, "entries", only_the_failing)
+    monkeypatch.setattr("gles.target.target_missing", lambda: "not measured here")
+    out = tmp_path / "rep"
+    assert main(["report", "--out", str(out), "--size", "8x8", "--runs", "1", "--peers", "",
+                 "--quiet"]) == 1
+    err = capsys.readouterr().err
+    assert "report: fails_on_float: float failed: RuntimeError: this scene does not run on float" in err
+    assert "Traceback (most recent call last):" in err and "in fails_on_float" in err
+    # the report is still written, with the failure in it
+    assert "FAILED: RuntimeError" in (out / "report.md").read_text()
+    assert (out / "img" / "fails_on_float_fixed.png").exists()
+
+
+def range_scene(gl, w, h):
+    """Setup: one overflowing fog end. Each frame: two overflowing fog starts
+    and one fog density that rounds to 0 in 16.16 (1e-6 < 2^-17)."""
+    gl.glFogf(C.GL_FOG_END, 1e5)
+
+    def frame():
+        gl.glFogf(C.GL_FOG_START, 40000.0)
+        gl.glFogf(C.GL_FOG_START, -50000.0)
+        gl.glFogf(C.GL_FOG_DENSITY, 1e-6)
+        gl.glClear(C.GL_COLOR_BUFFER_BIT)
+    return frame
+
+
+def range_scene_whole(gl, w, h):
+    """The same calls, timed whole (no frame function)."""
+    range_scene(gl, w, h)()
+
+
+@pytest.mark.parametrize("scene", [range_scene, range_scene_whole])
+def test_range_counts_are_per_frame_whatever_the_runs(scene) -> None:
+    for runs in (1, 3, 5):
+        rng = cmp.render(scene, "fixed", 8, 8, runs=runs).range
+        # the setup's one and one frame's three, whatever the number of frames drawn
+        assert rng.counts == {"overflow": 3, "underflow": 1, "rule": 0}, runs
+        assert rng.by_source == {"glFogf(param)": 4}
+
+
+def test_range_counts_of_a_hard_case_do_not_grow_with_runs() -> None:
+    from gles.hardcases import HARD_CASES
+
+    scene = HARD_CASES["rule_breaking_matrices"].scene
+    counts = [cmp.render(scene, "fixed", 32, 32, runs=runs).range.counts for runs in (1, 2, 5)]
+    assert counts[0] == counts[1] == counts[2] and counts[0]["rule"] > 0
+
+
+def decode_png(data: bytes) -> np.ndarray:
+    """An 8-bit RGB(A) PNG, decoded from the format's definition (chunks with
+    CRCs, zlib, the five row filters)."""
+    import struct
+    import zlib
+
+    assert data[:8] == b"\x89PNG\r\n\x1a\n"
+    pos, chunks = 8, []
+    while pos < len(data):
+        (n,) = struct.unpack(">I", data[pos:pos + 4])
+        kind, body = data[pos + 4:pos + 8], data[pos + 8:pos + 8 + n]
+        assert struct.unpack(">I", data[pos + 8 + n:pos + 12 + n])[0] == zlib.crc32(kind + body)
+        chunks.append((kind, body))
+        pos += 12 + n
+    assert chunks[0][0] == b"IHDR" and chunks[-1][0] == b"IEND"
+    w, h, depth, ctype, _, _, interlace = struct.unpack(">IIBBBBB", chunks[0][1])
+    assert depth == 8 and ctype in (2, 6) and interlace == 0
+    bpp = 3 if ctype == 2 else 4
+    raw = zlib.decompress(b"".join(b for k, b in chunks if k == b"IDAT"))
+    stride = w * bpp
+    out = np.zeros((h, stride), np.int32)
+    prev = np.zeros(stride, np.int32)
+    for y in range(h):
+        kind = raw[y * (stride + 1)]
+        line = np.frombuffer(raw, np.uint8, stride, y * (stride + 1) + 1).astype(np.int32)
+        cur = np.zeros(stride, np.int32)
+        for x in range(stride):
+            a = cur[x - bpp] if x >= bpp else 0
+            b = prev[x]
+            c = prev[x - bpp] if x >= bpp else 0
+            if kind == 0:
+                pred = 0
+            elif kind == 1:
+                pred = a
+            elif kind == 2:
+                pred = b
+            elif kind == 3:
+                pred = (a + b) // 2
+            else:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                pred = a if pa <= pb and pa <= pc else (b if pb <= pc else c)
+            cur[x] = (line[x] + pred) & 255
+        out[y], prev = cur, cur
+    return out.reshape(h, w, bpp).astype(np.uint8)
+
+
+def test_comparison_html_for_notebooks() -> None:
+    import base64
+    import re
+
+    res = cmp.compare(fails_on_float, 6, 5, builds=("fixed", "float", "double"),
+                      peers=("mesa-softpipe",), runs=1)
+    res.renders["fixed"].image[0, 0, :3] = (0, 0, 0)      # a difference for the heatmap to show
+    res.renders["fixed"].heatmap = cmp.heatmap(res.renders["fixed"].image, res.renders["double"].image)
+    page = res._repr_html_()
+    rows = re.findall(r"<tr><td>([^<]+)</td>", page)
+    assert rows == list(res.renders)
+    assert "FAILED: RuntimeError: this scene does not run on float" in page
+    assert "in fails_on_float" in page                     # the traceback, folded
+    soft = res.renders["mesa-softpipe"]
+    if soft.skipped is not None:
+        assert f"skipped: {soft.skipped}" in page
+    urls = re.findall(r"src='data:image/png;base64,([A-Za-z0-9+/=]+)'", page)
+    drawn = [r for r in res.renders.values() if r.image is not None]
+    assert len(urls) == 2 * len(drawn)
+    for r, (img, hm) in zip(drawn, zip(urls[::2], urls[1::2])):
+        assert np.array_equal(decode_png(base64.b64decode(img, validate=True)), r.image)
+        assert np.array_equal(decode_png(base64.b64decode(hm, validate=True)), r.heatmap)
+    assert decode_png(base64.b64decode(urls[1]))[0, 0].any()   # fixed's one differing pixel

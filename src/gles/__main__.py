@@ -1,7 +1,8 @@
 """Command line: ``python -m gles report|compare|render ...``.
 
-* ``report [--out DIR]``: the gallery and the hard cases on every build and
-  on Mesa, as report.html and report.md (the project's main job).
+* ``report [--out DIR] [--jobs N]``: the gallery and the hard cases on every
+  build and on Mesa, as report.html and report.md (the project's main job);
+  ``--jobs N`` renders in N worker processes.
 * ``compare SCENE.py``: one scene on the builds and peers, a table of time
   against error, and optionally the images and heatmaps.
 * ``render SCENE.py -o OUT.png``: one scene on one build, to a PNG.
@@ -30,6 +31,16 @@ def _size(text: str) -> tuple[int, int]:
     return w, h
 
 
+def _jobs(text: str) -> int:
+    try:
+        n = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"jobs must be a whole number, not {text!r}") from None
+    if not 1 <= n <= 256:
+        raise argparse.ArgumentTypeError(f"jobs {n} is outside 1..256")
+    return n
+
+
 def _names(text: str) -> list[str]:
     return [n for n in text.split(",") if n]
 
@@ -38,7 +49,8 @@ def _cmd_compare(args: argparse.Namespace) -> int:
     scene = cmp.load_scene(args.scene, args.function)
     w, h = args.size
     result = cmp.compare(scene, w, h, builds=args.builds, peers=args.peers, runs=args.runs,
-                         progress=lambda name: print(f"  rendering on {name}", file=sys.stderr))
+                         progress=lambda name: print(f"  rendered on {name}", file=sys.stderr),
+                         jobs=args.jobs)
     print(f"{result.scene} at {w}x{h}, error against {result.reference}, median of {args.runs} frames\n")
     print(result.table())
     fixed = result.renders.get("fixed")
@@ -54,9 +66,17 @@ def _cmd_compare(args: argparse.Namespace) -> int:
             if r.heatmap is not None:
                 write_png(out / f"{result.scene}_{r.renderer}_diff.png", r.heatmap)
         print(f"\nimages in {out}")
-    for name, why in result.failed.items():
-        print(f"python -m gles compare: {name} failed: {why}", file=sys.stderr)
+    for r in result.renders.values():
+        if r.error is not None:
+            _print_failure("compare", None, r)
     return 1 if result.failed else 0
+
+
+def _print_failure(command: str, scene: str | None, r: cmp.Render) -> None:
+    where = f"{scene}: " if scene else ""
+    print(f"python -m gles {command}: {where}{r.renderer} failed: {r.error}", file=sys.stderr)
+    if r.traceback:
+        print(r.traceback.rstrip("\n"), file=sys.stderr)
 
 
 def _cmd_render(args: argparse.Namespace) -> int:
@@ -79,9 +99,19 @@ def _cmd_report(args: argparse.Namespace) -> int:
     from . import report
 
     w, h = args.size
+    failed: list[str] = []
+
+    def on_failure(scene: str, r: cmp.Render) -> None:
+        failed.append(f"{scene} on {r.renderer}")
+        _print_failure("report", scene, r)
+
     path = report.build_report(args.out, w, h, runs=args.runs, only=args.only, builds=args.builds,
-                               peers=args.peers, progress=not args.quiet)
+                               peers=args.peers, progress=not args.quiet, jobs=args.jobs,
+                               on_failure=on_failure)
     print(f"report: {path} (and {path.with_suffix('.md')})")
+    if failed:
+        print(f"python -m gles report: {len(failed)} renders failed: {', '.join(failed)}", file=sys.stderr)
+        return 1
     return 0
 
 
@@ -116,6 +146,9 @@ def main(argv: list[str] | None = None) -> int:
         p.add_argument("--runs", type=int, default=5, help="frames timed per renderer (median reported)")
         p.add_argument("--builds", type=_names, default=list(cmp.BUILDS),
                        help="comma-separated builds (default fixed,float,double)")
+        p.add_argument("--jobs", type=_jobs, default=1,
+                       help="run the (scene, renderer) jobs in N worker processes (default 1: in this "
+                            "process); the times are noisier, the images and errors the same")
 
     p = sub.add_parser("report", help="render the gallery and hard cases; write report.html and report.md")
     p.add_argument("--out", default="gles-report", help="output directory (default ./gles-report)")

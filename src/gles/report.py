@@ -26,11 +26,11 @@ import time
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Callable
+from typing import Any, Callable
 
 from . import __version__
 from ._png import write_png
-from .compare import BUILDS, PEERS, Comparison, compare
+from .compare import BUILDS, PEERS, Comparison, Render, compare_scenes
 
 # one colour per renderer, for the plots and the legend
 COLORS = {"fixed": "#d62728", "float": "#1f77b4", "double": "#2ca02c",
@@ -297,8 +297,15 @@ def _html(results: list[tuple[Entry, Comparison]], renderers: list[str], w: int,
 
 def build_report(out: str | Path, width: int = 256, height: int = 256, runs: int = 3,
                  only: Sequence[str] | None = None, builds: Sequence[str] = BUILDS,
-                 peers: Sequence[str] = PEERS, progress: bool = True) -> Path:
-    """Render every scene and write the report into `out`; returns report.html's path."""
+                 peers: Sequence[str] = PEERS, progress: bool = True, executor: Any = None,
+                 jobs: int = 1, on_failure: Callable[[str, Render], None] | None = None) -> Path:
+    """Render every scene and write the report into `out`; returns report.html's path.
+
+    The (scene, renderer) jobs run in this process one after the other by
+    default, in `jobs` worker processes, or on `executor` (any
+    concurrent.futures.Executor); see :func:`gles.compare.compare`. Each
+    renderer that failed is passed to ``on_failure(scene name, render)``
+    (its ``traceback`` says why) and shown as failed in the report."""
     out = Path(out)
     (out / "img").mkdir(parents=True, exist_ok=True)
     todo = entries(only)
@@ -306,15 +313,18 @@ def build_report(out: str | Path, width: int = 256, height: int = 256, runs: int
     bar = Progress(len(todo) * len(renderers), progress)
     results: list[tuple[Entry, Comparison]] = []
     start = time.perf_counter()
-    for entry in todo:
-        comp = compare(entry.scene, width, height, builds=builds, peers=peers, runs=runs,
-                       progress=lambda name, entry=entry: bar.step(f"{entry.name} on {name}"))
+    comps = compare_scenes([entry.scene for entry in todo], width, height, builds=builds, peers=peers,
+                           runs=runs, progress=lambda i, name: bar.step(f"{todo[i].name} on {name}"),
+                           executor=executor, jobs=jobs)
+    for entry, comp in zip(todo, comps):
         comp.scene = entry.name
         for r in comp.renders.values():
             if r.image is not None:
                 write_png(out / "img" / f"{entry.name}_{r.renderer}.png", r.image)
             if r.heatmap is not None:
                 write_png(out / "img" / f"{entry.name}_{r.renderer}_diff.png", r.heatmap)
+            if r.error is not None and on_failure is not None:
+                on_failure(entry.name, r)
         results.append((entry, comp))
     bar.finish()
     elapsed = time.perf_counter() - start
