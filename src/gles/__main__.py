@@ -178,7 +178,7 @@ def main(argv: list[str] | None = None) -> int:
     common(p, "256x256")
     p.add_argument("--peers", type=_names, default=list(cmp.PEERS),
                    help="comma-separated peers (default mesa-llvmpipe,mesa-softpipe; '' for none)")
-    p.add_argument("--scenes", "--only", dest="only", type=_names, default=None,
+    p.add_argument("--scenes", "--only", dest="only", type=_names, default=None, metavar="NAMES,FILE.py",
                    help="comma-separated gallery or hard-case scene names and/or scene files (*.py); "
                    "default: the gallery and the hard cases")
     p.add_argument("--color", default="rgba8888", choices=["rgba8888", "rgb565"],

@@ -363,7 +363,8 @@ _SVG_STYLE = ("<style>.scene polyline{stroke:#999;stroke-width:1;fill:none}"
 
 
 def overview_svg(results: list[tuple[Entry, Comparison]], costs: dict[str, Any] | None = None,
-                 target_note: str = "", panel: tuple[int, int] = (460, 400)) -> str:
+                 target_note: str = "", panel: tuple[int, int] = (460, 400),
+                 target_size: tuple[int, int] | None = None) -> str:
     """The report's plot: two panels side by side, this host's time per frame
     and the no-FPU target's instructions per frame (fixed and float), each
     against PSNR versus double, and a legend.
@@ -373,6 +374,8 @@ def overview_svg(results: list[tuple[Entry, Comparison]], costs: dict[str, Any] 
     each point's hover text (``<title>``) names the scene, renderer and
     values. `costs` maps a scene's name to its :class:`gles.target.SceneCost`;
     without it the target panel shows `target_note` (what to install).
+    `target_size` is the size the counts were taken at, when it is not the
+    images' (whose PSNR both panels show).
     """
     pw, ph = panel
     ml, mt, mb, gap = 64, 40, 44, 70
@@ -432,6 +435,10 @@ def overview_svg(results: list[tuple[Entry, Comparison]], costs: dict[str, Any] 
 
     panel_svg(ml, "host: time per frame against error", "host ms per frame (this machine, log scale)",
               host, lambda v: f"{v:.2f} ms on this host", "no timed renders")
+    if target_size is not None and results and tgt:
+        comp = results[0][1]
+        out.append(f'<text x="{ml + pw + gap + ml}" y="32" fill="#555">counts at {target_size[0]}x'
+                   f'{target_size[1]}; PSNR of the {comp.width}x{comp.height} images</text>')
     panel_svg(ml + pw + gap + ml, "no-FPU target: instructions per frame against error",
               "target instructions per frame (log scale)", tgt,
               lambda v: f"{v:,.0f} target instructions per frame", target_note or "no target counts")
@@ -627,7 +634,7 @@ def report_data(results: list[tuple[Entry, Comparison]], verdicts: Sequence[Verd
                 costs: dict[str, Any] | None = None, *, runs: int = 0, color: str = "rgba8888",
                 min_psnr: float | None = None, max_over_1lsb: float | None = None,
                 target_missing: str | None = None, target_size: tuple[int, int] | None = None,
-                elapsed_s: float = 0.0, peers: Sequence[str] = ()) -> dict[str, Any]:
+                elapsed_s: dict[str, float] | None = None, peers: Sequence[str] = ()) -> dict[str, Any]:
     """Everything report.json holds: every number of the page, with the
     thresholds, the verdicts, the machine, the sizes and the versions.
     PSNR of identical images is null with ``identical: true`` (JSON has no
@@ -663,7 +670,7 @@ def report_data(results: list[tuple[Entry, Comparison]], verdicts: Sequence[Verd
         "color": color,
         "runs": runs,
         "timing": "host: median wall-clock ms per frame on this machine",
-        "elapsed_s": float(elapsed_s),
+        "elapsed_s": {k: float(v) for k, v in (elapsed_s or {}).items()},   # render, target
         "thresholds": {"min_psnr": min_psnr, "max_over_1lsb": max_over_1lsb},
         "target": {"description": target.TARGET, "available": target_missing is None,
                    "missing": target_missing,
@@ -751,8 +758,8 @@ def _md_table(header: list[str], rows: list[list[str]], left: int = 1) -> list[s
     return out
 
 
-def _intro(w: int, h: int, runs: int, color: str, elapsed: float, target_size: tuple[int, int],
-           target_missing: str | None) -> str:
+def _intro(w: int, h: int, runs: int, color: str, rendered_s: float, target_s: float,
+           target_size: tuple[int, int], target_missing: str | None) -> str:
     from . import target
 
     tgt = (f"Target columns: instructions per frame on the no-FPU target ({target.TARGET}) at "
@@ -766,7 +773,8 @@ def _intro(w: int, h: int, runs: int, color: str, elapsed: float, target_size: t
     return (f"{w}x{h} pixels, {color.upper()} framebuffer, error against the double build (rendered "
             f"the same way) over R, G and B.{dither} Times are host timings: the median of {runs} frames "
             f"per renderer on this machine ({_machine()}), not the target's. {tgt} "
-            f"Rendered in {elapsed:.0f} s.")
+            f"Rendered in {rendered_s:.0f} s" + (f", target counts in {target_s:.0f} s." if
+                                                  target_missing is None else "."))
 
 
 def _markdown(results: list[tuple[Entry, Comparison]], renderers: list[str], intro: str,
@@ -807,8 +815,9 @@ body { font-family: sans-serif; margin: 2em; color: #222; max-width: 1400px; }
 table { border-collapse: collapse; margin: 0.5em 0 1em; font-size: 13px; }
 td, th { border: 1px solid #ccc; padding: 3px 8px; text-align: right; }
 td:first-child, th:first-child { text-align: left; }
-td.fail { color: #b00; font-weight: bold; text-align: left; }
-td.pass { color: #070; text-align: left; }
+.fail { color: #b00; font-weight: bold; }
+.pass { color: #070; }
+td.fail, td.pass { text-align: left; }
 .images { display: flex; flex-wrap: wrap; gap: 10px; }
 figure { margin: 0; text-align: center; font-size: 12px; }
 figure img { display: block; image-rendering: pixelated; border: 1px solid #ccc; }
@@ -916,6 +925,7 @@ def _build(out: str | Path, width: int, height: int, runs: int, only: Sequence[s
                 write_png(out / "img" / f"{entry.name}_{r.renderer}_diff.png", r.heatmap)
         results.append((entry, comp))
     bar.finish()
+    rendered_s = time.perf_counter() - start
     for _entry, comp in results:
         _check_color(comp, color)
     # the no-FPU target's instructions per frame beside the host's ms (gles.target; n/a without it)
@@ -924,11 +934,13 @@ def _build(out: str | Path, width: int, height: int, runs: int, only: Sequence[s
     cost_list = target.scene_costs(results, width, height)
     costs = {c.scene: c for c in cost_list}
     elapsed = time.perf_counter() - start
+    target_s = elapsed - rendered_s
     verdicts = [verdict(comp, min_psnr, max_over_1lsb) for _, comp in results]
     tsize = target.report_size(width, height)
-    intro = _intro(width, height, runs, color, elapsed, tsize, missing)
+    intro = _intro(width, height, runs, color, rendered_s, target_s, tsize, missing)
     thresholds = _thresholds_text(min_psnr, max_over_1lsb)
-    svg = overview_svg(results, costs, "Target instructions per frame: " + (missing or "none measured"))
+    svg = overview_svg(results, costs, "Target instructions per frame: " + (missing or "none measured"),
+                       target_size=tsize if tsize != (width, height) else None)
     (out / "speed_vs_psnr.svg").write_text(svg, encoding="utf-8")
     key = colorbar_svg()
     (out / "colorbar.svg").write_text(key, encoding="utf-8")
@@ -939,7 +951,7 @@ def _build(out: str | Path, width: int, height: int, runs: int, only: Sequence[s
     page_html = page_html.replace("</body></html>", target_html + "\n</body></html>")
     data = report_data(results, verdicts, costs, runs=runs, color=color, min_psnr=min_psnr,
                        max_over_1lsb=max_over_1lsb, target_missing=missing, target_size=tsize,
-                       elapsed_s=elapsed, peers=peers)
+                       elapsed_s={"render": rendered_s, "target": target_s}, peers=peers)
     (out / "report.json").write_text(json.dumps(data, indent=1, allow_nan=False) + "\n", encoding="utf-8")
     (out / "report.md").write_text(md, encoding="utf-8")
     page = out / "report.html"
