@@ -247,6 +247,7 @@ def test_report_json_matches_the_comparisons(scene_file: Path, tmp_path: Path, m
             assert m["psnr_db"] == (None if math.isinf(r.metrics.psnr) else r.metrics.psnr)
             if r.range is not None:
                 assert d["range_events"]["total"] == r.range.total
+                assert d["range_events"]["by_source"] == dict(r.range.by_source)
             assert (tmp_path / d["image"]).is_file() and (tmp_path / d["heatmap"]).is_file()
         tgt = s["target"]
         if data["target"]["available"]:

@@ -620,7 +620,9 @@ def _render_data(entry: Entry, r: Any, cost: Any) -> dict[str, Any]:
                         "share_over_1lsb": float(m.share_over_1lsb)}
     if r.range is not None:
         d["range_events"] = {**{k: int(v) for k, v in r.range.counts.items()}, "total": int(r.range.total),
-                             "draws_checked": int(r.range.draws_checked)}
+                             "draws_checked": int(r.range.draws_checked),
+                             "by_source": {k: int(v) for k, v in r.range.by_source.items()},
+                             "worst_margin": {k: float(v) for k, v in r.range.worst.items()}}
     if cost is not None and r.renderer in cost.instructions:
         d["target_instructions_per_frame"] = cost.instructions[r.renderer]
     if r.image is not None:
