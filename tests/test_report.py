@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import math
 import re
 import subprocess
@@ -41,18 +42,41 @@ def test_report_end_to_end(tmp_path: Path) -> None:
     renderers = ["fixed", "float", "double", *peers]
     for e in entries():
         assert f"id='{e.name}'" in page
-        assert f"### {e.name}:" in md
+        assert re.search(rf"^### \d+\. {e.name}:", md, re.M)
         for r in renderers:
             png = out / "img" / f"{e.name}_{r}.png"
             assert png.read_bytes().startswith(b"\x89PNG"), png
             assert (out / "img" / f"{e.name}_{r}_diff.png").exists()
             assert f"img/{e.name}_{r}.png" in page and f"img/{e.name}_{r}.png" in md
-    # one point per renderer and scene in the summary plot, each with a tooltip
-    points = re.findall(r"<circle cx=\"[\d.]+\" cy=\"[\d.]+\" r=\"4\"", svg)
-    assert len(points) == len(entries()) * len(renderers)
-    # the summary table has a row per scene, with a time and a PSNR per renderer
-    rows = [line for line in md.splitlines() if line.startswith("| ") and " ms, " in line]
-    assert len(rows) >= len(entries())
+    # the host panel: one point per renderer and scene, each with a hover title naming it
+    host_tips = re.findall(r"<title>\d+ (\w+) on ([\w-]+): [\d.]+ ms on this host", svg)
+    assert sorted(host_tips) == sorted((e.name, r) for e in entries() for r in renderers)
+    # a line joins each scene's builds in the host panel (and in the target panel when it ran)
+    data = json.loads((out / "report.json").read_text())
+    target_ran = data["target"]["available"]
+    assert svg.count("<polyline") == len(entries()) * (2 if target_ran else 1)
+    for i, e in enumerate(entries(), 1):
+        assert f"{i:>2}  {e.name}</text>" in svg                    # the legend
+    if target_ran:
+        assert len(re.findall(r"target instructions per frame, ", svg)) == 2 * len(entries())
+    # the summary table: a row per scene with host ms and PSNR per renderer, target counts, verdict
+    header = next(line for line in md.splitlines() if line.startswith("| # | scene |"))
+    assert "fixed: host ms, PSNR" in header and "target fixed (instr/frame)" in header
+    assert header.endswith("| range events | verdict |")
+    rows = [line for line in md.splitlines() if re.match(r"\| \d+ \| \w+ \| .* ms, ", line)]
+    assert len(rows) == len(entries())
+    assert all(row.endswith("| not gated |") for row in rows)
+    # host timings are called so; the colour bar comes before the first scene's heatmaps
+    assert "Times are host timings" in md and "Times are host timings" in page
+    assert page.index("heatmap: largest channel difference") < page.index("_diff.png")
+    assert "colorbar.svg" in md and (out / "colorbar.svg").read_text().startswith("<svg")
+    # report.json has every scene and renderer, with the same PSNRs the summary shows
+    assert [s["name"] for s in data["scenes"]] == [e.name for e in entries()]
+    for s, row in zip(data["scenes"], rows):
+        for r in renderers:
+            m = s["renders"][r]["metrics"]
+            shown = "identical" if m["identical"] else f"{m['psnr_db']:.1f} dB"
+            assert f"{s['renders'][r]['host_ms_per_frame']:.2f} ms, {shown}" in row
     # the double build is the reference: identical to itself
     assert "identical" in md
 

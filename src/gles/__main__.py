@@ -1,8 +1,10 @@
 """Command line: ``python -m gles report|compare|render ...``.
 
-* ``report [--out DIR] [--jobs N]``: the gallery and the hard cases on every
-  build and on Mesa, as report.html and report.md (the project's main job);
-  ``--jobs N`` renders in N worker processes.
+* ``report [--out DIR] [--scenes NAMES|FILE.py] [--min-psnr DB] [--jobs N]``:
+  the gallery and the hard cases (or your scenes) on every build and on
+  Mesa, as report.html, report.md and report.json (the project's main job);
+  ``--jobs N`` renders in N worker processes; exits 1 when a render fails or
+  a scene falls short of the thresholds.
 * ``compare SCENE.py``: one scene on the builds and peers, a table of time
   against error, and optionally the images and heatmaps.
 * ``render SCENE.py -o OUT.png``: one scene on one build, to a PNG.
@@ -14,6 +16,7 @@
 from __future__ import annotations
 
 import argparse
+import math
 import sys
 from pathlib import Path
 
@@ -96,6 +99,8 @@ def _cmd_render(args: argparse.Namespace) -> int:
 
 
 def _cmd_report(args: argparse.Namespace) -> int:
+    import json
+
     from . import report
 
     w, h = args.size
@@ -107,12 +112,42 @@ def _cmd_report(args: argparse.Namespace) -> int:
 
     path = report.build_report(args.out, w, h, runs=args.runs, only=args.only, builds=args.builds,
                                peers=args.peers, progress=not args.quiet, jobs=args.jobs,
-                               on_failure=on_failure)
-    print(f"report: {path} (and {path.with_suffix('.md')})")
+                               on_failure=on_failure, color=args.color,
+                               min_psnr=args.min_psnr, max_over_1lsb=args.max_over_1lsb)
+    print(f"report: {path} (and {path.with_suffix('.md')}, {path.with_suffix('.json')})")
+    status = 0
     if failed:
         print(f"python -m gles report: {len(failed)} renders failed: {', '.join(failed)}", file=sys.stderr)
-        return 1
-    return 0
+        status = 1
+    data = json.loads(path.with_suffix(".json").read_text(encoding="utf-8"))
+    failing = [s for s in data["scenes"] if s["verdict"]["status"] == "fail"]
+    if failing:
+        detail = "; ".join(f"{s['name']} ({', '.join(s['verdict']['failures'])})" for s in failing)
+        print(f"python -m gles report: {len(failing)} of {len(data['scenes'])} scenes fall short: {detail}",
+              file=sys.stderr)
+        status = 1
+    return status
+
+
+def _psnr(text: str) -> float:
+    try:
+        v = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"--min-psnr must be a number of dB, not {text!r}") from None
+    if math.isnan(v):
+        raise argparse.ArgumentTypeError("--min-psnr must be a number of dB, not nan")
+    return v
+
+
+def _share(text: str) -> float:
+    try:
+        v = float(text)
+    except ValueError:
+        v = math.nan
+    if not 0.0 <= v <= 1.0:
+        raise argparse.ArgumentTypeError(
+            f"--max-over-1lsb must be a fraction in 0..1 (0.01 is 1%), not {text!r}")
+    return v
 
 
 def _cmd_trace(args: argparse.Namespace) -> int:
@@ -136,6 +171,26 @@ def _cmd_libdir(args: argparse.Namespace) -> int:
     return 0
 
 
+_REPORT_HELP = """\
+Render scenes on the fixed, float and double builds and on Mesa; write
+report.html, report.md, report.json and speed_vs_psnr.svg into --out.
+
+Scenes: by default the gallery and the hard cases. --scenes takes names
+of those and/or Python files of your own scenes: a file defines a dict
+SCENES = {"name": scene} (or {"name": ("title", scene)}), or else every
+public function name(gl, w, h) in it is a scene (helpers start with _).
+A scene issues GL ES 1.1 calls on gl and may return a frame() callable
+(then only frame() is timed).
+
+Verdicts: with --min-psnr (and/or --max-over-1lsb) every build but the
+double reference must reach the thresholds in every scene; the report
+says which fall short, and the command exits 1 (2 for a usage error), so
+a CI job can gate on its own scenes:
+
+  python -m gles report --scenes my_scenes.py --min-psnr 40
+"""
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m gles", description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -150,12 +205,23 @@ def main(argv: list[str] | None = None) -> int:
                        help="run the (scene, renderer) jobs in N worker processes (default 1: in this "
                             "process); the times are noisier, the images and errors the same")
 
-    p = sub.add_parser("report", help="render the gallery and hard cases; write report.html and report.md")
+    p = sub.add_parser("report", help="render the gallery and hard cases (or your scenes); write "
+                       "report.html, report.md and report.json; gate on --min-psnr",
+                       description=_REPORT_HELP, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--out", default="gles-report", help="output directory (default ./gles-report)")
     common(p, "256x256")
     p.add_argument("--peers", type=_names, default=list(cmp.PEERS),
                    help="comma-separated peers (default mesa-llvmpipe,mesa-softpipe; '' for none)")
-    p.add_argument("--only", type=_names, default=None, help="comma-separated scene names")
+    p.add_argument("--scenes", "--only", dest="only", type=_names, default=None, metavar="NAMES,FILE.py",
+                   help="comma-separated gallery or hard-case scene names and/or scene files (*.py); "
+                   "default: the gallery and the hard cases")
+    p.add_argument("--color", default="rgba8888", choices=["rgba8888", "rgb565"],
+                   help="framebuffer of every renderer, the double reference included (default rgba8888)")
+    p.add_argument("--min-psnr", type=_psnr, default=None, metavar="DB",
+                   help="a scene falls short when a build's PSNR against double is below DB")
+    p.add_argument("--max-over-1lsb", type=_share, default=None, metavar="FRACTION",
+                   help="a scene falls short when a build has more than FRACTION of its pixels off by "
+                   "more than 1 LSB (0.01 is 1%%)")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     p.set_defaults(run=_cmd_report)
 

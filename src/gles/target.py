@@ -494,8 +494,10 @@ _HEADER = ["scene", "host ms fixed", "host ms float", "target fixed (instr/frame
            "target float (instr/frame)", "target fixed / float"]
 
 
-def report_section(results: Any, width: int, height: int) -> tuple[str, str]:
-    """The report's "Target cost" section, as (Markdown, HTML)."""
+def report_section(results: Any, width: int, height: int,
+                   costs: list[SceneCost] | None = None) -> tuple[str, str]:
+    """The report's "Target cost" section, as (Markdown, HTML); `costs`, when
+    given, are :func:`scene_costs` of the same results (not measured again)."""
     import html
 
     missing = target_missing()
@@ -507,7 +509,7 @@ def report_section(results: Any, width: int, height: int) -> tuple[str, str]:
         md = f"\n## Target cost\n\nTarget instructions per frame: {missing}.\n"
         note = html.escape(missing)
         return md, f"<h2>Target cost</h2><p class='note'>Target instructions per frame: {note}.</p>"
-    rows = _rows(scene_costs(results, width, height))
+    rows = _rows(scene_costs(results, width, height) if costs is None else costs)
     md_lines = ["", "## Target cost", "", intro, "", "| " + " | ".join(_HEADER) + " |",
                 "|---|" + "--:|" * (len(_HEADER) - 1)]
     md_lines += ["| " + " | ".join(r) + " |" for r in rows]

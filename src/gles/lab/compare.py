@@ -216,16 +216,26 @@ def heatmap(image: np.ndarray, reference: np.ndarray) -> np.ndarray:
 # {====================================================================
 # rendering
 
-def _open(renderer: str, width: int, height: int) -> Any:
+COLOR_FORMATS = ("rgba8888", "rgb565")
+
+
+def check_color(color: str) -> None:
+    """A ValueError unless `color` names a framebuffer format of :data:`COLOR_FORMATS`."""
+    if color not in COLOR_FORMATS:
+        raise ValueError(f"color must be one of {COLOR_FORMATS}, not {color!r}")
+
+
+def _open(renderer: str, width: int, height: int, color: str = "rgba8888") -> Any:
+    check_color(color)
     if renderer in BUILDS:
         check = "warn" if renderer == "fixed" else "off"
-        return Context(width, height, numeric=renderer, range_check=check)
+        return Context(width, height, numeric=renderer, range_check=check, color=color)
     if renderer in PEERS:
         from . import mesa
 
         # the single-thread figure the benchmarks use; read when Mesa starts
         os.environ.setdefault("LP_NUM_THREADS", "1")
-        return mesa.MesaContext(width, height, driver=renderer[5:])
+        return mesa.MesaContext(width, height, driver=renderer[5:], color=color)
     raise ValueError(f"unknown renderer {renderer!r}: builds are {BUILDS}, peers {PEERS}")
 
 
@@ -245,13 +255,15 @@ def _peer_missing(renderer: str) -> str | None:
     return mesa.available(renderer[5:])
 
 
-def render(scene: Scene, renderer: str, width: int, height: int, runs: int = 5) -> Render:
-    """Render `scene` on one renderer, timing `runs` frames."""
+def render(scene: Scene, renderer: str, width: int, height: int, runs: int = 5,
+           color: str = "rgba8888") -> Render:
+    """Render `scene` on one renderer into a `color` framebuffer ("rgba8888"
+    or "rgb565"), timing `runs` frames."""
     why = _peer_missing(renderer)
     if why is not None:
         return Render(renderer, None, skipped=why)
     out = Render(renderer, None)
-    ctx = _open(renderer, width, height)
+    ctx = _open(renderer, width, height, color)
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")     # range events are counted, not printed
@@ -273,7 +285,7 @@ def render(scene: Scene, renderer: str, width: int, height: int, runs: int = 5) 
                 # the first call was the warm-up; each timed run gets a fresh context
                 for _ in range(max(1, runs)):
                     _close(ctx)
-                    ctx = _open(renderer, width, height)
+                    ctx = _open(renderer, width, height, color)
                     gl = ctx.gl
                     t0 = time.perf_counter()
                     scene(gl, width, height)
@@ -313,12 +325,13 @@ def _failure(renderer: str, exc: BaseException) -> Render:
                   traceback="".join(traceback.format_exception(type(exc), exc, exc.__traceback__)))
 
 
-def render_job(scene: Scene, renderer: str, width: int, height: int, runs: int = 5) -> Render:
+def render_job(scene: Scene, renderer: str, width: int, height: int, runs: int = 5,
+               color: str = "rgba8888") -> Render:
     """:func:`render`, with an exception returned as a failed :class:`Render`
     (its ``error`` and ``traceback``) instead of raised: one job of
     :func:`compare`, run in this process or on an executor's worker."""
     try:
-        return render(scene, renderer, width, height, runs)
+        return render(scene, renderer, width, height, runs, color)
     except Exception as exc:  # noqa: BLE001 -- reported per renderer
         return _failure(renderer, exc)
 
@@ -342,17 +355,17 @@ def _check_executor(executor: Any, jobs: int) -> None:
         raise ValueError("give executor or jobs, not both")
 
 
-def _run(work: list[tuple[Scene, str, int]], width: int, height: int,
+def _run(work: list[tuple[Scene, str, int]], width: int, height: int, color: str,
          executor: Any) -> Iterator[tuple[int, Render]]:
     """Run each (scene, renderer, runs) job; yield (its index, its Render) as each ends."""
     if executor is None:
         for i, (scene, name, runs) in enumerate(work):
-            yield i, render_job(scene, name, width, height, runs)
+            yield i, render_job(scene, name, width, height, runs, color)
         return
     if isinstance(executor, cf.ProcessPoolExecutor):
         for scene in {id(s): s for s, _, _ in work}.values():
             _picklable(scene)       # a clear error now, not a pickling error per job
-    futures = {executor.submit(render_job, scene, name, width, height, runs): i
+    futures = {executor.submit(render_job, scene, name, width, height, runs, color): i
                for i, (scene, name, runs) in enumerate(work)}
     if all(isinstance(f, cf.Future) for f in futures):
         order: Iterator[Any] = cf.as_completed(futures)
@@ -369,11 +382,12 @@ def _run(work: list[tuple[Scene, str, int]], width: int, height: int,
 def compare_scenes(scenes: Sequence[Scene], width: int, height: int, builds: Sequence[str] = BUILDS,
                    peers: Sequence[str] = ("mesa-llvmpipe",), runs: int = 5, reference: str = "double",
                    progress: Callable[[int, str], None] | None = None, executor: Any = None,
-                   jobs: int = 1) -> list[Comparison]:
+                   jobs: int = 1, color: str = "rgba8888") -> list[Comparison]:
     """:func:`compare` for several scenes at once, as one pool of (scene,
     renderer) jobs; ``progress(i, renderer)`` is called as each job of
     ``scenes[i]`` ends. Returns a :class:`Comparison` per scene, in order."""
     _check_executor(executor, jobs)
+    check_color(color)
     names = list(dict.fromkeys([*builds, *peers]))
     work: list[tuple[Scene, str, int]] = []
     for scene in scenes:
@@ -386,7 +400,7 @@ def compare_scenes(scenes: Sequence[Scene], width: int, height: int, builds: Seq
         executor = own = _process_pool(jobs)
     results: list[Render | None] = [None] * len(work)
     try:
-        for i, r in _run(work, width, height, executor):
+        for i, r in _run(work, width, height, color, executor):
             results[i] = r
             if progress and work[i][1] in names:
                 progress(i // per, work[i][1])
@@ -421,8 +435,12 @@ def _picklable(scene: Scene) -> None:
 def compare(scene: Scene, width: int, height: int, builds: Sequence[str] = BUILDS,
             peers: Sequence[str] = ("mesa-llvmpipe",), runs: int = 5, reference: str = "double",
             progress: Callable[[str], None] | None = None, executor: Any = None,
-            jobs: int = 1) -> Comparison:
+            jobs: int = 1, color: str = "rgba8888") -> Comparison:
     """Render `scene` on each build and peer and measure each against `reference`.
+
+    Every renderer, the reference included, draws into a `color`
+    framebuffer ("rgba8888" or "rgb565"), so each error is measured against
+    the reference rendered the same way.
 
     The reference is rendered even when it is not among `builds` (it is not
     timed then). A peer that is not available on this machine is reported as
@@ -441,7 +459,7 @@ def compare(scene: Scene, width: int, height: int, builds: Sequence[str] = BUILD
     """
     return compare_scenes([scene], width, height, builds, peers, runs, reference,
                           None if progress is None else (lambda _i, name: progress(name)),
-                          executor, jobs)[0]
+                          executor, jobs, color)[0]
 
 
 # {====================================================================
