@@ -70,6 +70,21 @@ static inline int64_t raster_floor_px(int64_t v)
 }
 static inline int64_t raster_ceil_px(int64_t v) { return -raster_floor_px(-v); }
 
+/* the pixel indices whose centres lie in [min(p, q, r), max(p, q, r)]
+** (subpixels), within [clip0, clip1): *first..*last, empty when first > last */
+static inline void raster_centre_range(int64_t p, int64_t q, int64_t r, int64_t clip0, int64_t clip1,
+                                       int64_t *first, int64_t *last)
+{
+    const int64_t half = GLES_SUBPIXEL_ONE / 2;
+    int64_t lo = p < q ? p : q, hi = p < q ? q : p;
+    if (r < lo) lo = r;
+    if (r > hi) hi = r;
+    *first = raster_ceil_px(lo - half);
+    *last = raster_floor_px(hi - half);
+    if (*first < clip0) *first = clip0;
+    if (*last > clip1 - 1) *last = clip1 - 1;
+}
+
 /* The pixel centres of `clip` in the bounding box of a triangle's window
 ** coordinates, edges included (a centre on an edge may belong to the
 ** triangle): columns box->x0..x1 and rows box->y0..y1, inclusive. Returns 0
@@ -79,27 +94,10 @@ static inline int64_t raster_ceil_px(int64_t v) { return -raster_floor_px(-v); }
 static inline int raster_centre_box(const ClipRect *clip, const Vertex *a, const Vertex *b, const Vertex *c,
                                     ClipRect *box)
 {
-    const int64_t half = GLES_SUBPIXEL_ONE / 2;
-    int64_t lo = a->wx, hi = a->wx;
-    if (b->wx < lo) lo = b->wx;
-    if (c->wx < lo) lo = c->wx;
-    if (b->wx > hi) hi = b->wx;
-    if (c->wx > hi) hi = c->wx;
-    box->x0 = raster_ceil_px(lo - half);
-    box->x1 = raster_floor_px(hi - half);
-    if (box->x0 < clip->x0) box->x0 = clip->x0;
-    if (box->x1 > clip->x1 - 1) box->x1 = clip->x1 - 1;
+    raster_centre_range(a->wx, b->wx, c->wx, clip->x0, clip->x1, &box->x0, &box->x1);
     if (box->x0 > box->x1)
         return 0;
-    lo = hi = a->wy;
-    if (b->wy < lo) lo = b->wy;
-    if (c->wy < lo) lo = c->wy;
-    if (b->wy > hi) hi = b->wy;
-    if (c->wy > hi) hi = c->wy;
-    box->y0 = raster_ceil_px(lo - half);
-    box->y1 = raster_floor_px(hi - half);
-    if (box->y0 < clip->y0) box->y0 = clip->y0;
-    if (box->y1 > clip->y1 - 1) box->y1 = clip->y1 - 1;
+    raster_centre_range(a->wy, b->wy, c->wy, clip->y0, clip->y1, &box->y0, &box->y1);
     return box->y0 <= box->y1;
 }
 

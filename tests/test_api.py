@@ -4,12 +4,11 @@ GetString, the Common-Lite profile and the commands not built yet."""
 
 from __future__ import annotations
 
-import struct
 import threading
-import zlib
 
 import numpy as np
 import pytest
+from conftest import decode_png
 
 import gles
 from gles import gl
@@ -287,56 +286,6 @@ def test_image_is_top_row_first():
     assert tuple(px[0, 0]) == (10, 20, 30, 40)
     np.testing.assert_array_equal(px[::-1], img)
     np.testing.assert_array_equal(ctx.color_buffer(), px)
-
-
-def decode_png(data: bytes) -> np.ndarray:
-    """A minimal PNG reader (8-bit RGB/RGBA/grey, no interlace) built on zlib."""
-    assert data[:8] == b"\x89PNG\r\n\x1a\n"
-    pos, idat, header = 8, b"", None
-    while pos < len(data):
-        (length,) = struct.unpack(">I", data[pos:pos + 4])
-        kind = data[pos + 4:pos + 8]
-        body = data[pos + 8:pos + 8 + length]
-        (crc,) = struct.unpack(">I", data[pos + 8 + length:pos + 12 + length])
-        assert crc == zlib.crc32(kind + body) & 0xFFFFFFFF, kind
-        if kind == b"IHDR":
-            header = struct.unpack(">IIBBBBB", body)
-        elif kind == b"IDAT":
-            idat += body
-        elif kind == b"IEND":
-            break
-        pos += 12 + length
-    w, h, depth, color_type, _, _, interlace = header
-    assert depth == 8 and interlace == 0
-    channels = {0: 1, 2: 3, 4: 2, 6: 4}[color_type]
-    raw = zlib.decompress(idat)
-    stride = w * channels
-    out = np.zeros((h, stride), np.uint8)
-    prev = np.zeros(stride, np.int32)
-    for y in range(h):
-        ftype = raw[y * (stride + 1)]
-        line = np.frombuffer(raw, np.uint8, stride, y * (stride + 1) + 1).astype(np.int32)
-        cur = np.zeros(stride, np.int32)
-        for i in range(stride):
-            a = cur[i - channels] if i >= channels else 0
-            b = prev[i]
-            c = prev[i - channels] if i >= channels else 0
-            if ftype == 0:
-                pred = 0
-            elif ftype == 1:
-                pred = a
-            elif ftype == 2:
-                pred = b
-            elif ftype == 3:
-                pred = (a + b) // 2
-            else:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                pred = a if pa <= pb and pa <= pc else (b if pb <= pc else c)
-            cur[i] = (line[i] + pred) & 0xFF
-        out[y] = cur
-        prev = cur
-    return out.reshape(h, w, channels)
 
 
 def _picture() -> gles.Context:

@@ -3,37 +3,14 @@
 from __future__ import annotations
 
 import io
-import struct
-import zlib
 from pathlib import Path
 
 import numpy as np
 import pytest
+from conftest import decode_png
 
 import gles
 from gles import constants as C
-
-
-def decode_png(data: bytes) -> np.ndarray:
-    """RGBA8 PNG with filter 0 rows (what gles writes) back to (h, w, 4), read
-    from the chunks by hand."""
-    assert data[:8] == b"\x89PNG\r\n\x1a\n"
-    pos, idat, size = 8, b"", None
-    while pos < len(data):
-        (n,) = struct.unpack(">I", data[pos:pos + 4])
-        kind, body = data[pos + 4:pos + 8], data[pos + 8:pos + 8 + n]
-        assert struct.unpack(">I", data[pos + 8 + n:pos + 12 + n])[0] == zlib.crc32(kind + body)
-        if kind == b"IHDR":
-            w, h, depth, colour = struct.unpack(">IIBB", body[:10])
-            assert (depth, colour) == (8, 6)
-            size = (h, w)
-        elif kind == b"IDAT":
-            idat += body
-        pos += 12 + n
-    h, w = size
-    rows = np.frombuffer(zlib.decompress(idat), np.uint8).reshape(h, 1 + 4 * w)
-    assert (rows[:, 0] == 0).all()
-    return rows[:, 1:].reshape(h, w, 4)
 
 
 def painted() -> gles.Context:
