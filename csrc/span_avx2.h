@@ -526,6 +526,43 @@ AVX2_INLINE int avx2_linear4(const WgtSetup *s, const int64_t e[4][3], __m256i l
     return 1;
 }
 
+/* avx2_linear4 of edge lanes r1, r2 (of e[lane][1], e[lane][2]) that the
+** caller has checked: each >= 0 and below 2^(31 + eshift); hi is
+** lin_recip >> 32, whose product is left out when it is 0 */
+AVX2_INLINE void avx2_linear4_checked(const WgtSetup *s, __m256i r1, __m256i r2, int hi, __m256i l[3])
+{
+    const __m128i sh = _mm_cvtsi32_si128(s->eshift);
+    const __m256i e1 = _mm256_srl_epi64(r1, sh), e2 = _mm256_srl_epi64(r2, sh);
+    const __m256i lo = _mm256_set1_epi64x(s->lin_recip & 0xFFFFFFFF), round = _mm256_set1_epi64x((int64_t)1 << 30);
+    __m256i p1 = _mm256_mul_epu32(e1, lo), p2 = _mm256_mul_epu32(e2, lo);
+    if (hi) {
+        const __m256i hv = _mm256_set1_epi64x(s->lin_recip >> 32);
+        p1 = _mm256_add_epi64(p1, _mm256_slli_epi64(_mm256_mul_epu32(e1, hv), 32));
+        p2 = _mm256_add_epi64(p2, _mm256_slli_epi64(_mm256_mul_epu32(e2, hv), 32));
+    }
+    l[1] = _mm256_srli_epi64(_mm256_add_epi64(p1, round), 31);
+    l[2] = _mm256_srli_epi64(_mm256_add_epi64(p2, round), 31);
+    l[0] = _mm256_sub_epi64(_mm256_sub_epi64(_mm256_set1_epi64x(WGT_ONE), l[1]), l[2]);
+}
+
+/* 1 when an edge value is in avx2_linear4's range: >= 0, and below 2^31
+** after the shift by eshift */
+static inline int avx2_edge_fits(int64_t e, int eshift) { return e >= 0 && (e >> eshift) < ((int64_t)1 << 31); }
+
+/* avx2_depth4 of l into out[0..3], the sum's terms z[i] >> 12 as lanes zs[i]
+** and the clamp's top as uint32 lanes top: (acc + 2^33) >> 34 is the high
+** dword of the sum (|acc| < 2^63) shifted right by 2 more, arithmetically,
+** and both it and the clamps fit int32 lanes */
+AVX2_INLINE void avx2_depth4_pre(const __m256i l[3], const __m256i zs[3], __m128i top, uint32_t out[4])
+{
+    __m256i acc = _mm256_add_epi64(_mm256_add_epi64(_mm256_mul_epi32(zs[0], l[0]), _mm256_mul_epi32(zs[1], l[1])),
+                                   _mm256_mul_epi32(zs[2], l[2]));
+    acc = _mm256_add_epi64(acc, _mm256_set1_epi64x((int64_t)1 << 33));
+    const __m128i hi = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(acc, _mm256_setr_epi32(1, 3, 5, 7, 0, 2, 4, 6)));
+    const __m128i v = _mm_min_epi32(_mm_max_epi32(_mm_srai_epi32(hi, 2), _mm_setzero_si128()), top);
+    _mm_storeu_si128((__m128i *)(void *)out, v);
+}
+
 /* the low 32 bits of each lane, as int32 lanes 0..3 */
 AVX2_INLINE __m128i avx2_low32(__m256i v)
 {
@@ -677,5 +714,224 @@ AVX2_INLINE uint32_t v4_rgba8(V4 c, uint32_t d, int kind)
     const V4 va = v4_alpha(cv);
     return v4_pack_unorm8(v4_add(v4_mul01(cv, va), v4_mul01(v4_unorm8(d), v4_one_minus(va))));
 }
+
+/* {====================================================================
+** The stencil and depth tests (§4.1.5, §4.1.6), eight fragments at a time
+** in 32-bit lanes, in every build (they are integer work): the outcome of
+** fragment_tests and the buffers' new values, lane by lane. */
+
+/* a comparison function (fragment_compare) as the lanes of its outcomes
+** a < b, a == b, a > b: all ones where that outcome passes */
+typedef struct Avx2Cmp {
+    __m256i lt, eq, gt;
+} Avx2Cmp;
+
+static inline Avx2Cmp avx2_cmp_setup(unsigned int func)
+{
+    int lt = 1, eq = 1, gt = 1;    /* GL_ALWAYS, and any other value */
+    switch (func) {
+    case GL_NEVER: lt = eq = gt = 0; break;
+    case GL_LESS: eq = gt = 0; break;
+    case GL_EQUAL: lt = gt = 0; break;
+    case GL_LEQUAL: gt = 0; break;
+    case GL_GREATER: lt = eq = 0; break;
+    case GL_NOTEQUAL: eq = 0; break;
+    case GL_GEQUAL: lt = 0; break;
+    default: break;
+    }
+    return (Avx2Cmp){ _mm256_set1_epi32(-lt), _mm256_set1_epi32(-eq), _mm256_set1_epi32(-gt) };
+}
+
+/* fragment_compare(func, a, b) of int32 lanes, all ones where it holds */
+AVX2_INLINE __m256i avx2_cmp_i32(const Avx2Cmp *f, __m256i a, __m256i b)
+{
+    const __m256i lt = _mm256_cmpgt_epi32(b, a), gt = _mm256_cmpgt_epi32(a, b);
+    return _mm256_or_si256(_mm256_or_si256(_mm256_and_si256(lt, f->lt), _mm256_and_si256(gt, f->gt)),
+                           _mm256_andnot_si256(_mm256_or_si256(lt, gt), f->eq));
+}
+
+/* fragment_compare(func, a, b) of uint32 lanes for a func known where it
+** is inlined (the depth test's, fixed per chunk); the sign bit flipped
+** makes the signed comparison the unsigned one */
+AVX2_INLINE __m256i avx2_cmp_u32(unsigned int func, __m256i a, __m256i b)
+{
+    const __m256i ones = _mm256_set1_epi32(-1);
+    if (func == GL_NEVER)
+        return _mm256_setzero_si256();
+    if (func == GL_EQUAL)
+        return _mm256_cmpeq_epi32(a, b);
+    if (func == GL_NOTEQUAL)
+        return _mm256_xor_si256(_mm256_cmpeq_epi32(a, b), ones);
+    const __m256i bias = _mm256_set1_epi32(INT32_MIN);
+    a = _mm256_xor_si256(a, bias);
+    b = _mm256_xor_si256(b, bias);
+    switch (func) {
+    case GL_LESS: return _mm256_cmpgt_epi32(b, a);
+    case GL_LEQUAL: return _mm256_xor_si256(_mm256_cmpgt_epi32(a, b), ones);
+    case GL_GREATER: return _mm256_cmpgt_epi32(a, b);
+    case GL_GEQUAL: return _mm256_xor_si256(_mm256_cmpgt_epi32(b, a), ones);
+    default: return ones;
+    }
+}
+
+/* A stencil op (fragment_stencil_op) as arithmetic on the stored value s
+** in 0..255: v = min(max((s & and_s) + add, lo), hi) ^ flip, then the
+** write mask wm (8 bits) takes v's bits and leaves s's elsewhere. KEEP is
+** v = s; ZERO and REPLACE drop s (and_s = 0) and add 0 or ref; INCR and
+** DECR add +-1 and clamp to 0..255; INVERT flips the 8 bits; the wrapping
+** ops add 1 or 255, whose bits above 8 the write mask drops. */
+typedef struct Avx2StencilOp {
+    __m256i and_s, add, lo, hi, flip, wm;
+} Avx2StencilOp;
+
+static inline Avx2StencilOp avx2_stencil_op_setup(unsigned int op, uint32_t ref, uint32_t write_mask)
+{
+    int and_s = 0xFF, add = 0, lo = 0, hi = 0x1FF, flip = 0;
+    switch (op) {
+    case GL_ZERO: and_s = 0; break;
+    case GL_REPLACE: and_s = 0, add = (int)ref; break;
+    case GL_INCR: add = 1, hi = 0xFF; break;
+    case GL_DECR: add = -1; break;
+    case GL_INVERT: flip = 0xFF; break;
+    case GL_INCR_WRAP_OES: add = 1; break;
+    case GL_DECR_WRAP_OES: add = 0xFF; break;
+    default: break; /* GL_KEEP */
+    }
+    return (Avx2StencilOp){ _mm256_set1_epi32(and_s), _mm256_set1_epi32(add), _mm256_set1_epi32(lo),
+                            _mm256_set1_epi32(hi), _mm256_set1_epi32(flip), _mm256_set1_epi32((int)write_mask) };
+}
+
+/* the stencil value after op o, of int32 lanes s in 0..255 */
+AVX2_INLINE __m256i avx2_stencil_op(const Avx2StencilOp *o, __m256i s)
+{
+    __m256i v = _mm256_add_epi32(_mm256_and_si256(s, o->and_s), o->add);
+    v = _mm256_xor_si256(_mm256_min_epi32(_mm256_max_epi32(v, o->lo), o->hi), o->flip);
+    return _mm256_or_si256(_mm256_andnot_si256(o->wm, s), _mm256_and_si256(v, o->wm));
+}
+
+/* what the eight-fragment tests need of FragTests, as lanes (the ops only
+** where some op can change a stored value) */
+typedef struct Avx2Tests {
+    Avx2Cmp sfunc;
+    __m256i ref, value_mask;            /* ref & value_mask, value_mask */
+    const Avx2StencilOp *op;            /* fail, zfail, zpass; NULL without writes */
+} Avx2Tests;
+
+/* 1 when some stencil op can change a stored value: an op other than KEEP
+** (every other valid op) with a bit written */
+static inline int avx2_stencil_writes(const FragTests *ft)
+{
+    return ft->write_mask != 0 && (ft->fail != GL_KEEP || ft->zfail != GL_KEEP || ft->zpass != GL_KEEP);
+}
+
+/* v for the state in ft, with ops[0..2] set and used when writes */
+static inline void avx2_tests_setup(const FragTests *ft, int writes, Avx2StencilOp ops[3], Avx2Tests *v)
+{
+    v->sfunc = avx2_cmp_setup(ft->stencil_func);
+    v->ref = _mm256_set1_epi32((int)(ft->ref & ft->value_mask));
+    v->value_mask = _mm256_set1_epi32((int)ft->value_mask);
+    v->op = NULL;
+    if (writes) {
+        ops[0] = avx2_stencil_op_setup(ft->fail, ft->ref, ft->write_mask);
+        ops[1] = avx2_stencil_op_setup(ft->zfail, ft->ref, ft->write_mask);
+        ops[2] = avx2_stencil_op_setup(ft->zpass, ft->ref, ft->write_mask);
+        v->op = ops;
+    }
+}
+
+/* fragment_tests of r <= 8 fragments (lanes 0..r-1): stored stencil values
+** s[0..r) and depths d[0..r), both updated in place, and window depths
+** z[0..r). stencil and depth say which tests are on, swrite and dwrite
+** whether their buffers can change; with r < 8 only r lanes are read and
+** written. The depth function dfunc and the flags are constants where this
+** is inlined. Bit i of the result is 1 when fragment i passes. */
+AVX2_INLINE unsigned avx2_tests8(const Avx2Tests *v, uint8_t *s, uint32_t *d, const uint32_t *z, int r,
+                                 int stencil, int swrite, int depth, int dwrite, unsigned int dfunc)
+{
+    const __m256i ones = _mm256_set1_epi32(-1);
+    const __m256i lanes = r == 8 ? ones : _mm256_cmpgt_epi32(_mm256_set1_epi32(r), _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
+    __m256i zv = ones, dv = ones, zpass = ones, pass;
+    if (depth) {
+        if (r == 8) {
+            zv = _mm256_loadu_si256((const __m256i *)(const void *)z);
+            dv = _mm256_loadu_si256((const __m256i *)(const void *)d);
+        } else {
+            zv = _mm256_maskload_epi32((const int *)(const void *)z, lanes);
+            dv = _mm256_maskload_epi32((const int *)(const void *)d, lanes);
+        }
+        zpass = avx2_cmp_u32(dfunc, zv, dv);
+    }
+    pass = zpass;
+    if (stencil) {
+        uint64_t bytes = 0;
+        if (r == 8)
+            memcpy(&bytes, s, 8);
+        else
+            for (int i = 0; i < r; i++)
+                bytes |= (uint64_t)s[i] << (8 * i);
+        const __m256i sv = _mm256_cvtepu8_epi32(_mm_cvtsi64_si128((long long)bytes));
+        const __m256i spass = avx2_cmp_i32(&v->sfunc, v->ref, _mm256_and_si256(sv, v->value_mask));
+        pass = _mm256_and_si256(spass, zpass);
+        if (swrite && v->op) {
+            const __m256i after = _mm256_blendv_epi8(avx2_stencil_op(&v->op[1], sv), avx2_stencil_op(&v->op[2], sv), zpass);
+            const __m256i ns = _mm256_blendv_epi8(avx2_stencil_op(&v->op[0], sv), after, spass);
+            /* the low byte of each lane, in lane order */
+            const __m256i w = _mm256_permute4x64_epi64(_mm256_packus_epi32(ns, ns), 0x08);
+            const __m128i b8 = _mm_packus_epi16(_mm256_castsi256_si128(w), _mm256_castsi256_si128(w));
+            if (r == 8) {
+                _mm_storel_epi64((__m128i *)(void *)s, b8);
+            } else {
+                const uint64_t out = (uint64_t)_mm_cvtsi128_si64(b8);
+                for (int i = 0; i < r; i++)
+                    s[i] = (uint8_t)(out >> (8 * i));
+            }
+        }
+    }
+    if (dwrite) {
+        if (r == 8)
+            _mm256_storeu_si256((__m256i *)(void *)d, _mm256_blendv_epi8(dv, zv, pass));
+        else
+            _mm256_maskstore_epi32((int *)(void *)d, _mm256_and_si256(pass, lanes), zv);
+    }
+    return (unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_and_si256(pass, lanes)));
+}
+
+/* the offsets of the set bits of an 8-bit mask, packed from byte 0 (a
+** byte shuffle that compacts eight slots) */
+#define AVX2_POP8(m) (((m) & 1) + (((m) >> 1) & 1) + (((m) >> 2) & 1) + (((m) >> 3) & 1) + (((m) >> 4) & 1) \
+                      + (((m) >> 5) & 1) + (((m) >> 6) & 1) + (((m) >> 7) & 1))
+#define AVX2_CBIT(m, i) (((m) >> (i) & 1) ? (uint64_t)(i) << (8 * AVX2_POP8((m) & ((1u << (i)) - 1))) : 0)
+#define AVX2_CENTRY(m) (AVX2_CBIT(m, 0) | AVX2_CBIT(m, 1) | AVX2_CBIT(m, 2) | AVX2_CBIT(m, 3) | AVX2_CBIT(m, 4) \
+                        | AVX2_CBIT(m, 5) | AVX2_CBIT(m, 6) | AVX2_CBIT(m, 7))
+#define AVX2_C4(m) AVX2_CENTRY(m), AVX2_CENTRY((m) + 1), AVX2_CENTRY((m) + 2), AVX2_CENTRY((m) + 3)
+#define AVX2_C16(m) AVX2_C4(m), AVX2_C4((m) + 4), AVX2_C4((m) + 8), AVX2_C4((m) + 12)
+#define AVX2_C64(m) AVX2_C16(m), AVX2_C16((m) + 16), AVX2_C16((m) + 32), AVX2_C16((m) + 48)
+static const uint64_t avx2_compact8[256] = { AVX2_C64(0u), AVX2_C64(64u), AVX2_C64(128u), AVX2_C64(192u) };
+#undef AVX2_C64
+#undef AVX2_C16
+#undef AVX2_C4
+#undef AVX2_CENTRY
+#undef AVX2_CBIT
+#undef AVX2_POP8
+
+/* keep the n offsets k[j] whose bit is set in keep, in order, at the front
+** of k (which has room for SPAN_CHUNK); returns how many */
+AVX2_INLINE int avx2_compact_offsets(uint8_t *k, int n, uint64_t keep)
+{
+    int m = 0, j = 0;
+    for (; j + 8 <= n; j += 8) {
+        const unsigned bits = (unsigned)(keep >> j) & 0xFFu;
+        const __m128i idx = _mm_loadl_epi64((const __m128i *)(const void *)&avx2_compact8[bits]);
+        const __m128i src = _mm_loadl_epi64((const __m128i *)(const void *)(k + j));
+        /* m <= j: the eight bytes stored stay within the slots read so far */
+        _mm_storel_epi64((__m128i *)(void *)(k + m), _mm_shuffle_epi8(src, idx));
+        m += __builtin_popcount(bits);
+    }
+    for (; j < n; j++)
+        if ((keep >> j) & 1)
+            k[m++] = k[j];
+    return m;
+}
+/* }==================================================================== */
 #endif
 #endif

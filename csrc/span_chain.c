@@ -42,33 +42,6 @@ static void chunk_compact(SpanBuf *b, const uint8_t *keep, int with_color)
     b->n = m;
 }
 
-static void tests(GlesContext *ctx, SpanBuf *b, int with_color)
-{
-    const size_t row = (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
-    uint8_t keep[SPAN_CHUNK];
-    FragTests ft;
-    fragment_tests_setup(ctx, &ft);
-    ft.lut = (const uint8_t (*)[256])ctx->stencil_lut;
-    /* fragment_tests with the depth function fixed for the chunk */
-#define TESTS_LOOP(FUNC) \
-    for (int j = 0; j < b->n; j++) \
-        keep[j] = (uint8_t)fragment_tests(&ft, row + b->k[j], b->z[j], FUNC); \
-    break;
-    switch (ft.depth ? ft.depth_func : GL_ALWAYS) {
-    case GL_NEVER: TESTS_LOOP(GL_NEVER)
-    case GL_LESS: TESTS_LOOP(GL_LESS)
-    case GL_EQUAL: TESTS_LOOP(GL_EQUAL)
-    case GL_LEQUAL: TESTS_LOOP(GL_LEQUAL)
-    case GL_GREATER: TESTS_LOOP(GL_GREATER)
-    case GL_NOTEQUAL: TESTS_LOOP(GL_NOTEQUAL)
-    case GL_GEQUAL: TESTS_LOOP(GL_GEQUAL)
-    default: TESTS_LOOP(GL_ALWAYS)
-    }
-#undef TESTS_LOOP
-    chunk_compact(b, keep, with_color);
-}
-
-
 /* RGB565 with red, green and blue written, dithered or not (fragment_write's
 ** conversion for these states) */
 /* the dither thresholds of the chunk's row by x & 3 (1/2 without dither) */
@@ -186,6 +159,12 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     const int zless = depth && !stencil && ctx->depth_func == GL_LESS && ctx->depth_mask;
     /* the tests may run first when nothing after them can discard */
     const int early = !ctx->alpha_test;
+    /* with every channel masked the write leaves the colour as it is: no
+    ** write, and without an alpha test no colour work at all */
+    const int no_color = ctx->color_format == GLES_COLOR_RGB565
+                             ? !ctx->color_mask[0] && !ctx->color_mask[1] && !ctx->color_mask[2]
+                             : !ctx->color_mask[0] && !ctx->color_mask[1] && !ctx->color_mask[2] && !ctx->color_mask[3];
+    const int color_work = !no_color || ctx->alpha_test;
     int lod = 0;
     if (stencil) {
         FragTests ft;
@@ -199,11 +178,14 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
         }
     if (rect)
         s[n++] = cs->rect_source;
+    /* the window depth is for the depth test only */
     if (tests && early) {
-        if (!rect)
+        if (!rect && depth)
             s[n++] = cs->depth;
         s[n++] = zless ? cs->zless_early : cs->tests_early;
     }
+    if (!color_work)
+        return n;
     if (!rect) {
         s[n++] = cs->persp;
         if (lod)
@@ -221,7 +203,7 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     if (ctx->alpha_test)
         s[n++] = cs->alpha;
     if (tests && !early) {
-        if (!rect)
+        if (!rect && depth)
             s[n++] = cs->depth;
         s[n++] = cs->tests_late;
     }
@@ -230,7 +212,9 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
                    && ctx->color_mask[2] && ctx->color_mask[3];
     const int plain565 = ctx->color_format == GLES_COLOR_RGB565 && ctx->color_mask[0] && ctx->color_mask[1]
                       && ctx->color_mask[2];
-    if (plain && bk == 0 && !ctx->color_logic_op)
+    if (no_color)
+        ;
+    else if (plain && bk == 0 && !ctx->color_logic_op)
         s[n++] = cs->write_rgba8;
     else if (plain && bk == 1)
         s[n++] = cs->write_rgba8_alpha;

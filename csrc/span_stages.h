@@ -81,6 +81,39 @@ static void STAGE(stage_depth)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
     int j = 0;
 #if CHAIN_SIMD && NUM_IS_FIXED
     const DEPTHV zv[3] = { t->v[0]->wz, t->v[1]->wz, t->v[2]->wz };
+    const int n4 = b->n & ~3;
+    /* slots that are offsets (the chain's first stage): the edge values step
+    ** by ea per slot, and, linear in the offset, lie in the kernel's range
+    ** at every slot when they do at the first and the last */
+    if (n4 && b->k[b->n - 1] == b->n - 1 && t->wgt.lin_recip >= 0 && !t->depth_offset
+        && ctx->depth_max <= INT32_MAX) {
+        const int64_t l1 = b->e0[1] + t->ea[1] * (n4 - 1), l2 = b->e0[2] + t->ea[2] * (n4 - 1);
+        const int sh = t->wgt.eshift;
+        if (avx2_edge_fits(b->e0[1], sh) && avx2_edge_fits(b->e0[2], sh) && avx2_edge_fits(l1, sh)
+            && avx2_edge_fits(l2, sh)) {
+            /* e0 + ea k per lane, the values chunk_edges forms */
+            __m256i r1 = _mm256_add_epi64(_mm256_set1_epi64x(b->e0[1]),
+                                          _mm256_setr_epi64x(0, t->ea[1], 2 * t->ea[1], 3 * t->ea[1]));
+            __m256i r2 = _mm256_add_epi64(_mm256_set1_epi64x(b->e0[2]),
+                                          _mm256_setr_epi64x(0, t->ea[2], 2 * t->ea[2], 3 * t->ea[2]));
+            const __m256i step1 = _mm256_slli_epi64(_mm256_set1_epi64x(t->ea[1]), 2);
+            const __m256i step2 = _mm256_slli_epi64(_mm256_set1_epi64x(t->ea[2]), 2);
+            const int hi = (t->wgt.lin_recip >> 32) != 0;
+            /* the loop's constants in locals (the stores to b->z could alias fields) */
+            const WgtSetup ws = t->wgt;
+            const __m256i zs[3] = { _mm256_set1_epi64x(zv[0] >> 12), _mm256_set1_epi64x(zv[1] >> 12),
+                                    _mm256_set1_epi64x(zv[2] >> 12) };
+            const __m128i top = _mm_set1_epi32((int)ctx->depth_max);
+            uint32_t *const z = b->z;
+            for (; j < n4; j += 4) {
+                __m256i l[3];
+                avx2_linear4_checked(&ws, r1, r2, hi, l);
+                avx2_depth4_pre(l, zs, top, &z[j]);
+                r1 = _mm256_add_epi64(r1, step1);
+                r2 = _mm256_add_epi64(r2, step2);
+            }
+        }
+    }
     for (; j + 4 <= b->n; j += 4) {
         int64_t e[4][3];
         for (int k = 0; k < 4; k++)
@@ -104,14 +137,158 @@ static void STAGE(stage_depth)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
     }
 }
 
-static void STAGE(stage_tests_early)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) { (void)t; tests(ctx, b, 0); }
-static void STAGE(stage_tests_late)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) { (void)t; tests(ctx, b, 1); }
+/* The stencil and depth tests of the chunk's live fragments (fragment_tests
+** of each, the depth function fixed per chunk), then the survivors
+** compacted (with their colours when it is computed already). The buffer
+** pointers and tables are locals: the stencil's byte stores may alias
+** anything, and fields read through a pointer would be read again after
+** each. The stencil op is a table lookup whose row is computed (1 fail, 2
+** depth fail, 3 pass), with no branch on the outcome. */
+#define TESTS_SCALAR(FUNC) \
+    for (int j = 0; j < n; j++) { \
+        const size_t k = b->k[j]; \
+        const uint32_t z = b->z[j]; \
+        const uint32_t d = zb ? zb[k] : 0; \
+        unsigned int pass = zb ? (unsigned int)fragment_compare(FUNC, z, d) : 1u; \
+        if (st) { \
+            const unsigned int s = st[k], sp = lut[0][s]; \
+            st[k] = lut[1 + sp + (sp & pass)][s]; \
+            pass &= sp; \
+        } \
+        if (zwrite) \
+            zb[k] = pass ? z : d; \
+        keep[j] = (uint8_t)pass; \
+    } \
+    break;
+
+#if CHAIN_SIMD
+/* the vector tests of n fragments in slots: stored stencil values s[0..n)
+** and depths d[0..n), window depths z[0..n) (avx2_tests8's flags); the
+** passing slots' bits */
+static inline __attribute__((always_inline)) uint64_t STAGE(tests_slots)(const Avx2Tests *v, uint8_t *s,
+                                                                            uint32_t *d, const uint32_t *z,
+                                                                            int n, int stencil, int swrite,
+                                                                            int depth, int dwrite,
+                                                                            unsigned int dfunc)
+{
+    uint64_t keep = 0;
+    int j = 0;
+    /* (a buffer whose test is off is NULL: no offset is added to it) */
+    for (; j + 8 <= n; j += 8)
+        keep |= (uint64_t)avx2_tests8(v, stencil ? s + j : s, d ? d + j : d, z + j, 8, stencil, swrite, depth,
+                                      dwrite, dfunc) << j;
+    if (j < n)
+        keep |= (uint64_t)avx2_tests8(v, stencil ? s + j : s, d ? d + j : d, z + j, n - j, stencil, swrite, depth,
+                                      dwrite, dfunc) << j;
+    return keep;
+}
+#endif
+
+static void STAGE(tests)(GlesContext *ctx, SpanBuf *b, int with_color)
+{
+    const size_t row = (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
+    FragTests ft;
+    fragment_tests_setup(ctx, &ft);
+    const unsigned int dfunc = ft.depth ? ft.depth_func : GL_ALWAYS;
+    uint8_t *const st = ft.stencil ? ft.stencil + row : NULL;
+    uint32_t *const zb = ft.depth ? ft.depth + row : NULL;
+    const int n = b->n;
+#if CHAIN_SIMD
+    const int swrite = st && avx2_stencil_writes(&ft), dwrite = zb && ft.depth_mask;
+    Avx2Tests v;
+    Avx2StencilOp ops[3];
+    avx2_tests_setup(&ft, swrite, ops, &v);
+    /* slots that are offsets (k[j] = j, as before any compaction) are the
+    ** buffers' own; else the values are gathered first, and scattered after */
+    const int dense = b->k[n - 1] == n - 1;
+    uint8_t ls[SPAN_CHUNK];
+    uint32_t ld[SPAN_CHUNK];
+    uint8_t *s = st;
+    uint32_t *d = zb;
+    if (!dense) {
+        if (st)
+            for (int j = 0; j < n; j++)
+                ls[j] = st[b->k[j]];
+        if (zb)
+            for (int j = 0; j < n; j++)
+                ld[j] = zb[b->k[j]];
+        s = st ? ls : NULL;
+        d = zb ? ld : NULL;
+    }
+    uint64_t keep;
+#define TESTS_VECTOR(FUNC) \
+    keep = st ? STAGE(tests_slots)(&v, s, d, b->z, n, 1, swrite, zb != NULL, dwrite, FUNC) \
+              : STAGE(tests_slots)(&v, s, d, b->z, n, 0, 0, 1, dwrite, FUNC); \
+    break;
+    switch (dfunc) {
+    case GL_NEVER: TESTS_VECTOR(GL_NEVER)
+    case GL_LESS: TESTS_VECTOR(GL_LESS)
+    case GL_EQUAL: TESTS_VECTOR(GL_EQUAL)
+    case GL_LEQUAL: TESTS_VECTOR(GL_LEQUAL)
+    case GL_GREATER: TESTS_VECTOR(GL_GREATER)
+    case GL_NOTEQUAL: TESTS_VECTOR(GL_NOTEQUAL)
+    case GL_GEQUAL: TESTS_VECTOR(GL_GEQUAL)
+    default: TESTS_VECTOR(GL_ALWAYS)
+    }
+#undef TESTS_VECTOR
+    if (!dense) {
+        if (swrite)
+            for (int j = 0; j < n; j++)
+                st[b->k[j]] = ls[j];
+        if (dwrite)
+            for (int j = 0; j < n; j++)
+                zb[b->k[j]] = ld[j];
+    }
+    if (keep == (n == 64 ? ~(uint64_t)0 : ((uint64_t)1 << n) - 1))
+        return;     /* every fragment passes */
+    if (with_color) {
+        int m = 0;
+        for (uint64_t bits = keep; bits; bits &= bits - 1, m++) {
+            const int j = __builtin_ctzll(bits);
+            if (m != j)
+                v4_store(b->c[m], v4_load(b->c[j]));
+        }
+    }
+    b->n = avx2_compact_offsets(b->k, n, keep);
+#else
+    uint8_t keep[SPAN_CHUNK];
+    const int zwrite = zb && ft.depth_mask;
+    const uint8_t (*const lut)[256] = (const uint8_t (*)[256])ctx->stencil_lut;
+    switch (dfunc) {
+    case GL_NEVER: TESTS_SCALAR(GL_NEVER)
+    case GL_LESS: TESTS_SCALAR(GL_LESS)
+    case GL_EQUAL: TESTS_SCALAR(GL_EQUAL)
+    case GL_LEQUAL: TESTS_SCALAR(GL_LEQUAL)
+    case GL_GREATER: TESTS_SCALAR(GL_GREATER)
+    case GL_NOTEQUAL: TESTS_SCALAR(GL_NOTEQUAL)
+    case GL_GEQUAL: TESTS_SCALAR(GL_GEQUAL)
+    default: TESTS_SCALAR(GL_ALWAYS)
+    }
+    chunk_compact(b, keep, with_color);
+#endif
+}
+#undef TESTS_SCALAR
+
+static void STAGE(stage_tests_early)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    (void)t;
+    STAGE(tests)(ctx, b, 0);
+}
+
+static void STAGE(stage_tests_late)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    (void)t;
+    STAGE(tests)(ctx, b, 1);
+}
 
 /* depth LESS with writes and no stencil: the common case, without the
-** per-fragment switches */
+** per-fragment switches (the vector instance's tests are that already) */
 static void STAGE(stage_zless_early)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     (void)t;
+#if CHAIN_SIMD
+    STAGE(tests)(ctx, b, 0);
+#else
     uint32_t *zb = ctx->depth + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
     int m = 0;
     for (int j = 0; j < b->n; j++) {
@@ -123,6 +300,7 @@ static void STAGE(stage_zless_early)(GlesContext *ctx, const TriSetup *t, SpanBu
         }
     }
     b->n = m;
+#endif
 }
 
 /* }==================================================================== */
