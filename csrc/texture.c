@@ -471,19 +471,6 @@ int gles_TexSubImage2D(GlesContext *ctx, unsigned int target, int level, int xof
     return GLES_OK;
 }
 
-/* the framebuffer pixel at (x, y) as RGBA8888; outside the window 0 */
-static uint32_t framebuffer_texel(const GlesContext *ctx, int64_t x, int64_t y)
-{
-    if (x < 0 || y < 0 || x >= ctx->width || y >= ctx->height)
-        return 0;
-    size_t at = (size_t)y * (size_t)ctx->width + (size_t)x;
-    if (ctx->color_format == GLES_COLOR_RGB565) {
-        uint16_t v = ((uint16_t *)ctx->color)[at];
-        return pack(x5(v >> 11), x6((v >> 5) & 63), x5(v & 31), 255);
-    }
-    return ((uint32_t *)ctx->color)[at];
-}
-
 /* §3.7.2: the components kept for a base format copied from the framebuffer */
 static uint32_t as_base_format(uint32_t c, unsigned int format)
 {
@@ -495,6 +482,40 @@ static uint32_t as_base_format(uint32_t c, unsigned int format)
     case GL_RGB: return pack(r, g, b, 255);
     default: return c;
     }
+}
+
+/* `n` framebuffer pixels of row y from column x, as texels of a base
+** format (§3.7.2), into dst: a block copy of the row's part inside the
+** window (a pixel outside it reads as 0) */
+static void copy_framebuffer_row(const GlesContext *ctx, int64_t x, int64_t y, int n, unsigned int format,
+                                 uint32_t *dst)
+{
+    const uint32_t outside = as_base_format(0, format);
+    int64_t lo = 0, hi = 0;     /* dst[lo, hi) lies inside the window */
+    if (y >= 0 && y < ctx->height) {
+        lo = x < 0 ? (-x < n ? -x : n) : 0;
+        hi = ctx->width - x < n ? ctx->width - x : n;
+        if (hi < lo)
+            hi = lo;
+    }
+    for (int64_t i = 0; i < lo; i++)
+        dst[i] = outside;
+    const size_t at = hi > lo ? (size_t)y * (size_t)ctx->width + (size_t)(x + lo) : 0;
+    if (hi > lo && ctx->color_format == GLES_COLOR_RGB565) {
+        const uint16_t *src = (const uint16_t *)ctx->color + at;
+        for (int64_t i = lo; i < hi; i++) {
+            uint16_t v = src[i - lo];
+            dst[i] = as_base_format(pack(x5(v >> 11), x6((v >> 5) & 63), x5(v & 31), 255), format);
+        }
+    } else if (hi > lo && format == GL_RGBA) {
+        memcpy(dst + lo, (const uint32_t *)ctx->color + at, (size_t)(hi - lo) * sizeof *dst);
+    } else if (hi > lo) {
+        const uint32_t *src = (const uint32_t *)ctx->color + at;
+        for (int64_t i = lo; i < hi; i++)
+            dst[i] = as_base_format(src[i - lo], format);
+    }
+    for (int64_t i = hi; i < n; i++)
+        dst[i] = outside;
 }
 
 /* may a base format be copied from this framebuffer (it needs alpha bits for
@@ -533,9 +554,8 @@ void gles_CopyTexImage2D(GlesContext *ctx, unsigned int target, int level, unsig
         ctx_error(ctx, GL_OUT_OF_MEMORY);
         return;
     }
-    for (int j = 0; j < height; j++)
-        for (int i = 0; i < width; i++)
-            tmp[(size_t)j * width + i] = as_base_format(framebuffer_texel(ctx, (int64_t)x + i, (int64_t)y + j), internalformat);
+    for (int j = 0; j < height && count; j++)
+        copy_framebuffer_row(ctx, x, (int64_t)y + j, width, internalformat, tmp + (size_t)j * (size_t)width);
     ctx->mem_used -= level_bytes(li);
     free(li->texels);
     li->texels = tmp;
@@ -575,10 +595,9 @@ void gles_CopyTexSubImage2D(GlesContext *ctx, unsigned int target, int level, in
         ctx_error(ctx, GL_OUT_OF_MEMORY);
         return;
     }
-    for (int j = 0; j < height; j++)
-        for (int i = 0; i < width; i++)
-            li->texels[(size_t)(yoffset + j) * li->width + (xoffset + i)] =
-                as_base_format(framebuffer_texel(ctx, (int64_t)x + i, (int64_t)y + j), t->level_format[level]);
+    for (int j = 0; j < height && width; j++)
+        copy_framebuffer_row(ctx, x, (int64_t)y + j, width, t->level_format[level],
+                             li->texels + (size_t)(yoffset + j) * (size_t)li->width + (size_t)xoffset);
     if (width && height)
         image_changed(ctx, t, level);
 }

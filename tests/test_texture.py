@@ -633,6 +633,40 @@ def test_copyteximage(numeric: str, color: str):
         paint(gl, 32, 32, seed=1)
 
 
+@pytest.mark.parametrize("color", ["rgba8888", "rgb565"])
+@pytest.mark.parametrize("origin", [(-3, -2), (22, 27), (-5, 20), (30, -7)])
+def test_copyteximage_across_the_window_edge(numeric: str, color: str, origin: tuple[int, int]):
+    """A copy rectangle that crosses the window's edges: the texels of the
+    part inside are the framebuffer's (as ReadPixels returns them), whatever
+    the format; the call succeeds (§3.7.2 leaves the part outside undefined)."""
+    t = Target(numeric, 32, 32, color=color)
+    gl = t.gl
+    paint(gl, 32, 32, seed=5)
+    fb = gl.glReadPixels(0, 0, 32, 32, C.GL_RGBA, C.GL_UNSIGNED_BYTE).astype(np.float64) / 255.0
+    x, y = origin
+    w, h = 16, 8
+    sx, sy = slice(max(x, 0), min(x + w, 32)), slice(max(y, 0), min(y + h, 32))
+    inside = (slice(sy.start - y, sy.stop - y), slice(sx.start - x, sx.stop - x))
+    for fmt in (C.GL_RGB, C.GL_LUMINANCE) + ((C.GL_RGBA, C.GL_ALPHA) if color == "rgba8888" else ()):
+        gl.glBindTexture(C.GL_TEXTURE_2D, 0)
+        gl.glCopyTexImage2D(C.GL_TEXTURE_2D, 0, fmt, x, y, w, h, 0)
+        assert gl.glGetError() == 0
+        want = replace_expect(fb[sy, sx], fmt)
+        got = replace_view(t, fmt, w, h, zoom=2)[inside]
+        tol = tolerance(numeric)
+        if color == "rgb565":
+            want[..., 3] = 1.0
+            tol = RGB565_TOL
+        expect_close(got, want, tol, f"CopyTexImage2D {C.NAMES[fmt]} from {origin} on {color}")
+        # and CopyTexSubImage2D of the same rectangle into the copied level
+        paint(gl, 32, 32, seed=5)
+        gl.glCopyTexSubImage2D(C.GL_TEXTURE_2D, 0, 0, 0, x, y, w, h)
+        assert gl.glGetError() == 0
+        expect_close(replace_view(t, fmt, w, h, zoom=2)[inside], want, tol,
+                     f"CopyTexSubImage2D {C.NAMES[fmt]} from {origin} on {color}")
+        paint(gl, 32, 32, seed=5)
+
+
 def test_copytexsubimage(numeric: str):
     """CopyTexSubImage2D replaces a rectangle of an existing level with framebuffer
     pixels and leaves the rest; errors leave the texture alone (§3.7.2)."""
