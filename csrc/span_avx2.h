@@ -699,6 +699,99 @@ static inline void avx2_bilerp_rgba8(uint32_t c00, uint32_t c10, uint32_t c01, u
     const V4 bot = V4_OP(add)(V4_OP(mul)(v4_unorm8(c01), ia), V4_OP(mul)(v4_unorm8(c11), va));
     v4_store(out, V4_OP(add)(V4_OP(mul)(top, ib), V4_OP(mul)(bot, vb)));
 }
+
+/* the s (or t, odd = 1) of four fragments' coordinates c[0..3] */
+AVX2_INLINE V4 v4_coord4(const TexCoord *c, int odd)
+{
+#if defined(GLES_NUM_FLOAT)
+    const __m128 p01 = _mm_loadu_ps(&c[0].s), p23 = _mm_loadu_ps(&c[2].s);
+    return odd ? _mm_shuffle_ps(p01, p23, _MM_SHUFFLE(3, 1, 3, 1)) : _mm_shuffle_ps(p01, p23, _MM_SHUFFLE(2, 0, 2, 0));
+#else
+    const __m256d p01 = _mm256_loadu_pd(&c[0].s), p23 = _mm256_loadu_pd(&c[2].s);
+    const __m256d v = odd ? _mm256_unpackhi_pd(p01, p23) : _mm256_unpacklo_pd(p01, p23);
+    return _mm256_permute4x64_pd(v, 0xD8);
+#endif
+}
+
+/* whether every lane is finite (not NaN nor infinite) */
+AVX2_INLINE int v4_finite(V4 v)
+{
+    const V4 inf = V4_OP(set1)((NUM)INFINITY);
+#if defined(GLES_NUM_FLOAT)
+    const V4 abs = _mm_andnot_ps(_mm_set1_ps(-0.0f), v);
+    return _mm_movemask_ps(_mm_cmplt_ps(abs, inf)) == 0xF;
+#else
+    const V4 abs = _mm256_andnot_pd(_mm256_set1_pd(-0.0), v);
+    return _mm256_movemask_pd(_mm256_cmp_pd(abs, inf, _CMP_LT_OQ)) == 0xF;
+#endif
+}
+
+/* sample_level's GL_LINEAR indices and weight along one axis of size n (a
+** power of two), REPEAT or CLAMP_TO_EDGE, for four finite coordinates: the
+** same operations as reduce_coord, texc_scale, texc_ifloor,
+** texc_frac_weight and wrap_index, lane by lane (the floor of a value this
+** small is exact as an int32, and is texc_ifloor's integer) */
+AVX2_INLINE void v4_linear_axis(V4 s, int n, int repeat, __m128i *i0, __m128i *i1, V4 *w)
+{
+#if defined(GLES_NUM_FLOAT)
+#define V4_FLOOR(v) _mm_floor_ps(v)
+#else
+#define V4_FLOOR(v) _mm256_floor_pd(v)
+#endif
+    if (repeat)
+        s = V4_OP(sub)(s, V4_FLOOR(s));
+    else
+        s = V4_OP(min)(V4_OP(max)(s, V4_OP(set1)(-1)), V4_OP(set1)(2));
+    const V4 uu = V4_OP(sub)(V4_OP(mul)(s, V4_OP(set1)((NUM)n)), V4_OP(set1)((NUM)0.5));
+    const V4 fl = V4_FLOOR(uu);
+#undef V4_FLOOR
+    *w = V4_OP(sub)(uu, fl);
+    const __m128i i = v4_trunc_i32(fl), j = _mm_add_epi32(i, _mm_set1_epi32(1));
+    if (repeat) {
+        const __m128i mask = _mm_set1_epi32(n - 1);
+        *i0 = _mm_and_si128(i, mask);
+        *i1 = _mm_and_si128(j, mask);
+    } else {
+        const __m128i zero = _mm_setzero_si128(), top = _mm_set1_epi32(n - 1);
+        *i0 = _mm_min_epi32(_mm_max_epi32(i, zero), top);
+        *i1 = _mm_min_epi32(_mm_max_epi32(j, zero), top);
+    }
+}
+
+/* sample_level's GL_LINEAR of a power-of-two level for fragments 0..n-1
+** (n a multiple of 4), REPEAT or CLAMP_TO_EDGE on each axis: the indices
+** and weights of four fragments at a time in vector lanes, then each
+** fragment's four texels filtered by avx2_bilerp_rgba8. Stops before the
+** first four coordinates of which one is not finite (NaN and the infinities
+** take sample_level's tests); returns the number of fragments done. */
+static inline int avx2_sample_linear_real(const TexImage *li, int n, const TexCoord *c, FRAGV *out, size_t stride,
+                                          int repeat_s, int repeat_t)
+{
+    const int w = li->width, h = li->height;
+    const uint32_t *tx = li->texels;
+    for (int j = 0; j < n; j += 4) {
+        const V4 sv = v4_coord4(&c[j], 0), tv = v4_coord4(&c[j], 1);
+        if (!(v4_finite(sv) && v4_finite(tv)))
+            return j;
+        __m128i x0, x1, y0, y1;
+        V4 a, b;
+        v4_linear_axis(sv, w, repeat_s, &x0, &x1, &a);
+        v4_linear_axis(tv, h, repeat_t, &y0, &y1, &b);
+        const __m128i r0 = _mm_mullo_epi32(y0, _mm_set1_epi32(w)), r1 = _mm_mullo_epi32(y1, _mm_set1_epi32(w));
+        int32_t i00[4], i10[4], i01[4], i11[4];
+        NUM wa[4], wb[4];
+        _mm_storeu_si128((__m128i *)(void *)i00, _mm_add_epi32(r0, x0));
+        _mm_storeu_si128((__m128i *)(void *)i10, _mm_add_epi32(r0, x1));
+        _mm_storeu_si128((__m128i *)(void *)i01, _mm_add_epi32(r1, x0));
+        _mm_storeu_si128((__m128i *)(void *)i11, _mm_add_epi32(r1, x1));
+        V4_OP(storeu)(wa, a);
+        V4_OP(storeu)(wb, b);
+        for (int k = 0; k < 4; k++)
+            avx2_bilerp_rgba8(tx[i00[k]], tx[i10[k]], tx[i01[k]], tx[i11[k]], wa[k], wb[k],
+                              out + (size_t)(j + k) * stride);
+    }
+    return n;
+}
 #endif
 
 #if SIMD_X86

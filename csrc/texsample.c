@@ -212,18 +212,30 @@ static inline int linear_kernel_fits(const Texture *t, unsigned int ws, unsigned
     return pot && (ws == GL_REPEAT || ws == GL_CLAMP_TO_EDGE) && (wt == GL_REPEAT || wt == GL_CLAMP_TO_EDGE);
 }
 
+#if SIMD_X86
+/* the vector kernel of this build over the first n (a multiple of 4) of a
+** level's GL_LINEAR samples; returns how many it did from the start */
+static inline int sample_linear4(const TexImage *li, int n, const TexCoord *c, FRAGV *out, size_t stride, int rs,
+                                 int rt)
+{
+#if NUM_IS_FIXED
+    avx2_sample_linear(li, n, c, out, stride, rs, rt);
+    return n;
+#else
+    return avx2_sample_linear_real(li, n, c, out, stride, rs, rt);
+#endif
+}
+#endif
+
 /* the vector kernel's share of n level-0 GL_LINEAR samples (a multiple of
 ** four; 0 where it does not apply: see linear_kernel_fits, or no kernel in
 ** this build) */
 static inline int linear_block(const Texture *t, int n, const TexCoord *c, FRAGV *out, size_t stride, unsigned int ws,
                                unsigned int wt)
 {
-#if SIMD_X86 && NUM_IS_FIXED
-    const TexImage *li = &t->level[0];
-    if (linear_kernel_fits(t, ws, wt)) {
-        avx2_sample_linear(li, n & ~3, c, out, stride, ws == GL_REPEAT, wt == GL_REPEAT);
-        return n & ~3;
-    }
+#if SIMD_X86
+    if (linear_kernel_fits(t, ws, wt))
+        return sample_linear4(&t->level[0], n & ~3, c, out, stride, ws == GL_REPEAT, wt == GL_REPEAT);
 #endif
     (void)t, (void)n, (void)c, (void)out, (void)stride, (void)ws, (void)wt;
     return 0;
@@ -239,7 +251,7 @@ static inline int linear_block(const Texture *t, int n, const TexCoord *c, FRAGV
 static int lod_block(const Texture *t, int n, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
                      FRAGV *out, size_t stride, const FRAGV *unorm, unsigned int ws, unsigned int wt)
 {
-#if SIMD_X86 && NUM_IS_FIXED
+#if SIMD_X86
     if (!linear_kernel_fits(t, ws, wt) || n > SPAN_SAMPLE_MAX)
         return 0;
     LodChoice ch[SPAN_SAMPLE_MAX];
@@ -254,13 +266,14 @@ static int lod_block(const Texture *t, int n, const TexCoord *c, const TexCoord 
         int e = j + 1;
         while (e < n && ch[e].level == cj->level && ch[e].two == cj->two && ch[e].filter == cj->filter)
             e++;
-        int m4 = cj->filter == GL_LINEAR ? (e - j) & ~3 : 0;
+        const int m4 = cj->filter == GL_LINEAR ? (e - j) & ~3 : 0;
         for (int k = 0; k <= cj->two; k++) {
             FRAGV *dst = k ? second[j] : out + (size_t)j * stride;
             const size_t dstride = k ? 4 : stride;
-            if (m4)
-                avx2_sample_linear(&t->level[cj->level + k], m4, c + j, dst, dstride, ws == GL_REPEAT, wt == GL_REPEAT);
-            for (int i = m4; i < e - j; i++)
+            const int done = m4 ? sample_linear4(&t->level[cj->level + k], m4, c + j, dst, dstride, ws == GL_REPEAT,
+                                                 wt == GL_REPEAT)
+                                : 0;
+            for (int i = done; i < e - j; i++)
                 sample_level(t, cj->level + k, cj->filter, c[j + i].s, c[j + i].t, dst + (size_t)i * dstride, unorm,
                              ws, wt, 1);
         }
@@ -269,7 +282,11 @@ static int lod_block(const Texture *t, int n, const TexCoord *c, const TexCoord 
     if (any_two)
         for (int j = 0; j < n; j++)
             if (ch[j].two)
+#if NUM_IS_FIXED
                 avx2_lod_mix(ch[j].frac, out + (size_t)j * stride, second[j], out + (size_t)j * stride);
+#else
+                lod_mix(ch[j].frac, out + (size_t)j * stride, second[j], out + (size_t)j * stride);
+#endif
     return 1;
 #else
     (void)t, (void)n, (void)c, (void)dx, (void)dy, (void)out, (void)stride, (void)unorm, (void)ws, (void)wt;

@@ -174,6 +174,8 @@ def _sampler_case(numeric: str, seed: int, filt: int, wrap: tuple[int, int]) -> 
     n = 4095                 # eight at a time, then four, then one by one
     st = rng.uniform(-3, 3, (n, 2)) * rng.choice([1, 1, 1, 40], (n, 1))
     st[: n // 8] = np.round(st[: n // 8] * 64) / 64          # texel centres and edges
+    # coordinates that are not finite, alone in a group of four and together
+    st[[1001, 2050, 2051, 3000]] = [[np.nan, 0.5], [0.25, np.inf], [-np.inf, np.nan], [1e30, -1e30]]
     # neighbours a random footprint away: magnified to minified by 2^8
     step = np.exp2(rng.uniform(-8, 8, (n, 1))) / max(w, h) * rng.choice([-1, 1], (n, 2))
     coords = np.concatenate([st, st + step * [1, 0], st + step * [0, 1]], axis=1)
