@@ -16,6 +16,7 @@
 #include "state.h"
 #include "matrix.h"
 #include "light.h"
+#include "vertex_avx2.h"
 
 static void set4(double *d, NUM *n, const double *v, int count)
 {
@@ -486,26 +487,39 @@ static inline NUM lane_dot(NUM n[3][LIGHT_BATCH], int i, const NUM u[3])
     return num_dot(t, 1, u, 1, 3);
 }
 
-/* a directional light's term for every lane: only n . VP, n . h and the
-** specular power depend on the vertex. `cm`: COLOR_MATERIAL (a constant
-** at each call, so each instance loses the test) */
-static inline void directional_batch(const GlesContext *ctx, const LightPrep *p, LightBatch *b,
-                                     NUM n[3][LIGHT_BATCH], NUM acc[3][LIGHT_BATCH], int cnt, const int cm)
+/* a directional light's term added to acc for every lane, given n . VP
+** (ndotvp) and, when p->specular, n . h (ndoth) of each lane: the scalar
+** loop of light_side, or where `simd` says so the AVX2 kernels (every lane
+** up to cnt, padding included) with pow, which stays scalar, between them.
+** `cm`: COLOR_MATERIAL (constant at each call) */
+static inline void directional_apply(const LightPrep *p, NUM shin, NUM (*col)[LIGHT_BATCH], const NUM *ndotvp,
+                                     const NUM *ndoth, NUM acc[3][LIGHT_BATCH], int n, int cnt, const int cm,
+                                     int simd)
 {
     const Light *l = p->l;
-    const NUM shin = ctx->material.n_shininess;
-    NUM ndotvp[LIGHT_BATCH], ndoth[LIGHT_BATCH];
-    /* num_dot(n, 1, VP, 1, 3) lane by lane (the products commute) */
-    num_dot3_lanes(p->p[0], p->p[1], p->p[2], n[0], n[1], n[2], ndotvp, cnt);
-    if (p->specular)
-        num_dot3_lanes(p->h[0], p->h[1], p->h[2], n[0], n[1], n[2], ndoth, cnt);
-    for (int i = 0; i < b->n; i++) {   /* branches and pow: scalar, padding skipped */
+#if VERTEX_AVX2
+    if (simd) {
+        NUM term[3][LIGHT_BATCH];
+        vx_dir_terms_avx2(ndotvp, col, l->n_ambient, l->n_diffuse, p->amb, p->dif, cm, term, cnt);
+        if (p->specular)
+            for (int i = 0; i < n; i++)
+                if (ndotvp[i] > NUM_ZERO && ndoth[i] > NUM_ZERO) {
+                    NUM sp = num_pow(ndoth[i], shin);
+                    for (int k = 0; k < 3; k++)
+                        term[k][i] = num_add(term[k][i], num_mul(sp, p->spec[k]));
+                }
+        vx_scale_add_avx2(p->scale, term, acc, cnt);
+        return;
+    }
+#endif
+    (void)simd, (void)cnt;
+    for (int i = 0; i < n; i++) {   /* branches and pow: scalar, padding skipped */
         NUM term[3];
         for (int k = 0; k < 3; k++)
-            term[k] = cm ? num_mul(b->col[k][i], l->n_ambient[k]) : p->amb[k];
+            term[k] = cm ? num_mul(col[k][i], l->n_ambient[k]) : p->amb[k];
         if (ndotvp[i] > NUM_ZERO) {
             for (int k = 0; k < 3; k++)
-                term[k] = num_add(term[k], num_mul(ndotvp[i], cm ? num_mul(b->col[k][i], l->n_diffuse[k]) : p->dif[k]));
+                term[k] = num_add(term[k], num_mul(ndotvp[i], cm ? num_mul(col[k][i], l->n_diffuse[k]) : p->dif[k]));
             if (p->specular && ndoth[i] > NUM_ZERO) {
                 NUM sp = num_pow(ndoth[i], shin);
                 for (int k = 0; k < 3; k++)
@@ -515,6 +529,57 @@ static inline void directional_batch(const GlesContext *ctx, const LightPrep *p,
         for (int k = 0; k < 3; k++)
             acc[k][i] = num_add(acc[k][i], num_mul(p->scale, term[k]));
     }
+}
+
+/* a directional light's term for every lane: only n . VP, n . h and the
+** specular power depend on the vertex. `cm`: COLOR_MATERIAL (a constant
+** at each call, so each instance loses the test) */
+static inline void directional_batch(const GlesContext *ctx, const LightPrep *p, LightBatch *b,
+                                     NUM n[3][LIGHT_BATCH], NUM acc[3][LIGHT_BATCH], int cnt, const int cm)
+{
+    const int simd = ctx_simd(ctx) >= SIMD_AVX2;
+    NUM ndotvp[LIGHT_BATCH], ndoth[LIGHT_BATCH];
+    /* num_dot(n, 1, VP, 1, 3) lane by lane (the products commute) */
+    vx_dot3_lanes(simd, p->p[0], p->p[1], p->p[2], n[0], n[1], n[2], ndotvp, cnt);
+    if (p->specular)
+        vx_dot3_lanes(simd, p->h[0], p->h[1], p->h[2], n[0], n[1], n[2], ndoth, cnt);
+    directional_apply(p, ctx->material.n_shininess, b->col, ndotvp, ndoth, acc, b->n, cnt, cm, simd);
+}
+
+int light_debug_directional(int simd, int n, const int32_t *m, const int32_t *in, int32_t *out)
+{
+    if (n < 0 || n > LIGHT_BATCH || n % LIGHT_LANES != 0)
+        return 0;
+    Light l;
+    LightPrep p;
+    memset(&l, 0, sizeof l);
+    memset(&p, 0, sizeof p);
+    NUM col[4][LIGHT_BATCH], acc[3][LIGHT_BATCH], d[LIGHT_BATCH], h[LIGHT_BATCH];
+    for (int k = 0; k < 3; k++) {
+        l.n_ambient[k] = m[2];
+        l.n_diffuse[k] = m[3];
+        p.amb[k] = m[0];
+        p.dif[k] = m[1];
+        p.spec[k] = m[6];
+    }
+    p.l = &l;
+    p.scale = m[4];
+    p.specular = m[7] != 0;
+    for (int i = 0; i < n; i++) {
+        d[i] = in[i];
+        h[i] = in[192 + i];
+        for (int k = 0; k < 3; k++) {
+            col[k][i] = in[64 + i];
+            acc[k][i] = in[128 + i];
+        }
+    }
+    if (m[9])
+        directional_apply(&p, m[5], col, d, h, acc, n, n, 1, simd && simd_detect() >= SIMD_AVX2);
+    else
+        directional_apply(&p, m[5], col, d, h, acc, n, n, 0, simd && simd_detect() >= SIMD_AVX2);
+    for (int i = 0; i < n; i++)
+        out[i] = acc[0][i];
+    return 1;
 }
 
 /* a positional light's term for every lane: light_side's loop body with

@@ -19,6 +19,7 @@
 #include "array.h"
 #include "light.h"
 #include "fragment.h"
+#include "vertex_avx2.h"
 
 typedef NUM VbRows[4][VERTEX_BATCH];
 
@@ -44,9 +45,17 @@ static inline void fetch_float(const uint8_t *base, int step, const int64_t *ind
 
 /* rows 0..size-1 of lanes 0..n-1 from array `a`, converted as array_fetch
 ** converts them; other rows and lanes keep what the caller put there */
-static void fetch_lanes(const ArrayState *a, const int64_t *index, int n, int normalized, NUM out[][VERTEX_BATCH])
+static void fetch_lanes(const ArrayState *a, const int64_t *index, int n, int normalized, NUM out[][VERTEX_BATCH],
+                        int simd)
 {
     const uint8_t *base = array_base(a);
+#if VERTEX_AVX2
+    if (simd && a->type == GL_FLOAT && a->size >= 1 && a->size <= 4) {
+        vx_fetch_float_avx2(base, a->step, index, n, out, a->size);
+        return;
+    }
+#endif
+    (void)simd;
     if (a->type == GL_FLOAT) {
         switch (a->size) {
         case 1: fetch_float(base, a->step, index, n, out, 1); return;
@@ -75,7 +84,7 @@ static void fill_rows(NUM rows[][VERTEX_BATCH], int count, const NUM *value, int
 /* out = m in for every lane, as matrix_xform4 computes it (identity copies,
 ** affine keeps w); out is not in. `w_one`: every lane of in[3] is NUM_ONE.
 ** Returns whether every lane of out[3] is NUM_ONE. */
-static int xform_lanes(const NUM *m, int kind, VbRows in, VbRows out, int cnt, int w_one)
+static int xform_lanes(const NUM *m, int kind, VbRows in, VbRows out, int cnt, int w_one, int simd)
 {
     if (kind == MAT_IDENTITY) {
         for (int r = 0; r < 4; r++)
@@ -83,12 +92,12 @@ static int xform_lanes(const NUM *m, int kind, VbRows in, VbRows out, int cnt, i
         return w_one;
     }
     for (int r = 0; r < 3; r++)
-        num_dot4_lanes(m[r], m[4 + r], m[8 + r], m[12 + r], in[0], in[1], in[2], in[3], out[r], cnt, w_one);
+        vx_dot4_lanes(simd, m[r], m[4 + r], m[8 + r], m[12 + r], in[0], in[1], in[2], in[3], out[r], cnt, w_one);
     if (kind == MAT_AFFINE) {
         memcpy(out[3], in[3], (size_t)cnt * sizeof(NUM));
         return w_one;
     }
-    num_dot4_lanes(m[3], m[7], m[11], m[15], in[0], in[1], in[2], in[3], out[3], cnt, w_one);
+    vx_dot4_lanes(simd, m[3], m[7], m[11], m[15], in[0], in[1], in[2], in[3], out[3], cnt, w_one);
     return 0;
 }
 
@@ -99,8 +108,9 @@ void vertex_batch_positions(GlesContext *ctx, const int64_t *index, int n, Verte
     VbRows obj, eye, clip;
     unsigned int code[VERTEX_BATCH];
     const int cnt = vb_lanes(n);
+    const int simd = ctx_simd(ctx) >= SIMD_AVX2;
     fill_rows(obj, 4, obj_default, cnt);
-    fetch_lanes(&ctx->arrays[ARR_VERTEX], index, n, 0, obj);
+    fetch_lanes(&ctx->arrays[ARR_VERTEX], index, n, 0, obj, simd);
     const Matrix *proj = ctx->projection.top, *mv = ctx->modelview.top;
     const int has_eye = ctx->matrix_palette || ctx->need_eye;
     const ArrayState *va = &ctx->arrays[ARR_VERTEX];
@@ -113,12 +123,12 @@ void vertex_batch_positions(GlesContext *ctx, const int64_t *index, int n, Verte
             for (int k = 0; k < 4; k++)
                 eye[k][i] = e[k];
         }
-        xform_lanes(proj->n, proj->kind, eye, clip, cnt, 0);
+        xform_lanes(proj->n, proj->kind, eye, clip, cnt, 0, simd);
     } else if (ctx->need_eye) {
-        int eye_w_one = xform_lanes(mv->n, mv->kind, obj, eye, cnt, w_one);
-        xform_lanes(proj->n, proj->kind, eye, clip, cnt, eye_w_one);
+        int eye_w_one = xform_lanes(mv->n, mv->kind, obj, eye, cnt, w_one, simd);
+        xform_lanes(proj->n, proj->kind, eye, clip, cnt, eye_w_one, simd);
     } else {
-        xform_lanes(ctx->mvp, ctx->mvp_kind, obj, clip, cnt, w_one);
+        xform_lanes(ctx->mvp, ctx->mvp_kind, obj, clip, cnt, w_one, simd);
     }
     /* vertex_clipcode: a plane is violated when its distance is below 0 */
     NUM_FOR_LANES(i, cnt) {
@@ -139,7 +149,7 @@ void vertex_batch_positions(GlesContext *ctx, const int64_t *index, int n, Verte
                 continue;
             const NUM *pl = ctx->clip_plane_n[p];
             NUM dist[VERTEX_BATCH];
-            num_dot4_lanes(pl[0], pl[1], pl[2], pl[3], eye[0], eye[1], eye[2], eye[3], dist, cnt, 0);
+            vx_dot4_lanes(simd, pl[0], pl[1], pl[2], pl[3], eye[0], eye[1], eye[2], eye[3], dist, cnt, 0);
             NUM_FOR_LANES(i, cnt)
                 code[i] |= dist[i] < NUM_ZERO ? CLIP_USER0 << p : 0u;
         }
@@ -173,11 +183,12 @@ static void light_lanes(GlesContext *ctx, const int64_t *index, Vertex *const *o
 {
     static const NUM zero[4] = { NUM_ZERO, NUM_ZERO, NUM_ZERO, NUM_ZERO };
     const int cnt = vb_lanes(n);
+    const int simd = ctx_simd(ctx) >= SIMD_AVX2;
     const ArrayState *na = &ctx->arrays[ARR_NORMAL];
     NUM obn[3][VERTEX_BATCH];
     if (na->enabled) {
         fill_rows(obn, 3, zero, cnt);
-        fetch_lanes(na, index, n, 1, obn);
+        fetch_lanes(na, index, n, 1, obn, simd);
     } else {
         fill_rows(obn, 3, ctx->cur_normal_n, cnt);
     }
@@ -193,7 +204,7 @@ static void light_lanes(GlesContext *ctx, const int64_t *index, Vertex *const *o
     } else {
         const NUM *nm = ctx->normal_matrix;
         for (int r = 0; r < 3; r++)
-            num_dot3_lanes(nm[r * 3], nm[r * 3 + 1], nm[r * 3 + 2], obn[0], obn[1], obn[2], lb->nrm[r], cnt);
+            vx_dot3_lanes(simd, nm[r * 3], nm[r * 3 + 1], nm[r * 3 + 2], obn[0], obn[1], obn[2], lb->nrm[r], cnt);
         if (ctx->rescale_normal)
             for (int r = 0; r < 3; r++)
                 NUM_FOR_LANES(i, cnt)
@@ -290,4 +301,47 @@ void vertex_batch_attribs(GlesContext *ctx, const int64_t *index, Vertex *const 
         else
             out[i]->point_size = NUM_ONE;
     }
+}
+
+int gles_debug_vertex_lanes(int simd, int kernel, int n, const int32_t *m, const int32_t *in, int32_t *out)
+{
+#if NUM_IS_FIXED
+    if (n < 0 || n > VERTEX_BATCH || n % NUM_LANES != 0)
+        return 0;
+    simd = simd && simd_detect() >= SIMD_AVX2;
+    switch (kernel) {
+    case 0:
+        vx_dot4_lanes(simd, m[0], m[1], m[2], m[3], in, in + 64, in + 128, in + 192, out, n, m[4] != 0);
+        return 1;
+    case 1:
+        vx_dot3_lanes(simd, m[0], m[1], m[2], in, in + 64, in + 128, out, n);
+        return 1;
+    case 2: {
+        if (m[0] < 1 || m[0] > 4 || m[1] < m[0])
+            return 0;
+        ArrayState a;
+        memset(&a, 0, sizeof a);
+        a.type = GL_FLOAT;
+        a.size = m[0];
+        a.step = m[1] * (int)sizeof(float);
+        a.ptr = (const uint8_t *)in;
+        int64_t index[VERTEX_BATCH];
+        for (int i = 0; i < n; i++)
+            index[i] = m[2] ? n - 1 - i : i;
+        NUM rows[4][VERTEX_BATCH];
+        memset(rows, 0, sizeof rows);
+        fetch_lanes(&a, index, n, 0, rows, simd);
+        for (int c = 0; c < m[0]; c++)
+            memcpy(out + 64 * c, rows[c], (size_t)n * sizeof(NUM));
+        return 1;
+    }
+    case 3:
+        return light_debug_directional(simd, n, m, in, out);
+    default:
+        return 0;
+    }
+#else
+    (void)simd, (void)kernel, (void)n, (void)m, (void)in, (void)out;
+    return 0;
+#endif
 }

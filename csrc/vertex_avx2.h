@@ -1,0 +1,317 @@
+/*
+** vertex_avx2.h -- AVX2 kernels of the fixed build's vertex batch
+** (vertex_batch.c, light.c), and the switches that choose them.
+**
+** Each vx_* function takes `simd` (ctx_simd(ctx) >= SIMD_AVX2) and runs
+** either the AVX2 kernel or the scalar code of num.h / the caller. The
+** kernels give the scalar code's bits on every input; the arguments are in
+** the comments, and tests/test_vertex_simd.py compares both on random and
+** edge inputs through gles_debug_vertex_lanes.
+**
+** The float and double builds have no kernels here: their lanes are plain
+** IEEE loops that the compiler vectorizes on the baseline already.
+*/
+#ifndef GLES_VERTEX_AVX2_H
+#define GLES_VERTEX_AVX2_H
+
+#include <string.h>
+#include "num.h"
+#include "simd.h"
+
+#if SIMD_X86 && NUM_IS_FIXED
+#define VERTEX_AVX2 1
+#else
+#define VERTEX_AVX2 0
+#endif
+
+#if VERTEX_AVX2
+#include <immintrin.h>
+#pragma GCC push_options
+#pragma GCC target("avx2")
+
+#define VX_INLINE static inline __attribute__((always_inline))
+
+/* {====================================================================
+** Exact sums of products, rounded once.
+**
+** The scalar num_dot4_lanes adds up to four products p = m x of two int32
+** (|p| <= 2^62) exactly in NumAcc and rounds with num_acc_round:
+** sat(round_half_away(acc / 2^16)), where sat clamps to [INT32_MIN,
+** INT32_MAX]. (num_acc_round's early returns for |acc| >= 2^63 - 2^31 give
+** NUM_MAX / NUM_MIN, which is also sat of the rounded quotient, since that
+** quotient's magnitude exceeds 2^46; so sat(round(acc / 2^16)) is the
+** scalar result for every acc.)
+**
+** Here each product is formed exactly by vpmuldq (32x32 -> 64, signed) and
+** split as p = 2^16 ph + pl with ph = floor(p / 2^16), pl = p mod 2^16 in
+** [0, 2^16). Without a 64-bit arithmetic shift, ph comes from a logical one:
+** p + 2^62 lies in [2^31, 2^63] (p >= INT32_MIN * INT32_MAX > -2^62), so as
+** an unsigned 64-bit value it is exact and (p + 2^62) >> 16 = ph + 2^46;
+** the 2^46 per term is subtracted once at the start. And pl is the low 16
+** bits of p + 2^62 (2^62 is a multiple of 2^16). For k <= 4 terms plus a
+** constant c (the w term when every w is 1, split the same way):
+**     S_h = sum ph, |S_h| <= 5 * 2^46 < 2^49;   S_l = sum pl in [0, 5 * 2^16)
+** and the lanes' wrapping adds compute both exactly (their true values fit
+** 64 bits). Then acc = 2^16 S_h + S_l = 2^16 T + r with
+**     T = S_h + (S_l >> 16),   r = S_l & 0xFFFF in [0, 2^16),
+** so T = floor(acc / 2^16), and acc < 0 exactly when T < 0 (T >= 0 gives
+** acc >= 0; T <= -1 gives acc <= -2^16 + r < 0). Rounding half away:
+**  * acc >= 0: floor((acc + 2^15) / 2^16) = T + floor((r + 2^15) / 2^16)
+**    = T + [r >= 2^15];
+**  * acc < 0: -floor((-acc + 2^15) / 2^16); -acc + 2^15 = 2^16 (-T) +
+**    (2^15 - r), so this is T - floor((2^15 - r) / 2^16) = T + [r > 2^15]
+**    (2^15 - r lies in (-2^15, 2^15]: its floor over 2^16 is -1 exactly when
+**    it is negative).
+** Both are T + ((r + 2^15 - [T < 0]) >> 16), the operand of the shift being
+** in [2^15 - 1, 2^16 + 2^15). The rounded value lies within 2^49 + 1 in
+** magnitude, and saturating it to int32 is num_acc_round's result. The
+** scalar code skips terms whose coefficient is zero; they add exactly 0,
+** and the kernel skips them too. */
+
+/* the split of the constant c (|c| <= 2^47): floor(c / 2^16), c mod 2^16 */
+static inline void vx_split(int64_t c, int64_t *h, int64_t *l)
+{
+    uint64_t b = (uint64_t)c + ((uint64_t)1 << 62);
+    *h = (int64_t)(b >> 16) - ((int64_t)1 << 46);
+    *l = (int64_t)(b & 0xFFFF);
+}
+
+/* sat(round_half_away((2^16 S_h + S_l) / 2^16)) per 64-bit lane */
+VX_INLINE __m256i vx_acc_round(__m256i sh, __m256i sl)
+{
+    const __m256i low = _mm256_set1_epi64x(0xFFFF);
+    __m256i t = _mm256_add_epi64(sh, _mm256_srli_epi64(sl, 16));
+    __m256i r = _mm256_and_si256(sl, low);
+    __m256i neg = _mm256_cmpgt_epi64(_mm256_setzero_si256(), t);       /* -1 where T < 0 */
+    r = _mm256_add_epi64(_mm256_add_epi64(r, _mm256_set1_epi64x(1 << 15)), neg);
+    t = _mm256_add_epi64(t, _mm256_srli_epi64(r, 16));
+    const __m256i hi = _mm256_set1_epi64x(INT32_MAX), lo = _mm256_set1_epi64x(INT32_MIN);
+    t = _mm256_blendv_epi8(t, hi, _mm256_cmpgt_epi64(t, hi));
+    return _mm256_blendv_epi8(t, lo, _mm256_cmpgt_epi64(lo, t));
+}
+
+/* the even (0, 2, 4, 6) and odd lanes' int32 results of two vx_acc_round
+** (each in [INT32_MIN, INT32_MAX], so its low 32 bits are the value) */
+VX_INLINE __m256i vx_merge(__m256i even, __m256i odd)
+{
+    return _mm256_blend_epi32(even, _mm256_slli_epi64(odd, 32), 0xAA);
+}
+
+/* out[i] = sum over t < k of coef[t] src[t][i], plus c, rounded once */
+static void vx_dot_terms(const NUM *coef, const NUM *const *src, int k, int64_t c, NUM *restrict out, int cnt)
+{
+    const __m256i bias = _mm256_set1_epi64x((int64_t)1 << 62), low = _mm256_set1_epi64x(0xFFFF);
+    int64_t h0, l0;
+    vx_split(c, &h0, &l0);
+    const __m256i sh0 = _mm256_set1_epi64x(h0 - k * ((int64_t)1 << 46)), sl0 = _mm256_set1_epi64x(l0);
+    __m256i m[4];
+    for (int t = 0; t < k; t++)
+        m[t] = _mm256_set1_epi64x(coef[t]);      /* vpmuldq reads the low 32 bits, signed */
+    for (int i = 0; i < cnt; i += 8) {
+        __m256i she = sh0, sho = sh0, sle = sl0, slo = sl0;
+        for (int t = 0; t < k; t++) {
+            __m256i x = _mm256_loadu_si256((const __m256i *)(const void *)(src[t] + i));
+            __m256i pe = _mm256_add_epi64(_mm256_mul_epi32(x, m[t]), bias);
+            __m256i po = _mm256_add_epi64(_mm256_mul_epi32(_mm256_srli_epi64(x, 32), m[t]), bias);
+            she = _mm256_add_epi64(she, _mm256_srli_epi64(pe, 16));
+            sho = _mm256_add_epi64(sho, _mm256_srli_epi64(po, 16));
+            sle = _mm256_add_epi64(sle, _mm256_and_si256(pe, low));
+            slo = _mm256_add_epi64(slo, _mm256_and_si256(po, low));
+        }
+        __m256i r = vx_merge(vx_acc_round(she, sle), vx_acc_round(sho, slo));
+        _mm256_storeu_si256((__m256i *)(void *)(out + i), r);
+    }
+}
+
+static void vx_dot4_lanes_avx2(NUM m0, NUM m1, NUM m2, NUM m3, const NUM *x, const NUM *y, const NUM *z,
+                               const NUM *w, NUM *restrict out, int cnt, int w_one)
+{
+    const NUM mm[4] = { m0, m1, m2, m3 };
+    const NUM *rows[4] = { x, y, z, w };
+    NUM coef[4];
+    const NUM *src[4];
+    int k = 0;
+    for (int t = 0; t < (w_one ? 3 : 4); t++)
+        if (mm[t] != 0) {
+            coef[k] = mm[t];
+            src[k++] = rows[t];
+        }
+    vx_dot_terms(coef, src, k, w_one ? (int64_t)m3 * NUM_ONE : 0, out, cnt);
+}
+
+static void vx_dot3_lanes_avx2(NUM m0, NUM m1, NUM m2, const NUM *x, const NUM *y, const NUM *z,
+                               NUM *restrict out, int cnt)
+{
+    const NUM mm[3] = { m0, m1, m2 };
+    const NUM *rows[3] = { x, y, z };
+    NUM coef[3];
+    const NUM *src[3];
+    int k = 0;
+    for (int t = 0; t < 3; t++)
+        if (mm[t] != 0) {
+            coef[k] = mm[t];
+            src[k++] = rows[t];
+        }
+    vx_dot_terms(coef, src, k, 0, out, cnt);
+}
+/* }==================================================================== */
+
+/* {====================================================================
+** FLOAT array components to 16.16 (num_from_float), four at a time.
+**
+** num_from_float: v = (double)f * 65536 (exact: a float has 24 significant
+** bits and the product stays far inside double's range); NaN gives 0,
+** v <= INT32_MIN gives NUM_MIN, v >= INT32_MAX gives NUM_MAX, else
+** floor(v + 1/2) with v + 1/2 rounded as a double. Here: the same v and the
+** same addition (vaddpd rounds as addsd does, to nearest), vroundpd's exact
+** floor, then a clamp to [INT32_MIN, INT32_MAX]. For v <= INT32_MIN,
+** floor(v + 1/2) <= INT32_MIN (v + 1/2 <= INT32_MIN + 1/2, rounding is
+** monotonic), so the clamp gives NUM_MIN; symmetrically v >= INT32_MAX
+** gives NUM_MAX (infinities included); between, floor(v + 1/2) already lies
+** in the range. NaN lanes are zeroed before the clamp (vmaxpd would pass a
+** NaN operand's partner through). The clamped doubles are integers in
+** int32's range, which vcvttpd2dq converts exactly. */
+VX_INLINE __m128i vx_from_float4(__m128 f)
+{
+    __m256d v = _mm256_mul_pd(_mm256_cvtps_pd(f), _mm256_set1_pd(65536.0));
+    __m256d x = _mm256_floor_pd(_mm256_add_pd(v, _mm256_set1_pd(0.5)));
+    x = _mm256_and_pd(x, _mm256_cmp_pd(v, v, _CMP_ORD_Q));
+    x = _mm256_max_pd(x, _mm256_set1_pd((double)INT32_MIN));
+    x = _mm256_min_pd(x, _mm256_set1_pd((double)INT32_MAX));
+    return _mm256_cvttpd_epi32(x);
+}
+
+/* fetch_float's rows: `size` (1..4) floats of elements index[0..n), `step`
+** bytes apart, converted into out[c][i]; four elements are read (each as
+** the scalar code reads it: `size` floats, nothing beyond), transposed and
+** converted a row at a time */
+static void vx_fetch_float_avx2(const uint8_t *base, int step, const int64_t *index, int n, NUM (*out)[NUM_BATCH],
+                                int size)
+{
+    int i = 0;
+    for (; i + 4 <= n; i += 4) {
+        float f[4][4] = { { 0 } };
+        for (int j = 0; j < 4; j++)
+            memcpy(f[j], base + index[i + j] * step, (size_t)size * sizeof(float));
+        __m128 r0 = _mm_loadu_ps(f[0]), r1 = _mm_loadu_ps(f[1]), r2 = _mm_loadu_ps(f[2]), r3 = _mm_loadu_ps(f[3]);
+        _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+        const __m128 rows[4] = { r0, r1, r2, r3 };
+        for (int c = 0; c < size; c++)
+            _mm_storeu_si128((__m128i *)(void *)(out[c] + i), vx_from_float4(rows[c]));
+    }
+    for (; i < n; i++) {
+        float f[4];
+        memcpy(f, base + index[i] * step, (size_t)size * sizeof f[0]);
+        for (int c = 0; c < size; c++)
+            out[c][i] = num_from_float(f[c]);
+    }
+}
+/* }==================================================================== */
+
+/* {====================================================================
+** A directional light's term (directional_batch in light.c), four lanes
+** at a time in 64-bit lanes holding sign-extended NUMs.
+**
+** num_mul(a, b) = sat(round_half_away(a b / 2^16)) is the one-term case of
+** the sums above: vpmuldq forms a b exactly, and vx_acc_round of its split
+** rounds and saturates it. num_add(a, b) = sat(a + b), exact in 64 bits. */
+
+VX_INLINE __m256i vx_load4(const NUM *p)
+{
+    return _mm256_cvtepi32_epi64(_mm_loadu_si128((const __m128i *)(const void *)p));
+}
+
+VX_INLINE void vx_store4(NUM *p, __m256i v)
+{
+    const __m256i pick = _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6);
+    _mm_storeu_si128((__m128i *)(void *)p, _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(v, pick)));
+}
+
+/* num_mul per lane (operands in int32's range) */
+VX_INLINE __m256i vx_mul(__m256i a, __m256i b)
+{
+    __m256i p = _mm256_add_epi64(_mm256_mul_epi32(a, b), _mm256_set1_epi64x((int64_t)1 << 62));
+    __m256i h = _mm256_sub_epi64(_mm256_srli_epi64(p, 16), _mm256_set1_epi64x((int64_t)1 << 46));
+    return vx_acc_round(h, _mm256_and_si256(p, _mm256_set1_epi64x(0xFFFF)));
+}
+
+/* num_add per lane */
+VX_INLINE __m256i vx_add(__m256i a, __m256i b)
+{
+    const __m256i hi = _mm256_set1_epi64x(INT32_MAX), lo = _mm256_set1_epi64x(INT32_MIN);
+    __m256i t = _mm256_add_epi64(a, b);
+    t = _mm256_blendv_epi8(t, hi, _mm256_cmpgt_epi64(t, hi));
+    return _mm256_blendv_epi8(t, lo, _mm256_cmpgt_epi64(lo, t));
+}
+
+/* the term of every lane before its specular part, per channel k < 3:
+**   cm:  num_mul(col[k], lamb[k]), plus num_mul(d, num_mul(col[k], ldif[k])) where d > 0
+**   else amb[k],                   plus num_mul(d, dif[k])                   where d > 0
+** with num_add; d = n . VP of the lane */
+static void vx_dir_terms_avx2(const NUM *d, NUM (*col)[NUM_BATCH], const NUM *lamb, const NUM *ldif,
+                              const NUM *amb, const NUM *dif, int cm, NUM (*term)[NUM_BATCH], int cnt)
+{
+    const __m256i zero = _mm256_setzero_si256();
+    for (int i = 0; i < cnt; i += 4) {
+        __m256i dv = vx_load4(d + i);
+        __m256i pos = _mm256_cmpgt_epi64(dv, zero);
+        for (int k = 0; k < 3; k++) {
+            __m256i t, f;
+            if (cm) {
+                __m256i c = vx_load4(col[k] + i);
+                t = vx_mul(c, _mm256_set1_epi64x(lamb[k]));
+                f = vx_mul(c, _mm256_set1_epi64x(ldif[k]));
+            } else {
+                t = _mm256_set1_epi64x(amb[k]);
+                f = _mm256_set1_epi64x(dif[k]);
+            }
+            __m256i lit = vx_add(t, vx_mul(dv, f));
+            vx_store4(term[k] + i, _mm256_blendv_epi8(t, lit, pos));
+        }
+    }
+}
+
+/* acc[k] = num_add(acc[k], num_mul(scale, term[k])) for k < 3 */
+static void vx_scale_add_avx2(NUM scale, NUM (*term)[NUM_BATCH], NUM (*acc)[NUM_BATCH], int cnt)
+{
+    const __m256i s = _mm256_set1_epi64x(scale);
+    for (int k = 0; k < 3; k++)
+        for (int i = 0; i < cnt; i += 4)
+            vx_store4(acc[k] + i, vx_add(vx_load4(acc[k] + i), vx_mul(s, vx_load4(term[k] + i))));
+}
+/* }==================================================================== */
+
+#pragma GCC pop_options
+#endif /* VERTEX_AVX2 */
+
+/* {====================================================================
+** the switches: the AVX2 kernel where `simd` says so, else the scalar code */
+
+static inline void vx_dot4_lanes(int simd, NUM m0, NUM m1, NUM m2, NUM m3, const NUM *x, const NUM *y, const NUM *z,
+                                 const NUM *w, NUM *restrict out, int cnt, int w_one)
+{
+#if VERTEX_AVX2
+    if (simd) {
+        vx_dot4_lanes_avx2(m0, m1, m2, m3, x, y, z, w, out, cnt, w_one);
+        return;
+    }
+#endif
+    (void)simd;
+    num_dot4_lanes(m0, m1, m2, m3, x, y, z, w, out, cnt, w_one);
+}
+
+static inline void vx_dot3_lanes(int simd, NUM m0, NUM m1, NUM m2, const NUM *x, const NUM *y, const NUM *z,
+                                 NUM *restrict out, int cnt)
+{
+#if VERTEX_AVX2
+    if (simd) {
+        vx_dot3_lanes_avx2(m0, m1, m2, x, y, z, out, cnt);
+        return;
+    }
+#endif
+    (void)simd;
+    num_dot3_lanes(m0, m1, m2, x, y, z, out, cnt);
+}
+/* }==================================================================== */
+
+#endif
