@@ -89,11 +89,17 @@ int gles_debug_persp_any(int simd, int eshift, const int64_t mant[3], const int 
 **   2: the FLOAT array fetch: in holds the bits of n vertices of m[0]
 **      (1..4) floats, m[1] (>= m[0]) floats apart; lane i reads vertex
 **      n - 1 - i when m[2], else vertex i; component c into out[64 c + i]
-**   3: a directional light's term: lanes of n . VP in[0..), colour (with
-**      COLOR_MATERIAL when m[9]) red in[64..); ambient product m[0],
-**      diffuse product m[1], light ambient and diffuse m[2], m[3], scale
-**      m[4], the accumulator in[128..); out = acc + scale (amb + [d > 0]
-**      d dif) (num_mul, num_add) */
+**   3: a directional light's term (red channel): lanes of n . VP at in[0],
+**      the colour at in[64], the accumulator at in[128], n . h at in[192];
+**      material x light products ambient m[0], diffuse m[1], specular m[6];
+**      the light's ambient and diffuse m[2], m[3] (COLOR_MATERIAL, when
+**      m[9], multiplies them by the colour); scale m[4], shininess m[5];
+**      m[7]: the light is specular. out = the accumulator plus the term,
+**      as light_side adds it
+**   4: the range check's largest |component| (range.c) of vertices m[2] to
+**      m[3] (< n) of a FLOAT array of m[0] floats m[1] apart at in, as a
+**      float into out[0] (exact: the result is a float's value or inf)
+** m holds 10 values, out 256, in 256 (kernels 2 and 4: n m[1] floats). */
 int gles_debug_vertex_lanes(int simd, int kernel, int n, const int32_t *m, const int32_t *in, int32_t *out);
 
 /* the numeric layer, for tests: converts a and b to NUM (exact for

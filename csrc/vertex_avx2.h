@@ -8,8 +8,10 @@
 ** the comments, and tests/test_vertex_simd.py compares both on random and
 ** edge inputs through gles_debug_vertex_lanes.
 **
-** The float and double builds have no kernels here: their lanes are plain
-** IEEE loops that the compiler vectorizes on the baseline already.
+** The float and double builds have no arithmetic kernels here: their lanes
+** are plain IEEE loops that the compiler vectorizes on the baseline already.
+** The range check's scan of FLOAT arrays (range.c) is the same in every
+** build and has its kernel in all three.
 */
 #ifndef GLES_VERTEX_AVX2_H
 #define GLES_VERTEX_AVX2_H
@@ -19,15 +21,19 @@
 #include "simd.h"
 
 #if SIMD_X86 && NUM_IS_FIXED
-#define VERTEX_AVX2 1
+#define VERTEX_AVX2 1   /* the arithmetic kernels: fixed build only */
 #else
 #define VERTEX_AVX2 0
 #endif
+#define RANGE_AVX2 SIMD_X86   /* the range check's scan: every build */
 
-#if VERTEX_AVX2
+#if SIMD_X86
 #include <immintrin.h>
 #pragma GCC push_options
 #pragma GCC target("avx2")
+#endif
+
+#if VERTEX_AVX2
 
 #define VX_INLINE static inline __attribute__((always_inline))
 
@@ -281,8 +287,66 @@ static void vx_scale_add_avx2(NUM scale, NUM (*term)[NUM_BATCH], NUM (*acc)[NUM_
 }
 /* }==================================================================== */
 
-#pragma GCC pop_options
 #endif /* VERTEX_AVX2 */
+
+#if RANGE_AVX2
+/* {====================================================================
+** The range check's scan of a FLOAT array (range_array_max in range.c).
+**
+** The scalar scan keeps c = 0, then for each component's v = |x| sets c to
+** v when !(v <= c), to infinity when v is NaN. Its result is therefore
+** infinity when any component is NaN (c becomes infinity then, and no
+** later v exceeds it) and otherwise max |x|. On the bits: with the sign
+** cleared, non-negative floats compare as their bit patterns do, infinity
+** is 0x7F800000 and every NaN lies above it. So the largest of (bits &
+** 0x7FFFFFFF) over the components, an unsigned integer maximum (vpmaxud),
+** is a NaN exactly when a NaN was there, and otherwise the bits of max |x|,
+** which converts to double exactly. */
+static double vx_float_abs_max_avx2(const uint8_t *base, int step, int size, int64_t lo, int64_t hi)
+{
+    const __m256i mag = _mm256_set1_epi32(0x7FFFFFFF);
+    __m256i m8 = _mm256_setzero_si256();
+    __m128i m4 = _mm_setzero_si128();
+    uint32_t m = 0;
+    if (hi >= lo && step == size * (int)sizeof(float)) {
+        /* tightly packed: one run of components */
+        const uint8_t *p = base + lo * step;
+        const int64_t cnt = (hi - lo + 1) * size;
+        int64_t j = 0;
+        for (; j + 8 <= cnt; j += 8)
+            m8 = _mm256_max_epu32(m8, _mm256_and_si256(_mm256_loadu_si256((const __m256i *)(const void *)(p + 4 * j)), mag));
+        for (; j < cnt; j++) {
+            uint32_t u;
+            memcpy(&u, p + 4 * j, sizeof u);
+            u &= 0x7FFFFFFFu;
+            m = u > m ? u : m;
+        }
+    } else {
+        for (int64_t i = lo; i <= hi; i++) {
+            uint32_t u[4] = { 0, 0, 0, 0 };
+            memcpy(u, base + i * step, (size_t)size * sizeof(float));
+            m4 = _mm_max_epu32(m4, _mm_and_si128(_mm_loadu_si128((const __m128i *)(const void *)u),
+                                                 _mm256_castsi256_si128(mag)));
+        }
+    }
+    m4 = _mm_max_epu32(m4, _mm_max_epu32(_mm256_castsi256_si128(m8), _mm256_extracti128_si256(m8, 1)));
+    m4 = _mm_max_epu32(m4, _mm_shuffle_epi32(m4, 0x4E));
+    m4 = _mm_max_epu32(m4, _mm_shuffle_epi32(m4, 0xB1));
+    uint32_t v = (uint32_t)_mm_cvtsi128_si32(m4);
+    m = v > m ? v : m;
+    if (m > 0x7F800000u)
+        return INFINITY;
+    float f;
+    memcpy(&f, &m, sizeof f);
+    return f;
+}
+/* }==================================================================== */
+
+#endif /* RANGE_AVX2 */
+
+#if SIMD_X86
+#pragma GCC pop_options
+#endif
 
 /* {====================================================================
 ** the switches: the AVX2 kernel where `simd` says so, else the scalar code */

@@ -20,6 +20,7 @@
 #include "light.h"
 #include "fragment.h"
 #include "vertex_avx2.h"
+#include "range.h"
 
 typedef NUM VbRows[4][VERTEX_BATCH];
 
@@ -337,6 +338,18 @@ int gles_debug_vertex_lanes(int simd, int kernel, int n, const int32_t *m, const
     }
     case 3:
         return light_debug_directional(simd, n, m, in, out);
+    case 4: {
+        if (m[0] < 1 || m[0] > 4 || m[1] < m[0] || m[2] < 0 || m[3] >= n)
+            return 0;
+        ArrayState a;
+        memset(&a, 0, sizeof a);
+        a.type = GL_FLOAT;
+        a.size = m[0];
+        a.step = m[1] * (int)sizeof(float);
+        float f = (float)range_array_max(&a, (const uint8_t *)in, m[2], m[3], simd);
+        memcpy(out, &f, sizeof f);
+        return 1;
+    }
     default:
         return 0;
     }
