@@ -102,6 +102,35 @@ static int xform_lanes(const NUM *m, int kind, VbRows in, VbRows out, int cnt, i
     return 0;
 }
 
+/* vertex_clipcode for every lane: a plane is violated when its distance is
+** below 0. Forced inline: clip_codes_avx2 is this loop compiled for AVX2
+** (the same C operations, vectorized with 64-bit compares) */
+static inline __attribute__((always_inline)) void clip_codes(VbRows clip, unsigned int *code, int cnt)
+{
+    NUM_FOR_LANES(i, cnt) {
+        NUM x = clip[0][i], y = clip[1][i], z = clip[2][i], w = clip[3][i];
+        unsigned int c = 0;
+        c |= num_add(w, x) < NUM_ZERO ? CLIP_LEFT : 0u;
+        c |= num_sub(w, x) < NUM_ZERO ? CLIP_RIGHT : 0u;
+        c |= num_add(w, y) < NUM_ZERO ? CLIP_BOTTOM : 0u;
+        c |= num_sub(w, y) < NUM_ZERO ? CLIP_TOP : 0u;
+        c |= num_add(w, z) < NUM_ZERO ? CLIP_NEAR : 0u;
+        c |= num_sub(w, z) < NUM_ZERO ? CLIP_FAR : 0u;
+        c |= num_sub(w, NUM_EPS) < NUM_ZERO ? CLIP_W : 0u;
+        code[i] = c;
+    }
+}
+
+#if VERTEX_AVX2
+#pragma GCC push_options
+#pragma GCC target("avx2")
+static void clip_codes_avx2(VbRows clip, unsigned int *code, int cnt)
+{
+    clip_codes(clip, code, cnt);
+}
+#pragma GCC pop_options
+#endif
+
 void vertex_batch_positions(GlesContext *ctx, const int64_t *index, int n, Vertex *verts, int64_t base)
 {
     static const NUM obj_default[4] = { NUM_ZERO, NUM_ZERO, NUM_ZERO, NUM_ONE };
@@ -131,19 +160,12 @@ void vertex_batch_positions(GlesContext *ctx, const int64_t *index, int n, Verte
     } else {
         xform_lanes(ctx->mvp, ctx->mvp_kind, obj, clip, cnt, w_one, simd);
     }
-    /* vertex_clipcode: a plane is violated when its distance is below 0 */
-    NUM_FOR_LANES(i, cnt) {
-        NUM x = clip[0][i], y = clip[1][i], z = clip[2][i], w = clip[3][i];
-        unsigned int c = 0;
-        c |= num_add(w, x) < NUM_ZERO ? CLIP_LEFT : 0u;
-        c |= num_sub(w, x) < NUM_ZERO ? CLIP_RIGHT : 0u;
-        c |= num_add(w, y) < NUM_ZERO ? CLIP_BOTTOM : 0u;
-        c |= num_sub(w, y) < NUM_ZERO ? CLIP_TOP : 0u;
-        c |= num_add(w, z) < NUM_ZERO ? CLIP_NEAR : 0u;
-        c |= num_sub(w, z) < NUM_ZERO ? CLIP_FAR : 0u;
-        c |= num_sub(w, NUM_EPS) < NUM_ZERO ? CLIP_W : 0u;
-        code[i] = c;
-    }
+#if VERTEX_AVX2
+    if (simd)
+        clip_codes_avx2(clip, code, cnt);
+    else
+#endif
+        clip_codes(clip, code, cnt);
     if (ctx->need_eye)
         for (int p = 0; p < GLES_MAX_CLIP_PLANES; p++) {
             if (!ctx->clip_plane_enabled[p])
