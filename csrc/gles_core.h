@@ -99,6 +99,8 @@ int gles_debug_persp_any(int simd, int eshift, const int64_t mant[3], const int 
 **   4: the range check's largest |component| (range.c) of vertices m[2] to
 **      m[3] (< n) of a FLOAT array of m[0] floats m[1] apart at in, as a
 **      float into out[0] (exact: the result is a float's value or inf)
+**   5: num_normalize3 of the lanes' vectors (rows x, y, z at in[0],
+**      in[64], in[128]) into out[0], out[64], out[128]
 ** m holds 10 values, out 256, in 256 (kernels 2 and 4: n m[1] floats). */
 int gles_debug_vertex_lanes(int simd, int kernel, int n, const int32_t *m, const int32_t *in, int32_t *out);
 

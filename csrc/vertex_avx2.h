@@ -287,6 +287,73 @@ static void vx_scale_add_avx2(NUM scale, NUM (*term)[NUM_BATCH], NUM (*acc)[NUM_
 }
 /* }==================================================================== */
 
+/* {====================================================================
+** num_normalize3 of four lanes at a time (GL_NORMALIZE).
+**
+** The scalar steps, per lane, and how each is formed here exactly:
+**  * m = the largest num_abs of the three components: vpabsd gives |v| as
+**    an unsigned 32-bit value (2^31 for INT32_MIN), vpminud with INT32_MAX
+**    saturates it as num_abs does, vpmaxud takes the largest. m = 0 leaves
+**    the lane unchanged (blended back at the end).
+**  * sh = u64_bits(m) - 16: m (1 <= m < 2^31) converts to double exactly,
+**    and its biased exponent e gives u64_bits(m) = e - 1022, so sh = e -
+**    1038, in [-15, 15].
+**  * w = v / 2^sh truncated toward zero for sh >= 0, v 2^-sh otherwise:
+**    as sign and magnitude, (|v| >> max(sh, 0)) << max(-sh, 0) with the
+**    sign put back (C's division truncates toward zero, so the quotient's
+**    magnitude is floor(|v| / 2^sh)). |w| <= 2^16.
+**  * ss = w0^2 + w1^2 + w2^2 (vpmuldq, exact; below 3 2^32), and
+**    a = num_from_scaled(ss, 32) = (ss + 2^15) >> 16 for ss >= 0. The
+**    largest |w| is at least 2^15, so a lies in [2^14, 3 2^16].
+**  * num_rsqrt(a) = (isqrt(floor(2^62 / a)) + 64) >> 7, and for real X >= 0
+**    floor(sqrt(floor(X))) = floor(sqrt(X)) (k = floor(sqrt(X)) has k^2 <=
+**    floor(X)), so the root is r = floor(z) with z = 2^31 / sqrt(a), the one
+**    integer with r^2 a <= 2^62 < (r + 1)^2 a. In double, y = 2^31 /
+**    sqrt(a) with two correctly rounded operations (vsqrtpd, vdivpd) is
+**    within 2^-52 z (1 + 2^-50) < 2^-27 of z (z <= 2^24), so floor(y) can
+**    differ from r only where z lies within 2^-27 of an integer; over the
+**    whole domain (the 180,225 values of a) floor(y) = r, which
+**    tests/test_vertex_simd.py checks value by value with the same IEEE
+**    operations, so floor(y) is the root.
+**  * each component num_from_scaled(w inv, 32), |w inv| <= 2^33: vx_mul.
+** The other lanes' values stay as they were (m = 0). */
+static void vx_normalize3_avx2(NUM *x, NUM *y, NUM *z, int cnt)
+{
+    NUM *rows[3] = { x, y, z };
+    const __m256i zero = _mm256_setzero_si256();
+    const __m256i pick = _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6);
+    for (int i = 0; i < cnt; i += 4) {
+        __m256i v[3], w[3];
+        __m128i m = _mm_setzero_si128();
+        for (int k = 0; k < 3; k++) {
+            __m128i v32 = _mm_loadu_si128((const __m128i *)(const void *)(rows[k] + i));
+            m = _mm_max_epu32(m, _mm_min_epu32(_mm_abs_epi32(v32), _mm_set1_epi32(INT32_MAX)));
+            v[k] = _mm256_cvtepi32_epi64(v32);
+        }
+        __m256i e = _mm256_srli_epi64(_mm256_castpd_si256(_mm256_cvtepi32_pd(m)), 52);
+        __m256i sh = _mm256_sub_epi64(e, _mm256_set1_epi64x(1038)), nsh = _mm256_sub_epi64(zero, sh);
+        __m256i shr = _mm256_andnot_si256(_mm256_cmpgt_epi64(zero, sh), sh);
+        __m256i shl = _mm256_andnot_si256(_mm256_cmpgt_epi64(zero, nsh), nsh);
+        __m256i ss = zero;
+        for (int k = 0; k < 3; k++) {
+            __m256i sg = _mm256_cmpgt_epi64(zero, v[k]);
+            __m256i mag = _mm256_sub_epi64(_mm256_xor_si256(v[k], sg), sg);
+            mag = _mm256_sllv_epi64(_mm256_srlv_epi64(mag, shr), shl);
+            w[k] = _mm256_sub_epi64(_mm256_xor_si256(mag, sg), sg);
+            ss = _mm256_add_epi64(ss, _mm256_mul_epi32(w[k], w[k]));
+        }
+        __m256i a = _mm256_srli_epi64(_mm256_add_epi64(ss, _mm256_set1_epi64x(1 << 15)), 16);
+        __m256d ad = _mm256_cvtepi32_pd(_mm256_castsi256_si128(_mm256_permutevar8x32_epi32(a, pick)));
+        __m256d yd = _mm256_floor_pd(_mm256_div_pd(_mm256_set1_pd(2147483648.0), _mm256_sqrt_pd(ad)));
+        __m256i r = _mm256_cvtepi32_epi64(_mm256_cvttpd_epi32(yd));
+        __m256i inv = _mm256_srli_epi64(_mm256_add_epi64(r, _mm256_set1_epi64x(64)), 7);
+        __m256i keep = _mm256_cmpeq_epi64(e, zero);                                      /* m = 0 */
+        for (int k = 0; k < 3; k++)
+            vx_store4(rows[k] + i, _mm256_blendv_epi8(vx_mul(w[k], inv), v[k], keep));
+    }
+}
+/* }==================================================================== */
+
 #endif /* VERTEX_AVX2 */
 
 #if RANGE_AVX2
@@ -375,6 +442,26 @@ static inline void vx_dot3_lanes(int simd, NUM m0, NUM m1, NUM m2, const NUM *x,
 #endif
     (void)simd;
     num_dot3_lanes(m0, m1, m2, x, y, z, out, cnt);
+}
+
+/* num_normalize3 of lanes 0..n-1 of rows x, y, z (the AVX2 kernel also
+** normalises the padding lanes up to cnt) */
+static inline void vx_normalize3_lanes(int simd, NUM *x, NUM *y, NUM *z, int n, int cnt)
+{
+#if VERTEX_AVX2
+    if (simd) {
+        vx_normalize3_avx2(x, y, z, cnt);
+        return;
+    }
+#endif
+    (void)simd, (void)cnt;
+    for (int i = 0; i < n; i++) {
+        NUM t[3] = { x[i], y[i], z[i] };
+        num_normalize3(t);
+        x[i] = t[0];
+        y[i] = t[1];
+        z[i] = t[2];
+    }
 }
 /* }==================================================================== */
 

@@ -234,12 +234,7 @@ static void light_lanes(GlesContext *ctx, const int64_t *index, Vertex *const *o
                     lb->nrm[r][i] = num_mul(lb->nrm[r][i], ctx->rescale);
     }
     if (ctx->normalize)
-        for (int i = 0; i < n; i++) {
-            NUM t[3] = { lb->nrm[0][i], lb->nrm[1][i], lb->nrm[2][i] };
-            num_normalize3(t);
-            for (int k = 0; k < 3; k++)
-                lb->nrm[k][i] = t[k];
-        }
+        vx_normalize3_lanes(simd, lb->nrm[0], lb->nrm[1], lb->nrm[2], n, cnt);
     fill_rows(lb->v, 3, zero, cnt);
     for (int i = 0; i < n; i++) {
         const NUM *eye = out[i]->eye;
@@ -360,6 +355,15 @@ int gles_debug_vertex_lanes(int simd, int kernel, int n, const int32_t *m, const
     }
     case 3:
         return light_debug_directional(simd, n, m, in, out);
+    case 5: {
+        NUM rows[3][VERTEX_BATCH];
+        for (int k = 0; k < 3; k++)
+            memcpy(rows[k], in + 64 * k, (size_t)n * sizeof(NUM));
+        vx_normalize3_lanes(simd, rows[0], rows[1], rows[2], n, n);
+        for (int k = 0; k < 3; k++)
+            memcpy(out + 64 * k, rows[k], (size_t)n * sizeof(NUM));
+        return 1;
+    }
     case 4: {
         if (m[0] < 1 || m[0] > 4 || m[1] < m[0] || m[2] < 0 || m[3] >= n)
             return 0;

@@ -2,8 +2,9 @@
 
 Where the CPU has AVX2, the fixed build's vertex batch runs AVX2 kernels for
 the matrix rows and normal products (num_dot4_lanes, num_dot3_lanes), the
-FLOAT array conversion (num_from_float), a directional light's term, and
-the range check's scan of FLOAT arrays (every build); ``ctx.debug(16)``
+FLOAT array conversion (num_from_float), GL_NORMALIZE (num_normalize3), a
+directional light's term, and the range check's scan of FLOAT arrays (every
+build); ``ctx.debug(16)``
 runs the scalar code. ``gles_debug_vertex_lanes`` calls either on given
 lanes, so the kernels are compared directly, on random inputs and on the
 edges where an exact scheme could slip: INT32_MIN and INT32_MAX everywhere,
@@ -280,6 +281,59 @@ def test_directional_term_exact(core):
         if not m[7]:
             want = [_term_expected(m, int(data[i]), int(data[64 + i]), int(data[128 + i])) for i in range(n)]
             assert got[:n].tolist() == want, f"m {m.tolist()}"
+
+
+# {================================================================
+# GL_NORMALIZE
+
+def _normalize_expected(v: list[int]) -> list[int]:
+    """num_normalize3 (docs/numerics.md: divide by the largest component's power of two,
+    one exact sum of squares, rsqrt by an integer square root) in Python integers."""
+    m = max(min(abs(c), I32_MAX) for c in v)
+    if m == 0:
+        return v
+    sh = m.bit_length() - 16
+    w = [(abs(c) >> sh) * (1 if c >= 0 else -1) if sh >= 0 else c << -sh for c in v]
+    a = (sum(c * c for c in w) + 2**15) >> 16
+    inv = (math.isqrt(2**62 // a) + 64) >> 7
+    return [_sat(_round16(c * inv)) for c in w]
+
+
+def _normal_cases(rng: np.random.Generator):
+    for _ in range(40):                     # every magnitude
+        scale = 2.0 ** rng.uniform(-16, 31, (3, 64))
+        yield np.clip(rng.standard_normal((3, 64)) * scale, I32_MIN, I32_MAX).astype(np.int64)
+    for _ in range(20):
+        yield rng.choice(EDGES, (3, 64))
+    for _ in range(20):                     # axis-aligned and unit vectors (exact square roots)
+        rows = np.zeros((3, 64), np.int64)
+        axis = rng.integers(0, 3, 64)
+        rows[axis, np.arange(64)] = rng.choice([65536, -65536, 32768, 2**20, -(2**31), I32_MAX, 1, -1], 64)
+        yield rows
+    # zero vectors among others
+    rows = rng.integers(-(2**17), 2**17, (3, 64))
+    rows[:, ::3] = 0
+    yield rows
+
+
+def test_rsqrt_by_double_is_exact_on_the_normalize_domain():
+    """The premise of the AVX2 normalisation: for every a the kernel can meet
+    (2^14 <= a <= 3 2^16), floor(2^31 / sqrt(a)) with IEEE double sqrt and division
+    (correctly rounded, as vsqrtpd and vdivpd) is the integer root isqrt(2^62 // a)."""
+    a = np.arange(2**14, 3 * 2**16 + 1)
+    approx = np.floor(2.0**31 / np.sqrt(a.astype(np.float64))).astype(np.int64)
+    exact = np.array([math.isqrt(2**62 // int(x)) for x in a.tolist()], np.int64)
+    assert np.array_equal(approx, exact)
+
+
+def test_normalize_exact(core):
+    """num_normalize3 over lanes: AVX2 = scalar = the integer algorithm, for zero, tiny,
+    huge, axis-aligned and INT32_MIN components."""
+    for rows in _normal_cases(np.random.default_rng(1307)):
+        got = _both(core, 5, 64, [], np.ascontiguousarray(rows.reshape(-1)).astype(np.int32))
+        for i in range(64):
+            want = _normalize_expected([int(rows[k][i]) for k in range(3)])
+            assert [int(got[64 * k + i]) for k in range(3)] == want, rows[:, i].tolist()
 
 
 # {================================================================
