@@ -487,22 +487,26 @@ static inline NUM lane_dot(NUM n[3][LIGHT_BATCH], int i, const NUM u[3])
     return num_dot(t, 1, u, 1, 3);
 }
 
-/* a directional light's term added to acc for every lane, given n . VP
-** (ndotvp) and, when p->specular, n . h (ndoth) of each lane: the scalar
-** loop of light_side, or where `simd` says so the AVX2 kernels (every lane
-** up to cnt, padding included) with pow, which stays scalar, between them.
-** `cm`: COLOR_MATERIAL (constant at each call) */
-static inline void directional_apply(const LightPrep *p, NUM shin, NUM (*col)[LIGHT_BATCH], const NUM *ndotvp,
-                                     const NUM *ndoth, NUM acc[3][LIGHT_BATCH], int n, int cnt, const int cm,
-                                     int simd)
+/* a directional light's term for every lane: only n . VP, n . h and the
+** specular power depend on the vertex. `cm`: COLOR_MATERIAL (a constant
+** at each call, so each instance loses the test). `simd`: the AVX2 kernels
+** of vertex_avx2.h (every lane up to cnt, padding included), with pow,
+** which stays scalar, between them */
+static inline void directional_batch(const LightPrep *p, NUM shin, LightBatch *b, NUM n[3][LIGHT_BATCH],
+                                     NUM acc[3][LIGHT_BATCH], int cnt, const int cm, int simd)
 {
     const Light *l = p->l;
+    NUM ndotvp[LIGHT_BATCH], ndoth[LIGHT_BATCH];
+    /* num_dot(n, 1, VP, 1, 3) lane by lane (the products commute) */
+    vx_dot3_lanes(simd, p->p[0], p->p[1], p->p[2], n[0], n[1], n[2], ndotvp, cnt);
+    if (p->specular)
+        vx_dot3_lanes(simd, p->h[0], p->h[1], p->h[2], n[0], n[1], n[2], ndoth, cnt);
 #if VERTEX_AVX2
     if (simd) {
         NUM term[3][LIGHT_BATCH];
-        vx_dir_terms_avx2(ndotvp, col, l->n_ambient, l->n_diffuse, p->amb, p->dif, cm, term, cnt);
+        vx_dir_terms_avx2(ndotvp, b->col, l->n_ambient, l->n_diffuse, p->amb, p->dif, cm, term, cnt);
         if (p->specular)
-            for (int i = 0; i < n; i++)
+            for (int i = 0; i < b->n; i++)
                 if (ndotvp[i] > NUM_ZERO && ndoth[i] > NUM_ZERO) {
                     NUM sp = num_pow(ndoth[i], shin);
                     for (int k = 0; k < 3; k++)
@@ -512,14 +516,13 @@ static inline void directional_apply(const LightPrep *p, NUM shin, NUM (*col)[LI
         return;
     }
 #endif
-    (void)simd, (void)cnt;
-    for (int i = 0; i < n; i++) {   /* branches and pow: scalar, padding skipped */
+    for (int i = 0; i < b->n; i++) {   /* branches and pow: scalar, padding skipped */
         NUM term[3];
         for (int k = 0; k < 3; k++)
-            term[k] = cm ? num_mul(col[k][i], l->n_ambient[k]) : p->amb[k];
+            term[k] = cm ? num_mul(b->col[k][i], l->n_ambient[k]) : p->amb[k];
         if (ndotvp[i] > NUM_ZERO) {
             for (int k = 0; k < 3; k++)
-                term[k] = num_add(term[k], num_mul(ndotvp[i], cm ? num_mul(col[k][i], l->n_diffuse[k]) : p->dif[k]));
+                term[k] = num_add(term[k], num_mul(ndotvp[i], cm ? num_mul(b->col[k][i], l->n_diffuse[k]) : p->dif[k]));
             if (p->specular && ndoth[i] > NUM_ZERO) {
                 NUM sp = num_pow(ndoth[i], shin);
                 for (int k = 0; k < 3; k++)
@@ -531,30 +534,19 @@ static inline void directional_apply(const LightPrep *p, NUM shin, NUM (*col)[LI
     }
 }
 
-/* a directional light's term for every lane: only n . VP, n . h and the
-** specular power depend on the vertex. `cm`: COLOR_MATERIAL (a constant
-** at each call, so each instance loses the test) */
-static inline void directional_batch(const GlesContext *ctx, const LightPrep *p, LightBatch *b,
-                                     NUM n[3][LIGHT_BATCH], NUM acc[3][LIGHT_BATCH], int cnt, const int cm)
-{
-    const int simd = ctx_simd(ctx) >= SIMD_AVX2;
-    NUM ndotvp[LIGHT_BATCH], ndoth[LIGHT_BATCH];
-    /* num_dot(n, 1, VP, 1, 3) lane by lane (the products commute) */
-    vx_dot3_lanes(simd, p->p[0], p->p[1], p->p[2], n[0], n[1], n[2], ndotvp, cnt);
-    if (p->specular)
-        vx_dot3_lanes(simd, p->h[0], p->h[1], p->h[2], n[0], n[1], n[2], ndoth, cnt);
-    directional_apply(p, ctx->material.n_shininess, b->col, ndotvp, ndoth, acc, b->n, cnt, cm, simd);
-}
-
 int light_debug_directional(int simd, int n, const int32_t *m, const int32_t *in, int32_t *out)
 {
     if (n < 0 || n > LIGHT_BATCH || n % LIGHT_LANES != 0)
         return 0;
+    /* VP = (1, 0, 0) and h = (0, 1, 0), so the lanes' normals (d, h, 0)
+    ** give n . VP = d and n . h = h exactly (one product by 2^16) */
     Light l;
     LightPrep p;
+    LightBatch b;
     memset(&l, 0, sizeof l);
     memset(&p, 0, sizeof p);
-    NUM col[4][LIGHT_BATCH], acc[3][LIGHT_BATCH], d[LIGHT_BATCH], h[LIGHT_BATCH];
+    memset(&b, 0, sizeof b);
+    NUM nrm[3][LIGHT_BATCH] = { { 0 } }, acc[3][LIGHT_BATCH];
     for (int k = 0; k < 3; k++) {
         l.n_ambient[k] = m[2];
         l.n_diffuse[k] = m[3];
@@ -563,20 +555,24 @@ int light_debug_directional(int simd, int n, const int32_t *m, const int32_t *in
         p.spec[k] = m[6];
     }
     p.l = &l;
+    p.p[0] = NUM_ONE;
+    p.h[1] = NUM_ONE;
     p.scale = m[4];
     p.specular = m[7] != 0;
+    b.n = n;
     for (int i = 0; i < n; i++) {
-        d[i] = in[i];
-        h[i] = in[192 + i];
+        nrm[0][i] = in[i];
+        nrm[1][i] = in[192 + i];
         for (int k = 0; k < 3; k++) {
-            col[k][i] = in[64 + i];
+            b.col[k][i] = in[64 + i];
             acc[k][i] = in[128 + i];
         }
     }
+    simd = simd && simd_detect() >= SIMD_AVX2;
     if (m[9])
-        directional_apply(&p, m[5], col, d, h, acc, n, n, 1, simd && simd_detect() >= SIMD_AVX2);
+        directional_batch(&p, m[5], &b, nrm, acc, n, 1, simd);
     else
-        directional_apply(&p, m[5], col, d, h, acc, n, n, 0, simd && simd_detect() >= SIMD_AVX2);
+        directional_batch(&p, m[5], &b, nrm, acc, n, 0, simd);
     for (int i = 0; i < n; i++)
         out[i] = acc[0][i];
     return 1;
@@ -649,7 +645,7 @@ static inline void side_batch(const GlesContext *ctx, LightBatch *b, NUM n[3][LI
         if (p->positional)
             positional_batch(ctx, p, b, n, acc, cm);
         else
-            directional_batch(ctx, p, b, n, acc, cnt, cm);
+            directional_batch(p, ctx->material.n_shininess, b, n, acc, cnt, cm, ctx_simd(ctx) >= SIMD_AVX2);
     }
     for (int k = 0; k < 3; k++)
         NUM_FOR_LANES(i, cnt)
