@@ -31,11 +31,10 @@
 #include <immintrin.h>
 #pragma GCC push_options
 #pragma GCC target("avx2")
+#define VX_INLINE static inline __attribute__((always_inline))
 #endif
 
 #if VERTEX_AVX2
-
-#define VX_INLINE static inline __attribute__((always_inline))
 
 /* {====================================================================
 ** Exact sums of products, rounded once.
@@ -191,8 +190,8 @@ VX_INLINE __m128i vx_from_float4(__m128 f)
 ** bytes apart, converted into out[c][i]; four elements are read (each as
 ** the scalar code reads it: `size` floats, nothing beyond), transposed and
 ** converted a row at a time */
-static void vx_fetch_float_avx2(const uint8_t *base, int step, const int64_t *index, int n, NUM (*out)[NUM_BATCH],
-                                int size)
+VX_INLINE void vx_fetch_float_size(const uint8_t *base, int step, const int64_t *index, int n,
+                                   NUM (*out)[NUM_BATCH], const int size)
 {
     int i = 0;
     for (; i + 4 <= n; i += 4) {
@@ -210,6 +209,18 @@ static void vx_fetch_float_avx2(const uint8_t *base, int step, const int64_t *in
         memcpy(f, base + index[i] * step, (size_t)size * sizeof f[0]);
         for (int c = 0; c < size; c++)
             out[c][i] = num_from_float(f[c]);
+    }
+}
+
+/* one instance per size, so that each element's copy is a fixed move */
+static void vx_fetch_float_avx2(const uint8_t *base, int step, const int64_t *index, int n, NUM (*out)[NUM_BATCH],
+                                int size)
+{
+    switch (size) {
+    case 1: vx_fetch_float_size(base, step, index, n, out, 1); break;
+    case 2: vx_fetch_float_size(base, step, index, n, out, 2); break;
+    case 3: vx_fetch_float_size(base, step, index, n, out, 3); break;
+    default: vx_fetch_float_size(base, step, index, n, out, 4); break;
     }
 }
 /* }==================================================================== */
@@ -369,6 +380,19 @@ static void vx_normalize3_avx2(NUM *x, NUM *y, NUM *z, int cnt)
 ** 0x7FFFFFFF) over the components, an unsigned integer maximum (vpmaxud),
 ** is a NaN exactly when a NaN was there, and otherwise the bits of max |x|,
 ** which converts to double exactly. */
+/* the largest magnitude bits per component of strided elements lo..hi */
+VX_INLINE __m128i vx_strided_max(const uint8_t *base, int step, const int size, int64_t lo, int64_t hi)
+{
+    __m128i m4 = _mm_setzero_si128();
+    for (int64_t i = lo; i <= hi; i++) {
+        uint32_t u[4] = { 0, 0, 0, 0 };
+        memcpy(u, base + i * step, (size_t)size * sizeof(float));
+        m4 = _mm_max_epu32(m4, _mm_and_si128(_mm_loadu_si128((const __m128i *)(const void *)u),
+                                             _mm_set1_epi32(0x7FFFFFFF)));
+    }
+    return m4;
+}
+
 static double vx_float_abs_max_avx2(const uint8_t *base, int step, int size, int64_t lo, int64_t hi)
 {
     const __m256i mag = _mm256_set1_epi32(0x7FFFFFFF);
@@ -389,11 +413,11 @@ static double vx_float_abs_max_avx2(const uint8_t *base, int step, int size, int
             m = u > m ? u : m;
         }
     } else {
-        for (int64_t i = lo; i <= hi; i++) {
-            uint32_t u[4] = { 0, 0, 0, 0 };
-            memcpy(u, base + i * step, (size_t)size * sizeof(float));
-            m4 = _mm_max_epu32(m4, _mm_and_si128(_mm_loadu_si128((const __m128i *)(const void *)u),
-                                                 _mm256_castsi256_si128(mag)));
+        switch (size) {
+        case 1: m4 = vx_strided_max(base, step, 1, lo, hi); break;
+        case 2: m4 = vx_strided_max(base, step, 2, lo, hi); break;
+        case 3: m4 = vx_strided_max(base, step, 3, lo, hi); break;
+        default: m4 = vx_strided_max(base, step, 4, lo, hi); break;
         }
     }
     m4 = _mm_max_epu32(m4, _mm_max_epu32(_mm256_castsi256_si128(m8), _mm256_extracti128_si256(m8, 1)));
