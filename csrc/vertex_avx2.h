@@ -1,6 +1,7 @@
 /*
 ** vertex_avx2.h -- AVX2 kernels of the fixed build's vertex batch
-** (vertex_batch.c, light.c), and the switches that choose them.
+** (vertex_batch.c, light.c) and of the range check's scan (range.c), and
+** the switches that choose them.
 **
 ** Each vx_* function takes `simd` (ctx_simd(ctx) >= SIMD_AVX2) and runs
 ** either the AVX2 kernel or the scalar code of num.h / the caller. The
