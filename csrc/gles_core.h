@@ -79,6 +79,30 @@ int gles_debug_sample(GlesContext *ctx, int unit, int simd, int n, const double 
 ** the vector kernel where simd != 0 and the CPU has one, else one by one */
 int gles_debug_persp_any(int simd, int eshift, const int64_t mant[3], const int qshift[3], int affine, int n,
                          const int64_t *e, int32_t *out);
+/* for tests, fixed build (0 elsewhere): a lane kernel of the vertex batch
+** over n lanes (a multiple of 8, at most 64), through the AVX2 kernel where
+** simd != 0 and the CPU has AVX2, else the scalar code; returns 1 when run.
+**   0: num_dot4_lanes: out[i] = m[0] x + m[1] y + m[2] z + m[3] w rounded
+**      once, rows x, y, z, w at in[0], in[64], in[128], in[192]; m[4] is
+**      w_one (the w term is then m[3] * 1)
+**   1: num_dot3_lanes: m[0..2], rows x, y, z as above
+**   2: the FLOAT array fetch: in holds the bits of n vertices of m[0]
+**      (1..4) floats, m[1] (>= m[0]) floats apart; lane i reads vertex
+**      n - 1 - i when m[2], else vertex i; component c into out[64 c + i]
+**   3: a directional light's term (red channel): lanes of n . VP at in[0],
+**      the colour at in[64], the accumulator at in[128], n . h at in[192];
+**      material x light products ambient m[0], diffuse m[1], specular m[6];
+**      the light's ambient and diffuse m[2], m[3] (COLOR_MATERIAL, when
+**      m[9], multiplies them by the colour); scale m[4], shininess m[5];
+**      m[7]: the light is specular. out = the accumulator plus the term,
+**      as light_side adds it
+**   4: the range check's largest |component| (range.c) of vertices m[2] to
+**      m[3] (< n) of a FLOAT array of m[0] floats m[1] apart at in, as a
+**      float into out[0] (exact: the result is a float's value or inf)
+**   5: num_normalize3 of the lanes' vectors (rows x, y, z at in[0],
+**      in[64], in[128]) into out[0], out[64], out[128]
+** m holds 10 values, out 256, in 256 (kernels 2 and 4: n m[1] floats). */
+int gles_debug_vertex_lanes(int simd, int kernel, int n, const int32_t *m, const int32_t *in, int32_t *out);
 
 /* the numeric layer, for tests: converts a and b to NUM (exact for
 ** multiples of 2^-16 in the fixed build), applies op, returns the result

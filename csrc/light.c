@@ -16,6 +16,7 @@
 #include "state.h"
 #include "matrix.h"
 #include "light.h"
+#include "vertex_avx2.h"
 
 static void set4(double *d, NUM *n, const double *v, int count)
 {
@@ -488,17 +489,33 @@ static inline NUM lane_dot(NUM n[3][LIGHT_BATCH], int i, const NUM u[3])
 
 /* a directional light's term for every lane: only n . VP, n . h and the
 ** specular power depend on the vertex. `cm`: COLOR_MATERIAL (a constant
-** at each call, so each instance loses the test) */
-static inline void directional_batch(const GlesContext *ctx, const LightPrep *p, LightBatch *b,
-                                     NUM n[3][LIGHT_BATCH], NUM acc[3][LIGHT_BATCH], int cnt, const int cm)
+** at each call, so each instance loses the test). `simd`: the AVX2 kernels
+** of vertex_avx2.h (every lane up to cnt, padding included), with pow,
+** which stays scalar, between them */
+static inline void directional_batch(const LightPrep *p, NUM shin, LightBatch *b, NUM n[3][LIGHT_BATCH],
+                                     NUM acc[3][LIGHT_BATCH], int cnt, const int cm, int simd)
 {
     const Light *l = p->l;
-    const NUM shin = ctx->material.n_shininess;
     NUM ndotvp[LIGHT_BATCH], ndoth[LIGHT_BATCH];
     /* num_dot(n, 1, VP, 1, 3) lane by lane (the products commute) */
-    num_dot3_lanes(p->p[0], p->p[1], p->p[2], n[0], n[1], n[2], ndotvp, cnt);
+    vx_dot3_lanes(simd, p->p[0], p->p[1], p->p[2], n[0], n[1], n[2], ndotvp, cnt);
     if (p->specular)
-        num_dot3_lanes(p->h[0], p->h[1], p->h[2], n[0], n[1], n[2], ndoth, cnt);
+        vx_dot3_lanes(simd, p->h[0], p->h[1], p->h[2], n[0], n[1], n[2], ndoth, cnt);
+#if VERTEX_AVX2
+    if (simd) {
+        NUM term[3][LIGHT_BATCH];
+        vx_dir_terms_avx2(ndotvp, b->col, l->n_ambient, l->n_diffuse, p->amb, p->dif, cm, term, cnt);
+        if (p->specular)
+            for (int i = 0; i < b->n; i++)
+                if (ndotvp[i] > NUM_ZERO && ndoth[i] > NUM_ZERO) {
+                    NUM sp = num_pow(ndoth[i], shin);
+                    for (int k = 0; k < 3; k++)
+                        term[k][i] = num_add(term[k][i], num_mul(sp, p->spec[k]));
+                }
+        vx_scale_add_avx2(p->scale, term, acc, cnt);
+        return;
+    }
+#endif
     for (int i = 0; i < b->n; i++) {   /* branches and pow: scalar, padding skipped */
         NUM term[3];
         for (int k = 0; k < 3; k++)
@@ -515,6 +532,50 @@ static inline void directional_batch(const GlesContext *ctx, const LightPrep *p,
         for (int k = 0; k < 3; k++)
             acc[k][i] = num_add(acc[k][i], num_mul(p->scale, term[k]));
     }
+}
+
+int light_debug_directional(int simd, int n, const int32_t *m, const int32_t *in, int32_t *out)
+{
+    if (n < 0 || n > LIGHT_BATCH || n % LIGHT_LANES != 0)
+        return 0;
+    /* VP = (1, 0, 0) and h = (0, 1, 0), so the lanes' normals (d, h, 0)
+    ** give n . VP = d and n . h = h exactly (one product by 2^16) */
+    Light l;
+    LightPrep p;
+    LightBatch b;
+    memset(&l, 0, sizeof l);
+    memset(&p, 0, sizeof p);
+    memset(&b, 0, sizeof b);
+    NUM nrm[3][LIGHT_BATCH] = { { 0 } }, acc[3][LIGHT_BATCH];
+    for (int k = 0; k < 3; k++) {
+        l.n_ambient[k] = m[2];
+        l.n_diffuse[k] = m[3];
+        p.amb[k] = m[0];
+        p.dif[k] = m[1];
+        p.spec[k] = m[6];
+    }
+    p.l = &l;
+    p.p[0] = NUM_ONE;
+    p.h[1] = NUM_ONE;
+    p.scale = m[4];
+    p.specular = m[7] != 0;
+    b.n = n;
+    for (int i = 0; i < n; i++) {
+        nrm[0][i] = in[i];
+        nrm[1][i] = in[192 + i];
+        for (int k = 0; k < 3; k++) {
+            b.col[k][i] = in[64 + i];
+            acc[k][i] = in[128 + i];
+        }
+    }
+    simd = simd && simd_detect() >= SIMD_AVX2;
+    if (m[9])
+        directional_batch(&p, m[5], &b, nrm, acc, n, 1, simd);
+    else
+        directional_batch(&p, m[5], &b, nrm, acc, n, 0, simd);
+    for (int i = 0; i < n; i++)
+        out[i] = acc[0][i];
+    return 1;
 }
 
 /* a positional light's term for every lane: light_side's loop body with
@@ -584,7 +645,7 @@ static inline void side_batch(const GlesContext *ctx, LightBatch *b, NUM n[3][LI
         if (p->positional)
             positional_batch(ctx, p, b, n, acc, cm);
         else
-            directional_batch(ctx, p, b, n, acc, cnt, cm);
+            directional_batch(p, ctx->material.n_shininess, b, n, acc, cnt, cm, ctx_simd(ctx) >= SIMD_AVX2);
     }
     for (int k = 0; k < 3; k++)
         NUM_FOR_LANES(i, cnt)

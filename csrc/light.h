@@ -34,5 +34,8 @@ typedef struct LightBatch {
 
 /* front (and, when `two_sided`, back) colours of b->n vertices */
 void light_batch(const GlesContext *ctx, LightBatch *b, int two_sided);
+/* gles_debug_vertex_lanes' kernel 3 (one directional light's term, through
+** the AVX2 kernels or the scalar loop) */
+int light_debug_directional(int simd, int n, const int32_t *m, const int32_t *in, int32_t *out);
 
 #endif

@@ -16,10 +16,17 @@
 #include <string.h>
 #include "range.h"
 #include "array.h"
+#include "vertex_avx2.h"
 
-/* largest |component| of vertices lo..hi; NaN and infinities give +inf */
-static double range_array_max(const ArrayState *a, const uint8_t *base, int64_t lo, int64_t hi)
+/* largest |component| of vertices lo..hi; NaN and infinities give +inf.
+** `simd`: a FLOAT array goes through the AVX2 scan (vertex_avx2.h) */
+double range_array_max(const ArrayState *a, const uint8_t *base, int64_t lo, int64_t hi, int simd)
 {
+#if RANGE_AVX2
+    if (simd && a->type == GL_FLOAT && a->size >= 1 && a->size <= 4)
+        return vx_float_abs_max_avx2(base, a->step, a->size, lo, hi);
+#endif
+    (void)simd;
     double c = 0.0;
     for (int64_t i = lo; i <= hi; i++) {
         const uint8_t *p = base + i * a->step;
@@ -72,14 +79,15 @@ static double range_bound(GlesContext *ctx, int index, int64_t lo, int64_t hi, i
 {
     ArrayState *a = &ctx->arrays[index];
     const uint8_t *base = array_base(a);
+    const int simd = ctx_simd(ctx) >= SIMD_AVX2;
     if (!a->buffer)
-        return range_array_max(a, base, lo, hi);
+        return range_array_max(a, base, lo, hi, simd);
     if (!a->range_cached || a->range_serial != ctx->buffer_serial) {
-        a->range_max = range_array_max(a, base, 0, range_vertex_count(a) - 1);
+        a->range_max = range_array_max(a, base, 0, range_vertex_count(a) - 1, simd);
         a->range_serial = ctx->buffer_serial;
         a->range_cached = 1;
     }
-    return fine(a->range_max, arg) ? a->range_max : range_array_max(a, base, lo, hi);
+    return fine(a->range_max, arg) ? a->range_max : range_array_max(a, base, lo, hi, simd);
 }
 
 static int range_value_fine(double c, void *arg)

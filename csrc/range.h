@@ -17,5 +17,9 @@
 ** drawn value |x| >= 32768; the numbers are kept for gles_range_last.
 ** Counts the draw. */
 int range_check_draw(GlesContext *ctx, int64_t lo, int64_t hi);
+/* the largest |component| of vertices lo..hi of array `a` (elements at
+** base), infinity when one is NaN or infinite; a FLOAT array through the
+** AVX2 scan where `simd` (the CPU must have AVX2) */
+double range_array_max(const ArrayState *a, const uint8_t *base, int64_t lo, int64_t hi, int simd);
 
 #endif

@@ -19,6 +19,8 @@
 #include "array.h"
 #include "light.h"
 #include "fragment.h"
+#include "vertex_avx2.h"
+#include "range.h"
 
 typedef NUM VbRows[4][VERTEX_BATCH];
 
@@ -44,9 +46,17 @@ static inline void fetch_float(const uint8_t *base, int step, const int64_t *ind
 
 /* rows 0..size-1 of lanes 0..n-1 from array `a`, converted as array_fetch
 ** converts them; other rows and lanes keep what the caller put there */
-static void fetch_lanes(const ArrayState *a, const int64_t *index, int n, int normalized, NUM out[][VERTEX_BATCH])
+static void fetch_lanes(const ArrayState *a, const int64_t *index, int n, int normalized, NUM out[][VERTEX_BATCH],
+                        int simd)
 {
     const uint8_t *base = array_base(a);
+#if VERTEX_AVX2
+    if (simd && a->type == GL_FLOAT && a->size >= 1 && a->size <= 4) {
+        vx_fetch_float_avx2(base, a->step, index, n, out, a->size);
+        return;
+    }
+#endif
+    (void)simd;
     if (a->type == GL_FLOAT) {
         switch (a->size) {
         case 1: fetch_float(base, a->step, index, n, out, 1); return;
@@ -75,7 +85,7 @@ static void fill_rows(NUM rows[][VERTEX_BATCH], int count, const NUM *value, int
 /* out = m in for every lane, as matrix_xform4 computes it (identity copies,
 ** affine keeps w); out is not in. `w_one`: every lane of in[3] is NUM_ONE.
 ** Returns whether every lane of out[3] is NUM_ONE. */
-static int xform_lanes(const NUM *m, int kind, VbRows in, VbRows out, int cnt, int w_one)
+static int xform_lanes(const NUM *m, int kind, VbRows in, VbRows out, int cnt, int w_one, int simd)
 {
     if (kind == MAT_IDENTITY) {
         for (int r = 0; r < 4; r++)
@@ -83,44 +93,20 @@ static int xform_lanes(const NUM *m, int kind, VbRows in, VbRows out, int cnt, i
         return w_one;
     }
     for (int r = 0; r < 3; r++)
-        num_dot4_lanes(m[r], m[4 + r], m[8 + r], m[12 + r], in[0], in[1], in[2], in[3], out[r], cnt, w_one);
+        vx_dot4_lanes(simd, m[r], m[4 + r], m[8 + r], m[12 + r], in[0], in[1], in[2], in[3], out[r], cnt, w_one);
     if (kind == MAT_AFFINE) {
         memcpy(out[3], in[3], (size_t)cnt * sizeof(NUM));
         return w_one;
     }
-    num_dot4_lanes(m[3], m[7], m[11], m[15], in[0], in[1], in[2], in[3], out[3], cnt, w_one);
+    vx_dot4_lanes(simd, m[3], m[7], m[11], m[15], in[0], in[1], in[2], in[3], out[3], cnt, w_one);
     return 0;
 }
 
-void vertex_batch_positions(GlesContext *ctx, const int64_t *index, int n, Vertex *verts, int64_t base)
+/* vertex_clipcode for every lane: a plane is violated when its distance is
+** below 0. Forced inline: clip_codes_avx2 is this loop compiled for AVX2
+** (the same C operations, vectorized with 64-bit compares) */
+static inline __attribute__((always_inline)) void clip_codes(VbRows clip, unsigned int *code, int cnt)
 {
-    static const NUM obj_default[4] = { NUM_ZERO, NUM_ZERO, NUM_ZERO, NUM_ONE };
-    static const NUM zero[4] = { NUM_ZERO, NUM_ZERO, NUM_ZERO, NUM_ZERO };
-    VbRows obj, eye, clip;
-    unsigned int code[VERTEX_BATCH];
-    const int cnt = vb_lanes(n);
-    fill_rows(obj, 4, obj_default, cnt);
-    fetch_lanes(&ctx->arrays[ARR_VERTEX], index, n, 0, obj);
-    const Matrix *proj = ctx->projection.top, *mv = ctx->modelview.top;
-    const int has_eye = ctx->matrix_palette || ctx->need_eye;
-    const ArrayState *va = &ctx->arrays[ARR_VERTEX];
-    const int w_one = va->size < 4;     /* obj w is the default 1 in every lane */
-    if (ctx->matrix_palette) {
-        fill_rows(eye, 4, zero, cnt);
-        for (int i = 0; i < n; i++) {
-            NUM o[4] = { obj[0][i], obj[1][i], obj[2][i], obj[3][i] }, e[4];
-            vertex_palette_eye(ctx, index[i], o, e);
-            for (int k = 0; k < 4; k++)
-                eye[k][i] = e[k];
-        }
-        xform_lanes(proj->n, proj->kind, eye, clip, cnt, 0);
-    } else if (ctx->need_eye) {
-        int eye_w_one = xform_lanes(mv->n, mv->kind, obj, eye, cnt, w_one);
-        xform_lanes(proj->n, proj->kind, eye, clip, cnt, eye_w_one);
-    } else {
-        xform_lanes(ctx->mvp, ctx->mvp_kind, obj, clip, cnt, w_one);
-    }
-    /* vertex_clipcode: a plane is violated when its distance is below 0 */
     NUM_FOR_LANES(i, cnt) {
         NUM x = clip[0][i], y = clip[1][i], z = clip[2][i], w = clip[3][i];
         unsigned int c = 0;
@@ -133,13 +119,60 @@ void vertex_batch_positions(GlesContext *ctx, const int64_t *index, int n, Verte
         c |= num_sub(w, NUM_EPS) < NUM_ZERO ? CLIP_W : 0u;
         code[i] = c;
     }
+}
+
+#if VERTEX_AVX2
+#pragma GCC push_options
+#pragma GCC target("avx2")
+static void clip_codes_avx2(VbRows clip, unsigned int *code, int cnt)
+{
+    clip_codes(clip, code, cnt);
+}
+#pragma GCC pop_options
+#endif
+
+void vertex_batch_positions(GlesContext *ctx, const int64_t *index, int n, Vertex *verts, int64_t base)
+{
+    static const NUM obj_default[4] = { NUM_ZERO, NUM_ZERO, NUM_ZERO, NUM_ONE };
+    static const NUM zero[4] = { NUM_ZERO, NUM_ZERO, NUM_ZERO, NUM_ZERO };
+    VbRows obj, eye, clip;
+    unsigned int code[VERTEX_BATCH];
+    const int cnt = vb_lanes(n);
+    const int simd = ctx_simd(ctx) >= SIMD_AVX2;
+    fill_rows(obj, 4, obj_default, cnt);
+    fetch_lanes(&ctx->arrays[ARR_VERTEX], index, n, 0, obj, simd);
+    const Matrix *proj = ctx->projection.top, *mv = ctx->modelview.top;
+    const int has_eye = ctx->matrix_palette || ctx->need_eye;
+    const ArrayState *va = &ctx->arrays[ARR_VERTEX];
+    const int w_one = va->size < 4;     /* obj w is the default 1 in every lane */
+    if (ctx->matrix_palette) {
+        fill_rows(eye, 4, zero, cnt);
+        for (int i = 0; i < n; i++) {
+            NUM o[4] = { obj[0][i], obj[1][i], obj[2][i], obj[3][i] }, e[4];
+            vertex_palette_eye(ctx, index[i], o, e);
+            for (int k = 0; k < 4; k++)
+                eye[k][i] = e[k];
+        }
+        xform_lanes(proj->n, proj->kind, eye, clip, cnt, 0, simd);
+    } else if (ctx->need_eye) {
+        int eye_w_one = xform_lanes(mv->n, mv->kind, obj, eye, cnt, w_one, simd);
+        xform_lanes(proj->n, proj->kind, eye, clip, cnt, eye_w_one, simd);
+    } else {
+        xform_lanes(ctx->mvp, ctx->mvp_kind, obj, clip, cnt, w_one, simd);
+    }
+#if VERTEX_AVX2
+    if (simd)
+        clip_codes_avx2(clip, code, cnt);
+    else
+#endif
+        clip_codes(clip, code, cnt);
     if (ctx->need_eye)
         for (int p = 0; p < GLES_MAX_CLIP_PLANES; p++) {
             if (!ctx->clip_plane_enabled[p])
                 continue;
             const NUM *pl = ctx->clip_plane_n[p];
             NUM dist[VERTEX_BATCH];
-            num_dot4_lanes(pl[0], pl[1], pl[2], pl[3], eye[0], eye[1], eye[2], eye[3], dist, cnt, 0);
+            vx_dot4_lanes(simd, pl[0], pl[1], pl[2], pl[3], eye[0], eye[1], eye[2], eye[3], dist, cnt, 0);
             NUM_FOR_LANES(i, cnt)
                 code[i] |= dist[i] < NUM_ZERO ? CLIP_USER0 << p : 0u;
         }
@@ -173,11 +206,12 @@ static void light_lanes(GlesContext *ctx, const int64_t *index, Vertex *const *o
 {
     static const NUM zero[4] = { NUM_ZERO, NUM_ZERO, NUM_ZERO, NUM_ZERO };
     const int cnt = vb_lanes(n);
+    const int simd = ctx_simd(ctx) >= SIMD_AVX2;
     const ArrayState *na = &ctx->arrays[ARR_NORMAL];
     NUM obn[3][VERTEX_BATCH];
     if (na->enabled) {
         fill_rows(obn, 3, zero, cnt);
-        fetch_lanes(na, index, n, 1, obn);
+        fetch_lanes(na, index, n, 1, obn, simd);
     } else {
         fill_rows(obn, 3, ctx->cur_normal_n, cnt);
     }
@@ -193,19 +227,14 @@ static void light_lanes(GlesContext *ctx, const int64_t *index, Vertex *const *o
     } else {
         const NUM *nm = ctx->normal_matrix;
         for (int r = 0; r < 3; r++)
-            num_dot3_lanes(nm[r * 3], nm[r * 3 + 1], nm[r * 3 + 2], obn[0], obn[1], obn[2], lb->nrm[r], cnt);
+            vx_dot3_lanes(simd, nm[r * 3], nm[r * 3 + 1], nm[r * 3 + 2], obn[0], obn[1], obn[2], lb->nrm[r], cnt);
         if (ctx->rescale_normal)
             for (int r = 0; r < 3; r++)
                 NUM_FOR_LANES(i, cnt)
                     lb->nrm[r][i] = num_mul(lb->nrm[r][i], ctx->rescale);
     }
     if (ctx->normalize)
-        for (int i = 0; i < n; i++) {
-            NUM t[3] = { lb->nrm[0][i], lb->nrm[1][i], lb->nrm[2][i] };
-            num_normalize3(t);
-            for (int k = 0; k < 3; k++)
-                lb->nrm[k][i] = t[k];
-        }
+        vx_normalize3_lanes(simd, lb->nrm[0], lb->nrm[1], lb->nrm[2], n, cnt);
     fill_rows(lb->v, 3, zero, cnt);
     for (int i = 0; i < n; i++) {
         const NUM *eye = out[i]->eye;
@@ -290,4 +319,68 @@ void vertex_batch_attribs(GlesContext *ctx, const int64_t *index, Vertex *const 
         else
             out[i]->point_size = NUM_ONE;
     }
+}
+
+int gles_debug_vertex_lanes(int simd, int kernel, int n, const int32_t *m, const int32_t *in, int32_t *out)
+{
+#if NUM_IS_FIXED
+    if (n < 0 || n > VERTEX_BATCH || n % NUM_LANES != 0)
+        return 0;
+    simd = simd && simd_detect() >= SIMD_AVX2;
+    switch (kernel) {
+    case 0:
+        vx_dot4_lanes(simd, m[0], m[1], m[2], m[3], in, in + 64, in + 128, in + 192, out, n, m[4] != 0);
+        return 1;
+    case 1:
+        vx_dot3_lanes(simd, m[0], m[1], m[2], in, in + 64, in + 128, out, n);
+        return 1;
+    case 2: {
+        if (m[0] < 1 || m[0] > 4 || m[1] < m[0])
+            return 0;
+        ArrayState a;
+        memset(&a, 0, sizeof a);
+        a.type = GL_FLOAT;
+        a.size = m[0];
+        a.step = m[1] * (int)sizeof(float);
+        a.ptr = (const uint8_t *)in;
+        int64_t index[VERTEX_BATCH];
+        for (int i = 0; i < n; i++)
+            index[i] = m[2] ? n - 1 - i : i;
+        NUM rows[4][VERTEX_BATCH];
+        memset(rows, 0, sizeof rows);
+        fetch_lanes(&a, index, n, 0, rows, simd);
+        for (int c = 0; c < m[0]; c++)
+            memcpy(out + 64 * c, rows[c], (size_t)n * sizeof(NUM));
+        return 1;
+    }
+    case 3:
+        return light_debug_directional(simd, n, m, in, out);
+    case 5: {
+        NUM rows[3][VERTEX_BATCH];
+        for (int k = 0; k < 3; k++)
+            memcpy(rows[k], in + 64 * k, (size_t)n * sizeof(NUM));
+        vx_normalize3_lanes(simd, rows[0], rows[1], rows[2], n, n);
+        for (int k = 0; k < 3; k++)
+            memcpy(out + 64 * k, rows[k], (size_t)n * sizeof(NUM));
+        return 1;
+    }
+    case 4: {
+        if (m[0] < 1 || m[0] > 4 || m[1] < m[0] || m[2] < 0 || m[3] >= n)
+            return 0;
+        ArrayState a;
+        memset(&a, 0, sizeof a);
+        a.type = GL_FLOAT;
+        a.size = m[0];
+        a.step = m[1] * (int)sizeof(float);
+        float f = (float)range_array_max(&a, (const uint8_t *)in, m[2], m[3], simd);
+        memcpy(out, &f, sizeof f);
+        return 1;
+    }
+    default:
+        return 0;
+    }
+#else
+    (void)simd, (void)kernel, (void)n, (void)m, (void)in, (void)out;
+    return 0;
+#endif
 }

@@ -1,0 +1,493 @@
+/*
+** vertex_avx2.h -- AVX2 kernels of the fixed build's vertex batch
+** (vertex_batch.c, light.c) and of the range check's scan (range.c), and
+** the switches that choose them.
+**
+** Each vx_* function takes `simd` (ctx_simd(ctx) >= SIMD_AVX2) and runs
+** either the AVX2 kernel or the scalar code of num.h / the caller. The
+** kernels give the scalar code's bits on every input; the arguments are in
+** the comments, and tests/test_vertex_simd.py compares both on random and
+** edge inputs through gles_debug_vertex_lanes.
+**
+** The float and double builds have no arithmetic kernels here: their lanes
+** are plain IEEE loops that the compiler vectorizes on the baseline already.
+** The range check's scan of FLOAT arrays (range.c) is the same in every
+** build and has its kernel in all three.
+*/
+#ifndef GLES_VERTEX_AVX2_H
+#define GLES_VERTEX_AVX2_H
+
+#include <string.h>
+#include "num.h"
+#include "simd.h"
+
+#if SIMD_X86 && NUM_IS_FIXED
+#define VERTEX_AVX2 1   /* the arithmetic kernels: fixed build only */
+#else
+#define VERTEX_AVX2 0
+#endif
+#define RANGE_AVX2 SIMD_X86   /* the range check's scan: every build */
+
+#if SIMD_X86
+#include <immintrin.h>
+#pragma GCC push_options
+#pragma GCC target("avx2")
+#define VX_INLINE static inline __attribute__((always_inline))
+#endif
+
+#if VERTEX_AVX2
+
+/* {====================================================================
+** Exact sums of products, rounded once.
+**
+** The scalar num_dot4_lanes adds up to four products p = m x of two int32
+** (|p| <= 2^62) exactly in NumAcc and rounds with num_acc_round:
+** sat(round_half_away(acc / 2^16)), where sat clamps to [INT32_MIN,
+** INT32_MAX]. (num_acc_round's early returns for |acc| >= 2^63 - 2^31 give
+** NUM_MAX / NUM_MIN, which is also sat of the rounded quotient, since that
+** quotient's magnitude exceeds 2^46; so sat(round(acc / 2^16)) is the
+** scalar result for every acc.)
+**
+** Here each product is formed exactly by vpmuldq (32x32 -> 64, signed) and
+** split as p = 2^16 ph + pl with ph = floor(p / 2^16), pl = p mod 2^16 in
+** [0, 2^16). Without a 64-bit arithmetic shift, ph comes from a logical one:
+** p + 2^62 lies in [2^31, 2^63] (p >= INT32_MIN * INT32_MAX > -2^62), so as
+** an unsigned 64-bit value it is exact and (p + 2^62) >> 16 = ph + 2^46;
+** the 2^46 per term is subtracted once at the start. And pl is the low 16
+** bits of p + 2^62 (2^62 is a multiple of 2^16). For k <= 4 terms plus a
+** constant c (the w term when every w is 1, split the same way):
+**     S_h = sum ph, |S_h| <= 5 * 2^46 < 2^49;   S_l = sum pl in [0, 5 * 2^16)
+** and the lanes' wrapping adds compute both exactly (their true values fit
+** 64 bits). Then acc = 2^16 S_h + S_l = 2^16 T + r with
+**     T = S_h + (S_l >> 16),   r = S_l & 0xFFFF in [0, 2^16),
+** so T = floor(acc / 2^16), and acc < 0 exactly when T < 0 (T >= 0 gives
+** acc >= 0; T <= -1 gives acc <= -2^16 + r < 0). Rounding half away:
+**  * acc >= 0: floor((acc + 2^15) / 2^16) = T + floor((r + 2^15) / 2^16)
+**    = T + [r >= 2^15];
+**  * acc < 0: -floor((-acc + 2^15) / 2^16); -acc + 2^15 = 2^16 (-T) +
+**    (2^15 - r), so this is T - floor((2^15 - r) / 2^16) = T + [r > 2^15]
+**    (2^15 - r lies in (-2^15, 2^15]: its floor over 2^16 is -1 exactly when
+**    it is negative).
+** Both are T + ((r + 2^15 - [T < 0]) >> 16), the operand of the shift being
+** in [2^15 - 1, 2^16 + 2^15). The rounded value lies within 2^49 + 1 in
+** magnitude, and saturating it to int32 is num_acc_round's result. The
+** scalar code skips terms whose coefficient is zero; they add exactly 0,
+** and the kernel skips them too. */
+
+/* the split of the constant c (|c| <= 2^47): floor(c / 2^16), c mod 2^16 */
+static inline void vx_split(int64_t c, int64_t *h, int64_t *l)
+{
+    uint64_t b = (uint64_t)c + ((uint64_t)1 << 62);
+    *h = (int64_t)(b >> 16) - ((int64_t)1 << 46);
+    *l = (int64_t)(b & 0xFFFF);
+}
+
+/* sat(round_half_away((2^16 S_h + S_l) / 2^16)) per 64-bit lane */
+VX_INLINE __m256i vx_acc_round(__m256i sh, __m256i sl)
+{
+    const __m256i low = _mm256_set1_epi64x(0xFFFF);
+    __m256i t = _mm256_add_epi64(sh, _mm256_srli_epi64(sl, 16));
+    __m256i r = _mm256_and_si256(sl, low);
+    __m256i neg = _mm256_cmpgt_epi64(_mm256_setzero_si256(), t);       /* -1 where T < 0 */
+    r = _mm256_add_epi64(_mm256_add_epi64(r, _mm256_set1_epi64x(1 << 15)), neg);
+    t = _mm256_add_epi64(t, _mm256_srli_epi64(r, 16));
+    const __m256i hi = _mm256_set1_epi64x(INT32_MAX), lo = _mm256_set1_epi64x(INT32_MIN);
+    t = _mm256_blendv_epi8(t, hi, _mm256_cmpgt_epi64(t, hi));
+    return _mm256_blendv_epi8(t, lo, _mm256_cmpgt_epi64(lo, t));
+}
+
+/* the even (0, 2, 4, 6) and odd lanes' int32 results of two vx_acc_round
+** (each in [INT32_MIN, INT32_MAX], so its low 32 bits are the value) */
+VX_INLINE __m256i vx_merge(__m256i even, __m256i odd)
+{
+    return _mm256_blend_epi32(even, _mm256_slli_epi64(odd, 32), 0xAA);
+}
+
+/* out[i] = sum over t < k of coef[t] src[t][i], plus c, rounded once */
+static void vx_dot_terms(const NUM *coef, const NUM *const *src, int k, int64_t c, NUM *restrict out, int cnt)
+{
+    const __m256i bias = _mm256_set1_epi64x((int64_t)1 << 62), low = _mm256_set1_epi64x(0xFFFF);
+    int64_t h0, l0;
+    vx_split(c, &h0, &l0);
+    const __m256i sh0 = _mm256_set1_epi64x(h0 - k * ((int64_t)1 << 46)), sl0 = _mm256_set1_epi64x(l0);
+    __m256i m[4];
+    for (int t = 0; t < k; t++)
+        m[t] = _mm256_set1_epi64x(coef[t]);      /* vpmuldq reads the low 32 bits, signed */
+    for (int i = 0; i < cnt; i += 8) {
+        __m256i she = sh0, sho = sh0, sle = sl0, slo = sl0;
+        for (int t = 0; t < k; t++) {
+            __m256i x = _mm256_loadu_si256((const __m256i *)(const void *)(src[t] + i));
+            __m256i pe = _mm256_add_epi64(_mm256_mul_epi32(x, m[t]), bias);
+            __m256i po = _mm256_add_epi64(_mm256_mul_epi32(_mm256_srli_epi64(x, 32), m[t]), bias);
+            she = _mm256_add_epi64(she, _mm256_srli_epi64(pe, 16));
+            sho = _mm256_add_epi64(sho, _mm256_srli_epi64(po, 16));
+            sle = _mm256_add_epi64(sle, _mm256_and_si256(pe, low));
+            slo = _mm256_add_epi64(slo, _mm256_and_si256(po, low));
+        }
+        __m256i r = vx_merge(vx_acc_round(she, sle), vx_acc_round(sho, slo));
+        _mm256_storeu_si256((__m256i *)(void *)(out + i), r);
+    }
+}
+
+static void vx_dot4_lanes_avx2(NUM m0, NUM m1, NUM m2, NUM m3, const NUM *x, const NUM *y, const NUM *z,
+                               const NUM *w, NUM *restrict out, int cnt, int w_one)
+{
+    const NUM mm[4] = { m0, m1, m2, m3 };
+    const NUM *rows[4] = { x, y, z, w };
+    NUM coef[4];
+    const NUM *src[4];
+    int k = 0;
+    for (int t = 0; t < (w_one ? 3 : 4); t++)
+        if (mm[t] != 0) {
+            coef[k] = mm[t];
+            src[k++] = rows[t];
+        }
+    vx_dot_terms(coef, src, k, w_one ? (int64_t)m3 * NUM_ONE : 0, out, cnt);
+}
+
+static void vx_dot3_lanes_avx2(NUM m0, NUM m1, NUM m2, const NUM *x, const NUM *y, const NUM *z,
+                               NUM *restrict out, int cnt)
+{
+    const NUM mm[3] = { m0, m1, m2 };
+    const NUM *rows[3] = { x, y, z };
+    NUM coef[3];
+    const NUM *src[3];
+    int k = 0;
+    for (int t = 0; t < 3; t++)
+        if (mm[t] != 0) {
+            coef[k] = mm[t];
+            src[k++] = rows[t];
+        }
+    vx_dot_terms(coef, src, k, 0, out, cnt);
+}
+/* }==================================================================== */
+
+/* {====================================================================
+** FLOAT array components to 16.16 (num_from_float), four at a time.
+**
+** num_from_float: v = (double)f * 65536 (exact: a float has 24 significant
+** bits and the product stays far inside double's range); NaN gives 0,
+** v <= INT32_MIN gives NUM_MIN, v >= INT32_MAX gives NUM_MAX, else
+** floor(v + 1/2) with v + 1/2 rounded as a double. Here: the same v and the
+** same addition (vaddpd rounds as addsd does, to nearest), vroundpd's exact
+** floor, then a clamp to [INT32_MIN, INT32_MAX]. For v <= INT32_MIN,
+** floor(v + 1/2) <= INT32_MIN (v + 1/2 <= INT32_MIN + 1/2, rounding is
+** monotonic), so the clamp gives NUM_MIN; symmetrically v >= INT32_MAX
+** gives NUM_MAX (infinities included); between, floor(v + 1/2) already lies
+** in the range. NaN lanes are zeroed before the clamp (vmaxpd would pass a
+** NaN operand's partner through). The clamped doubles are integers in
+** int32's range, which vcvttpd2dq converts exactly. */
+VX_INLINE __m128i vx_from_float4(__m128 f)
+{
+    __m256d v = _mm256_mul_pd(_mm256_cvtps_pd(f), _mm256_set1_pd(65536.0));
+    __m256d x = _mm256_floor_pd(_mm256_add_pd(v, _mm256_set1_pd(0.5)));
+    x = _mm256_and_pd(x, _mm256_cmp_pd(v, v, _CMP_ORD_Q));
+    x = _mm256_max_pd(x, _mm256_set1_pd((double)INT32_MIN));
+    x = _mm256_min_pd(x, _mm256_set1_pd((double)INT32_MAX));
+    return _mm256_cvttpd_epi32(x);
+}
+
+/* fetch_float's rows: `size` (1..4) floats of elements index[0..n), `step`
+** bytes apart, converted into out[c][i]; four elements are read (each as
+** the scalar code reads it: `size` floats, nothing beyond), transposed and
+** converted a row at a time */
+VX_INLINE void vx_fetch_float_size(const uint8_t *base, int step, const int64_t *index, int n,
+                                   NUM (*out)[NUM_BATCH], const int size)
+{
+    int i = 0;
+    for (; i + 4 <= n; i += 4) {
+        float f[4][4] = { { 0 } };
+        for (int j = 0; j < 4; j++)
+            memcpy(f[j], base + index[i + j] * step, (size_t)size * sizeof(float));
+        __m128 r0 = _mm_loadu_ps(f[0]), r1 = _mm_loadu_ps(f[1]), r2 = _mm_loadu_ps(f[2]), r3 = _mm_loadu_ps(f[3]);
+        _MM_TRANSPOSE4_PS(r0, r1, r2, r3);
+        const __m128 rows[4] = { r0, r1, r2, r3 };
+        for (int c = 0; c < size; c++)
+            _mm_storeu_si128((__m128i *)(void *)(out[c] + i), vx_from_float4(rows[c]));
+    }
+    for (; i < n; i++) {
+        float f[4];
+        memcpy(f, base + index[i] * step, (size_t)size * sizeof f[0]);
+        for (int c = 0; c < size; c++)
+            out[c][i] = num_from_float(f[c]);
+    }
+}
+
+/* one instance per size, so that each element's copy is a fixed move */
+static void vx_fetch_float_avx2(const uint8_t *base, int step, const int64_t *index, int n, NUM (*out)[NUM_BATCH],
+                                int size)
+{
+    switch (size) {
+    case 1: vx_fetch_float_size(base, step, index, n, out, 1); break;
+    case 2: vx_fetch_float_size(base, step, index, n, out, 2); break;
+    case 3: vx_fetch_float_size(base, step, index, n, out, 3); break;
+    default: vx_fetch_float_size(base, step, index, n, out, 4); break;
+    }
+}
+/* }==================================================================== */
+
+/* {====================================================================
+** A directional light's term (directional_batch in light.c), four lanes
+** at a time in 64-bit lanes holding sign-extended NUMs.
+**
+** num_mul(a, b) = sat(round_half_away(a b / 2^16)) is the one-term case of
+** the sums above: vpmuldq forms a b exactly, and vx_acc_round of its split
+** rounds and saturates it. num_add(a, b) = sat(a + b), exact in 64 bits. */
+
+VX_INLINE __m256i vx_load4(const NUM *p)
+{
+    return _mm256_cvtepi32_epi64(_mm_loadu_si128((const __m128i *)(const void *)p));
+}
+
+VX_INLINE void vx_store4(NUM *p, __m256i v)
+{
+    const __m256i pick = _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6);
+    _mm_storeu_si128((__m128i *)(void *)p, _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(v, pick)));
+}
+
+/* num_mul per lane (operands in int32's range) */
+VX_INLINE __m256i vx_mul(__m256i a, __m256i b)
+{
+    __m256i p = _mm256_add_epi64(_mm256_mul_epi32(a, b), _mm256_set1_epi64x((int64_t)1 << 62));
+    __m256i h = _mm256_sub_epi64(_mm256_srli_epi64(p, 16), _mm256_set1_epi64x((int64_t)1 << 46));
+    return vx_acc_round(h, _mm256_and_si256(p, _mm256_set1_epi64x(0xFFFF)));
+}
+
+/* num_add per lane */
+VX_INLINE __m256i vx_add(__m256i a, __m256i b)
+{
+    const __m256i hi = _mm256_set1_epi64x(INT32_MAX), lo = _mm256_set1_epi64x(INT32_MIN);
+    __m256i t = _mm256_add_epi64(a, b);
+    t = _mm256_blendv_epi8(t, hi, _mm256_cmpgt_epi64(t, hi));
+    return _mm256_blendv_epi8(t, lo, _mm256_cmpgt_epi64(lo, t));
+}
+
+/* the term of every lane before its specular part, per channel k < 3:
+**   cm:  num_mul(col[k], lamb[k]), plus num_mul(d, num_mul(col[k], ldif[k])) where d > 0
+**   else amb[k],                   plus num_mul(d, dif[k])                   where d > 0
+** with num_add; d = n . VP of the lane */
+static void vx_dir_terms_avx2(const NUM *d, NUM (*col)[NUM_BATCH], const NUM *lamb, const NUM *ldif,
+                              const NUM *amb, const NUM *dif, int cm, NUM (*term)[NUM_BATCH], int cnt)
+{
+    const __m256i zero = _mm256_setzero_si256();
+    for (int i = 0; i < cnt; i += 4) {
+        __m256i dv = vx_load4(d + i);
+        __m256i pos = _mm256_cmpgt_epi64(dv, zero);
+        for (int k = 0; k < 3; k++) {
+            __m256i t, f;
+            if (cm) {
+                __m256i c = vx_load4(col[k] + i);
+                t = vx_mul(c, _mm256_set1_epi64x(lamb[k]));
+                f = vx_mul(c, _mm256_set1_epi64x(ldif[k]));
+            } else {
+                t = _mm256_set1_epi64x(amb[k]);
+                f = _mm256_set1_epi64x(dif[k]);
+            }
+            __m256i lit = vx_add(t, vx_mul(dv, f));
+            vx_store4(term[k] + i, _mm256_blendv_epi8(t, lit, pos));
+        }
+    }
+}
+
+/* acc[k] = num_add(acc[k], num_mul(scale, term[k])) for k < 3 */
+static void vx_scale_add_avx2(NUM scale, NUM (*term)[NUM_BATCH], NUM (*acc)[NUM_BATCH], int cnt)
+{
+    const __m256i s = _mm256_set1_epi64x(scale);
+    for (int k = 0; k < 3; k++)
+        for (int i = 0; i < cnt; i += 4)
+            vx_store4(acc[k] + i, vx_add(vx_load4(acc[k] + i), vx_mul(s, vx_load4(term[k] + i))));
+}
+/* }==================================================================== */
+
+/* {====================================================================
+** num_normalize3 of four lanes at a time (GL_NORMALIZE).
+**
+** The scalar steps, per lane, and how each is formed here exactly:
+**  * m = the largest num_abs of the three components: vpabsd gives |v| as
+**    an unsigned 32-bit value (2^31 for INT32_MIN), vpminud with INT32_MAX
+**    saturates it as num_abs does, vpmaxud takes the largest. m = 0 leaves
+**    the lane unchanged (blended back at the end).
+**  * sh = u64_bits(m) - 16: m (1 <= m < 2^31) converts to double exactly,
+**    and its biased exponent e gives u64_bits(m) = e - 1022, so sh = e -
+**    1038, in [-15, 15].
+**  * w = v / 2^sh truncated toward zero for sh >= 0, v 2^-sh otherwise:
+**    as sign and magnitude, (|v| >> max(sh, 0)) << max(-sh, 0) with the
+**    sign put back (C's division truncates toward zero, so the quotient's
+**    magnitude is floor(|v| / 2^sh)). |w| <= 2^16.
+**  * ss = w0^2 + w1^2 + w2^2 (vpmuldq, exact; below 3 2^32), and
+**    a = num_from_scaled(ss, 32) = (ss + 2^15) >> 16 for ss >= 0. The
+**    largest |w| is at least 2^15, so a lies in [2^14, 3 2^16].
+**  * num_rsqrt(a) = (isqrt(floor(2^62 / a)) + 64) >> 7, and for real X >= 0
+**    floor(sqrt(floor(X))) = floor(sqrt(X)) (k = floor(sqrt(X)) has k^2 <=
+**    floor(X)), so the root is r = floor(z) with z = 2^31 / sqrt(a), the one
+**    integer with r^2 a <= 2^62 < (r + 1)^2 a. In double, y = 2^31 /
+**    sqrt(a) with two correctly rounded operations (vsqrtpd, vdivpd) is
+**    within 2^-52 z (1 + 2^-50) < 2^-27 of z (z <= 2^24), so floor(y) can
+**    differ from r only where z lies within 2^-27 of an integer; over the
+**    whole domain (the 180,225 values of a) floor(y) = r, which
+**    tests/test_vertex_simd.py checks value by value with the same IEEE
+**    operations, so floor(y) is the root.
+**  * each component num_from_scaled(w inv, 32), |w inv| <= 2^33: vx_mul.
+** The other lanes' values stay as they were (m = 0). */
+static void vx_normalize3_avx2(NUM *x, NUM *y, NUM *z, int cnt)
+{
+    NUM *rows[3] = { x, y, z };
+    const __m256i zero = _mm256_setzero_si256();
+    const __m256i pick = _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6);
+    for (int i = 0; i < cnt; i += 4) {
+        __m256i v[3], w[3];
+        __m128i m = _mm_setzero_si128();
+        for (int k = 0; k < 3; k++) {
+            __m128i v32 = _mm_loadu_si128((const __m128i *)(const void *)(rows[k] + i));
+            m = _mm_max_epu32(m, _mm_min_epu32(_mm_abs_epi32(v32), _mm_set1_epi32(INT32_MAX)));
+            v[k] = _mm256_cvtepi32_epi64(v32);
+        }
+        __m256i e = _mm256_srli_epi64(_mm256_castpd_si256(_mm256_cvtepi32_pd(m)), 52);
+        __m256i sh = _mm256_sub_epi64(e, _mm256_set1_epi64x(1038)), nsh = _mm256_sub_epi64(zero, sh);
+        __m256i shr = _mm256_andnot_si256(_mm256_cmpgt_epi64(zero, sh), sh);
+        __m256i shl = _mm256_andnot_si256(_mm256_cmpgt_epi64(zero, nsh), nsh);
+        __m256i ss = zero;
+        for (int k = 0; k < 3; k++) {
+            __m256i sg = _mm256_cmpgt_epi64(zero, v[k]);
+            __m256i mag = _mm256_sub_epi64(_mm256_xor_si256(v[k], sg), sg);
+            mag = _mm256_sllv_epi64(_mm256_srlv_epi64(mag, shr), shl);
+            w[k] = _mm256_sub_epi64(_mm256_xor_si256(mag, sg), sg);
+            ss = _mm256_add_epi64(ss, _mm256_mul_epi32(w[k], w[k]));
+        }
+        __m256i a = _mm256_srli_epi64(_mm256_add_epi64(ss, _mm256_set1_epi64x(1 << 15)), 16);
+        __m256d ad = _mm256_cvtepi32_pd(_mm256_castsi256_si128(_mm256_permutevar8x32_epi32(a, pick)));
+        __m256d yd = _mm256_floor_pd(_mm256_div_pd(_mm256_set1_pd(2147483648.0), _mm256_sqrt_pd(ad)));
+        __m256i r = _mm256_cvtepi32_epi64(_mm256_cvttpd_epi32(yd));
+        __m256i inv = _mm256_srli_epi64(_mm256_add_epi64(r, _mm256_set1_epi64x(64)), 7);
+        __m256i keep = _mm256_cmpeq_epi64(e, zero);                                      /* m = 0 */
+        for (int k = 0; k < 3; k++)
+            vx_store4(rows[k] + i, _mm256_blendv_epi8(vx_mul(w[k], inv), v[k], keep));
+    }
+}
+/* }==================================================================== */
+
+#endif /* VERTEX_AVX2 */
+
+#if RANGE_AVX2
+/* {====================================================================
+** The range check's scan of a FLOAT array (range_array_max in range.c).
+**
+** The scalar scan keeps c = 0, then for each component's v = |x| sets c to
+** v when !(v <= c), to infinity when v is NaN. Its result is therefore
+** infinity when any component is NaN (c becomes infinity then, and no
+** later v exceeds it) and otherwise max |x|. On the bits: with the sign
+** cleared, non-negative floats compare as their bit patterns do, infinity
+** is 0x7F800000 and every NaN lies above it. So the largest of (bits &
+** 0x7FFFFFFF) over the components, an unsigned integer maximum (vpmaxud),
+** is a NaN exactly when a NaN was there, and otherwise the bits of max |x|,
+** which converts to double exactly. */
+/* the largest magnitude bits per component of strided elements lo..hi */
+VX_INLINE __m128i vx_strided_max(const uint8_t *base, int step, const int size, int64_t lo, int64_t hi)
+{
+    __m128i m4 = _mm_setzero_si128();
+    for (int64_t i = lo; i <= hi; i++) {
+        uint32_t u[4] = { 0, 0, 0, 0 };
+        memcpy(u, base + i * step, (size_t)size * sizeof(float));
+        m4 = _mm_max_epu32(m4, _mm_and_si128(_mm_loadu_si128((const __m128i *)(const void *)u),
+                                             _mm_set1_epi32(0x7FFFFFFF)));
+    }
+    return m4;
+}
+
+static double vx_float_abs_max_avx2(const uint8_t *base, int step, int size, int64_t lo, int64_t hi)
+{
+    const __m256i mag = _mm256_set1_epi32(0x7FFFFFFF);
+    __m256i m8 = _mm256_setzero_si256();
+    __m128i m4 = _mm_setzero_si128();
+    uint32_t m = 0;
+    if (hi >= lo && step == size * (int)sizeof(float)) {
+        /* tightly packed: one run of components */
+        const uint8_t *p = base + lo * step;
+        const int64_t cnt = (hi - lo + 1) * size;
+        int64_t j = 0;
+        for (; j + 8 <= cnt; j += 8)
+            m8 = _mm256_max_epu32(m8, _mm256_and_si256(_mm256_loadu_si256((const __m256i *)(const void *)(p + 4 * j)), mag));
+        for (; j < cnt; j++) {
+            uint32_t u;
+            memcpy(&u, p + 4 * j, sizeof u);
+            u &= 0x7FFFFFFFu;
+            m = u > m ? u : m;
+        }
+    } else {
+        switch (size) {
+        case 1: m4 = vx_strided_max(base, step, 1, lo, hi); break;
+        case 2: m4 = vx_strided_max(base, step, 2, lo, hi); break;
+        case 3: m4 = vx_strided_max(base, step, 3, lo, hi); break;
+        default: m4 = vx_strided_max(base, step, 4, lo, hi); break;
+        }
+    }
+    m4 = _mm_max_epu32(m4, _mm_max_epu32(_mm256_castsi256_si128(m8), _mm256_extracti128_si256(m8, 1)));
+    m4 = _mm_max_epu32(m4, _mm_shuffle_epi32(m4, 0x4E));
+    m4 = _mm_max_epu32(m4, _mm_shuffle_epi32(m4, 0xB1));
+    uint32_t v = (uint32_t)_mm_cvtsi128_si32(m4);
+    m = v > m ? v : m;
+    if (m > 0x7F800000u)
+        return INFINITY;
+    float f;
+    memcpy(&f, &m, sizeof f);
+    return f;
+}
+/* }==================================================================== */
+
+#endif /* RANGE_AVX2 */
+
+#if SIMD_X86
+#pragma GCC pop_options
+#endif
+
+/* {====================================================================
+** the switches: the AVX2 kernel where `simd` says so, else the scalar code */
+
+static inline void vx_dot4_lanes(int simd, NUM m0, NUM m1, NUM m2, NUM m3, const NUM *x, const NUM *y, const NUM *z,
+                                 const NUM *w, NUM *restrict out, int cnt, int w_one)
+{
+#if VERTEX_AVX2
+    if (simd) {
+        vx_dot4_lanes_avx2(m0, m1, m2, m3, x, y, z, w, out, cnt, w_one);
+        return;
+    }
+#endif
+    (void)simd;
+    num_dot4_lanes(m0, m1, m2, m3, x, y, z, w, out, cnt, w_one);
+}
+
+static inline void vx_dot3_lanes(int simd, NUM m0, NUM m1, NUM m2, const NUM *x, const NUM *y, const NUM *z,
+                                 NUM *restrict out, int cnt)
+{
+#if VERTEX_AVX2
+    if (simd) {
+        vx_dot3_lanes_avx2(m0, m1, m2, x, y, z, out, cnt);
+        return;
+    }
+#endif
+    (void)simd;
+    num_dot3_lanes(m0, m1, m2, x, y, z, out, cnt);
+}
+
+/* num_normalize3 of lanes 0..n-1 of rows x, y, z (the AVX2 kernel also
+** normalises the padding lanes up to cnt) */
+static inline void vx_normalize3_lanes(int simd, NUM *x, NUM *y, NUM *z, int n, int cnt)
+{
+#if VERTEX_AVX2
+    if (simd) {
+        vx_normalize3_avx2(x, y, z, cnt);
+        return;
+    }
+#endif
+    (void)simd, (void)cnt;
+    for (int i = 0; i < n; i++) {
+        NUM t[3] = { x[i], y[i], z[i] };
+        num_normalize3(t);
+        x[i] = t[0];
+        y[i] = t[1];
+        z[i] = t[2];
+    }
+}
+/* }==================================================================== */
+
+#endif
