@@ -700,6 +700,39 @@ static inline void avx2_bilerp_rgba8(uint32_t c00, uint32_t c10, uint32_t c01, u
     v4_store(out, V4_OP(add)(V4_OP(mul)(top, ib), V4_OP(mul)(bot, vb)));
 }
 
+/* wgt_linear then wgt_depth3 of four fragments with edge values e1[k],
+** e2[k] (|e| <= 2^53: the conversion to double is exact, so the float
+** build's conversion from it rounds once, as (NUM)e does), the same IEEE
+** operations in lanes; dbl_to_i64's tests as selects (NaN and v <= 0 give
+** 0, v >= maxval gives maxval, else floor(v + 1/2)); maxval <= INT32_MAX */
+AVX2_INLINE void v4_depth4(const WgtSetup *s, const int64_t e1[4], const int64_t e2[4], const DEPTHV z[3],
+                           uint32_t maxval, uint32_t *out)
+{
+    const __m256d d1 = _mm256_setr_pd((double)e1[0], (double)e1[1], (double)e1[2], (double)e1[3]);
+    const __m256d d2 = _mm256_setr_pd((double)e2[0], (double)e2[1], (double)e2[2], (double)e2[3]);
+#if defined(GLES_NUM_FLOAT)
+    const V4 l1 = _mm_mul_ps(_mm256_cvtpd_ps(d1), _mm_set1_ps(s->inv_area));
+    const V4 l2 = _mm_mul_ps(_mm256_cvtpd_ps(d2), _mm_set1_ps(s->inv_area));
+#else
+    const V4 l1 = _mm256_mul_pd(d1, _mm256_set1_pd(s->inv_area));
+    const V4 l2 = _mm256_mul_pd(d2, _mm256_set1_pd(s->inv_area));
+#endif
+    const V4 l0 = V4_OP(sub)(V4_OP(sub)(V4_OP(set1)(1), l1), l2);
+    const V4 v = V4_OP(add)(V4_OP(add)(V4_OP(mul)(V4_OP(set1)(z[0]), l0), V4_OP(mul)(V4_OP(set1)(z[1]), l1)),
+                            V4_OP(mul)(V4_OP(set1)(z[2]), l2));
+#if defined(GLES_NUM_FLOAT)
+    const __m256d vd = _mm256_cvtps_pd(v);
+#else
+    const __m256d vd = v;
+#endif
+    const __m256d zero = _mm256_setzero_pd(), top = _mm256_set1_pd((double)maxval);
+    __m256d r = _mm256_floor_pd(_mm256_add_pd(vd, _mm256_set1_pd(0.5)));
+    r = _mm256_blendv_pd(r, top, _mm256_cmp_pd(vd, top, _CMP_GE_OQ));
+    r = _mm256_blendv_pd(r, zero, _mm256_cmp_pd(vd, zero, _CMP_LE_OQ));
+    r = _mm256_blendv_pd(r, zero, _mm256_cmp_pd(vd, vd, _CMP_UNORD_Q));
+    _mm_storeu_si128((__m128i *)(void *)out, _mm256_cvttpd_epi32(r));
+}
+
 /* the s (or t, odd = 1) of four fragments' coordinates c[0..3] */
 AVX2_INLINE V4 v4_coord4(const TexCoord *c, int odd)
 {

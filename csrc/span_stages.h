@@ -127,6 +127,25 @@ static void STAGE(stage_depth)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
                 b->z[j + k] = raster_offset_depth(ctx, t, b->z[j + k]);
     }
 #endif
+#if CHAIN_SIMD && !NUM_IS_FIXED
+    if (!t->depth_offset && ctx->depth_max <= INT32_MAX) {
+        const DEPTHV zv[3] = { t->v[0]->wz, t->v[1]->wz, t->v[2]->wz };
+        const int64_t lim = (int64_t)1 << 53;
+        for (; j + 4 <= b->n; j += 4) {
+            int64_t e1[4], e2[4], e[3];
+            int fits = 1;
+            for (int k = 0; k < 4; k++) {
+                chunk_edges(t, b, b->k[j + k], e);
+                e1[k] = e[1];
+                e2[k] = e[2];
+                fits &= e[1] >= -lim && e[1] <= lim && e[2] >= -lim && e[2] <= lim;
+            }
+            if (!fits)
+                break;
+            v4_depth4(&t->wgt, e1, e2, zv, ctx->depth_max, &b->z[j]);
+        }
+    }
+#endif
     for (; j < b->n; j++) {
         int64_t e[3];
         chunk_edges(t, b, b->k[j], e);
