@@ -321,6 +321,21 @@ void vertex_batch_attribs(GlesContext *ctx, const int64_t *index, Vertex *const 
     }
 }
 
+#if NUM_IS_FIXED
+/* the hook's FLOAT array: m[0] components, an element every m[1] floats, at in */
+static int debug_float_array(ArrayState *a, const int32_t *m, const int32_t *in)
+{
+    if (m[0] < 1 || m[0] > 4 || m[1] < m[0])
+        return 0;
+    memset(a, 0, sizeof *a);
+    a->type = GL_FLOAT;
+    a->size = m[0];
+    a->step = m[1] * (int)sizeof(float);
+    a->ptr = (const uint8_t *)in;
+    return 1;
+}
+#endif
+
 int gles_debug_vertex_lanes(int simd, int kernel, int n, const int32_t *m, const int32_t *in, int32_t *out)
 {
 #if NUM_IS_FIXED
@@ -335,14 +350,9 @@ int gles_debug_vertex_lanes(int simd, int kernel, int n, const int32_t *m, const
         vx_dot3_lanes(simd, m[0], m[1], m[2], in, in + 64, in + 128, out, n);
         return 1;
     case 2: {
-        if (m[0] < 1 || m[0] > 4 || m[1] < m[0])
-            return 0;
         ArrayState a;
-        memset(&a, 0, sizeof a);
-        a.type = GL_FLOAT;
-        a.size = m[0];
-        a.step = m[1] * (int)sizeof(float);
-        a.ptr = (const uint8_t *)in;
+        if (!debug_float_array(&a, m, in))
+            return 0;
         int64_t index[VERTEX_BATCH];
         for (int i = 0; i < n; i++)
             index[i] = m[2] ? n - 1 - i : i;
@@ -365,13 +375,9 @@ int gles_debug_vertex_lanes(int simd, int kernel, int n, const int32_t *m, const
         return 1;
     }
     case 4: {
-        if (m[0] < 1 || m[0] > 4 || m[1] < m[0] || m[2] < 0 || m[3] >= n)
-            return 0;
         ArrayState a;
-        memset(&a, 0, sizeof a);
-        a.type = GL_FLOAT;
-        a.size = m[0];
-        a.step = m[1] * (int)sizeof(float);
+        if (m[2] < 0 || m[3] >= n || !debug_float_array(&a, m, in))
+            return 0;
         float f = (float)range_array_max(&a, (const uint8_t *)in, m[2], m[3], simd);
         memcpy(out, &f, sizeof f);
         return 1;
