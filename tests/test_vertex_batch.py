@@ -171,12 +171,13 @@ MODES = (C.GL_TRIANGLES, C.GL_TRIANGLES, C.GL_TRIANGLE_STRIP, C.GL_TRIANGLE_FAN,
          C.GL_LINES, C.GL_LINE_STRIP, C.GL_LINE_LOOP, C.GL_POINTS)
 
 
-def _render(numeric: str, seed: int, reference: bool) -> tuple[np.ndarray, np.ndarray]:
+def _render(numeric: str, seed: int, flags: int = 0) -> tuple[np.ndarray, np.ndarray]:
+    """A random scene (every light kind, array and index type, clip plane, palette)
+    drawn with the debug `flags`: its colour and depth buffers."""
     rng = np.random.default_rng(seed)
     ctx = make_ctx(numeric, W, H, depth=16, range_check="off")
     gl = ctx.gl
-    if reference:
-        ctx.debug(REFERENCE)
+    ctx.debug(flags)
     gl.glClearColor(0.1, 0.1, 0.1, 1.0)
     gl.glClear(C.GL_COLOR_BUFFER_BIT | C.GL_DEPTH_BUFFER_BIT)
     palette = rng.random() < 0.2
@@ -209,8 +210,8 @@ def _render(numeric: str, seed: int, reference: bool) -> tuple[np.ndarray, np.nd
 @pytest.mark.parametrize("seed", range(60))
 def test_batched_matches_per_vertex(numeric: str, seed: int) -> None:
     """Random scenes: the batched path draws exactly what the per-vertex reference draws."""
-    col_b, dep_b = _render(numeric, seed, False)
-    col_r, dep_r = _render(numeric, seed, True)
+    col_b, dep_b = _render(numeric, seed)
+    col_r, dep_r = _render(numeric, seed, REFERENCE)
     assert np.array_equal(col_b, col_r), f"colour differs at {np.argwhere(col_b != col_r)[:4].tolist()}"
     assert np.array_equal(dep_b, dep_r), "depth differs"
 
@@ -220,6 +221,6 @@ def test_scenes_draw_something(numeric: str) -> None:
     """The random scenes are not empty (the comparison above would pass on blank images)."""
     drawn = 0
     for seed in range(60):
-        col, _ = _render(numeric, seed, False)
+        col, _ = _render(numeric, seed)
         drawn += int((col.reshape(-1, 4)[:, :3] != np.uint8(26)).any(axis=1).sum() > 20)
     assert drawn >= 40

@@ -24,7 +24,7 @@ import math
 import numpy as np
 import pytest
 from conftest import BUILDS, HAS_SIMD, make_ctx
-from test_vertex_batch import MODES, _arrays, _state
+from test_vertex_batch import _render
 
 from gles import constants as C
 
@@ -452,37 +452,11 @@ def test_city_scene_identical(numeric, seed):
         assert np.array_equal(dep, dep2), f"flags {flags}: depth differs"
 
 
-def _random_scene(numeric: str, seed: int, flags: int):
-    """test_vertex_batch's random scenes (every light kind, array type, clip plane, palette),
-    drawn with the debug `flags`."""
-    rng = np.random.default_rng(seed)
-    ctx = make_ctx(numeric, 48, 48, depth=16, range_check="off")
-    ctx.debug(flags)
-    gl = ctx.gl
-    gl.glClearColor(0.1, 0.1, 0.1, 1.0)
-    gl.glClear(C.GL_COLOR_BUFFER_BIT | C.GL_DEPTH_BUFFER_BIT)
-    palette = rng.random() < 0.2
-    _state(gl, rng, palette)
-    n = int(rng.integers(3, 300))
-    keep = _arrays(gl, rng, n, palette)
-    for _ in range(3):
-        mode = MODES[int(rng.integers(len(MODES)))]
-        if rng.random() < 0.35:
-            first = int(rng.integers(0, n - 2))
-            gl.glDrawArrays(mode, first, int(rng.integers(1, n - first + 1)))
-        else:
-            idx = rng.integers(0, n, int(rng.integers(1, 400))).astype(np.uint16)
-            gl.glDrawElements(mode, len(idx), C.GL_UNSIGNED_SHORT, idx)
-    del keep
-    assert gl.glGetError() == 0
-    return ctx.color_buffer().copy(), ctx.depth_buffer().copy()
-
-
 @pytest.mark.parametrize("seed", range(40))
 def test_random_scenes_identical(seed):
     """Random scenes in the fixed build: the AVX2 and the scalar instance draw the same pixels."""
-    col, dep = _random_scene("fixed", 5000 + seed, 0)
-    col2, dep2 = _random_scene("fixed", 5000 + seed, BASELINE)
+    col, dep = _render("fixed", 5000 + seed)
+    col2, dep2 = _render("fixed", 5000 + seed, BASELINE)
     assert np.array_equal(col, col2), f"colour differs at {np.argwhere(col != col2)[:4].tolist()}"
     assert np.array_equal(dep, dep2)
 
