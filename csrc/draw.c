@@ -168,13 +168,13 @@ static void clipped_triangle(GlesContext *ctx, const Vertex *v0, const Vertex *v
     for (int i = 0; i < n; i++)
         if (poly[i]->outcode & CLIP_NEW_VERTEX)
             vertex_window(ctx, (Vertex *)poly[i]);
-    int64_t area2 = 0;
+    int64_t area2 = 0, part[CLIP_MAX_VERTS];
     for (int i = 1; i + 1 < n; i++)
-        area2 += raster_area2(poly[0], poly[i], poly[i + 1]);
+        area2 += part[i] = raster_area2(poly[0], poly[i], poly[i + 1]);
     if (area2 == 0 || culled(ctx, area2))
         return;
     for (int i = 1; i + 1 < n; i++)
-        raster_triangle(ctx, poly[0], poly[i], poly[i + 1], v2, !is_front(ctx, area2));
+        raster_triangle(ctx, poly[0], poly[i], poly[i + 1], part[i], v2, !is_front(ctx, area2));
 }
 
 static void triangle(Batch *b, int64_t i0, int64_t i1, int64_t i2)
@@ -191,7 +191,7 @@ static void triangle(Batch *b, int64_t i0, int64_t i1, int64_t i2)
         attribs(b, i0, v0);
         attribs(b, i1, v1);
         attribs(b, i2, v2);
-        raster_triangle(ctx, v0, v1, v2, v2, !is_front(ctx, area2));
+        raster_triangle(ctx, v0, v1, v2, area2, v2, !is_front(ctx, area2));
         return;
     }
     attribs(b, i0, v0);
@@ -244,7 +244,7 @@ static void draw_prim(Batch *b, const Prim *p)
         break;
     }
     if (!p->codes) {
-        raster_triangle(ctx, v0, v1, v2, v2, !is_front(ctx, p->area2));
+        raster_triangle(ctx, v0, v1, v2, p->area2, v2, !is_front(ctx, p->area2));
         return;
     }
     clipped_triangle(ctx, v0, v1, v2, p->codes);

@@ -184,10 +184,9 @@ static uint32_t packed_flat(GlesContext *ctx, const FRAGV c[4])
     return ctx->flat_cache_packed;
 }
 
-void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const Vertex *c, const Vertex *pv,
-                     int back)
+void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const Vertex *c, int64_t area2,
+                     const Vertex *pv, int back)
 {
-    int64_t area2 = raster_area2(a, b, c);
     if (area2 == 0)
         return;
     if (area2 < 0) {

@@ -39,11 +39,11 @@ static inline void span_tex_coord(const TriSetup *t, int u, const WGT p[3], TexC
     out->t = tt;
 }
 
-/* rasterize a triangle whose vertices have window coordinates; `pv` is the
-** provoking vertex (flat shading); `back` selects the back colours of
-** two-sided lighting */
-void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const Vertex *c, const Vertex *pv,
-                     int back);
+/* rasterize a triangle whose vertices have window coordinates and whose
+** raster_area2 the caller has found; `pv` is the provoking vertex (flat
+** shading); `back` selects the back colours of two-sided lighting */
+void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const Vertex *c, int64_t area2,
+                     const Vertex *pv, int back);
 /* the signed window-space area (x2) of a triangle, counter-clockwise > 0 */
 int64_t raster_area2(const Vertex *a, const Vertex *b, const Vertex *c);
 
