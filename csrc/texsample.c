@@ -202,9 +202,9 @@ void texture_sample(const Texture *t, const TexCoord *c, const TexCoord *dx, con
         }                                                                                                  \
     }
 
-/* whether avx2_sample_linear can filter a level of this texture: its
-** sizes are powers of two (so are every smaller level's) and each wrap mode
-** is REPEAT or CLAMP_TO_EDGE */
+/* whether the bilinear kernels (sample_linear4) can filter a level of this
+** texture: its sizes are powers of two (so are every smaller level's) and
+** each wrap mode is REPEAT or CLAMP_TO_EDGE */
 static inline int linear_kernel_fits(const Texture *t, unsigned int ws, unsigned int wt)
 {
     const TexImage *l0 = &t->level[0];
@@ -227,9 +227,8 @@ static inline int sample_linear4(const TexImage *li, int n, const TexCoord *c, F
 }
 #endif
 
-/* the vector kernel's share of n level-0 GL_LINEAR samples (a multiple of
-** four; 0 where it does not apply: see linear_kernel_fits, or no kernel in
-** this build) */
+/* the vector kernel's share of n level-0 GL_LINEAR samples, from the start
+** (a multiple of four; 0 where it does not apply: see linear_kernel_fits) */
 static inline int linear_block(const Texture *t, int n, const TexCoord *c, FRAGV *out, size_t stride, unsigned int ws,
                                unsigned int wt)
 {
@@ -244,7 +243,7 @@ static inline int linear_block(const Texture *t, int n, const TexCoord *c, FRAGV
 /* sample_w of n fragments with the vector kernel doing the GL_LINEAR
 ** samples: each fragment's level of detail first (lod_choose), then each
 ** run of neighbouring fragments that read the same levels with GL_LINEAR
-** through avx2_sample_linear (a level's run, and the next level's into
+** through sample_linear4 (a level's run, and the next level's into
 ** `second`), other samples one by one, then the mix of two levels. The
 ** same arithmetic per sample as sample_w; returns 0 where it does not
 ** apply (as linear_block) */
