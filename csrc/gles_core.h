@@ -79,6 +79,11 @@ int gles_debug_sample(GlesContext *ctx, int unit, int simd, int n, const double 
 ** the vector kernel where simd != 0 and the CPU has one, else one by one */
 int gles_debug_persp_any(int simd, int eshift, const int64_t mant[3], const int qshift[3], int affine, int n,
                          const int64_t *e, int32_t *out);
+/* for tests, fixed build (0 elsewhere): as gles_debug_persp_any, the
+** weights of the fragments themselves (wgt_persp; lin_recip is the
+** triangle's, for an affine one); mantissas below 2^30, as recipw_of makes */
+int gles_debug_persp(int simd, int eshift, int64_t lin_recip, const int64_t mant[3], const int qshift[3], int affine,
+                     int n, const int64_t *e, int32_t *out);
 /* for tests, fixed build (0 elsewhere): a lane kernel of the vertex batch
 ** over n lanes (a multiple of 8, at most 64), through the AVX2 kernel where
 ** simd != 0 and the CPU has AVX2, else the scalar code; returns 1 when run.

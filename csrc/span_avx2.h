@@ -431,15 +431,15 @@ AVX2_INLINE int avx2_div30(__m256i n, __m256i d, __m256i *q)
     return 1;
 }
 
-/* wgt_persp_any of four fragments' edge values e[lane][i] into out[lane];
-** 0 (nothing written) where an operand leaves the kernel's ranges, for the
-** scalar code */
-AVX2_INLINE int avx2_persp_any4(const WgtSetup *s, const int64_t e[4][3], WGT out[4][3])
+/* wgt_persp_any of four fragments' edge values (lanes e[i]) as lanes out[i]
+** whose low 32 bits are the WGT values; 0 (nothing written) where an
+** operand leaves the kernel's ranges, for the scalar code */
+AVX2_INLINE int avx2_persp_any4(const WgtSetup *s, const __m256i e[3], __m256i out[3])
 {
     const __m128i esh = _mm_cvtsi32_si128(s->eshift);
     __m256i n[3];
     for (int i = 0; i < 3; i++) {
-        const __m256i ev = _mm256_setr_epi64x(e[0][i], e[1][i], e[2][i], e[3][i]);
+        const __m256i ev = e[i];
         if (!_mm256_testz_si256(_mm256_cmpeq_epi64(ev, _mm256_set1_epi64x(INT64_MIN)), _mm256_set1_epi64x(-1)))
             return 0;
         const __m256i ei = avx2_div_pow2(ev, esh);
@@ -458,20 +458,17 @@ AVX2_INLINE int avx2_persp_any4(const WgtSetup *s, const int64_t e[4][3], WGT ou
     m = _mm256_blendv_epi8(m, a1, _mm256_cmpgt_epi64(a1, m));
     m = _mm256_blendv_epi8(m, a2, _mm256_cmpgt_epi64(a2, m));
     const int64_t lim = (int64_t)1 << 31;
-    int64_t mv[4], kv[4];
-    _mm256_storeu_si256((__m256i *)(void *)mv, m);
-    for (int l = 0; l < 4; l++) {
-        kv[l] = 0;
-        if (mv[l] < 0)
-            return 0;
-        if (mv[l] > lim) {
-            int k = u64_bits((uint64_t)mv[l]) - 32;
-            if (((uint64_t)mv[l] >> k) > (uint64_t)lim)
-                k++;
-            kv[l] = k;
-        }
-    }
-    const __m256i kvec = _mm256_loadu_si256((const __m256i *)(const void *)kv);
+    /* |INT64_MIN| is not a magnitude: the scalar code's */
+    if (_mm256_movemask_pd(_mm256_castsi256_pd(m)))
+        return 0;
+    /* k0 = the bit length of m >> 32 (below 2^31, so its double is exact
+    ** and the exponent gives it), then one more where m >> k0 > 2^31: the
+    ** scalar code's k (0 where m <= 2^31) */
+    __m256i kvec = _mm256_sub_epi64(
+        _mm256_srli_epi64(_mm256_castpd_si256(avx2_i64_to_pd(_mm256_srli_epi64(m, 32))), 52),
+        _mm256_set1_epi64x(1022));
+    kvec = _mm256_andnot_si256(avx2_negative(kvec), kvec);
+    kvec = _mm256_sub_epi64(kvec, _mm256_cmpgt_epi64(_mm256_srlv_epi64(m, kvec), _mm256_set1_epi64x(lim)));
     den = avx2_div_pow2v(den, kvec);
     __m256i n1 = avx2_div_pow2v(n[1], kvec), n2 = avx2_div_pow2v(n[2], kvec);
     den = _mm256_blendv_epi8(den, _mm256_set1_epi64x(1), _mm256_cmpeq_epi64(den, _mm256_setzero_si256()));
@@ -490,26 +487,97 @@ AVX2_INLINE int avx2_persp_any4(const WgtSetup *s, const int64_t e[4][3], WGT ou
     const __m256i hi = _mm256_set1_epi64x(lim - 1), lo = _mm256_set1_epi64x(-(lim - 1));
     p0 = _mm256_blendv_epi8(p0, hi, _mm256_cmpgt_epi64(p0, hi));
     p0 = _mm256_blendv_epi8(p0, lo, _mm256_cmpgt_epi64(lo, p0));
-    int64_t w[3][4];
-    _mm256_storeu_si256((__m256i *)(void *)w[0], p0);
-    _mm256_storeu_si256((__m256i *)(void *)w[1], p1);
-    _mm256_storeu_si256((__m256i *)(void *)w[2], p2);
-    for (int l = 0; l < 4; l++)
-        for (int i = 0; i < 3; i++)
-            out[l][i] = (WGT)w[i][l];
+    out[0] = p0;
+    out[1] = p1;
+    out[2] = p2;
     return 1;
 }
 
-/* wgt_linear of four fragments, edge values e[lane]: the weights l0..l2
-** as 64-bit lanes whose low 32 bits are the scalar code's (WGT) casts (what
-** vpmuldq reads); 0 when an operand leaves the kernel's range (edge values
-** e_i >> eshift outside [0, 2^31)) */
-AVX2_INLINE int avx2_linear4(const WgtSetup *s, const int64_t e[4][3], __m256i l[3])
+/* four fragments' weights l[0..2] (lanes whose low 32 bits are the WGT
+** values) stored as out[lane][0..2]: twelve int32 in fragment order */
+AVX2_INLINE void avx2_store_wgt4(const __m256i l[3], WGT (*out)[3])
+{
+    const __m256i lo = _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7);
+    const __m128i a = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(l[0], lo));
+    const __m128i b = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(l[1], lo));
+    const __m256i c = _mm256_permutevar8x32_epi32(l[2], lo);
+    const __m256i ab = _mm256_inserti128_si256(_mm256_castsi128_si256(a), b, 1);
+    /* a0 b0 c0 a1 b1 c1 a2 b2, then c2 a3 b3 c3 */
+    const __m256i first = _mm256_blend_epi32(_mm256_permutevar8x32_epi32(ab, _mm256_setr_epi32(0, 4, 0, 1, 5, 0, 2, 6)),
+                                             _mm256_permutevar8x32_epi32(c, _mm256_setr_epi32(0, 0, 0, 0, 0, 1, 0, 0)),
+                                             0x24);
+    const __m128i last = _mm_blend_epi32(_mm256_castsi256_si128(_mm256_permutevar8x32_epi32(ab, _mm256_setr_epi32(0, 3, 7, 0, 0, 0, 0, 0))),
+                                         _mm_shuffle_epi32(_mm256_castsi256_si128(c), _MM_SHUFFLE(3, 0, 0, 2)), 0x9);
+    _mm256_storeu_si256((__m256i *)(void *)out[0], first);
+    _mm_storeu_si128((__m128i *)(void *)&out[2][2], last);
+}
+
+/* wgt_persp of four fragments of a triangle that is not affine, edge values
+** e[lane]; 0 (nothing written) where a lane leaves the kernel's ranges, for
+** the scalar code (edge values as lanes e[i]). Ranges: e_i >= 0 and e_i >> eshift < 2^31 (a covered
+** fragment's), mant_i < 2^30, so each n_i = (e_i mant_i) >> qshift_i is a
+** 32x32 unsigned product (vpmuludq) and their sum den < 3 2^61 fits int64.
+** The normalising shift is the bit length of den >> 32 (below 2^31, so its
+** double is exact and its exponent gives the length). Lanes need
+** 2^31 <= den < 2^32 after it (true wherever the unshifted sum reaches
+** 2^31): then recip = (2^62 + den / 2) / den <= 2^31 + 1, the double
+** quotient (numerator rounded once, one division) is within 1 of it, and the
+** exact remainder 2^62 + den / 2 - q den (q den < 2^64 from vpmuludq; the
+** true value is near 2^62) corrects it. n_i <= den, so n_i recip <= 2^62
+** + den and p_i = (n_i recip + 2^31) >> 32 is one vpmuludq and a shift. */
+AVX2_INLINE int avx2_persp4(const WgtSetup *s, const __m256i e[3], __m256i l[3])
+{
+    const __m128i esh = _mm_cvtsi32_si128(s->eshift);
+    const __m256i high = _mm256_set1_epi64x(~(int64_t)0x7FFFFFFF);
+    __m256i n[3], bad = _mm256_setzero_si256();
+    for (int i = 0; i < 3; i++) {
+        const __m256i ev = e[i];
+        const __m256i ei = _mm256_srl_epi64(ev, esh);
+        /* e < 0 (its top bit) or e >> eshift >= 2^31 */
+        bad = _mm256_or_si256(bad, _mm256_or_si256(_mm256_and_si256(ev, _mm256_set1_epi64x(INT64_MIN)),
+                                                   _mm256_and_si256(ei, high)));
+        /* qshift >= 64 shifts everything out, as the scalar code's 0 for >= 63
+        ** does (a product below 2^61 shifted by 63 is 0 too) */
+        n[i] = _mm256_srl_epi64(_mm256_mul_epu32(ei, _mm256_set1_epi64x(s->mant[i])),
+                                _mm_cvtsi32_si128(s->qshift[i] < 64 ? s->qshift[i] : 64));
+    }
+    if (!_mm256_testz_si256(bad, bad))
+        return 0;
+    __m256i den = _mm256_add_epi64(_mm256_add_epi64(n[0], n[1]), n[2]);
+    /* sh = max(bit length of den - 32, 0) */
+    const __m256i hi_bits = _mm256_srli_epi64(_mm256_castpd_si256(avx2_i64_to_pd(_mm256_srli_epi64(den, 32))), 52);
+    __m256i sh = _mm256_sub_epi64(hi_bits, _mm256_set1_epi64x(1022));
+    sh = _mm256_andnot_si256(avx2_negative(sh), sh);
+    den = _mm256_srlv_epi64(den, sh);
+    const __m256i n1 = _mm256_srlv_epi64(n[1], sh), n2 = _mm256_srlv_epi64(n[2], sh);
+    if (_mm256_movemask_pd(_mm256_castsi256_pd(_mm256_cmpgt_epi64(_mm256_set1_epi64x((int64_t)1 << 31), den))))
+        return 0;
+    const __m256i half = _mm256_srli_epi64(den, 1);
+    const __m256d qd = _mm256_round_pd(_mm256_div_pd(_mm256_add_pd(_mm256_set1_pd(4611686018427387904.0),
+                                                                   avx2_i64_to_pd(half)),
+                                                     avx2_i64_to_pd(den)),
+                                       _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
+    __m256i q = avx2_pd_to_i64(qd);
+    const __m256i r = _mm256_sub_epi64(_mm256_add_epi64(_mm256_set1_epi64x((int64_t)1 << 62), half),
+                                       _mm256_mul_epu32(q, den));
+    /* r < 0: one too many; r >= den: one too few */
+    q = _mm256_add_epi64(q, avx2_negative(r));
+    q = _mm256_sub_epi64(q, _mm256_cmpgt_epi64(r, _mm256_sub_epi64(den, _mm256_set1_epi64x(1))));
+    const __m256i round = _mm256_set1_epi64x((int64_t)1 << 31);
+    l[1] = _mm256_srli_epi64(_mm256_add_epi64(_mm256_mul_epu32(n1, q), round), 32);
+    l[2] = _mm256_srli_epi64(_mm256_add_epi64(_mm256_mul_epu32(n2, q), round), 32);
+    l[0] = _mm256_sub_epi64(_mm256_sub_epi64(_mm256_set1_epi64x(WGT_ONE), l[1]), l[2]);
+    return 1;
+}
+
+/* wgt_linear of four fragments, edge values e[lane][1], e[lane][2] as lanes
+** r1, r2: the weights l0..l2 as 64-bit lanes whose low 32 bits are the
+** scalar code's (WGT) casts (what vpmuldq reads); 0 when an operand leaves
+** the kernel's range (edge values e_i >> eshift outside [0, 2^31)) */
+AVX2_INLINE int avx2_linear4v(const WgtSetup *s, __m256i r1, __m256i r2, __m256i l[3])
 {
     if (s->lin_recip < 0)
         return 0;
-    const __m256i r1 = _mm256_setr_epi64x(e[0][1], e[1][1], e[2][1], e[3][1]);
-    const __m256i r2 = _mm256_setr_epi64x(e[0][2], e[1][2], e[2][2], e[3][2]);
     const __m128i sh = _mm_cvtsi32_si128(s->eshift);
     const __m256i e1 = _mm256_srl_epi64(r1, sh), e2 = _mm256_srl_epi64(r2, sh);
     if (!_mm256_testz_si256(_mm256_or_si256(r1, r2), _mm256_set1_epi64x(INT64_MIN))
@@ -524,6 +592,41 @@ AVX2_INLINE int avx2_linear4(const WgtSetup *s, const int64_t e[4][3], __m256i l
     l[2] = _mm256_srli_epi64(_mm256_add_epi64(p2, round), 31);
     l[0] = _mm256_sub_epi64(_mm256_sub_epi64(_mm256_set1_epi64x(WGT_ONE), l[1]), l[2]);
     return 1;
+}
+
+/* avx2_linear4v of four fragments' edge values e[lane] */
+AVX2_INLINE int avx2_linear4(const WgtSetup *s, const int64_t e[4][3], __m256i l[3])
+{
+    return avx2_linear4v(s, _mm256_setr_epi64x(e[0][1], e[1][1], e[2][1], e[3][1]),
+                         _mm256_setr_epi64x(e[0][2], e[1][2], e[2][2], e[3][2]), l);
+}
+
+/* the edge values e0 + ea k at slots' offsets k, four at a time: k ea is
+** formed as k ea_lo + ((k ea_hi) << 32), the product mod 2^64, which is the
+** scalar code's product wherever that fits int64 (chunk_edges forms it).
+** The broadcasts live in a local struct so that a loop keeps them in
+** registers (stores to the span buffer could otherwise alias t and b). */
+typedef struct Edges4 {
+    __m256i e0[3], lo[3], hi[3];
+} Edges4;
+
+AVX2_INLINE void avx2_edges4_setup(const int64_t e0[3], const int64_t ea[3], Edges4 *ed)
+{
+    for (int i = 0; i < 3; i++) {
+        ed->e0[i] = _mm256_set1_epi64x(e0[i]);
+        ed->lo[i] = _mm256_set1_epi64x(ea[i]);
+        ed->hi[i] = _mm256_set1_epi64x((int64_t)((uint64_t)ea[i] >> 32));
+    }
+}
+
+AVX2_INLINE void avx2_edges4(const Edges4 *ed, const uint8_t *k, __m256i ev[3])
+{
+    uint32_t k4;
+    memcpy(&k4, k, sizeof k4);
+    const __m256i kv = _mm256_cvtepu8_epi64(_mm_cvtsi32_si128((int)k4));
+    for (int i = 0; i < 3; i++)
+        ev[i] = _mm256_add_epi64(ed->e0[i], _mm256_add_epi64(_mm256_mul_epu32(kv, ed->lo[i]),
+                                                              _mm256_slli_epi64(_mm256_mul_epu32(kv, ed->hi[i]), 32)));
 }
 
 /* avx2_linear4 of edge lanes r1, r2 (of e[lane][1], e[lane][2]) that the

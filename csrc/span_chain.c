@@ -84,23 +84,35 @@ typedef struct ChainStages {
 #undef STAGE
 #undef CHAIN_SIMD
 #if NUM_IS_FIXED
-static int persp_any4_avx2(const WgtSetup *s, const int64_t e[4][3], WGT out[4][3])
+/* the kernels of four points' edge values e[lane] as the span stages run
+** them: wgt_persp_any (any = 1) or wgt_persp; 0 where they leave a group to
+** the scalar code */
+static int persp4_avx2(const WgtSetup *s, int any, const int64_t e[4][3], WGT out[4][3])
 {
-    return avx2_persp_any4(s, e, out);
+    __m256i ev[3], l[3];
+    for (int i = 0; i < 3; i++)
+        ev[i] = _mm256_setr_epi64x(e[0][i], e[1][i], e[2][i], e[3][i]);
+    const int ok = any ? avx2_persp_any4(s, ev, l) : s->affine ? avx2_linear4v(s, ev[1], ev[2], l) : avx2_persp4(s, ev, l);
+    if (ok)
+        avx2_store_wgt4(l, out);
+    return ok;
 }
 #endif
 #pragma GCC pop_options
 #endif
 
-int gles_debug_persp_any(int simd, int eshift, const int64_t mant[3], const int qshift[3], int affine, int n,
-                         const int64_t *e, int32_t *out)
+/* gles_debug_persp_any and gles_debug_persp: wgt_persp_any or wgt_persp */
+static int debug_persp(int any, int simd, int eshift, int64_t lin_recip, const int64_t mant[3], const int qshift[3],
+                       int affine, int n, const int64_t *e, int32_t *out)
 {
 #if NUM_IS_FIXED
     if (n < 0 || eshift < 0 || eshift > 62)
         return 0;
-    WgtSetup s = { .eshift = eshift, .affine = affine };
+    WgtSetup s = { .eshift = eshift, .lin_recip = lin_recip, .affine = affine };
     for (int i = 0; i < 3; i++) {
-        if (qshift[i] < 0 || mant[i] < 0 || mant[i] >= ((int64_t)1 << 31))
+        /* the mantissas recipw_of makes: 30 bits (wgt_persp_any's kernel
+        ** takes 31) */
+        if (qshift[i] < 0 || mant[i] < 0 || mant[i] >= ((int64_t)1 << (any ? 31 : 30)))
             return 0;
         s.mant[i] = mant[i];
         s.qshift[i] = qshift[i];
@@ -108,18 +120,43 @@ int gles_debug_persp_any(int simd, int eshift, const int64_t mant[3], const int 
     int j = 0;
 #if SIMD_X86
     if (simd && simd_detect() >= SIMD_AVX2)
-        for (; j + 4 <= n && persp_any4_avx2(&s, (const int64_t (*)[3])(e + 3 * (size_t)j), (WGT (*)[3])(out + 3 * (size_t)j));
-             j += 4)
-            ;
+        for (; j + 4 <= n; j += 4) {
+            const int64_t (*ej)[3] = (const int64_t (*)[3])(e + 3 * (size_t)j);
+            WGT (*oj)[3] = (WGT (*)[3])(out + 3 * (size_t)j);
+            if (!persp4_avx2(&s, any, ej, oj)) {
+                if (any)
+                    break;
+                /* stage_persp's fallback: the scalar code for the group */
+                for (int k = 0; k < 4; k++)
+                    wgt_persp(&s, ej[k], oj[k]);
+            }
+        }
 #endif
     (void)simd;
-    for (; j < n; j++)
-        wgt_persp_any(&s, e + 3 * (size_t)j, out + 3 * (size_t)j);
+    for (; j < n; j++) {
+        if (any)
+            wgt_persp_any(&s, e + 3 * (size_t)j, out + 3 * (size_t)j);
+        else
+            wgt_persp(&s, e + 3 * (size_t)j, out + 3 * (size_t)j);
+    }
     return 1;
 #else
-    (void)simd, (void)eshift, (void)mant, (void)qshift, (void)affine, (void)n, (void)e, (void)out;
+    (void)any, (void)simd, (void)eshift, (void)lin_recip, (void)mant, (void)qshift, (void)affine, (void)n, (void)e,
+        (void)out;
     return 0;
 #endif
+}
+
+int gles_debug_persp_any(int simd, int eshift, const int64_t mant[3], const int qshift[3], int affine, int n,
+                         const int64_t *e, int32_t *out)
+{
+    return debug_persp(1, simd, eshift, 0, mant, qshift, affine, n, e, out);
+}
+
+int gles_debug_persp(int simd, int eshift, int64_t lin_recip, const int64_t mant[3], const int qshift[3], int affine,
+                     int n, const int64_t *e, int32_t *out)
+{
+    return debug_persp(0, simd, eshift, lin_recip, mant, qshift, affine, n, e, out);
 }
 
 /* {====================================================================

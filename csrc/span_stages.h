@@ -15,20 +15,25 @@ static void STAGE(stage_persp)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
     (void)ctx;
     int j = 0;
 #if CHAIN_SIMD && NUM_IS_FIXED
-    /* wgt_persp is wgt_linear where the triangle is affine */
-    for (; t->wgt.affine && j + 4 <= b->n; j += 4) {
-        int64_t e[4][3];
-        __m256i l[3];
-        for (int k = 0; k < 4; k++)
-            chunk_edges(t, b, b->k[j + k], e[k]);
-        if (!avx2_linear4(&t->wgt, (const int64_t (*)[3])e, l))
-            break;
-        int32_t w[3][4];
-        for (int i = 0; i < 3; i++)
-            _mm_storeu_si128((__m128i *)(void *)w[i], avx2_low32(l[i]));
-        for (int k = 0; k < 4; k++)
-            for (int i = 0; i < 3; i++)
-                b->p[j + k][i] = w[i][k];
+    /* wgt_persp is wgt_linear where the triangle is affine; the scalar
+    ** code takes a group of four that leaves the kernels' ranges */
+    const WgtSetup ws = t->wgt;
+    Edges4 ed;
+    avx2_edges4_setup(b->e0, t->ea, &ed);
+    const int n = b->n;
+    WGT (*const p)[3] = b->p;
+    for (; j + 4 <= n; j += 4) {
+        __m256i e[3], l[3];
+        avx2_edges4(&ed, &b->k[j], e);
+        if (ws.affine ? !avx2_linear4v(&ws, e[1], e[2], l) : !avx2_persp4(&ws, e, l)) {
+            for (int k = 0; k < 4; k++) {
+                int64_t ek[3];
+                chunk_edges(t, b, b->k[j + k], ek);
+                wgt_persp(&ws, ek, p[j + k]);
+            }
+            continue;
+        }
+        avx2_store_wgt4(l, &p[j]);
     }
 #endif
     for (; j < b->n; j++) {
@@ -38,6 +43,17 @@ static void STAGE(stage_persp)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
     }
 }
 
+/* the right and upper neighbours' weights of slot j */
+static inline void STAGE(neighbours1)(const TriSetup *t, SpanBuf *b, int j)
+{
+    int64_t e[3];
+    chunk_edges(t, b, b->k[j], e);
+    int64_t ex[3] = { e[0] + t->ea[0], e[1] + t->ea[1], e[2] + t->ea[2] };
+    int64_t ey[3] = { e[0] + t->eb[0], e[1] + t->eb[1], e[2] + t->eb[2] };
+    wgt_persp_any(&t->wgt, ex, b->px[j]);
+    wgt_persp_any(&t->wgt, ey, b->py[j]);
+}
+
 /* the right and upper neighbours' weights, shared by every unit whose
 ** filter needs a level of detail */
 static void STAGE(stage_neighbours)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
@@ -45,29 +61,32 @@ static void STAGE(stage_neighbours)(GlesContext *ctx, const TriSetup *t, SpanBuf
     (void)ctx;
     int j = 0;
 #if CHAIN_SIMD && NUM_IS_FIXED
-    for (; j + 4 <= b->n; j += 4) {
-        int64_t ex[4][3], ey[4][3];
-        for (int k = 0; k < 4; k++) {
-            int64_t e[3];
-            chunk_edges(t, b, b->k[j + k], e);
-            for (int i = 0; i < 3; i++) {
-                ex[k][i] = e[i] + t->ea[i];
-                ey[k][i] = e[i] + t->eb[i];
-            }
+    /* the neighbours' edge values are the fragment's plus ea or eb: the
+    ** same steps from e0 + ea and e0 + eb */
+    const WgtSetup ws = t->wgt;
+    const int64_t ex0[3] = { b->e0[0] + t->ea[0], b->e0[1] + t->ea[1], b->e0[2] + t->ea[2] };
+    const int64_t ey0[3] = { b->e0[0] + t->eb[0], b->e0[1] + t->eb[1], b->e0[2] + t->eb[2] };
+    Edges4 edx, edy;
+    avx2_edges4_setup(ex0, t->ea, &edx);
+    avx2_edges4_setup(ey0, t->ea, &edy);
+    const int n = b->n;
+    WGT (*const px)[3] = b->px, (*const py)[3] = b->py;
+    for (; j + 4 <= n; j += 4) {
+        __m256i ex[3], ey[3], lx[3], ly[3];
+        avx2_edges4(&edx, &b->k[j], ex);
+        avx2_edges4(&edy, &b->k[j], ey);
+        if (avx2_persp_any4(&ws, ex, lx) && avx2_persp_any4(&ws, ey, ly)) {
+            avx2_store_wgt4(lx, &px[j]);
+            avx2_store_wgt4(ly, &py[j]);
+        } else {
+            /* a lane out of the kernel's ranges: the group by the scalar code */
+            for (int k = j; k < j + 4; k++)
+                STAGE(neighbours1)(t, b, k);
         }
-        if (!avx2_persp_any4(&t->wgt, (const int64_t (*)[3])ex, &b->px[j])
-            || !avx2_persp_any4(&t->wgt, (const int64_t (*)[3])ey, &b->py[j]))
-            break;
     }
 #endif
-    for (; j < b->n; j++) {
-        int64_t e[3];
-        chunk_edges(t, b, b->k[j], e);
-        int64_t ex[3] = { e[0] + t->ea[0], e[1] + t->ea[1], e[2] + t->ea[2] };
-        int64_t ey[3] = { e[0] + t->eb[0], e[1] + t->eb[1], e[2] + t->eb[2] };
-        wgt_persp_any(&t->wgt, ex, b->px[j]);
-        wgt_persp_any(&t->wgt, ey, b->py[j]);
-    }
+    for (; j < b->n; j++)
+        STAGE(neighbours1)(t, b, j);
 }
 
 /* }==================================================================== */

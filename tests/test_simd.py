@@ -255,3 +255,95 @@ def test_neighbour_weights_kernel_matches_scalar():
     n1, den = e[:, 1], e.sum(axis=1)
     q = [(abs(int(a)) << 30) // abs(int(d)) * (1 if (a < 0) == (d < 0) else -1) for a, d in zip(n1, den)]
     np.testing.assert_array_equal(vec[:, 1], np.array(q, np.int64))
+
+
+def _persp(simd: int, eshift: int, lin_recip: int, mant, qshift, affine: int, e: np.ndarray) -> np.ndarray:
+    ctx = make_ctx("fixed", 1, 1)
+    ffi, lib = ctx._ffi, ctx._lib
+    e = np.ascontiguousarray(e, dtype=np.int64)
+    out = np.zeros(e.shape, np.int32)
+    ok = lib.gles_debug_persp(simd, eshift, lin_recip, [int(m) for m in mant], [int(q) for q in qshift],
+                              affine, len(e), ffi.cast("int64_t *", e.ctypes.data),
+                              ffi.cast("int32_t *", out.ctypes.data))
+    assert ok == 1
+    return out
+
+
+def _persp_exact(eshift: int, mant, qshift, e: np.ndarray) -> np.ndarray:
+    """wgt_persp of a triangle that is not affine, in Python's integers: the
+    products aligned by qshift, the sum normalised to 32 bits, one rounded
+    reciprocal 2^62 / den, the weights rounded from it."""
+    out = []
+    for row in e.tolist():
+        n = [((x >> eshift) * int(m)) >> int(q) if q < 63 else 0 for x, m, q in zip(row, mant, qshift)]
+        den = sum(n)
+        assert den > 0
+        sh = den.bit_length() - 32
+        if sh > 0:
+            den, n = den >> sh, [x >> sh for x in n]
+        recip = ((1 << 62) + den // 2) // den
+        p1, p2 = ((n[1] * recip + (1 << 31)) >> 32), ((n[2] * recip + (1 << 31)) >> 32)
+        out.append([(1 << 30) - p1 - p2, p1, p2])
+    return np.array(out, np.int64)
+
+
+@pytest.mark.skipif(not HAS_SIMD, reason="no vector instance on this CPU")
+def test_fragment_weights_kernel_matches_scalar():
+    """The vector kernels of the fragments' own weights (avx2_persp4 for a
+    triangle that is not affine, avx2_linear4v for one that is) give
+    wgt_persp's weights bit for bit: on covered points of random triangles,
+    on points past the kernels' ranges (negative or too wide edge values,
+    which go to the scalar code), on sums below 2^31 after every shift, and
+    on reciprocals whose double quotient lies within 2^-20 of an integer;
+    and the non-affine weights equal the formula in exact integers."""
+    rng = np.random.default_rng(12)
+    for trial in range(60):
+        eshift = int(rng.integers(0, 12))
+        mant = rng.integers(1 << 29, 1 << 30, 3)
+        qshift = rng.integers(0, 70 if trial % 5 == 0 else 20, 3)
+        qshift[rng.integers(0, 3)] = 0
+        affine = int(trial % 6 == 0)
+        area = int(rng.integers(1, 1 << 31)) << eshift
+        lin_recip = (1 << 61) // (area >> eshift)
+        # covered points: e_i >= 0 summing to the area; a few lanes outside
+        w = rng.dirichlet([0.3, 0.3, 0.3], 1024)
+        e = np.floor(w * area).astype(np.int64)
+        e[:, 0] = area - e[:, 1] - e[:, 2]
+        scale = rng.integers(0, 3, (1024, 1))
+        e >>= scale * rng.integers(0, 20, (1024, 1))
+        bad = rng.random(1024) < 0.02
+        e[bad, rng.integers(0, 3)] = -int(rng.integers(1, 1 << 20))
+        wide = rng.random(1024) < 0.02
+        e[wide, 1] = (1 << (31 + eshift)) + int(rng.integers(0, 1 << 20))
+        e[(e.sum(axis=1) <= 0)] = [area, 0, 0]
+        vec, base = (_persp(simd, eshift, lin_recip, mant, qshift, affine, e) for simd in (1, 0))
+        np.testing.assert_array_equal(vec, base, err_msg=f"trial {trial}")
+        if not affine:
+            ok = (e >= 0).all(axis=1) & ~wide
+            rows = e[ok][:64]
+            # (a zero sum takes the linear weights: not this formula)
+            live = np.array([sum(((int(x) >> eshift) * int(m)) >> int(q) if q < 63 else 0
+                                 for x, m, q in zip(r, mant, qshift)) > 0 for r in rows.tolist()])
+            exact = _persp_exact(eshift, mant, qshift, rows[live])
+            np.testing.assert_array_equal(vec[ok][:64][live], exact.astype(np.int32))
+    # reciprocals at an integer: denominators in [2^31, 2^32) whose numerator
+    # 2^62 + den / 2 leaves a remainder within 69 of 0 or of den (found by
+    # factoring 2^63 - 1 - 2r and 2^63 + 1 + 2s; checked below): the double
+    # quotient (its numerator rounded by up to 256) can land on either side
+    dens = [2281422937, 2323823089, 3969050863, 4042815511, 2560349145, 2573134565, 2843990835, 3243108917,
+            3584488803, 3602388391, 2965648683, 3110069001, 2927893643, 3150173183, 2977518503, 3097670771,
+            2154230017, 3011351133, 3062868337, 4281516813, 2572639177, 3585179033, 2618402453, 3522518865,
+            2364807063, 3900264077, 2889359841, 3192185309]
+    for d in dens:
+        r = ((1 << 62) + d // 2) % d
+        assert (1 << 31) <= d < (1 << 32) and min(r, d - 1 - r) <= 69
+    rows = []
+    for d in dens:
+        for n1 in (0, 1, d // 3, d // 2, (1 << 31) - 1, int(rng.integers(0, 1 << 31))):
+            rest = d - n1                            # split so that every edge value is below 2^31
+            rows.append([rest // 2, n1, rest - rest // 2])
+    e = np.array(rows, np.int64)
+    # (mantissas 2^29: the sum d 2^29 normalises back to d)
+    vec = _persp(1, 0, 0, [1 << 29] * 3, [0, 0, 0], 0, e)
+    np.testing.assert_array_equal(vec, _persp(0, 0, 0, [1 << 29] * 3, [0, 0, 0], 0, e))
+    np.testing.assert_array_equal(vec, _persp_exact(0, [1 << 29] * 3, [0, 0, 0], e).astype(np.int32))
