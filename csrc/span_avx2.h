@@ -14,10 +14,72 @@
 #ifndef GLES_SPAN_AVX2_H
 #define GLES_SPAN_AVX2_H
 
-#if SIMD_X86 && NUM_IS_FIXED
+#if SIMD_X86
 #include <immintrin.h>
+#include <string.h>
 
 #define AVX2_INLINE static inline __attribute__((always_inline))
+
+/* int64 lanes of magnitude below 2^51 as doubles, and integral doubles of
+** magnitude below 2^51 as int64 (exact: the bias 2^52 + 2^51 puts the
+** integer in the mantissa's low bits) */
+#define AVX2_I64_BIAS 6755399441055744.0
+AVX2_INLINE __m256d avx2_i64_to_pd(__m256i v)
+{
+    const __m256d magic = _mm256_set1_pd(AVX2_I64_BIAS);
+    return _mm256_sub_pd(_mm256_castsi256_pd(_mm256_add_epi64(v, _mm256_castpd_si256(magic))), magic);
+}
+AVX2_INLINE __m256i avx2_pd_to_i64(__m256d v)
+{
+    const __m256d magic = _mm256_set1_pd(AVX2_I64_BIAS);
+    return _mm256_sub_epi64(_mm256_castpd_si256(_mm256_add_pd(v, magic)), _mm256_castpd_si256(magic));
+}
+
+/* the edge values e0 + ea k at slots' offsets k, four at a time: k ea is
+** formed as k ea_lo + ((k ea_hi) << 32), the product mod 2^64, which is the
+** scalar code's product wherever that fits int64 (chunk_edges forms it).
+** The broadcasts live in a local struct so that a loop keeps them in
+** registers (stores to the span buffer could otherwise alias t and b). */
+typedef struct Edges4 {
+    __m256i e0[3], lo[3], hi[3];
+} Edges4;
+
+AVX2_INLINE void avx2_edges4_setup(const int64_t e0[3], const int64_t ea[3], Edges4 *ed)
+{
+    for (int i = 0; i < 3; i++) {
+        ed->e0[i] = _mm256_set1_epi64x(e0[i]);
+        ed->lo[i] = _mm256_set1_epi64x(ea[i]);
+        ed->hi[i] = _mm256_set1_epi64x((int64_t)((uint64_t)ea[i] >> 32));
+    }
+}
+
+AVX2_INLINE void avx2_edges4(const Edges4 *ed, const uint8_t *k, __m256i ev[3])
+{
+    uint32_t k4;
+    memcpy(&k4, k, sizeof k4);
+    const __m256i kv = _mm256_cvtepu8_epi64(_mm_cvtsi32_si128((int)k4));
+    for (int i = 0; i < 3; i++)
+        ev[i] = _mm256_add_epi64(ed->e0[i], _mm256_add_epi64(_mm256_mul_epu32(kv, ed->lo[i]),
+                                                              _mm256_slli_epi64(_mm256_mul_epu32(kv, ed->hi[i]), 32)));
+}
+
+/* three vectors of four 32-bit lanes a, b, c stored interleaved as
+** a0 b0 c0 a1 b1 c1 a2 b2 c2 a3 b3 c3 (four fragments' three weights) */
+AVX2_INLINE void avx2_store3x4_32(__m128i a, __m128i b, __m128i c, void *out)
+{
+    const __m256i ab = _mm256_inserti128_si256(_mm256_castsi128_si256(a), b, 1);
+    const __m256i cc = _mm256_castsi128_si256(c);
+    const __m256i first = _mm256_blend_epi32(_mm256_permutevar8x32_epi32(ab, _mm256_setr_epi32(0, 4, 0, 1, 5, 0, 2, 6)),
+                                             _mm256_permutevar8x32_epi32(cc, _mm256_setr_epi32(0, 0, 0, 0, 0, 1, 0, 0)),
+                                             0x24);
+    const __m128i last = _mm_blend_epi32(_mm256_castsi256_si128(_mm256_permutevar8x32_epi32(ab, _mm256_setr_epi32(0, 3, 7, 0, 0, 0, 0, 0))),
+                                         _mm_shuffle_epi32(c, _MM_SHUFFLE(3, 0, 0, 2)), 0x9);
+    _mm256_storeu_si256((__m256i *)out, first);
+    _mm_storeu_si128((__m128i *)((char *)out + 32), last);
+}
+#endif
+
+#if SIMD_X86 && NUM_IS_FIXED
 
 /* the four channels of a FRAGV[4] */
 AVX2_INLINE __m256i avx2_load4(const FRAGV *c) { return _mm256_loadu_si256((const __m256i *)(const void *)c); }
@@ -121,20 +183,6 @@ AVX2_INLINE __m256i avx2_div_pow2v(__m256i v, __m256i k)
     return avx2_negate_where(_mm256_srlv_epi64(avx2_negate_where(v, sign), k), sign);
 }
 
-/* int64 lanes of magnitude below 2^51 as doubles, and integral doubles of
-** magnitude below 2^51 as int64 (exact: the bias 2^52 + 2^51 puts the
-** integer in the mantissa's low bits) */
-#define AVX2_I64_BIAS 6755399441055744.0
-AVX2_INLINE __m256d avx2_i64_to_pd(__m256i v)
-{
-    const __m256d magic = _mm256_set1_pd(AVX2_I64_BIAS);
-    return _mm256_sub_pd(_mm256_castsi256_pd(_mm256_add_epi64(v, _mm256_castpd_si256(magic))), magic);
-}
-AVX2_INLINE __m256i avx2_pd_to_i64(__m256d v)
-{
-    const __m256d magic = _mm256_set1_pd(AVX2_I64_BIAS);
-    return _mm256_sub_epi64(_mm256_castpd_si256(_mm256_add_pd(v, magic)), _mm256_castpd_si256(magic));
-}
 
 /* four fragments' s and t (lanes = fragments) stored as TexCoord out[0..3] */
 AVX2_INLINE void avx2_store_st4(__m256i s, __m256i t, TexCoord *out)
@@ -493,23 +541,15 @@ AVX2_INLINE int avx2_persp_any4(const WgtSetup *s, const __m256i e[3], __m256i o
     return 1;
 }
 
+
 /* four fragments' weights l[0..2] (lanes whose low 32 bits are the WGT
-** values) stored as out[lane][0..2]: twelve int32 in fragment order */
+** values) stored as out[lane][0..2] */
 AVX2_INLINE void avx2_store_wgt4(const __m256i l[3], WGT (*out)[3])
 {
     const __m256i lo = _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7);
-    const __m128i a = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(l[0], lo));
-    const __m128i b = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(l[1], lo));
-    const __m256i c = _mm256_permutevar8x32_epi32(l[2], lo);
-    const __m256i ab = _mm256_inserti128_si256(_mm256_castsi128_si256(a), b, 1);
-    /* a0 b0 c0 a1 b1 c1 a2 b2, then c2 a3 b3 c3 */
-    const __m256i first = _mm256_blend_epi32(_mm256_permutevar8x32_epi32(ab, _mm256_setr_epi32(0, 4, 0, 1, 5, 0, 2, 6)),
-                                             _mm256_permutevar8x32_epi32(c, _mm256_setr_epi32(0, 0, 0, 0, 0, 1, 0, 0)),
-                                             0x24);
-    const __m128i last = _mm_blend_epi32(_mm256_castsi256_si128(_mm256_permutevar8x32_epi32(ab, _mm256_setr_epi32(0, 3, 7, 0, 0, 0, 0, 0))),
-                                         _mm_shuffle_epi32(_mm256_castsi256_si128(c), _MM_SHUFFLE(3, 0, 0, 2)), 0x9);
-    _mm256_storeu_si256((__m256i *)(void *)out[0], first);
-    _mm_storeu_si128((__m128i *)(void *)&out[2][2], last);
+    avx2_store3x4_32(_mm256_castsi256_si128(_mm256_permutevar8x32_epi32(l[0], lo)),
+                     _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(l[1], lo)),
+                     _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(l[2], lo)), out);
 }
 
 /* wgt_persp of four fragments of a triangle that is not affine, edge values
@@ -601,33 +641,6 @@ AVX2_INLINE int avx2_linear4(const WgtSetup *s, const int64_t e[4][3], __m256i l
                          _mm256_setr_epi64x(e[0][2], e[1][2], e[2][2], e[3][2]), l);
 }
 
-/* the edge values e0 + ea k at slots' offsets k, four at a time: k ea is
-** formed as k ea_lo + ((k ea_hi) << 32), the product mod 2^64, which is the
-** scalar code's product wherever that fits int64 (chunk_edges forms it).
-** The broadcasts live in a local struct so that a loop keeps them in
-** registers (stores to the span buffer could otherwise alias t and b). */
-typedef struct Edges4 {
-    __m256i e0[3], lo[3], hi[3];
-} Edges4;
-
-AVX2_INLINE void avx2_edges4_setup(const int64_t e0[3], const int64_t ea[3], Edges4 *ed)
-{
-    for (int i = 0; i < 3; i++) {
-        ed->e0[i] = _mm256_set1_epi64x(e0[i]);
-        ed->lo[i] = _mm256_set1_epi64x(ea[i]);
-        ed->hi[i] = _mm256_set1_epi64x((int64_t)((uint64_t)ea[i] >> 32));
-    }
-}
-
-AVX2_INLINE void avx2_edges4(const Edges4 *ed, const uint8_t *k, __m256i ev[3])
-{
-    uint32_t k4;
-    memcpy(&k4, k, sizeof k4);
-    const __m256i kv = _mm256_cvtepu8_epi64(_mm_cvtsi32_si128((int)k4));
-    for (int i = 0; i < 3; i++)
-        ev[i] = _mm256_add_epi64(ed->e0[i], _mm256_add_epi64(_mm256_mul_epu32(kv, ed->lo[i]),
-                                                              _mm256_slli_epi64(_mm256_mul_epu32(kv, ed->hi[i]), 32)));
-}
 
 /* avx2_linear4 of edge lanes r1, r2 (of e[lane][1], e[lane][2]) that the
 ** caller has checked: each >= 0 and below 2^(31 + eshift); hi is
@@ -733,9 +746,6 @@ AVX2_INLINE V4 v4_lerp3f(V4 a0, V4 a1, V4 a2, const WGT *p) { return avx2_lerp3f
 #endif
 
 #if SIMD_X86 && !NUM_IS_FIXED
-#include <immintrin.h>
-
-#define AVX2_INLINE static inline __attribute__((always_inline))
 
 /* V4 (see the fixed build's above) for NUM = float (SSE) or double (AVX):
 ** the same IEEE operations, lane by lane, in the scalar code's order */
@@ -758,6 +768,54 @@ AVX2_INLINE V4 v4_ge(V4 a, V4 b) { return _mm256_cmp_pd(a, b, _CMP_GE_OQ); }
 AVX2_INLINE V4 v4_keep_alpha(V4 m, V4 c) { return _mm256_blend_pd(m, c, 8); }
 AVX2_INLINE V4 v4_alpha(V4 a) { return _mm256_permute4x64_pd(a, 0xFF); }
 #endif
+
+/* wgt_persp (wgt_linear where affine) of four fragments whose edge values,
+** lanes e[i], lie within +-2^51 (0 otherwise, for the scalar code): they
+** convert to double exactly, and in the float build from there to float
+** with one rounding, as (NUM)e does; then the scalar code's IEEE operations
+** in its order. Stored as out[lane][0..2]. */
+AVX2_INLINE int v4_persp4(const WgtSetup *s, const __m256i e[3], WGT (*out)[3])
+{
+    const __m256i bias = _mm256_set1_epi64x((int64_t)1 << 51);
+    V4 ev[3];
+    for (int i = 0; i < 3; i++) {
+        /* e + 2^51 in [0, 2^52) */
+        if (!_mm256_testz_si256(_mm256_add_epi64(e[i], bias), _mm256_set1_epi64x(~(((int64_t)1 << 52) - 1))))
+            return 0;
+#if defined(GLES_NUM_FLOAT)
+        ev[i] = _mm256_cvtpd_ps(avx2_i64_to_pd(e[i]));
+#else
+        ev[i] = avx2_i64_to_pd(e[i]);
+#endif
+    }
+    V4 o1, o2;
+    if (s->affine) {
+        o1 = V4_OP(mul)(ev[1], V4_OP(set1)(s->inv_area));
+        o2 = V4_OP(mul)(ev[2], V4_OP(set1)(s->inv_area));
+    } else {
+        const V4 n0 = V4_OP(mul)(ev[0], V4_OP(set1)(s->q[0]));
+        const V4 n1 = V4_OP(mul)(ev[1], V4_OP(set1)(s->q[1]));
+        const V4 n2 = V4_OP(mul)(ev[2], V4_OP(set1)(s->q[2]));
+        const V4 inv = V4_OP(div)(V4_OP(set1)(1), V4_OP(add)(V4_OP(add)(n0, n1), n2));
+        o1 = V4_OP(mul)(n1, inv);
+        o2 = V4_OP(mul)(n2, inv);
+    }
+    const V4 o0 = V4_OP(sub)(V4_OP(sub)(V4_OP(set1)(1), o1), o2);
+#if defined(GLES_NUM_FLOAT)
+    avx2_store3x4_32(_mm_castps_si128(o0), _mm_castps_si128(o1), _mm_castps_si128(o2), out);
+#else
+    /* a0 b0 c0 a1 | b1 c1 a2 b2 | c2 a3 b3 c3 */
+    const __m256d ab = _mm256_unpacklo_pd(o0, o1), bc = _mm256_unpackhi_pd(o1, o2);
+    double *d = &out[0][0];
+    _mm256_storeu_pd(d, _mm256_blend_pd(_mm256_blend_pd(ab, _mm256_permute4x64_pd(o2, 0x00), 4),
+                                        _mm256_permute4x64_pd(o0, 0x55), 8));
+    _mm256_storeu_pd(d + 4, _mm256_blend_pd(bc, ab, 0xC));
+    _mm256_storeu_pd(d + 8, _mm256_blend_pd(_mm256_blend_pd(bc, _mm256_permute4x64_pd(o2, 0xAA), 1),
+                                            _mm256_permute4x64_pd(o0, 0xFF), 2));
+#endif
+    return 1;
+}
+
 AVX2_INLINE V4 v4_load(const FRAGV *c) { return V4_OP(loadu)(c); }
 AVX2_INLINE void v4_store(FRAGV *c, V4 v) { V4_OP(storeu)(c, v); }
 AVX2_INLINE V4 v4_set1(FRAGV f) { return V4_OP(set1)(f); }

@@ -35,6 +35,20 @@ static void STAGE(stage_persp)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
         }
         avx2_store_wgt4(l, &p[j]);
     }
+#elif CHAIN_SIMD
+    const WgtSetup ws = t->wgt;
+    Edges4 ed;
+    avx2_edges4_setup(b->e0, t->ea, &ed);
+    for (; j + 4 <= b->n; j += 4) {
+        __m256i e[3];
+        avx2_edges4(&ed, &b->k[j], e);
+        if (!v4_persp4(&ws, e, &b->p[j]))
+            for (int k = j; k < j + 4; k++) {
+                int64_t ek[3];
+                chunk_edges(t, b, b->k[k], ek);
+                wgt_persp(&ws, ek, b->p[k]);
+            }
+    }
 #endif
     for (; j < b->n; j++) {
         int64_t e[3];
@@ -83,6 +97,22 @@ static void STAGE(stage_neighbours)(GlesContext *ctx, const TriSetup *t, SpanBuf
             for (int k = j; k < j + 4; k++)
                 STAGE(neighbours1)(t, b, k);
         }
+    }
+#elif CHAIN_SIMD
+    /* wgt_persp_any is wgt_persp in this build */
+    const WgtSetup ws = t->wgt;
+    const int64_t ex0[3] = { b->e0[0] + t->ea[0], b->e0[1] + t->ea[1], b->e0[2] + t->ea[2] };
+    const int64_t ey0[3] = { b->e0[0] + t->eb[0], b->e0[1] + t->eb[1], b->e0[2] + t->eb[2] };
+    Edges4 edx, edy;
+    avx2_edges4_setup(ex0, t->ea, &edx);
+    avx2_edges4_setup(ey0, t->ea, &edy);
+    for (; j + 4 <= b->n; j += 4) {
+        __m256i ex[3], ey[3];
+        avx2_edges4(&edx, &b->k[j], ex);
+        avx2_edges4(&edy, &b->k[j], ey);
+        if (!v4_persp4(&ws, ex, &b->px[j]) || !v4_persp4(&ws, ey, &b->py[j]))
+            for (int k = j; k < j + 4; k++)
+                STAGE(neighbours1)(t, b, k);
     }
 #endif
     for (; j < b->n; j++)
