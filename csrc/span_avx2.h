@@ -1096,13 +1096,31 @@ AVX2_INLINE __m256i avx2_fog4(const NUM a[3], const WGT (*p)[3])
     return avx2_clamp01(avx2_round_shift(acc, 16));
 }
 
-/* fragment_alpha8 of the alphas of four fragments' colours c[0..3], as
+/* fragment_fog of four fragments c[0..3] with factors f (lanes, each in
+** [0, 2^30]) and the fog colour's channels as lanes fcv[0..2] (each in
+** [0, 2^31)): the colours transposed to one register per channel, then
+** frag_mul(f, frag_clamp01(c)) + frag_mul(1 - f, fc) per channel, whose
+** operands are in [0, 2^31) (avx2_mul_u is frag_mul there); the alphas
+** go back as they were */
+AVX2_INLINE void avx2_fog_mix4(FRAGV (*c)[4], __m256i f, const __m256i fcv[3])
+{
+    const __m256i c0 = avx2_load4(c[0]), c1 = avx2_load4(c[1]), c2 = avx2_load4(c[2]), c3 = avx2_load4(c[3]);
+    const __m256i t0 = _mm256_unpacklo_epi64(c0, c1), t1 = _mm256_unpackhi_epi64(c0, c1);   /* r0 r1 b0 b1, g0 g1 a0 a1 */
+    const __m256i t2 = _mm256_unpacklo_epi64(c2, c3), t3 = _mm256_unpackhi_epi64(c2, c3);
+    __m256i ch[4] = { _mm256_permute2x128_si256(t0, t2, 0x20), _mm256_permute2x128_si256(t1, t3, 0x20),
+                      _mm256_permute2x128_si256(t0, t2, 0x31), _mm256_permute2x128_si256(t1, t3, 0x31) };
+    const __m256i g = _mm256_sub_epi64(_mm256_set1_epi64x(FRAG_ONE), f);
+    for (int i = 0; i < 3; i++)
+        ch[i] = _mm256_add_epi64(avx2_mul_u(f, avx2_clamp01(ch[i])), avx2_mul_u(g, fcv[i]));
+    avx2_store_transposed4(ch[0], ch[1], ch[2], ch[3], c[0], 4);
+}
+
+/* fragment_alpha8 of the alphas of four fragments' colours c0..c3, as
 ** int32 lanes: after frag_clamp01 the alpha v lies in [0, 2^30], where
 ** (v 255 + 2^29) >> 30 is frag_to_unorm's value (0 for v <= 0, 255 for
 ** v >= 2^30) and v fits vpmuludq's 32 bits */
-AVX2_INLINE __m128i v4_alpha8x4(const FRAGV (*c)[4])
+AVX2_INLINE __m128i v4_alpha8x4(V4 c0, V4 c1, V4 c2, V4 c3)
 {
-    const __m256i c0 = avx2_load4(c[0]), c1 = avx2_load4(c[1]), c2 = avx2_load4(c[2]), c3 = avx2_load4(c[3]);
     /* g0 g1 a0 a1 and g2 g3 a2 a3, then the alphas */
     const __m256i x01 = _mm256_unpackhi_epi64(c0, c1), x23 = _mm256_unpackhi_epi64(c2, c3);
     const __m256i a = avx2_clamp01(_mm256_permute2x128_si256(x01, x23, 0x31));
@@ -1122,19 +1140,17 @@ AVX2_INLINE V4 v4_lerp3x4(const NUM a[3], const WGT (*p)[3])
     return V4_OP(add)(acc, V4_OP(mul)(V4_OP(set1)(a[2]), V4_OP(setr)(p[0][2], p[1][2], p[2][2], p[3][2])));
 }
 
-/* fragment_alpha8 of the alphas of four fragments' colours c[0..3], as
+/* fragment_alpha8 of the alphas of four fragments' colours c0..c3, as
 ** int32 lanes: frag_to_unorm's operations (0 unless v > 0, so NaN gives 0;
 ** 255 from 1 up; else v 255 + 1/2 truncated) */
-AVX2_INLINE __m128i v4_alpha8x4(const FRAGV (*c)[4])
+AVX2_INLINE __m128i v4_alpha8x4(V4 c0, V4 c1, V4 c2, V4 c3)
 {
 #if defined(GLES_NUM_FLOAT)
     /* b0 b1 a0 a1 and b2 b3 a2 a3, then the alphas */
-    const V4 x01 = _mm_unpackhi_ps(v4_load(c[0]), v4_load(c[1])), x23 = _mm_unpackhi_ps(v4_load(c[2]), v4_load(c[3]));
-    const V4 v = _mm_movehl_ps(x23, x01);
+    const V4 v = _mm_movehl_ps(_mm_unpackhi_ps(c2, c3), _mm_unpackhi_ps(c0, c1));
 #else
     /* g0 g1 a0 a1 and g2 g3 a2 a3, then the alphas */
-    const V4 x01 = _mm256_unpackhi_pd(v4_load(c[0]), v4_load(c[1])), x23 = _mm256_unpackhi_pd(v4_load(c[2]), v4_load(c[3]));
-    const V4 v = _mm256_permute2f128_pd(x01, x23, 0x31);
+    const V4 v = _mm256_permute2f128_pd(_mm256_unpackhi_pd(c0, c1), _mm256_unpackhi_pd(c2, c3), 0x31);
 #endif
     const V4 zero = V4_OP(setzero)(), one = V4_OP(set1)(1);
     V4 x = V4_OP(add)(V4_OP(mul)(v, V4_OP(set1)(255)), V4_OP(set1)((NUM)0.5));

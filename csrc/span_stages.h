@@ -568,17 +568,20 @@ static void STAGE(stage_fog)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 #else
     const int fits = 1;
 #endif
-    if (!ctx->fog_per_fragment && fits && v4_fits(fog))
+    if (!ctx->fog_per_fragment && fits && v4_fits(fog)) {
+#if NUM_IS_FIXED
+        const __m256i fcv[3] = { _mm256_set1_epi64x(fc[0]), _mm256_set1_epi64x(fc[1]), _mm256_set1_epi64x(fc[2]) };
+        for (; j + 4 <= b->n; j += 4)
+            avx2_fog_mix4(&b->c[j], avx2_fog4(a, (const WGT (*)[3])&b->p[j]), fcv);
+#else
         for (; j + 4 <= b->n; j += 4) {
             FRAGV f[4];
-#if NUM_IS_FIXED
-            _mm256_storeu_si256((__m256i *)(void *)f, avx2_fog4(a, (const WGT (*)[3])&b->p[j]));
-#else
             v4_store(f, v4_clamp01(v4_lerp3x4(a, (const WGT (*)[3])&b->p[j])));
-#endif
             for (int k = 0; k < 4; k++)
                 STAGE(chunk_fog_fits)(b->c[j + k], f[k], fog);
         }
+#endif
+    }
 #endif
     for (; j < b->n; j++) {
         const WGT *p = b->p[j];
@@ -605,16 +608,40 @@ static void STAGE(stage_alpha)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
     const uint32_t ref = fragment_alpha_ref8(ctx);
 #if CHAIN_SIMD
     /* fragment_alpha_pass of four fragments at a time, the function fixed
-    ** for the chunk, then the survivors (and their colours) compacted */
+    ** for the chunk; the survivors' colours and offsets move to the front
+    ** as they go (slot m <= j: only slots read already are written) */
     const int n = b->n;
     const __m128i rv = _mm_set1_epi32((int)ref);
-    uint64_t keep = 0;
-    int j;
+    int j, m = 0;
 #define ALPHA_VECTOR(FUNC) \
-    for (j = 0; j + 4 <= n; j += 4) \
-        keep |= (uint64_t)avx2_cmp4_i32(FUNC, v4_alpha8x4((const FRAGV (*)[4])&b->c[j]), rv) << j; \
+    for (j = 0; j + 4 <= n; j += 4) { \
+        const V4 c0 = v4_load(b->c[j]), c1 = v4_load(b->c[j + 1]), c2 = v4_load(b->c[j + 2]), \
+                 c3 = v4_load(b->c[j + 3]); \
+        const unsigned bits = avx2_cmp4_i32(FUNC, v4_alpha8x4(c0, c1, c2, c3), rv); \
+        if (bits == 0xF && m == j) { \
+            m += 4; \
+            continue; \
+        } \
+        uint32_t k4; \
+        memcpy(&k4, &b->k[j], sizeof k4); \
+        k4 = (uint32_t)_mm_cvtsi128_si32(_mm_shuffle_epi8(_mm_cvtsi32_si128((int)k4), \
+                                                          _mm_cvtsi32_si128((int)avx2_compact8[bits]))); \
+        memcpy(&b->k[m], &k4, sizeof k4); \
+        v4_store(b->c[m], c0); \
+        m += bits & 1; \
+        v4_store(b->c[m], c1); \
+        m += (bits >> 1) & 1; \
+        v4_store(b->c[m], c2); \
+        m += (bits >> 2) & 1; \
+        v4_store(b->c[m], c3); \
+        m += bits >> 3; \
+    } \
     for (; j < n; j++) \
-        keep |= (uint64_t)fragment_compare(FUNC, fragment_alpha8(b->c[j][3]), ref) << j; \
+        if (fragment_compare(FUNC, fragment_alpha8(b->c[j][3]), ref)) { \
+            if (m != j) \
+                v4_store(b->c[m], v4_load(b->c[j])); \
+            b->k[m++] = b->k[j]; \
+        } \
     break;
     switch (ctx->alpha_func) {
     case GL_NEVER: b->n = 0; return;
@@ -627,15 +654,7 @@ static void STAGE(stage_alpha)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
     default: return;    /* GL_ALWAYS */
     }
 #undef ALPHA_VECTOR
-    if (keep == (n == 64 ? ~(uint64_t)0 : ((uint64_t)1 << n) - 1))
-        return;
-    int m = 0;
-    for (uint64_t bits = keep; bits; bits &= bits - 1, m++) {
-        const int i = __builtin_ctzll(bits);
-        if (m != i)
-            v4_store(b->c[m], v4_load(b->c[i]));
-    }
-    b->n = avx2_compact_offsets(b->k, n, keep);
+    b->n = m;
 #else
     uint8_t keep[SPAN_CHUNK];
     /* fragment_alpha_pass, with the function fixed for the chunk */
