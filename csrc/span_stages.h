@@ -622,6 +622,8 @@ static void STAGE(stage_alpha)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
             m += 4; \
             continue; \
         } \
+        if (!bits) \
+            continue; \
         uint32_t k4; \
         memcpy(&k4, &b->k[j], sizeof k4); \
         k4 = (uint32_t)_mm_cvtsi128_si32(_mm_shuffle_epi8(_mm_cvtsi32_si128((int)k4), \
