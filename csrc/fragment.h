@@ -226,6 +226,30 @@ static inline void fragment_write(GlesContext *ctx, const FragWrite *w, int x, i
         ((uint32_t *)ctx->color)[at] = packed;
 }
 
+/* fragment_logic_op (§4.1.10) inline, for writers that fix the op per
+** chunk: the same table */
+static inline uint32_t fragment_logic_op_inline(unsigned int op, uint32_t s, uint32_t d)
+{
+    switch (op) {
+    case GL_CLEAR: return 0;
+    case GL_AND: return s & d;
+    case GL_AND_REVERSE: return s & ~d;
+    case GL_COPY: return s;
+    case GL_AND_INVERTED: return ~s & d;
+    case GL_NOOP: return d;
+    case GL_XOR: return s ^ d;
+    case GL_OR: return s | d;
+    case GL_NOR: return ~(s | d);
+    case GL_EQUIV: return ~(s ^ d);
+    case GL_INVERT: return ~d;
+    case GL_OR_REVERSE: return s | ~d;
+    case GL_COPY_INVERTED: return ~s;
+    case GL_OR_INVERTED: return ~s | d;
+    case GL_NAND: return ~(s & d);
+    default: return 0xFFFFFFFFu; /* GL_SET */
+    }
+}
+
 /* fog.c */
 void fog_init(GlesContext *ctx);
 int fog_get(GlesContext *ctx, unsigned int pname, double *out, int *kind);

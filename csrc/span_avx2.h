@@ -1221,4 +1221,124 @@ AVX2_INLINE int avx2_compact_offsets(uint8_t *k, int n, uint64_t keep)
 }
 /* }==================================================================== */
 #endif
+
+/* {====================================================================
+** Fog factors, the alpha test's comparisons and RGBA8888 logic ops for
+** several fragments at a time (span_stages.h: stage_fog, stage_alpha) */
+#if SIMD_X86 && NUM_IS_FIXED
+/* the weights p[0..3][i] of four fragments as the low dwords of 64-bit
+** lanes (what vpmuldq reads): the twelve WGT as two overlapping loads of
+** eight, permuted */
+AVX2_INLINE void avx2_wgt_lanes4(const WGT (*p)[3], __m256i w[3])
+{
+    const int32_t *q = &p[0][0];
+    const __m256i a = _mm256_loadu_si256((const __m256i *)(const void *)q);         /* ints 0..7 */
+    const __m256i b = _mm256_loadu_si256((const __m256i *)(const void *)(q + 4));   /* ints 4..11 */
+    w[0] = _mm256_blend_epi32(_mm256_permutevar8x32_epi32(a, _mm256_setr_epi32(0, 0, 3, 3, 6, 6, 6, 6)),
+                              _mm256_permutevar8x32_epi32(b, _mm256_set1_epi32(5)), 0xC0);
+    w[1] = _mm256_blend_epi32(_mm256_permutevar8x32_epi32(a, _mm256_setr_epi32(1, 1, 4, 4, 7, 7, 7, 7)),
+                              _mm256_permutevar8x32_epi32(b, _mm256_set1_epi32(6)), 0xC0);
+    w[2] = _mm256_blend_epi32(_mm256_permutevar8x32_epi32(a, _mm256_setr_epi32(2, 2, 5, 5, 5, 5, 5, 5)),
+                              _mm256_permutevar8x32_epi32(b, _mm256_setr_epi32(4, 4, 4, 4, 4, 4, 7, 7)), 0xF0);
+}
+
+/* frag_clamp01(frag_lerp3(a[0], a[1], a[2], p[k][0..2])) for the four
+** fragments k (lanes): with |a[i]| <= 2^30 (the caller checks) each
+** product is below 2^61 and their sum below 2^63, so the 64-bit sum is
+** the scalar code's, and avx2_round_shift rounds it as frag_lerp3 does
+** (half away from zero, 16 bits) */
+AVX2_INLINE __m256i avx2_fog4(const NUM a[3], const WGT (*p)[3])
+{
+    __m256i w[3];
+    avx2_wgt_lanes4(p, w);
+    const __m256i acc = _mm256_add_epi64(_mm256_add_epi64(_mm256_mul_epi32(_mm256_set1_epi64x(a[0]), w[0]),
+                                                          _mm256_mul_epi32(_mm256_set1_epi64x(a[1]), w[1])),
+                                         _mm256_mul_epi32(_mm256_set1_epi64x(a[2]), w[2]));
+    return avx2_clamp01(avx2_round_shift(acc, 16));
+}
+
+/* fragment_fog of four fragments c[0..3] with factors f (lanes, each in
+** [0, 2^30]) and the fog colour's channels as lanes fcv[0..2] (each in
+** [0, 2^31)): the colours transposed to one register per channel, then
+** frag_mul(f, frag_clamp01(c)) + frag_mul(1 - f, fc) per channel, whose
+** operands are in [0, 2^31) (avx2_mul_u is frag_mul there); the alphas
+** go back as they were */
+AVX2_INLINE void avx2_fog_mix4(FRAGV (*c)[4], __m256i f, const __m256i fcv[3])
+{
+    const __m256i c0 = avx2_load4(c[0]), c1 = avx2_load4(c[1]), c2 = avx2_load4(c[2]), c3 = avx2_load4(c[3]);
+    const __m256i t0 = _mm256_unpacklo_epi64(c0, c1), t1 = _mm256_unpackhi_epi64(c0, c1);   /* r0 r1 b0 b1, g0 g1 a0 a1 */
+    const __m256i t2 = _mm256_unpacklo_epi64(c2, c3), t3 = _mm256_unpackhi_epi64(c2, c3);
+    __m256i ch[4] = { _mm256_permute2x128_si256(t0, t2, 0x20), _mm256_permute2x128_si256(t1, t3, 0x20),
+                      _mm256_permute2x128_si256(t0, t2, 0x31), _mm256_permute2x128_si256(t1, t3, 0x31) };
+    const __m256i g = _mm256_sub_epi64(_mm256_set1_epi64x(FRAG_ONE), f);
+    for (int i = 0; i < 3; i++)
+        ch[i] = _mm256_add_epi64(avx2_mul_u(f, avx2_clamp01(ch[i])), avx2_mul_u(g, fcv[i]));
+    avx2_store_transposed4(ch[0], ch[1], ch[2], ch[3], c[0], 4);
+}
+
+/* fragment_alpha8 of the alphas of four fragments' colours c0..c3, as
+** int32 lanes: after frag_clamp01 the alpha v lies in [0, 2^30], where
+** (v 255 + 2^29) >> 30 is frag_to_unorm's value (0 for v <= 0, 255 for
+** v >= 2^30) and v fits vpmuludq's 32 bits */
+AVX2_INLINE __m128i v4_alpha8x4(V4 c0, V4 c1, V4 c2, V4 c3)
+{
+    /* g0 g1 a0 a1 and g2 g3 a2 a3, then the alphas */
+    const __m256i x01 = _mm256_unpackhi_epi64(c0, c1), x23 = _mm256_unpackhi_epi64(c2, c3);
+    const __m256i a = avx2_clamp01(_mm256_permute2x128_si256(x01, x23, 0x31));
+    const __m256i u = _mm256_srli_epi64(_mm256_add_epi64(_mm256_mul_epu32(a, _mm256_set1_epi64x(255)),
+                                                         _mm256_set1_epi64x((int64_t)1 << 29)), 30);
+    return avx2_low32(u);
+}
+#endif
+
+#if SIMD_X86 && !NUM_IS_FIXED
+/* frag_lerp3(a[0], a[1], a[2], p[k][0..2]) for the four fragments k
+** (lanes): the same products and sums, in the scalar code's order */
+AVX2_INLINE V4 v4_lerp3x4(const NUM a[3], const WGT (*p)[3])
+{
+    V4 acc = V4_OP(mul)(V4_OP(set1)(a[0]), V4_OP(setr)(p[0][0], p[1][0], p[2][0], p[3][0]));
+    acc = V4_OP(add)(acc, V4_OP(mul)(V4_OP(set1)(a[1]), V4_OP(setr)(p[0][1], p[1][1], p[2][1], p[3][1])));
+    return V4_OP(add)(acc, V4_OP(mul)(V4_OP(set1)(a[2]), V4_OP(setr)(p[0][2], p[1][2], p[2][2], p[3][2])));
+}
+
+/* fragment_alpha8 of the alphas of four fragments' colours c0..c3, as
+** int32 lanes: frag_to_unorm's operations (0 unless v > 0, so NaN gives 0;
+** 255 from 1 up; else v 255 + 1/2 truncated) */
+AVX2_INLINE __m128i v4_alpha8x4(V4 c0, V4 c1, V4 c2, V4 c3)
+{
+#if defined(GLES_NUM_FLOAT)
+    /* b0 b1 a0 a1 and b2 b3 a2 a3, then the alphas */
+    const V4 v = _mm_movehl_ps(_mm_unpackhi_ps(c2, c3), _mm_unpackhi_ps(c0, c1));
+#else
+    /* g0 g1 a0 a1 and g2 g3 a2 a3, then the alphas */
+    const V4 v = _mm256_permute2f128_pd(_mm256_unpackhi_pd(c0, c1), _mm256_unpackhi_pd(c2, c3), 0x31);
+#endif
+    const V4 zero = V4_OP(setzero)(), one = V4_OP(set1)(1);
+    V4 x = V4_OP(add)(V4_OP(mul)(v, V4_OP(set1)(255)), V4_OP(set1)((NUM)0.5));
+    x = V4_OP(blendv)(x, V4_OP(set1)(255), v4_ge(v, one));
+    x = V4_OP(blendv)(zero, x, v4_gt(v, zero));
+    return v4_trunc_i32(x);
+}
+#endif
+
+#if SIMD_X86
+/* fragment_compare(func, a, b) of four int32 lanes (the alpha test's
+** values, 0..255) as four bits, for a func known where this is inlined */
+AVX2_INLINE unsigned avx2_cmp4_i32(unsigned int func, __m128i a, __m128i b)
+{
+    __m128i m;
+    switch (func) {
+    case GL_NEVER: return 0;
+    case GL_LESS: m = _mm_cmplt_epi32(a, b); break;
+    case GL_EQUAL: m = _mm_cmpeq_epi32(a, b); break;
+    case GL_LEQUAL: return 0xFu & ~(unsigned)_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpgt_epi32(a, b)));
+    case GL_GREATER: m = _mm_cmpgt_epi32(a, b); break;
+    case GL_NOTEQUAL: return 0xFu & ~(unsigned)_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(a, b)));
+    case GL_GEQUAL: return 0xFu & ~(unsigned)_mm_movemask_ps(_mm_castsi128_ps(_mm_cmplt_epi32(a, b)));
+    default: return 0xF;
+    }
+    return (unsigned)_mm_movemask_ps(_mm_castsi128_ps(m));
+}
+#endif
+/* }==================================================================== */
 #endif

@@ -62,7 +62,8 @@ typedef struct ChainStages {
     SpanStage persp, neighbours, depth, tests_early, tests_late, zless_early, color;
     SpanStage fetch[GLES_MAX_TEXTURE_UNITS], fetch_rect[GLES_MAX_TEXTURE_UNITS], env[GLES_MAX_TEXTURE_UNITS];
     SpanStage fog, fog_const, alpha;
-    SpanStage write, write_rgba8, write_rgba8_alpha, write_rgba8_add, write_565, write_565_alpha;
+    SpanStage write, write_rgba8, write_rgba8_alpha, write_rgba8_add, write_rgba8_logic, write_rgba8_masked;
+    SpanStage write_565, write_565_alpha;
     SpanStage rect_source;
 } ChainStages;
 
@@ -257,6 +258,10 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
         s[n++] = cs->write_rgba8_alpha;
     else if (plain && bk == 2)
         s[n++] = cs->write_rgba8_add;
+    else if (ctx->color_format == GLES_COLOR_RGBA8888 && ctx->color_logic_op)
+        s[n++] = cs->write_rgba8_logic;
+    else if (ctx->color_format == GLES_COLOR_RGBA8888 && bk >= 0)
+        s[n++] = cs->write_rgba8_masked;
     else if (plain565 && bk == 0 && !ctx->color_logic_op)
         s[n++] = cs->write_565;
     else if (plain565 && bk == 1)

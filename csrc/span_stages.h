@@ -589,13 +589,50 @@ static inline void STAGE(chunk_fog)(FRAGV c[4], FRAGV f, const FRAGV fc[3])
     fragment_fog(c, f, fc);
 }
 
+#if CHAIN_SIMD
+/* chunk_fog of a factor f in [0, 1] (so f and 1 - f fit) with the fog
+** colour's RGB as `fog`, which fits */
+static inline void STAGE(chunk_fog_fits)(FRAGV c[4], FRAGV f, V4 fog)
+{
+    const V4 v = v4_load(c);
+    v4_store(c, v4_keep_alpha(v4_add(v4_mul01(v4_set1(f), v4_clamp01(v)), v4_mul01(v4_set1(FRAG_ONE - f), fog)), v));
+}
+#endif
+
 /* fog (§3.8) with the factor interpolated, or from the interpolated distance */
 static void STAGE(stage_fog)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     const Vertex *v0 = t->v[0], *v1 = t->v[1], *v2 = t->v[2];
     FRAGV fc[3];
     fragment_fog_color(ctx, fc);
-    for (int j = 0; j < b->n; j++) {
+    int j = 0;
+#if CHAIN_SIMD
+    /* the per-vertex factor of four fragments at a time (lanes), then each
+    ** fragment's mix */
+    const V4 fog = v4_rgb0(fc);
+    const NUM a[3] = { v0->fog, v1->fog, v2->fog };
+#if NUM_IS_FIXED
+    const int32_t lim = (int32_t)1 << 30;
+    const int fits = a[0] >= -lim && a[0] <= lim && a[1] >= -lim && a[1] <= lim && a[2] >= -lim && a[2] <= lim;
+#else
+    const int fits = 1;
+#endif
+    if (!ctx->fog_per_fragment && fits && v4_fits(fog)) {
+#if NUM_IS_FIXED
+        const __m256i fcv[3] = { _mm256_set1_epi64x(fc[0]), _mm256_set1_epi64x(fc[1]), _mm256_set1_epi64x(fc[2]) };
+        for (; j + 4 <= b->n; j += 4)
+            avx2_fog_mix4(&b->c[j], avx2_fog4(a, (const WGT (*)[3])&b->p[j]), fcv);
+#else
+        for (; j + 4 <= b->n; j += 4) {
+            FRAGV f[4];
+            v4_store(f, v4_clamp01(v4_lerp3x4(a, (const WGT (*)[3])&b->p[j])));
+            for (int k = 0; k < 4; k++)
+                STAGE(chunk_fog_fits)(b->c[j + k], f[k], fog);
+        }
+#endif
+    }
+#endif
+    for (; j < b->n; j++) {
         const WGT *p = b->p[j];
         FRAGV f = ctx->fog_per_fragment
                       ? frag_from_num(fog_factor(ctx, wgt_lerp3(v0->fog, v1->fog, v2->fog, p[0], p[1], p[2])))
@@ -617,8 +654,60 @@ static void STAGE(stage_fog_const)(GlesContext *ctx, const TriSetup *t, SpanBuf 
 static void STAGE(stage_alpha)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     (void)t;
-    uint8_t keep[SPAN_CHUNK];
     const uint32_t ref = fragment_alpha_ref8(ctx);
+#if CHAIN_SIMD
+    /* fragment_alpha_pass of four fragments at a time, the function fixed
+    ** for the chunk; the survivors' colours and offsets move to the front
+    ** as they go (slot m <= j: only slots read already are written) */
+    const int n = b->n;
+    const __m128i rv = _mm_set1_epi32((int)ref);
+    int j, m = 0;
+#define ALPHA_VECTOR(FUNC) \
+    for (j = 0; j + 4 <= n; j += 4) { \
+        const V4 c0 = v4_load(b->c[j]), c1 = v4_load(b->c[j + 1]), c2 = v4_load(b->c[j + 2]), \
+                 c3 = v4_load(b->c[j + 3]); \
+        const unsigned bits = avx2_cmp4_i32(FUNC, v4_alpha8x4(c0, c1, c2, c3), rv); \
+        if (bits == 0xF && m == j) { \
+            m += 4; \
+            continue; \
+        } \
+        if (!bits) \
+            continue; \
+        uint32_t k4; \
+        memcpy(&k4, &b->k[j], sizeof k4); \
+        k4 = (uint32_t)_mm_cvtsi128_si32(_mm_shuffle_epi8(_mm_cvtsi32_si128((int)k4), \
+                                                          _mm_cvtsi32_si128((int)avx2_compact8[bits]))); \
+        memcpy(&b->k[m], &k4, sizeof k4); \
+        v4_store(b->c[m], c0); \
+        m += bits & 1; \
+        v4_store(b->c[m], c1); \
+        m += (bits >> 1) & 1; \
+        v4_store(b->c[m], c2); \
+        m += (bits >> 2) & 1; \
+        v4_store(b->c[m], c3); \
+        m += bits >> 3; \
+    } \
+    for (; j < n; j++) \
+        if (fragment_compare(FUNC, fragment_alpha8(b->c[j][3]), ref)) { \
+            if (m != j) \
+                v4_store(b->c[m], v4_load(b->c[j])); \
+            b->k[m++] = b->k[j]; \
+        } \
+    break;
+    switch (ctx->alpha_func) {
+    case GL_NEVER: b->n = 0; return;
+    case GL_LESS: ALPHA_VECTOR(GL_LESS)
+    case GL_EQUAL: ALPHA_VECTOR(GL_EQUAL)
+    case GL_LEQUAL: ALPHA_VECTOR(GL_LEQUAL)
+    case GL_GREATER: ALPHA_VECTOR(GL_GREATER)
+    case GL_NOTEQUAL: ALPHA_VECTOR(GL_NOTEQUAL)
+    case GL_GEQUAL: ALPHA_VECTOR(GL_GEQUAL)
+    default: return;    /* GL_ALWAYS */
+    }
+#undef ALPHA_VECTOR
+    b->n = m;
+#else
+    uint8_t keep[SPAN_CHUNK];
     /* fragment_alpha_pass, with the function fixed for the chunk */
 #define ALPHA_LOOP(FUNC) \
     for (int j = 0; j < b->n; j++) \
@@ -636,6 +725,7 @@ static void STAGE(stage_alpha)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
     }
 #undef ALPHA_LOOP
     chunk_compact(b, keep, 1);
+#endif
 }
 
 /* }==================================================================== */
@@ -685,6 +775,69 @@ static void STAGE(stage_write_rgba8_add)(GlesContext *ctx, const TriSetup *t, Sp
 {
     (void)t;
     STAGE(write_rgba8)(ctx, b, 2);
+}
+
+/* RGBA8888 under any colour mask: blend kind 0..2 (as write_rgba8) or a
+** logic op `op` (kind 0: the logic op turns blending off), GL_COPY for
+** none; the bits of `keep` stay as stored. fragment_write's steps for
+** these states (no dither on RGBA8888), with the op fixed per chunk. */
+static inline __attribute__((always_inline)) void STAGE(write_rgba8_ops)(GlesContext *ctx, SpanBuf *b, int kind,
+                                                                        unsigned int op, uint32_t keep)
+{
+    uint32_t *dst = (uint32_t *)ctx->color + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
+    for (int j = 0; j < b->n; j++) {
+        uint32_t *at = &dst[b->k[j]];
+        const uint32_t d = *at;
+#if CHAIN_SIMD
+        const uint32_t s = v4_rgba8(v4_load(b->c[j]), d, kind);
+#else
+        const uint32_t s = span_rgba8(ctx, b->c[j], d, kind);
+#endif
+        *at = (d & keep) | (fragment_logic_op_inline(op, s, d) & ~keep);
+    }
+}
+
+/* RGBA8888 with a logic op, under any colour mask */
+static void STAGE(stage_write_rgba8_logic)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    (void)t;
+    FragWrite w;
+    fragment_write_setup(ctx, &w);
+#define LOGIC_WRITE(OP) \
+    case OP: STAGE(write_rgba8_ops)(ctx, b, 0, OP, w.keep); break;
+    switch (ctx->logic_op) {
+    LOGIC_WRITE(GL_CLEAR)
+    LOGIC_WRITE(GL_AND)
+    LOGIC_WRITE(GL_AND_REVERSE)
+    LOGIC_WRITE(GL_COPY)
+    LOGIC_WRITE(GL_AND_INVERTED)
+    LOGIC_WRITE(GL_NOOP)
+    LOGIC_WRITE(GL_XOR)
+    LOGIC_WRITE(GL_OR)
+    LOGIC_WRITE(GL_NOR)
+    LOGIC_WRITE(GL_EQUIV)
+    LOGIC_WRITE(GL_INVERT)
+    LOGIC_WRITE(GL_OR_REVERSE)
+    LOGIC_WRITE(GL_COPY_INVERTED)
+    LOGIC_WRITE(GL_OR_INVERTED)
+    LOGIC_WRITE(GL_NAND)
+    default: STAGE(write_rgba8_ops)(ctx, b, 0, GL_SET, w.keep); break;
+    }
+#undef LOGIC_WRITE
+}
+
+/* RGBA8888 with some channel masked, no logic op, blend kind 0..2
+** (span_blend_kind) */
+static void STAGE(stage_write_rgba8_masked)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    (void)t;
+    FragWrite w;
+    fragment_write_setup(ctx, &w);
+    switch (span_blend_kind(ctx)) {
+    case 1: STAGE(write_rgba8_ops)(ctx, b, 1, GL_COPY, w.keep); break;
+    case 2: STAGE(write_rgba8_ops)(ctx, b, 2, GL_COPY, w.keep); break;
+    default: STAGE(write_rgba8_ops)(ctx, b, 0, GL_COPY, w.keep); break;
+    }
 }
 
 /* RGB565, red, green and blue written, no blend or logic op */
@@ -776,6 +929,8 @@ static const ChainStages STAGE(chain_stages) = {
     .write_rgba8 = STAGE(stage_write_rgba8),
     .write_rgba8_alpha = STAGE(stage_write_rgba8_alpha),
     .write_rgba8_add = STAGE(stage_write_rgba8_add),
+    .write_rgba8_logic = STAGE(stage_write_rgba8_logic),
+    .write_rgba8_masked = STAGE(stage_write_rgba8_masked),
     .write_565 = STAGE(stage_write_565),
     .write_565_alpha = STAGE(stage_write_565_alpha),
     .rect_source = STAGE(stage_rect_source),
