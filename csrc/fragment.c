@@ -245,28 +245,6 @@ void fragment_blend(const GlesContext *ctx, const FRAGV src[4], const FRAGV dst[
     }
 }
 
-uint32_t fragment_logic_op(unsigned int op, uint32_t s, uint32_t d)
-{
-    switch (op) {
-    case GL_CLEAR: return 0;
-    case GL_AND: return s & d;
-    case GL_AND_REVERSE: return s & ~d;
-    case GL_COPY: return s;
-    case GL_AND_INVERTED: return ~s & d;
-    case GL_NOOP: return d;
-    case GL_XOR: return s ^ d;
-    case GL_OR: return s | d;
-    case GL_NOR: return ~(s | d);
-    case GL_EQUIV: return ~(s ^ d);
-    case GL_INVERT: return ~d;
-    case GL_OR_REVERSE: return s | ~d;
-    case GL_COPY_INVERTED: return ~s;
-    case GL_OR_INVERTED: return ~s | d;
-    case GL_NAND: return ~(s & d);
-    default: return 0xFFFFFFFFu; /* GL_SET */
-    }
-}
-
 /* 4x4 ordered-dither thresholds in [0, 1), centred: (b + 1/2) / 16 */
 FRAGV fragment_dither_threshold(int x, int y)
 {

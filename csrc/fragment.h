@@ -60,7 +60,6 @@ static inline uint32_t fragment_alpha_ref8(const GlesContext *ctx)
 int fragment_alpha_pass(const GlesContext *ctx, FRAGV alpha);
 /* blended colour (not yet clamped) from source and destination in FRAGV */
 void fragment_blend(const GlesContext *ctx, const FRAGV src[4], const FRAGV dst[4], FRAGV out[4]);
-uint32_t fragment_logic_op(unsigned int op, uint32_t s, uint32_t d);
 FRAGV fragment_dither_threshold(int x, int y);
 
 /* The pieces of fragment_process that the span chain shares, so that the
@@ -188,6 +187,30 @@ static inline void fragment_write_setup(const GlesContext *ctx, FragWrite *w)
 
 /* blending, dither, logic op and masks, then the framebuffer write of the
 ** fragment at (x, y), index `at` (§4.1.7-4.1.10) */
+/* the logic op (§4.1.10) of source s and destination d; inline so that
+** writers that fix the op per chunk have the switch folded */
+static inline uint32_t fragment_logic_op(unsigned int op, uint32_t s, uint32_t d)
+{
+    switch (op) {
+    case GL_CLEAR: return 0;
+    case GL_AND: return s & d;
+    case GL_AND_REVERSE: return s & ~d;
+    case GL_COPY: return s;
+    case GL_AND_INVERTED: return ~s & d;
+    case GL_NOOP: return d;
+    case GL_XOR: return s ^ d;
+    case GL_OR: return s | d;
+    case GL_NOR: return ~(s | d);
+    case GL_EQUIV: return ~(s ^ d);
+    case GL_INVERT: return ~d;
+    case GL_OR_REVERSE: return s | ~d;
+    case GL_COPY_INVERTED: return ~s;
+    case GL_OR_INVERTED: return ~s | d;
+    case GL_NAND: return ~(s & d);
+    default: return 0xFFFFFFFFu; /* GL_SET */
+    }
+}
+
 static inline void fragment_write(GlesContext *ctx, const FragWrite *w, int x, int y, size_t at, const FRAGV c[4])
 {
     static const uint32_t max565[4] = { 31, 63, 31, 0 }, shift565[4] = { 11, 5, 0, 0 };
@@ -226,29 +249,6 @@ static inline void fragment_write(GlesContext *ctx, const FragWrite *w, int x, i
         ((uint32_t *)ctx->color)[at] = packed;
 }
 
-/* fragment_logic_op (§4.1.10) inline, for writers that fix the op per
-** chunk: the same table */
-static inline uint32_t fragment_logic_op_inline(unsigned int op, uint32_t s, uint32_t d)
-{
-    switch (op) {
-    case GL_CLEAR: return 0;
-    case GL_AND: return s & d;
-    case GL_AND_REVERSE: return s & ~d;
-    case GL_COPY: return s;
-    case GL_AND_INVERTED: return ~s & d;
-    case GL_NOOP: return d;
-    case GL_XOR: return s ^ d;
-    case GL_OR: return s | d;
-    case GL_NOR: return ~(s | d);
-    case GL_EQUIV: return ~(s ^ d);
-    case GL_INVERT: return ~d;
-    case GL_OR_REVERSE: return s | ~d;
-    case GL_COPY_INVERTED: return ~s;
-    case GL_OR_INVERTED: return ~s | d;
-    case GL_NAND: return ~(s & d);
-    default: return 0xFFFFFFFFu; /* GL_SET */
-    }
-}
 
 /* fog.c */
 void fog_init(GlesContext *ctx);

@@ -793,7 +793,7 @@ static inline __attribute__((always_inline)) void STAGE(write_rgba8_ops)(GlesCon
 #else
         const uint32_t s = span_rgba8(ctx, b->c[j], d, kind);
 #endif
-        *at = (d & keep) | (fragment_logic_op_inline(op, s, d) & ~keep);
+        *at = (d & keep) | (fragment_logic_op(op, s, d) & ~keep);
     }
 }
 
