@@ -429,6 +429,121 @@ static inline void avx2_lod_mix(FRAGV f, const FRAGV t1[4], const FRAGV t2[4], F
     avx2_store4(out, _mm256_add_epi64(a, _mm256_sub_epi64(_mm256_srli_epi64(p, 30), _mm256_set1_epi64x(FRAG_ONE))));
 }
 
+/* {====================================================================
+** lod_choose (texsample.c) for four fragments at a time: the level-0
+** footprint rho, lambda = lod_log2(rho) and §3.7.8's decisions, with the
+** result coded as key = level | two * ktwo | (filter LINEAR) * klinear
+** (the caller's coding, as kmag, kmin, ktwo) and frac. */
+
+typedef struct Avx2LodParams {
+    int log2w, log2h;           /* level 0 is 2^log2w x 2^log2h */
+    int mode;                   /* 0: no mipmap, 1: *_MIPMAP_NEAREST, 2: *_MIPMAP_LINEAR */
+    int q;                      /* max_level */
+    int64_t cshift;             /* §3.7.8's c in 0.30 */
+    int32_t kmag, kmin, ktwo;   /* keys of lambda <= c, of lambda > c (level 0), and of `two` */
+} Avx2LodParams;
+
+/* the larger of two lanes (vpmaxsq is AVX-512) */
+AVX2_INLINE __m256i avx2_max64(__m256i a, __m256i b) { return _mm256_blendv_epi8(a, b, _mm256_cmpgt_epi64(b, a)); }
+
+/* lod_log2 of rho lanes in [0, 2^63). fx_log2's operands are all
+** non-negative and each product it forms has both factors below 2^32
+** (the mantissa's low 22 bits times fx_recip_tab <= 2^30; y < 2^22;
+** y2 < 2^14; ln1p <= y times 1/ln 2 < 2^31), so vpmuludq forms each
+** exactly and the logical shifts are its shifts. b - 1 is the exponent of
+** r as a double (r < 2^31, made exact by the 2^52 bias), y2 / 2 a shift,
+** and y3 / 3 = (y3 43691) >> 17, exact for y3 < 2^17 (here y3 < 2^6). */
+AVX2_INLINE __m256i avx2_lod_log2(__m256i rho)
+{
+    const __m256i zero = _mm256_setzero_si256(), imax = _mm256_set1_epi64x(INT32_MAX);
+    __m256i r = _mm256_srli_epi64(rho, 16);
+    r = _mm256_blendv_epi8(r, imax, _mm256_cmpgt_epi64(r, imax));
+    const __m256i r0 = _mm256_cmpeq_epi64(r, zero);
+    r = _mm256_sub_epi64(r, r0);                  /* r = 0 as 1 (so in the tables), replaced below */
+    const __m256d two52 = _mm256_set1_pd(4503599627370496.0);
+    const __m256d rd = _mm256_sub_pd(_mm256_castsi256_pd(_mm256_or_si256(r, _mm256_castpd_si256(two52))), two52);
+    const __m256i e = _mm256_srli_epi64(_mm256_castpd_si256(rd), 52);          /* b - 1 + 1023 */
+    const __m256i m = _mm256_sllv_epi64(r, _mm256_sub_epi64(_mm256_set1_epi64x(1053), e)); /* r << (31 - b) */
+    const __m256i frac = _mm256_sub_epi64(m, _mm256_set1_epi64x((int64_t)1 << 30));
+    const __m256i i = _mm256_srli_epi64(frac, 22);
+    const __m256i rt = _mm256_i64gather_epi64((const long long *)(const void *)fx_recip_tab, i, 8);
+    const __m256i lt = _mm256_i64gather_epi64((const long long *)(const void *)fx_log2_tab, i, 8);
+    const __m256i y = _mm256_srli_epi64(
+        _mm256_mul_epu32(_mm256_and_si256(frac, _mm256_set1_epi64x((1 << 22) - 1)), rt), 30);
+    const __m256i y2 = _mm256_srli_epi64(_mm256_mul_epu32(y, y), 30);
+    const __m256i y3 = _mm256_srli_epi64(_mm256_mul_epu32(y2, y), 30);
+    const __m256i ln1p = _mm256_add_epi64(_mm256_sub_epi64(y, _mm256_srli_epi64(y2, 1)),
+                                          _mm256_srli_epi64(_mm256_mul_epu32(y3, _mm256_set1_epi64x(43691)), 17));
+    __m256i l = _mm256_sub_epi64(_mm256_slli_epi64(e, 30), _mm256_set1_epi64x((int64_t)(1023 + 16) << 30));
+    l = _mm256_add_epi64(_mm256_add_epi64(l, lt),
+                         _mm256_srli_epi64(_mm256_mul_epu32(ln1p, _mm256_set1_epi64x(1549082005)), 30));
+    l = _mm256_blendv_epi8(l, _mm256_set1_epi64x(-((int64_t)17 << 30)), r0);
+    return _mm256_blendv_epi8(l, _mm256_set1_epi64x(-((int64_t)1 << 40)), _mm256_cmpeq_epi64(rho, zero));
+}
+
+/* lod_choose of fragments 0..3: key[k] and frac[k] (0 where not two).
+** The six coordinates are clamped to +-2^50 as texc_clamp does (skipped
+** when all lie in [-2^50, 2^50), where it changes nothing); s and t stay
+** interleaved, each difference (|.| <= 2^51) shifted by its axis's log2
+** size (texc_scale by a power of two, <= 2^62), and max(|a| w, |b| w) =
+** w max(|a|, |b|), so rho is the scalar maximum. Lambda is lod_log2's
+** (above); the decisions are lod_choose's in lanes: lambda > c; for
+** *_MIPMAP_NEAREST (where lambda > c >= 0) d = ceil(lambda + 1/2) - 1 =
+** ((lambda + 2^29 + 2^30 - 1) >> 30) - 1, which is the scalar 0 for
+** lambda <= 1/2 too, then min(d, q); for *_MIPMAP_LINEAR floor(lambda)
+** and frac(lambda) as the shift and mask of a positive lambda. */
+AVX2_INLINE void avx2_lod_choose4(const Avx2LodParams *p, const TexCoord *c, const TexCoord *dx,
+                                  const TexCoord *dy, int32_t key[4], FRAGV frac[4])
+{
+    __m256i v[6] = { _mm256_loadu_si256((const __m256i *)(const void *)&c[0]),
+                     _mm256_loadu_si256((const __m256i *)(const void *)&c[2]),
+                     _mm256_loadu_si256((const __m256i *)(const void *)&dx[0]),
+                     _mm256_loadu_si256((const __m256i *)(const void *)&dx[2]),
+                     _mm256_loadu_si256((const __m256i *)(const void *)&dy[0]),
+                     _mm256_loadu_si256((const __m256i *)(const void *)&dy[2]) };
+    const __m256i lim = _mm256_set1_epi64x((int64_t)1 << 50);
+    __m256i far = _mm256_setzero_si256();
+    for (int k = 0; k < 6; k++)
+        far = _mm256_or_si256(far, _mm256_add_epi64(v[k], lim));
+    if (!_mm256_testz_si256(far, _mm256_set1_epi64x(~(((int64_t)1 << 51) - 1)))) {
+        const __m256i nlim = _mm256_sub_epi64(_mm256_setzero_si256(), lim);
+        for (int k = 0; k < 6; k++)
+            v[k] = avx2_max64(_mm256_blendv_epi8(v[k], lim, _mm256_cmpgt_epi64(v[k], lim)), nlim);
+    }
+    const __m256i sh = _mm256_setr_epi64x(p->log2w, p->log2h, p->log2w, p->log2h);
+    const __m256i m01 = _mm256_sllv_epi64(avx2_max64(avx2_abs64(_mm256_sub_epi64(v[2], v[0])),
+                                                     avx2_abs64(_mm256_sub_epi64(v[4], v[0]))), sh);
+    const __m256i m23 = _mm256_sllv_epi64(avx2_max64(avx2_abs64(_mm256_sub_epi64(v[3], v[1])),
+                                                     avx2_abs64(_mm256_sub_epi64(v[5], v[1]))), sh);
+    /* (s0 s2 s1 s3) and (t0 t2 t1 t3), back to fragment order */
+    const __m256i rho = _mm256_permute4x64_epi64(
+        avx2_max64(_mm256_unpacklo_epi64(m01, m23), _mm256_unpackhi_epi64(m01, m23)), 0xD8);
+    const __m256i l = avx2_lod_log2(rho);
+    const __m256i above = _mm256_cmpgt_epi64(l, _mm256_set1_epi64x(p->cshift));
+    const __m256i lp = _mm256_and_si256(l, above);          /* lambda > 0 where above, else 0 */
+    const __m256i q = _mm256_set1_epi64x(p->q);
+    __m256i k = _mm256_set1_epi64x(p->kmin), f = _mm256_setzero_si256();
+    if (p->mode == 1) {
+        __m256i d = _mm256_sub_epi64(
+            _mm256_srli_epi64(_mm256_add_epi64(lp, _mm256_set1_epi64x(((int64_t)1 << 29) + ((int64_t)1 << 30) - 1)), 30),
+            _mm256_set1_epi64x(1));
+        d = _mm256_blendv_epi8(d, q, _mm256_cmpgt_epi64(d, q));
+        k = _mm256_or_si256(k, d);
+    } else if (p->mode == 2) {
+        const __m256i d = _mm256_srli_epi64(lp, 30);
+        const __m256i two = _mm256_cmpgt_epi64(q, d);        /* floor(lambda) < q */
+        k = _mm256_or_si256(k, _mm256_blendv_epi8(q, d, two));
+        k = _mm256_or_si256(k, _mm256_and_si256(two, _mm256_set1_epi64x(p->ktwo)));
+        f = _mm256_and_si256(_mm256_and_si256(lp, _mm256_set1_epi64x(((int64_t)1 << 30) - 1)), two);
+    }
+    k = _mm256_blendv_epi8(_mm256_set1_epi64x(p->kmag), k, above);
+    _mm_storeu_si128((__m128i *)(void *)key,
+                     _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(k, _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6))));
+    _mm256_storeu_si256((__m256i *)(void *)frac, f);
+}
+
+/* }==================================================================== */
+
 /* rect_linear_s of the four pixel columns x0 + k[0..3], stored as the s of
 ** tc[0..3] with t0 as their t: the same double operations (a + b (x + 1/2),
 ** scaled by 2^32, then floor(v + 1/2)), and the conversion to int64 exact

@@ -102,6 +102,21 @@ typedef struct LodChoice {
     FRAGV frac;
 } LodChoice;
 
+/* §3.7.8: c = 0.5 when MAG is LINEAR and MIN is NEAREST_MIPMAP_*, else 0 */
+static inline LODV lod_cshift(const Texture *t)
+{
+    const unsigned int minf = t->min_filter;
+    return (t->mag_filter == GL_LINEAR && (minf == GL_NEAREST_MIPMAP_NEAREST || minf == GL_NEAREST_MIPMAP_LINEAR))
+               ? lod_from_ratio(1, 2) : 0;
+}
+
+/* the filter of a minified fragment (lambda > c) */
+static inline unsigned int lod_min_filter(unsigned int minf)
+{
+    return (minf == GL_NEAREST || minf == GL_NEAREST_MIPMAP_NEAREST || minf == GL_NEAREST_MIPMAP_LINEAR) ? GL_NEAREST
+                                                                                                        : GL_LINEAR;
+}
+
 SAMPLE_INLINE LodChoice lod_choose(const Texture *t, const TexCoord *c, const TexCoord *dx, const TexCoord *dy)
 {
     LodChoice ch = { 0, 0, t->mag_filter, 0 };
@@ -119,13 +134,9 @@ SAMPLE_INLINE LodChoice lod_choose(const Texture *t, const TexCoord *c, const Te
     if (d4 > rho) rho = d4;
     LODV lambda = lod_log2(rho);
     unsigned int minf = t->min_filter;
-    /* §3.7.8: c = 0.5 when MAG is LINEAR and MIN is NEAREST_MIPMAP_* */
-    LODV cshift = (t->mag_filter == GL_LINEAR && (minf == GL_NEAREST_MIPMAP_NEAREST || minf == GL_NEAREST_MIPMAP_LINEAR))
-                      ? lod_from_ratio(1, 2) : 0;
-    if (lambda <= cshift)
+    if (lambda <= lod_cshift(t))
         return ch;
-    ch.filter = (minf == GL_NEAREST || minf == GL_NEAREST_MIPMAP_NEAREST || minf == GL_NEAREST_MIPMAP_LINEAR)
-                    ? GL_NEAREST : GL_LINEAR;
+    ch.filter = lod_min_filter(minf);
     if (minf == GL_NEAREST || minf == GL_LINEAR)
         return ch;
     int q = t->max_level;
@@ -240,58 +251,104 @@ static inline int linear_block(const Texture *t, int n, const TexCoord *c, FRAGV
     return 0;
 }
 
+#if SIMD_X86
+/* a LodChoice as one int, so that runs of fragments that read the same
+** levels the same way are runs of equal keys */
+#define LOD_KEY_TWO 0x100
+#define LOD_KEY_LINEAR 0x200
+static inline int32_t lod_key(int level, int two, unsigned int filter)
+{
+    return level | (two ? LOD_KEY_TWO : 0) | (filter == GL_LINEAR ? LOD_KEY_LINEAR : 0);
+}
+
+#pragma GCC push_options
+#pragma GCC target("avx2")
 /* sample_w of n fragments with the vector kernel doing the GL_LINEAR
-** samples: each fragment's level of detail first (lod_choose), then each
-** run of neighbouring fragments that read the same levels with GL_LINEAR
-** through sample_linear4 (a level's run, and the next level's into
-** `second`), other samples one by one, then the mix of two levels. The
-** same arithmetic per sample as sample_w; returns 0 where it does not
-** apply (as linear_block) */
+** samples: each fragment's level of detail first (lod_choose, in the fixed
+** build four at a time by avx2_lod_choose4), as a key; then each run of
+** neighbouring fragments with the same key through sample_linear4 (a
+** level's run, and the next level's into `second`), other samples one by
+** one, and the run's mix of two levels. The same arithmetic per sample as
+** sample_w; returns 0 where it does not apply (as linear_block) */
 static int lod_block(const Texture *t, int n, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
                      FRAGV *out, size_t stride, const FRAGV *unorm, unsigned int ws, unsigned int wt)
 {
-#if SIMD_X86
     if (!linear_kernel_fits(t, ws, wt) || n > SPAN_SAMPLE_MAX)
         return 0;
-    LodChoice ch[SPAN_SAMPLE_MAX];
+    /* key[1 + j] is fragment j's; key[0] and those past n are -1 (no key) */
+    int32_t key[SPAN_SAMPLE_MAX + 9];
+    FRAGV frac[SPAN_SAMPLE_MAX];
     FRAGV second[SPAN_SAMPLE_MAX][4];
-    int any_two = 0;
-    for (int j = 0; j < n; j++) {
-        ch[j] = lod_choose(t, &c[j], &dx[j], &dy[j]);
-        any_two |= ch[j].two;
+    int j = 0;
+#if NUM_IS_FIXED
+    const unsigned int minf = t->min_filter;
+    const Avx2LodParams p = {
+        __builtin_ctz((unsigned)t->level[0].width), __builtin_ctz((unsigned)t->level[0].height),
+        minf == GL_NEAREST || minf == GL_LINEAR ? 0
+        : (minf == GL_NEAREST_MIPMAP_NEAREST || minf == GL_LINEAR_MIPMAP_NEAREST ? 1 : 2),
+        t->max_level, lod_cshift(t),
+        lod_key(0, 0, t->mag_filter), lod_key(0, 0, lod_min_filter(minf)), LOD_KEY_TWO,
+    };
+    for (; j + 4 <= n; j += 4)
+        avx2_lod_choose4(&p, c + j, dx + j, dy + j, key + 1 + j, frac + j);
+    if (j < n && n >= 4) {      /* the last four again: the same values where they overlap */
+        avx2_lod_choose4(&p, c + n - 4, dx + n - 4, dy + n - 4, key + 1 + n - 4, frac + n - 4);
+        j = n;
     }
-    for (int j = 0; j < n;) {
-        const LodChoice *cj = &ch[j];
-        int e = j + 1;
-        while (e < n && ch[e].level == cj->level && ch[e].two == cj->two && ch[e].filter == cj->filter)
-            e++;
-        const int m4 = cj->filter == GL_LINEAR ? (e - j) & ~3 : 0;
-        for (int k = 0; k <= cj->two; k++) {
+#endif
+    for (; j < n; j++) {
+        const LodChoice ch = lod_choose(t, &c[j], &dx[j], &dy[j]);
+        key[1 + j] = lod_key(ch.level, ch.two, ch.filter);
+        frac[j] = ch.frac;
+    }
+    key[0] = -1;
+    _mm256_storeu_si256((__m256i *)(void *)(key + 1 + n), _mm256_set1_epi32(-1));
+    /* bit j: fragment j starts a run */
+    uint64_t starts = 0;
+    for (int i = 0; i < n; i += 8) {
+        const __m256i same = _mm256_cmpeq_epi32(_mm256_loadu_si256((const __m256i *)(const void *)(key + 1 + i)),
+                                                _mm256_loadu_si256((const __m256i *)(const void *)(key + i)));
+        starts |= (uint64_t)(~(unsigned)_mm256_movemask_ps(_mm256_castsi256_ps(same)) & 0xFF) << i;
+    }
+    if (n < 64)
+        starts &= ((uint64_t)1 << n) - 1;
+    for (j = 0; j < n;) {
+        starts &= starts - 1;                      /* the run that starts at j */
+        const int e = starts ? __builtin_ctzll(starts) : n;
+        const int32_t kj = key[1 + j];
+        const int level = kj & 0xFF, two = (kj & LOD_KEY_TWO) != 0;
+        const unsigned int filter = kj & LOD_KEY_LINEAR ? GL_LINEAR : GL_NEAREST;
+        const int m4 = filter == GL_LINEAR ? (e - j) & ~3 : 0;
+        for (int k = 0; k <= two; k++) {
             FRAGV *dst = k ? second[j] : out + (size_t)j * stride;
             const size_t dstride = k ? 4 : stride;
-            const int done = m4 ? sample_linear4(&t->level[cj->level + k], m4, c + j, dst, dstride, ws == GL_REPEAT,
+            const int done = m4 ? sample_linear4(&t->level[level + k], m4, c + j, dst, dstride, ws == GL_REPEAT,
                                                  wt == GL_REPEAT)
                                 : 0;
             for (int i = done; i < e - j; i++)
-                sample_level(t, cj->level + k, cj->filter, c[j + i].s, c[j + i].t, dst + (size_t)i * dstride, unorm,
-                             ws, wt, 1);
+                sample_level(t, level + k, filter, c[j + i].s, c[j + i].t, dst + (size_t)i * dstride, unorm, ws,
+                             wt, 1);
         }
+        if (two)
+            for (int i = j; i < e; i++)
+#if NUM_IS_FIXED
+                avx2_lod_mix(frac[i], out + (size_t)i * stride, second[i], out + (size_t)i * stride);
+#else
+                lod_mix(frac[i], out + (size_t)i * stride, second[i], out + (size_t)i * stride);
+#endif
         j = e;
     }
-    if (any_two)
-        for (int j = 0; j < n; j++)
-            if (ch[j].two)
-#if NUM_IS_FIXED
-                avx2_lod_mix(ch[j].frac, out + (size_t)j * stride, second[j], out + (size_t)j * stride);
-#else
-                lod_mix(ch[j].frac, out + (size_t)j * stride, second[j], out + (size_t)j * stride);
-#endif
     return 1;
+}
+#pragma GCC pop_options
 #else
+static int lod_block(const Texture *t, int n, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
+                     FRAGV *out, size_t stride, const FRAGV *unorm, unsigned int ws, unsigned int wt)
+{
     (void)t, (void)n, (void)c, (void)dx, (void)dy, (void)out, (void)stride, (void)unorm, (void)ws, (void)wt;
     return 0;
-#endif
 }
+#endif
 
 /* every [wrap: repeat, clamp, other][nearest, linear, with a level of
 ** detail] of one instruction set, with its names from SFX */
