@@ -254,6 +254,7 @@ static inline int linear_block(const Texture *t, int n, const TexCoord *c, FRAGV
 #if SIMD_X86
 /* a LodChoice as one int, so that runs of fragments that read the same
 ** levels the same way are runs of equal keys */
+_Static_assert(SPAN_SAMPLE_MAX <= 64, "lod_block marks run starts in a 64-bit mask");
 #define LOD_KEY_TWO 0x100
 #define LOD_KEY_LINEAR 0x200
 static inline int32_t lod_key(int level, int two, unsigned int filter)
