@@ -68,13 +68,33 @@ static inline void STAGE(neighbours1)(const TriSetup *t, SpanBuf *b, int j)
     wgt_persp_any(&t->wgt, ey, b->py[j]);
 }
 
+#if CHAIN_SIMD
+/* the right and upper neighbours' weights of four fragments from their edge
+** values; 0 where a lane leaves the kernels' ranges */
+static inline int STAGE(neighbours4)(const WgtSetup *ws, const __m256i ex[3], const __m256i ey[3], WGT (*px)[3],
+                                     WGT (*py)[3])
+{
+#if NUM_IS_FIXED
+    __m256i lx[3], ly[3];
+    if (!avx2_persp_any4(ws, ex, lx) || !avx2_persp_any4(ws, ey, ly))
+        return 0;
+    avx2_store_wgt4(lx, px);
+    avx2_store_wgt4(ly, py);
+    return 1;
+#else
+    /* wgt_persp_any is wgt_persp in this build */
+    return v4_persp4(ws, ex, px) && v4_persp4(ws, ey, py);
+#endif
+}
+#endif
+
 /* the right and upper neighbours' weights, shared by every unit whose
 ** filter needs a level of detail */
 static void STAGE(stage_neighbours)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     (void)ctx;
     int j = 0;
-#if CHAIN_SIMD && NUM_IS_FIXED
+#if CHAIN_SIMD
     /* the neighbours' edge values are the fragment's plus ea or eb: the
     ** same steps from e0 + ea and e0 + eb */
     const WgtSetup ws = t->wgt;
@@ -86,31 +106,11 @@ static void STAGE(stage_neighbours)(GlesContext *ctx, const TriSetup *t, SpanBuf
     const int n = b->n;
     WGT (*const px)[3] = b->px, (*const py)[3] = b->py;
     for (; j + 4 <= n; j += 4) {
-        __m256i ex[3], ey[3], lx[3], ly[3];
-        avx2_edges4(&edx, &b->k[j], ex);
-        avx2_edges4(&edy, &b->k[j], ey);
-        if (avx2_persp_any4(&ws, ex, lx) && avx2_persp_any4(&ws, ey, ly)) {
-            avx2_store_wgt4(lx, &px[j]);
-            avx2_store_wgt4(ly, &py[j]);
-        } else {
-            /* a lane out of the kernel's ranges: the group by the scalar code */
-            for (int k = j; k < j + 4; k++)
-                STAGE(neighbours1)(t, b, k);
-        }
-    }
-#elif CHAIN_SIMD
-    /* wgt_persp_any is wgt_persp in this build */
-    const WgtSetup ws = t->wgt;
-    const int64_t ex0[3] = { b->e0[0] + t->ea[0], b->e0[1] + t->ea[1], b->e0[2] + t->ea[2] };
-    const int64_t ey0[3] = { b->e0[0] + t->eb[0], b->e0[1] + t->eb[1], b->e0[2] + t->eb[2] };
-    Edges4 edx, edy;
-    avx2_edges4_setup(ex0, t->ea, &edx);
-    avx2_edges4_setup(ey0, t->ea, &edy);
-    for (; j + 4 <= b->n; j += 4) {
         __m256i ex[3], ey[3];
         avx2_edges4(&edx, &b->k[j], ex);
         avx2_edges4(&edy, &b->k[j], ey);
-        if (!v4_persp4(&ws, ex, &b->px[j]) || !v4_persp4(&ws, ey, &b->py[j]))
+        if (!STAGE(neighbours4)(&ws, ex, ey, &px[j], &py[j]))
+            /* a lane out of the kernels' ranges: the group by the scalar code */
             for (int k = j; k < j + 4; k++)
                 STAGE(neighbours1)(t, b, k);
     }
