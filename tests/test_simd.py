@@ -311,9 +311,13 @@ def test_fragment_weights_kernel_matches_scalar():
         e[:, 0] = area - e[:, 1] - e[:, 2]
         scale = rng.integers(0, 3, (1024, 1))
         e >>= scale * rng.integers(0, 20, (1024, 1))
-        bad = rng.random(1024) < 0.02
-        e[bad, rng.integers(0, 3)] = -int(rng.integers(1, 1 << 20))
-        wide = rng.random(1024) < 0.02
+        # outside the kernels' ranges but inside the scalar code's domain:
+        # for an affine triangle, negative values of at most the area; for
+        # one that is not, e_i >> eshift just past 31 bits (wgt_persp's
+        # products assume e_i >= 0 there, as every covered fragment has)
+        bad = (rng.random(1024) < 0.02) & (affine == 1)
+        e[bad, rng.integers(0, 3)] = -int(rng.integers(1, area + 1))
+        wide = (rng.random(1024) < 0.02) & (affine == 0)
         e[wide, 1] = (1 << (31 + eshift)) + int(rng.integers(0, 1 << 20))
         e[(e.sum(axis=1) <= 0)] = [area, 0, 0]
         vec, base = (_persp(simd, eshift, lin_recip, mant, qshift, affine, e) for simd in (1, 0))
