@@ -183,7 +183,6 @@ AVX2_INLINE __m256i avx2_div_pow2v(__m256i v, __m256i k)
     return avx2_negate_where(_mm256_srlv_epi64(avx2_negate_where(v, sign), k), sign);
 }
 
-
 /* four fragments' s and t (lanes = fragments) stored as TexCoord out[0..3] */
 AVX2_INLINE void avx2_store_st4(__m256i s, __m256i t, TexCoord *out)
 {
@@ -259,7 +258,6 @@ AVX2_INLINE int avx2_fits_i32(__m256i v)
     return _mm256_testz_si256(_mm256_or_si256(_mm256_cmpgt_epi64(lo, v), _mm256_cmpgt_epi64(v, hi)),
                               _mm256_set1_epi64x(-1));
 }
-
 
 _Static_assert(sizeof(TexCoord) == 2 * sizeof(TEXC), "TexCoord is s then t");
 
@@ -415,8 +413,6 @@ static inline void avx2_sample_linear(const TexImage *li, int n, const TexCoord 
                               out + (size_t)(j + k) * stride);
     }
 }
-
-
 
 /* the trilinear mix t1 + frag_mul(f, t2 - t1) of texels in [0, 2^30]:
 ** t2 - t1 and f fit vpmuldq's operands, and adding 2^60 before the shift
@@ -656,7 +652,6 @@ AVX2_INLINE int avx2_persp_any4(const WgtSetup *s, const __m256i e[3], __m256i o
     return 1;
 }
 
-
 /* four fragments' weights l[0..2] (lanes whose low 32 bits are the WGT
 ** values) stored as out[lane][0..2] */
 AVX2_INLINE void avx2_store_wgt4(const __m256i l[3], WGT (*out)[3])
@@ -668,9 +663,9 @@ AVX2_INLINE void avx2_store_wgt4(const __m256i l[3], WGT (*out)[3])
 }
 
 /* wgt_persp of four fragments of a triangle that is not affine, edge values
-** e[lane]; 0 (nothing written) where a lane leaves the kernel's ranges, for
-** the scalar code (edge values as lanes e[i]). Ranges: e_i >= 0 and e_i >> eshift < 2^31 (a covered
-** fragment's), mant_i < 2^30, so each n_i = (e_i mant_i) >> qshift_i is a
+** as lanes e[i]; 0 (nothing written) where a lane leaves the kernel's
+** ranges, for the scalar code. Ranges: e_i >= 0 and e_i >> eshift < 2^31 (a
+** covered fragment's), mant_i < 2^30, so each n_i = (e_i mant_i) >> qshift_i is a
 ** 32x32 unsigned product (vpmuludq) and their sum den < 3 2^61 fits int64.
 ** The normalising shift is the bit length of den >> 32 (below 2^31, so its
 ** double is exact and its exponent gives the length). Lanes need
@@ -755,7 +750,6 @@ AVX2_INLINE int avx2_linear4(const WgtSetup *s, const int64_t e[4][3], __m256i l
     return avx2_linear4v(s, _mm256_setr_epi64x(e[0][1], e[1][1], e[2][1], e[3][1]),
                          _mm256_setr_epi64x(e[0][2], e[1][2], e[2][2], e[3][2]), l);
 }
-
 
 /* avx2_linear4 of edge lanes r1, r2 (of e[lane][1], e[lane][2]) that the
 ** caller has checked: each >= 0 and below 2^(31 + eshift); hi is

@@ -86,17 +86,19 @@ typedef struct ChainStages {
 #undef CHAIN_SIMD
 #if NUM_IS_FIXED
 /* the kernels of four points' edge values e[lane] as the span stages run
-** them: wgt_persp_any (any = 1) or wgt_persp; 0 where they leave a group to
-** the scalar code */
-static int persp4_avx2(const WgtSetup *s, int any, const int64_t e[4][3], WGT out[4][3])
+** them: wgt_persp_any (any = 1) or wgt_persp (persp4_avx2, the weights
+** stage's); 0 where they leave a group to the scalar code */
+static int debug_persp4_avx2(const WgtSetup *s, int any, const int64_t e[4][3], WGT out[4][3])
 {
     __m256i ev[3], l[3];
     for (int i = 0; i < 3; i++)
         ev[i] = _mm256_setr_epi64x(e[0][i], e[1][i], e[2][i], e[3][i]);
-    const int ok = any ? avx2_persp_any4(s, ev, l) : s->affine ? avx2_linear4v(s, ev[1], ev[2], l) : avx2_persp4(s, ev, l);
-    if (ok)
-        avx2_store_wgt4(l, out);
-    return ok;
+    if (!any)
+        return persp4_avx2(s, ev, out);
+    if (!avx2_persp_any4(s, ev, l))
+        return 0;
+    avx2_store_wgt4(l, out);
+    return 1;
 }
 #endif
 #pragma GCC pop_options
@@ -124,7 +126,7 @@ static int debug_persp(int any, int simd, int eshift, int64_t lin_recip, const i
         for (; j + 4 <= n; j += 4) {
             const int64_t (*ej)[3] = (const int64_t (*)[3])(e + 3 * (size_t)j);
             WGT (*oj)[3] = (WGT (*)[3])(out + 3 * (size_t)j);
-            if (!persp4_avx2(&s, any, ej, oj)) {
+            if (!debug_persp4_avx2(&s, any, ej, oj)) {
                 if (any)
                     break;
                 /* stage_persp's fallback: the scalar code for the group */

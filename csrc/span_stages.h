@@ -10,51 +10,54 @@
 /* {====================================================================
 ** weights */
 
+/* the weights of slot j */
+static inline void STAGE(persp1)(const TriSetup *t, SpanBuf *b, int j)
+{
+    int64_t e[3];
+    chunk_edges(t, b, b->k[j], e);
+    wgt_persp(&t->wgt, e, b->p[j]);
+}
+
+#if CHAIN_SIMD
+/* the weights of four fragments from their edge values (wgt_persp is
+** wgt_linear where the triangle is affine); 0 where a lane leaves the
+** kernels' ranges */
+static inline int STAGE(persp4)(const WgtSetup *ws, const __m256i e[3], WGT (*p)[3])
+{
+#if NUM_IS_FIXED
+    __m256i l[3];
+    if (ws->affine ? !avx2_linear4v(ws, e[1], e[2], l) : !avx2_persp4(ws, e, l))
+        return 0;
+    avx2_store_wgt4(l, p);
+    return 1;
+#else
+    return v4_persp4(ws, e, p);
+#endif
+}
+#endif
+
 static void STAGE(stage_persp)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     (void)ctx;
     int j = 0;
-#if CHAIN_SIMD && NUM_IS_FIXED
-    /* wgt_persp is wgt_linear where the triangle is affine; the scalar
-    ** code takes a group of four that leaves the kernels' ranges */
+#if CHAIN_SIMD
+    /* the loop's constants in locals (stores to b->p could alias t and b) */
     const WgtSetup ws = t->wgt;
     Edges4 ed;
     avx2_edges4_setup(b->e0, t->ea, &ed);
     const int n = b->n;
     WGT (*const p)[3] = b->p;
     for (; j + 4 <= n; j += 4) {
-        __m256i e[3], l[3];
-        avx2_edges4(&ed, &b->k[j], e);
-        if (ws.affine ? !avx2_linear4v(&ws, e[1], e[2], l) : !avx2_persp4(&ws, e, l)) {
-            for (int k = 0; k < 4; k++) {
-                int64_t ek[3];
-                chunk_edges(t, b, b->k[j + k], ek);
-                wgt_persp(&ws, ek, p[j + k]);
-            }
-            continue;
-        }
-        avx2_store_wgt4(l, &p[j]);
-    }
-#elif CHAIN_SIMD
-    const WgtSetup ws = t->wgt;
-    Edges4 ed;
-    avx2_edges4_setup(b->e0, t->ea, &ed);
-    for (; j + 4 <= b->n; j += 4) {
         __m256i e[3];
         avx2_edges4(&ed, &b->k[j], e);
-        if (!v4_persp4(&ws, e, &b->p[j]))
-            for (int k = j; k < j + 4; k++) {
-                int64_t ek[3];
-                chunk_edges(t, b, b->k[k], ek);
-                wgt_persp(&ws, ek, b->p[k]);
-            }
+        if (!STAGE(persp4)(&ws, e, &p[j]))
+            /* a lane out of the kernels' ranges: the group by the scalar code */
+            for (int k = j; k < j + 4; k++)
+                STAGE(persp1)(t, b, k);
     }
 #endif
-    for (; j < b->n; j++) {
-        int64_t e[3];
-        chunk_edges(t, b, b->k[j], e);
-        wgt_persp(&t->wgt, e, b->p[j]);
-    }
+    for (; j < b->n; j++)
+        STAGE(persp1)(t, b, j);
 }
 
 /* the right and upper neighbours' weights of slot j */
@@ -576,28 +579,28 @@ UNIT_STAGES(3)
 #undef UNIT_STAGES
 
 /* fragment_fog of one fragment */
-static inline void STAGE(chunk_fog)(FRAGV c[4], FRAGV f, const FRAGV fc[3])
-{
 #if CHAIN_SIMD
-    /* the colour is clamped first; f and the fog colour must fit */
-    const V4 v = v4_load(c), fv = v4_set1(f), g = v4_set1(FRAG_ONE - f), fog = v4_rgb0(fc);
-    if (v4_fits(fv) && v4_fits(g) && v4_fits(fog)) {
-        v4_store(c, v4_keep_alpha(v4_add(v4_mul01(fv, v4_clamp01(v)), v4_mul01(g, fog)), v));
-        return;
-    }
-#endif
-    fragment_fog(c, f, fc);
-}
-
-#if CHAIN_SIMD
-/* chunk_fog of a factor f in [0, 1] (so f and 1 - f fit) with the fog
-** colour's RGB as `fog`, which fits */
+/* fragment_fog of a factor f in [0, 1] (so f and 1 - f fit) with the fog
+** colour's RGB as `fog`, which fits; the colour is clamped first */
 static inline void STAGE(chunk_fog_fits)(FRAGV c[4], FRAGV f, V4 fog)
 {
     const V4 v = v4_load(c);
     v4_store(c, v4_keep_alpha(v4_add(v4_mul01(v4_set1(f), v4_clamp01(v)), v4_mul01(v4_set1(FRAG_ONE - f), fog)), v));
 }
 #endif
+
+static inline void STAGE(chunk_fog)(FRAGV c[4], FRAGV f, const FRAGV fc[3])
+{
+#if CHAIN_SIMD
+    /* f and the fog colour must fit */
+    const V4 fog = v4_rgb0(fc);
+    if (v4_fits(v4_set1(f)) && v4_fits(v4_set1(FRAG_ONE - f)) && v4_fits(fog)) {
+        STAGE(chunk_fog_fits)(c, f, fog);
+        return;
+    }
+#endif
+    fragment_fog(c, f, fc);
+}
 
 /* fog (§3.8) with the factor interpolated, or from the interpolated distance */
 static void STAGE(stage_fog)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
