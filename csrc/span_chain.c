@@ -275,6 +275,18 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
 
 void span_chain_compose(GlesContext *ctx) { ctx->chain_len = compose(ctx, ctx->chain, 0); }
 
+/* asks for the cache lines of `bytes` bytes at p ahead of the chain's
+** stages: the writer reads the framebuffer last, after the texture work
+** that can hide the wait for it (a row of a scattered small primitive is
+** rarely cached) */
+static void prefetch_bytes(const void *p, size_t bytes)
+{
+    const char *c = p;
+    for (size_t i = 0; i < bytes; i += 64)
+        __builtin_prefetch(c + i, 1, 3);
+    __builtin_prefetch(c + bytes - 1, 1, 3);
+}
+
 /* one row's run [x0, x0 + n) through `count` stages, a chunk at a time */
 static void run(GlesContext *ctx, const SpanStage *stages, int count, const TriSetup *t, const RectSetup *r, int y,
                 int x0, int n)
@@ -282,6 +294,13 @@ static void run(GlesContext *ctx, const SpanStage *stages, int count, const TriS
     SpanBuf b;
     b.y = y;
     b.rect = r;
+    if (n > 0) {
+        const size_t at = (size_t)y * (size_t)ctx->width + (size_t)x0;
+        const size_t bpp = ctx->color_format == GLES_COLOR_RGB565 ? 2 : 4;
+        prefetch_bytes((const char *)ctx->color + at * bpp, (size_t)n * bpp);
+        if (ctx->depth_test && ctx->depth)
+            prefetch_bytes(ctx->depth + at, (size_t)n * 4);
+    }
     for (int start = 0; start < n; start += SPAN_CHUNK) {
         int len = n - start < SPAN_CHUNK ? n - start : SPAN_CHUNK;
         b.x0 = x0 + start;

@@ -505,8 +505,12 @@ static void STAGE(stage_fetch_rect)(GlesContext *ctx, const TriSetup *t, SpanBuf
                 b->ty[j] = (TexCoord){ b->tc[j].s, t1 };
             }
         } else {
+#if NUM_IS_FIXED
+            sprite_s_chunk(r->sprite_x, r->sprite_size, b, t0, b->tc);
+#else
             for (int j = 0; j < b->n; j++)
                 b->tc[j] = (TexCoord){ sprite_s(r->sprite_x, r->sprite_size, b->x0 + b->k[j]), t0 };
+#endif
         }
         break;
     }
@@ -876,8 +880,10 @@ static void STAGE(stage_write_565_alpha)(GlesContext *ctx, const TriSetup *t, Sp
         const FRAGV t_d = t_row[(b->x0 + b->k[j]) & 3];
         FRAGV dv[4] = { ctx->unorm5[d >> 11], ctx->unorm6[(d >> 5) & 63], ctx->unorm5[d & 31], 0 };
 #if CHAIN_SIMD && NUM_IS_FIXED
+        /* dv goes to the register lane by lane: a vector load of the four
+        ** scalar stores just made would wait for them (no store forwarding) */
         const V4 cv = v4_clamp01(v4_load(c)), va = v4_alpha(cv);
-        const V4 v = v4_add(v4_mul01(cv, va), v4_mul01(v4_load(dv), v4_one_minus(va)));
+        const V4 v = v4_add(v4_mul01(cv, va), v4_mul01(v4_rgb0(dv), v4_one_minus(va)));
         dst[b->k[j]] = (uint16_t)v4_pack565(v, dither, t_d);
 #else
         FRAGV sa = frag_clamp01(c[3]), da = FRAG_ONE - sa;
