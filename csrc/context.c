@@ -103,7 +103,12 @@ GlesContext *gles_context_create(int width, int height, int color_format,
     ctx->color = calloc(npix, color_format == GLES_COLOR_RGB565 ? 2 : 4);
     ctx->depth = depth_bits ? calloc(npix, sizeof(uint32_t)) : NULL;
     ctx->stencil = stencil_bits ? calloc(npix, 1) : NULL;
-    if (!ctx->color || (depth_bits && !ctx->depth) || (stencil_bits && !ctx->stencil)) {
+    for (int i = 0; i < 2; i++) {
+        ctx->nb_key[i] = calloc((size_t)width + 1, sizeof *ctx->nb_key[i]);
+        ctx->nb_w[i] = calloc((size_t)width + 1, sizeof *ctx->nb_w[i]);
+    }
+    if (!ctx->color || (depth_bits && !ctx->depth) || (stencil_bits && !ctx->stencil) || !ctx->nb_key[0]
+        || !ctx->nb_key[1] || !ctx->nb_w[0] || !ctx->nb_w[1]) {
         gles_context_destroy(ctx);
         return NULL;
     }
@@ -181,6 +186,10 @@ void gles_context_destroy(GlesContext *ctx)
     free(ctx->color);
     free(ctx->depth);
     free(ctx->stencil);
+    for (int i = 0; i < 2; i++) {
+        free(ctx->nb_key[i]);
+        free(ctx->nb_w[i]);
+    }
     free(ctx->verts);
     free(ctx->vert_stamp);
     free(ctx);

@@ -37,6 +37,7 @@ static int64_t line_minor(int64_t na, int64_t dn, int64_t n, int64_t D)
 static void line_setup(GlesContext *ctx, TriSetup *t, const Vertex *a, const Vertex *b, const Vertex *pv,
                        int64_t len)
 {
+    t->serial = ++ctx->prim_serial;
     t->v[0] = a;
     t->v[1] = t->v[2] = b;
     t->col[0] = a->color;

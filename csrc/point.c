@@ -43,6 +43,7 @@ NUM point_derived_size(const GlesContext *ctx, const Vertex *v)
 /* a TriSetup whose three vertices are the point: every weight lands on it */
 static void point_setup(GlesContext *ctx, TriSetup *t, const Vertex *v)
 {
+    t->serial = ++ctx->prim_serial;
     t->v[0] = t->v[1] = t->v[2] = v;
     t->col[0] = t->col[1] = t->col[2] = v->color;
     for (int k = 0; k < 4; k++)
@@ -58,7 +59,6 @@ static void point_setup(GlesContext *ctx, TriSetup *t, const Vertex *v)
     for (int i = 0; i < 3; i++)
         t->ea[i] = t->eb[i] = t->ec[i] = 0;
     t->depth_offset = 0;
-    (void)ctx;
 }
 
 void raster_point(GlesContext *ctx, const Vertex *v)

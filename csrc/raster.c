@@ -205,6 +205,7 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
     const int drop_last = (ctx->debug & GLES_DEBUG_DROP_LAST_PIXEL) != 0;
     TriSetup t;
     int tie[3];
+    t.serial = ++ctx->prim_serial;
     t.v[0] = a;
     t.v[1] = b;
     t.v[2] = c;

@@ -19,6 +19,7 @@ struct TriSetup {
     const FRAGV *col[3];    /* each vertex's colour for the visible face */
     int smooth;             /* colours vary over the triangle */
     unsigned int tex_projective;  /* bit per unit whose q varies (divide by q) */
+    uint64_t serial;        /* ctx->prim_serial of this setup (stage_neighbours' row cache) */
     int64_t depth_offset;         /* polygon offset in depth units, 0 when off */
     FRAGV flat[4];          /* colour of the provoking vertex */
     uint32_t flat_packed;   /* the same in the framebuffer's format */

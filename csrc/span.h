@@ -95,6 +95,10 @@ struct SpanBuf {
     TexCoord tc[SPAN_CHUNK], tx[SPAN_CHUNK], ty[SPAN_CHUNK];   /* one unit's, and its neighbours' */
 };
 
+/* 1 when the four slots from k are four neighbouring pixels (offsets
+** ascend, so the last one tells) */
+static inline int slots_adjacent4(const uint8_t *k) { return k[3] == k[0] + 3; }
+
 #if NUM_IS_FIXED
 /* sprite_s of the chunk's fragments into tc[j].s, with t0 as t. From one
 ** fragment to the next pixel the numerator grows by GLES_SUBPIXEL_ONE, so

@@ -14,6 +14,7 @@
 ** per fragment, so the images are identical: what goes is the per-fragment
 ** state dispatch, and the colour work for fragments that fail the tests.
 */
+#include <string.h>
 #include "span.h"
 #include "fragment.h"
 #include "texture.h"

@@ -60,42 +60,51 @@ static void STAGE(stage_persp)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
         STAGE(persp1)(t, b, j);
 }
 
-/* the right and upper neighbours' weights of slot j */
-static inline void STAGE(neighbours1)(const TriSetup *t, SpanBuf *b, int j)
+/* wgt_persp_any at slot j's edge values plus d: its right neighbour's
+** weights for d = ea, its upper neighbour's for d = eb */
+static inline void STAGE(neighbour1)(const TriSetup *t, const SpanBuf *b, int j, const int64_t d[3], WGT out[3])
 {
     int64_t e[3];
     chunk_edges(t, b, b->k[j], e);
-    int64_t ex[3] = { e[0] + t->ea[0], e[1] + t->ea[1], e[2] + t->ea[2] };
-    int64_t ey[3] = { e[0] + t->eb[0], e[1] + t->eb[1], e[2] + t->eb[2] };
-    wgt_persp_any(&t->wgt, ex, b->px[j]);
-    wgt_persp_any(&t->wgt, ey, b->py[j]);
+    const int64_t en[3] = { e[0] + d[0], e[1] + d[1], e[2] + d[2] };
+    wgt_persp_any(&t->wgt, en, out);
 }
 
 #if CHAIN_SIMD
-/* the right and upper neighbours' weights of four fragments from their edge
-** values; 0 where a lane leaves the kernels' ranges */
-static inline int STAGE(neighbours4)(const WgtSetup *ws, const __m256i ex[3], const __m256i ey[3], WGT (*px)[3],
-                                     WGT (*py)[3])
+/* one neighbour's weights of four fragments from its edge values; 0 where
+** a lane leaves the kernels' ranges */
+static inline int STAGE(neighbour4)(const WgtSetup *ws, const __m256i e[3], WGT (*out)[3])
 {
 #if NUM_IS_FIXED
-    __m256i lx[3], ly[3];
-    if (!avx2_persp_any4(ws, ex, lx) || !avx2_persp_any4(ws, ey, ly))
+    __m256i l[3];
+    if (!avx2_persp_any4(ws, e, l))
         return 0;
-    avx2_store_wgt4(lx, px);
-    avx2_store_wgt4(ly, py);
+    avx2_store_wgt4(l, out);
     return 1;
 #else
     /* wgt_persp_any is wgt_persp in this build */
-    return v4_persp4(ws, ex, px) && v4_persp4(ws, ey, py);
+    return v4_persp4(ws, e, out);
 #endif
 }
 #endif
 
-/* the right and upper neighbours' weights, shared by every unit whose
-** filter needs a level of detail */
+/* The right and upper neighbours' weights, shared by every unit whose
+** filter needs a level of detail. The upper neighbour of (x, y) is the
+** point (x, y + 1), which is the right neighbour of the fragment (x - 1,
+** y + 1): rows run upwards, so each row keeps its upper neighbours' weights
+** in ctx->nb_w (by x), and the next row of the same primitive takes its
+** right neighbours from there. A cached value is wgt_persp_any of the same
+** integer edge values, so it is the value computed again; the key (the
+** primitive's serial and the row) says whether an entry is that value. */
 static void STAGE(stage_neighbours)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
-    (void)ctx;
+    const uint64_t key_prev = t->serial * ((uint64_t)ctx->height + 2) + (uint64_t)b->y, key_cur = key_prev + 1;
+    const uint64_t *const prev_key = ctx->nb_key[(b->y + 1) & 1] + b->x0 + 1;   /* row y - 1, at x + 1 */
+    const WGT (*const prev_w)[3] = (const WGT (*)[3])ctx->nb_w[(b->y + 1) & 1] + b->x0 + 1;
+    uint64_t *const cur_key = ctx->nb_key[b->y & 1] + b->x0;
+    WGT (*const cur_w)[3] = ctx->nb_w[b->y & 1] + b->x0;
+    WGT (*const px)[3] = b->px, (*const py)[3] = b->py;
+    const int n = b->n;
     int j = 0;
 #if CHAIN_SIMD
     /* the neighbours' edge values are the fragment's plus ea or eb: the
@@ -106,20 +115,46 @@ static void STAGE(stage_neighbours)(GlesContext *ctx, const TriSetup *t, SpanBuf
     Edges4 edx, edy;
     avx2_edges4_setup(ex0, t->ea, &edx);
     avx2_edges4_setup(ey0, t->ea, &edy);
-    const int n = b->n;
-    WGT (*const px)[3] = b->px, (*const py)[3] = b->py;
+    const __m256i want = _mm256_set1_epi64x((int64_t)key_prev);
     for (; j + 4 <= n; j += 4) {
-        __m256i ex[3], ey[3];
-        avx2_edges4(&edx, &b->k[j], ex);
+        const int k0 = b->k[j], adjacent = slots_adjacent4(&b->k[j]);
+        __m256i ey[3];
         avx2_edges4(&edy, &b->k[j], ey);
-        if (!STAGE(neighbours4)(&ws, ex, ey, &px[j], &py[j]))
+        if (!STAGE(neighbour4)(&ws, ey, &py[j]))
             /* a lane out of the kernels' ranges: the group by the scalar code */
             for (int k = j; k < j + 4; k++)
-                STAGE(neighbours1)(t, b, k);
+                STAGE(neighbour1)(t, b, k, t->eb, py[k]);
+        const __m256i keys = _mm256_loadu_si256((const __m256i *)(const void *)&prev_key[k0]);
+        if (adjacent && _mm256_movemask_epi8(_mm256_cmpeq_epi64(keys, want)) == -1) {
+            memcpy(&px[j], &prev_w[k0], 4 * sizeof px[0]);
+        } else {
+            __m256i ex[3];
+            avx2_edges4(&edx, &b->k[j], ex);
+            if (!STAGE(neighbour4)(&ws, ex, &px[j]))
+                for (int k = j; k < j + 4; k++)
+                    STAGE(neighbour1)(t, b, k, t->ea, px[k]);
+        }
+        if (adjacent) {
+            memcpy(&cur_w[k0], &py[j], 4 * sizeof py[0]);
+            _mm256_storeu_si256((__m256i *)(void *)&cur_key[k0], _mm256_set1_epi64x((int64_t)key_cur));
+        } else {
+            for (int k = j; k < j + 4; k++) {
+                memcpy(cur_w[b->k[k]], py[k], sizeof py[0]);
+                cur_key[b->k[k]] = key_cur;
+            }
+        }
     }
 #endif
-    for (; j < b->n; j++)
-        STAGE(neighbours1)(t, b, j);
+    for (; j < n; j++) {
+        const int k = b->k[j];
+        STAGE(neighbour1)(t, b, j, t->eb, py[j]);
+        if (prev_key[k] == key_prev)
+            memcpy(px[j], prev_w[k], sizeof px[0]);
+        else
+            STAGE(neighbour1)(t, b, j, t->ea, px[j]);
+        memcpy(cur_w[k], py[j], sizeof py[0]);
+        cur_key[k] = key_cur;
+    }
 }
 
 /* }==================================================================== */

@@ -988,10 +988,31 @@ def case_wide_alpha_test(numeric: str, seed: int) -> dict:
                       size=(150, 6), persp=False, triangles=10)
 
 
+def case_mipmap_after_stencil(numeric: str, seed: int) -> dict:
+    """LINEAR_MIPMAP_LINEAR over rows of up to 150 pixels where an early stencil test
+    (EQUAL to what a first pass counted) leaves scattered fragments: the level of
+    detail's neighbour weights, found again or taken from the row below, for slots
+    that are not neighbours, across chunks and overlapping triangles."""
+    s = base_state()
+    s["color_mask"] = (False, False, False, False)
+    # the first pass flips bit 0 under each triangle; the second draws where it is set
+    s["stencil"] = {"on": True, "func": C.GL_ALWAYS, "ref": 0, "value_mask": 0xFF, "write_mask": 0x01,
+                    "ops": (C.GL_KEEP, C.GL_INVERT, C.GL_INVERT)}
+    changes = {
+        "color_mask": ALL_ON,
+        "stencil": {"on": True, "func": C.GL_EQUAL, "ref": 1, "value_mask": 0x01, "write_mask": 0xFF,
+                    "ops": (C.GL_KEEP, C.GL_KEEP, C.GL_KEEP)},
+        "tex0": tex(seed, log_w=6, log_h=5, mip="full", min=C.GL_LINEAR_MIPMAP_LINEAR, mag=C.GL_LINEAR),
+        "tc0": {"kind": "array4", "seed": seed, "matrix": None},
+    }
+    return make_scene(numeric, seed, s, changes=changes, size=(150, 40), triangles=24)
+
+
 CASES = {f.__name__[5:]: f for f in (case_dot3_modulate_fog, case_alpha_additive_xor,
                                      case_stencil_equal_multipass, case_trilinear_fog_depth,
                                      case_rgb565_dither_blend, case_four_unit_crossbar,
-                                     case_offset_stencil_wrap, case_wide_alpha_test)}
+                                     case_offset_stencil_wrap, case_wide_alpha_test,
+                                     case_mipmap_after_stencil)}
 
 
 @pytest.mark.parametrize("numeric", BUILDS)
