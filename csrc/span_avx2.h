@@ -354,6 +354,19 @@ AVX2_INLINE void avx2_store_transposed4(__m256i r, __m256i g, __m256i b, __m256i
     avx2_store4(out + 3 * stride, _mm256_permute2x128_si256(t1, t3, 0x31));
 }
 
+/* the texels at indices i (eight lanes) and i + 1, as two registers of
+** eight lanes, by two gathers of four 64-bit words (each word is the pair) */
+AVX2_INLINE void avx2_gather_pairs(const int *tx32, __m256i i, __m256i *left, __m256i *right)
+{
+    const long long *base = (const long long *)(const void *)tx32;
+    const __m256i lo = _mm256_i32gather_epi64(base, _mm256_castsi256_si128(i), 4);
+    const __m256i hi = _mm256_i32gather_epi64(base, _mm256_extracti128_si256(i, 1), 4);
+    const __m256i split = _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7);
+    const __m256i a = _mm256_permutevar8x32_epi32(lo, split), b = _mm256_permutevar8x32_epi32(hi, split);
+    *left = _mm256_permute2x128_si256(a, b, 0x20);
+    *right = _mm256_permute2x128_si256(a, b, 0x31);
+}
+
 /* sample_level's GL_LINEAR of a power-of-two level for fragments 0..n-1
 ** (n a multiple of 4), REPEAT or CLAMP_TO_EDGE on each axis: eight
 ** fragments at a time in 32-bit lanes (texels gathered, channels apart),
@@ -378,10 +391,18 @@ static inline void avx2_sample_linear(const TexImage *li, int n, const TexCoord 
         const __m256i xa = AVX2_JOIN(x0), xb = AVX2_JOIN(x1), a = AVX2_JOIN(wa), b = AVX2_JOIN(wb);
         const __m256i r0 = _mm256_slli_epi32(AVX2_JOIN(y0), log2w), r1 = _mm256_slli_epi32(AVX2_JOIN(y1), log2w);
 #undef AVX2_JOIN
-        const __m256i g[4] = { _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r0, xa), 4),
-                               _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r0, xb), 4),
-                               _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r1, xa), 4),
-                               _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r1, xb), 4) };
+        __m256i g[4];
+        if (_mm256_movemask_epi8(_mm256_cmpeq_epi32(xb, _mm256_add_epi32(xa, _mm256_set1_epi32(1)))) == -1) {
+            /* no lane wraps or clamps at the right edge: each row's two
+            ** texels are one 64-bit word, so gather half the elements */
+            avx2_gather_pairs(tx32, _mm256_add_epi32(r0, xa), &g[0], &g[1]);
+            avx2_gather_pairs(tx32, _mm256_add_epi32(r1, xa), &g[2], &g[3]);
+        } else {
+            g[0] = _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r0, xa), 4);
+            g[1] = _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r0, xb), 4);
+            g[2] = _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r1, xa), 4);
+            g[3] = _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r1, xb), 4);
+        }
         const __m256i ia = _mm256_sub_epi32(one16, a), ib = _mm256_sub_epi32(one16, b);
         __m256i ch[4];
         for (int k = 0; k < 4; k++)
