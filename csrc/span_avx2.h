@@ -195,15 +195,21 @@ AVX2_INLINE void avx2_store_st4(__m256i s, __m256i t, TexCoord *out)
 
 /* a0 w0 + a1 w1 + a2 w2 per lane, rounded half away from zero to `shift`
 ** fewer fraction bits: the a lanes in int32 range, the weights any WGT */
-AVX2_INLINE __m256i avx2_lerp3(__m256i a0, __m256i a1, __m256i a2, const WGT *p, int shift)
+AVX2_INLINE __m256i avx2_lerp3w(__m256i a0, __m256i a1, __m256i a2, __m128i w, int shift)
 {
-    /* the three weights, each in the low dword of every lane (vpmuldq reads those) */
-    const __m128i w = _mm_insert_epi32(_mm_loadl_epi64((const __m128i *)(const void *)p), p[2], 2);
+    /* the three weights w0..w2, each in the low dword of every lane (vpmuldq reads those) */
     const __m256i ww = _mm256_broadcastsi128_si256(w);
     __m256i acc = _mm256_add_epi64(_mm256_add_epi64(_mm256_mul_epi32(a0, _mm256_shuffle_epi32(ww, 0x00)),
                                                     _mm256_mul_epi32(a1, _mm256_shuffle_epi32(ww, 0x55))),
                                    _mm256_mul_epi32(a2, _mm256_shuffle_epi32(ww, 0xAA)));
     return avx2_round_shift(acc, shift);
+}
+
+/* the same with the weights p[0..2] read from memory */
+AVX2_INLINE __m256i avx2_lerp3(__m256i a0, __m256i a1, __m256i a2, const WGT *p, int shift)
+{
+    return avx2_lerp3w(a0, a1, a2, _mm_insert_epi32(_mm_loadl_epi64((const __m128i *)(const void *)p), p[2], 2),
+                       shift);
 }
 
 /* frag_lerp3f of the four channels */
@@ -872,6 +878,12 @@ AVX2_INLINE uint32_t v4_pack565(V4 v, int dither, FRAGV t)
     return (uint32_t)_mm_cvtsi128_si32(x);
 }
 AVX2_INLINE V4 v4_lerp3f(V4 a0, V4 a1, V4 a2, const WGT *p) { return avx2_lerp3f(a0, a1, a2, p); }
+/* the same for weights just computed, in registers: a vector load of
+** three scalar stores would wait for them (no store forwarding) */
+AVX2_INLINE V4 v4_lerp3f_w(V4 a0, V4 a1, V4 a2, WGT w0, WGT w1, WGT w2)
+{
+    return avx2_lerp3w(a0, a1, a2, _mm_setr_epi32(w0, w1, w2, 0), 30);
+}
 /* }==================================================================== */
 #endif
 
@@ -980,6 +992,11 @@ AVX2_INLINE V4 v4_lerp3f(V4 a0, V4 a1, V4 a2, const WGT *p)
 {
     return V4_OP(add)(V4_OP(add)(V4_OP(mul)(a0, V4_OP(set1)(p[0])), V4_OP(mul)(a1, V4_OP(set1)(p[1]))),
                       V4_OP(mul)(a2, V4_OP(set1)(p[2])));
+}
+AVX2_INLINE V4 v4_lerp3f_w(V4 a0, V4 a1, V4 a2, WGT w0, WGT w1, WGT w2)
+{
+    const WGT p[3] = { w0, w1, w2 };
+    return v4_lerp3f(a0, a1, a2, p);
 }
 /* frag_bilerp_rgba8: (v00 (1-a) + v10 a)(1-b) + (v01 (1-a) + v11 a) b per channel */
 static inline void avx2_bilerp_rgba8(uint32_t c00, uint32_t c10, uint32_t c01, uint32_t c11, TEXW a, TEXW b,

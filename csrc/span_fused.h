@@ -67,7 +67,7 @@ static inline __attribute__((always_inline)) void SPAN_FN(span_fused)(GlesContex
         const uint32_t d = dst[k];
 #if CHAIN_SIMD
         if (smooth) {
-            dst[k] = v4_rgba8(lerp_ok ? v4_lerp3f(a0, a1, a2, p) : v4_load(c), d, blend);
+            dst[k] = v4_rgba8(lerp_ok ? v4_lerp3f_w(a0, a1, a2, p[0], p[1], p[2]) : v4_load(c), d, blend);
             continue;
         }
         if (vector_ok) {
