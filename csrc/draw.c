@@ -330,6 +330,15 @@ static void positions_range(Batch *b, int64_t lo, int64_t hi)
     }
 }
 
+/* Assembly reads each vertex's clip codes and window position, long after
+** the positions pass wrote them: a large indexed mesh's vertices are no
+** longer in the cache, so the triangle DRAW_PREFETCH ahead asks for them */
+#define DRAW_PREFETCH 16
+static void prefetch_window(const Batch *b, int64_t index)
+{
+    __builtin_prefetch(&slot_of(b, index)->outcode, 0, 3);
+}
+
 /* the dispatch of assemble(): queue on the batched path, draw at once on
 ** the reference path */
 static void emit_triangle(Batch *b, int64_t i0, int64_t i1, int64_t i2)
@@ -427,8 +436,12 @@ static void assemble(Batch *b, unsigned int mode, int count, const Indices *ix)
             emit_line(b, index_at(ix, count - 1), index_at(ix, 0));
         break;
     case GL_TRIANGLES:
-        for (int i = 0; i + 2 < count; i += 3)
+        for (int i = 0; i + 2 < count; i += 3) {
+            if (i + 3 * DRAW_PREFETCH + 2 < count)
+                for (int k = 0; k < 3; k++)
+                    prefetch_window(b, index_at(ix, i + 3 * DRAW_PREFETCH + k));
             emit_triangle(b, index_at(ix, i), index_at(ix, i + 1), index_at(ix, i + 2));
+        }
         break;
     case GL_TRIANGLE_STRIP:
         /* Table 2.10: the provoking vertex is i + 2; odd triangles swap the
