@@ -1167,13 +1167,16 @@ AVX2_INLINE int avx2_run4(uint32_t k4) { return k4 == (k4 & 0xFFu) * 0x01010101u
 ** Each fragment stays one register; only the packing merges them.
 ** Exact: with every lane in [0, 2^31) the high dwords are 0, so an unsigned
 ** dword minimum against (2^30, 0) is frag_clamp01 (the lower bound holds
-** already). Kind 2's sum and kind 1's two frag_mul terms (operands in
-** [0, 2^30], one vpmuludq each, v4_mul01's rounding) stay below 2^31 + 1,
-** so the same minimum is frag_to_unorm's upper test, and its lower one
-** (v <= 0 gives 0) is what the formula gives at v = 0. Then
+** already). The stored bytes are widened by a byte shuffle, and
+** frag_from_unorm(d, 255) = d 4210752 + ((d + 2) >> 2) (avx2_unorm8) is
+** (16843009 d + 2) >> 2, as 16843009 = 4 4210752 + 1. Kind 2's sum stays
+** below 2^31 + 1, so the same minimum is frag_to_unorm's upper test; kind
+** 1's two frag_mul terms (operands in [0, 2^30], one vpmuludq each,
+** v4_mul01's rounding) are at most sa and 2^30 - sa (cv <= 2^30 and
+** u <= 2^30), so their sum needs no clamp. frag_to_unorm's lower test
+** (v <= 0 gives 0) is what the formula gives at v = 0, and
 ** (255 v + 2^29) >> 30 = (1020 v + 2^31) >> 32, the product's high dword
-** (below 2^8), which the packs gather. The stored bytes are widened by a
-** byte shuffle and converted as avx2_unorm8 does. */
+** (below 2^8), which the packs gather. */
 AVX2_INLINE int avx2_rgba8x4(const FRAGV (*c)[4], __m128i d, int kind, __m128i *out)
 {
     __m256i v[4];
@@ -1192,15 +1195,14 @@ AVX2_INLINE int avx2_rgba8x4(const FRAGV (*c)[4], __m128i d, int kind, __m128i *
                                                   -1, -1, 4 * i + 2, -1, -1, -1, -1, -1, -1, -1, 4 * i + 3, -1, -1,
                                                   -1, -1, -1, -1, -1);
             const __m256i db8 = _mm256_shuffle_epi8(db, pick);
-            const __m256i u = _mm256_add_epi64(_mm256_mul_epu32(db8, _mm256_set1_epi64x(4210752)),
-                                               _mm256_srli_epi64(_mm256_add_epi64(db8, _mm256_set1_epi64x(2)), 2));
+            const __m256i u = _mm256_srli_epi64(_mm256_add_epi64(_mm256_mul_epu32(db8, _mm256_set1_epi64x(16843009)),
+                                                                 _mm256_set1_epi64x(2)), 2);
             if (kind == 2) {
-                x = _mm256_add_epi64(x, u);
+                x = _mm256_min_epu32(_mm256_add_epi64(x, u), one);
             } else {
                 const __m256i sa = _mm256_permute4x64_epi64(x, 0xFF);
                 x = _mm256_add_epi64(avx2_mul_u(x, sa), avx2_mul_u(u, _mm256_sub_epi64(one, sa)));
             }
-            x = _mm256_min_epu32(x, one);
         }
         v[i] = _mm256_add_epi64(_mm256_mul_epu32(x, _mm256_set1_epi64x(1020)), _mm256_set1_epi64x((int64_t)1 << 31));
     }
