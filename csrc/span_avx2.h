@@ -1149,6 +1149,114 @@ AVX2_INLINE uint32_t v4_rgba8(V4 c, uint32_t d, int kind)
     return v4_pack_unorm8(v4_add(v4_mul01(cv, va), v4_mul01(v4_unorm8(d), v4_one_minus(va))));
 }
 
+/* fragment_logic_op on four words (the same expressions on vector lanes) */
+typedef uint32_t avx2_u32x4 __attribute__((vector_size(16)));
+AVX2_INLINE __m128i avx2_logic_op4(unsigned int op, __m128i sv, __m128i dv)
+{
+    const avx2_u32x4 s = (avx2_u32x4)sv, d = (avx2_u32x4)dv;
+    avx2_u32x4 r;
+    switch (op) {
+    case GL_CLEAR: r = s & 0; break;
+    case GL_AND: r = s & d; break;
+    case GL_AND_REVERSE: r = s & ~d; break;
+    case GL_COPY: r = s; break;
+    case GL_AND_INVERTED: r = ~s & d; break;
+    case GL_NOOP: r = d; break;
+    case GL_XOR: r = s ^ d; break;
+    case GL_OR: r = s | d; break;
+    case GL_NOR: r = ~(s | d); break;
+    case GL_EQUIV: r = ~(s ^ d); break;
+    case GL_INVERT: r = ~d; break;
+    case GL_OR_REVERSE: r = s | ~d; break;
+    case GL_COPY_INVERTED: r = ~s; break;
+    case GL_OR_INVERTED: r = ~s | d; break;
+    case GL_NAND: r = ~(s & d); break;
+    default: r = (s & 0) | 0xFFFFFFFFu; break; /* GL_SET */
+    }
+    return (__m128i)r;
+}
+
+/* four words (slots k[0..3] of dst) as one vector: one load when the
+** offsets are consecutive (run), else four */
+AVX2_INLINE __m128i avx2_load_words4(const uint32_t *dst, uint32_t k4, int run)
+{
+    if (run)
+        return _mm_loadu_si128((const __m128i *)(const void *)&dst[k4 & 0xFFu]);
+    return _mm_setr_epi32((int)dst[k4 & 0xFFu], (int)dst[(k4 >> 8) & 0xFFu], (int)dst[(k4 >> 16) & 0xFFu],
+                          (int)dst[k4 >> 24]);
+}
+AVX2_INLINE void avx2_store_words4(uint32_t *dst, uint32_t k4, int run, __m128i w)
+{
+    if (run) {
+        _mm_storeu_si128((__m128i *)(void *)&dst[k4 & 0xFFu], w);
+        return;
+    }
+    dst[k4 & 0xFFu] = (uint32_t)_mm_cvtsi128_si32(w);
+    dst[(k4 >> 8) & 0xFFu] = (uint32_t)_mm_extract_epi32(w, 1);
+    dst[(k4 >> 16) & 0xFFu] = (uint32_t)_mm_extract_epi32(w, 2);
+    dst[k4 >> 24] = (uint32_t)_mm_extract_epi32(w, 3);
+}
+/* whether four ascending slot offsets (bytes of k4) are consecutive */
+AVX2_INLINE int avx2_run4(uint32_t k4) { return k4 == (k4 & 0xFFu) * 0x01010101u + 0x03020100u; }
+
+#if NUM_IS_FIXED
+/* v4_rgba8 of four fragments c[0..3] over the stored words d (lanes 0..3),
+** into *out; 0 (nothing done) unless every channel lies in [0, 2^31).
+** Each fragment stays one register; only the packing merges them.
+** Exact: with every lane in [0, 2^31) the high dwords are 0, so an unsigned
+** dword minimum against (2^30, 0) is frag_clamp01 (the lower bound holds
+** already). The stored bytes are widened by a byte shuffle, and
+** frag_from_unorm(d, 255) = d 4210752 + ((d + 2) >> 2) (avx2_unorm8) is
+** (16843009 d + 2) >> 2, as 16843009 = 4 4210752 + 1. Kind 2's sum stays
+** below 2^31 + 1, so the same minimum is frag_to_unorm's upper test; kind
+** 1's two frag_mul terms (operands in [0, 2^30], one vpmuludq each,
+** v4_mul01's rounding) are at most sa and 2^30 - sa (cv <= 2^30 and
+** u <= 2^30), so their sum needs no clamp. frag_to_unorm's lower test
+** (v <= 0 gives 0) is what the formula gives at v = 0, and
+** (255 v + 2^29) >> 30 = (1020 v + 2^31) >> 32, the product's high dword
+** (below 2^8), which the packs gather. */
+AVX2_INLINE int avx2_rgba8x4(const FRAGV (*c)[4], __m128i d, int kind, __m128i *out)
+{
+    __m256i v[4];
+    for (int i = 0; i < 4; i++)
+        v[i] = avx2_load4(c[i]);
+    const __m256i any = _mm256_or_si256(_mm256_or_si256(v[0], v[1]), _mm256_or_si256(v[2], v[3]));
+    if (!_mm256_testz_si256(any, _mm256_set1_epi64x(~(int64_t)0x7FFFFFFF)))
+        return 0;
+    const __m256i one = _mm256_set1_epi64x(FRAG_ONE);
+    const __m256i db = _mm256_broadcastsi128_si256(d);
+    for (int i = 0; i < 4; i++) {
+        __m256i x = _mm256_min_epu32(v[i], one);
+        if (kind) {
+            /* fragment i's stored bytes, one per 64-bit lane, as 0.30 */
+            const __m256i pick = _mm256_setr_epi8(4 * i, -1, -1, -1, -1, -1, -1, -1, 4 * i + 1, -1, -1, -1, -1, -1,
+                                                  -1, -1, 4 * i + 2, -1, -1, -1, -1, -1, -1, -1, 4 * i + 3, -1, -1,
+                                                  -1, -1, -1, -1, -1);
+            const __m256i db8 = _mm256_shuffle_epi8(db, pick);
+            const __m256i u = _mm256_srli_epi64(_mm256_add_epi64(_mm256_mul_epu32(db8, _mm256_set1_epi64x(16843009)),
+                                                                 _mm256_set1_epi64x(2)), 2);
+            if (kind == 2) {
+                x = _mm256_min_epu32(_mm256_add_epi64(x, u), one);
+            } else {
+                const __m256i sa = _mm256_permute4x64_epi64(x, 0xFF);
+                x = _mm256_add_epi64(avx2_mul_u(x, sa), avx2_mul_u(u, _mm256_sub_epi64(one, sa)));
+            }
+        }
+        v[i] = _mm256_add_epi64(_mm256_mul_epu32(x, _mm256_set1_epi64x(1020)), _mm256_set1_epi64x((int64_t)1 << 31));
+    }
+    /* the high dwords: lane halves (R0 G0 R1 G1 | B0 A0 B1 A1), then
+    ** (R2 G2 R3 G3 | B2 A2 B3 A3), to words, to bytes, halves interleaved */
+    const __m256i h01 = _mm256_castps_si256(_mm256_shuffle_ps(_mm256_castsi256_ps(v[0]), _mm256_castsi256_ps(v[1]),
+                                                              _MM_SHUFFLE(3, 1, 3, 1)));
+    const __m256i h23 = _mm256_castps_si256(_mm256_shuffle_ps(_mm256_castsi256_ps(v[2]), _mm256_castsi256_ps(v[3]),
+                                                              _MM_SHUFFLE(3, 1, 3, 1)));
+    __m256i w = _mm256_packus_epi32(h01, h23);
+    w = _mm256_packus_epi16(w, w);
+    *out = _mm_unpacklo_epi16(_mm256_castsi256_si128(w), _mm256_extracti128_si256(w, 1));
+    return 1;
+}
+#endif
+
 /* {====================================================================
 ** The stencil and depth tests (§4.1.5, §4.1.6), eight fragments at a time
 ** in 32-bit lanes, in every build (they are integer work): the outcome of

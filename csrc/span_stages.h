@@ -791,7 +791,28 @@ static void STAGE(stage_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 static inline void STAGE(write_rgba8)(GlesContext *ctx, SpanBuf *b, int kind)
 {
     uint32_t *dst = (uint32_t *)ctx->color + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
-    for (int j = 0; j < b->n; j++) {
+    int j = 0;
+#if CHAIN_SIMD && NUM_IS_FIXED
+    /* four fragments at a time (avx2_rgba8x4); a group with a channel
+    ** outside the kernel's range by v4_rgba8 */
+    const int n = b->n;
+    for (; j + 4 <= n; j += 4) {
+        uint32_t k4;
+        memcpy(&k4, &b->k[j], sizeof k4);
+        const int run = avx2_run4(k4);
+        const __m128i d = kind ? avx2_load_words4(dst, k4, run) : _mm_setzero_si128();
+        __m128i w;
+        if (avx2_rgba8x4(&b->c[j], d, kind, &w)) {
+            avx2_store_words4(dst, k4, run, w);
+        } else {
+            for (int i = 0; i < 4; i++) {
+                uint32_t *at = &dst[(k4 >> (8 * i)) & 0xFFu];
+                *at = v4_rgba8(v4_load(b->c[j + i]), *at, kind);
+            }
+        }
+    }
+#endif
+    for (; j < b->n; j++) {
         uint32_t *at = &dst[b->k[j]];
 #if CHAIN_SIMD
         *at = v4_rgba8(v4_load(b->c[j]), *at, kind);
@@ -827,7 +848,30 @@ static inline __attribute__((always_inline)) void STAGE(write_rgba8_ops)(GlesCon
                                                                         unsigned int op, uint32_t keep)
 {
     uint32_t *dst = (uint32_t *)ctx->color + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
-    for (int j = 0; j < b->n; j++) {
+    int j = 0;
+#if CHAIN_SIMD && NUM_IS_FIXED
+    /* four fragments at a time, as write_rgba8 */
+    const int n = b->n;
+    const __m128i vkeep = _mm_set1_epi32((int)keep);
+    for (; j + 4 <= n; j += 4) {
+        uint32_t k4;
+        memcpy(&k4, &b->k[j], sizeof k4);
+        const int run = avx2_run4(k4);
+        const __m128i d = avx2_load_words4(dst, k4, run);
+        __m128i s;
+        if (avx2_rgba8x4(&b->c[j], d, kind, &s)) {
+            const __m128i x = avx2_logic_op4(op, s, d);
+            avx2_store_words4(dst, k4, run, _mm_or_si128(_mm_and_si128(d, vkeep), _mm_andnot_si128(vkeep, x)));
+        } else {
+            for (int i = 0; i < 4; i++) {
+                uint32_t *at = &dst[(k4 >> (8 * i)) & 0xFFu];
+                const uint32_t dd = *at;
+                *at = (dd & keep) | (fragment_logic_op(op, v4_rgba8(v4_load(b->c[j + i]), dd, kind), dd) & ~keep);
+            }
+        }
+    }
+#endif
+    for (; j < b->n; j++) {
         uint32_t *at = &dst[b->k[j]];
         const uint32_t d = *at;
 #if CHAIN_SIMD
