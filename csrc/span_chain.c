@@ -62,6 +62,7 @@ static inline uint32_t pack565(const FRAGV v[3], int dither, FRAGV t_d)
 typedef struct ChainStages {
     SpanStage persp, neighbours, depth, tests_early, tests_late, zless_early, color;
     SpanStage fetch[GLES_MAX_TEXTURE_UNITS], fetch_rect[GLES_MAX_TEXTURE_UNITS], env[GLES_MAX_TEXTURE_UNITS];
+    SpanStage fetch_direct[GLES_MAX_TEXTURE_UNITS], fetch_rect_direct[GLES_MAX_TEXTURE_UNITS];
     SpanStage fog, fog_const, alpha;
     SpanStage write, write_rgba8, write_rgba8_alpha, write_rgba8_add, write_rgba8_logic, write_rgba8_masked;
     SpanStage write_565, write_565_alpha;
@@ -227,18 +228,29 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     }
     if (!color_work)
         return n;
+    /* a lone REPLACE unit of an RGBA texture: its texel is the colour
+    ** (texture_env), so it is sampled into the colour and the primary
+    ** colour is not formed */
+    const int lone = units && !(units & (units - 1)) ? __builtin_ctz(units) : -1;
+    const int direct = lone >= 0 && ctx->units[lone].env_mode == GL_REPLACE
+                    && ctx->units[lone].bound->format == GL_RGBA;
     if (!rect) {
         s[n++] = cs->persp;
         if (lod)
             s[n++] = cs->neighbours;
-        s[n++] = cs->color;
+        if (!direct)
+            s[n++] = cs->color;
     }
-    for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
-        if (units & (1u << u))
-            s[n++] = rect ? cs->fetch_rect[u] : cs->fetch[u];
-    for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
-        if (units & (1u << u))
-            s[n++] = cs->env[u];
+    if (direct) {
+        s[n++] = rect ? cs->fetch_rect_direct[lone] : cs->fetch_direct[lone];
+    } else {
+        for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
+            if (units & (1u << u))
+                s[n++] = rect ? cs->fetch_rect[u] : cs->fetch[u];
+        for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
+            if (units & (1u << u))
+                s[n++] = cs->env[u];
+    }
     if (ctx->fog)
         s[n++] = rect ? cs->fog_const : cs->fog;
     if (ctx->alpha_test)

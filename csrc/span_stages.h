@@ -457,15 +457,17 @@ static void STAGE(stage_color)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
     }
 }
 
-/* one unit's texels for the chunk's coordinates b->tc (and b->tx, b->ty) */
-static void STAGE(chunk_sample)(GlesContext *ctx, SpanBuf *b, int u)
+/* one unit's texels for the chunk's coordinates b->tc (and b->tx, b->ty),
+** into b->ct, or (direct) straight into the colour b->c: a lone REPLACE
+** unit of an RGBA texture is the colour, so it needs no environment */
+static void STAGE(chunk_sample)(GlesContext *ctx, SpanBuf *b, int u, int direct)
 {
-    ctx->samplers[u](ctx->units[u].bound, b->n, b->tc, b->tx, b->ty, b->ct[0][u], GLES_MAX_TEXTURE_UNITS * 4,
-                     ctx->texel_unorm8);
+    ctx->samplers[u](ctx->units[u].bound, b->n, b->tc, b->tx, b->ty, direct ? b->c[0] : b->ct[0][u],
+                     direct ? 4 : GLES_MAX_TEXTURE_UNITS * 4, ctx->texel_unorm8);
 }
 
 /* a triangle's coordinates of unit u for every live fragment, then its texels */
-static void STAGE(stage_fetch)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, int u)
+static void STAGE(stage_fetch)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, int u, int direct)
 {
     const int lod = texture_needs_lod(ctx->units[u].bound);
 #if CHAIN_SIMD && NUM_IS_FIXED
@@ -496,11 +498,11 @@ static void STAGE(stage_fetch)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, 
             TEX_COORD(b->py[j], &b->ty[j]);
         }
 #undef TEX_COORD
-    STAGE(chunk_sample)(ctx, b, u);
+    STAGE(chunk_sample)(ctx, b, u, direct);
 }
 
 /* a rectangle's coordinates of unit u for every live fragment, then its texels */
-static void STAGE(stage_fetch_rect)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, int u)
+static void STAGE(stage_fetch_rect)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, int u, int direct)
 {
     (void)t;
     const RectSetup *r = b->rect;
@@ -557,7 +559,7 @@ static void STAGE(stage_fetch_rect)(GlesContext *ctx, const TriSetup *t, SpanBuf
         }
         break;
     }
-    STAGE(chunk_sample)(ctx, b, u);
+    STAGE(chunk_sample)(ctx, b, u, direct);
 }
 
 static void STAGE(stage_env)(GlesContext *ctx, SpanBuf *b, int u)
@@ -600,11 +602,19 @@ static void STAGE(stage_env)(GlesContext *ctx, SpanBuf *b, int u)
 #define UNIT_STAGES(u) \
     static void STAGE(stage_fetch##u)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) \
     { \
-        STAGE(stage_fetch)(ctx, t, b, u); \
+        STAGE(stage_fetch)(ctx, t, b, u, 0); \
     } \
     static void STAGE(stage_fetch_rect##u)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) \
     { \
-        STAGE(stage_fetch_rect)(ctx, t, b, u); \
+        STAGE(stage_fetch_rect)(ctx, t, b, u, 0); \
+    } \
+    static void STAGE(stage_fetch_direct##u)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) \
+    { \
+        STAGE(stage_fetch)(ctx, t, b, u, 1); \
+    } \
+    static void STAGE(stage_fetch_rect_direct##u)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) \
+    { \
+        STAGE(stage_fetch_rect)(ctx, t, b, u, 1); \
     } \
     static void STAGE(stage_env##u)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) \
     { \
@@ -1009,6 +1019,10 @@ static const ChainStages STAGE(chain_stages) = {
     .fetch = { STAGE(stage_fetch0), STAGE(stage_fetch1), STAGE(stage_fetch2), STAGE(stage_fetch3) },
     .fetch_rect = { STAGE(stage_fetch_rect0), STAGE(stage_fetch_rect1), STAGE(stage_fetch_rect2),
                     STAGE(stage_fetch_rect3) },
+    .fetch_direct = { STAGE(stage_fetch_direct0), STAGE(stage_fetch_direct1), STAGE(stage_fetch_direct2),
+                      STAGE(stage_fetch_direct3) },
+    .fetch_rect_direct = { STAGE(stage_fetch_rect_direct0), STAGE(stage_fetch_rect_direct1),
+                           STAGE(stage_fetch_rect_direct2), STAGE(stage_fetch_rect_direct3) },
     .env = { STAGE(stage_env0), STAGE(stage_env1), STAGE(stage_env2), STAGE(stage_env3) },
     .fog = STAGE(stage_fog),
     .fog_const = STAGE(stage_fog_const),
