@@ -28,6 +28,8 @@ from typing import Any
 import numpy as np
 import pytest
 from conftest import BUILDS, HAS_SIMD, make_ctx, random_triangles, set_frustum, set_ortho
+from test_frag_stages import H, W
+from test_frag_stages import replace_quad as quad
 
 from gles import constants as C
 
@@ -89,25 +91,7 @@ def model(numeric: str, src: np.ndarray, dst: np.ndarray, kind: int) -> np.ndarr
     return b.astype(np.uint8)
 
 
-W, H = 67, 8
 
-
-def quad(gl: Any, img: np.ndarray) -> None:
-    """The window covered by texels img[y, x] at pixel (x, y): NEAREST, REPLACE."""
-    gl.glBindTexture(C.GL_TEXTURE_2D, 1)
-    gl.glTexImage2D(C.GL_TEXTURE_2D, 0, C.GL_RGBA, 128, 8, 0, C.GL_RGBA, C.GL_UNSIGNED_BYTE,
-                    np.ascontiguousarray(img))
-    gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MIN_FILTER, C.GL_NEAREST)
-    gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MAG_FILTER, C.GL_NEAREST)
-    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_REPLACE)
-    gl.glEnable(C.GL_TEXTURE_2D)
-    v = np.array([[0, 0], [W, 0], [0, H], [W, H]], dtype=np.float32)
-    t = np.array([[0, 0], [W / 128, 0], [0, 1], [W / 128, 1]], dtype=np.float32)
-    gl.glEnableClientState(C.GL_VERTEX_ARRAY)
-    gl.glEnableClientState(C.GL_TEXTURE_COORD_ARRAY)
-    gl.glVertexPointer(2, C.GL_FLOAT, 0, v)
-    gl.glTexCoordPointer(2, C.GL_FLOAT, 0, t)
-    gl.glDrawArrays(C.GL_TRIANGLE_STRIP, 0, 4)
 
 
 @pytest.mark.parametrize("numeric", BUILDS)
