@@ -227,18 +227,22 @@ void texture_env_span(const GlesContext *ctx, int u, int n, const FRAGV (*cf)[4]
 ** lane) with its alpha source's alpha in lane 3, complemented per lane
 ** where the operand says ONE_MINUS; the function then runs on all four
 ** lanes at once (the alpha function's result taking lane 3 where it
-** differs), scaled per lane and clamped.
+** differs), scaled per lane and clamped. DOT3_RGB with MODULATE alpha
+** takes the DOT3 products with a bias of 0 in lane 3, which is then the
+** alpha product.
 **
-** Exactness: the lanes are combine_block's values, formed by the same
-** operations. In the fixed build every source channel x is checked to lie
-** in [0, 2^31) (else the fragment goes to combine_block), so every
-** operand (x or 2^30 - x), every a - 2^30/2 of DOT3 and INTERPOLATE's
-** 2^30 - a2 lies in (-2^31, 2^31): vpmuldq forms frag_mul's product
-** exactly (|a b| < 2^62), and with 2^62 added it is positive, so a logical
-** shift by 30 is the arithmetic one plus 2^32. Sums, the DOT3 sum (in any
-** order: integers) and the scales (shifts by 0-4 bits: values below 2^38)
-** cannot overflow. In the float and double builds the lanes take the
-** scalar IEEE operations in its order (the DOT3 sum from 0, as it starts). */
+** Exactness: the lanes are combine_block's values. In the fixed build
+** every source channel x is checked to lie in [0, 2^31) (else the fragment
+** goes to combine_block), so every operand (x or 2^30 - x), every
+** a - 2^30/2 of DOT3 and INTERPOLATE's 2^30 - a2 lies in (-2^31, 2^31):
+** vpmuldq forms frag_mul's product exactly (|a b| < 2^62), and with 2^62
+** added it is positive, so a logical shift by 30 is the arithmetic one plus
+** 2^32. Sums (the DOT3 sum in any order, the complement's 2^30 + 1 and
+** DOT3's bias folded into one addition) are of integers that cannot
+** overflow, and the scales are left shifts by 0-4 bits of values below
+** 2^34 (to below 2^38). In the float and double builds the lanes take combine_block's
+** IEEE operations in its order (the DOT3 sum from 0 as it starts, then
+** times 4, then the scale). */
 
 #if NUM_IS_FIXED
 typedef __m256i EnvIdx;
@@ -274,6 +278,16 @@ AVX2_INLINE V4 env_dot3(V4 p, V4 s)
     const __m128i lo = _mm256_castsi256_si128(p);
     const __m128i d = _mm_add_epi64(_mm_add_epi64(lo, _mm_unpackhi_epi64(lo, lo)), _mm256_extracti128_si256(p, 1));
     return env_scale(_mm256_broadcastq_epi64(d), s);
+}
+/* DOT3 in lanes 0-2 and lane 3 of p, scaled: p0 + p1 + p2 in lanes 0-2
+** as p + (p1 p2 p0 .) + (p2 p0 p1 .), then lane 3 of p; `s` holds the
+** scales (DOT3's 4 in the rgb lanes only) */
+AVX2_INLINE V4 env_dot3_alpha(V4 p, V4 s, V4 sa)
+{
+    (void)sa;
+    const V4 d = _mm256_add_epi64(_mm256_add_epi64(p, _mm256_permute4x64_epi64(p, _MM_SHUFFLE(3, 0, 2, 1))),
+                                  _mm256_permute4x64_epi64(p, _MM_SHUFFLE(3, 1, 0, 2)));
+    return env_scale(v4_keep_alpha(d, p), s);
 }
 AVX2_INLINE int env_fits(V4 any) { return avx2_fits_u31(any); }
 AVX2_INLINE V4 env_or(V4 a, V4 b) { return _mm256_or_si256(a, b); }
@@ -333,6 +347,8 @@ AVX2_INLINE V4 env_scales(int rgb, int alpha, int extra)
 AVX2_INLINE V4 env_scale(V4 v, V4 s) { return V4_OP(mul)(v, s); }
 /* scale * (4 * d), d the sum of lanes 0-2 in combine_block's order */
 AVX2_INLINE V4 env_dot3(V4 p, V4 s) { return env_scale(V4_OP(mul)(env_sum3(p), V4_OP(set1)(4)), s); }
+/* DOT3 in lanes 0-2 (scales s) and lane 3 of p (scales sa) */
+AVX2_INLINE V4 env_dot3_alpha(V4 p, V4 s, V4 sa) { return v4_keep_alpha(env_dot3(p, s), env_scale(p, sa)); }
 AVX2_INLINE int env_fits(V4 any) { (void)any; return 1; }
 AVX2_INLINE V4 env_or(V4 a, V4 b) { (void)b; return a; }
 #endif
@@ -359,7 +375,7 @@ typedef struct EnvRun {
     V4 neg[3];      /* lanes taking 1 - x */
     V4 add[3], add_b[3];    /* env_operand's offsets, without and with DOT3's bias */
     V4 scales;      /* per lane; for DOT3 the rgb lanes (and DOT3_RGBA's alpha) carry its 4 */
-    V4 alpha_scales;
+    V4 alpha_scales, dot3_scales;   /* ALPHA_SCALE; DOT3's rgb scales with ALPHA_SCALE */
     unsigned int fn_rgb, fn_alpha;
     int nargs, dot3, rgba_dot;
 } EnvRun;
@@ -392,13 +408,15 @@ AVX2_INLINE void combine_loop(const GlesContext *ctx, int u, int m, const FRAGV 
         if (kind == ENV_DOT3_MODULATE || (kind == ENV_ANY && r->dot3)) {
             const V4 p = env_mul(env_operand_biased(x0, r->neg[0], r->add_b[0]),
                                  env_operand_biased(x1, r->neg[1], r->add_b[1]));
-            v = env_dot3(p, r->scales);
             if (kind == ENV_DOT3_MODULATE) {
-                v = v4_keep_alpha(v, env_scale(p, r->alpha_scales));
-            } else if (!r->rgba_dot) {
-                const V4 a0 = env_operand(x0, r->neg[0], r->add[0]), a1 = env_operand(x1, r->neg[1], r->add[1]);
-                const V4 a2 = env_operand(x2, r->neg[2], r->add[2]);
-                v = v4_keep_alpha(v, env_scale(env_fn(r->fn_alpha, a0, a1, a2), r->alpha_scales));
+                v = env_dot3_alpha(p, r->dot3_scales, r->alpha_scales);
+            } else {
+                v = env_dot3(p, r->scales);
+                if (!r->rgba_dot) {
+                    const V4 a0 = env_operand(x0, r->neg[0], r->add[0]);
+                    const V4 a1 = env_operand(x1, r->neg[1], r->add[1]), a2 = env_operand(x2, r->neg[2], r->add[2]);
+                    v = v4_keep_alpha(v, env_scale(env_fn(r->fn_alpha, a0, a1, a2), r->alpha_scales));
+                }
             }
         } else if (kind == ENV_MODULATE) {
             v = env_scale(env_mul(env_operand(x0, r->neg[0], r->add[0]), env_operand(x1, r->neg[1], r->add[1])),
@@ -457,6 +475,7 @@ static void combine_run_avx2(const GlesContext *ctx, int u, int m, const FRAGV (
     }
     r.scales = env_scales(rgb_scale, alpha_scale, r.dot3 ? 2 : 0);
     r.alpha_scales = env_scales(alpha_scale, alpha_scale, 0);
+    r.dot3_scales = v4_keep_alpha(r.scales, r.alpha_scales);
     if (r.fn_rgb == GL_DOT3_RGB && r.fn_alpha == GL_MODULATE)
         combine_loop(ctx, u, m, cf, ct, cp, &r, ENV_DOT3_MODULATE);
     else if (r.fn_rgb == GL_MODULATE && r.fn_alpha == GL_MODULATE)
