@@ -240,9 +240,9 @@ void texture_env_span(const GlesContext *ctx, int u, int n, const FRAGV (*cf)[4]
 ** 2^32. Sums (the DOT3 sum in any order, the complement's 2^30 + 1 and
 ** DOT3's bias folded into one addition) are of integers that cannot
 ** overflow, and the scales are left shifts by 0-4 bits of values below
-** 2^34 (to below 2^38). In the float and double builds the lanes take combine_block's
-** IEEE operations in its order (the DOT3 sum from 0 as it starts, then
-** times 4, then the scale). */
+** 2^34 (to below 2^38). In the float and double builds the lanes take
+** combine_block's IEEE operations in its order (the DOT3 sum from 0 as it
+** starts, then times 4, then the scale). */
 
 #if NUM_IS_FIXED
 typedef __m256i EnvIdx;
