@@ -596,7 +596,11 @@ static void STAGE(stage_env)(GlesContext *ctx, SpanBuf *b, int u)
         }
         return;
     }
+#if CHAIN_SIMD
+    texture_env_span_avx2(ctx, u, b->n, (const FRAGV (*)[4])b->cf, b->ct, b->c);
+#else
     texture_env_span(ctx, u, b->n, (const FRAGV (*)[4])b->cf, b->ct, b->c);
+#endif
 }
 
 #define UNIT_STAGES(u) \

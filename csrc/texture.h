@@ -37,5 +37,10 @@ void texture_env(const GlesContext *ctx, int u, const FRAGV cf[4], FRAGV ct[][4]
 /* the same for n fragments: cf[j], ct[j], cp[j] are fragment j's */
 void texture_env_span(const GlesContext *ctx, int u, int n, const FRAGV (*cf)[4],
                       FRAGV (*ct)[GLES_MAX_TEXTURE_UNITS][4], FRAGV (*cp)[4]);
+#if SIMD_X86
+/* texture_env_span with COMBINE's arithmetic in AVX2 (the same bits) */
+void texture_env_span_avx2(const GlesContext *ctx, int u, int n, const FRAGV (*cf)[4],
+                           FRAGV (*ct)[GLES_MAX_TEXTURE_UNITS][4], FRAGV (*cp)[4]);
+#endif
 
 #endif

@@ -1,0 +1,175 @@
+"""GL_COMBINE in the span chain's AVX2 instance against the baseline and the reference.
+
+The AVX2 instance of the chain computes COMBINE with a fragment's four
+channels in one register (csrc/texenv.c, ``combine_run_avx2``); the baseline
+instance (``ctx.debug(16)``) runs the scalar ``combine_block`` over the run,
+and ``ctx.debug(1)`` the per-fragment reference. Random COMBINE states on one
+or two units (every function incl. DOT3_RGB/DOT3_RGBA, every source incl.
+the TEXTUREn crossbar, every operand, RGB_SCALE/ALPHA_SCALE 1, 2, 4, a random
+environment colour) over random textures and vertex colours whose bytes are
+often 0, 1, 127, 128, 254 or 255 (so DOT3's a - 1/2 and the complements meet
+zero and both signs) must give the same pixels on all three paths, in every
+build. The benchmark's state (DOT3_RGB of a normal map with the primary
+colour, MODULATE alpha, then MODULATE by a second texture) is one named case.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+import pytest
+from conftest import BUILDS, HAS_SIMD, make_ctx, random_triangles, set_frustum, set_ortho
+
+from gles import constants as C
+
+pytestmark = pytest.mark.filterwarnings("ignore::gles.RangeWarning")
+
+COMBINE_RGB = (C.GL_REPLACE, C.GL_MODULATE, C.GL_ADD, C.GL_ADD_SIGNED, C.GL_INTERPOLATE, C.GL_SUBTRACT,
+               C.GL_DOT3_RGB, C.GL_DOT3_RGBA)
+COMBINE_ALPHA = COMBINE_RGB[:6]
+RGB_OPERANDS = (C.GL_SRC_COLOR, C.GL_ONE_MINUS_SRC_COLOR, C.GL_SRC_ALPHA, C.GL_ONE_MINUS_SRC_ALPHA)
+ALPHA_OPERANDS = (C.GL_SRC_ALPHA, C.GL_ONE_MINUS_SRC_ALPHA)
+SCALES = (1.0, 2.0, 4.0)
+EDGE_BYTES = np.array([0, 1, 2, 63, 64, 127, 128, 129, 191, 192, 253, 254, 255], dtype=np.uint8)
+# (internal format, channels) of the textures
+FORMATS = ((C.GL_RGBA, 4), (C.GL_RGBA, 4), (C.GL_RGB, 3), (C.GL_LUMINANCE_ALPHA, 2), (C.GL_ALPHA, 1))
+
+# the paths: the chain's default instance first, then the baseline (where a
+# vector one exists) and the per-fragment reference
+PATHS = (0, 1) + ((16,) if HAS_SIMD else ())
+
+# 67 columns: a row is a chunk of 64 and a last 3
+W, H = 67, 8
+
+
+def edge_bytes(rng: np.random.Generator, shape: tuple) -> np.ndarray:
+    """Random bytes, about half of them from EDGE_BYTES."""
+    out = rng.integers(0, 256, size=shape).astype(np.uint8)
+    pick = rng.random(shape) < 0.5
+    out[pick] = rng.choice(EDGE_BYTES, size=int(pick.sum()))
+    return out
+
+
+def random_combine(rng: np.random.Generator, units: int) -> dict:
+    """One unit's COMBINE state; sources name units 0..units-1, or (rarely) one that is off."""
+    top = units + (1 if rng.random() < 0.1 else 0)
+    sources = (C.GL_TEXTURE, C.GL_CONSTANT, C.GL_PRIMARY_COLOR, C.GL_PREVIOUS) + tuple(
+        C.GL_TEXTURE0 + u for u in range(top))
+    env = [float(x) for x in rng.choice((0.0, 0.5, 1.0, 127 / 255, 128 / 255, rng.uniform(0, 1)), 4)]
+    return {
+        "rgb": int(rng.choice(COMBINE_RGB)), "alpha": int(rng.choice(COMBINE_ALPHA)),
+        "src_rgb": [int(rng.choice(sources)) for _ in range(3)],
+        "src_alpha": [int(rng.choice(sources)) for _ in range(3)],
+        "op_rgb": [int(rng.choice(RGB_OPERANDS)) for _ in range(3)],
+        "op_alpha": [int(rng.choice(ALPHA_OPERANDS)) for _ in range(3)],
+        "rgb_scale": float(rng.choice(SCALES)), "alpha_scale": float(rng.choice(SCALES)),
+        "color": env,
+    }
+
+
+def random_state(rng: np.random.Generator) -> dict:
+    units = int(rng.integers(1, 3))
+    envs = []
+    for u in range(units):
+        if u > 0 and rng.random() < 0.3:
+            envs.append({"mode": C.GL_MODULATE})
+        else:
+            envs.append({"mode": C.GL_COMBINE, **random_combine(rng, units)})
+    fmts = [FORMATS[int(rng.integers(len(FORMATS)))] for _ in range(units)]
+    return {"units": units, "envs": envs, "formats": fmts, "persp": bool(rng.random() < 0.5),
+            "linear": [bool(rng.random() < 0.5) for _ in range(units)], "seed": int(rng.integers(2**31))}
+
+
+def set_env(gl: Any, env: dict) -> None:
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, env["mode"])
+    if env["mode"] != C.GL_COMBINE:
+        return
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_COMBINE_RGB, env["rgb"])
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_COMBINE_ALPHA, env["alpha"])
+    for n in range(3):
+        gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_SRC0_RGB + n, env["src_rgb"][n])
+        gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_SRC0_ALPHA + n, env["src_alpha"][n])
+        gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_OPERAND0_RGB + n, env["op_rgb"][n])
+        gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_OPERAND0_ALPHA + n, env["op_alpha"][n])
+    gl.glTexEnvf(C.GL_TEXTURE_ENV, C.GL_RGB_SCALE, env["rgb_scale"])
+    gl.glTexEnvf(C.GL_TEXTURE_ENV, C.GL_ALPHA_SCALE, env["alpha_scale"])
+    gl.glTexEnvfv(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_COLOR, env["color"])
+
+
+def render(numeric: str, flags: int, s: dict) -> tuple:
+    ctx = make_ctx(numeric, W, H, depth=0, stencil=0)
+    ctx.debug(flags)
+    gl = ctx.gl
+    (set_frustum if s["persp"] else set_ortho)(gl, W, H)
+    rng = np.random.default_rng(s["seed"])
+    gl.glClearColor(*rng.uniform(0, 1, 4))
+    gl.glClear(C.GL_COLOR_BUFFER_BIT)
+    gl.glShadeModel(C.GL_SMOOTH)
+    verts, _ = random_triangles(rng, s["persp"], 5, W)
+    # a covering quad first (two triangles): whole chunks of live fragments
+    if s["persp"]:
+        quad = np.array([[-2, -2, -1], [2, -2, -1], [-2, 2, -1], [2, -2, -1], [2, 2, -1], [-2, 2, -1]], float)
+    else:
+        quad = np.array([[0, 0, 0], [W, 0, 0], [0, H, 0], [W, 0, 0], [W, H, 0], [0, H, 0]], float)
+    verts = np.ascontiguousarray(np.concatenate([quad, verts]), dtype=np.float32)
+    cols = np.ascontiguousarray(edge_bytes(rng, (len(verts), 4)))
+    gl.glEnableClientState(C.GL_VERTEX_ARRAY)
+    gl.glEnableClientState(C.GL_COLOR_ARRAY)
+    gl.glVertexPointer(3, C.GL_FLOAT, 0, verts)
+    gl.glColorPointer(4, C.GL_UNSIGNED_BYTE, 0, cols)
+    for u in range(s["units"]):
+        fmt, nch = s["formats"][u]
+        size = (8, 16)
+        img = np.ascontiguousarray(edge_bytes(rng, size + (nch,)))
+        gl.glActiveTexture(C.GL_TEXTURE0 + u)
+        gl.glClientActiveTexture(C.GL_TEXTURE0 + u)
+        gl.glBindTexture(C.GL_TEXTURE_2D, u + 1)
+        gl.glTexImage2D(C.GL_TEXTURE_2D, 0, fmt, size[1], size[0], 0, fmt, C.GL_UNSIGNED_BYTE, img)
+        filt = C.GL_LINEAR if s["linear"][u] else C.GL_NEAREST
+        gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MIN_FILTER, filt)
+        gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MAG_FILTER, filt)
+        gl.glEnable(C.GL_TEXTURE_2D)
+        set_env(gl, s["envs"][u])
+        gl.glEnableClientState(C.GL_TEXTURE_COORD_ARRAY)
+        tc = np.ascontiguousarray(rng.uniform(-1, 2, size=(len(verts), 2)), dtype=np.float32)
+        gl.glTexCoordPointer(2, C.GL_FLOAT, 0, tc)
+    gl.glDrawArrays(C.GL_TRIANGLES, 0, len(verts))
+    return gl.glGetError(), ctx.color_buffer()
+
+
+def check(numeric: str, s: dict) -> None:
+    err, ref = render(numeric, PATHS[0], s)
+    assert err == C.GL_NO_ERROR
+    for flags in PATHS[1:]:
+        e, got = render(numeric, flags, s)
+        assert e == err
+        assert (got == ref).all(), (numeric, flags, s)
+
+
+@pytest.mark.parametrize("numeric", BUILDS)
+def test_random_combine(numeric: str) -> None:
+    rng = np.random.default_rng({"fixed": 11, "float": 12, "double": 13}[numeric])
+    for _ in range(200):
+        check(numeric, random_state(rng))
+
+
+def dot3_env(fn: int, alpha: int, scale: float) -> dict:
+    return {"mode": C.GL_COMBINE, "rgb": fn, "alpha": alpha,
+            "src_rgb": [C.GL_TEXTURE, C.GL_PRIMARY_COLOR, C.GL_CONSTANT],
+            "src_alpha": [C.GL_TEXTURE, C.GL_PREVIOUS, C.GL_CONSTANT],
+            "op_rgb": [C.GL_SRC_COLOR, C.GL_SRC_COLOR, C.GL_SRC_ALPHA],
+            "op_alpha": [C.GL_SRC_ALPHA, C.GL_SRC_ALPHA, C.GL_SRC_ALPHA],
+            "rgb_scale": scale, "alpha_scale": scale, "color": [0.5, 0.5, 0.5, 0.5]}
+
+
+@pytest.mark.parametrize("numeric", BUILDS)
+@pytest.mark.parametrize("fn", [C.GL_DOT3_RGB, C.GL_DOT3_RGBA])
+@pytest.mark.parametrize("scale", SCALES)
+def test_dot3_then_modulate(numeric: str, fn: int, scale: float) -> None:
+    """The benchmark's state: DOT3 of texture and primary colour (MODULATE alpha), then MODULATE."""
+    for seed in range(4):
+        s = {"units": 2, "envs": [dot3_env(fn, C.GL_MODULATE, scale), {"mode": C.GL_MODULATE}],
+             "formats": [(C.GL_RGBA, 4), (C.GL_RGBA, 4)], "persp": bool(seed & 1),
+             "linear": [True, bool(seed & 2)], "seed": 100 + seed}
+        check(numeric, s)
