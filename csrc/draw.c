@@ -331,9 +331,11 @@ static void positions_range(Batch *b, int64_t lo, int64_t hi)
 }
 
 /* Assembly reads each vertex's clip codes and window position, long after
-** the positions pass wrote them: a large indexed mesh's vertices are no
-** longer in the cache, so the triangle DRAW_PREFETCH ahead asks for them */
+** the positions pass wrote them: a large indexed mesh's vertices (more
+** than DRAW_PREFETCH_VERTICES, about 256 KiB) are no longer in the cache,
+** so the triangle DRAW_PREFETCH ahead asks for them */
 #define DRAW_PREFETCH 16
+#define DRAW_PREFETCH_VERTICES 1200
 static void prefetch_window(const Batch *b, int64_t index)
 {
     __builtin_prefetch(&slot_of(b, index)->outcode, 0, 3);
@@ -419,6 +421,7 @@ static void assemble(Batch *b, unsigned int mode, int count, const Indices *ix)
         else
             positions_indexed(b, count, ix);
     }
+    const int far = !b->reference && b->last - b->base + 1 > DRAW_PREFETCH_VERTICES;
     switch (mode) {
     case GL_POINTS:
         for (int i = 0; i < count; i++)
@@ -437,7 +440,7 @@ static void assemble(Batch *b, unsigned int mode, int count, const Indices *ix)
         break;
     case GL_TRIANGLES:
         for (int i = 0; i + 2 < count; i += 3) {
-            if (i + 3 * DRAW_PREFETCH + 2 < count)
+            if (far && i + 3 * DRAW_PREFETCH + 2 < count)
                 for (int k = 0; k < 3; k++)
                     prefetch_window(b, index_at(ix, i + 3 * DRAW_PREFETCH + k));
             emit_triangle(b, index_at(ix, i), index_at(ix, i + 1), index_at(ix, i + 2));
