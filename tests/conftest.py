@@ -69,6 +69,20 @@ def set_frustum(gl: Any, w: int, h: int, near: float = 1.0, far: float = 3.0) ->
     gl.glLoadIdentity()
 
 
+def colour_window(numeric: str, flags: int, w: int, h: int, persp: bool,
+                  seed: int) -> tuple[gles.Context, Any, np.random.Generator]:
+    """A w x h colour-only context with debug `flags`, set_frustum's or set_ortho's
+    projection, cleared to a colour drawn from rng(seed); returns ctx, gl and that rng."""
+    ctx = make_ctx(numeric, w, h, depth=0, stencil=0)
+    ctx.debug(flags)
+    gl = ctx.gl
+    (set_frustum if persp else set_ortho)(gl, w, h)
+    rng = np.random.default_rng(seed)
+    gl.glClearColor(*rng.uniform(0, 1, 4))
+    gl.glClear(C.GL_COLOR_BUFFER_BIT)
+    return ctx, gl, rng
+
+
 def draw_arrays(gl: Any, verts: np.ndarray, colors: np.ndarray | None = None,
                 mode: int = C.GL_TRIANGLES, indices: np.ndarray | None = None) -> None:
     """Draw float32 vertices (n, 2|3|4) with optional ubyte RGBA colours (n, 4)

@@ -19,7 +19,7 @@ from typing import Any
 
 import numpy as np
 import pytest
-from conftest import BUILDS, HAS_SIMD, make_ctx, random_triangles, set_frustum, set_ortho
+from conftest import BUILDS, HAS_SIMD, colour_window, random_triangles
 
 from gles import constants as C
 
@@ -98,13 +98,7 @@ def set_env(gl: Any, env: dict) -> None:
 
 
 def render(numeric: str, flags: int, s: dict) -> tuple:
-    ctx = make_ctx(numeric, W, H, depth=0, stencil=0)
-    ctx.debug(flags)
-    gl = ctx.gl
-    (set_frustum if s["persp"] else set_ortho)(gl, W, H)
-    rng = np.random.default_rng(s["seed"])
-    gl.glClearColor(*rng.uniform(0, 1, 4))
-    gl.glClear(C.GL_COLOR_BUFFER_BIT)
+    ctx, gl, rng = colour_window(numeric, flags, W, H, s["persp"], s["seed"])
     gl.glShadeModel(C.GL_SMOOTH)
     verts, _ = random_triangles(rng, s["persp"], 5, W)
     # a covering quad first (two triangles): whole chunks of live fragments

@@ -23,7 +23,7 @@ from typing import Any
 
 import numpy as np
 import pytest
-from conftest import BUILDS, HAS_SIMD, make_ctx, random_triangles, set_frustum, set_ortho
+from conftest import BUILDS, HAS_SIMD, colour_window, make_ctx, random_triangles, set_ortho
 
 from gles import constants as C
 
@@ -190,13 +190,7 @@ def random_state(rng: np.random.Generator) -> dict:
 
 def render(numeric: str, flags: int, s: dict) -> tuple:
     w, h = s["w"], s["h"]
-    ctx = make_ctx(numeric, w, h, depth=0, stencil=0)
-    ctx.debug(flags)
-    gl = ctx.gl
-    (set_frustum if s["persp"] else set_ortho)(gl, w, h)
-    rng = np.random.default_rng(s["seed"])
-    gl.glClearColor(*rng.uniform(0, 1, 4))
-    gl.glClear(C.GL_COLOR_BUFFER_BIT)
+    ctx, gl, rng = colour_window(numeric, flags, w, h, s["persp"], s["seed"])
     gl.glShadeModel(C.GL_SMOOTH if s["smooth"] else C.GL_FLAT)
     verts, cols = random_triangles(rng, s["persp"], 6, w)
     verts = np.ascontiguousarray(verts, dtype=np.float32)
