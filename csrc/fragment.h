@@ -189,26 +189,31 @@ static inline void fragment_write_setup(const GlesContext *ctx, FragWrite *w)
 ** fragment at (x, y), index `at` (§4.1.7-4.1.10) */
 /* the logic op (§4.1.10) of source s and destination d; inline so that
 ** writers that fix the op per chunk have the switch folded */
+/* the body of a logic op function of source s and destination d, for a
+** word and for a vector of words (span_avx2.h's avx2_logic_op4) */
+#define FRAGMENT_LOGIC_OP_BODY(op, s, d) \
+    switch (op) { \
+    case GL_CLEAR: return s & 0; \
+    case GL_AND: return s & d; \
+    case GL_AND_REVERSE: return s & ~d; \
+    case GL_COPY: return s; \
+    case GL_AND_INVERTED: return ~s & d; \
+    case GL_NOOP: return d; \
+    case GL_XOR: return s ^ d; \
+    case GL_OR: return s | d; \
+    case GL_NOR: return ~(s | d); \
+    case GL_EQUIV: return ~(s ^ d); \
+    case GL_INVERT: return ~d; \
+    case GL_OR_REVERSE: return s | ~d; \
+    case GL_COPY_INVERTED: return ~s; \
+    case GL_OR_INVERTED: return ~s | d; \
+    case GL_NAND: return ~(s & d); \
+    default: return s | ~s; /* GL_SET */ \
+    }
+
 static inline uint32_t fragment_logic_op(unsigned int op, uint32_t s, uint32_t d)
 {
-    switch (op) {
-    case GL_CLEAR: return 0;
-    case GL_AND: return s & d;
-    case GL_AND_REVERSE: return s & ~d;
-    case GL_COPY: return s;
-    case GL_AND_INVERTED: return ~s & d;
-    case GL_NOOP: return d;
-    case GL_XOR: return s ^ d;
-    case GL_OR: return s | d;
-    case GL_NOR: return ~(s | d);
-    case GL_EQUIV: return ~(s ^ d);
-    case GL_INVERT: return ~d;
-    case GL_OR_REVERSE: return s | ~d;
-    case GL_COPY_INVERTED: return ~s;
-    case GL_OR_INVERTED: return ~s | d;
-    case GL_NAND: return ~(s & d);
-    default: return 0xFFFFFFFFu; /* GL_SET */
-    }
+    FRAGMENT_LOGIC_OP_BODY(op, s, d)
 }
 
 static inline void fragment_write(GlesContext *ctx, const FragWrite *w, int x, int y, size_t at, const FRAGV c[4])

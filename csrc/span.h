@@ -55,10 +55,12 @@ static inline void rect_linear_coords(const RectSetup *r, int u, int64_t px, int
 /* A point sprite's coordinates for a point at window (x, y) of `size`,
 ** all in subpixels (OES_point_sprite): s = 1/2 + (x_f + 1/2 - x_w) / size
 ** at pixel column px, t = 1/2 - (y_f + 1/2 - y_w) / size at row py */
-static inline TEXC sprite_s(int64_t x, int64_t size, int64_t px)
+/* s's numerator: the pixel centre's distance from the sprite's left edge */
+static inline int64_t sprite_s_num(int64_t x, int64_t size, int64_t px)
 {
-    return texc_ratio(size / 2 + px * GLES_SUBPIXEL_ONE + GLES_SUBPIXEL_ONE / 2 - x, size);
+    return size / 2 + px * GLES_SUBPIXEL_ONE + GLES_SUBPIXEL_ONE / 2 - x;
 }
+static inline TEXC sprite_s(int64_t x, int64_t size, int64_t px) { return texc_ratio(sprite_s_num(x, size, px), size); }
 static inline TEXC sprite_t(int64_t y, int64_t size, int64_t py)
 {
     return texc_ratio(size / 2 - (py * GLES_SUBPIXEL_ONE + GLES_SUBPIXEL_ONE / 2 - y), size);
@@ -120,7 +122,7 @@ static inline void sprite_s_chunk(int64_t x, int64_t size, const SpanBuf *b, TEX
                 q++;
             }
         } else {
-            const int64_t num = size / 2 + (b->x0 + b->k[j]) * (int64_t)GLES_SUBPIXEL_ONE + GLES_SUBPIXEL_ONE / 2 - x;
+            const int64_t num = sprite_s_num(x, size, b->x0 + b->k[j]);
             q = texc_ratio(num, size);
             r = num >= 0 && size > 0 ? num * TEXC_ONE - q * size : -1;
         }

@@ -1149,31 +1149,15 @@ AVX2_INLINE uint32_t v4_rgba8(V4 c, uint32_t d, int kind)
     return v4_pack_unorm8(v4_add(v4_mul01(cv, va), v4_mul01(v4_unorm8(d), v4_one_minus(va))));
 }
 
-/* fragment_logic_op on four words (the same expressions on vector lanes) */
+/* fragment_logic_op on four words: its body on vector lanes */
 typedef uint32_t avx2_u32x4 __attribute__((vector_size(16)));
+AVX2_INLINE avx2_u32x4 avx2_logic_op_u32x4(unsigned int op, avx2_u32x4 s, avx2_u32x4 d)
+{
+    FRAGMENT_LOGIC_OP_BODY(op, s, d)
+}
 AVX2_INLINE __m128i avx2_logic_op4(unsigned int op, __m128i sv, __m128i dv)
 {
-    const avx2_u32x4 s = (avx2_u32x4)sv, d = (avx2_u32x4)dv;
-    avx2_u32x4 r;
-    switch (op) {
-    case GL_CLEAR: r = s & 0; break;
-    case GL_AND: r = s & d; break;
-    case GL_AND_REVERSE: r = s & ~d; break;
-    case GL_COPY: r = s; break;
-    case GL_AND_INVERTED: r = ~s & d; break;
-    case GL_NOOP: r = d; break;
-    case GL_XOR: r = s ^ d; break;
-    case GL_OR: r = s | d; break;
-    case GL_NOR: r = ~(s | d); break;
-    case GL_EQUIV: r = ~(s ^ d); break;
-    case GL_INVERT: r = ~d; break;
-    case GL_OR_REVERSE: r = s | ~d; break;
-    case GL_COPY_INVERTED: r = ~s; break;
-    case GL_OR_INVERTED: r = ~s | d; break;
-    case GL_NAND: r = ~(s & d); break;
-    default: r = (s & 0) | 0xFFFFFFFFu; break; /* GL_SET */
-    }
-    return (__m128i)r;
+    return (__m128i)avx2_logic_op_u32x4(op, (avx2_u32x4)sv, (avx2_u32x4)dv);
 }
 
 /* four words (slots k[0..3] of dst) as one vector: one load when the
@@ -1196,8 +1180,6 @@ AVX2_INLINE void avx2_store_words4(uint32_t *dst, uint32_t k4, int run, __m128i 
     dst[(k4 >> 16) & 0xFFu] = (uint32_t)_mm_extract_epi32(w, 2);
     dst[k4 >> 24] = (uint32_t)_mm_extract_epi32(w, 3);
 }
-/* whether four ascending slot offsets (bytes of k4) are consecutive */
-AVX2_INLINE int avx2_run4(uint32_t k4) { return k4 == (k4 & 0xFFu) * 0x01010101u + 0x03020100u; }
 
 #if NUM_IS_FIXED
 /* v4_rgba8 of four fragments c[0..3] over the stored words d (lanes 0..3),

@@ -813,7 +813,7 @@ static inline void STAGE(write_rgba8)(GlesContext *ctx, SpanBuf *b, int kind)
     for (; j + 4 <= n; j += 4) {
         uint32_t k4;
         memcpy(&k4, &b->k[j], sizeof k4);
-        const int run = avx2_run4(k4);
+        const int run = slots_adjacent4(&b->k[j]);
         const __m128i d = kind ? avx2_load_words4(dst, k4, run) : _mm_setzero_si128();
         __m128i w;
         if (avx2_rgba8x4(&b->c[j], d, kind, &w)) {
@@ -870,7 +870,7 @@ static inline __attribute__((always_inline)) void STAGE(write_rgba8_ops)(GlesCon
     for (; j + 4 <= n; j += 4) {
         uint32_t k4;
         memcpy(&k4, &b->k[j], sizeof k4);
-        const int run = avx2_run4(k4);
+        const int run = slots_adjacent4(&b->k[j]);
         const __m128i d = avx2_load_words4(dst, k4, run);
         __m128i s;
         if (avx2_rgba8x4(&b->c[j], d, kind, &s)) {

@@ -6,6 +6,7 @@
 #include "state.h"
 #include "texture.h"
 #include "span.h"
+#include "fragment.h"   /* span_avx2.h's logic op body */
 
 #if SIMD_X86
 #pragma GCC push_options
@@ -107,19 +108,34 @@ static int combine_args(unsigned int fn)
     return fn == GL_REPLACE ? 1 : (fn == GL_INTERPOLATE ? 3 : 2);
 }
 
+/* the arguments COMBINE's rgb and alpha functions read (DOT3 reads two;
+** DOT3_RGBA's alpha is its rgb result, so its alpha function reads none) */
+static void combine_arg_counts(const TexUnit *tu, int *nrgb, int *nalpha)
+{
+    const int dot3 = tu->combine_rgb == GL_DOT3_RGB || tu->combine_rgb == GL_DOT3_RGBA;
+    *nrgb = dot3 ? 2 : combine_args(tu->combine_rgb);
+    *nalpha = tu->combine_rgb == GL_DOT3_RGBA ? 0 : combine_args(tu->combine_alpha);
+}
+
+/* the unit's environment colour in the fragment format */
+static void env_color(const TexUnit *tu, FRAGV cc[4])
+{
+    for (int i = 0; i < 4; i++)
+        cc[i] = frag_from_num(tu->n_env_color[i]);
+}
+
 static void combine_block(const GlesContext *ctx, int u, int m, const FRAGV (*cf)[4],
                           FRAGV (*ct)[GLES_MAX_TEXTURE_UNITS][4], FRAGV (*cp)[4])
 {
     const TexUnit *tu = &ctx->units[u];
     FRAGV cc[4];
-    for (int i = 0; i < 4; i++)
-        cc[i] = frag_from_num(tu->n_env_color[i]);
+    env_color(tu, cc);
     const int dot3 = tu->combine_rgb == GL_DOT3_RGB || tu->combine_rgb == GL_DOT3_RGBA;
     const int rgba_dot = tu->combine_rgb == GL_DOT3_RGBA;
     const int rgb_scale = scale_factor(tu->rgb_scale), alpha_scale = scale_factor(tu->alpha_scale);
     FRAGV a[3][ENV_BLOCK][4], out[ENV_BLOCK][4];
-    int nrgb = dot3 ? 2 : combine_args(tu->combine_rgb);
-    int nalpha = rgba_dot ? 0 : combine_args(tu->combine_alpha);
+    int nrgb, nalpha;
+    combine_arg_counts(tu, &nrgb, &nalpha);
     for (int n = 0; n < 3; n++) {
         size_t stride;
         const FRAGV *base;
@@ -160,8 +176,7 @@ void texture_env(const GlesContext *ctx, int u, const FRAGV cf[4], FRAGV ct[][4]
     unsigned int fmt = tu->bound->format;
     FRAGV cc[4] = { 0, 0, 0, 0 };
     if (tu->env_mode == GL_BLEND || tu->env_mode == GL_COMBINE)
-        for (int i = 0; i < 4; i++)
-            cc[i] = frag_from_num(tu->n_env_color[i]);
+        env_color(tu, cc);
     FRAGV out[4];
     switch (tu->env_mode) {
     case GL_REPLACE:
@@ -439,16 +454,15 @@ static void combine_run_avx2(const GlesContext *ctx, int u, int m, const FRAGV (
 {
     const TexUnit *tu = &ctx->units[u];
     FRAGV cc[4];
-    for (int i = 0; i < 4; i++)
-        cc[i] = frag_from_num(tu->n_env_color[i]);
+    env_color(tu, cc);
     EnvRun r;
     r.fn_rgb = tu->combine_rgb;
     r.fn_alpha = tu->combine_alpha;
     r.dot3 = r.fn_rgb == GL_DOT3_RGB || r.fn_rgb == GL_DOT3_RGBA;
     r.rgba_dot = r.fn_rgb == GL_DOT3_RGBA;
     const int rgb_scale = scale_factor(tu->rgb_scale), alpha_scale = scale_factor(tu->alpha_scale);
-    const int nrgb = r.dot3 ? 2 : combine_args(r.fn_rgb);
-    const int nalpha = r.rgba_dot ? 0 : combine_args(r.fn_alpha);
+    int nrgb, nalpha;
+    combine_arg_counts(tu, &nrgb, &nalpha);
     r.nargs = nrgb > nalpha ? nrgb : nalpha;
     /* DOT3's bias, 0 in the alpha lane (DOT3_RGB's MODULATE alpha is then
     ** lane 3 of its products) */

@@ -10,6 +10,7 @@
 #include "state.h"
 #include "texture.h"
 #include "span.h"
+#include "fragment.h"   /* span_avx2.h's logic op body */
 
 /* the most fragments a span sampler is given at once (a chunk) */
 #define SPAN_SAMPLE_MAX SPAN_CHUNK
