@@ -84,6 +84,12 @@ int gles_debug_persp_any(int simd, int eshift, const int64_t mant[3], const int 
 ** triangle's, for an affine one); mantissas below 2^30, as recipw_of makes */
 int gles_debug_persp(int simd, int eshift, int64_t lin_recip, const int64_t mant[3], const int qshift[3], int affine,
                      int n, const int64_t *e, int32_t *out);
+/* for tests, fixed build (0 elsewhere): the colour stage's value of n
+** fragments with weights p[3 j .. 3 j + 2] for vertex colours col[4 k ..
+** 4 k + 3] (0.30), clamped to [0, 1] when clamp (as for texturing), into
+** out[4 j ..]: by the vector kernels where simd != 0 and the CPU has them
+** (the colours in int32 range, else the scalar code, as the stage does) */
+int gles_debug_color(int simd, int clamp, const int64_t col[12], int n, const int32_t *p, int64_t *out);
 /* for tests, fixed build (0 elsewhere): a lane kernel of the vertex batch
 ** over n lanes (a multiple of 8, at most 64), through the AVX2 kernel where
 ** simd != 0 and the CPU has AVX2, else the scalar code; returns 1 when run.

@@ -238,23 +238,47 @@ AVX2_INLINE void avx2_tex_coord(int projective, const __m256i a[3], const WGT p[
     out->t = texc_div(lanes[1], lanes[3]);
 }
 
-/* texc_lerp3 of one coordinate (vertex values a[0..2], 16.16) for four
-** fragments' weights p[0..3] at once: lanes are fragments, and each lane's
-** sum and rounding are avx2_lerp3's */
-AVX2_INLINE __m256i avx2_texc_lerp3x4(const NUM a[3], const WGT (*p)[3])
+/* the weights p[0..3][i] of four fragments as the low dwords of 64-bit
+** lanes (what vpmuldq reads): the twelve WGT as two overlapping loads of
+** eight, permuted */
+AVX2_INLINE void avx2_wgt_lanes4(const WGT (*p)[3], __m256i w[3])
 {
-    __m256i acc = _mm256_setzero_si256();
-    for (int i = 0; i < 3; i++)
-        acc = _mm256_add_epi64(acc, _mm256_mul_epi32(_mm256_set1_epi64x(a[i]),
-                                                     _mm256_setr_epi64x(p[0][i], p[1][i], p[2][i], p[3][i])));
-    return avx2_round_shift(acc, 14);
+    const int32_t *q = &p[0][0];
+    const __m256i a = _mm256_loadu_si256((const __m256i *)(const void *)q);         /* ints 0..7 */
+    const __m256i b = _mm256_loadu_si256((const __m256i *)(const void *)(q + 4));   /* ints 4..11 */
+    w[0] = _mm256_blend_epi32(_mm256_permutevar8x32_epi32(a, _mm256_setr_epi32(0, 0, 3, 3, 6, 6, 6, 6)),
+                              _mm256_permutevar8x32_epi32(b, _mm256_set1_epi32(5)), 0xC0);
+    w[1] = _mm256_blend_epi32(_mm256_permutevar8x32_epi32(a, _mm256_setr_epi32(1, 1, 4, 4, 7, 7, 7, 7)),
+                              _mm256_permutevar8x32_epi32(b, _mm256_set1_epi32(6)), 0xC0);
+    w[2] = _mm256_blend_epi32(_mm256_permutevar8x32_epi32(a, _mm256_setr_epi32(2, 2, 5, 5, 5, 5, 5, 5)),
+                              _mm256_permutevar8x32_epi32(b, _mm256_setr_epi32(4, 4, 4, 4, 4, 4, 7, 7)), 0xF0);
+}
+
+/* a[0] w[0] + a[1] w[1] + a[2] w[2] per lane (four fragments' weights w as
+** avx2_wgt_lanes4 gives them, vertex values a in int32 range), the 64-bit
+** sum of avx2_lerp3w's lanes */
+AVX2_INLINE __m256i avx2_dot3_lanes(int64_t a0, int64_t a1, int64_t a2, const __m256i w[3])
+{
+    return _mm256_add_epi64(_mm256_add_epi64(_mm256_mul_epi32(_mm256_set1_epi64x(a0), w[0]),
+                                             _mm256_mul_epi32(_mm256_set1_epi64x(a1), w[1])),
+                            _mm256_mul_epi32(_mm256_set1_epi64x(a2), w[2]));
+}
+
+/* texc_lerp3 of one coordinate (vertex values a[0..2], 16.16) for four
+** fragments (lanes) whose weights are w: each lane's sum and rounding are
+** avx2_lerp3's */
+AVX2_INLINE __m256i avx2_texc_lerp3x4(const NUM a[3], const __m256i w[3])
+{
+    return avx2_round_shift(avx2_dot3_lanes(a[0], a[1], a[2], w), 14);
 }
 
 /* span_tex_coord without q (an affine unit) for four fragments: s and t
 ** of vertex values sv[0..2], tv[0..2] at weights p[0..3], into out[0..3] */
 AVX2_INLINE void avx2_tex_coord_affine4(const NUM sv[3], const NUM tv[3], const WGT (*p)[3], TexCoord *out)
 {
-    avx2_store_st4(avx2_texc_lerp3x4(sv, p), avx2_texc_lerp3x4(tv, p), out);
+    __m256i w[3];
+    avx2_wgt_lanes4(p, w);
+    avx2_store_st4(avx2_texc_lerp3x4(sv, w), avx2_texc_lerp3x4(tv, w), out);
 }
 
 /* 1 when every lane lies in the int32 range (an operand of vpmuldq) */
@@ -878,6 +902,20 @@ AVX2_INLINE uint32_t v4_pack565(V4 v, int dither, FRAGV t)
     return (uint32_t)_mm_cvtsi128_si32(x);
 }
 AVX2_INLINE V4 v4_lerp3f(V4 a0, V4 a1, V4 a2, const WGT *p) { return avx2_lerp3f(a0, a1, a2, p); }
+/* frag_clamp01(frag_lerp3f(...)): clamped, the rounding needs no sign (a
+** negative sum rounds to at most 0 and clamps to 0, as max(sum, 0)
+** rounded does) */
+AVX2_INLINE V4 v4_lerp3f_clamp01(V4 a0, V4 a1, V4 a2, const WGT *p)
+{
+    const __m128i w = _mm_insert_epi32(_mm_loadl_epi64((const __m128i *)(const void *)p), p[2], 2);
+    const __m256i ww = _mm256_broadcastsi128_si256(w), one = _mm256_set1_epi64x(FRAG_ONE);
+    const __m256i acc = _mm256_add_epi64(_mm256_add_epi64(_mm256_mul_epi32(a0, _mm256_shuffle_epi32(ww, 0x00)),
+                                                          _mm256_mul_epi32(a1, _mm256_shuffle_epi32(ww, 0x55))),
+                                         _mm256_mul_epi32(a2, _mm256_shuffle_epi32(ww, 0xAA)));
+    const __m256i pos = _mm256_andnot_si256(_mm256_cmpgt_epi64(_mm256_setzero_si256(), acc), acc);
+    const __m256i r = _mm256_srli_epi64(_mm256_add_epi64(pos, _mm256_set1_epi64x((int64_t)1 << 29)), 30);
+    return _mm256_blendv_epi8(r, one, _mm256_cmpgt_epi64(r, one));
+}
 /* the same for weights just computed, in registers: a vector load of
 ** three scalar stores would wait for them (no store forwarding) */
 AVX2_INLINE V4 v4_lerp3f_w(V4 a0, V4 a1, V4 a2, WGT w0, WGT w1, WGT w2)
@@ -998,6 +1036,7 @@ AVX2_INLINE V4 v4_lerp3f_w(V4 a0, V4 a1, V4 a2, WGT w0, WGT w1, WGT w2)
     const WGT p[3] = { w0, w1, w2 };
     return v4_lerp3f(a0, a1, a2, p);
 }
+AVX2_INLINE V4 v4_lerp3f_clamp01(V4 a0, V4 a1, V4 a2, const WGT *p) { return v4_clamp01(v4_lerp3f(a0, a1, a2, p)); }
 /* frag_bilerp_rgba8: (v00 (1-a) + v10 a)(1-b) + (v01 (1-a) + v11 a) b per channel */
 static inline void avx2_bilerp_rgba8(uint32_t c00, uint32_t c10, uint32_t c01, uint32_t c11, TEXW a, TEXW b,
                                      FRAGV out[4])
@@ -1463,22 +1502,6 @@ AVX2_INLINE int avx2_compact_offsets(uint8_t *k, int n, uint64_t keep)
 ** Fog factors, the alpha test's comparisons and RGBA8888 logic ops for
 ** several fragments at a time (span_stages.h: stage_fog, stage_alpha) */
 #if SIMD_X86 && NUM_IS_FIXED
-/* the weights p[0..3][i] of four fragments as the low dwords of 64-bit
-** lanes (what vpmuldq reads): the twelve WGT as two overlapping loads of
-** eight, permuted */
-AVX2_INLINE void avx2_wgt_lanes4(const WGT (*p)[3], __m256i w[3])
-{
-    const int32_t *q = &p[0][0];
-    const __m256i a = _mm256_loadu_si256((const __m256i *)(const void *)q);         /* ints 0..7 */
-    const __m256i b = _mm256_loadu_si256((const __m256i *)(const void *)(q + 4));   /* ints 4..11 */
-    w[0] = _mm256_blend_epi32(_mm256_permutevar8x32_epi32(a, _mm256_setr_epi32(0, 0, 3, 3, 6, 6, 6, 6)),
-                              _mm256_permutevar8x32_epi32(b, _mm256_set1_epi32(5)), 0xC0);
-    w[1] = _mm256_blend_epi32(_mm256_permutevar8x32_epi32(a, _mm256_setr_epi32(1, 1, 4, 4, 7, 7, 7, 7)),
-                              _mm256_permutevar8x32_epi32(b, _mm256_set1_epi32(6)), 0xC0);
-    w[2] = _mm256_blend_epi32(_mm256_permutevar8x32_epi32(a, _mm256_setr_epi32(2, 2, 5, 5, 5, 5, 5, 5)),
-                              _mm256_permutevar8x32_epi32(b, _mm256_setr_epi32(4, 4, 4, 4, 4, 4, 7, 7)), 0xF0);
-}
-
 /* frag_clamp01(frag_lerp3(a[0], a[1], a[2], p[k][0..2])) for the four
 ** fragments k (lanes): with |a[i]| <= 2^30 (the caller checks) each
 ** product is below 2^61 and their sum below 2^63, so the 64-bit sum is
@@ -1488,10 +1511,7 @@ AVX2_INLINE __m256i avx2_fog4(const NUM a[3], const WGT (*p)[3])
 {
     __m256i w[3];
     avx2_wgt_lanes4(p, w);
-    const __m256i acc = _mm256_add_epi64(_mm256_add_epi64(_mm256_mul_epi32(_mm256_set1_epi64x(a[0]), w[0]),
-                                                          _mm256_mul_epi32(_mm256_set1_epi64x(a[1]), w[1])),
-                                         _mm256_mul_epi32(_mm256_set1_epi64x(a[2]), w[2]));
-    return avx2_clamp01(avx2_round_shift(acc, 16));
+    return avx2_clamp01(avx2_round_shift(avx2_dot3_lanes(a[0], a[1], a[2], w), 16));
 }
 
 /* fragment_fog of four fragments c[0..3] with factors f (lanes, each in

@@ -63,6 +63,7 @@ typedef struct ChainStages {
     SpanStage persp, neighbours, depth, tests_early, tests_late, zless_early, color;
     SpanStage fetch[GLES_MAX_TEXTURE_UNITS], fetch_rect[GLES_MAX_TEXTURE_UNITS], env[GLES_MAX_TEXTURE_UNITS];
     SpanStage fetch_direct[GLES_MAX_TEXTURE_UNITS], fetch_rect_direct[GLES_MAX_TEXTURE_UNITS];
+    SpanStage color_modulate[GLES_MAX_TEXTURE_UNITS];
     SpanStage fog, fog_const, alpha;
     SpanStage write, write_rgba8, write_rgba8_alpha, write_rgba8_add, write_rgba8_logic, write_rgba8_masked;
     SpanStage write_565, write_565_alpha;
@@ -101,6 +102,13 @@ static int debug_persp4_avx2(const WgtSetup *s, int any, const int64_t e[4][3], 
         return 0;
     avx2_store_wgt4(l, out);
     return 1;
+}
+/* gles_debug_color's vector path: stage_color's kernels */
+static void debug_color_avx2(int clamp, const FRAGV *const col[3], int n, const WGT (*p)[3], FRAGV (*out)[4])
+{
+    const V4 a0 = v4_load(col[0]), a1 = v4_load(col[1]), a2 = v4_load(col[2]);
+    for (int j = 0; j < n; j++)
+        v4_store(out[j], clamp ? v4_lerp3f_clamp01(a0, a1, a2, p[j]) : v4_lerp3f(a0, a1, a2, p[j]));
 }
 #endif
 #pragma GCC pop_options
@@ -162,6 +170,34 @@ int gles_debug_persp(int simd, int eshift, int64_t lin_recip, const int64_t mant
                      int n, const int64_t *e, int32_t *out)
 {
     return debug_persp(0, simd, eshift, lin_recip, mant, qshift, affine, n, e, out);
+}
+
+int gles_debug_color(int simd, int clamp, const int64_t col[12], int n, const int32_t *p, int64_t *out)
+{
+#if NUM_IS_FIXED
+    if (n < 0)
+        return 0;
+    const FRAGV *const c[3] = { col, col + 4, col + 8 };
+    int fits = 1;
+    for (int i = 0; i < 12; i++)
+        fits &= col[i] >= INT32_MIN && col[i] <= INT32_MAX;
+#if SIMD_X86
+    if (simd && fits && simd_detect() >= SIMD_AVX2) {
+        debug_color_avx2(clamp, c, n, (const WGT (*)[3])p, (FRAGV (*)[4])out);
+        return 1;
+    }
+#endif
+    (void)simd, (void)fits;
+    for (int j = 0; j < n; j++)
+        for (int i = 0; i < 4; i++) {
+            const FRAGV v = frag_lerp3f(c[0][i], c[1][i], c[2][i], p[3 * j], p[3 * j + 1], p[3 * j + 2]);
+            out[4 * j + i] = clamp ? frag_clamp01(v) : v;
+        }
+    return 1;
+#else
+    (void)simd, (void)clamp, (void)col, (void)n, (void)p, (void)out;
+    return 0;
+#endif
 }
 
 /* {====================================================================
@@ -234,11 +270,16 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     const int lone = units && !(units & (units - 1)) ? __builtin_ctz(units) : -1;
     const int direct = lone >= 0 && ctx->units[lone].env_mode == GL_REPLACE
                     && ctx->units[lone].bound->format == GL_RGBA;
+    /* the first unit's MODULATE of an RGBA or RGB texture takes the colour
+    ** as it is formed (stage_color_modulate), after the fetches */
+    const int first = units ? __builtin_ctz(units) : -1;
+    const int modulate = !rect && !direct && first >= 0 && ctx->units[first].env_mode == GL_MODULATE
+                      && (ctx->units[first].bound->format == GL_RGBA || ctx->units[first].bound->format == GL_RGB);
     if (!rect) {
         s[n++] = cs->persp;
         if (lod)
             s[n++] = cs->neighbours;
-        if (!direct)
+        if (!direct && !modulate)
             s[n++] = cs->color;
     }
     if (direct) {
@@ -249,7 +290,7 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
                 s[n++] = rect ? cs->fetch_rect[u] : cs->fetch[u];
         for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
             if (units & (1u << u))
-                s[n++] = cs->env[u];
+                s[n++] = modulate && u == first ? cs->color_modulate[u] : cs->env[u];
     }
     if (ctx->fog)
         s[n++] = rect ? cs->fog_const : cs->fog;

@@ -421,13 +421,15 @@ static void STAGE(stage_color)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
     if (t->smooth) {
         const V4 a0 = v4_load(t->col[0]), a1 = v4_load(t->col[1]), a2 = v4_load(t->col[2]);
         if (v4_lerp_fits(a0) && v4_lerp_fits(a1) && v4_lerp_fits(a2)) {
-            for (int j = 0; j < b->n; j++) {
-                V4 c = v4_lerp3f(a0, a1, a2, b->p[j]);
-                if (texturing) {
-                    c = v4_clamp01(c);
+            if (texturing) {
+                for (int j = 0; j < b->n; j++) {
+                    const V4 c = v4_lerp3f_clamp01(a0, a1, a2, b->p[j]);
                     v4_store(b->cf[j], c);
+                    v4_store(b->c[j], c);
                 }
-                v4_store(b->c[j], c);
+            } else {
+                for (int j = 0; j < b->n; j++)
+                    v4_store(b->c[j], v4_lerp3f(a0, a1, a2, b->p[j]));
             }
             return;
         }
@@ -603,6 +605,62 @@ static void STAGE(stage_env)(GlesContext *ctx, SpanBuf *b, int u)
 #endif
 }
 
+#if CHAIN_SIMD
+/* stage_color_modulate's loop; smooth is a constant where it is inlined,
+** and `alpha` keeps the colour's alpha (an RGB texture) as v4_keep_alpha */
+static inline void STAGE(color_modulate_loop)(SpanBuf *b, int u, int smooth, int keep_cf, int alpha, V4 a0, V4 a1,
+                                              V4 a2)
+{
+    const int n = b->n;
+    const V4 flat = v4_clamp01(a0);
+    for (int j = 0; j < n; j++) {
+        /* the clamped colour is in [0, 1], so it fits v4_mul01 */
+        const V4 c = smooth ? v4_lerp3f_clamp01(a0, a1, a2, b->p[j]) : flat;
+        if (keep_cf)
+            v4_store(b->cf[j], c);
+        const V4 ct = v4_load(b->ct[j][u]);
+        if (v4_fits(ct)) {
+            const V4 m = v4_mul01(c, ct);
+            v4_store(b->c[j], alpha ? v4_keep_alpha(m, c) : m);
+        } else {
+            v4_store(b->c[j], c);
+            for (int i = 0; i < (alpha ? 3 : 4); i++)
+                b->c[j][i] = frag_mul(b->c[j][i], b->ct[j][u][i]);
+        }
+    }
+}
+#endif
+
+/* stage_color, then stage_env's MODULATE of unit u (an RGBA or RGB
+** texture) in one pass: the colour goes from registers into the product.
+** The chain runs it after the unit's fetch (which does not read the
+** colour); the primary colour b->cf is kept only for later units. */
+static void STAGE(stage_color_modulate)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, int u)
+{
+#if CHAIN_SIMD
+    const int alpha = ctx->units[u].bound->format != GL_RGBA;
+    const int keep_cf = (ctx->tex_units_on & ~(1u << u)) != 0;
+    if (!t->smooth) {
+        const V4 f = v4_load(t->flat);
+        if (alpha)
+            STAGE(color_modulate_loop)(b, u, 0, keep_cf, 1, f, f, f);
+        else
+            STAGE(color_modulate_loop)(b, u, 0, keep_cf, 0, f, f, f);
+        return;
+    }
+    const V4 a0 = v4_load(t->col[0]), a1 = v4_load(t->col[1]), a2 = v4_load(t->col[2]);
+    if (v4_lerp_fits(a0) && v4_lerp_fits(a1) && v4_lerp_fits(a2)) {
+        if (alpha)
+            STAGE(color_modulate_loop)(b, u, 1, keep_cf, 1, a0, a1, a2);
+        else
+            STAGE(color_modulate_loop)(b, u, 1, keep_cf, 0, a0, a1, a2);
+        return;
+    }
+#endif
+    STAGE(stage_color)(ctx, t, b);
+    STAGE(stage_env)(ctx, b, u);
+}
+
 #define UNIT_STAGES(u) \
     static void STAGE(stage_fetch##u)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) \
     { \
@@ -624,6 +682,10 @@ static void STAGE(stage_env)(GlesContext *ctx, SpanBuf *b, int u)
     { \
         (void)t; \
         STAGE(stage_env)(ctx, b, u); \
+    } \
+    static void STAGE(stage_color_modulate##u)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) \
+    { \
+        STAGE(stage_color_modulate)(ctx, t, b, u); \
     }
 UNIT_STAGES(0)
 UNIT_STAGES(1)
@@ -1028,6 +1090,8 @@ static const ChainStages STAGE(chain_stages) = {
     .fetch_rect_direct = { STAGE(stage_fetch_rect_direct0), STAGE(stage_fetch_rect_direct1),
                            STAGE(stage_fetch_rect_direct2), STAGE(stage_fetch_rect_direct3) },
     .env = { STAGE(stage_env0), STAGE(stage_env1), STAGE(stage_env2), STAGE(stage_env3) },
+    .color_modulate = { STAGE(stage_color_modulate0), STAGE(stage_color_modulate1), STAGE(stage_color_modulate2),
+                        STAGE(stage_color_modulate3) },
     .fog = STAGE(stage_fog),
     .fog_const = STAGE(stage_fog_const),
     .alpha = STAGE(stage_alpha),

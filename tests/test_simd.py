@@ -351,3 +351,56 @@ def test_fragment_weights_kernel_matches_scalar():
     vec = _persp(1, 0, 0, [1 << 29] * 3, [0, 0, 0], 0, e)
     np.testing.assert_array_equal(vec, _persp(0, 0, 0, [1 << 29] * 3, [0, 0, 0], 0, e))
     np.testing.assert_array_equal(vec, _persp_exact(0, [1 << 29] * 3, [0, 0, 0], e).astype(np.int32))
+
+
+def _color_stage(simd: int, clamp: int, col: np.ndarray, p: np.ndarray) -> np.ndarray:
+    ctx = make_ctx("fixed", 1, 1)
+    ffi, lib = ctx._ffi, ctx._lib
+    col = np.ascontiguousarray(col, dtype=np.int64)
+    p = np.ascontiguousarray(p, dtype=np.int32)
+    out = np.zeros((len(p), 4), np.int64)
+    ok = lib.gles_debug_color(simd, clamp, [int(v) for v in col.ravel()], len(p),
+                              ffi.cast("int32_t *", p.ctypes.data), ffi.cast("int64_t *", out.ctypes.data))
+    assert ok == 1
+    return out
+
+
+def _lerp3f_reference(col: np.ndarray, p: np.ndarray, clamp: bool) -> np.ndarray:
+    """frag_lerp3f (and frag_clamp01) in Python integers: the 60-bit sum
+    rounded half away from zero to 0.30."""
+    out = np.zeros((len(p), 4), np.int64)
+    for j, w in enumerate(p.tolist()):
+        for i in range(4):
+            acc = sum(int(col[k][i]) * w[k] for k in range(3))
+            v = (abs(acc) + (1 << 29)) >> 30
+            v = v if acc >= 0 else -v
+            out[j, i] = min(max(v, 0), 1 << 30) if clamp else v
+    return out
+
+
+@pytest.mark.skipif(not HAS_SIMD, reason="no vector instance on this CPU")
+@pytest.mark.parametrize("clamp", [0, 1], ids=["plain", "clamped"])
+def test_color_kernel_matches_scalar(clamp):
+    """The colour stage's vector kernels (v4_lerp3f, and v4_lerp3f_clamp01,
+    whose rounding leaves out the sign) give frag_lerp3f's value bit for
+    bit: colours across [-1, 1.5] in 0.30 (the sums stay within int64),
+    weights of points inside and outside the triangle, and sums at the
+    rounding ties (k 2^30 + 2^29, positive and negative) and beside them."""
+    rng = np.random.default_rng(5)
+    one = 1 << 30
+    for trial in range(12):
+        col = rng.integers(-one, one + one // 2, (3, 4))
+        if trial % 3 == 0:
+            col = rng.integers(0, one + 1, (3, 4))          # colours in [0, 1], as lit or array colours are
+        p = rng.integers(-one // 2, one + one // 2, (64, 3))
+        p[:16, 0] = one - p[:16, 1] - p[:16, 2]             # weights that sum to 1
+        # ties: with a[0] = 2^-30 (the integer 1) and the other weights 0
+        # the sum is w0, here k 2^30 + 2^29
+        col[0, 0] = 1
+        tie = rng.integers(-2, 2, 16) * one + (1 << 29)
+        p[16:32] = np.stack([tie, np.zeros(16), np.zeros(16)], axis=1)
+        p[32:40] = p[16:24] + rng.integers(-1, 2, (8, 3))
+        p[40:48] = -p[16:24]
+        want = _lerp3f_reference(col, p, bool(clamp))
+        np.testing.assert_array_equal(_color_stage(0, clamp, col, p), want, err_msg=f"scalar, trial {trial}")
+        np.testing.assert_array_equal(_color_stage(1, clamp, col, p), want, err_msg=f"vector, trial {trial}")
