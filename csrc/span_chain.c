@@ -253,6 +253,7 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
         if (units & (1u << u)) {
             lod |= texture_needs_lod(ctx->units[u].bound);
             ctx->samplers[u] = texture_span_sampler(ctx->units[u].bound, ctx_simd(ctx));
+            ctx->sample_group[u] = texture_span_sample_group(ctx->units[u].bound, ctx_simd(ctx));
         }
     if (rect)
         s[n++] = cs->rect_source;

@@ -464,7 +464,21 @@ static void STAGE(stage_color)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 ** unit of an RGBA texture is the colour, so it needs no environment */
 static void STAGE(chunk_sample)(GlesContext *ctx, SpanBuf *b, int u, int direct)
 {
-    ctx->samplers[u](ctx->units[u].bound, b->n, b->tc, b->tx, b->ty, direct ? b->c[0] : b->ct[0][u],
+    /* a tail past the kernel's last whole group is padded with copies of
+    ** the last coordinate when the kernel takes the group whole for less
+    ** than the scalar code takes the tail: from half a group of eight, or
+    ** three of four (measured); the slots past n are free, and nothing
+    ** reads what lands there */
+    _Static_assert(SPAN_CHUNK % 8 == 0, "a padded group stays within the chunk");
+    const int g = ctx->sample_group[u];
+    int n = b->n;
+    if (g > 1 && n % g >= (g == 8 ? 4 : 3)) {
+        const int padded = (n + g - 1) & ~(g - 1);
+        for (int j = n; j < padded; j++)
+            b->tc[j] = b->tc[n - 1];
+        n = padded;
+    }
+    ctx->samplers[u](ctx->units[u].bound, n, b->tc, b->tx, b->ty, direct ? b->c[0] : b->ct[0][u],
                      direct ? 4 : GLES_MAX_TEXTURE_UNITS * 4, ctx->texel_unorm8);
 }
 

@@ -353,6 +353,7 @@ struct GlesContext {
     int flat_cache_format;
     uint32_t flat_cache_packed;
     TexSpanSampler samplers[GLES_MAX_TEXTURE_UNITS];   /* each unit's, for the chain (texsample.c) */
+    int sample_group[GLES_MAX_TEXTURE_UNITS];          /* its kernel's group (texture_span_sample_group) */
     int debug;
     int simd;                   /* SIMD_* the CPU runs (simd_detect) */
 

@@ -395,6 +395,17 @@ TexSpanSampler texture_span_sampler(const Texture *t, int simd)
     return table[wrap][filter];
 }
 
+int texture_span_sample_group(const Texture *t, int simd)
+{
+#if SIMD_X86
+    if (simd >= SIMD_AVX2 && !texture_needs_lod(t) && t->mag_filter == GL_LINEAR
+        && linear_kernel_fits(t, t->wrap_s, t->wrap_t))
+        return NUM_IS_FIXED ? 8 : 4;
+#endif
+    (void)t, (void)simd;
+    return 1;
+}
+
 
 
 /* {====================================================================

@@ -29,6 +29,11 @@ void texture_sample(const Texture *tex, const TexCoord *c, const TexCoord *dx, c
 ** modes fixed: fragment j's coordinates c[j] (and dx[j], dy[j] when the
 ** filter needs a level of detail), its texel at out + j * stride */
 TexSpanSampler texture_span_sampler(const Texture *tex, int simd);
+/* the group size of that sampler's vector kernel: where it is 8 or 4, the
+** kernel samples any multiple of it whole, with every coordinate a copy of
+** one given to it as safe as that one (the chain pads a chunk's tail with
+** copies rather than leave it to the scalar code); 1 where there is none */
+int texture_span_sample_group(const Texture *tex, int simd);
 /* does sampling this texture need the neighbours' coordinates */
 int texture_needs_lod(const Texture *tex);
 /* the texture environment of unit u: cp is the previous colour (in and
