@@ -265,14 +265,17 @@ static inline int32_t lod_key(int level, int two, unsigned int filter)
 
 #pragma GCC push_options
 #pragma GCC target("avx2")
-#if LOD_LOG2_FAST
-/* lod_choose's constants for lod_choose4_f */
-typedef struct LodParamsF {
+#if !NUM_IS_FIXED
+/* lod_choose's constants for lod_choose4_f and lod_choose4_d */
+typedef struct LodParamsR {
     TEXC w, h, lim, cshift;
     int mode;                   /* 0: no mipmap, 1: *_MIPMAP_NEAREST, 2: *_MIPMAP_LINEAR */
     int q;
     int32_t kmag, kmin, ktwo;   /* keys of lambda <= c, of lambda > c (level 0), and of `two` */
-} LodParamsF;
+} LodParamsR;
+#endif
+
+#if LOD_LOG2_FAST
 _Static_assert(sizeof(TexCoord) == 2 * sizeof(float), "four TexCoords are eight float lanes");
 
 /* lod_choose of fragments 0..3 in the float build (key[k], frac[k], frac 0
@@ -290,7 +293,7 @@ _Static_assert(sizeof(TexCoord) == 2 * sizeof(float), "four TexCoords are eight 
 ** x = lambda + 1/2 is ceil(x) - 1 (x finite, below 2^24), 0 where
 ** lambda <= 1/2, then min(d, q); for *_MIPMAP_LINEAR floor(lambda) (an
 ** integer in [0, 2^24), exact as int32) against q, and lambda - floor(lambda). */
-AVX2_INLINE int lod_choose4_f(const LodParamsF *p, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
+AVX2_INLINE int lod_choose4_f(const LodParamsR *p, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
                               int32_t key[4], FRAGV frac[4])
 {
     const __m256 lim = _mm256_set1_ps(p->lim), nlim = _mm256_set1_ps(-p->lim);
@@ -362,6 +365,79 @@ AVX2_INLINE int lod_choose4_f(const LodParamsF *p, const TexCoord *c, const TexC
     _mm_storeu_ps(frac, _mm_and_ps(f, above));
     return 1;
 }
+#elif !NUM_IS_FIXED
+/* lod_choose of fragments 0..3 in the double build (key[k], frac[k], frac 0
+** where not two). rho: the scalar double operations in lanes, as in
+** lod_choose4_f (s and t interleaved in two registers per array, then
+** unpacked to one register per derivative). Lambda is lod_log2's libm call
+** wherever its value is used; it is not where 1 < rho < 2^(q+1) fails:
+** for rho <= 1, log2 rho <= 0 and log2 (within 1 ulp, so of the same
+** sign, and 0 at 1) gives lambda <= 0 <= c: magnification, as -1e30 gives
+** (rho <= 0 or NaN is -1e30 in the scalar code too); for rho >= 2^(q+1),
+** lambda >= q + 1 - 1 ulp > q (infinity for an infinite rho), and every
+** decision (lambda > c, min(ceil(lambda + 1/2) - 1, q) = q,
+** floor(lambda) >= q) is the one q + 1 gives. The decisions are
+** lod_choose4_f's in double lanes (floor(lambda) <= 1025, exact as int32). */
+AVX2_INLINE void lod_choose4_d(const LodParamsR *p, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
+                               int32_t key[4], FRAGV frac[4])
+{
+    const __m256d lim = _mm256_set1_pd(p->lim), nlim = _mm256_set1_pd(-p->lim);
+    const __m256d sign = _mm256_set1_pd(-0.0), zero = _mm256_setzero_pd();
+    const __m256d wh = _mm256_setr_pd(p->w, p->h, p->w, p->h);
+    __m256d d[2][2];            /* [dx, dy][fragments 0-1, 2-3] */
+    for (int h = 0; h < 2; h++) {
+        const __m256d cc = _mm256_max_pd(nlim, _mm256_min_pd(lim, _mm256_loadu_pd(&c[2 * h].s)));
+        for (int g = 0; g < 2; g++) {
+            const TexCoord *o = g ? dy : dx;
+            __m256d a = _mm256_max_pd(nlim, _mm256_min_pd(lim, _mm256_loadu_pd(&o[2 * h].s)));
+            a = _mm256_mul_pd(_mm256_sub_pd(a, cc), wh);
+            d[g][h] = _mm256_blendv_pd(a, _mm256_xor_pd(a, sign), _mm256_cmp_pd(a, zero, _CMP_LT_OQ));
+        }
+    }
+    /* (s0 s2 s1 s3) and (t0 t2 t1 t3), back to fragment order */
+    const __m256d d1 = _mm256_permute4x64_pd(_mm256_unpacklo_pd(d[0][0], d[0][1]), 0xD8);
+    const __m256d d3 = _mm256_permute4x64_pd(_mm256_unpackhi_pd(d[0][0], d[0][1]), 0xD8);
+    const __m256d d2 = _mm256_permute4x64_pd(_mm256_unpacklo_pd(d[1][0], d[1][1]), 0xD8);
+    const __m256d d4 = _mm256_permute4x64_pd(_mm256_unpackhi_pd(d[1][0], d[1][1]), 0xD8);
+    const __m256d rho = _mm256_max_pd(d4, _mm256_max_pd(d3, _mm256_max_pd(d2, d1)));
+
+    const double top = (double)((int64_t)2 << p->q);     /* 2^(q+1); q <= 11 */
+    const __m256d gt1 = _mm256_cmp_pd(rho, _mm256_set1_pd(1), _CMP_GT_OQ);
+    __m256d lam = _mm256_blendv_pd(_mm256_set1_pd(-1e30), _mm256_set1_pd(p->q + 1), gt1);
+    const int used = _mm256_movemask_pd(_mm256_and_pd(gt1, _mm256_cmp_pd(rho, _mm256_set1_pd(top), _CMP_LT_OQ)));
+    if (used) {
+        double r[4], l[4];
+        _mm256_storeu_pd(r, rho);
+        _mm256_storeu_pd(l, lam);
+        for (int k = 0; k < 4; k++)
+            if (used >> k & 1)
+                l[k] = lod_log2(r[k]);
+        lam = _mm256_setr_pd(l[0], l[1], l[2], l[3]);
+    }
+
+    const __m256d above = _mm256_cmp_pd(lam, _mm256_set1_pd(p->cshift), _CMP_GT_OQ);
+    const __m256i pick = _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6);
+    const __m128i above32 = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(_mm256_castpd_si256(above), pick));
+    const __m128i q = _mm_set1_epi32(p->q);
+    __m128i k = _mm_set1_epi32(p->kmin);
+    __m256d f = _mm256_setzero_pd();
+    if (p->mode == 1) {
+        const __m256d dd = _mm256_and_pd(
+            _mm256_sub_pd(_mm256_ceil_pd(_mm256_add_pd(lam, _mm256_set1_pd(0.5))), _mm256_set1_pd(1)),
+            _mm256_cmp_pd(lam, _mm256_set1_pd(0.5), _CMP_GT_OQ));
+        k = _mm_or_si128(k, _mm_min_epi32(_mm256_cvttpd_epi32(_mm256_and_pd(dd, above)), q));
+    } else if (p->mode == 2) {
+        const __m256d fl = _mm256_floor_pd(_mm256_and_pd(lam, above));
+        const __m128i dl = _mm256_cvttpd_epi32(fl);
+        const __m128i two = _mm_cmpgt_epi32(q, dl);        /* floor(lambda) < q */
+        k = _mm_or_si128(k, _mm_blendv_epi8(q, dl, two));
+        k = _mm_or_si128(k, _mm_and_si128(two, _mm_set1_epi32(p->ktwo)));
+        f = _mm256_and_pd(_mm256_sub_pd(lam, fl), _mm256_castsi256_pd(_mm256_cvtepi32_epi64(two)));
+    }
+    k = _mm_blendv_epi8(_mm_set1_epi32(p->kmag), k, above32);
+    _mm_storeu_si128((__m128i *)(void *)key, k);
+    _mm256_storeu_pd(frac, _mm256_and_pd(f, above));
+}
 #endif
 
 /* sample_w of n fragments with the vector kernel doing the GL_LINEAR
@@ -396,14 +472,15 @@ static int lod_block(const Texture *t, int n, const TexCoord *c, const TexCoord 
         avx2_lod_choose4(&p, c + n - 4, dx + n - 4, dy + n - 4, key + 1 + n - 4, frac + n - 4);
         j = n;
     }
-#elif LOD_LOG2_FAST
+#else
     const unsigned int minf = t->min_filter;
-    const LodParamsF p = {
+    const LodParamsR p = {
         (TEXC)t->level[0].width, (TEXC)t->level[0].height, texc_scale(TEXC_ONE, 1 << 18), lod_cshift(t),
         minf == GL_NEAREST || minf == GL_LINEAR ? 0
         : (minf == GL_NEAREST_MIPMAP_NEAREST || minf == GL_LINEAR_MIPMAP_NEAREST ? 1 : 2),
         t->max_level, lod_key(0, 0, t->mag_filter), lod_key(0, 0, lod_min_filter(minf)), LOD_KEY_TWO,
     };
+#if LOD_LOG2_FAST
     for (; j + 4 <= n; j += 4)
         if (!lod_choose4_f(&p, c + j, dx + j, dy + j, key + 1 + j, frac + j))
             for (int i = j; i < j + 4; i++) {
@@ -413,6 +490,14 @@ static int lod_block(const Texture *t, int n, const TexCoord *c, const TexCoord 
             }
     if (j < n && n >= 4 && lod_choose4_f(&p, c + n - 4, dx + n - 4, dy + n - 4, key + 1 + n - 4, frac + n - 4))
         j = n;                  /* the last four again: the same values where they overlap */
+#else
+    for (; j + 4 <= n; j += 4)
+        lod_choose4_d(&p, c + j, dx + j, dy + j, key + 1 + j, frac + j);
+    if (j < n && n >= 4) {
+        lod_choose4_d(&p, c + n - 4, dx + n - 4, dy + n - 4, key + 1 + n - 4, frac + n - 4);
+        j = n;
+    }
+#endif
 #endif
     for (; j < n; j++) {
         const LodChoice ch = lod_choose(t, &c[j], &dx[j], &dy[j]);

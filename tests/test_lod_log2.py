@@ -223,16 +223,16 @@ def _model(row, minf: int, magf: int) -> np.ndarray:
     return (t1 + f * (t2 - t1)).astype(np.float32)
 
 
-def _rows(rng: np.random.Generator, rhos: list[float]) -> np.ndarray:
+def _rows(rng: np.random.Generator, rhos: list[float], dtype=np.float32) -> np.ndarray:
     """coordinates 0 with rho placed on a random one of the four
     derivatives (the t ones scale by 1, the s ones by W), the others
     smaller; plus rho 0, NaN and infinite coordinates and the clamp"""
     rows = []
     for r in rhos:
-        r = float(F32(r))
+        r = float(dtype(r))
         slot = int(rng.integers(0, 4)) if r >= 2.0 ** -100 else 2 + int(rng.integers(0, 2))
         scale = [W, W, 1, 1]
-        v = [float(F32(r * float(rng.uniform(0, 0.5)) / scale[k])) for k in range(4)]
+        v = [float(dtype(r * float(rng.uniform(0, 0.5)) / scale[k])) for k in range(4)]
         v[slot] = r / scale[slot] * (1 if rng.random() < 0.5 else -1)
         rows.append([0.0, 0.0, v[0], v[2], v[1], v[3]])
     for special in (0.0, math.nan, math.inf, -math.inf, 2.0 ** 18, -(2.0 ** 18), 3e5, -3e5):
@@ -289,3 +289,44 @@ def test_samplers_match_log2(minf, magf):
     if minf == C.GL_LINEAR_MIPMAP_LINEAR:
         red = want[:, 0]
         assert ((red > 0) & (red < 1)).sum() > 1000          # frac shows in red
+
+
+@pytest.mark.skipif(not HAS_SIMD, reason="no vector instance on this CPU")
+@pytest.mark.parametrize("minf,magf", [
+    (C.GL_LINEAR_MIPMAP_LINEAR, C.GL_LINEAR), (C.GL_NEAREST_MIPMAP_LINEAR, C.GL_LINEAR),
+    (C.GL_LINEAR_MIPMAP_NEAREST, C.GL_NEAREST), (C.GL_NEAREST_MIPMAP_NEAREST, C.GL_LINEAR),
+    (C.GL_LINEAR, C.GL_NEAREST),
+], ids=["lml", "nml-c", "lmn", "nmn-c", "l"])
+def test_double_kernel_matches_scalar(minf, magf):
+    """The double build keeps log2 where lambda's value is used and skips it
+    for rho <= 1 and rho >= 2^(q+1): the AVX2 instance's texels are the
+    baseline's (log2 for every fragment), with rho on, just below and just
+    above 1, 2^(q+1) and every power of two between, and random."""
+    rng = np.random.default_rng(minf + 2 * magf)
+    rhos = [float(v) for v in np.exp2(rng.uniform(-3, 15, 1500))]
+    for k in range(-3, 15):
+        x = 2.0 ** k
+        for _ in range(4):
+            rhos += [x]
+            x = float(np.nextafter(x, 0))
+        x = 2.0 ** k
+        for _ in range(4):
+            x = float(np.nextafter(x, np.inf))
+            rhos += [x]
+    rows = _rows(rng, rhos, np.float64)
+    ctx = make_ctx("double", 4, 4)
+    _texture(ctx, minf, magf)
+    ffi = ctx._ffi
+    for n in (len(rows), len(rows) - 1, len(rows) - 3):
+        src = np.ascontiguousarray(rows[:n])
+        got = []
+        for simd in (1, 0):
+            out = np.zeros((n, 4), np.float64)
+            ok = ctx._lib.gles_debug_sample(ctx._ptr, 0, simd, n, ffi.cast("double *", src.ctypes.data),
+                                            ffi.cast("double *", out.ctypes.data))
+            assert ok == 1
+            got.append(out)
+        np.testing.assert_array_equal(got[0], got[1])
+    if minf == C.GL_LINEAR_MIPMAP_LINEAR:
+        red = got[1][:, 0]
+        assert ((red > 0) & (red < 1)).sum() > 500 and (red == 1).sum() > 50
