@@ -1102,20 +1102,24 @@ static inline void frag_bilerp_rgba8(uint32_t c00, uint32_t c10, uint32_t c01, u
 ** (c = 1 and L = 0 for the two rows next to m = 1), p the series of
 ** log2(1 + r) to r^6 by Horner. Error: the truncated series is within
 ** |r|^6 / 7 < 2^-44.8 of log2(1 + r) relatively, and the roundings of
-** Horner's scheme and of the coefficients add less than 2^-50: p is within 2^-44.7 of
-** log2(1 + r) relatively. With e = 0 on the rows of c = 1, y = p and that
-** is the bound; on the other rows |log2 x| > 2^-7.5 and the error is at
-** most 2^-54 (L) + 2^-51.2 (p, |p| < 2^-6.4) + 2^-53.7 (the last
-** addition), below 2^-43 |log2 x|; with e != 0, |log2 x| > 0.41 and the
-** roundings of e + L and of the sum add at most 2^-53 (|e| + 1.6), so
-** again below 2^-43 |log2 x|. So |y - log2 x| < 2^-43 |log2 x| <= 2^10
-** ulps of y, and glibc's log2 is within 1 ulp of log2 x (<= 2 ulps of y).
+** Horner's scheme and of the coefficients add less than 2^-50: p is
+** within 2^-44.7 of log2(1 + r) relatively. With e = 0 on the rows of
+** c = 1, y = p and that is the bound; on the other rows |log2 x| > 2^-7.5
+** and the error is at most 2^-54 (L) + 2^-51.2 (p, |p| < 2^-6.4) +
+** 2^-53.7 (the last addition), below 2^-43 |log2 x|; with e != 0,
+** |log2 x| > max(0.41, |e| - 0.59) and the roundings of e + L and of the
+** sum add at most 2^-52 (|e| + 0.6), so the error is below 2^-48 |log2 x|.
+** So |y - log2 x| < 2^-43 |log2 x| <= 2^10 ulps of y, and glibc's log2 is
+** within 1 ulp of log2 x (<= 2 ulps of y).
 ** Where no midpoint lies within 2^12 ulps of y, none lies between y,
 ** log2 x and glibc's result, which therefore round to the same float. The
 ** midpoints of y's binade are where the low 29 bits of y (those the
 ** conversion to float drops) are 2^28, so the distance in ulps is
 ** |low29 - 2^28|; those of the neighbouring binades lie at least 2^26 ulps
-** away, and y = 0 (x = 1, where glibc's log2 is 0 too) is exact. */
+** away, and y = 0 (x = 1, where glibc's log2 is 0 too) is exact.
+** (Over every positive finite float, with glibc 2.36: y is within 211
+** ulps of log2 x, 33794 inputs go to log2, and the float of y would have
+** been glibc's float for every one of them too.) */
 #define LOD_LOG2_FAST 1
 #define LOD_LOG2_NEAR ((int64_t)1 << 12)    /* ulps of y around a midpoint that go to log2 */
 static const double lod_log2_c[128] = {

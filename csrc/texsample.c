@@ -366,6 +366,8 @@ AVX2_INLINE int lod_choose4_f(const LodParamsR *p, const TexCoord *c, const TexC
     return 1;
 }
 #elif !NUM_IS_FIXED
+_Static_assert(sizeof(TexCoord) == 2 * sizeof(double), "two TexCoords are four double lanes");
+
 /* lod_choose of fragments 0..3 in the double build (key[k], frac[k], frac 0
 ** where not two). rho: the scalar double operations in lanes, as in
 ** lod_choose4_f (s and t interleaved in two registers per array, then
@@ -441,8 +443,9 @@ AVX2_INLINE void lod_choose4_d(const LodParamsR *p, const TexCoord *c, const Tex
 #endif
 
 /* sample_w of n fragments with the vector kernel doing the GL_LINEAR
-** samples: each fragment's level of detail first (lod_choose, in the fixed
-** build four at a time by avx2_lod_choose4), as a key; then each run of
+** samples: each fragment's level of detail first (lod_choose, four at a
+** time by avx2_lod_choose4, lod_choose4_f or lod_choose4_d), as a key;
+** then each run of
 ** neighbouring fragments with the same key through sample_linear4 (a
 ** level's run, and the next level's into `second`), other samples one by
 ** one, and the run's mix of two levels. The same arithmetic per sample as
