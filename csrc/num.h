@@ -1086,7 +1086,148 @@ static inline void frag_bilerp_rgba8(uint32_t c00, uint32_t c10, uint32_t c01, u
     }
 }
 
+#if defined(GLES_NUM_FLOAT)
+/* The float build's lambda is (float)log2((double)rho). Rather than a libm
+** call per fragment, y = lod_log2_approx(rho) in double, and (float)y
+** wherever no float rounding boundary (the midpoint of two adjacent floats)
+** lies within 2^12 ulps of y; elsewhere (about one in 2^16) log2 itself.
+**
+** The approximation, for a positive finite x = (double)rho (whose
+** significand has at most 24 bits): x = 2^e m with m in [0.75, 1.5) (the
+** top 7 bits of the significand pick a table row; rows 64..127 take m / 2
+** and e + 1); r = m c - 1 with c = lod_log2_c[row] a multiple of 2^-19
+** (20 bits) near 1 / m, so m c is exact (at most 44 bits) and so is the
+** subtraction (m c lies in [1/2, 2]); |r| < 2^-7. Then
+** y = (e + L) + p(r), L = lod_log2_l[row] = -log2(c) rounded to nearest
+** (c = 1 and L = 0 for the two rows next to m = 1), p the series of
+** log2(1 + r) to r^6 by Horner. Error: the truncated series is within
+** |r|^6 / 7 < 2^-44.8 of log2(1 + r) relatively, and the roundings of
+** Horner's scheme and of the coefficients add less than 2^-50: p is
+** within 2^-44.7 of log2(1 + r) relatively. With e = 0 on the rows of
+** c = 1, y = p and that is the bound; on the other rows |log2 x| > 2^-7.5
+** and the error is at most 2^-54 (L) + 2^-51.2 (p, |p| < 2^-6.4) +
+** 2^-53.7 (the last addition), below 2^-43 |log2 x|; with e != 0,
+** |log2 x| > max(0.41, |e| - 0.59) and the roundings of e + L and of the
+** sum add at most 2^-52 (|e| + 0.6), so the error is below 2^-48 |log2 x|.
+** So |y - log2 x| < 2^-43 |log2 x| <= 2^10 ulps of y, and glibc's log2 is
+** within 1 ulp of log2 x (<= 2 ulps of y).
+** Where no midpoint lies within 2^12 ulps of y, none lies between y,
+** log2 x and glibc's result, which therefore round to the same float. The
+** midpoints of y's binade are where the low 29 bits of y (those the
+** conversion to float drops) are 2^28, so the distance in ulps is
+** |low29 - 2^28|; those of the neighbouring binades lie at least 2^26 ulps
+** away, and y = 0 (x = 1, where glibc's log2 is 0 too) is exact.
+** (Over every positive finite float, with glibc 2.36: y is within 211
+** ulps of log2 x, 33794 inputs go to log2, and the float of y would have
+** been glibc's float for every one of them too.) */
+#define LOD_LOG2_FAST 1
+#define LOD_LOG2_NEAR ((int64_t)1 << 12)    /* ulps of y around a midpoint that go to log2 */
+static const double lod_log2_c[128] = {
+    0x1p+0, 0x1.fa11cp-1, 0x1.f631p-1, 0x1.f25f8p-1, 0x1.ee9c8p-1, 0x1.eae8p-1,
+    0x1.e741cp-1, 0x1.e3a9p-1, 0x1.e01ep-1, 0x1.dcap-1, 0x1.d92f4p-1, 0x1.d5cacp-1,
+    0x1.d272cp-1, 0x1.cf27p-1, 0x1.cbe6cp-1, 0x1.c8b28p-1, 0x1.c5894p-1, 0x1.c26b4p-1,
+    0x1.bf584p-1, 0x1.bc4fcp-1, 0x1.b952p-1, 0x1.b65e4p-1, 0x1.b3748p-1, 0x1.b094cp-1,
+    0x1.adbe8p-1, 0x1.aaf1cp-1, 0x1.a82e8p-1, 0x1.a574p-1, 0x1.a2c2cp-1, 0x1.a01ap-1,
+    0x1.9d7ap-1, 0x1.9ae24p-1, 0x1.9853p-1, 0x1.95cbcp-1, 0x1.934c8p-1, 0x1.90d5p-1,
+    0x1.8e654p-1, 0x1.8bfdp-1, 0x1.899cp-1, 0x1.87428p-1, 0x1.84fp-1, 0x1.82a4cp-1,
+    0x1.806p-1, 0x1.7e224p-1, 0x1.7beb4p-1, 0x1.79bacp-1, 0x1.77908p-1, 0x1.756ccp-1,
+    0x1.734fp-1, 0x1.71378p-1, 0x1.6f26p-1, 0x1.6d1a8p-1, 0x1.6b148p-1, 0x1.69148p-1,
+    0x1.671ap-1, 0x1.6525p-1, 0x1.63358p-1, 0x1.614b4p-1, 0x1.5f664p-1, 0x1.5d868p-1,
+    0x1.5babcp-1, 0x1.59d6p-1, 0x1.58058p-1, 0x1.56398p-1, 0x1.54726p+0, 0x1.52bp+0,
+    0x1.50f22p+0, 0x1.4f39p+0, 0x1.4d844p+0, 0x1.4bd3ep+0, 0x1.4a28p+0, 0x1.48806p+0,
+    0x1.46dcep+0, 0x1.453dap+0, 0x1.43a28p+0, 0x1.420b6p+0, 0x1.40782p+0, 0x1.3ee9p+0,
+    0x1.3d5dap+0, 0x1.3bd6p+0, 0x1.3a524p+0, 0x1.38d22p+0, 0x1.3755cp+0, 0x1.35dcep+0,
+    0x1.3467ap+0, 0x1.32f5cp+0, 0x1.31878p+0, 0x1.301c8p+0, 0x1.2eb4ep+0, 0x1.2d50ap+0,
+    0x1.2befap+0, 0x1.2a91cp+0, 0x1.29372p+0, 0x1.27dfap+0, 0x1.268b4p+0, 0x1.2539ep+0,
+    0x1.23eb8p+0, 0x1.22a02p+0, 0x1.2157ap+0, 0x1.2012p+0, 0x1.1ecf4p+0, 0x1.1d8f6p+0,
+    0x1.1c522p+0, 0x1.1b17cp+0, 0x1.19e02p+0, 0x1.18abp+0, 0x1.1778ap+0, 0x1.1648ep+0,
+    0x1.151bap+0, 0x1.13f0ep+0, 0x1.12c8cp+0, 0x1.11a3p+0, 0x1.107fcp+0, 0x1.0f5eep+0,
+    0x1.0e406p+0, 0x1.0d244p+0, 0x1.0c0a8p+0, 0x1.0af3p+0, 0x1.09ddcp+0, 0x1.08cacp+0,
+    0x1.07bap+0, 0x1.06ab6p+0, 0x1.059eep+0, 0x1.0494ap+0, 0x1.038c6p+0, 0x1.02864p+0,
+    0x1.01824p+0, 0x1p+0,
+};
+static const double lod_log2_l[128] = {
+    0x0p+0, 0x1.136501c41be5bp-6, 0x1.c938377c791ebp-6, 0x1.3ed07768252e6p-5,
+    0x1.985bf0a9f1682p-5, 0x1.f13950dd61d4bp-5, 0x1.24b4b14f2f5a6p-4, 0x1.507ca3ea37377p-4,
+    0x1.7bef0080d198dp-4, 0x1.a7128f47ca26ap-4, 0x1.d1e1d9fea4a74p-4, 0x1.fc6705edc941dp-4,
+    0x1.134e5c3469e6p-3, 0x1.2841ed563983dp-3, 0x1.3d11e9dff5602p-3, 0x1.51ba0ecabc26p-3,
+    0x1.663fc4cb09b06p-3, 0x1.7aa06ce365cafp-3, 0x1.8edca74cac696p-3, 0x1.a2f6c6cb0ade9p-3,
+    0x1.b6ec2d4121066p-3, 0x1.cac0ec0910ecep-3, 0x1.de741df856d7bp-3, 0x1.f204db90ea104p-3,
+    0x1.02bad58e156f8p-2, 0x1.0c62d8f9c725fp-2, 0x1.15fa09a5417eep-2, 0x1.1f829922bc7ebp-2,
+    0x1.28fa6066bc28ep-2, 0x1.32639bfc045f8p-2, 0x1.3bbd061a3e15cp-2, 0x1.4508049660cb4p-2,
+    0x1.4e43513c072acp-2, 0x1.57705a2804cc9p-2, 0x1.608ec34176f83p-2, 0x1.699f1b7644bfap-2,
+    0x1.72a109519ff57p-2, 0x1.7b952152a8b97p-2, 0x1.847bfcf2b9b65p-2, 0x1.8d54575cbb376p-2,
+    0x1.961fbe7d038ccp-2, 0x1.9edced7156575p-2, 0x1.a78e70c49c66ap-2, 0x1.b03210812ca03p-2,
+    0x1.b8c8730eee185p-2, 0x1.c15243ef36537p-2, 0x1.c9d033c0a1dfdp-2, 0x1.d240fde0460eep-2,
+    0x1.daa6532d9d83p-2, 0x1.e2feef39dc32cp-2, 0x1.eb4b8a4267991p-2, 0x1.f38bdebd6ed19p-2,
+    0x1.fbc1af5ea9c83p-2, 0x1.01f55937e0a5dp-1, 0x1.060457a7350e3p-1, 0x1.0a0db370ed35dp-1,
+    0x1.0e114cc59d587p-1, 0x1.120f89639869bp-1, 0x1.16084b23af3a9p-1, 0x1.19fb739fe1c24p-1,
+    0x1.1de96c2e11a1ep-1, 0x1.21d218189d97bp-1, 0x1.25b4d1044b09bp-1, 0x1.29931606ec643p-1,
+    -0x1.a52804704ebdfp-2, -0x1.9d809ce727336p-2, -0x1.95e2bc0842f9p-2, -0x1.8e4faf41f99a4p-2,
+    -0x1.86c6057689e8ap-2, -0x1.7f45f0ac055cap-2, -0x1.77d0327c430a7p-2, -0x1.7063e00b7efb5p-2,
+    -0x1.690099b9cb3d9p-2, -0x1.61a72016673a9p-2, -0x1.5a5712c9f6a2fp-2, -0x1.53100ef4ada69p-2,
+    -0x1.4bd1af2c86ce2p-2, -0x1.449d483180645p-2, -0x1.3d714c1360ce5p-2, -0x1.364de59746cebp-2,
+    -0x1.2f33d63ac6a69p-2, -0x1.28221d505ffb7p-2, -0x1.21197c3be990dp-2, -0x1.1a18eddf22e2dp-2,
+    -0x1.1321337e2905bp-2, -0x1.0c31438428a13p-2, -0x1.054a79ca7c3bep-2, -0x1.fcd65dedbc12cp-3,
+    -0x1.ef2847fa56d2dp-3, -0x1.e18b002886e8ap-3, -0x1.d3fd9a32ca6c6p-3, -0x1.c67f24933fe3ap-3,
+    -0x1.b91124bbb16f6p-3, -0x1.abb2a74631be2p-3, -0x1.9e63f4853f27dp-3, -0x1.912412d5af6a5p-3,
+    -0x1.83f3472af22e8p-3, -0x1.76d1d6efa8d9bp-3, -0x1.69bec13e5da46p-3, -0x1.5cba4815d2768p-3,
+    -0x1.4fc4ade5d274cp-3, -0x1.42de358d334cap-3, -0x1.36048942ccde3p-3, -0x1.293a800d97e62p-3,
+    -0x1.1c7f0ea0d9b1dp-3, -0x1.0fcfd373a57eap-3, -0x1.032fab179b79bp-3, -0x1.ed3b0592f5c51p-4,
+    -0x1.d43084c62ed7dp-4, -0x1.bb4045fae9a73p-4, -0x1.a26d6c4bca3b3p-4, -0x1.89b30df1ebccdp-4,
+    -0x1.71144c9812025p-4, -0x1.588ee483c3392p-4, -0x1.402342d6b031ep-4, -0x1.27d1d5617338p-4,
+    -0x1.0f9b0aa0a6ecap-4, -0x1.eef91aba429ep-5, -0x1.beed897667a79p-5, -0x1.8f143105da0b3p-5,
+    -0x1.5f6de23af4cf7p-5, -0x1.2ff5cf561236fp-5, -0x1.00acba4e8a4c3p-5, -0x1.a3322351dbeacp-6,
+    -0x1.4560919e9ccd5p-6, -0x1.cfe32b6199e97p-7, -0x1.15cd79ac60bbbp-7, 0x0p+0,
+};
+/* (-1)^(k+1) / (k ln 2), the series of log2(1 + r) */
+#define LOD_LOG2_A1 0x1.71547652b82fep+0
+#define LOD_LOG2_A2 (-0x1.71547652b82fep-1)
+#define LOD_LOG2_A3 0x1.ec709dc3a03fdp-2
+#define LOD_LOG2_A4 (-0x1.71547652b82fep-2)
+#define LOD_LOG2_A5 0x1.2776c50ef9bfep-2
+#define LOD_LOG2_A6 (-0x1.ec709dc3a03fdp-3)
+
+typedef union LodBits { double d; uint64_t u; } LodBits;
+
+/* the approximation above, for a positive finite double x with at most
+** 24 significant bits */
+static inline double lod_log2_approx(double x)
+{
+    LodBits b = { x }, m;
+    const uint64_t fold = (b.u >> 51) & 1;     /* m >= 1.5: m / 2, e + 1 */
+    const int64_t e = (int64_t)(b.u >> 52) + (int64_t)fold - 1023;
+    m.u = (b.u & (((uint64_t)1 << 52) - 1)) | ((1023 - fold) << 52);
+    const int row = (int)((b.u >> 45) & 127);
+    const double r = m.d * lod_log2_c[row] - 1;
+    const double p = r * (LOD_LOG2_A1 + r * (LOD_LOG2_A2 + r * (LOD_LOG2_A3 + r * (LOD_LOG2_A4
+                   + r * (LOD_LOG2_A5 + r * LOD_LOG2_A6)))));
+    return ((double)e + lod_log2_l[row]) + p;
+}
+
+/* whether a float midpoint lies within LOD_LOG2_NEAR ulps of y */
+static inline int lod_log2_near_mid(double y)
+{
+    LodBits b = { y };
+    const uint64_t low = b.u & ((((uint64_t)1) << 29) - 1);
+    return low - (((uint64_t)1 << 28) - (uint64_t)LOD_LOG2_NEAR) <= 2 * (uint64_t)LOD_LOG2_NEAR;
+}
+
+static inline LODV lod_log2(TEXC rho)
+{
+    if (!(rho > 0))
+        return (NUM)-1e30;
+    if (rho <= NUM_MAX) {
+        const double y = lod_log2_approx((double)rho);
+        if (!lod_log2_near_mid(y))
+            return (NUM)y;
+    }
+    return (NUM)log2((double)rho);
+}
+#else
+#define LOD_LOG2_FAST 0
 static inline LODV lod_log2(TEXC rho) { return rho > 0 ? (NUM)log2((double)rho) : (NUM)-1e30; }
+#endif
 static inline LODV lod_from_ratio(int n, int d) { return (NUM)n / (NUM)d; }
 static inline int64_t lod_ifloor(LODV l) { return dbl_to_i64(floor((double)l), -((int64_t)1 << 40), (int64_t)1 << 40); }
 static inline FRAGV lod_frac(LODV l) { return l - NUM_FLOOR(l); }

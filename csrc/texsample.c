@@ -265,9 +265,187 @@ static inline int32_t lod_key(int level, int two, unsigned int filter)
 
 #pragma GCC push_options
 #pragma GCC target("avx2")
+#if !NUM_IS_FIXED
+/* lod_choose's constants for lod_choose4_f and lod_choose4_d */
+typedef struct LodParamsR {
+    TEXC w, h, lim, cshift;
+    int mode;                   /* 0: no mipmap, 1: *_MIPMAP_NEAREST, 2: *_MIPMAP_LINEAR */
+    int q;
+    int32_t kmag, kmin, ktwo;   /* keys of lambda <= c, of lambda > c (level 0), and of `two` */
+} LodParamsR;
+#endif
+
+#if LOD_LOG2_FAST
+_Static_assert(sizeof(TexCoord) == 2 * sizeof(float), "four TexCoords are eight float lanes");
+
+/* lod_choose of fragments 0..3 in the float build (key[k], frac[k], frac 0
+** where not two); 0 (nothing stored) where a lane needs the scalar code.
+** The coordinates' clamp, difference, scale and magnitude are the scalar
+** float operations in lanes (s and t interleaved): min(lim, a) then
+** max(-lim, .) are texc_clamp's compares (a NaN passes both), the
+** magnitude negates where a < 0, and rho is formed in the scalar order,
+** each max(d, rho) being `d > rho ? d : rho`. Lambda: lod_log2_approx's
+** operations in double lanes (the exponent plus 2^52 read back as a
+** double gives (double)e exactly; the table rows by gathers), converted to
+** float as the scalar code converts; a lane whose y is near a midpoint
+** (lod_log2_near_mid) or whose rho is infinite returns 0. The decisions:
+** lambda > c; for *_MIPMAP_NEAREST, floor(x) + (frac(x) != 0) - 1 for
+** x = lambda + 1/2 is ceil(x) - 1 (x finite, below 2^24), 0 where
+** lambda <= 1/2, then min(d, q); for *_MIPMAP_LINEAR floor(lambda) (an
+** integer in [0, 2^24), exact as int32) against q, and lambda - floor(lambda). */
+AVX2_INLINE int lod_choose4_f(const LodParamsR *p, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
+                              int32_t key[4], FRAGV frac[4])
+{
+    const __m256 lim = _mm256_set1_ps(p->lim), nlim = _mm256_set1_ps(-p->lim);
+    const __m256 sign = _mm256_set1_ps(-0.0f), zero = _mm256_setzero_ps();
+    const __m256 wh = _mm256_setr_ps(p->w, p->h, p->w, p->h, p->w, p->h, p->w, p->h);
+#define LOD_CLAMP8(v) _mm256_max_ps(nlim, _mm256_min_ps(lim, (v)))
+    const __m256 cc = LOD_CLAMP8(_mm256_loadu_ps(&c[0].s));
+    __m256 a = _mm256_mul_ps(_mm256_sub_ps(LOD_CLAMP8(_mm256_loadu_ps(&dx[0].s)), cc), wh);
+    __m256 b = _mm256_mul_ps(_mm256_sub_ps(LOD_CLAMP8(_mm256_loadu_ps(&dy[0].s)), cc), wh);
+#undef LOD_CLAMP8
+    a = _mm256_blendv_ps(a, _mm256_xor_ps(a, sign), _mm256_cmp_ps(a, zero, _CMP_LT_OQ));
+    b = _mm256_blendv_ps(b, _mm256_xor_ps(b, sign), _mm256_cmp_ps(b, zero, _CMP_LT_OQ));
+    /* (d1 of the four | d3 of the four), (d2 | d4) */
+    const __m256i deint = _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7);
+    a = _mm256_permutevar8x32_ps(a, deint);
+    b = _mm256_permutevar8x32_ps(b, deint);
+    __m128 rho = _mm256_castps256_ps128(a);
+    rho = _mm_max_ps(_mm256_castps256_ps128(b), rho);
+    rho = _mm_max_ps(_mm256_extractf128_ps(a, 1), rho);
+    rho = _mm_max_ps(_mm256_extractf128_ps(b, 1), rho);
+
+    const __m128 pos = _mm_cmpgt_ps(rho, _mm_setzero_ps());
+    if (_mm_movemask_ps(_mm_andnot_ps(_mm_cmple_ps(rho, _mm_set1_ps(NUM_MAX)), pos)))
+        return 0;
+    const __m256i xb = _mm256_castpd_si256(_mm256_cvtps_pd(rho));
+    const __m256i fold = _mm256_and_si256(_mm256_srli_epi64(xb, 51), _mm256_set1_epi64x(1));
+    const __m256d two52 = _mm256_set1_pd(4503599627370496.0);
+    const __m256d e = _mm256_sub_pd(
+        _mm256_castsi256_pd(_mm256_or_si256(_mm256_add_epi64(_mm256_srli_epi64(xb, 52), fold),
+                                            _mm256_castpd_si256(two52))),
+        _mm256_set1_pd(4503599627370496.0 + 1023));
+    const __m256d m = _mm256_castsi256_pd(_mm256_or_si256(
+        _mm256_and_si256(xb, _mm256_set1_epi64x((int64_t)(((uint64_t)1 << 52) - 1))),
+        _mm256_sub_epi64(_mm256_set1_epi64x((int64_t)1023 << 52), _mm256_slli_epi64(fold, 52))));
+    const __m256i row = _mm256_and_si256(_mm256_srli_epi64(xb, 45), _mm256_set1_epi64x(127));
+    const __m256d r = _mm256_sub_pd(_mm256_mul_pd(m, _mm256_i64gather_pd(lod_log2_c, row, 8)), _mm256_set1_pd(1));
+#define LOD_STEP(acc, k) _mm256_add_pd(_mm256_set1_pd(LOD_LOG2_A##k), _mm256_mul_pd(r, (acc)))
+    const __m256d poly = _mm256_mul_pd(
+        r, LOD_STEP(LOD_STEP(LOD_STEP(LOD_STEP(LOD_STEP(_mm256_set1_pd(LOD_LOG2_A6), 5), 4), 3), 2), 1));
+#undef LOD_STEP
+    const __m256d y = _mm256_add_pd(_mm256_add_pd(e, _mm256_i64gather_pd(lod_log2_l, row, 8)), poly);
+    const __m256i dm = _mm256_sub_epi64(_mm256_and_si256(_mm256_castpd_si256(y), _mm256_set1_epi64x((1 << 29) - 1)),
+                                        _mm256_set1_epi64x(((int64_t)1 << 28) - LOD_LOG2_NEAR));
+    const __m256i far = _mm256_or_si256(_mm256_cmpgt_epi64(_mm256_setzero_si256(), dm),
+                                        _mm256_cmpgt_epi64(dm, _mm256_set1_epi64x(2 * LOD_LOG2_NEAR)));
+    const int near4 = ~_mm256_movemask_pd(_mm256_castsi256_pd(far)) & _mm_movemask_ps(pos);
+    if (near4)
+        return 0;
+    const __m128 lam = _mm_blendv_ps(_mm_set1_ps((NUM)-1e30), _mm256_cvtpd_ps(y), pos);
+
+    const __m128 above = _mm_cmpgt_ps(lam, _mm_set1_ps(p->cshift));
+    const __m128i q = _mm_set1_epi32(p->q);
+    __m128i k = _mm_set1_epi32(p->kmin);
+    __m128 f = _mm_setzero_ps();
+    if (p->mode == 1) {
+        const __m128 d = _mm_and_ps(_mm_sub_ps(_mm_ceil_ps(_mm_add_ps(lam, _mm_set1_ps(0.5f))), _mm_set1_ps(1)),
+                                    _mm_cmpgt_ps(lam, _mm_set1_ps(0.5f)));
+        k = _mm_or_si128(k, _mm_min_epi32(_mm_cvttps_epi32(_mm_and_ps(d, above)), q));
+    } else if (p->mode == 2) {
+        const __m128 fl = _mm_floor_ps(_mm_and_ps(lam, above));
+        const __m128i d = _mm_cvttps_epi32(fl);
+        const __m128i two = _mm_cmpgt_epi32(q, d);        /* floor(lambda) < q */
+        k = _mm_or_si128(k, _mm_blendv_epi8(q, d, two));
+        k = _mm_or_si128(k, _mm_and_si128(two, _mm_set1_epi32(p->ktwo)));
+        f = _mm_and_ps(_mm_sub_ps(lam, fl), _mm_castsi128_ps(two));
+    }
+    k = _mm_blendv_epi8(_mm_set1_epi32(p->kmag), k, _mm_castps_si128(above));
+    _mm_storeu_si128((__m128i *)(void *)key, k);
+    _mm_storeu_ps(frac, _mm_and_ps(f, above));
+    return 1;
+}
+#elif !NUM_IS_FIXED
+_Static_assert(sizeof(TexCoord) == 2 * sizeof(double), "two TexCoords are four double lanes");
+
+/* lod_choose of fragments 0..3 in the double build (key[k], frac[k], frac 0
+** where not two). rho: the scalar double operations in lanes, as in
+** lod_choose4_f (s and t interleaved in two registers per array, then
+** unpacked to one register per derivative). Lambda is lod_log2's libm call
+** wherever its value is used; it is not where 1 < rho < 2^(q+1) fails:
+** for rho <= 1, log2 rho <= 0 and log2 (within 1 ulp, so of the same
+** sign, and 0 at 1) gives lambda <= 0 <= c: magnification, as -1e30 gives
+** (rho <= 0 or NaN is -1e30 in the scalar code too); for rho >= 2^(q+1),
+** lambda >= q + 1 - 1 ulp > q (infinity for an infinite rho), and every
+** decision (lambda > c, min(ceil(lambda + 1/2) - 1, q) = q,
+** floor(lambda) >= q) is the one q + 1 gives. The decisions are
+** lod_choose4_f's in double lanes (floor(lambda) <= 1025, exact as int32). */
+AVX2_INLINE void lod_choose4_d(const LodParamsR *p, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
+                               int32_t key[4], FRAGV frac[4])
+{
+    const __m256d lim = _mm256_set1_pd(p->lim), nlim = _mm256_set1_pd(-p->lim);
+    const __m256d sign = _mm256_set1_pd(-0.0), zero = _mm256_setzero_pd();
+    const __m256d wh = _mm256_setr_pd(p->w, p->h, p->w, p->h);
+    __m256d d[2][2];            /* [dx, dy][fragments 0-1, 2-3] */
+    for (int h = 0; h < 2; h++) {
+        const __m256d cc = _mm256_max_pd(nlim, _mm256_min_pd(lim, _mm256_loadu_pd(&c[2 * h].s)));
+        for (int g = 0; g < 2; g++) {
+            const TexCoord *o = g ? dy : dx;
+            __m256d a = _mm256_max_pd(nlim, _mm256_min_pd(lim, _mm256_loadu_pd(&o[2 * h].s)));
+            a = _mm256_mul_pd(_mm256_sub_pd(a, cc), wh);
+            d[g][h] = _mm256_blendv_pd(a, _mm256_xor_pd(a, sign), _mm256_cmp_pd(a, zero, _CMP_LT_OQ));
+        }
+    }
+    /* (s0 s2 s1 s3) and (t0 t2 t1 t3), back to fragment order */
+    const __m256d d1 = _mm256_permute4x64_pd(_mm256_unpacklo_pd(d[0][0], d[0][1]), 0xD8);
+    const __m256d d3 = _mm256_permute4x64_pd(_mm256_unpackhi_pd(d[0][0], d[0][1]), 0xD8);
+    const __m256d d2 = _mm256_permute4x64_pd(_mm256_unpacklo_pd(d[1][0], d[1][1]), 0xD8);
+    const __m256d d4 = _mm256_permute4x64_pd(_mm256_unpackhi_pd(d[1][0], d[1][1]), 0xD8);
+    const __m256d rho = _mm256_max_pd(d4, _mm256_max_pd(d3, _mm256_max_pd(d2, d1)));
+
+    const double top = (double)((int64_t)2 << p->q);     /* 2^(q+1); q <= 11 */
+    const __m256d gt1 = _mm256_cmp_pd(rho, _mm256_set1_pd(1), _CMP_GT_OQ);
+    __m256d lam = _mm256_blendv_pd(_mm256_set1_pd(-1e30), _mm256_set1_pd(p->q + 1), gt1);
+    const int used = _mm256_movemask_pd(_mm256_and_pd(gt1, _mm256_cmp_pd(rho, _mm256_set1_pd(top), _CMP_LT_OQ)));
+    if (used) {
+        double r[4], l[4];
+        _mm256_storeu_pd(r, rho);
+        _mm256_storeu_pd(l, lam);
+        for (int k = 0; k < 4; k++)
+            if (used >> k & 1)
+                l[k] = lod_log2(r[k]);
+        lam = _mm256_setr_pd(l[0], l[1], l[2], l[3]);
+    }
+
+    const __m256d above = _mm256_cmp_pd(lam, _mm256_set1_pd(p->cshift), _CMP_GT_OQ);
+    const __m256i pick = _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6);
+    const __m128i above32 = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(_mm256_castpd_si256(above), pick));
+    const __m128i q = _mm_set1_epi32(p->q);
+    __m128i k = _mm_set1_epi32(p->kmin);
+    __m256d f = _mm256_setzero_pd();
+    if (p->mode == 1) {
+        const __m256d dd = _mm256_and_pd(
+            _mm256_sub_pd(_mm256_ceil_pd(_mm256_add_pd(lam, _mm256_set1_pd(0.5))), _mm256_set1_pd(1)),
+            _mm256_cmp_pd(lam, _mm256_set1_pd(0.5), _CMP_GT_OQ));
+        k = _mm_or_si128(k, _mm_min_epi32(_mm256_cvttpd_epi32(_mm256_and_pd(dd, above)), q));
+    } else if (p->mode == 2) {
+        const __m256d fl = _mm256_floor_pd(_mm256_and_pd(lam, above));
+        const __m128i dl = _mm256_cvttpd_epi32(fl);
+        const __m128i two = _mm_cmpgt_epi32(q, dl);        /* floor(lambda) < q */
+        k = _mm_or_si128(k, _mm_blendv_epi8(q, dl, two));
+        k = _mm_or_si128(k, _mm_and_si128(two, _mm_set1_epi32(p->ktwo)));
+        f = _mm256_and_pd(_mm256_sub_pd(lam, fl), _mm256_castsi256_pd(_mm256_cvtepi32_epi64(two)));
+    }
+    k = _mm_blendv_epi8(_mm_set1_epi32(p->kmag), k, above32);
+    _mm_storeu_si128((__m128i *)(void *)key, k);
+    _mm256_storeu_pd(frac, _mm256_and_pd(f, above));
+}
+#endif
+
 /* sample_w of n fragments with the vector kernel doing the GL_LINEAR
-** samples: each fragment's level of detail first (lod_choose, in the fixed
-** build four at a time by avx2_lod_choose4), as a key; then each run of
+** samples: each fragment's level of detail first (lod_choose, four at a
+** time by avx2_lod_choose4, lod_choose4_f or lod_choose4_d), as a key;
+** then each run of
 ** neighbouring fragments with the same key through sample_linear4 (a
 ** level's run, and the next level's into `second`), other samples one by
 ** one, and the run's mix of two levels. The same arithmetic per sample as
@@ -297,6 +475,32 @@ static int lod_block(const Texture *t, int n, const TexCoord *c, const TexCoord 
         avx2_lod_choose4(&p, c + n - 4, dx + n - 4, dy + n - 4, key + 1 + n - 4, frac + n - 4);
         j = n;
     }
+#else
+    const unsigned int minf = t->min_filter;
+    const LodParamsR p = {
+        (TEXC)t->level[0].width, (TEXC)t->level[0].height, texc_scale(TEXC_ONE, 1 << 18), lod_cshift(t),
+        minf == GL_NEAREST || minf == GL_LINEAR ? 0
+        : (minf == GL_NEAREST_MIPMAP_NEAREST || minf == GL_LINEAR_MIPMAP_NEAREST ? 1 : 2),
+        t->max_level, lod_key(0, 0, t->mag_filter), lod_key(0, 0, lod_min_filter(minf)), LOD_KEY_TWO,
+    };
+#if LOD_LOG2_FAST
+    for (; j + 4 <= n; j += 4)
+        if (!lod_choose4_f(&p, c + j, dx + j, dy + j, key + 1 + j, frac + j))
+            for (int i = j; i < j + 4; i++) {
+                const LodChoice ch = lod_choose(t, &c[i], &dx[i], &dy[i]);
+                key[1 + i] = lod_key(ch.level, ch.two, ch.filter);
+                frac[i] = ch.frac;
+            }
+    if (j < n && n >= 4 && lod_choose4_f(&p, c + n - 4, dx + n - 4, dy + n - 4, key + 1 + n - 4, frac + n - 4))
+        j = n;                  /* the last four again: the same values where they overlap */
+#else
+    for (; j + 4 <= n; j += 4)
+        lod_choose4_d(&p, c + j, dx + j, dy + j, key + 1 + j, frac + j);
+    if (j < n && n >= 4) {
+        lod_choose4_d(&p, c + n - 4, dx + n - 4, dy + n - 4, key + 1 + n - 4, frac + n - 4);
+        j = n;
+    }
+#endif
 #endif
     for (; j < n; j++) {
         const LodChoice ch = lod_choose(t, &c[j], &dx[j], &dy[j]);
@@ -336,7 +540,12 @@ static int lod_block(const Texture *t, int n, const TexCoord *c, const TexCoord 
 #if NUM_IS_FIXED
                 avx2_lod_mix(frac[i], out + (size_t)i * stride, second[i], out + (size_t)i * stride);
 #else
-                lod_mix(frac[i], out + (size_t)i * stride, second[i], out + (size_t)i * stride);
+            {
+                /* lod_mix's operations, a fragment's four channels at once */
+                FRAGV *o = out + (size_t)i * stride;
+                const V4 a = v4_load(o);
+                v4_store(o, V4_OP(add)(a, V4_OP(mul)(v4_set1(frac[i]), V4_OP(sub)(v4_load(second[i]), a))));
+            }
 #endif
         j = e;
     }
