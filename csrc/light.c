@@ -580,11 +580,10 @@ int light_debug_directional(int simd, int n, const int32_t *m, const int32_t *in
 
 /* a positional light's term for every lane: light_side's loop body with
 ** the light's branches taken once for the batch */
-static inline void positional_batch(const GlesContext *ctx, const LightPrep *p, LightBatch *b,
-                                    NUM n[3][LIGHT_BATCH], NUM acc[3][LIGHT_BATCH], const int cm)
+static inline void positional_batch(const LightPrep *p, NUM shin, LightBatch *b, NUM n[3][LIGHT_BATCH],
+                                    NUM acc[3][LIGHT_BATCH], const int cm)
 {
     const Light *l = p->l;
-    const NUM shin = ctx->material.n_shininess;
     const NUM *ka = l->n_attenuation;
     for (int i = 0; i < b->n; i++) {   /* scalar: padding lanes would only cost */
         NUM vp[3], att = NUM_ONE;
@@ -627,6 +626,85 @@ static inline void positional_batch(const GlesContext *ctx, const LightPrep *p, 
     }
 }
 
+#if VERTEX_AVX2
+/* positional_batch through vx_positional_avx2 (every lane of the padded
+** batch, padding lanes left as they are) */
+static void positional_batch_avx2(const LightPrep *p, NUM shin, LightBatch *b, NUM n[3][LIGHT_BATCH],
+                                  NUM acc[3][LIGHT_BATCH], int cnt, int cm)
+{
+    const Light *l = p->l;
+    VxPositional L;
+    for (int k = 0; k < 3; k++) {
+        L.p[k] = p->p[k];
+        L.ka[k] = l->n_attenuation[k];
+        L.sdir[k] = l->unit_spot_direction[k];
+        L.lamb[k] = l->n_ambient[k];
+        L.ldif[k] = l->n_diffuse[k];
+        L.amb[k] = p->amb[k];
+        L.dif[k] = p->dif[k];
+        L.spec[k] = p->spec[k];
+    }
+    L.cos_cutoff = l->n_cos_cutoff;
+    L.spot_exp = l->n_spot_exponent;
+    L.shin = shin;
+    L.attenuate = p->attenuate;
+    L.spot = p->spot;
+    L.specular = p->specular;
+    vx_positional_avx2(&L, b->v, n, b->col, acc, b->n, cnt, cm);
+}
+#endif
+
+int light_debug_positional(int simd, int n, const int32_t *m, const int32_t *in, int32_t *out)
+{
+    if (n < 0 || n > LIGHT_BATCH || n % LIGHT_LANES != 0 || m[31] < 0 || m[31] > n)
+        return 0;
+    Light l;
+    LightPrep p;
+    LightBatch b;
+    memset(&l, 0, sizeof l);
+    memset(&p, 0, sizeof p);
+    memset(&b, 0, sizeof b);
+    NUM nrm[3][LIGHT_BATCH], acc[3][LIGHT_BATCH];
+    for (int k = 0; k < 3; k++) {
+        p.p[k] = m[k];
+        l.n_attenuation[k] = m[3 + k];
+        l.unit_spot_direction[k] = m[6 + k];
+        l.n_ambient[k] = m[12 + k];
+        l.n_diffuse[k] = m[15 + k];
+        p.amb[k] = m[18 + k];
+        p.dif[k] = m[21 + k];
+        p.spec[k] = m[24 + k];
+    }
+    l.n_cos_cutoff = m[9];
+    l.n_spot_exponent = m[10];
+    p.l = &l;
+    p.positional = 1;
+    p.attenuate = m[27] != 0;
+    p.spot = m[28] != 0;
+    p.specular = m[29] != 0;
+    b.n = m[31];
+    for (int k = 0; k < 3; k++)
+        for (int i = 0; i < n; i++) {
+            b.v[k][i] = in[64 * k + i];
+            nrm[k][i] = in[192 + 64 * k + i];
+            b.col[k][i] = in[384 + 64 * k + i];
+            acc[k][i] = in[576 + 64 * k + i];
+        }
+    simd = simd && simd_detect() >= SIMD_AVX2;
+#if VERTEX_AVX2
+    if (simd)
+        positional_batch_avx2(&p, m[11], &b, nrm, acc, n, m[30] != 0);
+    else
+#endif
+    if (m[30])
+        positional_batch(&p, m[11], &b, nrm, acc, 1);
+    else
+        positional_batch(&p, m[11], &b, nrm, acc, 0);
+    for (int k = 0; k < 3; k++)
+        memcpy(out + 64 * k, acc[k], (size_t)n * sizeof(NUM));
+    return 1;
+}
+
 /* light_side for a batch: lights outer, vertices inner, so each light's
 ** constants and branches are set up once per batch; every vertex still
 ** accumulates its lights in the order of their numbers */
@@ -642,10 +720,17 @@ static inline void side_batch(const GlesContext *ctx, LightBatch *b, NUM n[3][LI
                            : ctx->light_base[k];
     for (int j = 0; j < ctx->light_prep_count; j++) {
         const LightPrep *p = &ctx->light_prep[j];
-        if (p->positional)
-            positional_batch(ctx, p, b, n, acc, cm);
-        else
+        if (p->positional) {
+#if VERTEX_AVX2
+            if (ctx_simd(ctx) >= SIMD_AVX2) {
+                positional_batch_avx2(p, m->n_shininess, b, n, acc, cnt, cm);
+                continue;
+            }
+#endif
+            positional_batch(p, m->n_shininess, b, n, acc, cm);
+        } else {
             directional_batch(p, ctx->material.n_shininess, b, n, acc, cnt, cm, ctx_simd(ctx) >= SIMD_AVX2);
+        }
     }
     for (int k = 0; k < 3; k++)
         NUM_FOR_LANES(i, cnt)

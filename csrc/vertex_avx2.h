@@ -329,39 +329,262 @@ static void vx_scale_add_avx2(NUM scale, NUM (*term)[NUM_BATCH], NUM (*acc)[NUM_
 **    operations, so floor(y) is the root.
 **  * each component num_from_scaled(w inv, 32), |w inv| <= 2^33: vx_mul.
 ** The other lanes' values stay as they were (m = 0). */
+/* the steps above for four lanes of int32 components v32[k]: out[k] the
+** normalised components (sign-extended), *zero all-ones in the lanes whose
+** vector is zero (out holds v there, as the scalar code leaves it) */
+VX_INLINE void vx_normalize3_4(const __m128i v32[3], __m256i out[3], __m256i *zero)
+{
+    const __m256i z0 = _mm256_setzero_si256();
+    const __m256i pick = _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6);
+    __m256i v[3], w[3];
+    __m128i m = _mm_setzero_si128();
+    for (int k = 0; k < 3; k++) {
+        m = _mm_max_epu32(m, _mm_min_epu32(_mm_abs_epi32(v32[k]), _mm_set1_epi32(INT32_MAX)));
+        v[k] = _mm256_cvtepi32_epi64(v32[k]);
+    }
+    __m256i e = _mm256_srli_epi64(_mm256_castpd_si256(_mm256_cvtepi32_pd(m)), 52);
+    __m256i sh = _mm256_sub_epi64(e, _mm256_set1_epi64x(1038)), nsh = _mm256_sub_epi64(z0, sh);
+    __m256i shr = _mm256_andnot_si256(_mm256_cmpgt_epi64(z0, sh), sh);
+    __m256i shl = _mm256_andnot_si256(_mm256_cmpgt_epi64(z0, nsh), nsh);
+    __m256i ss = z0;
+    for (int k = 0; k < 3; k++) {
+        __m256i sg = _mm256_cmpgt_epi64(z0, v[k]);
+        __m256i mag = _mm256_sub_epi64(_mm256_xor_si256(v[k], sg), sg);
+        mag = _mm256_sllv_epi64(_mm256_srlv_epi64(mag, shr), shl);
+        w[k] = _mm256_sub_epi64(_mm256_xor_si256(mag, sg), sg);
+        ss = _mm256_add_epi64(ss, _mm256_mul_epi32(w[k], w[k]));
+    }
+    __m256i a = _mm256_srli_epi64(_mm256_add_epi64(ss, _mm256_set1_epi64x(1 << 15)), 16);
+    __m256d ad = _mm256_cvtepi32_pd(_mm256_castsi256_si128(_mm256_permutevar8x32_epi32(a, pick)));
+    __m256d yd = _mm256_floor_pd(_mm256_div_pd(_mm256_set1_pd(2147483648.0), _mm256_sqrt_pd(ad)));
+    __m256i r = _mm256_cvtepi32_epi64(_mm256_cvttpd_epi32(yd));
+    __m256i inv = _mm256_srli_epi64(_mm256_add_epi64(r, _mm256_set1_epi64x(64)), 7);
+    *zero = _mm256_cmpeq_epi64(e, z0);                                      /* m = 0 */
+    for (int k = 0; k < 3; k++)
+        out[k] = _mm256_blendv_epi8(vx_mul(w[k], inv), v[k], *zero);
+}
+
 static void vx_normalize3_avx2(NUM *x, NUM *y, NUM *z, int cnt)
 {
     NUM *rows[3] = { x, y, z };
-    const __m256i zero = _mm256_setzero_si256();
-    const __m256i pick = _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6);
     for (int i = 0; i < cnt; i += 4) {
-        __m256i v[3], w[3];
-        __m128i m = _mm_setzero_si128();
-        for (int k = 0; k < 3; k++) {
-            __m128i v32 = _mm_loadu_si128((const __m128i *)(const void *)(rows[k] + i));
-            m = _mm_max_epu32(m, _mm_min_epu32(_mm_abs_epi32(v32), _mm_set1_epi32(INT32_MAX)));
-            v[k] = _mm256_cvtepi32_epi64(v32);
-        }
-        __m256i e = _mm256_srli_epi64(_mm256_castpd_si256(_mm256_cvtepi32_pd(m)), 52);
-        __m256i sh = _mm256_sub_epi64(e, _mm256_set1_epi64x(1038)), nsh = _mm256_sub_epi64(zero, sh);
-        __m256i shr = _mm256_andnot_si256(_mm256_cmpgt_epi64(zero, sh), sh);
-        __m256i shl = _mm256_andnot_si256(_mm256_cmpgt_epi64(zero, nsh), nsh);
-        __m256i ss = zero;
-        for (int k = 0; k < 3; k++) {
-            __m256i sg = _mm256_cmpgt_epi64(zero, v[k]);
-            __m256i mag = _mm256_sub_epi64(_mm256_xor_si256(v[k], sg), sg);
-            mag = _mm256_sllv_epi64(_mm256_srlv_epi64(mag, shr), shl);
-            w[k] = _mm256_sub_epi64(_mm256_xor_si256(mag, sg), sg);
-            ss = _mm256_add_epi64(ss, _mm256_mul_epi32(w[k], w[k]));
-        }
-        __m256i a = _mm256_srli_epi64(_mm256_add_epi64(ss, _mm256_set1_epi64x(1 << 15)), 16);
-        __m256d ad = _mm256_cvtepi32_pd(_mm256_castsi256_si128(_mm256_permutevar8x32_epi32(a, pick)));
-        __m256d yd = _mm256_floor_pd(_mm256_div_pd(_mm256_set1_pd(2147483648.0), _mm256_sqrt_pd(ad)));
-        __m256i r = _mm256_cvtepi32_epi64(_mm256_cvttpd_epi32(yd));
-        __m256i inv = _mm256_srli_epi64(_mm256_add_epi64(r, _mm256_set1_epi64x(64)), 7);
-        __m256i keep = _mm256_cmpeq_epi64(e, zero);                                      /* m = 0 */
+        __m128i v32[3];
+        __m256i out[3], zero;
         for (int k = 0; k < 3; k++)
-            vx_store4(rows[k] + i, _mm256_blendv_epi8(vx_mul(w[k], inv), v[k], keep));
+            v32[k] = _mm_loadu_si128((const __m128i *)(const void *)(rows[k] + i));
+        vx_normalize3_4(v32, out, &zero);
+        for (int k = 0; k < 3; k++)
+            vx_store4(rows[k] + i, out[k]);
+    }
+}
+/* }==================================================================== */
+
+/* {====================================================================
+** A positional light's term (positional_batch in light.c), four lanes at
+** a time in 64-bit lanes holding sign-extended NUMs. Every lane runs the
+** whole body; a lane that the scalar code leaves with `continue` (the
+** light at the vertex, the vertex outside the cone) or that is padding
+** keeps its acc. num_pow stays scalar, for the lanes that reach it.
+**  * num_sub, num_add, num_neg: 64-bit sums clamped to int32's range;
+**    num_mul: vx_mul; num_dot: the exact split sum of vx_dot_terms (three
+**    lane-by-lane products, rounded once by vx_acc_round); num_normalize3:
+**    vx_normalize3_4 (its zero mask is the scalar return value 0).
+**  * The divisions i64_round_div(n, d) = sign * floor((|n| + floor(|d| /
+**    2)) / |d|) are formed in double: with N = |n| + floor(|d| / 2) and
+**    D = |d| > 0 integers, N + D < 2^53, q = floor(N / D) and q D <= N,
+**    N / D lies in [q, q + 1 - 1/D]; rounding is monotone and q, q + 1 are
+**    doubles, and fl(N / D) = q + 1 would need 1/D <= (q + 1) 2^-53, i.e.
+**    (q + 1) D >= 2^53 > N + D. So floor(fl(N / D)) = q. Integers below
+**    2^52 convert both ways exactly through the bits of 2^52 + x.
+**  * length3: m the largest num_abs (m = 0 gives 0; dividing by max(m, 1)
+**    then gives u = 0 and 0 too); u_k = num_div(vp_k, m), |u_k| <= 2^16
+**    (|vp_k| <= m + 1 and 2^47 / (2^31 - 1) rounds to 2^16); the sum of
+**    squares is below 3 2^32 and non-negative, so num_dot rounds it as
+**    (S + 2^15) >> 16 = a; num_sqrt(a): v = 2^16 a < 2^34 and k = isqrt(v)
+**    is floor(fl(sqrt(v))) (sqrt(v) < k + 1 - 1/(2k + 2), further from
+**    k + 1 than its rounding error (k + 1) 2^-52), then k + 1 when
+**    k^2 + k < v, as num_sqrt rounds; d = num_mul(m, root).
+**  * att = num_recip(den) = num_div(2^16, den): N = 2^32 + floor(|den| /
+**    2) < 2^33; den = 0 divides by 1 instead, 2^32, which saturates to
+**    NUM_MAX as num_div's zero case returns. */
+typedef struct VxPositional {
+    NUM p[3];                   /* the light's position over its w */
+    NUM ka[3];                  /* attenuation factors */
+    NUM sdir[3];                /* unit spot direction */
+    NUM cos_cutoff, spot_exp, shin;
+    NUM lamb[3], ldif[3];       /* the light's ambient and diffuse (COLOR_MATERIAL) */
+    NUM amb[3], dif[3], spec[3];    /* the material products */
+    int attenuate, spot, specular;
+} VxPositional;
+
+/* num_sub per lane */
+VX_INLINE __m256i vx_sub(__m256i a, __m256i b)
+{
+    const __m256i hi = _mm256_set1_epi64x(INT32_MAX), lo = _mm256_set1_epi64x(INT32_MIN);
+    __m256i t = _mm256_sub_epi64(a, b);
+    t = _mm256_blendv_epi8(t, hi, _mm256_cmpgt_epi64(t, hi));
+    return _mm256_blendv_epi8(t, lo, _mm256_cmpgt_epi64(lo, t));
+}
+
+/* the four int32 values of 64-bit lanes in int32 range */
+VX_INLINE __m128i vx_pack4(__m256i v)
+{
+    return _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(v, _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6)));
+}
+
+/* x in [0, 2^52) to double and back, through the bits of 2^52 + x */
+VX_INLINE __m256d vx_u52_to_pd(__m256i x)
+{
+    const __m256d two52 = _mm256_set1_pd(4503599627370496.0);
+    return _mm256_sub_pd(_mm256_castsi256_pd(_mm256_or_si256(x, _mm256_castpd_si256(two52))), two52);
+}
+
+VX_INLINE __m256i vx_pd_to_u52(__m256d x)
+{
+    const __m256d two52 = _mm256_set1_pd(4503599627370496.0);
+    return _mm256_xor_si256(_mm256_castpd_si256(_mm256_add_pd(x, two52)), _mm256_castpd_si256(two52));
+}
+
+/* floor((n + floor(d / 2)) / d) for n >= 0, d > 0, n + d + d / 2 < 2^52 */
+VX_INLINE __m256i vx_round_div_u(__m256i n, __m256i d)
+{
+    __m256d q = _mm256_div_pd(vx_u52_to_pd(_mm256_add_epi64(n, _mm256_srli_epi64(d, 1))), vx_u52_to_pd(d));
+    return vx_pd_to_u52(_mm256_floor_pd(q));
+}
+
+/* num_dot of two lanes' 3-vectors */
+VX_INLINE __m256i vx_dot3v(const __m256i a[3], const __m256i b[3])
+{
+    const __m256i bias = _mm256_set1_epi64x((int64_t)1 << 62), low = _mm256_set1_epi64x(0xFFFF);
+    __m256i sh = _mm256_set1_epi64x(-3 * ((int64_t)1 << 46)), sl = _mm256_setzero_si256();
+    for (int k = 0; k < 3; k++) {
+        __m256i p = _mm256_add_epi64(_mm256_mul_epi32(a[k], b[k]), bias);
+        sh = _mm256_add_epi64(sh, _mm256_srli_epi64(p, 16));
+        sl = _mm256_add_epi64(sl, _mm256_and_si256(p, low));
+    }
+    return vx_acc_round(sh, sl);
+}
+
+/* length3 (light.c) per lane */
+VX_INLINE __m256i vx_length3(const __m256i v[3])
+{
+    const __m256i z0 = _mm256_setzero_si256(), max32 = _mm256_set1_epi64x(INT32_MAX);
+    __m256i a[3], m = z0;
+    for (int k = 0; k < 3; k++) {
+        __m256i sg = _mm256_cmpgt_epi64(z0, v[k]);
+        a[k] = _mm256_sub_epi64(_mm256_xor_si256(v[k], sg), sg);                /* |v|, up to 2^31 */
+        __m256i c = _mm256_blendv_epi8(a[k], max32, _mm256_cmpgt_epi64(a[k], max32));
+        m = _mm256_blendv_epi8(m, c, _mm256_cmpgt_epi64(c, m));
+    }
+    __m256i d = _mm256_or_si256(m, _mm256_srli_epi64(_mm256_cmpeq_epi64(m, z0), 63));  /* max(m, 1) */
+    __m256i s = z0;
+    for (int k = 0; k < 3; k++) {
+        __m256i u = vx_round_div_u(_mm256_slli_epi64(a[k], 16), d);           /* |u_k|: the sign squares away */
+        s = _mm256_add_epi64(s, _mm256_mul_epu32(u, u));
+    }
+    __m256i v16 = _mm256_slli_epi64(_mm256_srli_epi64(_mm256_add_epi64(s, _mm256_set1_epi64x(1 << 15)), 16), 16);
+    __m256i r = vx_pd_to_u52(_mm256_floor_pd(_mm256_sqrt_pd(vx_u52_to_pd(v16))));
+    __m256i up = _mm256_cmpgt_epi64(v16, _mm256_add_epi64(_mm256_mul_epu32(r, r), r));   /* -1: round up */
+    return vx_mul(m, _mm256_sub_epi64(r, up));
+}
+
+/* num_recip per lane */
+VX_INLINE __m256i vx_recip(__m256i den)
+{
+    const __m256i z0 = _mm256_setzero_si256();
+    __m256i sg = _mm256_cmpgt_epi64(z0, den);
+    __m256i ad = _mm256_sub_epi64(_mm256_xor_si256(den, sg), sg);
+    ad = _mm256_or_si256(ad, _mm256_srli_epi64(_mm256_cmpeq_epi64(ad, z0), 63));
+    __m256i q = vx_round_div_u(_mm256_set1_epi64x((int64_t)1 << 32), ad);
+    return vx_sub(_mm256_xor_si256(q, sg), sg);       /* the sign, then the clamp of num_sat */
+}
+
+/* num_pow(x[j], s) for the lanes j set in `bits`, 0 in the others */
+VX_INLINE __m256i vx_pow_lanes(__m256i x, NUM s, int bits)
+{
+    int64_t xv[4], r[4] = { 0, 0, 0, 0 };
+    _mm256_storeu_si256((__m256i *)(void *)xv, x);
+    for (int j = 0; j < 4; j++)
+        if (bits >> j & 1)
+            r[j] = num_pow((NUM)xv[j], s);
+    return _mm256_setr_epi64x(r[0], r[1], r[2], r[3]);
+}
+
+/* acc[k] += the light's term for lanes 0..cnt-1 (lanes n..cnt-1 untouched);
+** v: the eye positions over w, nrm: the normals, col: the vertex colours,
+** read when `cm` */
+static void vx_positional_avx2(const VxPositional *L, NUM (*v)[NUM_BATCH], NUM (*nrm)[NUM_BATCH],
+                               NUM (*col)[NUM_BATCH], NUM (*acc)[NUM_BATCH], int n, int cnt, int cm)
+{
+    const __m256i z0 = _mm256_setzero_si256(), one = _mm256_set1_epi64x(NUM_ONE);
+    const __m256i ramp = _mm256_setr_epi64x(0, 1, 2, 3);
+    for (int i = 0; i < cnt; i += 4) {
+        __m256i vp[3], nv[3], u[3];
+        __m128i vp32[3];
+        for (int k = 0; k < 3; k++) {
+            vp[k] = vx_sub(_mm256_set1_epi64x(L->p[k]), vx_load4(v[k] + i));
+            vp32[k] = vx_pack4(vp[k]);
+        }
+        __m256i att = one;
+        if (L->attenuate) {
+            __m256i d = vx_length3(vp);
+            __m256i t2 = vx_mul(vx_mul(_mm256_set1_epi64x(L->ka[2]), d), d);
+            __m256i den = vx_add(_mm256_set1_epi64x(L->ka[0]), vx_add(vx_mul(_mm256_set1_epi64x(L->ka[1]), d), t2));
+            att = vx_recip(den);
+        }
+        __m256i dead;
+        vx_normalize3_4(vp32, u, &dead);
+        dead = _mm256_or_si256(dead, _mm256_cmpgt_epi64(_mm256_add_epi64(ramp, _mm256_set1_epi64x(i)),
+                                                         _mm256_set1_epi64x(n - 1)));   /* padding */
+        __m256i spot = one;
+        if (L->spot) {
+            __m256i s[3] = { _mm256_set1_epi64x(L->sdir[0]), _mm256_set1_epi64x(L->sdir[1]),
+                             _mm256_set1_epi64x(L->sdir[2]) };
+            __m256i cosang = vx_sub(z0, vx_dot3v(u, s));
+            dead = _mm256_or_si256(dead, _mm256_cmpgt_epi64(_mm256_set1_epi64x(L->cos_cutoff), cosang));
+            int live = ~_mm256_movemask_pd(_mm256_castsi256_pd(dead)) & 15;
+            if (!live)
+                continue;
+            spot = vx_pow_lanes(cosang, L->spot_exp, live);
+        }
+        if (_mm256_movemask_pd(_mm256_castsi256_pd(dead)) == 15)
+            continue;
+        __m256i scale = vx_mul(att, spot);
+        for (int k = 0; k < 3; k++)
+            nv[k] = vx_load4(nrm[k] + i);
+        __m256i ndotvp = vx_dot3v(nv, u);
+        __m256i pos = _mm256_cmpgt_epi64(ndotvp, z0);
+        __m256i term[3];
+        for (int k = 0; k < 3; k++) {
+            __m256i t, f;
+            if (cm) {
+                __m256i c = vx_load4(col[k] + i);
+                t = vx_mul(c, _mm256_set1_epi64x(L->lamb[k]));
+                f = vx_mul(c, _mm256_set1_epi64x(L->ldif[k]));
+            } else {
+                t = _mm256_set1_epi64x(L->amb[k]);
+                f = _mm256_set1_epi64x(L->dif[k]);
+            }
+            term[k] = _mm256_blendv_epi8(t, vx_add(t, vx_mul(ndotvp, f)), pos);
+        }
+        if (L->specular) {
+            __m128i h32[3] = { vx_pack4(u[0]), vx_pack4(u[1]), vx_pack4(vx_add(u[2], one)) };
+            __m256i h[3], hzero;
+            vx_normalize3_4(h32, h, &hzero);
+            __m256i ndoth = vx_dot3v(nv, h);
+            __m256i use = _mm256_andnot_si256(_mm256_or_si256(dead, hzero),
+                                              _mm256_and_si256(pos, _mm256_cmpgt_epi64(ndoth, z0)));
+            int bits = _mm256_movemask_pd(_mm256_castsi256_pd(use));
+            if (bits) {
+                __m256i sp = vx_pow_lanes(ndoth, L->shin, bits);
+                for (int k = 0; k < 3; k++)
+                    term[k] = _mm256_blendv_epi8(term[k], vx_add(term[k], vx_mul(sp, _mm256_set1_epi64x(L->spec[k]))), use);
+            }
+        }
+        for (int k = 0; k < 3; k++) {
+            __m256i a = vx_load4(acc[k] + i);
+            vx_store4(acc[k] + i, _mm256_blendv_epi8(vx_add(a, vx_mul(scale, term[k])), a, dead));
+        }
     }
 }
 /* }==================================================================== */

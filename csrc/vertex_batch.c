@@ -365,6 +365,8 @@ int gles_debug_vertex_lanes(int simd, int kernel, int n, const int32_t *m, const
     }
     case 3:
         return light_debug_directional(simd, n, m, in, out);
+    case 6:
+        return light_debug_positional(simd, n, m, in, out);
     case 5: {
         NUM rows[3][VERTEX_BATCH];
         for (int k = 0; k < 3; k++)
