@@ -589,6 +589,103 @@ static void vx_positional_avx2(const VxPositional *L, NUM (*v)[NUM_BATCH], NUM (
 }
 /* }==================================================================== */
 
+/* {====================================================================
+** Window coordinates of vertices inside every plane (vertex_window's
+** num_proj, recipw_of and depthv_from_clip), four lanes at a time. Lanes
+** with a clip code get meaningless values that the caller does not store.
+** Inside every plane, w >= 1 and |x|, |y|, |z| <= w (each num_add(w, x) and
+** num_sub(w, x) is an exact sum whose sign survives the saturation).
+**  * num_proj: i64_round_div(x h, w) = sign(x) floor((|x| h + floor(w / 2))
+**    / w) for the viewport's half size h >= 0 (a zero h gives 0 both
+**    ways). With h < 2^21 (checked by the caller) N = |x| h + floor(w / 2)
+**    < 2^53 is exact in double (|x| h is one product of integers below
+**    2^31 and 2^21), and floor(fl(N / w)) = floor(N / w) by the argument
+**    of vx_round_div_u. The clamp to +-2^20 is kept although |x| <= w
+**    keeps the quotient within h.
+**  * recipw_of: with k = floor(log2 w) (the exponent of w's exact double),
+**    r = floor(2^62 / w) has 63 - k bits when w is a power of two and 62 - k
+**    otherwise, so rb = 32 - k + [w is a power of two] (>= 2) and mant =
+**    r >> rb = floor(2^(62 - rb) / w) (nested floors). The double quotient
+**    of the exact 2^(62 - rb) by w is within 2^-22 of the true one (below
+**    2^30), so its floor q0 is mant or mant + 1; q0 w > 2^(62 - rb), in
+**    exact 64-bit integers (vpmuludq of values below 2^31), takes the 1
+**    back.
+**  * depthv_from_clip: zs = sign(z) floor((|z| 2^30 + floor(w / 2)) / w),
+**    at most 2^30: the double quotient of the rounded numerator is within
+**    2^-21 of the true one, and one exact comparison each way (q0 w against
+**    the 64-bit numerator) corrects it. Then (f30 - n30)(zs + 2^30) / 2^31
+**    truncates toward zero as sign(c) floor(|c| t / 2^31) with |c| <= 2^30
+**    and t in [0, 2^31] (vpmuludq, exact), and the clamped d30 times the
+**    depth maximum (below 2^32) is one exact vpmuludq. */
+typedef struct VxWindow {
+    int64_t ox, oy, hx, hy;      /* the viewport's centre and half size in subpixels */
+    int64_t n30, c30;            /* near and far - near in 0.30 */
+    uint32_t depth_max;
+} VxWindow;
+
+/* sign(x) floor((|x| h + floor(w / 2)) / w), w the lanes' double */
+VX_INLINE __m256i vx_proj4(__m128i x32, __m256d wd, __m256d halfw, double h)
+{
+    __m256d x = _mm256_cvtepi32_pd(x32);
+    __m256d sgn = _mm256_and_pd(x, _mm256_set1_pd(-0.0));
+    __m256d n = _mm256_add_pd(_mm256_mul_pd(_mm256_andnot_pd(_mm256_set1_pd(-0.0), x), _mm256_set1_pd(h)), halfw);
+    __m256d q = _mm256_or_pd(_mm256_floor_pd(_mm256_div_pd(n, wd)), sgn);
+    q = _mm256_max_pd(_mm256_min_pd(q, _mm256_set1_pd(1048576.0)), _mm256_set1_pd(-1048576.0));
+    return _mm256_cvtepi32_epi64(_mm256_cvttpd_epi32(q));
+}
+
+static void vx_window_avx2(const VxWindow *W, const NUM *x, const NUM *y, const NUM *z, const NUM *w, int cnt,
+                           int64_t *wx, int64_t *wy, int64_t *mant, int64_t *rexp, int64_t *wz)
+{
+    const __m256i one64 = _mm256_set1_epi64x(1);
+    const __m256i c_abs = _mm256_set1_epi64x(W->c30 < 0 ? -W->c30 : W->c30);
+    const __m256i c_sg = _mm256_set1_epi64x(W->c30 < 0 ? -1 : 0);
+    const __m256i max30 = _mm256_set1_epi64x((int64_t)1 << 30), min30 = _mm256_set1_epi64x(-((int64_t)1 << 30));
+    for (int i = 0; i < cnt; i += 4) {
+        __m128i w32 = _mm_loadu_si128((const __m128i *)(const void *)(w + i));
+        __m256i w64 = _mm256_cvtepi32_epi64(w32);
+        /* floor(w / 2) for w >= 1 (other lanes: any value below 2^31, unused) */
+        __m256i hw64 = _mm256_and_si256(_mm256_srli_epi64(w64, 1), _mm256_set1_epi64x(0x7FFFFFFF));
+        __m256d wd = _mm256_cvtepi32_pd(w32), halfw = _mm256_cvtepi32_pd(vx_pack4(hw64));
+        __m256i px = vx_proj4(_mm_loadu_si128((const __m128i *)(const void *)(x + i)), wd, halfw, (double)W->hx);
+        __m256i py = vx_proj4(_mm_loadu_si128((const __m128i *)(const void *)(y + i)), wd, halfw, (double)W->hy);
+        _mm256_storeu_si256((__m256i *)(void *)(wx + i), _mm256_add_epi64(px, _mm256_set1_epi64x(W->ox)));
+        _mm256_storeu_si256((__m256i *)(void *)(wy + i), _mm256_add_epi64(py, _mm256_set1_epi64x(W->oy)));
+        /* recipw_of */
+        __m256i k = _mm256_sub_epi64(_mm256_srli_epi64(_mm256_castpd_si256(wd), 52), _mm256_set1_epi64x(1023));
+        __m256i p2 = _mm256_srli_epi64(
+            _mm256_cmpeq_epi64(_mm256_and_si256(w64, _mm256_sub_epi64(w64, one64)), _mm256_setzero_si256()), 63);
+        __m256i en = _mm256_sub_epi64(_mm256_add_epi64(k, _mm256_set1_epi64x(30)), p2);    /* 62 - rb */
+        __m256d nd = _mm256_castsi256_pd(_mm256_slli_epi64(_mm256_add_epi64(en, _mm256_set1_epi64x(1023)), 52));
+        __m256i q0 = vx_pd_to_u52(_mm256_floor_pd(_mm256_div_pd(nd, wd)));
+        __m256i over = _mm256_cmpgt_epi64(_mm256_mul_epu32(q0, w64), _mm256_sllv_epi64(one64, en));
+        _mm256_storeu_si256((__m256i *)(void *)(mant + i), _mm256_add_epi64(q0, over));
+        _mm256_storeu_si256((__m256i *)(void *)(rexp + i), _mm256_sub_epi64(_mm256_set1_epi64x(32), _mm256_sub_epi64(k, p2)));
+        /* depthv_from_clip */
+        __m128i z32 = _mm_loadu_si128((const __m128i *)(const void *)(z + i));
+        __m256i z64 = _mm256_cvtepi32_epi64(z32);
+        __m256i zsg = _mm256_cmpgt_epi64(_mm256_setzero_si256(), z64);
+        __m256i za = _mm256_sub_epi64(_mm256_xor_si256(z64, zsg), zsg);
+        __m256i nz = _mm256_add_epi64(_mm256_slli_epi64(za, 30), hw64);                  /* exact */
+        __m256d nzd = _mm256_add_pd(_mm256_mul_pd(_mm256_andnot_pd(_mm256_set1_pd(-0.0), _mm256_cvtepi32_pd(z32)),
+                                                  _mm256_set1_pd(1073741824.0)), halfw);
+        __m256i zq = vx_pd_to_u52(_mm256_floor_pd(_mm256_div_pd(nzd, wd)));
+        __m256i prod = _mm256_mul_epu32(zq, w64);
+        zq = _mm256_add_epi64(zq, _mm256_cmpgt_epi64(prod, nz));                          /* q0 w > N: q0 - 1 */
+        zq = _mm256_sub_epi64(zq, _mm256_cmpgt_epi64(_mm256_sub_epi64(nz, prod), _mm256_sub_epi64(w64, one64)));
+        __m256i zs = _mm256_sub_epi64(_mm256_xor_si256(zq, zsg), zsg);
+        zs = _mm256_blendv_epi8(zs, max30, _mm256_cmpgt_epi64(zs, max30));
+        zs = _mm256_blendv_epi8(zs, min30, _mm256_cmpgt_epi64(min30, zs));
+        __m256i t = _mm256_srli_epi64(_mm256_mul_epu32(c_abs, _mm256_add_epi64(zs, max30)), 31);
+        __m256i d30 = _mm256_add_epi64(_mm256_set1_epi64x(W->n30), _mm256_sub_epi64(_mm256_xor_si256(t, c_sg), c_sg));
+        d30 = _mm256_blendv_epi8(d30, max30, _mm256_cmpgt_epi64(d30, max30));
+        d30 = _mm256_andnot_si256(_mm256_cmpgt_epi64(_mm256_setzero_si256(), d30), d30);
+        __m256i dz = _mm256_mul_epu32(d30, _mm256_set1_epi64x((int64_t)W->depth_max));
+        _mm256_storeu_si256((__m256i *)(void *)(wz + i), _mm256_srli_epi64(_mm256_add_epi64(dz, _mm256_set1_epi64x(8192)), 14));
+    }
+}
+/* }==================================================================== */
+
 #endif /* VERTEX_AVX2 */
 
 #if RANGE_AVX2

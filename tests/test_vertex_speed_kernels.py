@@ -39,8 +39,8 @@ def _run(core, simd: int, n: int, m: np.ndarray, data: np.ndarray) -> np.ndarray
     mm = np.ascontiguousarray(m, np.int32)
     dd = np.ascontiguousarray(data, np.int32)
     out = np.zeros(256, np.int32)
-    ok = lib.gles_debug_vertex_lanes(simd, 6, n, ffi.cast("int32_t *", mm.ctypes.data),
-                                     ffi.cast("int32_t *", dd.ctypes.data), ffi.cast("int32_t *", out.ctypes.data))
+    ptr = [ffi.cast("int32_t *", a.ctypes.data) for a in (mm, dd, out)]
+    ok = lib.gles_debug_vertex_lanes(simd, 6, n, *ptr)
     assert ok == 1
     return out[:192].reshape(3, 64)[:, :n]
 
@@ -127,6 +127,56 @@ def test_positional_kernel_cone_edges(core):
         assert np.array_equal(vec, ref), f"trial {trial}"
 
 
+def _window(core, simd: int, m, rows: np.ndarray) -> np.ndarray:
+    """gles_debug_vertex_lanes kernel 7: wx, wy, 1/w's mantissa and exponent, depth of 64 lanes."""
+    ffi, lib = core
+    mm = np.zeros(8, np.int32)
+    mm[:len(m)] = (np.asarray(m, np.int64) & 0xFFFFFFFF).astype(np.uint32).view(np.int32)
+    dd = np.ascontiguousarray(rows, np.int32)
+    out = np.zeros(5 * 64 * 2, np.int32)
+    ptr = [ffi.cast("int32_t *", a.ctypes.data) for a in (mm, dd, out)]
+    ok = lib.gles_debug_vertex_lanes(simd, 7, 64, *ptr)
+    assert ok == 1
+    return out.view(np.int64).reshape(5, 64)
+
+
+def _window_rows(rng, edge: bool) -> np.ndarray:
+    """x, y, z, w of 64 lanes, most inside every plane (|x|, |y|, |z| <= w, w >= 1)."""
+    w = rng.choice([rng.integers(1, 2**31, 64), rng.integers(1, 3 * ONE, 64), 2 ** rng.integers(0, 31, 64)])
+    w = np.asarray(w, np.int64)
+    if edge:
+        special = [1, 2, 3, I32_MAX, 2**30, 2**30 + 1, 2**16, 2**16 - 1, 3 * 65535]
+        w[rng.integers(0, 64, 12)] = rng.choice(special, 12)
+    rows = np.zeros((4, 64), np.int64)
+    rows[3] = w
+    for k in range(3):
+        f = rng.uniform(-1, 1, 64)
+        rows[k] = np.clip(np.round(f * w), -w, w)
+        if edge:
+            sel = rng.integers(0, 64, 16)
+            rows[k, sel] = rng.choice([-1, 1, 0], 16) * w[sel] + rng.choice([0, 0, 1, -1, 2, -2], 16)
+            half = rng.integers(0, 64, 6)
+            rows[k, half] = w[half] // 2 * rng.choice([-1, 1], 6)    # quotients at the rounding ties
+    rows[:3] = np.clip(rows[:3], I32_MIN, I32_MAX)
+    return rows.reshape(-1)
+
+
+@pytest.mark.parametrize("edge", [False, True])
+def test_window_kernel_matches_scalar(core, edge):
+    rng = np.random.default_rng(99 + edge)
+    for trial in range(400):
+        vp = [int(rng.integers(-100, 100)), int(rng.integers(-100, 100)),
+              int(rng.choice([0, 1, 4096, 640, 3])), int(rng.choice([0, 1, 4096, 480, 7]))]
+        dn, df = (int(rng.choice([0, ONE, ONE // 3, int(rng.integers(0, ONE + 1))])) for _ in range(2))
+        dmax = int(rng.choice([65535, 2**24 - 1, 255, 2**31 - 1, 2**32 - 1]))
+        m = vp + [dn, df, dmax]
+        rows = _window_rows(rng, edge)
+        vec = _window(core, 1, m, rows)
+        ref = _window(core, 0, m, rows)
+        bad = np.argwhere(vec != ref)[:4].tolist()
+        assert np.array_equal(vec, ref), f"trial {trial}, m {m}: {bad}"
+
+
 def _scene(numeric: str, flags: int, seed: int):
     rng = np.random.default_rng(seed)
     ctx = make_ctx(numeric, 64, 64, depth=16)
@@ -168,7 +218,8 @@ def _scene(numeric: str, flags: int, seed: int):
         gl.glLightfv(light, C.GL_POSITION, pos)
         gl.glLightfv(light, C.GL_DIFFUSE, [*rng.uniform(0, 1.5, 3), 1.0])
         gl.glLightfv(light, C.GL_AMBIENT, [*rng.uniform(0, 0.3, 3), 1.0])
-        gl.glLightfv(light, C.GL_SPECULAR, [*rng.uniform(0, 1, 3), 1.0] if rng.random() < 0.6 else [0, 0, 0, 1])
+        spec = [*rng.uniform(0, 1, 3), 1.0] if rng.random() < 0.6 else [0.0, 0.0, 0.0, 1.0]
+        gl.glLightfv(light, C.GL_SPECULAR, spec)
         if rng.random() < 0.6:
             gl.glLightf(light, C.GL_CONSTANT_ATTENUATION, float(rng.uniform(0, 2)))
             gl.glLightf(light, C.GL_LINEAR_ATTENUATION, float(rng.choice([0.0, rng.uniform(0, 1)])))
