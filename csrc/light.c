@@ -496,6 +496,12 @@ static inline void directional_batch(const LightPrep *p, NUM shin, LightBatch *b
                                      NUM acc[3][LIGHT_BATCH], int cnt, const int cm, int simd)
 {
     const Light *l = p->l;
+#if VERTEX_AVX2
+    if (simd && !p->specular) {
+        vx_dir_fused_avx2(p->p, n, b->col, l->n_ambient, l->n_diffuse, p->amb, p->dif, cm, p->scale, acc, cnt);
+        return;
+    }
+#endif
     NUM ndotvp[LIGHT_BATCH], ndoth[LIGHT_BATCH];
     /* num_dot(n, 1, VP, 1, 3) lane by lane (the products commute) */
     vx_dot3_lanes(simd, p->p[0], p->p[1], p->p[2], n[0], n[1], n[2], ndotvp, cnt);

@@ -686,6 +686,40 @@ static void vx_window_avx2(const VxWindow *W, const NUM *x, const NUM *y, const 
 }
 /* }==================================================================== */
 
+/* a directional light without a specular part in one pass: n . VP as in
+** vx_dot3v (the split sum: a zero coefficient adds exactly 0, so this is
+** the sum vx_dot3_lanes forms), the term of vx_dir_terms_avx2, and acc[k] =
+** num_add(acc[k], num_mul(scale, term[k])) as vx_scale_add_avx2 forms it;
+** num_mul(NUM_ONE, t) is t exactly (t 2^16 / 2^16 needs no rounding and t
+** is in range), so a scale of one skips the product. */
+static void vx_dir_fused_avx2(const NUM *vp, NUM (*nrm)[NUM_BATCH], NUM (*col)[NUM_BATCH], const NUM *lamb,
+                              const NUM *ldif, const NUM *amb, const NUM *dif, int cm, NUM scale,
+                              NUM (*acc)[NUM_BATCH], int cnt)
+{
+    const __m256i zero = _mm256_setzero_si256(), s = _mm256_set1_epi64x(scale);
+    const __m256i p[3] = { _mm256_set1_epi64x(vp[0]), _mm256_set1_epi64x(vp[1]), _mm256_set1_epi64x(vp[2]) };
+    for (int i = 0; i < cnt; i += 4) {
+        __m256i nv[3] = { vx_load4(nrm[0] + i), vx_load4(nrm[1] + i), vx_load4(nrm[2] + i) };
+        __m256i dv = vx_dot3v(nv, p);
+        __m256i pos = _mm256_cmpgt_epi64(dv, zero);
+        for (int k = 0; k < 3; k++) {
+            __m256i t, f;
+            if (cm) {
+                __m256i c = vx_load4(col[k] + i);
+                t = vx_mul(c, _mm256_set1_epi64x(lamb[k]));
+                f = vx_mul(c, _mm256_set1_epi64x(ldif[k]));
+            } else {
+                t = _mm256_set1_epi64x(amb[k]);
+                f = _mm256_set1_epi64x(dif[k]);
+            }
+            t = _mm256_blendv_epi8(t, vx_add(t, vx_mul(dv, f)), pos);
+            if (scale != NUM_ONE)
+                t = vx_mul(s, t);
+            vx_store4(acc[k] + i, vx_add(vx_load4(acc[k] + i), t));
+        }
+    }
+}
+
 #endif /* VERTEX_AVX2 */
 
 #if RANGE_AVX2
