@@ -27,6 +27,11 @@
 #define VERTEX_AVX2 0
 #endif
 #define RANGE_AVX2 SIMD_X86   /* the range check's scan: every build */
+#if SIMD_X86 && !NUM_IS_FIXED
+#define VERTEX_AVX2_FP 1    /* the float builds' window coordinates */
+#else
+#define VERTEX_AVX2_FP 0
+#endif
 
 #if SIMD_X86
 #include <immintrin.h>
@@ -721,6 +726,82 @@ static void vx_dir_fused_avx2(const NUM *vp, NUM (*nrm)[NUM_BATCH], NUM (*col)[N
 }
 
 #endif /* VERTEX_AVX2 */
+
+#if VERTEX_AVX2_FP
+/* {====================================================================
+** Window coordinates in the float builds (num_proj, recipw_of and
+** depthv_from_clip of num.h), four lanes at a time with the same IEEE
+** operations in the same order and precision: x / w, times (NUM)scale,
+** widened to double (exact); then dbl_to_i64(|v|, 0, 2^20) as floor(|v| +
+** 1/2) (vaddpd rounds as addsd, vroundpd's floor is exact) limited to
+** 2^20 by a minimum (|v| >= 2^20 gives at least 2^20, infinity included;
+** below, floor(|v| + 1/2) <= 2^20 already; |v| = 0 gives 0 as the early
+** return does), NaN lanes zeroed, and the sign of v < 0 put back (the
+** scalar code negates only for v < 0; -0 gives 0 either way). The clamps
+** of depthv_from_clip are blends on the same comparisons, so a NaN passes
+** through them as it does in C. Lanes outside a plane are not stored. */
+#if defined(GLES_NUM_FLOAT)
+typedef __m128 VxNum4;
+#define VXN_LOAD(p) _mm_loadu_ps(p)
+#define VXN_STORE(p, v) _mm_storeu_ps(p, v)
+#define VXN_SET1(x) _mm_set1_ps(x)
+#define VXN_DIV _mm_div_ps
+#define VXN_MUL _mm_mul_ps
+#define VXN_ADD _mm_add_ps
+#define VXN_SUB _mm_sub_ps
+#define VXN_LT(a, b) _mm_cmplt_ps(a, b)
+#define VXN_BLEND(a, b, m) _mm_blendv_ps(a, b, m)
+#define VXN_TO_PD(v) _mm256_cvtps_pd(v)
+#else
+typedef __m256d VxNum4;
+#define VXN_LOAD(p) _mm256_loadu_pd(p)
+#define VXN_STORE(p, v) _mm256_storeu_pd(p, v)
+#define VXN_SET1(x) _mm256_set1_pd(x)
+#define VXN_DIV _mm256_div_pd
+#define VXN_MUL _mm256_mul_pd
+#define VXN_ADD _mm256_add_pd
+#define VXN_SUB _mm256_sub_pd
+#define VXN_LT(a, b) _mm256_cmp_pd(a, b, _CMP_LT_OQ)
+#define VXN_BLEND(a, b, m) _mm256_blendv_pd(a, b, m)
+#define VXN_TO_PD(v) (v)
+#endif
+
+/* num_proj of four lanes: an int64 per lane */
+VX_INLINE __m256i vx_proj4_fp(VxNum4 x, VxNum4 w, VxNum4 scale)
+{
+    __m256d v = VXN_TO_PD(VXN_MUL(VXN_DIV(x, w), scale));
+    const __m256d sign = _mm256_set1_pd(-0.0);
+    __m256d a = _mm256_andnot_pd(sign, v);
+    __m256d r = _mm256_floor_pd(_mm256_add_pd(a, _mm256_set1_pd(0.5)));
+    r = _mm256_min_pd(r, _mm256_set1_pd(1048576.0));
+    r = _mm256_and_pd(r, _mm256_cmp_pd(v, v, _CMP_ORD_Q));                       /* NaN: 0 */
+    r = _mm256_or_pd(r, _mm256_and_pd(sign, _mm256_cmp_pd(v, _mm256_setzero_pd(), _CMP_LT_OQ)));
+    return _mm256_cvtepi32_epi64(_mm256_cvttpd_epi32(r));
+}
+
+static void vx_window_fp_avx2(const NUM *x, const NUM *y, const NUM *z, const NUM *w, int cnt, int64_t ox,
+                              int64_t oy, int64_t hx, int64_t hy, NUM dn, NUM df, uint32_t maxval, int64_t *wx,
+                              int64_t *wy, NUM *rw, NUM *wz)
+{
+    const VxNum4 sx = VXN_SET1((NUM)hx), sy = VXN_SET1((NUM)hy), one = VXN_SET1((NUM)1), zero = VXN_SET1((NUM)0);
+    const VxNum4 mone = VXN_SET1((NUM)-1), half = VXN_SET1((NUM)0.5), n = VXN_SET1(dn), fn = VXN_SET1(df - dn);
+    const VxNum4 mx = VXN_SET1((NUM)maxval);
+    for (int i = 0; i < cnt; i += 4) {
+        VxNum4 wv = VXN_LOAD(w + i);
+        _mm256_storeu_si256((__m256i *)(void *)(wx + i),
+                            _mm256_add_epi64(vx_proj4_fp(VXN_LOAD(x + i), wv, sx), _mm256_set1_epi64x(ox)));
+        _mm256_storeu_si256((__m256i *)(void *)(wy + i),
+                            _mm256_add_epi64(vx_proj4_fp(VXN_LOAD(y + i), wv, sy), _mm256_set1_epi64x(oy)));
+        VXN_STORE(rw + i, VXN_DIV(one, wv));
+        VxNum4 zs = VXN_DIV(VXN_LOAD(z + i), wv);
+        zs = VXN_BLEND(VXN_BLEND(zs, one, VXN_LT(one, zs)), mone, VXN_LT(zs, mone));
+        VxNum4 d = VXN_ADD(n, VXN_MUL(VXN_MUL(fn, VXN_ADD(zs, one)), half));
+        d = VXN_BLEND(VXN_BLEND(d, one, VXN_LT(one, d)), zero, VXN_LT(d, zero));
+        VXN_STORE(wz + i, VXN_MUL(d, mx));
+    }
+}
+/* }==================================================================== */
+#endif /* VERTEX_AVX2_FP */
 
 #if RANGE_AVX2
 /* {====================================================================

@@ -208,6 +208,30 @@ void vertex_batch_positions(GlesContext *ctx, const int64_t *index, int n, Verte
         return;
     }
 #endif
+#if VERTEX_AVX2_FP
+    if (simd) {
+        int64_t wx[VERTEX_BATCH], wy[VERTEX_BATCH];
+        NUM rw[VERTEX_BATCH], wz[VERTEX_BATCH];
+        vx_window_fp_avx2(clip[0], clip[1], clip[2], clip[3], cnt, ox, oy, hx, hy, dn, df, ctx->depth_max, wx, wy,
+                          rw, wz);
+        for (int i = 0; i < n; i++) {
+            Vertex *v = &verts[index[i] - base];
+            for (int k = 0; k < 4; k++)
+                v->clip[k] = clip[k][i];
+            if (has_eye)
+                for (int k = 0; k < 4; k++)
+                    v->eye[k] = eye[k][i];
+            v->outcode = code[i];
+            if (code[i] == 0) {
+                v->wx = wx[i];
+                v->wy = wy[i];
+                v->rw = rw[i];
+                v->wz = wz[i];
+            }
+        }
+        return;
+    }
+#endif
     for (int i = 0; i < n; i++) {
         Vertex *v = &verts[index[i] - base];
         for (int k = 0; k < 4; k++)

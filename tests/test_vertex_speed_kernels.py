@@ -246,6 +246,55 @@ def test_positional_scenes_identical(numeric, seed):
         assert np.array_equal(dep, dep2), f"flags {flags}: depth differs"
 
 
+def _window_scene(numeric: str, flags: int, seed: int):
+    """Triangles in perspective with coordinates near the eye, on the planes, huge, infinite and NaN,
+    under a random viewport and depth range: the window coordinates of every build."""
+    rng = np.random.default_rng(seed)
+    ctx = make_ctx(numeric, 64, 48, depth=16, range_check="off")
+    ctx.debug(flags)
+    gl = ctx.gl
+    gl.glClear(C.GL_COLOR_BUFFER_BIT | C.GL_DEPTH_BUFFER_BIT)
+    gl.glEnable(C.GL_DEPTH_TEST)
+    gl.glDepthFunc(C.GL_LEQUAL)
+    gl.glShadeModel(C.GL_SMOOTH)
+    gl.glViewport(int(rng.integers(-20, 20)), int(rng.integers(-20, 20)), int(rng.integers(1, 100)),
+                  int(rng.integers(1, 100)))
+    near, far = (float(v) for v in rng.choice([0.0, 1.0, 0.25, 0.75, rng.uniform(0, 1)], 2))
+    gl.glDepthRangef(near, far)
+    gl.glMatrixMode(C.GL_PROJECTION)
+    zn, zf = float(rng.choice([0.01, 0.5, 1.0])), float(rng.choice([2.0, 50.0, 1e4]))
+    gl.glFrustumf(-0.5, 0.5, -0.4, 0.4, zn, zf)
+    gl.glMatrixMode(C.GL_MODELVIEW)
+    gl.glTranslatef(0.0, 0.0, -float(rng.uniform(0.5, 8.0)))
+    n = 240
+    verts = rng.uniform(-3, 3, (n, 4)).astype(np.float32)
+    verts[:, 3] = rng.choice([1.0, 1.0, 1.0, 0.5, 2.0, 1e-4, -1.0], n)
+    special = [np.nan, np.inf, -np.inf, 1e30, -1e30, 3e4, -3e4, 1e-30, 0.0]
+    for _ in range(int(rng.integers(0, 12))):
+        verts[int(rng.integers(0, n)), int(rng.integers(0, 4))] = rng.choice(special)
+    colors = rng.integers(0, 256, (n, 4)).astype(np.uint8)
+    gl.glEnableClientState(C.GL_VERTEX_ARRAY)
+    gl.glEnableClientState(C.GL_COLOR_ARRAY)
+    gl.glVertexPointer(4, C.GL_FLOAT, 0, verts)
+    gl.glColorPointer(4, C.GL_UNSIGNED_BYTE, 0, colors)
+    gl.glDrawArrays(C.GL_TRIANGLES, 0, n)
+    gl.glDrawArrays(C.GL_POINTS, 0, n)
+    gl.glDrawArrays(C.GL_LINES, 0, n)
+    assert gl.glGetError() == 0
+    return ctx.color_buffer().copy(), ctx.depth_buffer().copy()
+
+
+@pytest.mark.parametrize("numeric", BUILDS)
+@pytest.mark.parametrize("seed", range(24))
+def test_window_scenes_identical(numeric, seed):
+    col, dep = _window_scene(numeric, 0, 900 + seed)
+    for flags in (BASELINE, REFERENCE):
+        col2, dep2 = _window_scene(numeric, flags, 900 + seed)
+        where = np.argwhere(col != col2)[:4].tolist()
+        assert np.array_equal(col, col2), f"flags {flags}: colour differs at {where}"
+        assert np.array_equal(dep, dep2), f"flags {flags}: depth differs"
+
+
 def test_simd_instance_is_used():
     ctx = make_ctx("fixed", 4, 4)
     assert ctx.simd == ("avx2" if HAS_SIMD else "baseline")
