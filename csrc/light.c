@@ -660,6 +660,46 @@ static void positional_batch_avx2(const LightPrep *p, NUM shin, LightBatch *b, N
 }
 #endif
 
+#if VERTEX_AVX2_FP
+/* positional_batch through vx_positional_fp_avx2 */
+static void positional_batch_fp_avx2(const LightPrep *p, NUM shin, LightBatch *b, NUM n[3][LIGHT_BATCH],
+                                     NUM acc[3][LIGHT_BATCH], int cnt, int cm)
+{
+    const Light *l = p->l;
+    VxPositionalFp L;
+    for (int k = 0; k < 3; k++) {
+        L.p[k] = p->p[k];
+        L.ka[k] = l->n_attenuation[k];
+        L.sdir[k] = l->unit_spot_direction[k];
+        L.lamb[k] = l->n_ambient[k];
+        L.ldif[k] = l->n_diffuse[k];
+        L.amb[k] = p->amb[k];
+        L.dif[k] = p->dif[k];
+        L.spec[k] = p->spec[k];
+    }
+    L.cos_cutoff = l->n_cos_cutoff;
+    L.spot_exp = l->n_spot_exponent;
+    L.shin = shin;
+    L.attenuate = p->attenuate;
+    L.spot = p->spot;
+    L.specular = p->specular;
+    vx_positional_fp_avx2(&L, b->v, n, b->col, acc, b->n, cnt, cm);
+}
+#endif
+
+/* the hook's numbers: 16.16 in the fixed build, float bit patterns in the
+** float builds (NaN, infinities and -0 included) */
+static NUM debug_num(int32_t x)
+{
+#if NUM_IS_FIXED
+    return x;
+#else
+    float f;
+    memcpy(&f, &x, sizeof f);
+    return (NUM)f;
+#endif
+}
+
 int light_debug_positional(int simd, int n, const int32_t *m, const int32_t *in, int32_t *out)
 {
     if (n < 0 || n > LIGHT_BATCH || n % LIGHT_LANES != 0 || m[31] < 0 || m[31] > n)
@@ -672,17 +712,18 @@ int light_debug_positional(int simd, int n, const int32_t *m, const int32_t *in,
     memset(&b, 0, sizeof b);
     NUM nrm[3][LIGHT_BATCH], acc[3][LIGHT_BATCH];
     for (int k = 0; k < 3; k++) {
-        p.p[k] = m[k];
-        l.n_attenuation[k] = m[3 + k];
-        l.unit_spot_direction[k] = m[6 + k];
-        l.n_ambient[k] = m[12 + k];
-        l.n_diffuse[k] = m[15 + k];
-        p.amb[k] = m[18 + k];
-        p.dif[k] = m[21 + k];
-        p.spec[k] = m[24 + k];
+        p.p[k] = debug_num(m[k]);
+        l.n_attenuation[k] = debug_num(m[3 + k]);
+        l.unit_spot_direction[k] = debug_num(m[6 + k]);
+        l.n_ambient[k] = debug_num(m[12 + k]);
+        l.n_diffuse[k] = debug_num(m[15 + k]);
+        p.amb[k] = debug_num(m[18 + k]);
+        p.dif[k] = debug_num(m[21 + k]);
+        p.spec[k] = debug_num(m[24 + k]);
     }
-    l.n_cos_cutoff = m[9];
-    l.n_spot_exponent = m[10];
+    l.n_cos_cutoff = debug_num(m[9]);
+    l.n_spot_exponent = debug_num(m[10]);
+    const NUM shin = debug_num(m[11]);
     p.l = &l;
     p.positional = 1;
     p.attenuate = m[27] != 0;
@@ -691,23 +732,28 @@ int light_debug_positional(int simd, int n, const int32_t *m, const int32_t *in,
     b.n = m[31];
     for (int k = 0; k < 3; k++)
         for (int i = 0; i < n; i++) {
-            b.v[k][i] = in[64 * k + i];
-            nrm[k][i] = in[192 + 64 * k + i];
-            b.col[k][i] = in[384 + 64 * k + i];
-            acc[k][i] = in[576 + 64 * k + i];
+            b.v[k][i] = debug_num(in[64 * k + i]);
+            nrm[k][i] = debug_num(in[192 + 64 * k + i]);
+            b.col[k][i] = debug_num(in[384 + 64 * k + i]);
+            acc[k][i] = debug_num(in[576 + 64 * k + i]);
         }
     simd = simd && simd_detect() >= SIMD_AVX2;
 #if VERTEX_AVX2
     if (simd)
-        positional_batch_avx2(&p, m[11], &b, nrm, acc, n, m[30] != 0);
+        positional_batch_avx2(&p, shin, &b, nrm, acc, n, m[30] != 0);
+    else
+#elif VERTEX_AVX2_FP
+    if (simd)
+        positional_batch_fp_avx2(&p, shin, &b, nrm, acc, n, m[30] != 0);
     else
 #endif
     if (m[30])
-        positional_batch(&p, m[11], &b, nrm, acc, 1);
+        positional_batch(&p, shin, &b, nrm, acc, 1);
     else
-        positional_batch(&p, m[11], &b, nrm, acc, 0);
+        positional_batch(&p, shin, &b, nrm, acc, 0);
+    /* out: the accumulators, rows of 64 NUMs as stored */
     for (int k = 0; k < 3; k++)
-        memcpy(out + 64 * k, acc[k], (size_t)n * sizeof(NUM));
+        memcpy((char *)out + (size_t)k * 64 * sizeof(NUM), acc[k], (size_t)n * sizeof(NUM));
     return 1;
 }
 
@@ -730,6 +776,12 @@ static inline void side_batch(const GlesContext *ctx, LightBatch *b, NUM n[3][LI
 #if VERTEX_AVX2
             if (ctx_simd(ctx) >= SIMD_AVX2) {
                 positional_batch_avx2(p, m->n_shininess, b, n, acc, cnt, cm);
+                continue;
+            }
+#endif
+#if VERTEX_AVX2_FP
+            if (ctx_simd(ctx) >= SIMD_AVX2) {
+                positional_batch_fp_avx2(p, m->n_shininess, b, n, acc, cnt, cm);
                 continue;
             }
 #endif

@@ -752,6 +752,15 @@ typedef __m128 VxNum4;
 #define VXN_LT(a, b) _mm_cmplt_ps(a, b)
 #define VXN_BLEND(a, b, m) _mm_blendv_ps(a, b, m)
 #define VXN_TO_PD(v) _mm256_cvtps_pd(v)
+#define VXN_SQRT _mm_sqrt_ps
+#define VXN_GT(a, b) _mm_cmpgt_ps(a, b)
+#define VXN_EQ(a, b) _mm_cmpeq_ps(a, b)
+#define VXN_OR _mm_or_ps
+#define VXN_AND _mm_and_ps
+#define VXN_ANDNOT _mm_andnot_ps
+#define VXN_XOR _mm_xor_ps
+#define VXN_MASK(m) _mm_movemask_ps(m)
+#define VXN_SETR(a) _mm_setr_ps(a[0], a[1], a[2], a[3])
 #else
 typedef __m256d VxNum4;
 #define VXN_LOAD(p) _mm256_loadu_pd(p)
@@ -764,6 +773,15 @@ typedef __m256d VxNum4;
 #define VXN_LT(a, b) _mm256_cmp_pd(a, b, _CMP_LT_OQ)
 #define VXN_BLEND(a, b, m) _mm256_blendv_pd(a, b, m)
 #define VXN_TO_PD(v) (v)
+#define VXN_SQRT _mm256_sqrt_pd
+#define VXN_GT(a, b) _mm256_cmp_pd(a, b, _CMP_GT_OQ)
+#define VXN_EQ(a, b) _mm256_cmp_pd(a, b, _CMP_EQ_OQ)
+#define VXN_OR _mm256_or_pd
+#define VXN_AND _mm256_and_pd
+#define VXN_ANDNOT _mm256_andnot_pd
+#define VXN_XOR _mm256_xor_pd
+#define VXN_MASK(m) _mm256_movemask_pd(m)
+#define VXN_SETR(a) _mm256_setr_pd(a[0], a[1], a[2], a[3])
 #endif
 
 /* num_proj of four lanes: an int64 per lane */
@@ -798,6 +816,144 @@ static void vx_window_fp_avx2(const NUM *x, const NUM *y, const NUM *z, const NU
         VxNum4 d = VXN_ADD(n, VXN_MUL(VXN_MUL(fn, VXN_ADD(zs, one)), half));
         d = VXN_BLEND(VXN_BLEND(d, one, VXN_LT(one, d)), zero, VXN_LT(d, zero));
         VXN_STORE(wz + i, VXN_MUL(d, mx));
+    }
+}
+/* }==================================================================== */
+
+/* {====================================================================
+** A positional light's term in the float builds (positional_batch),
+** four lanes at a time: num.h's float operations are single IEEE
+** operations, here in the same order (num_dot from 0: ((0 + p0) + p1) +
+** p2; num_abs, num_max, num_sqrt, num_rsqrt and the tests as blends on the
+** same comparisons, so NaN and -0 take the scalar branches), with a lane
+** mask for the scalar code's `continue`s and for padding; num_pow stays
+** scalar for the lanes that reach it. */
+typedef struct VxPositionalFp {
+    NUM p[3], ka[3], sdir[3];
+    NUM cos_cutoff, spot_exp, shin;
+    NUM lamb[3], ldif[3], amb[3], dif[3], spec[3];
+    int attenuate, spot, specular;
+} VxPositionalFp;
+
+VX_INLINE VxNum4 vxn_dot3(const VxNum4 a[3], const VxNum4 b[3])
+{
+    VxNum4 acc = VXN_ADD(VXN_SET1((NUM)0), VXN_MUL(a[0], b[0]));
+    acc = VXN_ADD(acc, VXN_MUL(a[1], b[1]));
+    return VXN_ADD(acc, VXN_MUL(a[2], b[2]));
+}
+
+/* num_max(num_abs(v0), num_max(num_abs(v1), num_abs(v2))) */
+VX_INLINE VxNum4 vxn_maxabs3(const VxNum4 v[3])
+{
+    const VxNum4 z = VXN_SET1((NUM)0), sg = VXN_SET1((NUM)-0.0);
+    VxNum4 a[3];
+    for (int k = 0; k < 3; k++)
+        a[k] = VXN_BLEND(v[k], VXN_XOR(v[k], sg), VXN_LT(v[k], z));
+    VxNum4 m = VXN_BLEND(a[2], a[1], VXN_GT(a[1], a[2]));
+    return VXN_BLEND(m, a[0], VXN_GT(a[0], m));
+}
+
+/* num_normalize3 in place; returns the mask of lanes where it returns 0 */
+VX_INLINE VxNum4 vxn_normalize3(VxNum4 v[3])
+{
+    const VxNum4 z = VXN_SET1((NUM)0);
+    VxNum4 zero = VXN_EQ(vxn_maxabs3(v), z);
+    VxNum4 a = vxn_dot3(v, v);
+    VxNum4 inv = VXN_BLEND(VXN_SET1(NUM_MAX), VXN_DIV(VXN_SET1((NUM)1), VXN_SQRT(a)), VXN_GT(a, z));
+    for (int k = 0; k < 3; k++)
+        v[k] = VXN_BLEND(VXN_MUL(v[k], inv), v[k], zero);
+    return zero;
+}
+
+/* num_pow(x[j], s) for the lanes j set in `bits`, 0 in the others */
+VX_INLINE VxNum4 vxn_pow_lanes(VxNum4 x, NUM s, int bits)
+{
+    NUM xv[4], r[4] = { 0, 0, 0, 0 };
+    VXN_STORE(xv, x);
+    for (int j = 0; j < 4; j++)
+        if (bits >> j & 1)
+            r[j] = num_pow(xv[j], s);
+    return VXN_SETR(r);
+}
+
+static void vx_positional_fp_avx2(const VxPositionalFp *L, NUM (*v)[NUM_BATCH], NUM (*nrm)[NUM_BATCH],
+                                  NUM (*col)[NUM_BATCH], NUM (*acc)[NUM_BATCH], int n, int cnt, int cm)
+{
+    const VxNum4 z = VXN_SET1((NUM)0), one = VXN_SET1((NUM)1), sg = VXN_SET1((NUM)-0.0);
+    for (int i = 0; i < cnt; i += 4) {
+        VxNum4 vp[3], nv[3];
+        for (int k = 0; k < 3; k++)
+            vp[k] = VXN_SUB(VXN_SET1(L->p[k]), VXN_LOAD(v[k] + i));
+        VxNum4 att = one;
+        if (L->attenuate) {
+            /* length3 */
+            VxNum4 m = vxn_maxabs3(vp), u[3];
+            for (int k = 0; k < 3; k++)
+                u[k] = VXN_DIV(vp[k], m);
+            VxNum4 a = vxn_dot3(u, u);
+            VxNum4 r = VXN_AND(VXN_SQRT(a), VXN_GT(a, z));
+            VxNum4 d = VXN_ANDNOT(VXN_EQ(m, z), VXN_MUL(m, r));
+            VxNum4 t2 = VXN_MUL(VXN_MUL(VXN_SET1(L->ka[2]), d), d);
+            VxNum4 den = VXN_ADD(VXN_SET1(L->ka[0]), VXN_ADD(VXN_MUL(VXN_SET1(L->ka[1]), d), t2));
+            att = VXN_DIV(one, den);
+        }
+        VxNum4 dead = vxn_normalize3(vp);
+        int pad = 0;
+        for (int j = 0; j < 4; j++)
+            pad |= (i + j >= n) << j;
+        int live = ~(VXN_MASK(dead) | pad) & 15;
+        VxNum4 spot = one;
+        if (L->spot) {
+            VxNum4 s[3] = { VXN_SET1(L->sdir[0]), VXN_SET1(L->sdir[1]), VXN_SET1(L->sdir[2]) };
+            VxNum4 cosang = VXN_XOR(vxn_dot3(vp, s), sg);
+            live &= ~VXN_MASK(VXN_LT(cosang, VXN_SET1(L->cos_cutoff)));
+            if (!live)
+                continue;
+            spot = vxn_pow_lanes(cosang, L->spot_exp, live);
+        }
+        if (!live)
+            continue;
+        VxNum4 scale = VXN_MUL(att, spot);
+        for (int k = 0; k < 3; k++)
+            nv[k] = VXN_LOAD(nrm[k] + i);
+        VxNum4 ndotvp = vxn_dot3(nv, vp);
+        VxNum4 pos = VXN_GT(ndotvp, z);
+        VxNum4 term[3];
+        for (int k = 0; k < 3; k++) {
+            VxNum4 t, f;
+            if (cm) {
+                VxNum4 c = VXN_LOAD(col[k] + i);
+                t = VXN_MUL(c, VXN_SET1(L->lamb[k]));
+                f = VXN_MUL(c, VXN_SET1(L->ldif[k]));
+            } else {
+                t = VXN_SET1(L->amb[k]);
+                f = VXN_SET1(L->dif[k]);
+            }
+            term[k] = VXN_BLEND(t, VXN_ADD(t, VXN_MUL(ndotvp, f)), pos);
+        }
+        if (L->specular) {
+            VxNum4 h[3] = { vp[0], vp[1], VXN_ADD(vp[2], one) };
+            VxNum4 hzero = vxn_normalize3(h);
+            VxNum4 ndoth = vxn_dot3(nv, h);
+            int bits = live & VXN_MASK(pos) & ~VXN_MASK(hzero) & VXN_MASK(VXN_GT(ndoth, z));
+            if (bits) {
+                VxNum4 sp = vxn_pow_lanes(ndoth, L->shin, bits);
+                NUM bm[4];
+                for (int j = 0; j < 4; j++)
+                    bm[j] = (bits >> j & 1) ? (NUM)1 : (NUM)0;
+                VxNum4 use = VXN_EQ(VXN_SETR(bm), one);
+                for (int k = 0; k < 3; k++)
+                    term[k] = VXN_BLEND(term[k], VXN_ADD(term[k], VXN_MUL(sp, VXN_SET1(L->spec[k]))), use);
+            }
+        }
+        NUM lm[4];
+        for (int j = 0; j < 4; j++)
+            lm[j] = (live >> j & 1) ? (NUM)1 : (NUM)0;
+        VxNum4 keep = VXN_EQ(VXN_SETR(lm), one);
+        for (int k = 0; k < 3; k++) {
+            VxNum4 a = VXN_LOAD(acc[k] + i);
+            VXN_STORE(acc[k] + i, VXN_BLEND(a, VXN_ADD(a, VXN_MUL(scale, term[k])), keep));
+        }
     }
 }
 /* }==================================================================== */

@@ -476,6 +476,8 @@ int gles_debug_vertex_lanes(int simd, int kernel, int n, const int32_t *m, const
         return 0;
     }
 #else
+    if (kernel == 6)
+        return light_debug_positional(simd, n, m, in, out);
     (void)simd, (void)kernel, (void)n, (void)m, (void)in, (void)out;
     return 0;
 #endif
