@@ -9,10 +9,12 @@
 ** the comments, and tests/test_vertex_simd.py compares both on random and
 ** edge inputs through gles_debug_vertex_lanes.
 **
-** The float and double builds have no arithmetic kernels here: their lanes
-** are plain IEEE loops that the compiler vectorizes on the baseline already.
-** The range check's scan of FLOAT arrays (range.c) is the same in every
-** build and has its kernel in all three.
+** The float and double builds' lanes are mostly plain IEEE loops that the
+** compiler vectorizes on the baseline already; what it cannot vectorize
+** (the window coordinates' rounding, a positional light's branches) has
+** kernels here too (VERTEX_AVX2_FP), with the same IEEE operations in the
+** same order. The range check's scan of FLOAT arrays (range.c) is the same
+** in every build and has its kernel in all three.
 */
 #ifndef GLES_VERTEX_AVX2_H
 #define GLES_VERTEX_AVX2_H
