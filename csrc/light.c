@@ -496,6 +496,12 @@ static inline void directional_batch(const LightPrep *p, NUM shin, LightBatch *b
                                      NUM acc[3][LIGHT_BATCH], int cnt, const int cm, int simd)
 {
     const Light *l = p->l;
+#if VERTEX_AVX2
+    if (simd && !p->specular) {
+        vx_dir_fused_avx2(p->p, n, b->col, l->n_ambient, l->n_diffuse, p->amb, p->dif, cm, p->scale, acc, cnt);
+        return;
+    }
+#endif
     NUM ndotvp[LIGHT_BATCH], ndoth[LIGHT_BATCH];
     /* num_dot(n, 1, VP, 1, 3) lane by lane (the products commute) */
     vx_dot3_lanes(simd, p->p[0], p->p[1], p->p[2], n[0], n[1], n[2], ndotvp, cnt);
@@ -580,11 +586,10 @@ int light_debug_directional(int simd, int n, const int32_t *m, const int32_t *in
 
 /* a positional light's term for every lane: light_side's loop body with
 ** the light's branches taken once for the batch */
-static inline void positional_batch(const GlesContext *ctx, const LightPrep *p, LightBatch *b,
-                                    NUM n[3][LIGHT_BATCH], NUM acc[3][LIGHT_BATCH], const int cm)
+static inline void positional_batch(const LightPrep *p, NUM shin, LightBatch *b, NUM n[3][LIGHT_BATCH],
+                                    NUM acc[3][LIGHT_BATCH], const int cm)
 {
     const Light *l = p->l;
-    const NUM shin = ctx->material.n_shininess;
     const NUM *ka = l->n_attenuation;
     for (int i = 0; i < b->n; i++) {   /* scalar: padding lanes would only cost */
         NUM vp[3], att = NUM_ONE;
@@ -627,6 +632,131 @@ static inline void positional_batch(const GlesContext *ctx, const LightPrep *p, 
     }
 }
 
+#if VERTEX_AVX2
+/* positional_batch through vx_positional_avx2 (every lane of the padded
+** batch, padding lanes left as they are) */
+static void positional_batch_avx2(const LightPrep *p, NUM shin, LightBatch *b, NUM n[3][LIGHT_BATCH],
+                                  NUM acc[3][LIGHT_BATCH], int cnt, int cm)
+{
+    const Light *l = p->l;
+    VxPositional L;
+    for (int k = 0; k < 3; k++) {
+        L.p[k] = p->p[k];
+        L.ka[k] = l->n_attenuation[k];
+        L.sdir[k] = l->unit_spot_direction[k];
+        L.lamb[k] = l->n_ambient[k];
+        L.ldif[k] = l->n_diffuse[k];
+        L.amb[k] = p->amb[k];
+        L.dif[k] = p->dif[k];
+        L.spec[k] = p->spec[k];
+    }
+    L.cos_cutoff = l->n_cos_cutoff;
+    L.spot_exp = l->n_spot_exponent;
+    L.shin = shin;
+    L.attenuate = p->attenuate;
+    L.spot = p->spot;
+    L.specular = p->specular;
+    vx_positional_avx2(&L, b->v, n, b->col, acc, b->n, cnt, cm);
+}
+#endif
+
+#if VERTEX_AVX2_FP
+/* positional_batch through vx_positional_fp_avx2 */
+static void positional_batch_fp_avx2(const LightPrep *p, NUM shin, LightBatch *b, NUM n[3][LIGHT_BATCH],
+                                     NUM acc[3][LIGHT_BATCH], int cnt, int cm)
+{
+    const Light *l = p->l;
+    VxPositionalFp L;
+    for (int k = 0; k < 3; k++) {
+        L.p[k] = p->p[k];
+        L.ka[k] = l->n_attenuation[k];
+        L.sdir[k] = l->unit_spot_direction[k];
+        L.lamb[k] = l->n_ambient[k];
+        L.ldif[k] = l->n_diffuse[k];
+        L.amb[k] = p->amb[k];
+        L.dif[k] = p->dif[k];
+        L.spec[k] = p->spec[k];
+    }
+    L.cos_cutoff = l->n_cos_cutoff;
+    L.spot_exp = l->n_spot_exponent;
+    L.shin = shin;
+    L.attenuate = p->attenuate;
+    L.spot = p->spot;
+    L.specular = p->specular;
+    vx_positional_fp_avx2(&L, b->v, n, b->col, acc, b->n, cnt, cm);
+}
+#endif
+
+/* the hook's numbers: 16.16 in the fixed build, float bit patterns in the
+** float builds (NaN, infinities and -0 included) */
+static NUM debug_num(int32_t x)
+{
+#if NUM_IS_FIXED
+    return x;
+#else
+    float f;
+    memcpy(&f, &x, sizeof f);
+    return (NUM)f;
+#endif
+}
+
+int light_debug_positional(int simd, int n, const int32_t *m, const int32_t *in, int32_t *out)
+{
+    if (n < 0 || n > LIGHT_BATCH || n % LIGHT_LANES != 0 || m[31] < 0 || m[31] > n)
+        return 0;
+    Light l;
+    LightPrep p;
+    LightBatch b;
+    memset(&l, 0, sizeof l);
+    memset(&p, 0, sizeof p);
+    memset(&b, 0, sizeof b);
+    NUM nrm[3][LIGHT_BATCH], acc[3][LIGHT_BATCH];
+    for (int k = 0; k < 3; k++) {
+        p.p[k] = debug_num(m[k]);
+        l.n_attenuation[k] = debug_num(m[3 + k]);
+        l.unit_spot_direction[k] = debug_num(m[6 + k]);
+        l.n_ambient[k] = debug_num(m[12 + k]);
+        l.n_diffuse[k] = debug_num(m[15 + k]);
+        p.amb[k] = debug_num(m[18 + k]);
+        p.dif[k] = debug_num(m[21 + k]);
+        p.spec[k] = debug_num(m[24 + k]);
+    }
+    l.n_cos_cutoff = debug_num(m[9]);
+    l.n_spot_exponent = debug_num(m[10]);
+    const NUM shin = debug_num(m[11]);
+    p.l = &l;
+    p.positional = 1;
+    p.attenuate = m[27] != 0;
+    p.spot = m[28] != 0;
+    p.specular = m[29] != 0;
+    b.n = m[31];
+    for (int k = 0; k < 3; k++)
+        for (int i = 0; i < n; i++) {
+            b.v[k][i] = debug_num(in[64 * k + i]);
+            nrm[k][i] = debug_num(in[192 + 64 * k + i]);
+            b.col[k][i] = debug_num(in[384 + 64 * k + i]);
+            acc[k][i] = debug_num(in[576 + 64 * k + i]);
+        }
+    simd = simd && simd_detect() >= SIMD_AVX2;
+#if VERTEX_AVX2
+    if (simd)
+        positional_batch_avx2(&p, shin, &b, nrm, acc, n, m[30] != 0);
+    else
+#elif VERTEX_AVX2_FP
+    if (simd)
+        positional_batch_fp_avx2(&p, shin, &b, nrm, acc, n, m[30] != 0);
+    else
+#endif
+    if (m[30])
+        positional_batch(&p, shin, &b, nrm, acc, 1);
+    else
+        positional_batch(&p, shin, &b, nrm, acc, 0);
+    /* out: the accumulators, rows of 64 NUMs as stored */
+    for (int k = 0; k < 3; k++)
+        memcpy((char *)out + (size_t)k * 64 * sizeof(NUM), acc[k], (size_t)n * sizeof(NUM));
+    return 1;
+}
+
 /* light_side for a batch: lights outer, vertices inner, so each light's
 ** constants and branches are set up once per batch; every vertex still
 ** accumulates its lights in the order of their numbers */
@@ -642,10 +772,23 @@ static inline void side_batch(const GlesContext *ctx, LightBatch *b, NUM n[3][LI
                            : ctx->light_base[k];
     for (int j = 0; j < ctx->light_prep_count; j++) {
         const LightPrep *p = &ctx->light_prep[j];
-        if (p->positional)
-            positional_batch(ctx, p, b, n, acc, cm);
-        else
+        if (p->positional) {
+#if VERTEX_AVX2
+            if (ctx_simd(ctx) >= SIMD_AVX2) {
+                positional_batch_avx2(p, m->n_shininess, b, n, acc, cnt, cm);
+                continue;
+            }
+#endif
+#if VERTEX_AVX2_FP
+            if (ctx_simd(ctx) >= SIMD_AVX2) {
+                positional_batch_fp_avx2(p, m->n_shininess, b, n, acc, cnt, cm);
+                continue;
+            }
+#endif
+            positional_batch(p, m->n_shininess, b, n, acc, cm);
+        } else {
             directional_batch(p, ctx->material.n_shininess, b, n, acc, cnt, cm, ctx_simd(ctx) >= SIMD_AVX2);
+        }
     }
     for (int k = 0; k < 3; k++)
         NUM_FOR_LANES(i, cnt)

@@ -37,5 +37,10 @@ void light_batch(const GlesContext *ctx, LightBatch *b, int two_sided);
 /* gles_debug_vertex_lanes' kernel 3 (one directional light's term, through
 ** the AVX2 kernels or the scalar loop) */
 int light_debug_directional(int simd, int n, const int32_t *m, const int32_t *in, int32_t *out);
+/* kernel 6 (every build): one positional light's term (m: the light, in:
+** positions, normals, colours and accumulators of n lanes, m[31] of them
+** vertices; numbers 16.16, or float bit patterns in the float builds; out:
+** three rows of 64 NUMs) */
+int light_debug_positional(int simd, int n, const int32_t *m, const int32_t *in, int32_t *out);
 
 #endif

@@ -182,6 +182,56 @@ void vertex_batch_positions(GlesContext *ctx, const int64_t *index, int n, Verte
     const int64_t hx = (int64_t)vp[2] * (one / 2), hy = (int64_t)vp[3] * (one / 2);
     const int64_t ox = (int64_t)vp[0] * one + hx, oy = (int64_t)vp[1] * one + hy;
     const NUM dn = num_from_double(ctx->depth_range[0]), df = num_from_double(ctx->depth_range[1]);
+#if VERTEX_AVX2
+    /* the kernel's exact range: half sizes below 2^21 (a viewport of at
+    ** most MAX_VIEWPORT_DIMS has 2^19) */
+    if (simd && hx < ((int64_t)1 << 21) && hy < ((int64_t)1 << 21)) {
+        int64_t wx[VERTEX_BATCH], wy[VERTEX_BATCH], mant[VERTEX_BATCH], rexp[VERTEX_BATCH], wz[VERTEX_BATCH];
+        const VxWindow W = { ox, oy, hx, hy, (int64_t)dn * 16384, ((int64_t)df - dn) * 16384, ctx->depth_max };
+        vx_window_avx2(&W, clip[0], clip[1], clip[2], clip[3], cnt, wx, wy, mant, rexp, wz);
+        for (int i = 0; i < n; i++) {
+            Vertex *v = &verts[index[i] - base];
+            for (int k = 0; k < 4; k++)
+                v->clip[k] = clip[k][i];
+            if (has_eye)
+                for (int k = 0; k < 4; k++)
+                    v->eye[k] = eye[k][i];
+            v->outcode = code[i];
+            if (code[i] == 0) {
+                v->wx = wx[i];
+                v->wy = wy[i];
+                v->rw.mant = mant[i];
+                v->rw.exp = (int)rexp[i];
+                v->wz = wz[i];
+            }
+        }
+        return;
+    }
+#endif
+#if VERTEX_AVX2_FP
+    if (simd) {
+        int64_t wx[VERTEX_BATCH], wy[VERTEX_BATCH];
+        NUM rw[VERTEX_BATCH], wz[VERTEX_BATCH];
+        vx_window_fp_avx2(clip[0], clip[1], clip[2], clip[3], cnt, ox, oy, hx, hy, dn, df, ctx->depth_max, wx, wy,
+                          rw, wz);
+        for (int i = 0; i < n; i++) {
+            Vertex *v = &verts[index[i] - base];
+            for (int k = 0; k < 4; k++)
+                v->clip[k] = clip[k][i];
+            if (has_eye)
+                for (int k = 0; k < 4; k++)
+                    v->eye[k] = eye[k][i];
+            v->outcode = code[i];
+            if (code[i] == 0) {
+                v->wx = wx[i];
+                v->wy = wy[i];
+                v->rw = rw[i];
+                v->wz = wz[i];
+            }
+        }
+        return;
+    }
+#endif
     for (int i = 0; i < n; i++) {
         Vertex *v = &verts[index[i] - base];
         for (int k = 0; k < 4; k++)
@@ -365,6 +415,8 @@ int gles_debug_vertex_lanes(int simd, int kernel, int n, const int32_t *m, const
     }
     case 3:
         return light_debug_directional(simd, n, m, in, out);
+    case 6:
+        return light_debug_positional(simd, n, m, in, out);
     case 5: {
         NUM rows[3][VERTEX_BATCH];
         for (int k = 0; k < 3; k++)
@@ -372,6 +424,44 @@ int gles_debug_vertex_lanes(int simd, int kernel, int n, const int32_t *m, const
         vx_normalize3_lanes(simd, rows[0], rows[1], rows[2], n, n);
         for (int k = 0; k < 3; k++)
             memcpy(out + 64 * k, rows[k], (size_t)n * sizeof(NUM));
+        return 1;
+    }
+    case 7: {
+        /* window coordinates of the lanes inside every plane (m: the
+        ** viewport, near and far in 16.16, the depth maximum); out: wx, wy,
+        ** 1/w's mantissa and exponent, depth as int64 rows of 64 */
+        int64_t res[5][VERTEX_BATCH];
+        memset(res, 0, sizeof res);
+        const int64_t one = GLES_SUBPIXEL_ONE;
+        const int64_t hx = (int64_t)m[2] * (one / 2), hy = (int64_t)m[3] * (one / 2);
+        const int64_t ox = (int64_t)m[0] * one + hx, oy = (int64_t)m[1] * one + hy;
+        const NUM *x = in, *y = in + 64, *z = in + 128, *w = in + 192;
+#if VERTEX_AVX2
+        if (simd) {
+            const VxWindow W = { ox, oy, hx, hy, (int64_t)m[4] * 16384, ((int64_t)m[5] - m[4]) * 16384,
+                                 (uint32_t)m[6] };
+            vx_window_avx2(&W, x, y, z, w, n, res[0], res[1], res[2], res[3], res[4]);
+        }
+#endif
+        VbRows c;
+        unsigned int code[VERTEX_BATCH];
+        for (int k = 0; k < 4; k++)
+            memcpy(c[k], in + 64 * k, (size_t)n * sizeof(NUM));
+        clip_codes(c, code, n);
+        for (int i = 0; i < n; i++) {
+            if (code[i]) {
+                for (int k = 0; k < 5; k++)
+                    res[k][i] = 0;
+            } else if (!simd) {
+                res[0][i] = ox + num_proj(x[i], w[i], hx);
+                res[1][i] = oy + num_proj(y[i], w[i], hy);
+                RecipW r = recipw_of(w[i]);
+                res[2][i] = r.mant;
+                res[3][i] = r.exp;
+                res[4][i] = depthv_from_clip(z[i], w[i], m[4], m[5], (uint32_t)m[6]);
+            }
+        }
+        memcpy(out, res, sizeof res);
         return 1;
     }
     case 4: {
@@ -386,6 +476,8 @@ int gles_debug_vertex_lanes(int simd, int kernel, int n, const int32_t *m, const
         return 0;
     }
 #else
+    if (kernel == 6)
+        return light_debug_positional(simd, n, m, in, out);
     (void)simd, (void)kernel, (void)n, (void)m, (void)in, (void)out;
     return 0;
 #endif
