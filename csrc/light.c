@@ -632,9 +632,10 @@ static inline void positional_batch(const LightPrep *p, NUM shin, LightBatch *b,
     }
 }
 
-#if VERTEX_AVX2
-/* positional_batch through vx_positional_avx2 (every lane of the padded
-** batch, padding lanes left as they are) */
+#if VERTEX_AVX2 || VERTEX_AVX2_FP
+/* positional_batch through the build's kernel (vx_positional_avx2 or
+** vx_positional_fp_avx2: every lane of the padded batch, padding lanes
+** left as they are) */
 static void positional_batch_avx2(const LightPrep *p, NUM shin, LightBatch *b, NUM n[3][LIGHT_BATCH],
                                   NUM acc[3][LIGHT_BATCH], int cnt, int cm)
 {
@@ -656,34 +657,11 @@ static void positional_batch_avx2(const LightPrep *p, NUM shin, LightBatch *b, N
     L.attenuate = p->attenuate;
     L.spot = p->spot;
     L.specular = p->specular;
+#if VERTEX_AVX2
     vx_positional_avx2(&L, b->v, n, b->col, acc, b->n, cnt, cm);
-}
-#endif
-
-#if VERTEX_AVX2_FP
-/* positional_batch through vx_positional_fp_avx2 */
-static void positional_batch_fp_avx2(const LightPrep *p, NUM shin, LightBatch *b, NUM n[3][LIGHT_BATCH],
-                                     NUM acc[3][LIGHT_BATCH], int cnt, int cm)
-{
-    const Light *l = p->l;
-    VxPositionalFp L;
-    for (int k = 0; k < 3; k++) {
-        L.p[k] = p->p[k];
-        L.ka[k] = l->n_attenuation[k];
-        L.sdir[k] = l->unit_spot_direction[k];
-        L.lamb[k] = l->n_ambient[k];
-        L.ldif[k] = l->n_diffuse[k];
-        L.amb[k] = p->amb[k];
-        L.dif[k] = p->dif[k];
-        L.spec[k] = p->spec[k];
-    }
-    L.cos_cutoff = l->n_cos_cutoff;
-    L.spot_exp = l->n_spot_exponent;
-    L.shin = shin;
-    L.attenuate = p->attenuate;
-    L.spot = p->spot;
-    L.specular = p->specular;
+#else
     vx_positional_fp_avx2(&L, b->v, n, b->col, acc, b->n, cnt, cm);
+#endif
 }
 #endif
 
@@ -738,13 +716,9 @@ int light_debug_positional(int simd, int n, const int32_t *m, const int32_t *in,
             acc[k][i] = debug_num(in[576 + 64 * k + i]);
         }
     simd = simd && simd_detect() >= SIMD_AVX2;
-#if VERTEX_AVX2
+#if VERTEX_AVX2 || VERTEX_AVX2_FP
     if (simd)
         positional_batch_avx2(&p, shin, &b, nrm, acc, n, m[30] != 0);
-    else
-#elif VERTEX_AVX2_FP
-    if (simd)
-        positional_batch_fp_avx2(&p, shin, &b, nrm, acc, n, m[30] != 0);
     else
 #endif
     if (m[30])
@@ -773,15 +747,9 @@ static inline void side_batch(const GlesContext *ctx, LightBatch *b, NUM n[3][LI
     for (int j = 0; j < ctx->light_prep_count; j++) {
         const LightPrep *p = &ctx->light_prep[j];
         if (p->positional) {
-#if VERTEX_AVX2
+#if VERTEX_AVX2 || VERTEX_AVX2_FP
             if (ctx_simd(ctx) >= SIMD_AVX2) {
                 positional_batch_avx2(p, m->n_shininess, b, n, acc, cnt, cm);
-                continue;
-            }
-#endif
-#if VERTEX_AVX2_FP
-            if (ctx_simd(ctx) >= SIMD_AVX2) {
-                positional_batch_fp_avx2(p, m->n_shininess, b, n, acc, cnt, cm);
                 continue;
             }
 #endif

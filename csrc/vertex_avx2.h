@@ -42,6 +42,20 @@
 #define VX_INLINE static inline __attribute__((always_inline))
 #endif
 
+#if SIMD_X86
+/* a positional light's parameters for vx_positional_avx2 (fixed) and
+** vx_positional_fp_avx2 (float and double) */
+typedef struct VxPositional {
+    NUM p[3];                   /* the light's position over its w */
+    NUM ka[3];                  /* attenuation factors */
+    NUM sdir[3];                /* unit spot direction */
+    NUM cos_cutoff, spot_exp, shin;
+    NUM lamb[3], ldif[3];       /* the light's ambient and diffuse (COLOR_MATERIAL) */
+    NUM amb[3], dif[3], spec[3];    /* the material products */
+    int attenuate, spot, specular;
+} VxPositional;
+#endif
+
 #if VERTEX_AVX2
 
 /* {====================================================================
@@ -414,15 +428,7 @@ static void vx_normalize3_avx2(NUM *x, NUM *y, NUM *z, int cnt)
 **  * att = num_recip(den) = num_div(2^16, den): N = 2^32 + floor(|den| /
 **    2) < 2^33; den = 0 divides by 1 instead, 2^32, which saturates to
 **    NUM_MAX as num_div's zero case returns. */
-typedef struct VxPositional {
-    NUM p[3];                   /* the light's position over its w */
-    NUM ka[3];                  /* attenuation factors */
-    NUM sdir[3];                /* unit spot direction */
-    NUM cos_cutoff, spot_exp, shin;
-    NUM lamb[3], ldif[3];       /* the light's ambient and diffuse (COLOR_MATERIAL) */
-    NUM amb[3], dif[3], spec[3];    /* the material products */
-    int attenuate, spot, specular;
-} VxPositional;
+/* (the parameters are VxPositional, above) */
 
 /* num_sub per lane */
 VX_INLINE __m256i vx_sub(__m256i a, __m256i b)
@@ -830,12 +836,7 @@ static void vx_window_fp_avx2(const NUM *x, const NUM *y, const NUM *z, const NU
 ** same comparisons, so NaN and -0 take the scalar branches), with a lane
 ** mask for the scalar code's `continue`s and for padding; num_pow stays
 ** scalar for the lanes that reach it. */
-typedef struct VxPositionalFp {
-    NUM p[3], ka[3], sdir[3];
-    NUM cos_cutoff, spot_exp, shin;
-    NUM lamb[3], ldif[3], amb[3], dif[3], spec[3];
-    int attenuate, spot, specular;
-} VxPositionalFp;
+/* (the parameters are VxPositional, above) */
 
 VX_INLINE VxNum4 vxn_dot3(const VxNum4 a[3], const VxNum4 b[3])
 {
@@ -878,7 +879,7 @@ VX_INLINE VxNum4 vxn_pow_lanes(VxNum4 x, NUM s, int bits)
     return VXN_SETR(r);
 }
 
-static void vx_positional_fp_avx2(const VxPositionalFp *L, NUM (*v)[NUM_BATCH], NUM (*nrm)[NUM_BATCH],
+static void vx_positional_fp_avx2(const VxPositional *L, NUM (*v)[NUM_BATCH], NUM (*nrm)[NUM_BATCH],
                                   NUM (*col)[NUM_BATCH], NUM (*acc)[NUM_BATCH], int n, int cnt, int cm)
 {
     const VxNum4 z = VXN_SET1((NUM)0), one = VXN_SET1((NUM)1), sg = VXN_SET1((NUM)-0.0);
