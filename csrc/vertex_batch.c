@@ -131,6 +131,18 @@ static void clip_codes_avx2(VbRows clip, unsigned int *code, int cnt)
 #pragma GCC pop_options
 #endif
 
+/* lane i's clip coordinates, eye coordinates (when eye is given) and
+** clip code into its vertex: every window path stores these alike */
+static inline void vb_store_clip(Vertex *v, VbRows clip, VbRows eye, const unsigned int *code, int i)
+{
+    for (int k = 0; k < 4; k++)
+        v->clip[k] = clip[k][i];
+    if (eye)
+        for (int k = 0; k < 4; k++)
+            v->eye[k] = eye[k][i];
+    v->outcode = code[i];
+}
+
 void vertex_batch_positions(GlesContext *ctx, const int64_t *index, int n, Vertex *verts, int64_t base)
 {
     static const NUM obj_default[4] = { NUM_ZERO, NUM_ZERO, NUM_ZERO, NUM_ONE };
@@ -191,12 +203,7 @@ void vertex_batch_positions(GlesContext *ctx, const int64_t *index, int n, Verte
         vx_window_avx2(&W, clip[0], clip[1], clip[2], clip[3], cnt, wx, wy, mant, rexp, wz);
         for (int i = 0; i < n; i++) {
             Vertex *v = &verts[index[i] - base];
-            for (int k = 0; k < 4; k++)
-                v->clip[k] = clip[k][i];
-            if (has_eye)
-                for (int k = 0; k < 4; k++)
-                    v->eye[k] = eye[k][i];
-            v->outcode = code[i];
+            vb_store_clip(v, clip, has_eye ? eye : NULL, code, i);
             if (code[i] == 0) {
                 v->wx = wx[i];
                 v->wy = wy[i];
@@ -216,12 +223,7 @@ void vertex_batch_positions(GlesContext *ctx, const int64_t *index, int n, Verte
                           rw, wz);
         for (int i = 0; i < n; i++) {
             Vertex *v = &verts[index[i] - base];
-            for (int k = 0; k < 4; k++)
-                v->clip[k] = clip[k][i];
-            if (has_eye)
-                for (int k = 0; k < 4; k++)
-                    v->eye[k] = eye[k][i];
-            v->outcode = code[i];
+            vb_store_clip(v, clip, has_eye ? eye : NULL, code, i);
             if (code[i] == 0) {
                 v->wx = wx[i];
                 v->wy = wy[i];
@@ -234,12 +236,7 @@ void vertex_batch_positions(GlesContext *ctx, const int64_t *index, int n, Verte
 #endif
     for (int i = 0; i < n; i++) {
         Vertex *v = &verts[index[i] - base];
-        for (int k = 0; k < 4; k++)
-            v->clip[k] = clip[k][i];
-        if (has_eye)
-            for (int k = 0; k < 4; k++)
-                v->eye[k] = eye[k][i];
-        v->outcode = code[i];
+        vb_store_clip(v, clip, has_eye ? eye : NULL, code, i);
         if (code[i] == 0) {
             NUM w = clip[3][i];
             v->wx = ox + num_proj(clip[0][i], w, hx);
