@@ -1276,6 +1276,7 @@ AVX2_INLINE int avx2_rgba8x4(const FRAGV (*c)[4], __m128i d, int kind, __m128i *
     *out = _mm_unpacklo_epi16(_mm256_castsi256_si128(w), _mm256_extracti128_si256(w, 1));
     return 1;
 }
+
 #endif
 
 /* {====================================================================
@@ -1598,4 +1599,374 @@ AVX2_INLINE unsigned avx2_cmp4_i32(unsigned int func, __m128i a, __m128i b)
 }
 #endif
 /* }==================================================================== */
+#if SIMD_X86 && NUM_IS_FIXED
+/* {====================================================================
+** The colour, the first unit's MODULATE, the alpha test and the RGBA8888
+** write (blend kind 0, 1 or 2 as write_rgba8) of eight fragments in float lanes, with
+** a filter that proves each byte equal to the exact chain's (the 0.30
+** integers of stage_color_modulate and v4_rgba8):
+**
+** The exact chain ends in byte = floor(255 Y + 1/2) of a value Y that
+** float lanes approximate: Y_f with |Y_f - Y| <= 27 u (u = 2^-24; the
+** bound, from the colours, weights and texels' ranges, is derived in
+** docs/architecture.md). When 255 Y_f + 1/2 lies at least 2^-9 (above
+** 255 * 2^-18 plus the rounding of that sum) from the nearest integer,
+** 255 Y + 1/2 has the same floor. A lane nearer than that (about 0.4% of
+** channels), or whose weights' magnitudes sum to more than 1 + 2^-7, gets
+** the exact chain's bytes instead. */
+
+/* the three weights of fragments p[0..7] as eight 32-bit lanes each: the
+** 24 stride-3 integers are three loads; lane L of w[i] is integer 3L + i */
+AVX2_INLINE void avx2_wgt_lanes8(const WGT (*p)[3], __m256i w[3])
+{
+    const __m256i *q = (const __m256i *)(const void *)&p[0][0];
+    const __m256i q0 = _mm256_loadu_si256(q), q1 = _mm256_loadu_si256(q + 1), q2 = _mm256_loadu_si256(q + 2);
+    w[0] = _mm256_permutevar8x32_epi32(_mm256_blend_epi32(_mm256_blend_epi32(q0, q1, 0x92), q2, 0x24),
+                                       _mm256_setr_epi32(0, 3, 6, 1, 4, 7, 2, 5));
+    w[1] = _mm256_permutevar8x32_epi32(_mm256_blend_epi32(_mm256_blend_epi32(q0, q1, 0x24), q2, 0x49),
+                                       _mm256_setr_epi32(1, 4, 7, 2, 5, 0, 3, 6));
+    w[2] = _mm256_permutevar8x32_epi32(_mm256_blend_epi32(_mm256_blend_epi32(q0, q1, 0x49), q2, 0x92),
+                                       _mm256_setr_epi32(2, 5, 0, 3, 6, 1, 4, 7));
+}
+
+/* the low dwords of four fragments' channels c + k stride (k = 0..3) as
+** (R0..R3 | B0..B3) and (G0..G3 | A0..A3); *any collects the lanes' bits */
+AVX2_INLINE void avx2_channels4(const FRAGV *c, size_t stride, __m256 *rb, __m256 *ga, __m256i *any)
+{
+    const __m256i f0 = avx2_load4(c), f1 = avx2_load4(c + stride);
+    const __m256i f2 = avx2_load4(c + 2 * stride), f3 = avx2_load4(c + 3 * stride);
+    *any = _mm256_or_si256(*any, _mm256_or_si256(_mm256_or_si256(f0, f1), _mm256_or_si256(f2, f3)));
+    const __m256 s01 = _mm256_shuffle_ps(_mm256_castsi256_ps(f0), _mm256_castsi256_ps(f1), _MM_SHUFFLE(2, 0, 2, 0));
+    const __m256 s23 = _mm256_shuffle_ps(_mm256_castsi256_ps(f2), _mm256_castsi256_ps(f3), _MM_SHUFFLE(2, 0, 2, 0));
+    *rb = _mm256_shuffle_ps(s01, s23, _MM_SHUFFLE(2, 0, 2, 0));
+    *ga = _mm256_shuffle_ps(s01, s23, _MM_SHUFFLE(3, 1, 3, 1));
+}
+
+/* eight fragments' texels c + k stride (k = 0..7), channel i as the
+** integer lanes of ch[i]; 0 unless every channel lies in [0, 2^31) */
+AVX2_INLINE int avx2_channels8(const FRAGV *c, size_t stride, __m256i ch[4])
+{
+    __m256 rb0, ga0, rb1, ga1;
+    __m256i any = _mm256_setzero_si256();
+    avx2_channels4(c, stride, &rb0, &ga0, &any);
+    avx2_channels4(c + 4 * stride, stride, &rb1, &ga1, &any);
+    ch[0] = _mm256_castps_si256(_mm256_permute2f128_ps(rb0, rb1, 0x20));
+    ch[1] = _mm256_castps_si256(_mm256_permute2f128_ps(ga0, ga1, 0x20));
+    ch[2] = _mm256_castps_si256(_mm256_permute2f128_ps(rb0, rb1, 0x31));
+    ch[3] = _mm256_castps_si256(_mm256_permute2f128_ps(ga0, ga1, 0x31));
+    return _mm256_testz_si256(any, _mm256_set1_epi64x(~(int64_t)0x7FFFFFFF));
+}
+
+/* the chain's constants: the vertex colours' channels times 2^-60 (so
+** that a weight's integer times them is the term's value), or the flat
+** colour's (clamped) times 2^-30 in col[0]; the alpha test; for RGB565
+** the dither thresholds of the row's x & 3 */
+typedef struct Avx2ModWrite {
+    __m256 col[3][4];
+    int smooth, rgb, kind;
+    int alpha_test;              /* the test is on (any function but ALWAYS) */
+    unsigned int alpha_func;
+    uint32_t alpha_ref;          /* fragment_alpha_ref8 */
+    Avx2Cmp alpha_cmp;
+    __m256i alpha_ref_v;
+    int dither;
+    FRAGV t_row[4];              /* 0.30 (1/2 without dither) */
+    __m256 t_row_f;              /* t_row twice, as floats (0 without dither: the top bits are kept) */
+} Avx2ModWrite;
+
+/* setup for vertex colours a[0..2] in [0, 2^30] (smooth), or the flat
+** colour a[0] (any value: it is clamped, as stage_color_modulate does);
+** the alpha test's function (GL_ALWAYS when it is off) and 8-bit reference */
+static inline void avx2_modwrite_setup(Avx2ModWrite *m, const FRAGV *const a[3], int smooth, int rgb, int kind,
+                                       unsigned int alpha_func, uint32_t alpha_ref)
+{
+    m->smooth = smooth, m->rgb = rgb, m->kind = kind;
+    m->alpha_test = alpha_func != GL_ALWAYS;
+    m->alpha_func = alpha_func;
+    m->alpha_ref = alpha_ref;
+    m->alpha_cmp = avx2_cmp_setup(alpha_func);
+    m->alpha_ref_v = _mm256_set1_epi32((int)alpha_ref);
+    for (int i = 0; i < 3; i++)
+        for (int c = 0; c < 4; c++) {
+            const FRAGV v = smooth ? a[i][c] : frag_clamp01(a[0][c]);
+            m->col[i][c] = _mm256_set1_ps((float)((double)v * (smooth ? 0x1p-60 : 0x1p-30)));
+        }
+    m->dither = 0;
+}
+
+/* the RGB565 writer's thresholds t_row[x & 3] (dither_row's) */
+static inline void avx2_modwrite_dither(Avx2ModWrite *m, int dither, const FRAGV t_row[4])
+{
+    m->dither = dither;
+    float f[4];
+    for (int x = 0; x < 4; x++) {
+        m->t_row[x] = t_row[x];
+        f[x] = dither ? (float)((double)t_row[x] * 0x1p-30) : 0.0f;
+    }
+    m->t_row_f = _mm256_setr_ps(f[0], f[1], f[2], f[3], f[0], f[1], f[2], f[3]);
+}
+
+/* floor(z) of lanes z >= 0, and in *bad the lanes where z lies within
+** 2^-9 of an integer (where the exact value's floor may differ) */
+AVX2_INLINE __m256i avx2_floor_proved(__m256 z, __m256 *bad)
+{
+    const __m256 fl = _mm256_floor_ps(z), f = _mm256_sub_ps(z, fl);
+    *bad = _mm256_or_ps(*bad, _mm256_or_ps(_mm256_cmp_ps(f, _mm256_set1_ps(0x1p-9f), _CMP_LT_OQ),
+                                           _mm256_cmp_ps(f, _mm256_set1_ps(1.0f - 0x1p-9f), _CMP_GT_OQ)));
+    return _mm256_cvttps_epi32(fl);
+}
+
+/* the same where the exact value is known to be >= 0 and its floor is
+** clamped to `top`: an integer q nearby matters only for 1 <= q <= top
+** (both neighbouring floors give 0, or both clamp to top, elsewhere) */
+AVX2_INLINE __m256i avx2_floor_proved_upto(__m256 z, float top, __m256 *bad)
+{
+    __m256 near = _mm256_setzero_ps();
+    const __m256i q = avx2_floor_proved(z, &near);
+    near = _mm256_and_ps(near, _mm256_and_ps(_mm256_cmp_ps(z, _mm256_set1_ps(0.5f), _CMP_GT_OQ),
+                                             _mm256_cmp_ps(z, _mm256_set1_ps(top + 0.5f), _CMP_LT_OQ)));
+    *bad = _mm256_or_ps(*bad, near);
+    return q;
+}
+
+/* the source colour of eight fragments (weights p[0..7], texels ct + k
+** stride) after MODULATE, clamped to [0, 1], as floats y[0..3]; the alpha
+** test's outcome in *pass, the lanes not proved in *bad; 0 (nothing
+** done) when a texel leaves [0, 2^31) */
+AVX2_INLINE int avx2_modwrite_source8(const Avx2ModWrite *m, int smooth, const WGT (*p)[3], const FRAGV *ct,
+                                      size_t stride, __m256 y[4], __m256i *pass, __m256 *bad)
+{
+    __m256i ch[4];
+    if (!avx2_channels8(ct, stride, ch))
+        return 0;
+    const __m256 zero = _mm256_setzero_ps(), one = _mm256_set1_ps(1.0f);
+    __m256 c[4];
+    *bad = zero;
+    if (smooth) {
+        __m256i wi[3];
+        avx2_wgt_lanes8(p, wi);
+        const __m256 sign = _mm256_set1_ps(-0.0f);
+        const __m256 w0 = _mm256_cvtepi32_ps(wi[0]), w1 = _mm256_cvtepi32_ps(wi[1]), w2 = _mm256_cvtepi32_ps(wi[2]);
+        const __m256 mag = _mm256_add_ps(_mm256_add_ps(_mm256_andnot_ps(sign, w0), _mm256_andnot_ps(sign, w1)),
+                                         _mm256_andnot_ps(sign, w2));
+        *bad = _mm256_cmp_ps(mag, _mm256_set1_ps(0x1.02p30f), _CMP_GT_OQ);
+        for (int i = 0; i < 4; i++) {
+            const __m256 s = _mm256_add_ps(_mm256_mul_ps(m->col[0][i], w0),
+                                           _mm256_add_ps(_mm256_mul_ps(m->col[1][i], w1), _mm256_mul_ps(m->col[2][i], w2)));
+            c[i] = _mm256_min_ps(_mm256_max_ps(s, zero), one);
+        }
+    } else {
+        for (int i = 0; i < 4; i++)
+            c[i] = m->col[0][i];
+    }
+    const __m256 scale = _mm256_set1_ps(0x1p-30f);
+    for (int i = 0; i < 4; i++)
+        y[i] = _mm256_min_ps(_mm256_mul_ps(c[i], _mm256_mul_ps(_mm256_cvtepi32_ps(ch[i]), scale)), one);
+    if (m->rgb)
+        y[3] = c[3];
+    *pass = _mm256_set1_epi32(-1);
+    if (m->alpha_test) {
+        /* fragment_alpha8 of the alpha, proved as the bytes are */
+        const __m256i a8 = avx2_floor_proved(_mm256_add_ps(_mm256_mul_ps(y[3], _mm256_set1_ps(255.0f)),
+                                                           _mm256_set1_ps(0.5f)), bad);
+        *pass = avx2_cmp_i32(&m->alpha_cmp, a8, m->alpha_ref_v);
+    }
+    return 1;
+}
+
+/* the words written over d (eight stored RGBA8888 words) by eight
+** fragments (as avx2_modwrite_source8), into *out; returns the lanes
+** (bits) the float lanes do not prove (their words in *out are not the
+** chain's), or 0xFF when a texel leaves [0, 2^31) */
+AVX2_INLINE unsigned avx2_modwrite8(const Avx2ModWrite *m, int smooth, int kind, const WGT (*p)[3], const FRAGV *ct,
+                                    size_t stride, __m256i d, __m256i *out)
+{
+    __m256 y[4], bad;
+    __m256i pass;
+    if (!avx2_modwrite_source8(m, smooth, p, ct, stride, y, &pass, &bad)) {
+        *out = d;
+        return 0xFFu;
+    }
+    const __m256 one = _mm256_set1_ps(1.0f);
+    if (kind) {
+        const __m256i byte = _mm256_set1_epi32(0xFF);
+        const __m256 inv255 = _mm256_set1_ps(1.0f / 255.0f);
+        const __m256 b = _mm256_sub_ps(one, y[3]), a = y[3];
+        for (int i = 0; i < 4; i++) {
+            const __m256i di = i == 3 ? _mm256_srli_epi32(d, 24) : _mm256_and_si256(_mm256_srli_epi32(d, 8 * i), byte);
+            const __m256 dv = _mm256_mul_ps(_mm256_cvtepi32_ps(di), inv255);
+            y[i] = kind == 1 ? _mm256_add_ps(_mm256_mul_ps(y[i], a), _mm256_mul_ps(dv, b))
+                             : _mm256_min_ps(_mm256_add_ps(y[i], dv), one);
+        }
+    }
+    __m256i v[4];
+    for (int i = 0; i < 4; i++)
+        v[i] = avx2_floor_proved(_mm256_add_ps(_mm256_mul_ps(y[i], _mm256_set1_ps(255.0f)), _mm256_set1_ps(0.5f)),
+                                 &bad);
+    /* bytes R0-3 G0-3 B0-3 A0-3 | R4-7 ... per 128-bit lane, to words */
+    const __m256i b8 = _mm256_packus_epi16(_mm256_packus_epi32(v[0], v[1]), _mm256_packus_epi32(v[2], v[3]));
+    const __m256i w = _mm256_shuffle_epi8(b8, _mm256_setr_epi8(0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15, 0,
+                                                               4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15));
+    /* a fragment that fails the alpha test leaves the stored word */
+    *out = _mm256_blendv_epi8(d, w, pass);
+    return (unsigned)_mm256_movemask_ps(bad);
+}
+
+/* the same over eight stored RGB565 words d (32-bit lanes) for blend kind
+** 0 or 1, the thresholds' lanes of x & 3 given (x3: 0..3 per lane) */
+AVX2_INLINE unsigned avx2_modwrite565_8(const Avx2ModWrite *m, int smooth, int kind, const WGT (*p)[3],
+                                        const FRAGV *ct, size_t stride, __m256i d, __m256i x3, __m256i *out)
+{
+    __m256 y[4], bad;
+    __m256i pass;
+    if (!avx2_modwrite_source8(m, smooth, p, ct, stride, y, &pass, &bad)) {
+        *out = d;
+        return 0xFFu;
+    }
+    static const int shift[3] = { 11, 5, 0 }, bits[3] = { 5, 6, 5 };
+    if (kind) {
+        const __m256 b = _mm256_sub_ps(_mm256_set1_ps(1.0f), y[3]), a = y[3];
+        for (int i = 0; i < 3; i++) {
+            const int maxval = (1 << bits[i]) - 1;
+            const __m256i di = _mm256_and_si256(_mm256_srli_epi32(d, shift[i]), _mm256_set1_epi32(maxval));
+            const __m256 dv = _mm256_mul_ps(_mm256_cvtepi32_ps(di), _mm256_set1_ps(1.0f / (float)maxval));
+            y[i] = _mm256_add_ps(_mm256_mul_ps(y[i], a), _mm256_mul_ps(dv, b));
+        }
+    }
+    /* dither: floor(y maxval + t), else the top bits floor(y 2^bits),
+    ** both clamped to maxval */
+    const __m256 t = _mm256_permutevar_ps(m->t_row_f, x3);
+    __m256i w = _mm256_setzero_si256();
+    for (int i = 0; i < 3; i++) {
+        const int maxval = (1 << bits[i]) - 1;
+        const __m256 z = m->dither ? _mm256_add_ps(_mm256_mul_ps(y[i], _mm256_set1_ps((float)maxval)), t)
+                                   : _mm256_mul_ps(y[i], _mm256_set1_ps((float)(1 << bits[i])));
+        const __m256i v = _mm256_min_epi32(avx2_floor_proved_upto(z, (float)maxval, &bad), _mm256_set1_epi32(maxval));
+        w = _mm256_or_si256(w, _mm256_slli_epi32(v, shift[i]));
+    }
+    *out = _mm256_blendv_epi8(d, w, pass);
+    return (unsigned)_mm256_movemask_ps(bad);
+}
+
+/* the exact chain's source colour for one fragment (stage_color_modulate):
+** colour a[0..2] at weights p (smooth) or the flat colour a[0], texel ct
+** (in [0, 2^31)); 0 when it fails the alpha test */
+AVX2_INLINE int avx2_modwrite_source1(const Avx2ModWrite *m, const FRAGV *const a[3], int smooth, const WGT *p,
+                                      const FRAGV *ct, V4 *out)
+{
+    const V4 c = smooth ? v4_lerp3f_clamp01(v4_load(a[0]), v4_load(a[1]), v4_load(a[2]), p) : v4_clamp01(v4_load(a[0]));
+    V4 mm = v4_mul01(c, v4_load(ct));
+    if (m->rgb)
+        mm = v4_keep_alpha(mm, c);
+    *out = mm;
+    FRAGV ch[4];
+    v4_store(ch, mm);
+    return !m->alpha_test || fragment_compare(m->alpha_func, fragment_alpha8(ch[3]), m->alpha_ref);
+}
+
+/* the exact chain for one fragment over the stored RGBA8888 word d
+** (v4_rgba8) */
+AVX2_INLINE uint32_t avx2_modwrite1(const Avx2ModWrite *m, const FRAGV *const a[3], int smooth, int kind,
+                                    const WGT *p, const FRAGV *ct, uint32_t d)
+{
+    V4 mm;
+    return avx2_modwrite_source1(m, a, smooth, p, ct, &mm) ? v4_rgba8(mm, d, kind) : d;
+}
+
+/* the same over the stored RGB565 word d at column x (stage_write_565,
+** stage_write_565_alpha) */
+AVX2_INLINE uint32_t avx2_modwrite565_1(const Avx2ModWrite *m, const FRAGV *const a[3], int smooth, int kind,
+                                        const WGT *p, const FRAGV *ct, uint32_t d, int x,
+                                        const FRAGV unorm5[32], const FRAGV unorm6[64])
+{
+    V4 mm;
+    if (!avx2_modwrite_source1(m, a, smooth, p, ct, &mm))
+        return d;
+    const FRAGV t_d = m->t_row[x & 3];
+    if (!kind)
+        return v4_pack565(mm, m->dither, t_d);
+    const FRAGV dv[3] = { unorm5[d >> 11], unorm6[(d >> 5) & 63], unorm5[d & 31] };
+    const V4 cv = v4_clamp01(mm), va = v4_alpha(cv);
+    return v4_pack565(v4_add(v4_mul01(cv, va), v4_mul01(v4_rgb0(dv), v4_one_minus(va))), m->dither, t_d);
+}
+
+/* the kernel over fragments 0..n-1 at the offsets k of dst (ascending):
+** weights p, texels ct + j stride; eight at a time, the rest exactly */
+AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *m, const FRAGV *const a[3], int smooth, int kind, int n,
+                                   const uint8_t *k, const WGT (*p)[3], const FRAGV *ct, size_t stride, uint32_t *dst)
+{
+    int j = 0;
+    for (; j + 8 <= n; j += 8) {
+        const int run = k[j + 7] == k[j] + 7;
+        const __m256i idx = _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)&k[j]));
+        /* the stored words, where the blend or the alpha test reads them */
+        const __m256i d = !kind && !m->alpha_test ? _mm256_setzero_si256()
+                        : run ? _mm256_loadu_si256((const __m256i *)(const void *)&dst[k[j]])
+                              : _mm256_i32gather_epi32((const int *)(const void *)dst, idx, 4);
+        __m256i w;
+        const unsigned bad = avx2_modwrite8(m, smooth, kind, &p[j], ct + (size_t)j * stride, stride, d, &w);
+        uint32_t words[8];
+        _mm256_storeu_si256((__m256i *)(void *)words, w);
+        if (bad) {
+            uint32_t before[8];
+            _mm256_storeu_si256((__m256i *)(void *)before, d);
+            for (int i = 0; i < 8; i++)
+                if (bad >> i & 1u)
+                    words[i] = avx2_modwrite1(m, a, smooth, kind, p[j + i], ct + (size_t)(j + i) * stride, before[i]);
+        }
+        if (run)
+            memcpy(&dst[k[j]], words, sizeof words);
+        else
+            for (int i = 0; i < 8; i++)
+                dst[k[j + i]] = words[i];
+    }
+    for (; j < n; j++)
+        dst[k[j]] = avx2_modwrite1(m, a, smooth, kind, p[j], ct + (size_t)j * stride, dst[k[j]]);
+}
+
+/* the same over RGB565 words, the fragments' columns x0 + k */
+AVX2_INLINE void avx2_modwrite565_run(const Avx2ModWrite *m, const FRAGV *const a[3], int smooth, int kind, int n,
+                                      const uint8_t *k, int x0, const WGT (*p)[3], const FRAGV *ct, size_t stride,
+                                      uint16_t *dst, const FRAGV unorm5[32], const FRAGV unorm6[64])
+{
+    int j = 0;
+    for (; j + 8 <= n; j += 8) {
+        const int run = k[j + 7] == k[j] + 7;
+        const __m256i idx = _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)&k[j]));
+        const __m256i x3 = _mm256_and_si256(_mm256_add_epi32(idx, _mm256_set1_epi32(x0)), _mm256_set1_epi32(3));
+        uint16_t before[8];
+        if (run)
+            memcpy(before, &dst[k[j]], sizeof before);
+        else
+            for (int i = 0; i < 8; i++)
+                before[i] = dst[k[j + i]];
+        const __m256i d = _mm256_cvtepu16_epi32(_mm_loadu_si128((const __m128i *)(const void *)before));
+        __m256i w;
+        const unsigned bad = avx2_modwrite565_8(m, smooth, kind, &p[j], ct + (size_t)j * stride, stride, d, x3, &w);
+        /* the low halves of the eight dwords */
+        const __m256i h = _mm256_shuffle_epi8(w, _mm256_setr_epi8(0, 1, 4, 5, 8, 9, 12, 13, -1, -1, -1, -1, -1, -1, -1,
+                                                                  -1, 0, 1, 4, 5, 8, 9, 12, 13, -1, -1, -1, -1, -1, -1,
+                                                                  -1, -1));
+        uint16_t words[8];
+        _mm_storeu_si128((__m128i *)(void *)words,
+                         _mm_unpacklo_epi64(_mm256_castsi256_si128(h), _mm256_extracti128_si256(h, 1)));
+        if (bad)
+            for (int i = 0; i < 8; i++)
+                if (bad >> i & 1u)
+                    words[i] = (uint16_t)avx2_modwrite565_1(m, a, smooth, kind, p[j + i],
+                                                            ct + (size_t)(j + i) * stride, before[i], x0 + k[j + i],
+                                                            unorm5, unorm6);
+        if (run)
+            memcpy(&dst[k[j]], words, sizeof words);
+        else
+            for (int i = 0; i < 8; i++)
+                dst[k[j + i]] = words[i];
+    }
+    for (; j < n; j++)
+        dst[k[j]] = (uint16_t)avx2_modwrite565_1(m, a, smooth, kind, p[j], ct + (size_t)j * stride, dst[k[j]],
+                                                 x0 + k[j], unorm5, unorm6);
+}
+/* }==================================================================== */
+#endif
+
 #endif

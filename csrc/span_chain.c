@@ -68,6 +68,7 @@ typedef struct ChainStages {
     SpanStage write, write_rgba8, write_rgba8_alpha, write_rgba8_add, write_rgba8_logic, write_rgba8_masked;
     SpanStage write_565, write_565_alpha;
     SpanStage rect_source;
+    SpanStage modulate_write;   /* the fixed build's AVX2 instance only, else NULL */
 } ChainStages;
 
 /* the baseline instance */
@@ -110,9 +111,74 @@ static void debug_color_avx2(int clamp, const FRAGV *const col[3], int n, const 
     for (int j = 0; j < n; j++)
         v4_store(out[j], clamp ? v4_lerp3f_clamp01(a0, a1, a2, p[j]) : v4_lerp3f(a0, a1, a2, p[j]));
 }
+/* gles_debug_modulate_write's kernel run, with the count of the lanes
+** the kernel leaves to the exact code, group by group */
+static int debug_modulate_write_avx2(const Avx2ModWrite *m, const FRAGV *const a[3], int n, const uint8_t *k,
+                                     const WGT (*p)[3], const FRAGV *ct, int rgb565, int x0, void *dst,
+                                     const FRAGV unorm5[32], const FRAGV unorm6[64])
+{
+    const int smooth = m->smooth, kind = m->kind;
+    int exact = n % 8;
+    for (int j = 0; j + 8 <= n; j += 8) {
+        uint32_t d[8];
+        for (int i = 0; i < 8; i++)
+            d[i] = rgb565 ? ((const uint16_t *)dst)[k[j + i]] : ((const uint32_t *)dst)[k[j + i]];
+        const __m256i dv = _mm256_loadu_si256((const __m256i *)(const void *)d);
+        const __m256i x3 = _mm256_and_si256(
+            _mm256_add_epi32(_mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)&k[j])),
+                             _mm256_set1_epi32(x0)),
+            _mm256_set1_epi32(3));
+        __m256i w;
+        exact += __builtin_popcount(rgb565 ? avx2_modwrite565_8(m, smooth, kind, &p[j], ct + 4 * (size_t)j, 4, dv, x3, &w)
+                                           : avx2_modwrite8(m, smooth, kind, &p[j], ct + 4 * (size_t)j, 4, dv, &w));
+    }
+#define DEBUG_RUN(S, K) \
+    (rgb565 ? avx2_modwrite565_run(m, a, S, K, n, k, x0, p, ct, 4, dst, unorm5, unorm6) \
+            : avx2_modwrite_run(m, a, S, K, n, k, p, ct, 4, dst))
+    switch (smooth * 3 + kind) {
+    case 0: DEBUG_RUN(0, 0); break;
+    case 1: DEBUG_RUN(0, 1); break;
+    case 2: DEBUG_RUN(0, 2); break;
+    case 3: DEBUG_RUN(1, 0); break;
+    case 4: DEBUG_RUN(1, 1); break;
+    default: DEBUG_RUN(1, 2); break;
+    }
+#undef DEBUG_RUN
+    return exact;
+}
 #endif
 #pragma GCC pop_options
 #endif
+
+int gles_debug_modulate_write(int smooth, int rgb, int kind, unsigned int alpha_func, uint32_t alpha_ref,
+                              const int64_t col[12], int n, const uint8_t *k, const int32_t *p, const int64_t *ct,
+                              int rgb565, int dither, int x0, void *dst)
+{
+#if SIMD_X86 && NUM_IS_FIXED
+    if (n < 0 || n > SPAN_CHUNK || kind < 0 || kind > (rgb565 ? 1 : 2) || x0 < 0 || simd_detect() < SIMD_AVX2)
+        return -1;
+    for (int i = 0; i < 12; i++)
+        if (smooth && (col[i] < 0 || col[i] > FRAG_ONE))
+            return -1;
+    const FRAGV *const a[3] = { col, smooth ? col + 4 : col, smooth ? col + 8 : col };
+    Avx2ModWrite m;
+    avx2_modwrite_setup(&m, a, smooth != 0, rgb != 0, kind, alpha_func, alpha_ref);
+    FRAGV t_row[4], unorm5[32], unorm6[64];
+    for (int x = 0; x < 4; x++)
+        t_row[(x0 + x) & 3] = dither ? fragment_dither_threshold(x0 + x, 0) : FRAG_ONE / 2;
+    avx2_modwrite_dither(&m, dither != 0, t_row);
+    for (uint32_t d = 0; d < 64; d++) {
+        if (d < 32)
+            unorm5[d] = frag_from_unorm(d, 31);
+        unorm6[d] = frag_from_unorm(d, 63);
+    }
+    return debug_modulate_write_avx2(&m, a, n, k, (const WGT (*)[3])p, ct, rgb565 != 0, x0, dst, unorm5, unorm6);
+#else
+    (void)smooth, (void)rgb, (void)kind, (void)alpha_func, (void)alpha_ref, (void)col, (void)n, (void)k, (void)p,
+        (void)ct, (void)rgb565, (void)dither, (void)x0, (void)dst;
+    return -1;
+#endif
+}
 
 /* gles_debug_persp_any and gles_debug_persp: wgt_persp_any or wgt_persp */
 static int debug_persp(int any, int simd, int eshift, int64_t lin_recip, const int64_t mant[3], const int qshift[3],
@@ -255,7 +321,34 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
             ctx->samplers[u] = texture_span_sampler(ctx->units[u].bound, ctx_simd(ctx));
             ctx->sample_group[u] = texture_span_sample_group(ctx->units[u].bound, ctx_simd(ctx));
         }
-    if (rect)
+    /* a lone REPLACE unit of an RGBA texture: its texel is the colour
+    ** (texture_env), so it is sampled into the colour and the primary
+    ** colour is not formed */
+    const int lone = units && !(units & (units - 1)) ? __builtin_ctz(units) : -1;
+    const int direct = lone >= 0 && ctx->units[lone].env_mode == GL_REPLACE
+                    && ctx->units[lone].bound->format == GL_RGBA;
+    /* the first unit's MODULATE of an RGBA or RGB texture */
+    const int first = units ? __builtin_ctz(units) : -1;
+    const int first_modulates = first >= 0 && ctx->units[first].env_mode == GL_MODULATE
+                             && (ctx->units[first].bound->format == GL_RGBA
+                                 || ctx->units[first].bound->format == GL_RGB);
+    /* on triangles it takes the colour as it is formed
+    ** (stage_color_modulate), after the fetches */
+    const int modulate = !rect && first_modulates;
+    const int bk = span_blend_kind(ctx);
+    const int plain = ctx->color_format == GLES_COLOR_RGBA8888 && ctx->color_mask[0] && ctx->color_mask[1]
+                   && ctx->color_mask[2] && ctx->color_mask[3];
+    /* that MODULATE of the only unit, the alpha test (before any depth or
+    ** stencil test) and an RGBA8888 write with nothing else between them:
+    ** one stage, where the instance has it (stage_modulate_write) */
+    const int plain565 = ctx->color_format == GLES_COLOR_RGB565 && ctx->color_mask[0] && ctx->color_mask[1]
+                      && ctx->color_mask[2];
+    const int modulate_write = first_modulates && lone == first && !ctx->fog && !(ctx->alpha_test && tests)
+                            && ((plain && bk >= 0) || (plain565 && (bk == 0 || bk == 1))) && !ctx->color_logic_op
+                            && cs->modulate_write != NULL;
+    /* a rectangle's colour and window depth; that stage reads the colour
+    ** itself, so only the tests need it then */
+    if (rect && (!modulate_write || tests))
         s[n++] = cs->rect_source;
     /* the window depth is for the depth test only */
     if (tests && early) {
@@ -265,17 +358,6 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     }
     if (!color_work)
         return n;
-    /* a lone REPLACE unit of an RGBA texture: its texel is the colour
-    ** (texture_env), so it is sampled into the colour and the primary
-    ** colour is not formed */
-    const int lone = units && !(units & (units - 1)) ? __builtin_ctz(units) : -1;
-    const int direct = lone >= 0 && ctx->units[lone].env_mode == GL_REPLACE
-                    && ctx->units[lone].bound->format == GL_RGBA;
-    /* the first unit's MODULATE of an RGBA or RGB texture takes the colour
-    ** as it is formed (stage_color_modulate), after the fetches */
-    const int first = units ? __builtin_ctz(units) : -1;
-    const int modulate = !rect && !direct && first >= 0 && ctx->units[first].env_mode == GL_MODULATE
-                      && (ctx->units[first].bound->format == GL_RGBA || ctx->units[first].bound->format == GL_RGB);
     if (!rect) {
         s[n++] = cs->persp;
         if (lod)
@@ -289,6 +371,10 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
         for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
             if (units & (1u << u))
                 s[n++] = rect ? cs->fetch_rect[u] : cs->fetch[u];
+        if (modulate_write) {
+            s[n++] = cs->modulate_write;
+            return n;
+        }
         for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
             if (units & (1u << u))
                 s[n++] = modulate && u == first ? cs->color_modulate[u] : cs->env[u];
@@ -302,11 +388,6 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
             s[n++] = cs->depth;
         s[n++] = cs->tests_late;
     }
-    const int bk = span_blend_kind(ctx);
-    const int plain = ctx->color_format == GLES_COLOR_RGBA8888 && ctx->color_mask[0] && ctx->color_mask[1]
-                   && ctx->color_mask[2] && ctx->color_mask[3];
-    const int plain565 = ctx->color_format == GLES_COLOR_RGB565 && ctx->color_mask[0] && ctx->color_mask[1]
-                      && ctx->color_mask[2];
     if (no_color)
         ;
     else if (plain && bk == 0 && !ctx->color_logic_op)

@@ -1088,6 +1088,70 @@ static void STAGE(stage_rect_source)(GlesContext *ctx, const TriSetup *t, SpanBu
 
 /* }==================================================================== */
 
+#if CHAIN_SIMD && NUM_IS_FIXED
+/* stage_color_modulate of the one enabled unit (or a rectangle's colour
+** and stage_env's MODULATE), the alpha test and write_rgba8 (blend kind 0,
+** 1 or 2) or stage_write_565 / stage_write_565_alpha in one pass of eight float lanes, each byte proved equal to the
+** exact chain's or taken from it (avx2_modwrite8); vertex colours outside
+** [0, 1] go through the separate stages */
+static void STAGE(stage_modulate_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    const int u = __builtin_ctz(ctx->tex_units_on);
+    const int kind = span_blend_kind(ctx);
+    const int smooth = !b->rect && t->smooth;
+    const FRAGV *flat = b->rect ? b->rect->in.c : t->flat;
+    const FRAGV *const a[3] = { smooth ? t->col[0] : flat, smooth ? t->col[1] : flat, smooth ? t->col[2] : flat };
+    int in_range = 1;
+    for (int i = 0; i < 3 && smooth; i++)
+        for (int c = 0; c < 4; c++)
+            in_range &= a[i][c] >= 0 && a[i][c] <= FRAG_ONE;
+    if (!in_range) {
+        STAGE(stage_color_modulate)(ctx, t, b, u);
+        if (ctx->alpha_test)
+            STAGE(stage_alpha)(ctx, t, b);
+        if (ctx->color_format == GLES_COLOR_RGB565)
+            (kind ? STAGE(stage_write_565_alpha) : STAGE(stage_write_565))(ctx, t, b);
+        else
+            STAGE(write_rgba8)(ctx, b, kind);
+        return;
+    }
+    Avx2ModWrite m;
+    avx2_modwrite_setup(&m, a, smooth, ctx->units[u].bound->format != GL_RGBA, kind,
+                        ctx->alpha_test ? ctx->alpha_func : GL_ALWAYS, fragment_alpha_ref8(ctx));
+    const size_t at = (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
+    const WGT (*p)[3] = (const WGT (*)[3])b->p;
+    const FRAGV *ct = b->ct[0][u];
+    const size_t stride = GLES_MAX_TEXTURE_UNITS * 4;
+    if (ctx->color_format == GLES_COLOR_RGB565) {
+        FRAGV t_row[4];
+        dither_row(b, ctx->dither, t_row);
+        avx2_modwrite_dither(&m, ctx->dither, t_row);
+        uint16_t *dst = (uint16_t *)ctx->color + at;
+#define MODWRITE565(S, K) \
+    avx2_modwrite565_run(&m, a, S, K, b->n, b->k, b->x0, p, ct, stride, dst, ctx->unorm5, ctx->unorm6)
+        switch (smooth * 2 + (kind != 0)) {
+        case 0: MODWRITE565(0, 0); break;
+        case 1: MODWRITE565(0, 1); break;
+        case 2: MODWRITE565(1, 0); break;
+        default: MODWRITE565(1, 1); break;
+        }
+#undef MODWRITE565
+        return;
+    }
+    uint32_t *dst = (uint32_t *)ctx->color + at;
+#define MODWRITE(S, K) avx2_modwrite_run(&m, a, S, K, b->n, b->k, p, ct, stride, dst)
+    switch (smooth * 3 + kind) {
+    case 0: MODWRITE(0, 0); break;
+    case 1: MODWRITE(0, 1); break;
+    case 2: MODWRITE(0, 2); break;
+    case 3: MODWRITE(1, 0); break;
+    case 4: MODWRITE(1, 1); break;
+    default: MODWRITE(1, 2); break;
+    }
+#undef MODWRITE
+}
+#endif
+
 static const ChainStages STAGE(chain_stages) = {
     .persp = STAGE(stage_persp),
     .neighbours = STAGE(stage_neighbours),
@@ -1117,6 +1181,9 @@ static const ChainStages STAGE(chain_stages) = {
     .write_rgba8_masked = STAGE(stage_write_rgba8_masked),
     .write_565 = STAGE(stage_write_565),
     .write_565_alpha = STAGE(stage_write_565_alpha),
+#if CHAIN_SIMD && NUM_IS_FIXED
+    .modulate_write = STAGE(stage_modulate_write),
+#endif
     .rect_source = STAGE(stage_rect_source),
 };
 

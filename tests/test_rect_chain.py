@@ -37,7 +37,7 @@ unit = st.fixed_dictionaries({
     "crop": st.tuples(st.integers(-4, 8), st.integers(-4, 8), st.integers(-20, 40), st.integers(-20, 40)),
 })
 
-states = st.fixed_dictionaries({
+STATE_FIELDS = {
     "numeric": st.sampled_from(BUILDS),
     "color": st.sampled_from(["rgba8888", "rgb565"]),
     "units": st.lists(unit, min_size=0, max_size=2),
@@ -52,6 +52,18 @@ states = st.fixed_dictionaries({
     "fog": st.booleans(),
     "dither": st.booleans(),
     "seed": st.integers(0, 2**16),
+}
+states = st.fixed_dictionaries(STATE_FIELDS)
+
+# the states of the fused MODULATE + alpha test + write stage (one MODULATE
+# unit of an RGBA or RGB texture, no fog, blending off, SRC_ALPHA or ONE)
+modulate_write_states = st.fixed_dictionaries({
+    **STATE_FIELDS,
+    "units": st.lists(unit.map(lambda u: {**u, "env": "MODULATE",
+                                          "format": "RGB" if u["format"] == "RGB" else "RGBA"}),
+                      min_size=1, max_size=1),
+    "blend": st.one_of(st.none(), st.sampled_from(BLENDS[:2])),
+    "fog": st.just(False),
 })
 
 
@@ -154,6 +166,17 @@ def test_drawtex_chain_matches_reference(s):
         _same(render(s, flags), ref)
 
 
+@settings(max_examples=100, deadline=None)
+@given(modulate_write_states)
+def test_drawtex_modulate_write_matches_reference(s):
+    """DrawTex through the fused MODULATE + alpha test + write stage (on
+    the fixed build with AVX2; the other builds and instances take the
+    separate stages): identical buffers both ways."""
+    ref = render(s, REFERENCE)
+    for flags in CHAINS:
+        _same(render(s, flags), ref)
+
+
 points = st.fixed_dictionaries({
     "sprite": st.booleans(),
     "replace": st.tuples(st.booleans(), st.booleans()),
@@ -205,6 +228,16 @@ def render_points(s: dict, p: dict, flags: int):
 @given(states, points)
 def test_points_chain_matches_reference(s, p):
     """Aliased points and sprites: identical buffers and errors both ways."""
+    ref = render_points(s, p, REFERENCE)
+    for flags in CHAINS:
+        _same(render_points(s, p, flags), ref)
+
+
+@settings(max_examples=100, deadline=None)
+@given(modulate_write_states, points)
+def test_points_modulate_write_matches_reference(s, p):
+    """Points and sprites through the fused MODULATE + alpha test + write
+    stage: identical buffers both ways."""
     ref = render_points(s, p, REFERENCE)
     for flags in CHAINS:
         _same(render_points(s, p, flags), ref)

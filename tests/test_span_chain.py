@@ -1008,11 +1008,51 @@ def case_mipmap_after_stencil(numeric: str, seed: int) -> dict:
     return make_scene(numeric, seed, s, changes=changes, size=(150, 40), triangles=24)
 
 
+def case_modulate_alpha_test_blend(numeric: str, seed: int) -> dict:
+    """A lone MODULATE unit (an RGBA texture, RGB on odd seeds), the alpha test and each
+    RGBA8888 blend the fused MODULATE + write stage takes (none, SRC_ALPHA /
+    ONE_MINUS_SRC_ALPHA, ONE / ONE), smooth or flat (seeds 2, 3), over rows of up to 150
+    pixels; then another blend without the alpha test, under an early depth test."""
+    s = base_state()
+    s["smooth"] = seed < 2
+    s["tex0"] = tex(seed, format=(C.GL_RGB if seed % 2 else C.GL_RGBA, C.GL_UNSIGNED_BYTE), log_w=5, log_h=3,
+                    min=C.GL_LINEAR, mag=C.GL_LINEAR)
+    blends = ({"on": False, "func": (C.GL_ONE, C.GL_ZERO), "separate": None, "equation": None},
+              {"on": True, "func": (C.GL_SRC_ALPHA, C.GL_ONE_MINUS_SRC_ALPHA), "separate": None,
+               "equation": None},
+              {"on": True, "func": (C.GL_ONE, C.GL_ONE), "separate": None, "equation": None})
+    s["alpha"] = {"on": True, "func": FUNCS[(3 * seed + 1) % 7], "ref": 0.45}
+    s["blend"] = blends[seed % 3]
+    changes = {"alpha": {"on": False, "func": C.GL_ALWAYS, "ref": 0.0}, "blend": blends[(seed + 1) % 3],
+               "depth": {"on": True, "func": C.GL_LESS, "mask": True, "range": None}}
+    return make_scene(numeric, seed, s, changes=changes, size=(150, 12), triangles=12)
+
+
+def case_modulate_rgb565(numeric: str, seed: int) -> dict:
+    """The fused MODULATE + write stage on RGB565: dithered (odd seeds) or the top bits,
+    no blend or SRC_ALPHA / ONE_MINUS_SRC_ALPHA, the alpha test on seed 2; then dither
+    and blend switched."""
+    s = base_state()
+    s["dither"] = bool(seed % 2)
+    fmt = (C.GL_RGBA, C.GL_UNSIGNED_SHORT_4_4_4_4) if seed == 3 else (C.GL_RGBA, C.GL_UNSIGNED_BYTE)
+    s["tex0"] = tex(seed, format=fmt, log_w=4, log_h=4, min=C.GL_LINEAR, mag=C.GL_NEAREST)
+    off = {"on": False, "func": (C.GL_ONE, C.GL_ZERO), "separate": None, "equation": None}
+    alpha = {"on": True, "func": (C.GL_SRC_ALPHA, C.GL_ONE_MINUS_SRC_ALPHA), "separate": None,
+             "equation": None}
+    s["blend"] = alpha if seed < 2 else off
+    if seed == 2:
+        s["alpha"] = {"on": True, "func": C.GL_GEQUAL, "ref": 0.5}
+    changes = {"dither": not s["dither"], "blend": off if seed < 2 else alpha}
+    return make_scene(numeric, seed, s, changes=changes, color="rgb565", depth_bits=16, size=(150, 12),
+                      triangles=12)
+
+
 CASES = {f.__name__[5:]: f for f in (case_dot3_modulate_fog, case_alpha_additive_xor,
                                      case_stencil_equal_multipass, case_trilinear_fog_depth,
                                      case_rgb565_dither_blend, case_four_unit_crossbar,
                                      case_offset_stencil_wrap, case_wide_alpha_test,
-                                     case_mipmap_after_stencil)}
+                                     case_mipmap_after_stencil, case_modulate_alpha_test_blend,
+                                     case_modulate_rgb565)}
 
 
 @pytest.mark.parametrize("numeric", BUILDS)

@@ -1,0 +1,275 @@
+"""The fixed build's fused MODULATE + alpha test + RGBA8888 write against an integer model.
+
+On AVX2 the chain runs a lone MODULATE unit, the alpha test and the RGBA8888
+write (no blend, SRC_ALPHA/ONE_MINUS_SRC_ALPHA, or ONE/ONE) as one stage
+(stage_modulate_write): eight fragments in float lanes, and where the float
+value of a byte lies too near a rounding boundary to prove the byte, the
+exact 0.30 chain for that fragment. ``gles_debug_modulate_write`` runs that
+kernel on chosen inputs. The expected words here come from the 0.30 integer
+formulas of the reference path (frag_lerp3f, frag_mul, frag_from_unorm,
+frag_to_unorm and the blend), evaluated with Python integers: random
+inputs, and inputs placed on the rounding ties of every channel and a few
+units of 2^-30 beside them, where only the exact fallback can be right.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from conftest import HAS_SIMD, make_ctx
+
+from gles import constants as C
+
+ONE = 1 << 30
+FUNCS = [C.GL_NEVER, C.GL_LESS, C.GL_EQUAL, C.GL_LEQUAL, C.GL_GREATER, C.GL_NOTEQUAL, C.GL_GEQUAL,
+         C.GL_ALWAYS]
+
+pytestmark = pytest.mark.skipif(not HAS_SIMD, reason="no AVX2 instance on this CPU")
+
+
+def _clamp01(v: int) -> int:
+    return min(max(v, 0), ONE)
+
+
+def _to_unorm8(v: int) -> int:
+    """frag_to_unorm(v, 255, 1/2): clamped, then (255 v + 2^29) >> 30."""
+    return (_clamp01(v) * 255 + (1 << 29)) >> 30
+
+
+def _compare(func: int, a: int, b: int) -> bool:
+    return {C.GL_NEVER: False, C.GL_LESS: a < b, C.GL_EQUAL: a == b, C.GL_LEQUAL: a <= b,
+            C.GL_GREATER: a > b, C.GL_NOTEQUAL: a != b, C.GL_GEQUAL: a >= b}.get(func, True)
+
+
+BAYER_ROW0 = [0, 8, 2, 10]       # fragment_dither_threshold's matrix, row y = 0
+
+
+def _pack565(v, x, dither) -> int:
+    """fragment_channel of red, green, blue: frag_to_unorm with the dither
+    threshold of column x, or the top bits (frag_to_msb)."""
+    word = 0
+    for val, bits, shift in zip(v, (5, 6, 5), (11, 5, 0)):
+        top = (1 << bits) - 1
+        if val <= 0:
+            q = 0
+        elif dither:
+            t = (2 * BAYER_ROW0[x & 3] + 1) * ONE // 32
+            q = top if val >= ONE else (val * top + t) >> 30
+        else:
+            q = min(val >> (30 - bits), top)
+        word |= q << shift
+    return word
+
+
+def _model(smooth, rgb, kind, func, ref, col, p, ct, d, rgb565=0, dither=0, x=0) -> int:
+    """One fragment's word as the reference chain forms it."""
+    if smooth:
+        c = []
+        for i in range(4):
+            acc = sum(col[k][i] * p[k] for k in range(3))
+            v = (abs(acc) + (1 << 29)) >> 30                 # frag_lerp3f: half away from zero
+            c.append(_clamp01(v if acc >= 0 else -v))
+    else:
+        c = [_clamp01(col[0][i]) for i in range(4)]
+    m = [(c[i] * ct[i] + (1 << 29)) >> 30 for i in range(4)]  # MODULATE, frag_mul
+    if rgb:
+        m[3] = c[3]
+    if not _compare(func, _to_unorm8(m[3]), ref):
+        return d
+    if rgb565:
+        cv = [_clamp01(v) for v in m]
+        if kind == 0:
+            return _pack565(m[:3], x, dither)
+        sa = cv[3]
+        dv = [(((((d >> sh) & top) << 31) // top) + 1) >> 1 for sh, top in ((11, 31), (5, 63), (0, 31))]
+        out = [((cv[i] * sa + (1 << 29)) >> 30) + ((dv[i] * (ONE - sa) + (1 << 29)) >> 30) for i in range(3)]
+        return _pack565(out, x, dither)
+    x = [_clamp01(v) for v in m]
+    dst = [(d >> (8 * i)) & 0xFF for i in range(4)]
+    dv = [(16843009 * b + 2) >> 2 for b in dst]              # frag_from_unorm(b, 255)
+    if kind == 0:
+        out = x
+    elif kind == 2:
+        out = [x[i] + dv[i] for i in range(4)]
+    else:
+        sa = x[3]
+        out = [((x[i] * sa + (1 << 29)) >> 30) + ((dv[i] * (ONE - sa) + (1 << 29)) >> 30) for i in range(4)]
+    return sum(_to_unorm8(v) << (8 * i) for i, v in enumerate(out))
+
+
+def _run(smooth, rgb, kind, func, ref, col, p, ct, dst, k, rgb565=0, dither=0, x0=0):
+    """The kernel's words at offsets k of dst, and its count of exact lanes."""
+    ctx = make_ctx("fixed", 1, 1)
+    ffi, lib = ctx._ffi, ctx._lib
+    n = len(k)
+    p = np.ascontiguousarray(p, dtype=np.int32).reshape(-1)
+    ct = np.ascontiguousarray(ct, dtype=np.int64).reshape(-1)
+    k = np.ascontiguousarray(k, dtype=np.uint8)
+    out = np.array(dst, dtype=np.uint16 if rgb565 else np.uint32)
+    exact = lib.gles_debug_modulate_write(
+        smooth, rgb, kind, func, ref, [int(v) for v in np.ravel(col)], n,
+        ffi.cast("uint8_t *", k.ctypes.data), ffi.cast("int32_t *", p.ctypes.data),
+        ffi.cast("int64_t *", ct.ctypes.data), rgb565, dither, x0, ffi.cast("void *", out.ctypes.data))
+    assert exact >= 0
+    return out, exact
+
+
+def _expect(smooth, rgb, kind, func, ref, col, p, ct, dst, k, rgb565=0, dither=0, x0=0):
+    out = np.array(dst, dtype=np.uint16 if rgb565 else np.uint32)
+    for j, off in enumerate(k):
+        pj = p[j] if smooth else None
+        x = x0 + int(off)
+        out[off] = _model(smooth, rgb, kind, func, ref, col, pj, ct[j], int(dst[off]), rgb565, dither, x)
+    return out
+
+
+def _texels(rng, n):
+    """0.30 texels as the samplers give them: frag_from_unorm of bytes,
+    bilinear blends of them, and the extremes."""
+    t = rng.integers(0, 256, (n, 4)) * 16843009 // 4
+    t[: n // 2] = rng.integers(0, ONE + 1, (n // 2, 4))
+    t[: min(n, 4)] = [0, ONE, ONE // 2, ONE - 1]
+    return t
+
+
+def _weights(rng, n):
+    """Barycentric weights (0.30) of points in the triangle, summing to 1,
+    and a few just outside (slightly negative)."""
+    w = rng.integers(0, ONE + 1, (n, 2))
+    w = np.sort(w, axis=1)
+    p = np.stack([w[:, 0], w[:, 1] - w[:, 0], ONE - w[:, 1]], axis=1)
+    p[: n // 8, 0] -= rng.integers(0, 1 << 12, n // 8)
+    p[: n // 8, 1] += rng.integers(0, 1 << 12, n // 8)
+    return p
+
+
+@pytest.mark.parametrize("kind", [0, 1, 2], ids=["none", "alpha", "add"])
+@pytest.mark.parametrize("rgb", [0, 1], ids=["rgba", "rgb"])
+@pytest.mark.parametrize("smooth", [0, 1], ids=["flat", "smooth"])
+def test_random_inputs_match_the_integer_model(smooth, rgb, kind):
+    rng = np.random.default_rng(100 + 6 * smooth + 3 * rgb + kind)
+    lanes = exact_total = 0
+    for trial in range(24):
+        n = int(rng.integers(1, 65))
+        col = rng.integers(0, ONE + 1, (3, 4))
+        if not smooth and trial % 4 == 0:
+            col = rng.integers(-ONE, 2 * ONE, (3, 4))       # a flat colour is clamped first
+        p = _weights(rng, n)
+        ct = _texels(rng, n)
+        dst = rng.integers(0, 1 << 32, 80, dtype=np.uint64).astype(np.uint32)
+        # adjacent offsets (one vector load), or gaps (gathers)
+        k = np.arange(n) if trial % 2 else np.sort(rng.choice(80, n, replace=False))
+        func = FUNCS[trial % len(FUNCS)] if trial % 3 else C.GL_ALWAYS
+        ref = int(rng.integers(0, 256))
+        out, exact = _run(smooth, rgb, kind, func, ref, col, p, ct, dst, k)
+        np.testing.assert_array_equal(out, _expect(smooth, rgb, kind, func, ref, col, p, ct, dst, k))
+        lanes += n - n % 8
+        exact_total += exact - n % 8
+    # the filter proves nearly every byte: each channel's margin is 2^-9 of
+    # a step either side of a boundary, about 0.4% of values
+    assert exact_total <= 0.05 * lanes
+
+
+@pytest.mark.parametrize("kind", [0, 1, 2], ids=["none", "alpha", "add"])
+def test_rounding_ties_and_their_neighbours(kind):
+    """Products at the ties of the final rounding: with a texel of 1, the
+    flat colour c passes MODULATE unchanged, so a channel's byte is
+    floor(255 c / 2^30 + 1/2), tied where 255 c = (b + 1/2) 2^30; c is put
+    there and up to 40 units of 2^-30 either side, in every channel, with
+    and without blending (kind 1 blends with a stored alpha that makes the
+    destination term vanish or not)."""
+    rng = np.random.default_rng(7 + kind)
+    total = 0
+    for b in list(range(0, 255, 7)) + [254]:
+        tie = ((2 * b + 1) * ONE + 509) // 510                # the least c with 255 c >= (b + 1/2) 2^30
+        for delta in range(-40, 41, 8):
+            c = min(max(tie + delta + int(rng.integers(0, 8)), 0), ONE)
+            col = np.array([[c, min(c + 1, ONE), max(c - 1, 0), ONE if kind != 1 else c]] * 3)
+            n = 16
+            ct = np.full((n, 4), ONE)
+            ct[8:] = rng.integers(ONE - 64, ONE + 1, (8, 4))
+            p = np.tile([ONE, 0, 0], (n, 1))
+            dst = rng.integers(0, 1 << 32, n, dtype=np.uint64).astype(np.uint32)
+            dst[:4] = 0
+            k = np.arange(n)
+            for smooth in (0, 1):
+                out, exact = _run(smooth, 0, kind, C.GL_ALWAYS, 0, col, p, ct, dst, k)
+                expect = _expect(smooth, 0, kind, C.GL_ALWAYS, 0, col, p, ct, dst, k)
+                np.testing.assert_array_equal(out, expect)
+                total += exact
+    assert total > 0          # the ties did reach the exact code
+
+
+def test_alpha_test_at_its_reference():
+    """The alpha test's 8-bit alpha at the reference and beside it, for
+    every function: its rounding is proved or left to the exact code as
+    the bytes' is."""
+    rng = np.random.default_rng(11)
+    for ref in (0, 1, 127, 128, 254, 255):
+        tie = ((2 * ref + 1) * ONE + 509) // 510
+        alphas = [min(max(tie + d, 0), ONE) for d in range(-24, 25, 3)]
+        alphas += [min(max((ref * ONE + 127) // 255 + d, 0), ONE) for d in (-2, 0, 2)]
+        n = len(alphas) - len(alphas) % 8
+        for func in FUNCS:
+            for kind in (0, 1, 2):
+                col = np.array([[ONE // 3, ONE // 2, ONE, ONE]] * 3)
+                ct = np.full((n, 4), ONE)
+                ct[:, 3] = alphas[:n]
+                p = np.tile([0, ONE, 0], (n, 1))
+                dst = rng.integers(0, 1 << 32, n, dtype=np.uint64).astype(np.uint32)
+                k = np.arange(n)
+                out, _ = _run(1, 0, kind, func, ref, col, p, ct, dst, k)
+                np.testing.assert_array_equal(out, _expect(1, 0, kind, func, ref, col, p, ct, dst, k))
+
+
+def test_texels_outside_the_unit_range_take_the_exact_code():
+    """A texel of 2^31 or more (no sampler makes one) sends its group of
+    eight to the exact code whole."""
+    rng = np.random.default_rng(13)
+    n = 16
+    col = rng.integers(0, ONE + 1, (3, 4))
+    p = _weights(rng, n)
+    ct = _texels(rng, n)
+    ct[3, 1] = 1 << 31
+    dst = rng.integers(0, 1 << 32, n, dtype=np.uint64).astype(np.uint32)
+    k = np.arange(n)
+    out, exact = _run(1, 0, 1, C.GL_ALWAYS, 0, col, p, ct, dst, k)
+    assert exact >= 8
+    np.testing.assert_array_equal(out, _expect(1, 0, 1, C.GL_ALWAYS, 0, col, p, ct, dst, k))
+
+
+@pytest.mark.parametrize("dither", [0, 1], ids=["msb", "dither"])
+@pytest.mark.parametrize("kind", [0, 1], ids=["none", "alpha"])
+@pytest.mark.parametrize("smooth", [0, 1], ids=["flat", "smooth"])
+def test_rgb565_matches_the_integer_model(smooth, kind, dither):
+    """The RGB565 writer's kernel: random inputs, and channels at the
+    boundaries of the 5- and 6-bit steps (with the dither thresholds of
+    each column, or the top bits) and beside them."""
+    rng = np.random.default_rng(200 + 4 * smooth + 2 * kind + dither)
+    lanes = exact_total = 0
+    for trial in range(24):
+        n = int(rng.integers(1, 65))
+        col = rng.integers(0, ONE + 1, (3, 4))
+        p = _weights(rng, n)
+        ct = _texels(rng, n)
+        if trial % 3 == 0:
+            # a flat colour on a step boundary: with a texel of 1 it is the
+            # channel's value; boundaries of y 31 + t and y 32 (and 63, 64)
+            top = int(rng.choice([31, 32, 63, 64]))
+            q, t = int(rng.integers(1, top)), int(rng.integers(0, 32))
+            edge = (q * 32 - (2 * t + 1 if top in (31, 63) else 0)) * ONE // (32 * top)
+            col[:] = [edge + int(rng.integers(-6, 7)) for _ in range(4)]
+            col = np.clip(col, 0, ONE)
+            ct[:] = ONE
+        dst = rng.integers(0, 1 << 16, 80).astype(np.uint16)
+        k = np.arange(n) if trial % 2 else np.sort(rng.choice(80, n, replace=False))
+        x0 = int(rng.integers(0, 8))
+        func = FUNCS[trial % len(FUNCS)] if trial % 3 == 1 else C.GL_ALWAYS
+        ref = int(rng.integers(0, 256))
+        out, exact = _run(smooth, 0, kind, func, ref, col, p, ct, dst, k, 1, dither, x0)
+        expect = _expect(smooth, 0, kind, func, ref, col, p, ct, dst, k, 1, dither, x0)
+        np.testing.assert_array_equal(out, expect)
+        if trial % 3:
+            lanes += n - n % 8
+            exact_total += exact - n % 8
+    assert exact_total <= 0.05 * lanes
