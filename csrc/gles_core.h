@@ -98,12 +98,13 @@ int gles_debug_color(int simd, int clamp, const int64_t col[12], int n, const in
 ** (alpha_func, GL_ALWAYS for none, against the 8-bit alpha_ref) and blend
 ** kind 0 (none), 1 (SRC_ALPHA, ONE_MINUS_SRC_ALPHA) or 2 (ONE, ONE, not on
 ** RGB565). dst holds uint32_t RGBA8888 words, or (rgb565 != 0) uint16_t
-** RGB565 words whose first is column x0, dithered when dither != 0.
-** Returns the fragments the float lanes left to the exact code, or -1
-** when not run. */
+** RGB565 words whose first is column x0, dithered when dither != 0. With
+** pad != 0 a tail of fewer than eight fragments is padded to a group as
+** the stage that samples in the kernel pads it. Returns the fragments the
+** float lanes left to the exact code, or -1 when not run. */
 int gles_debug_modulate_write(int smooth, int rgb, int kind, unsigned int alpha_func, uint32_t alpha_ref,
                               const int64_t col[12], int n, const uint8_t *k, const int32_t *p, const int64_t *ct,
-                              int rgb565, int dither, int x0, void *dst);
+                              int pad, int rgb565, int dither, int x0, void *dst);
 /* for tests, fixed build (0 elsewhere): a lane kernel of the vertex batch
 ** over n lanes (a multiple of 8, at most 64), through the AVX2 kernel where
 ** simd != 0 and the CPU has AVX2, else the scalar code; returns 1 when run.

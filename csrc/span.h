@@ -14,6 +14,10 @@
 /* the pixels a chunk holds: the chain cuts longer runs */
 #define SPAN_CHUNK 64
 
+/* what a fetch stage leaves: each unit's texels (b->ct), the texel as the
+** colour (b->c), or the coordinates only (a later stage samples) */
+enum { FETCH_TEXELS, FETCH_DIRECT, FETCH_COORDS };
+
 /* A screen-aligned rectangle of fragments whose inputs are constant but
 ** for the texture coordinates (DrawTex in drawtex.c, points in point.c):
 ** colour, depth and fog come from `in`; each enabled unit's coordinates

@@ -397,6 +397,92 @@ AVX2_INLINE void avx2_gather_pairs(const int *tx32, __m256i i, __m256i *left, __
     *right = _mm256_permute2x128_si256(a, b, 0x31);
 }
 
+/* the low and high dwords of the s and t of eight fragments' coordinates
+** c[0..7] (lane = fragment): four loads, two rounds of shuffles (which
+** leave the fragments in the order 0 2 4 6 | 1 3 5 7) and a permutation */
+AVX2_INLINE void avx2_load_st8(const TexCoord *c, __m256i *s_lo, __m256i *s_hi, __m256i *t_lo, __m256i *t_hi)
+{
+    const __m256 q0 = _mm256_loadu_ps((const float *)(const void *)&c[0]);   /* fragments 0 | 1 */
+    const __m256 q1 = _mm256_loadu_ps((const float *)(const void *)&c[2]);
+    const __m256 q2 = _mm256_loadu_ps((const float *)(const void *)&c[4]);
+    const __m256 q3 = _mm256_loadu_ps((const float *)(const void *)&c[6]);
+    /* s_lo t_lo of fragments 0 2 | 1 3, and their high dwords */
+    const __m256 lo01 = _mm256_shuffle_ps(q0, q1, _MM_SHUFFLE(2, 0, 2, 0));
+    const __m256 hi01 = _mm256_shuffle_ps(q0, q1, _MM_SHUFFLE(3, 1, 3, 1));
+    const __m256 lo23 = _mm256_shuffle_ps(q2, q3, _MM_SHUFFLE(2, 0, 2, 0));
+    const __m256 hi23 = _mm256_shuffle_ps(q2, q3, _MM_SHUFFLE(3, 1, 3, 1));
+    const __m256i order = _mm256_setr_epi32(0, 4, 1, 5, 2, 6, 3, 7);
+#define AVX2_PICK(x, y, m) _mm256_permutevar8x32_epi32(_mm256_castps_si256(_mm256_shuffle_ps(x, y, m)), order)
+    *s_lo = AVX2_PICK(lo01, lo23, _MM_SHUFFLE(2, 0, 2, 0));
+    *t_lo = AVX2_PICK(lo01, lo23, _MM_SHUFFLE(3, 1, 3, 1));
+    *s_hi = AVX2_PICK(hi01, hi23, _MM_SHUFFLE(2, 0, 2, 0));
+    *t_hi = AVX2_PICK(hi01, hi23, _MM_SHUFFLE(3, 1, 3, 1));
+#undef AVX2_PICK
+}
+
+/* avx2_linear_axis for eight coordinates in 32-bit lanes, from their low
+** (lo, the fraction in 0.32) and high (hi, the signed integer part)
+** dwords. With L = log2n and g = lo - 2^(31 - L) mod 2^32 (a borrow where
+** lo < 2^(31 - L)), s n - 1/2 = (hi - borrow) n + g 2^L / 2^32 exactly, so
+** i0 = floor of that is (hi - borrow) n + (g >> (32 - L)), and the weight
+** is bits 16..31 of g << L, the 64-bit form's bits. REPEAT keeps i0 mod n
+** (the top L bits of g alone); CLAMP_TO_EDGE first clamps s to [-1, 2] as
+** reduce_coord does (hi < -1 gives -1.0, hi >= 2 gives 2.0), then the
+** indices to [0, n - 1]. */
+AVX2_INLINE void avx2_linear_axis8(__m256i lo, __m256i hi, int log2n, int repeat, __m256i *i0, __m256i *i1,
+                                   __m256i *w)
+{
+    const __m128i to_index = _mm_cvtsi32_si128(32 - log2n), up = _mm_cvtsi32_si128(log2n);
+    const __m256i half = _mm256_set1_epi32((int)(0x80000000u >> log2n));
+    const int n = 1 << log2n;
+    if (repeat) {
+        const __m256i g = _mm256_sub_epi32(lo, half);
+        const __m256i mask = _mm256_set1_epi32(n - 1);
+        *i0 = _mm256_and_si256(_mm256_srl_epi32(g, to_index), mask);
+        *i1 = _mm256_and_si256(_mm256_add_epi32(*i0, _mm256_set1_epi32(1)), mask);
+        *w = _mm256_srli_epi32(_mm256_sll_epi32(g, up), 16);
+        return;
+    }
+    const __m256i below = _mm256_cmpgt_epi32(_mm256_set1_epi32(-1), hi);     /* s < -1 */
+    const __m256i above = _mm256_cmpgt_epi32(hi, _mm256_set1_epi32(1));      /* s >= 2 */
+    hi = _mm256_blendv_epi8(_mm256_blendv_epi8(hi, _mm256_set1_epi32(-1), below), _mm256_set1_epi32(2), above);
+    lo = _mm256_andnot_si256(_mm256_or_si256(below, above), lo);
+    const __m256i g = _mm256_sub_epi32(lo, half);
+    const __m256i sign = _mm256_set1_epi32(INT32_MIN);
+    const __m256i borrow = _mm256_cmpgt_epi32(_mm256_xor_si256(half, sign), _mm256_xor_si256(lo, sign));   /* -1 */
+    const __m256i ip = _mm256_add_epi32(_mm256_sll_epi32(_mm256_add_epi32(hi, borrow), up),
+                                        _mm256_srl_epi32(g, to_index));
+    const __m256i zero = _mm256_setzero_si256(), top = _mm256_set1_epi32(n - 1);
+    *i0 = _mm256_min_epi32(_mm256_max_epi32(ip, zero), top);
+    *i1 = _mm256_min_epi32(_mm256_max_epi32(_mm256_add_epi32(ip, _mm256_set1_epi32(1)), zero), top);
+    *w = _mm256_srli_epi32(_mm256_sll_epi32(g, up), 16);
+}
+
+/* the four texels and the weights of sample_level's GL_LINEAR for the
+** coordinates c[0..7] on a power-of-two level (2^log2w texels wide), REPEAT
+** or CLAMP_TO_EDGE on each axis: g[0..3] the texel words at (i0, j0),
+** (i1, j0), (i0, j1), (i1, j1), *a and *b the 16-bit weights along s and t */
+AVX2_INLINE void avx2_linear_texels8(const int *tx32, int log2w, int log2h, const TexCoord *c, int repeat_s,
+                                     int repeat_t, __m256i g[4], __m256i *a, __m256i *b)
+{
+    __m256i s_lo, s_hi, t_lo, t_hi, xa, xb, ya, yb;
+    avx2_load_st8(c, &s_lo, &s_hi, &t_lo, &t_hi);
+    avx2_linear_axis8(s_lo, s_hi, log2w, repeat_s, &xa, &xb, a);
+    avx2_linear_axis8(t_lo, t_hi, log2h, repeat_t, &ya, &yb, b);
+    const __m256i r0 = _mm256_slli_epi32(ya, log2w), r1 = _mm256_slli_epi32(yb, log2w);
+    if (_mm256_movemask_epi8(_mm256_cmpeq_epi32(xb, _mm256_add_epi32(xa, _mm256_set1_epi32(1)))) == -1) {
+        /* no lane wraps or clamps at the right edge: each row's two
+        ** texels are one 64-bit word, so gather half the elements */
+        avx2_gather_pairs(tx32, _mm256_add_epi32(r0, xa), &g[0], &g[1]);
+        avx2_gather_pairs(tx32, _mm256_add_epi32(r1, xa), &g[2], &g[3]);
+    } else {
+        g[0] = _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r0, xa), 4);
+        g[1] = _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r0, xb), 4);
+        g[2] = _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r1, xa), 4);
+        g[3] = _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r1, xb), 4);
+    }
+}
+
 /* sample_level's GL_LINEAR of a power-of-two level for fragments 0..n-1
 ** (n a multiple of 4), REPEAT or CLAMP_TO_EDGE on each axis: eight
 ** fragments at a time in 32-bit lanes (texels gathered, channels apart),
@@ -410,29 +496,8 @@ static inline void avx2_sample_linear(const TexImage *li, int n, const TexCoord 
     const __m256i one16 = _mm256_set1_epi32(65536);
     int j = 0;
     for (; j + 8 <= n; j += 8) {
-        __m128i x0[2], x1[2], wa[2], y0[2], y1[2], wb[2];
-        for (int h = 0; h < 2; h++) {
-            __m256i sv, tv;
-            avx2_load_st4(&c[j + 4 * h], &sv, &tv);
-            avx2_linear_axis(sv, log2w, repeat_s, &x0[h], &x1[h], &wa[h]);
-            avx2_linear_axis(tv, log2h, repeat_t, &y0[h], &y1[h], &wb[h]);
-        }
-#define AVX2_JOIN(v) _mm256_inserti128_si256(_mm256_castsi128_si256(v[0]), v[1], 1)
-        const __m256i xa = AVX2_JOIN(x0), xb = AVX2_JOIN(x1), a = AVX2_JOIN(wa), b = AVX2_JOIN(wb);
-        const __m256i r0 = _mm256_slli_epi32(AVX2_JOIN(y0), log2w), r1 = _mm256_slli_epi32(AVX2_JOIN(y1), log2w);
-#undef AVX2_JOIN
-        __m256i g[4];
-        if (_mm256_movemask_epi8(_mm256_cmpeq_epi32(xb, _mm256_add_epi32(xa, _mm256_set1_epi32(1)))) == -1) {
-            /* no lane wraps or clamps at the right edge: each row's two
-            ** texels are one 64-bit word, so gather half the elements */
-            avx2_gather_pairs(tx32, _mm256_add_epi32(r0, xa), &g[0], &g[1]);
-            avx2_gather_pairs(tx32, _mm256_add_epi32(r1, xa), &g[2], &g[3]);
-        } else {
-            g[0] = _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r0, xa), 4);
-            g[1] = _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r0, xb), 4);
-            g[2] = _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r1, xa), 4);
-            g[3] = _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r1, xb), 4);
-        }
+        __m256i g[4], a, b;
+        avx2_linear_texels8(tx32, log2w, log2h, &c[j], repeat_s, repeat_t, g, &a, &b);
         const __m256i ia = _mm256_sub_epi32(one16, a), ib = _mm256_sub_epi32(one16, b);
         __m256i ch[4];
         for (int k = 0; k < 4; k++)
@@ -1672,6 +1737,15 @@ typedef struct Avx2ModWrite {
     int dither;
     FRAGV t_row[4];              /* 0.30 (1/2 without dither) */
     __m256 t_row_f;              /* t_row twice, as floats (0 without dither: the top bits are kept) */
+    int replace;                 /* the texel is the colour (a lone REPLACE unit of an RGBA texture) */
+    /* the texture where the kernel samples it (avx2_modwrite_run's
+    ** source 1): its level 0, wrap modes, and the span sampler that gives
+    ** the exact texel of a fragment left to the exact code */
+    const Texture *tex;
+    TexSpanSampler sampler;
+    const FRAGV *unorm8;
+    const int *tx32;
+    int log2w, log2h, repeat_s, repeat_t;
 } Avx2ModWrite;
 
 /* setup for vertex colours a[0..2] in [0, 2^30] (smooth), or the flat
@@ -1692,6 +1766,28 @@ static inline void avx2_modwrite_setup(Avx2ModWrite *m, const FRAGV *const a[3],
             m->col[i][c] = _mm256_set1_ps((float)((double)v * (smooth ? 0x1p-60 : 0x1p-30)));
         }
     m->dither = 0;
+    m->replace = 0;
+    m->tex = NULL;
+}
+
+/* the texel as the colour (REPLACE) instead of MODULATE */
+static inline void avx2_modwrite_replace(Avx2ModWrite *m) { m->replace = 1, m->rgb = 0; }
+
+/* sampling in the kernel: level 0 of t, GL_LINEAR, power-of-two sizes and
+** REPEAT or CLAMP_TO_EDGE on each axis (texture_span_sample_group 8); the
+** exact texel from `sampler` */
+static inline void avx2_modwrite_texture(Avx2ModWrite *m, const Texture *t, TexSpanSampler sampler,
+                                         const FRAGV *unorm8)
+{
+    const TexImage *l0 = &t->level[0];
+    m->tex = t;
+    m->sampler = sampler;
+    m->unorm8 = unorm8;
+    m->tx32 = (const int *)(const void *)l0->texels;
+    m->log2w = __builtin_ctz((unsigned)l0->width);
+    m->log2h = __builtin_ctz((unsigned)l0->height);
+    m->repeat_s = t->wrap_s == GL_REPEAT;
+    m->repeat_t = t->wrap_t == GL_REPEAT;
 }
 
 /* the RGB565 writer's thresholds t_row[x & 3] (dither_row's) */
@@ -1729,41 +1825,80 @@ AVX2_INLINE __m256i avx2_floor_proved_upto(__m256 z, float top, __m256 *bad)
     return q;
 }
 
-/* the source colour of eight fragments (weights p[0..7], texels ct + k
-** stride) after MODULATE, clamped to [0, 1], as floats y[0..3]; the alpha
-** test's outcome in *pass, the lanes not proved in *bad; 0 (nothing
-** done) when a texel leaves [0, 2^31) */
-AVX2_INLINE int avx2_modwrite_source8(const Avx2ModWrite *m, int smooth, const WGT (*p)[3], const FRAGV *ct,
-                                      size_t stride, __m256 y[4], __m256i *pass, __m256 *bad)
+/* eight fragments' texels ct + k stride (0.30) as floats T[0..3] (exact
+** but for the conversion's rounding); 0 when a texel leaves [0, 2^31) */
+AVX2_INLINE int avx2_texels_ct8(const FRAGV *ct, size_t stride, __m256 T[4])
 {
     __m256i ch[4];
     if (!avx2_channels8(ct, stride, ch))
         return 0;
-    const __m256 zero = _mm256_setzero_ps(), one = _mm256_set1_ps(1.0f);
-    __m256 c[4];
-    *bad = zero;
-    if (smooth) {
-        __m256i wi[3];
-        avx2_wgt_lanes8(p, wi);
-        const __m256 sign = _mm256_set1_ps(-0.0f);
-        const __m256 w0 = _mm256_cvtepi32_ps(wi[0]), w1 = _mm256_cvtepi32_ps(wi[1]), w2 = _mm256_cvtepi32_ps(wi[2]);
-        const __m256 mag = _mm256_add_ps(_mm256_add_ps(_mm256_andnot_ps(sign, w0), _mm256_andnot_ps(sign, w1)),
-                                         _mm256_andnot_ps(sign, w2));
-        *bad = _mm256_cmp_ps(mag, _mm256_set1_ps(0x1.02p30f), _CMP_GT_OQ);
-        for (int i = 0; i < 4; i++) {
-            const __m256 s = _mm256_add_ps(_mm256_mul_ps(m->col[0][i], w0),
-                                           _mm256_add_ps(_mm256_mul_ps(m->col[1][i], w1), _mm256_mul_ps(m->col[2][i], w2)));
-            c[i] = _mm256_min_ps(_mm256_max_ps(s, zero), one);
-        }
-    } else {
-        for (int i = 0; i < 4; i++)
-            c[i] = m->col[0][i];
-    }
-    const __m256 scale = _mm256_set1_ps(0x1p-30f);
     for (int i = 0; i < 4; i++)
-        y[i] = _mm256_min_ps(_mm256_mul_ps(c[i], _mm256_mul_ps(_mm256_cvtepi32_ps(ch[i]), scale)), one);
-    if (m->rgb)
-        y[3] = c[3];
+        T[i] = _mm256_mul_ps(_mm256_cvtepi32_ps(ch[i]), _mm256_set1_ps(0x1p-30f));
+    return 1;
+}
+
+/* the bilinear texels of avx2_linear_texels8's words g and weights a, b as
+** floats T[0..3]: h0 = c00 (2^16 - a) + c10 a and h1 (integers below 2^24,
+** exact in float), then (h0 (2^16 - b) + h1 b) / (255 2^32) with the
+** factors' (2^16 - b) / (255 2^32) and b / (255 2^32) rounded: within 4u of
+** the value, and within 4.02u of frag_bilerp_rgba8's 0.30 texel */
+AVX2_INLINE void avx2_bilerp8_float(const __m256i g[4], __m256i a, __m256i b, __m256 T[4])
+{
+    const __m256i one16 = _mm256_set1_epi32(65536);
+    const __m256 af = _mm256_cvtepi32_ps(a), iaf = _mm256_cvtepi32_ps(_mm256_sub_epi32(one16, a));
+    const __m256 k = _mm256_set1_ps((float)(1.0 / (255.0 * 4294967296.0)));
+    const __m256 bk = _mm256_mul_ps(_mm256_cvtepi32_ps(b), k);
+    const __m256 ibk = _mm256_mul_ps(_mm256_cvtepi32_ps(_mm256_sub_epi32(one16, b)), k);
+    for (int i = 0; i < 4; i++) {
+        /* byte i of every dword, zero-extended */
+        const __m256i pick = _mm256_setr_epi8(i, -1, -1, -1, 4 + i, -1, -1, -1, 8 + i, -1, -1, -1, 12 + i, -1, -1, -1,
+                                              i, -1, -1, -1, 4 + i, -1, -1, -1, 8 + i, -1, -1, -1, 12 + i, -1, -1, -1);
+        __m256 c[4];
+        for (int q = 0; q < 4; q++)
+            c[q] = _mm256_cvtepi32_ps(_mm256_shuffle_epi8(g[q], pick));
+        const __m256 h0 = _mm256_add_ps(_mm256_mul_ps(c[0], iaf), _mm256_mul_ps(c[1], af));
+        const __m256 h1 = _mm256_add_ps(_mm256_mul_ps(c[2], iaf), _mm256_mul_ps(c[3], af));
+        T[i] = _mm256_add_ps(_mm256_mul_ps(h0, ibk), _mm256_mul_ps(h1, bk));
+    }
+}
+
+/* the source colour of eight fragments (weights p[0..7], texels T) after
+** MODULATE (or the texel, for REPLACE), clamped to [0, 1], as floats
+** y[0..3]; the alpha test's outcome in *pass, the lanes not proved in *bad */
+AVX2_INLINE void avx2_modwrite_source8(const Avx2ModWrite *m, int smooth, const WGT (*p)[3], const __m256 T[4],
+                                       __m256 y[4], __m256i *pass, __m256 *bad)
+{
+    const __m256 zero = _mm256_setzero_ps(), one = _mm256_set1_ps(1.0f);
+    *bad = zero;
+    if (m->replace) {
+        for (int i = 0; i < 4; i++)
+            y[i] = _mm256_min_ps(T[i], one);
+    } else {
+        __m256 c[4];
+        if (smooth) {
+            __m256i wi[3];
+            avx2_wgt_lanes8(p, wi);
+            const __m256 sign = _mm256_set1_ps(-0.0f);
+            const __m256 w0 = _mm256_cvtepi32_ps(wi[0]), w1 = _mm256_cvtepi32_ps(wi[1]);
+            const __m256 w2 = _mm256_cvtepi32_ps(wi[2]);
+            const __m256 mag = _mm256_add_ps(_mm256_add_ps(_mm256_andnot_ps(sign, w0), _mm256_andnot_ps(sign, w1)),
+                                             _mm256_andnot_ps(sign, w2));
+            *bad = _mm256_cmp_ps(mag, _mm256_set1_ps(0x1.02p30f), _CMP_GT_OQ);
+            for (int i = 0; i < 4; i++) {
+                const __m256 sum = _mm256_add_ps(_mm256_mul_ps(m->col[0][i], w0),
+                                                 _mm256_add_ps(_mm256_mul_ps(m->col[1][i], w1),
+                                                               _mm256_mul_ps(m->col[2][i], w2)));
+                c[i] = _mm256_min_ps(_mm256_max_ps(sum, zero), one);
+            }
+        } else {
+            for (int i = 0; i < 4; i++)
+                c[i] = m->col[0][i];
+        }
+        for (int i = 0; i < 4; i++)
+            y[i] = _mm256_min_ps(_mm256_mul_ps(c[i], T[i]), one);
+        if (m->rgb)
+            y[3] = c[3];
+    }
     *pass = _mm256_set1_epi32(-1);
     if (m->alpha_test) {
         /* fragment_alpha8 of the alpha, proved as the bytes are */
@@ -1771,22 +1906,18 @@ AVX2_INLINE int avx2_modwrite_source8(const Avx2ModWrite *m, int smooth, const W
                                                            _mm256_set1_ps(0.5f)), bad);
         *pass = avx2_cmp_i32(&m->alpha_cmp, a8, m->alpha_ref_v);
     }
-    return 1;
 }
 
 /* the words written over d (eight stored RGBA8888 words) by eight
 ** fragments (as avx2_modwrite_source8), into *out; returns the lanes
 ** (bits) the float lanes do not prove (their words in *out are not the
-** chain's), or 0xFF when a texel leaves [0, 2^31) */
-AVX2_INLINE unsigned avx2_modwrite8(const Avx2ModWrite *m, int smooth, int kind, const WGT (*p)[3], const FRAGV *ct,
-                                    size_t stride, __m256i d, __m256i *out)
+** chain's) */
+AVX2_INLINE unsigned avx2_modwrite8(const Avx2ModWrite *m, int smooth, int kind, const WGT (*p)[3], const __m256 T[4],
+                                    __m256i d, __m256i *out)
 {
     __m256 y[4], bad;
     __m256i pass;
-    if (!avx2_modwrite_source8(m, smooth, p, ct, stride, y, &pass, &bad)) {
-        *out = d;
-        return 0xFFu;
-    }
+    avx2_modwrite_source8(m, smooth, p, T, y, &pass, &bad);
     const __m256 one = _mm256_set1_ps(1.0f);
     if (kind) {
         const __m256i byte = _mm256_set1_epi32(0xFF);
@@ -1815,14 +1946,11 @@ AVX2_INLINE unsigned avx2_modwrite8(const Avx2ModWrite *m, int smooth, int kind,
 /* the same over eight stored RGB565 words d (32-bit lanes) for blend kind
 ** 0 or 1, the thresholds' lanes of x & 3 given (x3: 0..3 per lane) */
 AVX2_INLINE unsigned avx2_modwrite565_8(const Avx2ModWrite *m, int smooth, int kind, const WGT (*p)[3],
-                                        const FRAGV *ct, size_t stride, __m256i d, __m256i x3, __m256i *out)
+                                        const __m256 T[4], __m256i d, __m256i x3, __m256i *out)
 {
     __m256 y[4], bad;
     __m256i pass;
-    if (!avx2_modwrite_source8(m, smooth, p, ct, stride, y, &pass, &bad)) {
-        *out = d;
-        return 0xFFu;
-    }
+    avx2_modwrite_source8(m, smooth, p, T, y, &pass, &bad);
     static const int shift[3] = { 11, 5, 0 }, bits[3] = { 5, 6, 5 };
     if (kind) {
         const __m256 b = _mm256_sub_ps(_mm256_set1_ps(1.0f), y[3]), a = y[3];
@@ -1850,14 +1978,18 @@ AVX2_INLINE unsigned avx2_modwrite565_8(const Avx2ModWrite *m, int smooth, int k
 
 /* the exact chain's source colour for one fragment (stage_color_modulate):
 ** colour a[0..2] at weights p (smooth) or the flat colour a[0], texel ct
-** (in [0, 2^31)); 0 when it fails the alpha test */
+** (in [0, 2^31)), or the texel (REPLACE); 0 when it fails the alpha test */
 AVX2_INLINE int avx2_modwrite_source1(const Avx2ModWrite *m, const FRAGV *const a[3], int smooth, const WGT *p,
                                       const FRAGV *ct, V4 *out)
 {
-    const V4 c = smooth ? v4_lerp3f_clamp01(v4_load(a[0]), v4_load(a[1]), v4_load(a[2]), p) : v4_clamp01(v4_load(a[0]));
-    V4 mm = v4_mul01(c, v4_load(ct));
-    if (m->rgb)
-        mm = v4_keep_alpha(mm, c);
+    V4 mm = v4_load(ct);
+    if (!m->replace) {
+        const V4 c = smooth ? v4_lerp3f_clamp01(v4_load(a[0]), v4_load(a[1]), v4_load(a[2]), p)
+                            : v4_clamp01(v4_load(a[0]));
+        mm = v4_mul01(c, mm);
+        if (m->rgb)
+            mm = v4_keep_alpha(mm, c);
+    }
     *out = mm;
     FRAGV ch[4];
     v4_store(ch, mm);
@@ -1890,21 +2022,94 @@ AVX2_INLINE uint32_t avx2_modwrite565_1(const Avx2ModWrite *m, const FRAGV *cons
     return v4_pack565(v4_add(v4_mul01(cv, va), v4_mul01(v4_rgb0(dv), v4_one_minus(va))), m->dither, t_d);
 }
 
-/* the kernel over fragments 0..n-1 at the offsets k of dst (ascending):
-** weights p, texels ct + j stride; eight at a time, the rest exactly */
-AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *m, const FRAGV *const a[3], int smooth, int kind, int n,
-                                   const uint8_t *k, const WGT (*p)[3], const FRAGV *ct, size_t stride, uint32_t *dst)
+/* pads fragments 0..n-1 (offsets k, weights p when smooth, coordinates tc
+** and texels ct + j stride where given) to a whole group of eight with
+** copies of the last one, in the free slots past n; returns the padded
+** count. A copy computes the last fragment's word again from the same
+** stored word, so writing it writes that word again. */
+static inline int avx2_modwrite_pad(int n, uint8_t *k, WGT (*p)[3], int smooth, TexCoord *tc, FRAGV *ct,
+                                    size_t stride)
 {
+    for (; n % 8; n++) {
+        k[n] = k[n - 1];
+        if (smooth)
+            memcpy(p[n], p[n - 1], sizeof p[n]);
+        if (tc)
+            tc[n] = tc[n - 1];
+        if (ct)
+            memcpy(ct + (size_t)n * stride, ct + (size_t)(n - 1) * stride, 4 * sizeof *ct);
+    }
+    return n;
+}
+
+/* eight fragments' texels from source 0 (the texels ct + k stride that a
+** fetch stage sampled) or 1 (sampled here at the coordinates tc[0..7]);
+** 0 when source 0 has a texel outside [0, 2^31) */
+AVX2_INLINE int avx2_modwrite_texels8(const Avx2ModWrite *m, int src, const FRAGV *ct, size_t stride,
+                                      const TexCoord *tc, __m256 T[4])
+{
+    if (src == 0)
+        return avx2_texels_ct8(ct, stride, T);
+    __m256i g[4], a, b;
+    avx2_linear_texels8(m->tx32, m->log2w, m->log2h, tc, m->repeat_s, m->repeat_t, g, &a, &b);
+    avx2_bilerp8_float(g, a, b, T);
+    return 1;
+}
+
+/* the exact texel of one fragment: ct (source 0), or from the sampler at tc */
+AVX2_INLINE const FRAGV *avx2_modwrite_texel1(const Avx2ModWrite *m, int src, const FRAGV *ct, const TexCoord *tc,
+                                              FRAGV tmp[4])
+{
+    if (src == 0)
+        return ct;
+    m->sampler(m->tex, 1, tc, tc, tc, tmp, 4, m->unorm8);
+    return tmp;
+}
+
+/* the kernel over fragments 0..n-1 at the offsets k of dst (RGBA8888
+** words, or RGB565 words whose first is column x0): weights p, texels
+** from source src (ct + j stride, or sampled at tc[j]); eight at a time,
+** the rest exactly. The first `live` offsets ascend; slots from there to
+** n repeat the last live fragment (a padded group). */
+AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *m, const FRAGV *const a[3], int smooth, int kind, int src,
+                                   int rgb565, int n, int live, const uint8_t *k, int x0, const WGT (*p)[3],
+                                   const FRAGV *ct, size_t stride, const TexCoord *tc, void *dst,
+                                   const FRAGV unorm5[32], const FRAGV unorm6[64])
+{
+    uint32_t *dst32 = dst;
+    uint16_t *dst16 = dst;
+    FRAGV tmp[4];
+#define MODWRITE_EXACT(i, d) \
+    (rgb565 ? avx2_modwrite565_1(m, a, smooth, kind, p[i], avx2_modwrite_texel1(m, src, ct + (size_t)(i) * stride, \
+                                                                                tc + (i), tmp), \
+                                 d, x0 + k[i], unorm5, unorm6) \
+            : avx2_modwrite1(m, a, smooth, kind, p[i], \
+                             avx2_modwrite_texel1(m, src, ct + (size_t)(i) * stride, tc + (i), tmp), d))
     int j = 0;
     for (; j + 8 <= n; j += 8) {
-        const int run = k[j + 7] == k[j] + 7;
+        /* eight neighbouring pixels (a padded group never is) */
+        const int run = j + 8 <= live && k[j + 7] == k[j] + 7;
         const __m256i idx = _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)&k[j]));
         /* the stored words, where the blend or the alpha test reads them */
-        const __m256i d = !kind && !m->alpha_test ? _mm256_setzero_si256()
-                        : run ? _mm256_loadu_si256((const __m256i *)(const void *)&dst[k[j]])
-                              : _mm256_i32gather_epi32((const int *)(const void *)dst, idx, 4);
-        __m256i w;
-        const unsigned bad = avx2_modwrite8(m, smooth, kind, &p[j], ct + (size_t)j * stride, stride, d, &w);
+        __m256i d;
+        if (rgb565) {
+            uint16_t w16[8];
+            for (int i = 0; i < 8; i++)
+                w16[i] = dst16[k[j + i]];
+            d = _mm256_cvtepu16_epi32(_mm_loadu_si128((const __m128i *)(const void *)w16));
+        } else {
+            d = !kind && !m->alpha_test ? _mm256_setzero_si256()
+              : run ? _mm256_loadu_si256((const __m256i *)(const void *)&dst32[k[j]])
+                    : _mm256_i32gather_epi32((const int *)(const void *)dst32, idx, 4);
+        }
+        __m256 T[4];
+        __m256i w = d;
+        unsigned bad = 0xFFu;
+        if (avx2_modwrite_texels8(m, src, ct + (size_t)j * stride, stride, tc + j, T)) {
+            const __m256i x3 = _mm256_and_si256(_mm256_add_epi32(idx, _mm256_set1_epi32(x0)), _mm256_set1_epi32(3));
+            bad = rgb565 ? avx2_modwrite565_8(m, smooth, kind, &p[j], T, d, x3, &w)
+                         : avx2_modwrite8(m, smooth, kind, &p[j], T, d, &w);
+        }
         uint32_t words[8];
         _mm256_storeu_si256((__m256i *)(void *)words, w);
         if (bad) {
@@ -1912,59 +2117,48 @@ AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *m, const FRAGV *const a[3
             _mm256_storeu_si256((__m256i *)(void *)before, d);
             for (int i = 0; i < 8; i++)
                 if (bad >> i & 1u)
-                    words[i] = avx2_modwrite1(m, a, smooth, kind, p[j + i], ct + (size_t)(j + i) * stride, before[i]);
+                    words[i] = MODWRITE_EXACT(j + i, before[i]);
         }
-        if (run)
-            memcpy(&dst[k[j]], words, sizeof words);
+        if (rgb565)
+            for (int i = 0; i < 8; i++)
+                dst16[k[j + i]] = (uint16_t)words[i];
+        else if (run)
+            memcpy(&dst32[k[j]], words, sizeof words);
         else
             for (int i = 0; i < 8; i++)
-                dst[k[j + i]] = words[i];
+                dst32[k[j + i]] = words[i];
     }
-    for (; j < n; j++)
-        dst[k[j]] = avx2_modwrite1(m, a, smooth, kind, p[j], ct + (size_t)j * stride, dst[k[j]]);
+    for (; j < n; j++) {
+        if (rgb565)
+            dst16[k[j]] = (uint16_t)MODWRITE_EXACT(j, dst16[k[j]]);
+        else
+            dst32[k[j]] = MODWRITE_EXACT(j, dst32[k[j]]);
+    }
+#undef MODWRITE_EXACT
 }
 
-/* the same over RGB565 words, the fragments' columns x0 + k */
-AVX2_INLINE void avx2_modwrite565_run(const Avx2ModWrite *m, const FRAGV *const a[3], int smooth, int kind, int n,
-                                      const uint8_t *k, int x0, const WGT (*p)[3], const FRAGV *ct, size_t stride,
-                                      uint16_t *dst, const FRAGV unorm5[32], const FRAGV unorm6[64])
+/* avx2_modwrite_run with the colour's interpolation (m->smooth), the blend
+** (m->kind) and the target fixed per instance */
+static inline void avx2_modwrite_dispatch(const Avx2ModWrite *m, const FRAGV *const a[3], int src, int rgb565, int n,
+                                          int live, const uint8_t *k, int x0, const WGT (*p)[3], const FRAGV *ct,
+                                          size_t stride, const TexCoord *tc, void *dst, const FRAGV unorm5[32],
+                                          const FRAGV unorm6[64])
 {
-    int j = 0;
-    for (; j + 8 <= n; j += 8) {
-        const int run = k[j + 7] == k[j] + 7;
-        const __m256i idx = _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)&k[j]));
-        const __m256i x3 = _mm256_and_si256(_mm256_add_epi32(idx, _mm256_set1_epi32(x0)), _mm256_set1_epi32(3));
-        uint16_t before[8];
-        if (run)
-            memcpy(before, &dst[k[j]], sizeof before);
-        else
-            for (int i = 0; i < 8; i++)
-                before[i] = dst[k[j + i]];
-        const __m256i d = _mm256_cvtepu16_epi32(_mm_loadu_si128((const __m128i *)(const void *)before));
-        __m256i w;
-        const unsigned bad = avx2_modwrite565_8(m, smooth, kind, &p[j], ct + (size_t)j * stride, stride, d, x3, &w);
-        /* the low halves of the eight dwords */
-        const __m256i h = _mm256_shuffle_epi8(w, _mm256_setr_epi8(0, 1, 4, 5, 8, 9, 12, 13, -1, -1, -1, -1, -1, -1, -1,
-                                                                  -1, 0, 1, 4, 5, 8, 9, 12, 13, -1, -1, -1, -1, -1, -1,
-                                                                  -1, -1));
-        uint16_t words[8];
-        _mm_storeu_si128((__m128i *)(void *)words,
-                         _mm_unpacklo_epi64(_mm256_castsi256_si128(h), _mm256_extracti128_si256(h, 1)));
-        if (bad)
-            for (int i = 0; i < 8; i++)
-                if (bad >> i & 1u)
-                    words[i] = (uint16_t)avx2_modwrite565_1(m, a, smooth, kind, p[j + i],
-                                                            ct + (size_t)(j + i) * stride, before[i], x0 + k[j + i],
-                                                            unorm5, unorm6);
-        if (run)
-            memcpy(&dst[k[j]], words, sizeof words);
-        else
-            for (int i = 0; i < 8; i++)
-                dst[k[j + i]] = words[i];
+#define MODWRITE(S, K, F) avx2_modwrite_run(m, a, S, K, src, F, n, live, k, x0, p, ct, stride, tc, dst, unorm5, unorm6)
+    switch ((rgb565 ? 6 : 0) + (m->smooth ? 3 : 0) + m->kind) {
+    case 0: MODWRITE(0, 0, 0); break;
+    case 1: MODWRITE(0, 1, 0); break;
+    case 2: MODWRITE(0, 2, 0); break;
+    case 3: MODWRITE(1, 0, 0); break;
+    case 4: MODWRITE(1, 1, 0); break;
+    case 5: MODWRITE(1, 2, 0); break;
+    case 6: MODWRITE(0, 0, 1); break;
+    case 7: MODWRITE(0, 1, 1); break;
+    case 9: MODWRITE(1, 0, 1); break;
+    case 10: MODWRITE(1, 1, 1); break;
+    default: break;    /* RGB565 takes blend kinds 0 and 1 only */
     }
-    for (; j < n; j++)
-        dst[k[j]] = (uint16_t)avx2_modwrite565_1(m, a, smooth, kind, p[j], ct + (size_t)j * stride, dst[k[j]],
-                                                 x0 + k[j], unorm5, unorm6);
+#undef MODWRITE
 }
 /* }==================================================================== */
 #endif

@@ -68,7 +68,8 @@ typedef struct ChainStages {
     SpanStage write, write_rgba8, write_rgba8_alpha, write_rgba8_add, write_rgba8_logic, write_rgba8_masked;
     SpanStage write_565, write_565_alpha;
     SpanStage rect_source;
-    SpanStage modulate_write;   /* the fixed build's AVX2 instance only, else NULL */
+    SpanStage coords[GLES_MAX_TEXTURE_UNITS], coords_rect[GLES_MAX_TEXTURE_UNITS];
+    SpanStage modulate_write, sample_write;   /* the fixed build's AVX2 instance only, else NULL */
 } ChainStages;
 
 /* the baseline instance */
@@ -113,11 +114,21 @@ static void debug_color_avx2(int clamp, const FRAGV *const col[3], int n, const 
 }
 /* gles_debug_modulate_write's kernel run, with the count of the lanes
 ** the kernel leaves to the exact code, group by group */
-static int debug_modulate_write_avx2(const Avx2ModWrite *m, const FRAGV *const a[3], int n, const uint8_t *k,
-                                     const WGT (*p)[3], const FRAGV *ct, int rgb565, int x0, void *dst,
-                                     const FRAGV unorm5[32], const FRAGV unorm6[64])
+static int debug_modulate_write_avx2(const Avx2ModWrite *m, const FRAGV *const a[3], int n, const uint8_t *k_in,
+                                     const WGT (*p_in)[3], const FRAGV *ct_in, int pad, int rgb565, int x0,
+                                     void *dst, const FRAGV unorm5[32], const FRAGV unorm6[64])
 {
     const int smooth = m->smooth, kind = m->kind;
+    /* copies with room for the padded group, as the stage pads its chunk */
+    uint8_t k[SPAN_CHUNK];
+    WGT p[SPAN_CHUNK][3];
+    FRAGV ct[SPAN_CHUNK][4];
+    memcpy(k, k_in, (size_t)n);
+    memcpy(p, p_in, (size_t)n * sizeof p[0]);
+    memcpy(ct, ct_in, (size_t)n * sizeof ct[0]);
+    const int live = n;
+    if (pad && n > 0)
+        n = avx2_modwrite_pad(n, k, p, smooth, NULL, ct[0], 4);
     int exact = n % 8;
     for (int j = 0; j + 8 <= n; j += 8) {
         uint32_t d[8];
@@ -129,21 +140,15 @@ static int debug_modulate_write_avx2(const Avx2ModWrite *m, const FRAGV *const a
                              _mm256_set1_epi32(x0)),
             _mm256_set1_epi32(3));
         __m256i w;
-        exact += __builtin_popcount(rgb565 ? avx2_modwrite565_8(m, smooth, kind, &p[j], ct + 4 * (size_t)j, 4, dv, x3, &w)
-                                           : avx2_modwrite8(m, smooth, kind, &p[j], ct + 4 * (size_t)j, 4, dv, &w));
+        __m256 T[4];
+        if (!avx2_texels_ct8(ct[j], 4, T))
+            exact += 8;
+        else
+            exact += __builtin_popcount(rgb565 ? avx2_modwrite565_8(m, smooth, kind, (const WGT (*)[3])&p[j], T, dv, x3, &w)
+                                               : avx2_modwrite8(m, smooth, kind, (const WGT (*)[3])&p[j], T, dv, &w));
     }
-#define DEBUG_RUN(S, K) \
-    (rgb565 ? avx2_modwrite565_run(m, a, S, K, n, k, x0, p, ct, 4, dst, unorm5, unorm6) \
-            : avx2_modwrite_run(m, a, S, K, n, k, p, ct, 4, dst))
-    switch (smooth * 3 + kind) {
-    case 0: DEBUG_RUN(0, 0); break;
-    case 1: DEBUG_RUN(0, 1); break;
-    case 2: DEBUG_RUN(0, 2); break;
-    case 3: DEBUG_RUN(1, 0); break;
-    case 4: DEBUG_RUN(1, 1); break;
-    default: DEBUG_RUN(1, 2); break;
-    }
-#undef DEBUG_RUN
+    const TexCoord tc[SPAN_CHUNK] = { { 0, 0 } };   /* source 0 reads no coordinates */
+    avx2_modwrite_dispatch(m, a, 0, rgb565, n, live, k, x0, (const WGT (*)[3])p, ct[0], 4, tc, dst, unorm5, unorm6);
     return exact;
 }
 #endif
@@ -152,7 +157,7 @@ static int debug_modulate_write_avx2(const Avx2ModWrite *m, const FRAGV *const a
 
 int gles_debug_modulate_write(int smooth, int rgb, int kind, unsigned int alpha_func, uint32_t alpha_ref,
                               const int64_t col[12], int n, const uint8_t *k, const int32_t *p, const int64_t *ct,
-                              int rgb565, int dither, int x0, void *dst)
+                              int pad, int rgb565, int dither, int x0, void *dst)
 {
 #if SIMD_X86 && NUM_IS_FIXED
     if (n < 0 || n > SPAN_CHUNK || kind < 0 || kind > (rgb565 ? 1 : 2) || x0 < 0 || simd_detect() < SIMD_AVX2)
@@ -172,10 +177,11 @@ int gles_debug_modulate_write(int smooth, int rgb, int kind, unsigned int alpha_
             unorm5[d] = frag_from_unorm(d, 31);
         unorm6[d] = frag_from_unorm(d, 63);
     }
-    return debug_modulate_write_avx2(&m, a, n, k, (const WGT (*)[3])p, ct, rgb565 != 0, x0, dst, unorm5, unorm6);
+    return debug_modulate_write_avx2(&m, a, n, k, (const WGT (*)[3])p, ct, pad, rgb565 != 0, x0, dst, unorm5,
+                                     unorm6);
 #else
     (void)smooth, (void)rgb, (void)kind, (void)alpha_func, (void)alpha_ref, (void)col, (void)n, (void)k, (void)p,
-        (void)ct, (void)rgb565, (void)dither, (void)x0, (void)dst;
+        (void)ct, (void)pad, (void)rgb565, (void)dither, (void)x0, (void)dst;
     return -1;
 #endif
 }
@@ -343,12 +349,17 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     ** one stage, where the instance has it (stage_modulate_write) */
     const int plain565 = ctx->color_format == GLES_COLOR_RGB565 && ctx->color_mask[0] && ctx->color_mask[1]
                       && ctx->color_mask[2];
-    const int modulate_write = first_modulates && lone == first && !ctx->fog && !(ctx->alpha_test && tests)
-                            && ((plain && bk >= 0) || (plain565 && (bk == 0 || bk == 1))) && !ctx->color_logic_op
-                            && cs->modulate_write != NULL;
+    const int writes_fused = lone >= 0 && !ctx->fog && !(ctx->alpha_test && tests)
+                          && ((plain && bk >= 0) || (plain565 && (bk == 0 || bk == 1))) && !ctx->color_logic_op
+                          && cs->modulate_write != NULL;
+    const int modulate_write = writes_fused && first_modulates;
+    /* ... sampling too where the unit's sampler is the bilinear kernel of
+    ** eight lanes (stage_sample_write), and then also for a lone REPLACE
+    ** unit of an RGBA texture */
+    const int sample_write = writes_fused && (first_modulates || direct) && ctx->sample_group[lone] == 8;
     /* a rectangle's colour and window depth; that stage reads the colour
     ** itself, so only the tests need it then */
-    if (rect && (!modulate_write || tests))
+    if (rect && (!(modulate_write || sample_write) || tests))
         s[n++] = cs->rect_source;
     /* the window depth is for the depth test only */
     if (tests && early) {
@@ -364,6 +375,11 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
             s[n++] = cs->neighbours;
         if (!direct && !modulate)
             s[n++] = cs->color;
+    }
+    if (sample_write) {
+        s[n++] = rect ? cs->coords_rect[lone] : cs->coords[lone];
+        s[n++] = cs->sample_write;
+        return n;
     }
     if (direct) {
         s[n++] = rect ? cs->fetch_rect_direct[lone] : cs->fetch_direct[lone];

@@ -482,8 +482,10 @@ static void STAGE(chunk_sample)(GlesContext *ctx, SpanBuf *b, int u, int direct)
                      direct ? 4 : GLES_MAX_TEXTURE_UNITS * 4, ctx->texel_unorm8);
 }
 
-/* a triangle's coordinates of unit u for every live fragment, then its texels */
-static void STAGE(stage_fetch)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, int u, int direct)
+/* a triangle's coordinates of unit u for every live fragment, then its
+** texels: into b->ct (FETCH_TEXELS), into the colour (FETCH_DIRECT), or
+** none (FETCH_COORDS: a later stage samples) */
+static void STAGE(stage_fetch)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, int u, int mode)
 {
     const int lod = texture_needs_lod(ctx->units[u].bound);
 #if CHAIN_SIMD && NUM_IS_FIXED
@@ -514,11 +516,12 @@ static void STAGE(stage_fetch)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, 
             TEX_COORD(b->py[j], &b->ty[j]);
         }
 #undef TEX_COORD
-    STAGE(chunk_sample)(ctx, b, u, direct);
+    if (mode != FETCH_COORDS)
+        STAGE(chunk_sample)(ctx, b, u, mode == FETCH_DIRECT);
 }
 
 /* a rectangle's coordinates of unit u for every live fragment, then its texels */
-static void STAGE(stage_fetch_rect)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, int u, int direct)
+static void STAGE(stage_fetch_rect)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, int u, int mode)
 {
     (void)t;
     const RectSetup *r = b->rect;
@@ -575,7 +578,8 @@ static void STAGE(stage_fetch_rect)(GlesContext *ctx, const TriSetup *t, SpanBuf
         }
         break;
     }
-    STAGE(chunk_sample)(ctx, b, u, direct);
+    if (mode != FETCH_COORDS)
+        STAGE(chunk_sample)(ctx, b, u, mode == FETCH_DIRECT);
 }
 
 static void STAGE(stage_env)(GlesContext *ctx, SpanBuf *b, int u)
@@ -678,19 +682,27 @@ static void STAGE(stage_color_modulate)(GlesContext *ctx, const TriSetup *t, Spa
 #define UNIT_STAGES(u) \
     static void STAGE(stage_fetch##u)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) \
     { \
-        STAGE(stage_fetch)(ctx, t, b, u, 0); \
+        STAGE(stage_fetch)(ctx, t, b, u, FETCH_TEXELS); \
     } \
     static void STAGE(stage_fetch_rect##u)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) \
     { \
-        STAGE(stage_fetch_rect)(ctx, t, b, u, 0); \
+        STAGE(stage_fetch_rect)(ctx, t, b, u, FETCH_TEXELS); \
     } \
     static void STAGE(stage_fetch_direct##u)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) \
     { \
-        STAGE(stage_fetch)(ctx, t, b, u, 1); \
+        STAGE(stage_fetch)(ctx, t, b, u, FETCH_DIRECT); \
     } \
     static void STAGE(stage_fetch_rect_direct##u)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) \
     { \
-        STAGE(stage_fetch_rect)(ctx, t, b, u, 1); \
+        STAGE(stage_fetch_rect)(ctx, t, b, u, FETCH_DIRECT); \
+    } \
+    static void STAGE(stage_coords##u)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) \
+    { \
+        STAGE(stage_fetch)(ctx, t, b, u, FETCH_COORDS); \
+    } \
+    static void STAGE(stage_coords_rect##u)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) \
+    { \
+        STAGE(stage_fetch_rect)(ctx, t, b, u, FETCH_COORDS); \
     } \
     static void STAGE(stage_env##u)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) \
     { \
@@ -1091,14 +1103,21 @@ static void STAGE(stage_rect_source)(GlesContext *ctx, const TriSetup *t, SpanBu
 #if CHAIN_SIMD && NUM_IS_FIXED
 /* stage_color_modulate of the one enabled unit (or a rectangle's colour
 ** and stage_env's MODULATE), the alpha test and write_rgba8 (blend kind 0,
-** 1 or 2) or stage_write_565 / stage_write_565_alpha in one pass of eight float lanes, each byte proved equal to the
-** exact chain's or taken from it (avx2_modwrite8); vertex colours outside
-** [0, 1] go through the separate stages */
-static void STAGE(stage_modulate_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+** 1 or 2) or stage_write_565 / stage_write_565_alpha in one pass of eight
+** float lanes, each byte proved equal to the exact chain's or taken from
+** it (avx2_modwrite8). Source 0 takes the texels a fetch stage sampled;
+** source 1 samples at the coordinates a coordinates stage left (a
+** bilinear sampler with a vector kernel, texture_span_sample_group 8), and
+** there the unit may be a lone REPLACE of an RGBA texture. Vertex colours
+** outside [0, 1] go through the separate stages. */
+static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesContext *ctx, const TriSetup *t,
+                                                                       SpanBuf *b, int src)
 {
     const int u = __builtin_ctz(ctx->tex_units_on);
+    const Texture *tex = ctx->units[u].bound;
     const int kind = span_blend_kind(ctx);
-    const int smooth = !b->rect && t->smooth;
+    const int replace = ctx->units[u].env_mode == GL_REPLACE;
+    const int smooth = !replace && !b->rect && t->smooth;
     const FRAGV *flat = b->rect ? b->rect->in.c : t->flat;
     const FRAGV *const a[3] = { smooth ? t->col[0] : flat, smooth ? t->col[1] : flat, smooth ? t->col[2] : flat };
     int in_range = 1;
@@ -1106,6 +1125,8 @@ static void STAGE(stage_modulate_write)(GlesContext *ctx, const TriSetup *t, Spa
         for (int c = 0; c < 4; c++)
             in_range &= a[i][c] >= 0 && a[i][c] <= FRAG_ONE;
     if (!in_range) {
+        if (src == 1)
+            STAGE(chunk_sample)(ctx, b, u, 0);
         STAGE(stage_color_modulate)(ctx, t, b, u);
         if (ctx->alpha_test)
             STAGE(stage_alpha)(ctx, t, b);
@@ -1116,39 +1137,38 @@ static void STAGE(stage_modulate_write)(GlesContext *ctx, const TriSetup *t, Spa
         return;
     }
     Avx2ModWrite m;
-    avx2_modwrite_setup(&m, a, smooth, ctx->units[u].bound->format != GL_RGBA, kind,
-                        ctx->alpha_test ? ctx->alpha_func : GL_ALWAYS, fragment_alpha_ref8(ctx));
+    avx2_modwrite_setup(&m, a, smooth, tex->format != GL_RGBA, kind, ctx->alpha_test ? ctx->alpha_func : GL_ALWAYS,
+                        fragment_alpha_ref8(ctx));
+    if (replace)
+        avx2_modwrite_replace(&m);
+    int n = b->n;
+    if (src == 1) {
+        avx2_modwrite_texture(&m, tex, ctx->samplers[u], ctx->texel_unorm8);
+        /* the tail padded to a group of eight (the slots past n are free) */
+        _Static_assert(SPAN_CHUNK % 8 == 0, "a padded group stays within the chunk");
+        n = avx2_modwrite_pad(n, b->k, b->p, smooth, b->tc, NULL, 0);
+    }
     const size_t at = (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
-    const WGT (*p)[3] = (const WGT (*)[3])b->p;
-    const FRAGV *ct = b->ct[0][u];
-    const size_t stride = GLES_MAX_TEXTURE_UNITS * 4;
-    if (ctx->color_format == GLES_COLOR_RGB565) {
+    const int rgb565 = ctx->color_format == GLES_COLOR_RGB565;
+    if (rgb565) {
         FRAGV t_row[4];
         dither_row(b, ctx->dither, t_row);
         avx2_modwrite_dither(&m, ctx->dither, t_row);
-        uint16_t *dst = (uint16_t *)ctx->color + at;
-#define MODWRITE565(S, K) \
-    avx2_modwrite565_run(&m, a, S, K, b->n, b->k, b->x0, p, ct, stride, dst, ctx->unorm5, ctx->unorm6)
-        switch (smooth * 2 + (kind != 0)) {
-        case 0: MODWRITE565(0, 0); break;
-        case 1: MODWRITE565(0, 1); break;
-        case 2: MODWRITE565(1, 0); break;
-        default: MODWRITE565(1, 1); break;
-        }
-#undef MODWRITE565
-        return;
     }
-    uint32_t *dst = (uint32_t *)ctx->color + at;
-#define MODWRITE(S, K) avx2_modwrite_run(&m, a, S, K, b->n, b->k, p, ct, stride, dst)
-    switch (smooth * 3 + kind) {
-    case 0: MODWRITE(0, 0); break;
-    case 1: MODWRITE(0, 1); break;
-    case 2: MODWRITE(0, 2); break;
-    case 3: MODWRITE(1, 0); break;
-    case 4: MODWRITE(1, 1); break;
-    default: MODWRITE(1, 2); break;
-    }
-#undef MODWRITE
+    avx2_modwrite_dispatch(&m, a, src, rgb565, n, b->n, b->k, b->x0, (const WGT (*)[3])b->p, b->ct[0][u],
+                           GLES_MAX_TEXTURE_UNITS * 4, b->tc,
+                           rgb565 ? (void *)((uint16_t *)ctx->color + at) : (void *)((uint32_t *)ctx->color + at),
+                           ctx->unorm5, ctx->unorm6);
+}
+
+static void STAGE(stage_modulate_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    STAGE(modulate_write)(ctx, t, b, 0);
+}
+
+static void STAGE(stage_sample_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    STAGE(modulate_write)(ctx, t, b, 1);
 }
 #endif
 
@@ -1167,6 +1187,9 @@ static const ChainStages STAGE(chain_stages) = {
                       STAGE(stage_fetch_direct3) },
     .fetch_rect_direct = { STAGE(stage_fetch_rect_direct0), STAGE(stage_fetch_rect_direct1),
                            STAGE(stage_fetch_rect_direct2), STAGE(stage_fetch_rect_direct3) },
+    .coords = { STAGE(stage_coords0), STAGE(stage_coords1), STAGE(stage_coords2), STAGE(stage_coords3) },
+    .coords_rect = { STAGE(stage_coords_rect0), STAGE(stage_coords_rect1), STAGE(stage_coords_rect2),
+                     STAGE(stage_coords_rect3) },
     .env = { STAGE(stage_env0), STAGE(stage_env1), STAGE(stage_env2), STAGE(stage_env3) },
     .color_modulate = { STAGE(stage_color_modulate0), STAGE(stage_color_modulate1), STAGE(stage_color_modulate2),
                         STAGE(stage_color_modulate3) },
@@ -1183,6 +1206,7 @@ static const ChainStages STAGE(chain_stages) = {
     .write_565_alpha = STAGE(stage_write_565_alpha),
 #if CHAIN_SIMD && NUM_IS_FIXED
     .modulate_write = STAGE(stage_modulate_write),
+    .sample_write = STAGE(stage_sample_write),
 #endif
     .rect_source = STAGE(stage_rect_source),
 };

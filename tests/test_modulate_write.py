@@ -97,7 +97,7 @@ def _model(smooth, rgb, kind, func, ref, col, p, ct, d, rgb565=0, dither=0, x=0)
     return sum(_to_unorm8(v) << (8 * i) for i, v in enumerate(out))
 
 
-def _run(smooth, rgb, kind, func, ref, col, p, ct, dst, k, rgb565=0, dither=0, x0=0):
+def _run(smooth, rgb, kind, func, ref, col, p, ct, dst, k, rgb565=0, dither=0, x0=0, pad=0):
     """The kernel's words at offsets k of dst, and its count of exact lanes."""
     ctx = make_ctx("fixed", 1, 1)
     ffi, lib = ctx._ffi, ctx._lib
@@ -109,7 +109,7 @@ def _run(smooth, rgb, kind, func, ref, col, p, ct, dst, k, rgb565=0, dither=0, x
     exact = lib.gles_debug_modulate_write(
         smooth, rgb, kind, func, ref, [int(v) for v in np.ravel(col)], n,
         ffi.cast("uint8_t *", k.ctypes.data), ffi.cast("int32_t *", p.ctypes.data),
-        ffi.cast("int64_t *", ct.ctypes.data), rgb565, dither, x0, ffi.cast("void *", out.ctypes.data))
+        ffi.cast("int64_t *", ct.ctypes.data), pad, rgb565, dither, x0, ffi.cast("void *", out.ctypes.data))
     assert exact >= 0
     return out, exact
 
@@ -273,3 +273,30 @@ def test_rgb565_matches_the_integer_model(smooth, kind, dither):
             lanes += n - n % 8
             exact_total += exact - n % 8
     assert exact_total <= 0.05 * lanes
+
+
+@pytest.mark.parametrize("rgb565", [0, 1], ids=["rgba8888", "rgb565"])
+def test_padded_tails_over_scattered_fragments(rgb565):
+    """A chunk's tail padded to a group of eight with copies of its last
+    fragment (as the stage that samples in the kernel pads it) over
+    fragments the tests left scattered: the copies write the last word
+    again, and a padded group whose first and last offsets lie seven apart
+    is still not eight neighbouring pixels."""
+    rng = np.random.default_rng(17 + rgb565)
+    tails = [[10, 12, 13, 17], [3, 4, 5, 6, 7, 8, 10], [0, 7], [5]]
+    for trial in range(40):
+        if trial < len(tails):
+            k = np.array(list(range(0, 16, 2)) + [t + 20 for t in tails[trial]])
+        else:
+            n = int(rng.integers(1, 65))
+            k = np.sort(rng.choice(80, n, replace=False))
+        n = len(k)
+        col = rng.integers(0, ONE + 1, (3, 4))
+        p = _weights(rng, n)
+        ct = _texels(rng, n)
+        dst = rng.integers(0, 1 << (16 if rgb565 else 32), 80, dtype=np.uint64)
+        dst = dst.astype(np.uint16 if rgb565 else np.uint32)
+        kind = trial % 2
+        out, _ = _run(1, 0, kind, C.GL_ALWAYS, 0, col, p, ct, dst, k, rgb565, 1, 3, pad=1)
+        expect = _expect(1, 0, kind, C.GL_ALWAYS, 0, col, p, ct, dst, k, rgb565, 1, 3)
+        np.testing.assert_array_equal(out, expect)
