@@ -2071,11 +2071,14 @@ AVX2_INLINE const FRAGV *avx2_modwrite_texel1(const Avx2ModWrite *m, int src, co
 ** from source src (ct + j stride, or sampled at tc[j]); eight at a time,
 ** the rest exactly. The first `live` offsets ascend; slots from there to
 ** n repeat the last live fragment (a padded group). */
-AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *m, const FRAGV *const a[3], int smooth, int kind, int src,
+AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *mw, const FRAGV *const a[3], int smooth, int kind, int src,
                                    int rgb565, int n, int live, const uint8_t *k, int x0, const WGT (*p)[3],
                                    const FRAGV *ct, size_t stride, const TexCoord *tc, void *dst,
                                    const FRAGV unorm5[32], const FRAGV unorm6[64])
 {
+    /* a local copy: the framebuffer stores cannot change it, so its
+    ** constants stay in registers across the loop */
+    const Avx2ModWrite local = *mw, *m = &local;
     uint32_t *dst32 = dst;
     uint16_t *dst16 = dst;
     FRAGV tmp[4];
@@ -2137,14 +2140,16 @@ AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *m, const FRAGV *const a[3
 #undef MODWRITE_EXACT
 }
 
-/* avx2_modwrite_run with the colour's interpolation (m->smooth), the blend
-** (m->kind) and the target fixed per instance */
+/* avx2_modwrite_run with the texel source, the colour's interpolation
+** (m->smooth), the blend (m->kind) and the target fixed per instance */
 static inline void avx2_modwrite_dispatch(const Avx2ModWrite *m, const FRAGV *const a[3], int src, int rgb565, int n,
                                           int live, const uint8_t *k, int x0, const WGT (*p)[3], const FRAGV *ct,
                                           size_t stride, const TexCoord *tc, void *dst, const FRAGV unorm5[32],
                                           const FRAGV unorm6[64])
 {
-#define MODWRITE(S, K, F) avx2_modwrite_run(m, a, S, K, src, F, n, live, k, x0, p, ct, stride, tc, dst, unorm5, unorm6)
+#define MODWRITE(S, K, F) \
+    (src ? avx2_modwrite_run(m, a, S, K, 1, F, n, live, k, x0, p, ct, stride, tc, dst, unorm5, unorm6) \
+         : avx2_modwrite_run(m, a, S, K, 0, F, n, live, k, x0, p, ct, stride, tc, dst, unorm5, unorm6))
     switch ((rgb565 ? 6 : 0) + (m->smooth ? 3 : 0) + m->kind) {
     case 0: MODWRITE(0, 0, 0); break;
     case 1: MODWRITE(0, 1, 0); break;
