@@ -69,7 +69,10 @@ typedef struct ChainStages {
     SpanStage write_565, write_565_alpha;
     SpanStage rect_source;
     SpanStage coords[GLES_MAX_TEXTURE_UNITS], coords_rect[GLES_MAX_TEXTURE_UNITS];
-    SpanStage modulate_write, sample_write;   /* the fixed build's AVX2 instance only, else NULL */
+    /* the AVX2 instances of the fixed build (all three, the first also for
+    ** RGB565) and the float build (modulate_write, RGBA8888); else NULL */
+    SpanStage modulate_write, sample_write;
+    int modulate_write_565;
 } ChainStages;
 
 /* the baseline instance */
@@ -154,6 +157,25 @@ static int debug_modulate_write_avx2(const Avx2ModWrite *m, const FRAGV *const a
 #endif
 #pragma GCC pop_options
 #endif
+
+int gles_debug_modulate_write_f(int smooth, int rgb, int kind, unsigned int alpha_func, uint32_t alpha_ref,
+                                const float col[12], int n, const uint8_t *k, const float *p, const float *ct,
+                                uint32_t *dst)
+{
+#if SIMD_X86 && defined(GLES_NUM_FLOAT)
+    if (n < 0 || n > SPAN_CHUNK || kind < 0 || kind > 2 || simd_detect() < SIMD_AVX2)
+        return -1;
+    const FRAGV *const a[3] = { col, smooth ? col + 4 : col, smooth ? col + 8 : col };
+    F8ModWrite m;
+    f8_modwrite_setup(&m, a, smooth != 0, rgb != 0, kind, alpha_func, alpha_ref);
+    f8_modwrite_dispatch(&m, a, n, k, (const WGT (*)[3])p, ct, 4, dst);
+    return 0;
+#else
+    (void)smooth, (void)rgb, (void)kind, (void)alpha_func, (void)alpha_ref, (void)col, (void)n, (void)k, (void)p,
+        (void)ct, (void)dst;
+    return -1;
+#endif
+}
 
 int gles_debug_modulate_write(int smooth, int rgb, int kind, unsigned int alpha_func, uint32_t alpha_ref,
                               const int64_t col[12], int n, const uint8_t *k, const int32_t *p, const int64_t *ct,
@@ -350,7 +372,8 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     const int plain565 = ctx->color_format == GLES_COLOR_RGB565 && ctx->color_mask[0] && ctx->color_mask[1]
                       && ctx->color_mask[2];
     const int writes_fused = lone >= 0 && !ctx->fog && !(ctx->alpha_test && tests)
-                          && ((plain && bk >= 0) || (plain565 && (bk == 0 || bk == 1))) && !ctx->color_logic_op
+                          && ((plain && bk >= 0) || (plain565 && (bk == 0 || bk == 1) && cs->modulate_write_565))
+                          && !ctx->color_logic_op
                           && cs->modulate_write != NULL;
     const int modulate_write = writes_fused && first_modulates;
     /* ... sampling too where the unit's sampler is the bilinear kernel of

@@ -1172,6 +1172,26 @@ static void STAGE(stage_sample_write)(GlesContext *ctx, const TriSetup *t, SpanB
 }
 #endif
 
+#if CHAIN_SIMD && defined(GLES_NUM_FLOAT)
+/* stage_color_modulate of the one enabled unit (or a rectangle's colour
+** and stage_env's MODULATE), the alpha test and write_rgba8 (blend kind 0,
+** 1 or 2) in one pass of eight lanes: the float build's operations in its
+** order (f8_modwrite8), so the words are the separate stages' */
+static void STAGE(stage_modulate_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    const int u = __builtin_ctz(ctx->tex_units_on);
+    const int kind = span_blend_kind(ctx);
+    const int smooth = !b->rect && t->smooth;
+    const FRAGV *flat = b->rect ? b->rect->in.c : t->flat;
+    const FRAGV *const a[3] = { smooth ? t->col[0] : flat, smooth ? t->col[1] : flat, smooth ? t->col[2] : flat };
+    F8ModWrite m;
+    f8_modwrite_setup(&m, a, smooth, ctx->units[u].bound->format != GL_RGBA, kind,
+                      ctx->alpha_test ? ctx->alpha_func : GL_ALWAYS, fragment_alpha_ref8(ctx));
+    f8_modwrite_dispatch(&m, a, b->n, b->k, (const WGT (*)[3])b->p, b->ct[0][u], GLES_MAX_TEXTURE_UNITS * 4,
+                         (uint32_t *)ctx->color + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0);
+}
+#endif
+
 static const ChainStages STAGE(chain_stages) = {
     .persp = STAGE(stage_persp),
     .neighbours = STAGE(stage_neighbours),
@@ -1207,6 +1227,9 @@ static const ChainStages STAGE(chain_stages) = {
 #if CHAIN_SIMD && NUM_IS_FIXED
     .modulate_write = STAGE(stage_modulate_write),
     .sample_write = STAGE(stage_sample_write),
+    .modulate_write_565 = 1,
+#elif CHAIN_SIMD && defined(GLES_NUM_FLOAT)
+    .modulate_write = STAGE(stage_modulate_write),
 #endif
     .rect_source = STAGE(stage_rect_source),
 };

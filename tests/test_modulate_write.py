@@ -300,3 +300,81 @@ def test_padded_tails_over_scattered_fragments(rgb565):
         out, _ = _run(1, 0, kind, C.GL_ALWAYS, 0, col, p, ct, dst, k, rgb565, 1, 3, pad=1)
         expect = _expect(1, 0, kind, C.GL_ALWAYS, 0, col, p, ct, dst, k, rgb565, 1, 3)
         np.testing.assert_array_equal(out, expect)
+
+
+# {================================================================
+# the float build's kernel: the scalar code's float operations in its order
+
+
+def _model_f32(smooth, rgb, kind, func, ref, col, p, ct, d):
+    """Words of the float build's chain for all fragments at once, in
+    float32 numpy arithmetic, operation by operation as frag_lerp3f,
+    frag_clamp01, frag_mul, fragment_alpha8 and v4_rgba8 do them."""
+    f = np.float32
+    one, zero = f(1), f(0)
+
+    def clamp01(v):
+        return np.minimum(one, np.maximum(zero, v))
+
+    def unorm8(v):
+        x = (v * f(255) + f(0.5)).astype(np.float32)
+        x = np.where(v >= one, f(255), x)
+        x = np.where(v > zero, x, zero)
+        return x.astype(np.int64)
+
+    col = col.astype(np.float32)
+    if smooth:
+        w = p.astype(np.float32)
+        c = clamp01((col[0][None, :] * w[:, 0:1] + col[1][None, :] * w[:, 1:2]) + col[2][None, :] * w[:, 2:3])
+    else:
+        c = np.broadcast_to(clamp01(col[0]), (len(ct), 4))
+    y = (c * ct.astype(np.float32)).astype(np.float32)
+    if rgb:
+        y[:, 3] = c[:, 3]
+    passed = np.array([_compare(func, int(a), ref) for a in unorm8(y[:, 3])])
+    dv = np.stack([(d >> (8 * i)) & 0xFF for i in range(4)], axis=1).astype(np.float32) / f(255)
+    if kind:
+        y = clamp01(y)
+        va = y[:, 3:4]
+        y = y * va + dv * (one - va) if kind == 1 else y + dv
+    b = unorm8(y)
+    words = b[:, 0] | (b[:, 1] << 8) | (b[:, 2] << 16) | (b[:, 3] << 24)
+    return np.where(passed, words, d).astype(np.uint32)
+
+
+@pytest.mark.parametrize("kind", [0, 1, 2], ids=["none", "alpha", "add"])
+def test_float_build_kernel_matches_float32_model(kind):
+    """The float build's eight-lane kernel gives the float32 words of the
+    scalar code's operations in their order. Over 2^17 fragments per blend
+    a one-ulp change moves a few bytes across a rounding boundary: another
+    association of the colour's sum, or 1 - alpha off by an ulp, fails the
+    SRC_ALPHA case."""
+    ctx = make_ctx("float", 1, 1)
+    if not ctx.simd == "avx2":
+        pytest.skip("no AVX2 instance")
+    ffi, lib = ctx._ffi, ctx._lib
+    rng = np.random.default_rng(300 + kind)
+    for trial in range(2048):
+        smooth, rgb = trial % 2, (trial // 2) % 2
+        func = FUNCS[trial % len(FUNCS)] if trial % 5 == 0 else C.GL_ALWAYS
+        ref = int(rng.integers(0, 256))
+        n = 64
+        col = rng.uniform(-0.1, 1.1, (3, 4)).astype(np.float32)
+        w = rng.uniform(0, 1, (n, 3)).astype(np.float32)
+        w /= w.sum(axis=1, keepdims=True)
+        w = w.astype(np.float32)
+        ct = rng.uniform(0, 1, (n, 4)).astype(np.float32)
+        d = rng.integers(0, 1 << 32, n, dtype=np.uint64).astype(np.uint32)
+        k = np.arange(n) if trial % 3 else np.sort(rng.choice(80, n, replace=False))
+        k = k.astype(np.uint8)
+        dst = rng.integers(0, 1 << 32, 80, dtype=np.uint64).astype(np.uint32)
+        dst[k] = d
+        out = dst.copy()
+        cf = np.ascontiguousarray(col.ravel())
+        assert lib.gles_debug_modulate_write_f(
+            smooth, rgb, kind, func, ref, ffi.cast("float *", cf.ctypes.data), n,
+            ffi.cast("uint8_t *", k.ctypes.data), ffi.cast("float *", w.ctypes.data),
+            ffi.cast("float *", ct.ctypes.data), ffi.cast("uint32_t *", out.ctypes.data)) == 0
+        expect = dst.copy()
+        expect[k] = _model_f32(smooth, rgb, kind, func, ref, col, w, ct, d)
+        np.testing.assert_array_equal(out, expect)
