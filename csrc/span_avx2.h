@@ -291,56 +291,6 @@ AVX2_INLINE int avx2_fits_i32(__m256i v)
 
 _Static_assert(sizeof(TexCoord) == 2 * sizeof(TEXC), "TexCoord is s then t");
 
-/* The wrapped texel index and weight of four coordinates along one axis
-** of a level n = 2^log2n texels wide, as sample_level forms them for
-** GL_LINEAR: u = reduce(s) n - 1/2, i0 = floor(u), the weight the 16 bits
-** below the point; REPEAT masks i0 and i0 + 1, CLAMP_TO_EDGE clamps them
-** to [0, n - 1]. The indices come back as int32 lanes 0..3. */
-AVX2_INLINE void avx2_linear_axis(__m256i s, int log2n, int repeat, __m128i *i0, __m128i *i1, __m128i *w)
-{
-    const int n = 1 << log2n;
-    const __m256i half = _mm256_set1_epi64x(TEXC_HALF);
-    __m256i uu;
-    if (repeat) {
-        /* s - floor(s) is the low 32 bits; adding n (as 2^32 n) keeps uu >= 0 */
-        uu = _mm256_slli_epi64(_mm256_and_si256(s, _mm256_set1_epi64x(0xFFFFFFFF)), log2n);
-        uu = _mm256_add_epi64(_mm256_sub_epi64(uu, half), _mm256_set1_epi64x((int64_t)n << 32));
-    } else {
-        /* reduce_coord clamps s to [-1, 2]; bias by 2n + 1 texels so the
-        ** shifted value is the index plus 2n + 1, above zero */
-        const __m256i lo = _mm256_set1_epi64x(-TEXC_ONE), hi = _mm256_set1_epi64x(2 * TEXC_ONE);
-        s = _mm256_blendv_epi8(s, lo, _mm256_cmpgt_epi64(lo, s));
-        s = _mm256_blendv_epi8(s, hi, _mm256_cmpgt_epi64(s, hi));
-        uu = _mm256_sub_epi64(_mm256_slli_epi64(s, log2n), half);
-        uu = _mm256_add_epi64(uu, _mm256_set1_epi64x((int64_t)(2 * n + 1) << 32));
-    }
-    const __m256i pick = _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7);
-    /* index (+ bias) and weight, as the low dwords of each lane */
-    __m128i idx = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(_mm256_srli_epi64(uu, 32), pick));
-    __m128i wt = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(_mm256_srli_epi64(uu, 16), pick));
-    *w = _mm_and_si128(wt, _mm_set1_epi32(0xFFFF));
-    if (repeat) {
-        const __m128i mask = _mm_set1_epi32(n - 1);
-        *i0 = _mm_and_si128(idx, mask);
-        *i1 = _mm_and_si128(_mm_add_epi32(idx, _mm_set1_epi32(1)), mask);
-    } else {
-        const __m128i bias = _mm_set1_epi32(2 * n + 1), zero = _mm_setzero_si128(), top = _mm_set1_epi32(n - 1);
-        __m128i a = _mm_sub_epi32(idx, bias);
-        __m128i b = _mm_add_epi32(a, _mm_set1_epi32(1));
-        *i0 = _mm_min_epi32(_mm_max_epi32(a, zero), top);
-        *i1 = _mm_min_epi32(_mm_max_epi32(b, zero), top);
-    }
-}
-
-/* the s and t of four fragments' coordinates c[0..3] as two registers */
-AVX2_INLINE void avx2_load_st4(const TexCoord *c, __m256i *sv, __m256i *tv)
-{
-    const __m256i p01 = _mm256_loadu_si256((const __m256i *)(const void *)&c[0]);
-    const __m256i p23 = _mm256_loadu_si256((const __m256i *)(const void *)&c[2]);
-    *sv = _mm256_permute4x64_epi64(_mm256_unpacklo_epi64(p01, p23), 0xD8);
-    *tv = _mm256_permute4x64_epi64(_mm256_unpackhi_epi64(p01, p23), 0xD8);
-}
-
 /* frag_bilerp_rgba8's value of one channel (bits sh..sh+7 of the texel
 ** words) for eight fragments at once, in 32-bit lanes. With h0 = c00 ia +
 ** c10 a and h1 = c01 ia + c11 a (each < 2^24), the scalar code's
@@ -420,7 +370,10 @@ AVX2_INLINE void avx2_load_st8(const TexCoord *c, __m256i *s_lo, __m256i *s_hi, 
 #undef AVX2_PICK
 }
 
-/* avx2_linear_axis for eight coordinates in 32-bit lanes, from their low
+/* sample_level's GL_LINEAR index and weight along one axis of a level n =
+** 2^L texels wide (u = reduce(s) n - 1/2, i0 = floor(u), the weight the 16
+** bits below the point; REPEAT masks i0 and i0 + 1, CLAMP_TO_EDGE clamps
+** them to [0, n - 1]) for eight coordinates in 32-bit lanes, from their low
 ** (lo, the fraction in 0.32) and high (hi, the signed integer part)
 ** dwords. With L = log2n and g = lo - 2^(31 - L) mod 2^32 (a borrow where
 ** lo < 2^(31 - L)), s n - 1/2 = (hi - borrow) n + g 2^L / 2^32 exactly, so
@@ -486,7 +439,7 @@ AVX2_INLINE void avx2_linear_texels8(const int *tx32, int log2w, int log2h, cons
 /* sample_level's GL_LINEAR of a power-of-two level for fragments 0..n-1
 ** (n a multiple of 4), REPEAT or CLAMP_TO_EDGE on each axis: eight
 ** fragments at a time in 32-bit lanes (texels gathered, channels apart),
-** a last four one fragment at a time (not forced inline, as
+** a last four padded to such a group (not forced inline, as
 ** avx2_bilerp_rgba8) */
 static inline void avx2_sample_linear(const TexImage *li, int n, const TexCoord *c, FRAGV *out, size_t stride,
                                     int repeat_s, int repeat_t)
@@ -494,39 +447,28 @@ static inline void avx2_sample_linear(const TexImage *li, int n, const TexCoord 
     const int log2w = __builtin_ctz((unsigned)li->width), log2h = __builtin_ctz((unsigned)li->height);
     const int *tx32 = (const int *)(const void *)li->texels;
     const __m256i one16 = _mm256_set1_epi32(65536);
-    int j = 0;
-    for (; j + 8 <= n; j += 8) {
+    for (int j = 0; j < n; j += 8) {
+        /* a last four as a group of eight, padded with copies of the last */
+        TexCoord pad[8];
+        const TexCoord *cj = &c[j];
+        if (j + 8 > n) {
+            memcpy(pad, cj, 4 * sizeof *pad);
+            for (int k = 4; k < 8; k++)
+                pad[k] = pad[3];
+            cj = pad;
+        }
         __m256i g[4], a, b;
-        avx2_linear_texels8(tx32, log2w, log2h, &c[j], repeat_s, repeat_t, g, &a, &b);
+        avx2_linear_texels8(tx32, log2w, log2h, cj, repeat_s, repeat_t, g, &a, &b);
         const __m256i ia = _mm256_sub_epi32(one16, a), ib = _mm256_sub_epi32(one16, b);
         __m256i ch[4];
         for (int k = 0; k < 4; k++)
             ch[k] = avx2_bilerp8_channel(g, 8 * k, a, ia, b, ib);
-        for (int h = 0; h < 2; h++) {
+        for (int h = 0; h < (j + 8 > n ? 1 : 2); h++) {
             __m256i v[4];
             for (int k = 0; k < 4; k++)
                 v[k] = avx2_bilerp_to_frag(h ? _mm256_extracti128_si256(ch[k], 1) : _mm256_castsi256_si128(ch[k]));
             avx2_store_transposed4(v[0], v[1], v[2], v[3], out + (size_t)(j + 4 * h) * stride, stride);
         }
-    }
-    for (; j < n; j += 4) {
-        __m256i sv, tv;
-        avx2_load_st4(&c[j], &sv, &tv);
-        __m128i x0, x1, a, y0, y1, bw;
-        avx2_linear_axis(sv, log2w, repeat_s, &x0, &x1, &a);
-        avx2_linear_axis(tv, log2h, repeat_t, &y0, &y1, &bw);
-        const __m128i r0 = _mm_slli_epi32(y0, log2w), r1 = _mm_slli_epi32(y1, log2w);
-        int32_t i00[4], i10[4], i01[4], i11[4], wa[4], wb[4];
-        _mm_storeu_si128((__m128i *)(void *)i00, _mm_add_epi32(r0, x0));
-        _mm_storeu_si128((__m128i *)(void *)i10, _mm_add_epi32(r0, x1));
-        _mm_storeu_si128((__m128i *)(void *)i01, _mm_add_epi32(r1, x0));
-        _mm_storeu_si128((__m128i *)(void *)i11, _mm_add_epi32(r1, x1));
-        _mm_storeu_si128((__m128i *)(void *)wa, a);
-        _mm_storeu_si128((__m128i *)(void *)wb, bw);
-        const uint32_t *tx = li->texels;
-        for (int k = 0; k < 4; k++)
-            avx2_bilerp_rgba8(tx[i00[k]], tx[i10[k]], tx[i01[k]], tx[i11[k]], wa[k], wb[k],
-                              out + (size_t)(j + k) * stride);
     }
 }
 
@@ -1665,6 +1607,35 @@ AVX2_INLINE unsigned avx2_cmp4_i32(unsigned int func, __m128i a, __m128i b)
 #endif
 /* }==================================================================== */
 #if SIMD_X86 && (NUM_IS_FIXED || defined(GLES_NUM_FLOAT))
+/* eight fragments' channel values (0..255 in 32-bit lanes, one register
+** per channel) as eight RGBA8888 words: packed to bytes R0-3 G0-3 B0-3
+** A0-3 | R4-7 ... per 128-bit lane, then interleaved */
+AVX2_INLINE __m256i avx2_pack_rgba8x8(const __m256i v[4])
+{
+    const __m256i b8 = _mm256_packus_epi16(_mm256_packus_epi32(v[0], v[1]), _mm256_packus_epi32(v[2], v[3]));
+    return _mm256_shuffle_epi8(b8, _mm256_setr_epi8(0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15, 0, 4, 8, 12,
+                                                    1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15));
+}
+
+/* the alpha test of the fused stages: on (any function but ALWAYS), its
+** function and 8-bit reference (fragment_alpha_ref8), and both as lanes */
+typedef struct ModWriteAlpha {
+    int test;
+    unsigned int func;
+    uint32_t ref;
+    Avx2Cmp cmp;
+    __m256i ref_v;
+} ModWriteAlpha;
+
+static inline void modwrite_alpha_setup(ModWriteAlpha *t, unsigned int func, uint32_t ref)
+{
+    t->test = func != GL_ALWAYS;
+    t->func = func;
+    t->ref = ref;
+    t->cmp = avx2_cmp_setup(func);
+    t->ref_v = _mm256_set1_epi32((int)ref);
+}
+
 /* the weights of eight fragments in lanes, for the fused stages of the
 ** fixed and float builds (where WGT is 32 bits) */
 /* the three weights of fragments p[0..7] as eight 32-bit lanes each: the
@@ -1734,11 +1705,7 @@ AVX2_INLINE int avx2_channels8(const FRAGV *c, size_t stride, __m256i ch[4])
 typedef struct Avx2ModWrite {
     __m256 col[3][4];
     int smooth, rgb, kind;
-    int alpha_test;              /* the test is on (any function but ALWAYS) */
-    unsigned int alpha_func;
-    uint32_t alpha_ref;          /* fragment_alpha_ref8 */
-    Avx2Cmp alpha_cmp;
-    __m256i alpha_ref_v;
+    ModWriteAlpha alpha;         /* the alpha test */
     int dither;
     FRAGV t_row[4];              /* 0.30 (1/2 without dither) */
     __m256 t_row_f;              /* t_row twice, as floats (0 without dither: the top bits are kept) */
@@ -1760,11 +1727,7 @@ static inline void avx2_modwrite_setup(Avx2ModWrite *m, const FRAGV *const a[3],
                                        unsigned int alpha_func, uint32_t alpha_ref)
 {
     m->smooth = smooth, m->rgb = rgb, m->kind = kind;
-    m->alpha_test = alpha_func != GL_ALWAYS;
-    m->alpha_func = alpha_func;
-    m->alpha_ref = alpha_ref;
-    m->alpha_cmp = avx2_cmp_setup(alpha_func);
-    m->alpha_ref_v = _mm256_set1_epi32((int)alpha_ref);
+    modwrite_alpha_setup(&m->alpha, alpha_func, alpha_ref);
     for (int i = 0; i < 3; i++)
         for (int c = 0; c < 4; c++) {
             const FRAGV v = smooth ? a[i][c] : frag_clamp01(a[0][c]);
@@ -1905,11 +1868,11 @@ AVX2_INLINE void avx2_modwrite_source8(const Avx2ModWrite *m, int smooth, const 
             y[3] = c[3];
     }
     *pass = _mm256_set1_epi32(-1);
-    if (m->alpha_test) {
+    if (m->alpha.test) {
         /* fragment_alpha8 of the alpha, proved as the bytes are */
         const __m256i a8 = avx2_floor_proved(_mm256_add_ps(_mm256_mul_ps(y[3], _mm256_set1_ps(255.0f)),
                                                            _mm256_set1_ps(0.5f)), bad);
-        *pass = avx2_cmp_i32(&m->alpha_cmp, a8, m->alpha_ref_v);
+        *pass = avx2_cmp_i32(&m->alpha.cmp, a8, m->alpha.ref_v);
     }
 }
 
@@ -1939,10 +1902,7 @@ AVX2_INLINE unsigned avx2_modwrite8(const Avx2ModWrite *m, int smooth, int kind,
     for (int i = 0; i < 4; i++)
         v[i] = avx2_floor_proved(_mm256_add_ps(_mm256_mul_ps(y[i], _mm256_set1_ps(255.0f)), _mm256_set1_ps(0.5f)),
                                  &bad);
-    /* bytes R0-3 G0-3 B0-3 A0-3 | R4-7 ... per 128-bit lane, to words */
-    const __m256i b8 = _mm256_packus_epi16(_mm256_packus_epi32(v[0], v[1]), _mm256_packus_epi32(v[2], v[3]));
-    const __m256i w = _mm256_shuffle_epi8(b8, _mm256_setr_epi8(0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15, 0,
-                                                               4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15));
+    const __m256i w = avx2_pack_rgba8x8(v);
     /* a fragment that fails the alpha test leaves the stored word */
     *out = _mm256_blendv_epi8(d, w, pass);
     return (unsigned)_mm256_movemask_ps(bad);
@@ -1998,7 +1958,7 @@ AVX2_INLINE int avx2_modwrite_source1(const Avx2ModWrite *m, const FRAGV *const 
     *out = mm;
     FRAGV ch[4];
     v4_store(ch, mm);
-    return !m->alpha_test || fragment_compare(m->alpha_func, fragment_alpha8(ch[3]), m->alpha_ref);
+    return !m->alpha.test || fragment_compare(m->alpha.func, fragment_alpha8(ch[3]), m->alpha.ref);
 }
 
 /* the exact chain for one fragment over the stored RGBA8888 word d
@@ -2106,7 +2066,7 @@ AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *mw, const FRAGV *const a[
                 w16[i] = dst16[k[j + i]];
             d = _mm256_cvtepu16_epi32(_mm_loadu_si128((const __m128i *)(const void *)w16));
         } else {
-            d = !kind && !m->alpha_test ? _mm256_setzero_si256()
+            d = !kind && !m->alpha.test ? _mm256_setzero_si256()
               : run ? _mm256_loadu_si256((const __m256i *)(const void *)&dst32[k[j]])
                     : _mm256_i32gather_epi32((const int *)(const void *)dst32, idx, 4);
         }
@@ -2183,18 +2143,15 @@ static inline void avx2_modwrite_dispatch(const Avx2ModWrite *m, const FRAGV *co
 
 typedef struct F8ModWrite {
     __m256 col[3][4];            /* the vertex colours, or the flat colour clamped in col[0] */
-    int smooth, rgb, kind, alpha_test;
-    Avx2Cmp alpha_cmp;
-    __m256i alpha_ref_v;
+    int smooth, rgb, kind;
+    ModWriteAlpha alpha;         /* the alpha test */
 } F8ModWrite;
 
 static inline void f8_modwrite_setup(F8ModWrite *m, const FRAGV *const a[3], int smooth, int rgb, int kind,
                                      unsigned int alpha_func, uint32_t alpha_ref)
 {
     m->smooth = smooth, m->rgb = rgb, m->kind = kind;
-    m->alpha_test = alpha_func != GL_ALWAYS;
-    m->alpha_cmp = avx2_cmp_setup(alpha_func);
-    m->alpha_ref_v = _mm256_set1_epi32((int)alpha_ref);
+    modwrite_alpha_setup(&m->alpha, alpha_func, alpha_ref);
     for (int i = 0; i < 3; i++)
         for (int c = 0; c < 4; c++)
             m->col[i][c] = _mm256_set1_ps(smooth ? a[i][c] : frag_clamp01(a[0][c]));
@@ -2250,8 +2207,8 @@ AVX2_INLINE __m256i f8_modwrite8(const F8ModWrite *m, int smooth, int kind, cons
     if (m->rgb)
         y[3] = c[3];
     __m256i pass = _mm256_set1_epi32(-1);
-    if (m->alpha_test)
-        pass = avx2_cmp_i32(&m->alpha_cmp, f8_unorm8(y[3]), m->alpha_ref_v);
+    if (m->alpha.test)
+        pass = avx2_cmp_i32(&m->alpha.cmp, f8_unorm8(y[3]), m->alpha.ref_v);
     if (kind) {
         const __m256i byte = _mm256_set1_epi32(0xFF);
         for (int i = 0; i < 4; i++)
@@ -2266,9 +2223,7 @@ AVX2_INLINE __m256i f8_modwrite8(const F8ModWrite *m, int smooth, int kind, cons
     __m256i v[4];
     for (int i = 0; i < 4; i++)
         v[i] = f8_unorm8(y[i]);
-    const __m256i b8 = _mm256_packus_epi16(_mm256_packus_epi32(v[0], v[1]), _mm256_packus_epi32(v[2], v[3]));
-    const __m256i w = _mm256_shuffle_epi8(b8, _mm256_setr_epi8(0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15, 0,
-                                                               4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15));
+    const __m256i w = avx2_pack_rgba8x8(v);
     return _mm256_blendv_epi8(d, w, pass);
 }
 
@@ -2282,7 +2237,7 @@ AVX2_INLINE void f8_modwrite_run(const F8ModWrite *mw, const FRAGV *const a[3], 
     for (; j + 8 <= n; j += 8) {
         const int run = k[j + 7] == k[j] + 7;
         const __m256i idx = _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)&k[j]));
-        const __m256i d = !kind && !m->alpha_test ? _mm256_setzero_si256()
+        const __m256i d = !kind && !m->alpha.test ? _mm256_setzero_si256()
                         : run ? _mm256_loadu_si256((const __m256i *)(const void *)&dst[k[j]])
                               : _mm256_i32gather_epi32((const int *)(const void *)dst, idx, 4);
         const __m256i w = f8_modwrite8(m, smooth, kind, &p[j], ct + (size_t)j * stride, stride, d);
@@ -2304,8 +2259,7 @@ AVX2_INLINE void f8_modwrite_run(const F8ModWrite *mw, const FRAGV *const a[3], 
         FRAGV ch[4];
         v4_store(ch, mm);
         uint32_t *at = &dst[k[j]];
-        if (!m->alpha_test || _mm256_movemask_ps(_mm256_castsi256_ps(avx2_cmp_i32(
-                                  &m->alpha_cmp, _mm256_set1_epi32((int)fragment_alpha8(ch[3])), m->alpha_ref_v))))
+        if (!m->alpha.test || fragment_compare(m->alpha.func, fragment_alpha8(ch[3]), m->alpha.ref))
             *at = v4_rgba8(mm, *at, kind);
     }
 }

@@ -260,12 +260,18 @@ def _rhos() -> list[float]:
     return rhos
 
 
-@pytest.mark.skipif(not HAS_SIMD, reason="no vector instance on this CPU")
-@pytest.mark.parametrize("minf,magf", [
+# the filter pairs both samplers' tests run: the mipmap filters (with a
+# magnification filter that is, or is not, the mipmap one's) and plain LINEAR
+FILTER_PAIRS = [
     (C.GL_LINEAR_MIPMAP_LINEAR, C.GL_LINEAR), (C.GL_NEAREST_MIPMAP_LINEAR, C.GL_LINEAR),
     (C.GL_LINEAR_MIPMAP_NEAREST, C.GL_NEAREST), (C.GL_NEAREST_MIPMAP_NEAREST, C.GL_LINEAR),
     (C.GL_LINEAR, C.GL_NEAREST),
-], ids=["lml", "nml-c", "lmn", "nmn-c", "l"])
+]
+FILTER_IDS = ["lml", "nml-c", "lmn", "nmn-c", "l"]
+
+
+@pytest.mark.skipif(not HAS_SIMD, reason="no vector instance on this CPU")
+@pytest.mark.parametrize("minf,magf", FILTER_PAIRS, ids=FILTER_IDS)
 def test_samplers_match_log2(minf, magf):
     """Both instances' texels are the float32 model's with lambda from
     math.log2, for rho around every boundary, near midpoints and random;
@@ -292,11 +298,7 @@ def test_samplers_match_log2(minf, magf):
 
 
 @pytest.mark.skipif(not HAS_SIMD, reason="no vector instance on this CPU")
-@pytest.mark.parametrize("minf,magf", [
-    (C.GL_LINEAR_MIPMAP_LINEAR, C.GL_LINEAR), (C.GL_NEAREST_MIPMAP_LINEAR, C.GL_LINEAR),
-    (C.GL_LINEAR_MIPMAP_NEAREST, C.GL_NEAREST), (C.GL_NEAREST_MIPMAP_NEAREST, C.GL_LINEAR),
-    (C.GL_LINEAR, C.GL_NEAREST),
-], ids=["lml", "nml-c", "lmn", "nmn-c", "l"])
+@pytest.mark.parametrize("minf,magf", FILTER_PAIRS, ids=FILTER_IDS)
 def test_double_kernel_matches_scalar(minf, magf):
     """The double build keeps log2 where lambda's value is used and skips it
     for rho <= 1 and rho >= 2^(q+1): the AVX2 instance's texels are the
