@@ -91,10 +91,11 @@ int gles_debug_persp(int simd, int eshift, int64_t lin_recip, const int64_t mant
 ** (the colours in int32 range, else the scalar code, as the stage does) */
 int gles_debug_color(int simd, int clamp, const int64_t col[12], int n, const int32_t *p, int64_t *out);
 /* for tests, float build with AVX2 (-1 elsewhere): the float build's
-** fused stage's kernel (f8_modwrite_run) over n fragments (n <= 64) at
-** offsets k (ascending) of the RGBA8888 words dst: vertex colours col[4 i
-** ..] at weights p[3 j ..] (smooth) or the flat colour col[0..3], texels
-** ct[4 j ..], as gles_debug_modulate_write; returns 0 when run */
+** fused stage's kernel (f8_modwrite_run) over n fragments (n <= 64,
+** padded to a whole group as the stage pads) at offsets k (ascending) of
+** the RGBA8888 words dst: vertex colours col[4 i ..] at weights p[3 j ..]
+** (smooth) or the flat colour col[0..3], texels ct[4 j ..], as
+** gles_debug_modulate_write; returns 0 when run */
 int gles_debug_modulate_write_f(int smooth, int rgb, int kind, unsigned int alpha_func, uint32_t alpha_ref,
                                 const float col[12], int n, const uint8_t *k, const float *p, const float *ct,
                                 uint32_t *dst);

@@ -80,6 +80,21 @@ AVX2_INLINE void avx2_store3x4_32(__m128i a, __m128i b, __m128i c, void *out)
 #endif
 
 #if SIMD_X86 && NUM_IS_FIXED
+/* the weights of eight fragments in lanes, for the fixed build's fused stage
+** (where WGT is 32 bits) */
+/* the three weights of fragments p[0..7] as eight 32-bit lanes each: the
+** 24 stride-3 integers are three loads; lane L of w[i] is integer 3L + i */
+AVX2_INLINE void avx2_wgt_lanes8(const WGT (*p)[3], __m256i w[3])
+{
+    const __m256i *q = (const __m256i *)(const void *)&p[0][0];
+    const __m256i q0 = _mm256_loadu_si256(q), q1 = _mm256_loadu_si256(q + 1), q2 = _mm256_loadu_si256(q + 2);
+    w[0] = _mm256_permutevar8x32_epi32(_mm256_blend_epi32(_mm256_blend_epi32(q0, q1, 0x92), q2, 0x24),
+                                       _mm256_setr_epi32(0, 3, 6, 1, 4, 7, 2, 5));
+    w[1] = _mm256_permutevar8x32_epi32(_mm256_blend_epi32(_mm256_blend_epi32(q0, q1, 0x24), q2, 0x49),
+                                       _mm256_setr_epi32(1, 4, 7, 2, 5, 0, 3, 6));
+    w[2] = _mm256_permutevar8x32_epi32(_mm256_blend_epi32(_mm256_blend_epi32(q0, q1, 0x49), q2, 0x92),
+                                       _mm256_setr_epi32(2, 5, 0, 3, 6, 1, 4, 7));
+}
 
 /* the four channels of a FRAGV[4] */
 AVX2_INLINE __m256i avx2_load4(const FRAGV *c) { return _mm256_loadu_si256((const __m256i *)(const void *)c); }
@@ -1606,7 +1621,7 @@ AVX2_INLINE unsigned avx2_cmp4_i32(unsigned int func, __m128i a, __m128i b)
 }
 #endif
 /* }==================================================================== */
-#if SIMD_X86 && (NUM_IS_FIXED || defined(GLES_NUM_FLOAT))
+#if SIMD_X86
 /* eight fragments' channel values (0..255 in 32-bit lanes, one register
 ** per channel) as eight RGBA8888 words: packed to bytes R0-3 G0-3 B0-3
 ** A0-3 | R4-7 ... per 128-bit lane, then interleaved */
@@ -1636,22 +1651,53 @@ static inline void modwrite_alpha_setup(ModWriteAlpha *t, unsigned int func, uin
     t->ref_v = _mm256_set1_epi32((int)ref);
 }
 
-/* the weights of eight fragments in lanes, for the fused stages of the
-** fixed and float builds (where WGT is 32 bits) */
-/* the three weights of fragments p[0..7] as eight 32-bit lanes each: the
-** 24 stride-3 integers are three loads; lane L of w[i] is integer 3L + i */
-AVX2_INLINE void avx2_wgt_lanes8(const WGT (*p)[3], __m256i w[3])
+/* pads fragments 0..n-1 (offsets k, weights p when smooth, coordinates tc
+** and texels ct + j stride where given) to a whole group of `group` with
+** copies of the last one, in the free slots past n; returns the padded
+** count. A copy computes the last fragment's word again from the same
+** stored word, in the same group, so writing it writes that word again. */
+static inline int avx2_modwrite_pad(int group, int n, uint8_t *k, WGT (*p)[3], int smooth, TexCoord *tc, FRAGV *ct,
+                                    size_t stride)
 {
-    const __m256i *q = (const __m256i *)(const void *)&p[0][0];
-    const __m256i q0 = _mm256_loadu_si256(q), q1 = _mm256_loadu_si256(q + 1), q2 = _mm256_loadu_si256(q + 2);
-    w[0] = _mm256_permutevar8x32_epi32(_mm256_blend_epi32(_mm256_blend_epi32(q0, q1, 0x92), q2, 0x24),
-                                       _mm256_setr_epi32(0, 3, 6, 1, 4, 7, 2, 5));
-    w[1] = _mm256_permutevar8x32_epi32(_mm256_blend_epi32(_mm256_blend_epi32(q0, q1, 0x24), q2, 0x49),
-                                       _mm256_setr_epi32(1, 4, 7, 2, 5, 0, 3, 6));
-    w[2] = _mm256_permutevar8x32_epi32(_mm256_blend_epi32(_mm256_blend_epi32(q0, q1, 0x49), q2, 0x92),
-                                       _mm256_setr_epi32(2, 5, 0, 3, 6, 1, 4, 7));
+    for (; n % group; n++) {
+        k[n] = k[n - 1];
+        if (smooth)
+            memcpy(p[n], p[n - 1], sizeof p[n]);
+        if (tc)
+            tc[n] = tc[n - 1];
+        if (ct)
+            memcpy(ct + (size_t)n * stride, ct + (size_t)(n - 1) * stride, 4 * sizeof *ct);
+    }
+    return n;
 }
 
+/* the texture where a fused stage samples it: level 0, GL_LINEAR,
+** power-of-two sizes and REPEAT or CLAMP_TO_EDGE on each axis
+** (texture_span_sample_group > 1), and the span sampler that gives the
+** exact texel of a fragment the lanes leave */
+typedef struct ModWriteTexture {
+    const Texture *tex;
+    TexSpanSampler sampler;
+    const FRAGV *unorm8;
+    const uint32_t *texels;
+    int w, h, log2w, log2h, repeat_s, repeat_t;
+} ModWriteTexture;
+
+static inline void modwrite_texture_setup(ModWriteTexture *m, const Texture *t, TexSpanSampler sampler,
+                                          const FRAGV *unorm8)
+{
+    const TexImage *l0 = &t->level[0];
+    m->tex = t;
+    m->sampler = sampler;
+    m->unorm8 = unorm8;
+    m->texels = l0->texels;
+    m->w = l0->width;
+    m->h = l0->height;
+    m->log2w = __builtin_ctz((unsigned)l0->width);
+    m->log2h = __builtin_ctz((unsigned)l0->height);
+    m->repeat_s = t->wrap_s == GL_REPEAT;
+    m->repeat_t = t->wrap_t == GL_REPEAT;
+}
 #endif
 
 #if SIMD_X86 && NUM_IS_FIXED
@@ -1710,14 +1756,7 @@ typedef struct Avx2ModWrite {
     FRAGV t_row[4];              /* 0.30 (1/2 without dither) */
     __m256 t_row_f;              /* t_row twice, as floats (0 without dither: the top bits are kept) */
     int replace;                 /* the texel is the colour (a lone REPLACE unit of an RGBA texture) */
-    /* the texture where the kernel samples it (avx2_modwrite_run's
-    ** source 1): its level 0, wrap modes, and the span sampler that gives
-    ** the exact texel of a fragment left to the exact code */
-    const Texture *tex;
-    TexSpanSampler sampler;
-    const FRAGV *unorm8;
-    const int *tx32;
-    int log2w, log2h, repeat_s, repeat_t;
+    ModWriteTexture tx;          /* where the kernel samples (avx2_modwrite_run's source 1) */
 } Avx2ModWrite;
 
 /* setup for vertex colours a[0..2] in [0, 2^30] (smooth), or the flat
@@ -1735,28 +1774,11 @@ static inline void avx2_modwrite_setup(Avx2ModWrite *m, const FRAGV *const a[3],
         }
     m->dither = 0;
     m->replace = 0;
-    m->tex = NULL;
+    m->tx.tex = NULL;
 }
 
 /* the texel as the colour (REPLACE) instead of MODULATE */
 static inline void avx2_modwrite_replace(Avx2ModWrite *m) { m->replace = 1, m->rgb = 0; }
-
-/* sampling in the kernel: level 0 of t, GL_LINEAR, power-of-two sizes and
-** REPEAT or CLAMP_TO_EDGE on each axis (texture_span_sample_group 8); the
-** exact texel from `sampler` */
-static inline void avx2_modwrite_texture(Avx2ModWrite *m, const Texture *t, TexSpanSampler sampler,
-                                         const FRAGV *unorm8)
-{
-    const TexImage *l0 = &t->level[0];
-    m->tex = t;
-    m->sampler = sampler;
-    m->unorm8 = unorm8;
-    m->tx32 = (const int *)(const void *)l0->texels;
-    m->log2w = __builtin_ctz((unsigned)l0->width);
-    m->log2h = __builtin_ctz((unsigned)l0->height);
-    m->repeat_s = t->wrap_s == GL_REPEAT;
-    m->repeat_t = t->wrap_t == GL_REPEAT;
-}
 
 /* the RGB565 writer's thresholds t_row[x & 3] (dither_row's) */
 static inline void avx2_modwrite_dither(Avx2ModWrite *m, int dither, const FRAGV t_row[4])
@@ -1987,26 +2009,6 @@ AVX2_INLINE uint32_t avx2_modwrite565_1(const Avx2ModWrite *m, const FRAGV *cons
     return v4_pack565(v4_add(v4_mul01(cv, va), v4_mul01(v4_rgb0(dv), v4_one_minus(va))), m->dither, t_d);
 }
 
-/* pads fragments 0..n-1 (offsets k, weights p when smooth, coordinates tc
-** and texels ct + j stride where given) to a whole group of eight with
-** copies of the last one, in the free slots past n; returns the padded
-** count. A copy computes the last fragment's word again from the same
-** stored word, so writing it writes that word again. */
-static inline int avx2_modwrite_pad(int n, uint8_t *k, WGT (*p)[3], int smooth, TexCoord *tc, FRAGV *ct,
-                                    size_t stride)
-{
-    for (; n % 8; n++) {
-        k[n] = k[n - 1];
-        if (smooth)
-            memcpy(p[n], p[n - 1], sizeof p[n]);
-        if (tc)
-            tc[n] = tc[n - 1];
-        if (ct)
-            memcpy(ct + (size_t)n * stride, ct + (size_t)(n - 1) * stride, 4 * sizeof *ct);
-    }
-    return n;
-}
-
 /* eight fragments' texels from source 0 (the texels ct + k stride that a
 ** fetch stage sampled) or 1 (sampled here at the coordinates tc[0..7]);
 ** 0 when source 0 has a texel outside [0, 2^31) */
@@ -2016,7 +2018,8 @@ AVX2_INLINE int avx2_modwrite_texels8(const Avx2ModWrite *m, int src, const FRAG
     if (src == 0)
         return avx2_texels_ct8(ct, stride, T);
     __m256i g[4], a, b;
-    avx2_linear_texels8(m->tx32, m->log2w, m->log2h, tc, m->repeat_s, m->repeat_t, g, &a, &b);
+    avx2_linear_texels8((const int *)(const void *)m->tx.texels, m->tx.log2w, m->tx.log2h, tc, m->tx.repeat_s,
+                        m->tx.repeat_t, g, &a, &b);
     avx2_bilerp8_float(g, a, b, T);
     return 1;
 }
@@ -2027,7 +2030,7 @@ AVX2_INLINE const FRAGV *avx2_modwrite_texel1(const Avx2ModWrite *m, int src, co
 {
     if (src == 0)
         return ct;
-    m->sampler(m->tex, 1, tc, tc, tc, tmp, 4, m->unorm8);
+    m->tx.sampler(m->tx.tex, 1, tc, tc, tc, tmp, 4, m->tx.unorm8);
     return tmp;
 }
 
@@ -2133,154 +2136,6 @@ static inline void avx2_modwrite_dispatch(const Avx2ModWrite *m, const FRAGV *co
 /* }==================================================================== */
 #endif
 
-#if SIMD_X86 && defined(GLES_NUM_FLOAT)
-/* {====================================================================
-** The float build's colour, MODULATE of a lone unit, alpha test and
-** RGBA8888 write (blend kind 0, 1 or 2) for eight fragments in 32-bit
-** lanes, one register per channel: the scalar code's IEEE operations in
-** its order, lane by lane (frag_lerp3f, frag_clamp01, frag_mul,
-** fragment_alpha8, v4_rgba8), so every word is the chain's. */
-
-typedef struct F8ModWrite {
-    __m256 col[3][4];            /* the vertex colours, or the flat colour clamped in col[0] */
-    int smooth, rgb, kind;
-    ModWriteAlpha alpha;         /* the alpha test */
-} F8ModWrite;
-
-static inline void f8_modwrite_setup(F8ModWrite *m, const FRAGV *const a[3], int smooth, int rgb, int kind,
-                                     unsigned int alpha_func, uint32_t alpha_ref)
-{
-    m->smooth = smooth, m->rgb = rgb, m->kind = kind;
-    modwrite_alpha_setup(&m->alpha, alpha_func, alpha_ref);
-    for (int i = 0; i < 3; i++)
-        for (int c = 0; c < 4; c++)
-            m->col[i][c] = _mm256_set1_ps(smooth ? a[i][c] : frag_clamp01(a[0][c]));
-}
-
-/* v4_clamp01's operation order (NaN and -0 pass as there) */
-AVX2_INLINE __m256 f8_clamp01(__m256 v) { return _mm256_min_ps(_mm256_set1_ps(1), _mm256_max_ps(_mm256_setzero_ps(), v)); }
-
-/* frag_to_unorm(v, 255, 1/2) of eight lanes (v4_pack_unorm8's selects) */
-AVX2_INLINE __m256i f8_unorm8(__m256 v)
-{
-    __m256 x = _mm256_add_ps(_mm256_mul_ps(v, _mm256_set1_ps(255)), _mm256_set1_ps(0.5f));
-    x = _mm256_blendv_ps(x, _mm256_set1_ps(255), _mm256_cmp_ps(v, _mm256_set1_ps(1), _CMP_GE_OQ));
-    x = _mm256_blendv_ps(_mm256_setzero_ps(), x, _mm256_cmp_ps(v, _mm256_setzero_ps(), _CMP_GT_OQ));
-    return _mm256_cvttps_epi32(x);
-}
-
-/* eight fragments' channels c + k stride as four registers */
-AVX2_INLINE void f8_channels(const FRAGV *c, size_t stride, __m256 ch[4])
-{
-    __m256 q[4];
-    for (int k = 0; k < 4; k++)
-        q[k] = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(c + k * stride)),
-                                    _mm_loadu_ps(c + (k + 4) * stride), 1);
-    const __m256 t0 = _mm256_unpacklo_ps(q[0], q[1]), t1 = _mm256_unpackhi_ps(q[0], q[1]);
-    const __m256 t2 = _mm256_unpacklo_ps(q[2], q[3]), t3 = _mm256_unpackhi_ps(q[2], q[3]);
-    ch[0] = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0));
-    ch[1] = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2));
-    ch[2] = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0));
-    ch[3] = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2));
-}
-
-/* the words written over d by eight fragments (weights p, texels ct + k
-** stride) */
-AVX2_INLINE __m256i f8_modwrite8(const F8ModWrite *m, int smooth, int kind, const WGT (*p)[3], const FRAGV *ct,
-                                 size_t stride, __m256i d)
-{
-    __m256 t[4], c[4], y[4];
-    f8_channels(ct, stride, t);
-    if (smooth) {
-        __m256i wi[3];
-        avx2_wgt_lanes8(p, wi);
-        const __m256 w0 = _mm256_castsi256_ps(wi[0]), w1 = _mm256_castsi256_ps(wi[1]), w2 = _mm256_castsi256_ps(wi[2]);
-        for (int i = 0; i < 4; i++)
-            c[i] = f8_clamp01(_mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(m->col[0][i], w0), _mm256_mul_ps(m->col[1][i], w1)),
-                                            _mm256_mul_ps(m->col[2][i], w2)));
-    } else {
-        for (int i = 0; i < 4; i++)
-            c[i] = m->col[0][i];
-    }
-    for (int i = 0; i < 4; i++)
-        y[i] = _mm256_mul_ps(c[i], t[i]);
-    if (m->rgb)
-        y[3] = c[3];
-    __m256i pass = _mm256_set1_epi32(-1);
-    if (m->alpha.test)
-        pass = avx2_cmp_i32(&m->alpha.cmp, f8_unorm8(y[3]), m->alpha.ref_v);
-    if (kind) {
-        const __m256i byte = _mm256_set1_epi32(0xFF);
-        for (int i = 0; i < 4; i++)
-            y[i] = f8_clamp01(y[i]);
-        const __m256 va = y[3], ia = _mm256_sub_ps(_mm256_set1_ps(1), va);
-        for (int i = 0; i < 4; i++) {
-            const __m256i di = i == 3 ? _mm256_srli_epi32(d, 24) : _mm256_and_si256(_mm256_srli_epi32(d, 8 * i), byte);
-            const __m256 dv = _mm256_div_ps(_mm256_cvtepi32_ps(di), _mm256_set1_ps(255));
-            y[i] = kind == 1 ? _mm256_add_ps(_mm256_mul_ps(y[i], va), _mm256_mul_ps(dv, ia)) : _mm256_add_ps(y[i], dv);
-        }
-    }
-    __m256i v[4];
-    for (int i = 0; i < 4; i++)
-        v[i] = f8_unorm8(y[i]);
-    const __m256i w = avx2_pack_rgba8x8(v);
-    return _mm256_blendv_epi8(d, w, pass);
-}
-
-/* the kernel over fragments 0..n-1 at the ascending offsets k of dst;
-** a tail of fewer than eight by v4_rgba8 one fragment at a time */
-AVX2_INLINE void f8_modwrite_run(const F8ModWrite *mw, const FRAGV *const a[3], int smooth, int kind, int n,
-                                 const uint8_t *k, const WGT (*p)[3], const FRAGV *ct, size_t stride, uint32_t *dst)
-{
-    const F8ModWrite local = *mw, *m = &local;   /* not aliased by the framebuffer stores */
-    int j = 0;
-    for (; j + 8 <= n; j += 8) {
-        const int run = k[j + 7] == k[j] + 7;
-        const __m256i idx = _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)&k[j]));
-        const __m256i d = !kind && !m->alpha.test ? _mm256_setzero_si256()
-                        : run ? _mm256_loadu_si256((const __m256i *)(const void *)&dst[k[j]])
-                              : _mm256_i32gather_epi32((const int *)(const void *)dst, idx, 4);
-        const __m256i w = f8_modwrite8(m, smooth, kind, &p[j], ct + (size_t)j * stride, stride, d);
-        if (run) {
-            _mm256_storeu_si256((__m256i *)(void *)&dst[k[j]], w);
-        } else {
-            uint32_t words[8];
-            _mm256_storeu_si256((__m256i *)(void *)words, w);
-            for (int i = 0; i < 8; i++)
-                dst[k[j + i]] = words[i];
-        }
-    }
-    for (; j < n; j++) {
-        const V4 c = smooth ? v4_lerp3f_clamp01(v4_load(a[0]), v4_load(a[1]), v4_load(a[2]), p[j])
-                            : v4_clamp01(v4_load(a[0]));
-        V4 mm = v4_mul01(c, v4_load(ct + (size_t)j * stride));
-        if (m->rgb)
-            mm = v4_keep_alpha(mm, c);
-        FRAGV ch[4];
-        v4_store(ch, mm);
-        uint32_t *at = &dst[k[j]];
-        if (!m->alpha.test || fragment_compare(m->alpha.func, fragment_alpha8(ch[3]), m->alpha.ref))
-            *at = v4_rgba8(mm, *at, kind);
-    }
-}
-
-/* f8_modwrite_run with the colour's interpolation (m->smooth) and the
-** blend (m->kind) fixed per instance */
-static inline void f8_modwrite_dispatch(const F8ModWrite *m, const FRAGV *const a[3], int n, const uint8_t *k,
-                                        const WGT (*p)[3], const FRAGV *ct, size_t stride, uint32_t *dst)
-{
-#define MODWRITE(S, K) f8_modwrite_run(m, a, S, K, n, k, p, ct, stride, dst)
-    switch (m->smooth * 3 + m->kind) {
-    case 0: MODWRITE(0, 0); break;
-    case 1: MODWRITE(0, 1); break;
-    case 2: MODWRITE(0, 2); break;
-    case 3: MODWRITE(1, 0); break;
-    case 4: MODWRITE(1, 1); break;
-    default: MODWRITE(1, 2); break;
-    }
-#undef MODWRITE
-}
-/* }==================================================================== */
-#endif
+#include "span_float8.h"
 
 #endif

@@ -69,8 +69,8 @@ typedef struct ChainStages {
     SpanStage write_565, write_565_alpha;
     SpanStage rect_source;
     SpanStage coords[GLES_MAX_TEXTURE_UNITS], coords_rect[GLES_MAX_TEXTURE_UNITS];
-    /* the AVX2 instances of the fixed build (all three, the first also for
-    ** RGB565) and the float build (modulate_write, RGBA8888); else NULL */
+    /* the AVX2 instances of the fixed and float builds (RGBA8888 and
+    ** RGB565); else NULL */
     SpanStage modulate_write, sample_write;
     int modulate_write_565;
 } ChainStages;
@@ -87,6 +87,26 @@ typedef struct ChainStages {
 #pragma GCC push_options
 #pragma GCC target("avx2")
 #include "span_avx2.h"
+#if NUM_IS_FIXED || defined(GLES_NUM_FLOAT)
+/* a test's fragments for a fused stage's kernel: copies with room for the
+** padded group, as the stage pads its chunk */
+typedef struct DebugGroup {
+    uint8_t k[SPAN_CHUNK];
+    WGT p[SPAN_CHUNK][3];
+    FRAGV ct[SPAN_CHUNK][4];
+} DebugGroup;
+
+/* n fragments into g, padded to a whole group of `group` when pad (n > 0);
+** returns the count */
+static int debug_group(DebugGroup *g, int n, const uint8_t *k, const WGT *p, const FRAGV *ct, int smooth, int pad,
+                       int group)
+{
+    memcpy(g->k, k, (size_t)n);
+    memcpy(g->p, p, (size_t)n * sizeof g->p[0]);
+    memcpy(g->ct, ct, (size_t)n * sizeof g->ct[0]);
+    return pad && n > 0 ? avx2_modwrite_pad(group, n, g->k, g->p, smooth, NULL, g->ct[0], 4) : n;
+}
+#endif
 #define STAGE(name) name##_avx2
 #define CHAIN_SIMD 1
 #include "span_stages.h"
@@ -122,16 +142,12 @@ static int debug_modulate_write_avx2(const Avx2ModWrite *m, const FRAGV *const a
                                      void *dst, const FRAGV unorm5[32], const FRAGV unorm6[64])
 {
     const int smooth = m->smooth, kind = m->kind;
-    /* copies with room for the padded group, as the stage pads its chunk */
-    uint8_t k[SPAN_CHUNK];
-    WGT p[SPAN_CHUNK][3];
-    FRAGV ct[SPAN_CHUNK][4];
-    memcpy(k, k_in, (size_t)n);
-    memcpy(p, p_in, (size_t)n * sizeof p[0]);
-    memcpy(ct, ct_in, (size_t)n * sizeof ct[0]);
+    DebugGroup g;
     const int live = n;
-    if (pad && n > 0)
-        n = avx2_modwrite_pad(n, k, p, smooth, NULL, ct[0], 4);
+    n = debug_group(&g, n, k_in, p_in[0], ct_in, smooth, pad, 8);
+    uint8_t *const k = g.k;
+    WGT (*const p)[3] = g.p;
+    FRAGV (*const ct)[4] = g.ct;
     int exact = n % 8;
     for (int j = 0; j + 8 <= n; j += 8) {
         uint32_t d[8];
@@ -167,8 +183,10 @@ int gles_debug_modulate_write_f(int smooth, int rgb, int kind, unsigned int alph
         return -1;
     const FRAGV *const a[3] = { col, smooth ? col + 4 : col, smooth ? col + 8 : col };
     F8ModWrite m;
-    f8_modwrite_setup(&m, a, smooth != 0, rgb != 0, kind, alpha_func, alpha_ref);
-    f8_modwrite_dispatch(&m, a, n, k, (const WGT (*)[3])p, ct, 4, dst);
+    f8_modwrite_setup(&m, a, smooth != 0, rgb != 0, 0, kind, alpha_func, alpha_ref);
+    DebugGroup g;
+    const int padded = debug_group(&g, n, k, p, ct, smooth != 0, 1, F8_N);
+    f8_modwrite_dispatch(&m, 0, 0, padded, n, g.k, (const WGT (*)[3])g.p, g.ct[0], 4, NULL, 0, dst);
     return 0;
 #else
     (void)smooth, (void)rgb, (void)kind, (void)alpha_func, (void)alpha_ref, (void)col, (void)n, (void)k, (void)p,
@@ -376,10 +394,10 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
                           && !ctx->color_logic_op
                           && cs->modulate_write != NULL;
     const int modulate_write = writes_fused && first_modulates;
-    /* ... sampling too where the unit's sampler is the bilinear kernel of
-    ** eight lanes (stage_sample_write), and then also for a lone REPLACE
-    ** unit of an RGBA texture */
-    const int sample_write = writes_fused && (first_modulates || direct) && ctx->sample_group[lone] == 8;
+    /* ... sampling too where the unit's sampler is a bilinear vector kernel
+    ** (stage_sample_write), and then also for a lone REPLACE unit of an
+    ** RGBA texture */
+    const int sample_write = writes_fused && (first_modulates || direct) && ctx->sample_group[lone] > 1;
     /* a rectangle's colour and window depth; that stage reads the colour
     ** itself, so only the tests need it then */
     if (rect && (!(modulate_write || sample_write) || tests))

@@ -1143,10 +1143,10 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
         avx2_modwrite_replace(&m);
     int n = b->n;
     if (src == 1) {
-        avx2_modwrite_texture(&m, tex, ctx->samplers[u], ctx->texel_unorm8);
+        modwrite_texture_setup(&m.tx, tex, ctx->samplers[u], ctx->texel_unorm8);
         /* the tail padded to a group of eight (the slots past n are free) */
         _Static_assert(SPAN_CHUNK % 8 == 0, "a padded group stays within the chunk");
-        n = avx2_modwrite_pad(n, b->k, b->p, smooth, b->tc, NULL, 0);
+        n = avx2_modwrite_pad(8, n, b->k, b->p, smooth, b->tc, NULL, 0);
     }
     const size_t at = (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
     const int rgb565 = ctx->color_format == GLES_COLOR_RGB565;
@@ -1175,20 +1175,50 @@ static void STAGE(stage_sample_write)(GlesContext *ctx, const TriSetup *t, SpanB
 #if CHAIN_SIMD && defined(GLES_NUM_FLOAT)
 /* stage_color_modulate of the one enabled unit (or a rectangle's colour
 ** and stage_env's MODULATE), the alpha test and write_rgba8 (blend kind 0,
-** 1 or 2) in one pass of eight lanes: the float build's operations in its
-** order (f8_modwrite8), so the words are the separate stages' */
-static void STAGE(stage_modulate_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+** 1 or 2) or stage_write_565 / stage_write_565_alpha in one pass of eight
+** float lanes: the float build's operations in their order
+** (f8_modwrite), so the words are the separate stages'. Source 0 takes
+** the texels a fetch stage sampled; source 1 samples at the coordinates a
+** coordinates stage left (a bilinear sampler with a vector kernel), and
+** there the unit may be a lone REPLACE of an RGBA texture. The chunk's
+** tail is padded to a whole group with copies of its last fragment. */
+static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesContext *ctx, const TriSetup *t,
+                                                                       SpanBuf *b, int src)
 {
     const int u = __builtin_ctz(ctx->tex_units_on);
-    const int kind = span_blend_kind(ctx);
-    const int smooth = !b->rect && t->smooth;
+    const Texture *tex = ctx->units[u].bound;
+    const int replace = ctx->units[u].env_mode == GL_REPLACE;
+    const int smooth = !replace && !b->rect && t->smooth;
     const FRAGV *flat = b->rect ? b->rect->in.c : t->flat;
     const FRAGV *const a[3] = { smooth ? t->col[0] : flat, smooth ? t->col[1] : flat, smooth ? t->col[2] : flat };
     F8ModWrite m;
-    f8_modwrite_setup(&m, a, smooth, ctx->units[u].bound->format != GL_RGBA, kind,
+    f8_modwrite_setup(&m, a, smooth, tex->format != GL_RGBA, replace, span_blend_kind(ctx),
                       ctx->alpha_test ? ctx->alpha_func : GL_ALWAYS, fragment_alpha_ref8(ctx));
-    f8_modwrite_dispatch(&m, a, b->n, b->k, (const WGT (*)[3])b->p, b->ct[0][u], GLES_MAX_TEXTURE_UNITS * 4,
-                         (uint32_t *)ctx->color + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0);
+    const size_t stride = GLES_MAX_TEXTURE_UNITS * 4;
+    if (src == 1)
+        modwrite_texture_setup(&m.tx, tex, ctx->samplers[u], ctx->texel_unorm8);
+    _Static_assert(SPAN_CHUNK % 8 == 0, "a padded group stays within the chunk");
+    const int n = avx2_modwrite_pad(F8_N, b->n, b->k, b->p, smooth, src == 1 ? b->tc : NULL,
+                                    src == 0 ? b->ct[0][u] : NULL, stride);
+    const size_t at = (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
+    const int rgb565 = ctx->color_format == GLES_COLOR_RGB565;
+    if (rgb565) {
+        FRAGV t_row[4];
+        dither_row(b, ctx->dither, t_row);
+        f8_modwrite_dither(&m, ctx->dither, t_row);
+    }
+    f8_modwrite_dispatch(&m, src, rgb565, n, b->n, b->k, (const WGT (*)[3])b->p, b->ct[0][u], stride, b->tc, b->x0,
+                         rgb565 ? (void *)((uint16_t *)ctx->color + at) : (void *)((uint32_t *)ctx->color + at));
+}
+
+static void STAGE(stage_modulate_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    STAGE(modulate_write)(ctx, t, b, 0);
+}
+
+static void STAGE(stage_sample_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    STAGE(modulate_write)(ctx, t, b, 1);
 }
 #endif
 
@@ -1224,12 +1254,10 @@ static const ChainStages STAGE(chain_stages) = {
     .write_rgba8_masked = STAGE(stage_write_rgba8_masked),
     .write_565 = STAGE(stage_write_565),
     .write_565_alpha = STAGE(stage_write_565_alpha),
-#if CHAIN_SIMD && NUM_IS_FIXED
+#if CHAIN_SIMD && (NUM_IS_FIXED || defined(GLES_NUM_FLOAT))
     .modulate_write = STAGE(stage_modulate_write),
     .sample_write = STAGE(stage_sample_write),
     .modulate_write_565 = 1,
-#elif CHAIN_SIMD && defined(GLES_NUM_FLOAT)
-    .modulate_write = STAGE(stage_modulate_write),
 #endif
     .rect_source = STAGE(stage_rect_source),
 };

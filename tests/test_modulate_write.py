@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from conftest import HAS_SIMD, make_ctx
+from conftest import HAS_SIMD, make_ctx, set_ortho
 
 from gles import constants as C
 
@@ -317,22 +317,22 @@ def _model_f32(smooth, rgb, kind, func, ref, col, p, ct, d):
         return np.minimum(one, np.maximum(zero, v))
 
     def unorm8(v):
-        x = (v * f(255) + f(0.5)).astype(np.float32)
+        x = (v * f(255) + f(0.5)).astype(f)
         x = np.where(v >= one, f(255), x)
         x = np.where(v > zero, x, zero)
         return x.astype(np.int64)
 
-    col = col.astype(np.float32)
+    col = col.astype(f)
     if smooth:
-        w = p.astype(np.float32)
+        w = p.astype(f)
         c = clamp01((col[0][None, :] * w[:, 0:1] + col[1][None, :] * w[:, 1:2]) + col[2][None, :] * w[:, 2:3])
     else:
         c = np.broadcast_to(clamp01(col[0]), (len(ct), 4))
-    y = (c * ct.astype(np.float32)).astype(np.float32)
+    y = (c * ct.astype(f)).astype(f)
     if rgb:
         y[:, 3] = c[:, 3]
     passed = np.array([_compare(func, int(a), ref) for a in unorm8(y[:, 3])])
-    dv = np.stack([(d >> (8 * i)) & 0xFF for i in range(4)], axis=1).astype(np.float32) / f(255)
+    dv = np.stack([(d >> (8 * i)) & 0xFF for i in range(4)], axis=1).astype(f) / f(255)
     if kind:
         y = clamp01(y)
         va = y[:, 3:4]
@@ -348,22 +348,25 @@ def test_float_build_kernel_matches_float32_model(kind):
     scalar code's operations in their order. Over 2^17 fragments per blend
     a one-ulp change moves a few bytes across a rounding boundary: another
     association of the colour's sum, or 1 - alpha off by an ulp, fails the
-    SRC_ALPHA case."""
+    SRC_ALPHA case. Every fourth trial has a count that is not a whole
+    number of groups (the tail padded with copies of the last fragment,
+    which must not be taken for eight neighbouring pixels)."""
     ctx = make_ctx("float", 1, 1)
     if not ctx.simd == "avx2":
         pytest.skip("no AVX2 instance")
     ffi, lib = ctx._ffi, ctx._lib
+    f, ctype, entry = np.float32, "float *", lib.gles_debug_modulate_write_f
     rng = np.random.default_rng(300 + kind)
     for trial in range(2048):
         smooth, rgb = trial % 2, (trial // 2) % 2
         func = FUNCS[trial % len(FUNCS)] if trial % 5 == 0 else C.GL_ALWAYS
         ref = int(rng.integers(0, 256))
-        n = 64
-        col = rng.uniform(-0.1, 1.1, (3, 4)).astype(np.float32)
-        w = rng.uniform(0, 1, (n, 3)).astype(np.float32)
+        n = int(rng.integers(1, 64)) if trial % 4 == 3 else 64
+        col = rng.uniform(-0.1, 1.1, (3, 4)).astype(f)
+        w = rng.uniform(0, 1, (n, 3)).astype(f)
         w /= w.sum(axis=1, keepdims=True)
-        w = w.astype(np.float32)
-        ct = rng.uniform(0, 1, (n, 4)).astype(np.float32)
+        w = w.astype(f)
+        ct = rng.uniform(0, 1, (n, 4)).astype(f)
         d = rng.integers(0, 1 << 32, n, dtype=np.uint64).astype(np.uint32)
         k = np.arange(n) if trial % 3 else np.sort(rng.choice(80, n, replace=False))
         k = k.astype(np.uint8)
@@ -371,10 +374,60 @@ def test_float_build_kernel_matches_float32_model(kind):
         dst[k] = d
         out = dst.copy()
         cf = np.ascontiguousarray(col.ravel())
-        assert lib.gles_debug_modulate_write_f(
-            smooth, rgb, kind, func, ref, ffi.cast("float *", cf.ctypes.data), n,
-            ffi.cast("uint8_t *", k.ctypes.data), ffi.cast("float *", w.ctypes.data),
-            ffi.cast("float *", ct.ctypes.data), ffi.cast("uint32_t *", out.ctypes.data)) == 0
+        assert entry(
+            smooth, rgb, kind, func, ref, ffi.cast(ctype, cf.ctypes.data), n,
+            ffi.cast("uint8_t *", k.ctypes.data), ffi.cast(ctype, w.ctypes.data),
+            ffi.cast(ctype, ct.ctypes.data), ffi.cast("uint32_t *", out.ctypes.data)) == 0
         expect = dst.copy()
         expect[k] = _model_f32(smooth, rgb, kind, func, ref, col, w, ct, d)
         np.testing.assert_array_equal(out, expect)
+
+
+@pytest.mark.parametrize("color", ["rgba8888", "rgb565"])
+@pytest.mark.parametrize("wrap", [C.GL_REPEAT, C.GL_CLAMP_TO_EDGE])
+def test_sampling_in_the_fused_stage_matches_reference(numeric, color, wrap):
+    """A lone MODULATE unit of a bilinear texture (sampled inside the fused
+    stage on the fixed and float builds with AVX2) under SRC_ALPHA blending
+    and dithering, with texture coordinates that reach 1e30, infinity and
+    NaN at some vertices: a group with a coordinate that is not finite
+    takes the exact sampler, and every word equals the per-fragment
+    reference's."""
+    w, h = 67, 23
+    rng = np.random.default_rng(41)
+    texels = rng.integers(0, 256, (16, 8, 4), dtype=np.uint8)
+    images = []
+    for flags in (1, 0):
+        ctx = make_ctx(numeric, w, h, color=color, range_check="off")
+        gl = ctx.gl
+        ctx.debug(flags)
+        set_ortho(gl, w, h)
+        tex = gl.glGenTextures(1)
+        gl.glBindTexture(C.GL_TEXTURE_2D, tex)
+        gl.glTexImage2D(C.GL_TEXTURE_2D, 0, C.GL_RGBA, 8, 16, 0, C.GL_RGBA, C.GL_UNSIGNED_BYTE, texels)
+        for pname, value in ((C.GL_TEXTURE_MIN_FILTER, C.GL_LINEAR), (C.GL_TEXTURE_MAG_FILTER, C.GL_LINEAR),
+                             (C.GL_TEXTURE_WRAP_S, wrap), (C.GL_TEXTURE_WRAP_T, wrap)):
+            gl.glTexParameteri(C.GL_TEXTURE_2D, pname, value)
+        gl.glEnable(C.GL_TEXTURE_2D)
+        gl.glEnable(C.GL_BLEND)
+        gl.glBlendFunc(C.GL_SRC_ALPHA, C.GL_ONE_MINUS_SRC_ALPHA)
+        gl.glEnable(C.GL_DITHER)
+        gl.glClearColor(0.2, 0.4, 0.6, 1.0)
+        gl.glClear(C.GL_COLOR_BUFFER_BIT)
+        gl.glEnableClientState(C.GL_VERTEX_ARRAY)
+        gl.glEnableClientState(C.GL_TEXTURE_COORD_ARRAY)
+        gl.glEnableClientState(C.GL_COLOR_ARRAY)
+        specials = (1e30, -1e30, np.inf, -np.inf, np.nan, 3.7, -2.2)
+        g = np.random.default_rng(7)
+        for tri in range(24):
+            verts = g.uniform(-4, [w + 4, h + 4, 0], (3, 3)).astype(np.float32)
+            tc = g.uniform(-3, 3, (3, 2)).astype(np.float32)
+            if tri % 3 == 0:
+                tc[tri % 3, tri % 2] = specials[tri % len(specials)]
+            cols = g.integers(0, 256, (3, 4), dtype=np.uint8)
+            gl.glVertexPointer(3, C.GL_FLOAT, 0, verts)
+            gl.glTexCoordPointer(2, C.GL_FLOAT, 0, tc)
+            gl.glColorPointer(4, C.GL_UNSIGNED_BYTE, 0, cols)
+            gl.glDrawArrays(C.GL_TRIANGLES, 0, 3)
+        assert gl.glGetError() == C.GL_NO_ERROR
+        images.append(ctx.color_buffer())
+    np.testing.assert_array_equal(images[1], images[0])

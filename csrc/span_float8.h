@@ -1,0 +1,372 @@
+/*
+** span_float8.h -- the float build's fused stage: the colour, a lone
+** unit's MODULATE of an RGBA or RGB texture (or REPLACE of an RGBA
+** texture), the alpha test and the RGBA8888 or RGB565 write of eight
+** fragments at a time, with the bilinear sampling of level 0 inside where
+** the unit's sampler is the vector kernel. Lanes are GCC vectors of eight
+** floats, one AVX2 register per channel, and every lane does the scalar
+** code's IEEE operations in their order (frag_lerp3f, frag_clamp01,
+** frag_mul, sample_level's GL_LINEAR and frag_bilerp_rgba8,
+** fragment_alpha8, span_rgba8, fragment_channel), so every word is the
+** separate stages' without a proof. Included by span_avx2.h, inside its
+** AVX2 target. (The double build keeps the separate stages: the same
+** kernel in four double lanes measured 10-20% slower than they are.)
+*/
+#if SIMD_X86 && defined(GLES_NUM_FLOAT)
+
+/* F8_N float lanes; int32 lanes (also what comparing two f8_num gives: -1
+** or 0 per lane); F8_N stored RGB565 words */
+#define F8_N 8
+typedef float f8_num __attribute__((vector_size(32)));
+typedef int32_t f8_mask __attribute__((vector_size(32)));
+typedef int32_t f8_i32 __attribute__((vector_size(32)));
+typedef uint16_t f8_u16 __attribute__((vector_size(16)));
+
+/* m ? a : b per lane */
+AVX2_INLINE f8_num f8_sel(f8_mask m, f8_num a, f8_num b) { return (f8_num)(((f8_mask)a & m) | ((f8_mask)b & ~m)); }
+AVX2_INLINE f8_num f8_set1(NUM x) { return (f8_num){ 0 } + x; }
+
+/* 1 when every lane of m is set */
+AVX2_INLINE int f8_all(f8_mask m)
+{
+    return _mm256_movemask_ps((__m256)m) == 0xFF;
+}
+
+/* NUM_FLOOR per lane, for any finite value */
+AVX2_INLINE f8_num f8_floor(f8_num v)
+{
+    return (f8_num)_mm256_floor_ps((__m256)v);
+}
+
+/* frag_clamp01 (NaN and -0 pass as there) */
+AVX2_INLINE f8_num f8_clamp01(f8_num v)
+{
+    v = f8_sel(v < 0, f8_set1(0), v);
+    return f8_sel(v > 1, f8_set1(1), v);
+}
+
+/* frag_to_unorm(v, maxval, t): 0 unless v > 0, maxval from 1 up, else
+** v maxval + t truncated (below maxval + 1) */
+AVX2_INLINE f8_i32 f8_unorm(f8_num v, NUM maxval, f8_num t)
+{
+    f8_num x = v * maxval + t;
+    x = f8_sel(v >= 1, f8_set1(maxval), x);
+    x = f8_sel(v > 0, x, f8_set1(0));
+    return __builtin_convertvector(x, f8_i32);
+}
+
+/* frag_to_msb(v, bits): floor(v 2^bits), 0 unless v > 0, at most 2^bits - 1 */
+AVX2_INLINE f8_i32 f8_msb(f8_num v, int bits)
+{
+    const NUM top = (NUM)(1 << bits);
+    f8_num x = f8_sel(v > 0, v * top, f8_set1(0));
+    x = f8_sel(x >= top, f8_set1(top - 1), x);
+    return __builtin_convertvector(x, f8_i32);      /* x >= 0: truncation is the floor */
+}
+
+/* int32 lanes as floats */
+AVX2_INLINE f8_num f8_from_i32(f8_i32 c)
+{
+    return (f8_num)_mm256_cvtepi32_ps((__m256i)c);
+}
+
+/* frag_from_unorm(c, maxval) of integer lanes */
+AVX2_INLINE f8_num f8_from_unorm(f8_i32 c, NUM maxval) { return f8_from_i32(c) / maxval; }
+
+/* fragment_channel(v, bits, dither, t) of RGB565's 5- or 6-bit channels */
+AVX2_INLINE f8_i32 f8_channel(f8_num v, int bits, int dither, f8_num t)
+{
+    return dither ? f8_unorm(v, (NUM)((1 << bits) - 1), t) : f8_msb(v, bits);
+}
+
+/* lanes L of out[i] = base[L stride + i] (i < count), for F8_N slots */
+AVX2_INLINE void f8_gather_rows(const NUM *base, size_t stride, int count, f8_num *out)
+{
+    for (int i = 0; i < count; i++) {
+        f8_num v = { 0 };
+        for (int L = 0; L < F8_N; L++)
+            v[L] = base[(size_t)L * stride + (size_t)i];
+        out[i] = v;
+    }
+}
+
+/* the three weights of fragments p[0..F8_N-1] as lanes: lane L of w[i] is
+** value 3L + i of the three vectors that hold them */
+AVX2_INLINE void f8_weights(const WGT (*p)[3], f8_num w[3])
+{
+    f8_num q0, q1, q2;
+    memcpy(&q0, &p[0][0], sizeof q0);
+    memcpy(&q1, &p[0][0] + F8_N, sizeof q1);
+    memcpy(&q2, &p[0][0] + 2 * F8_N, sizeof q2);
+    const f8_num a0 = __builtin_shuffle(q0, q1, (f8_mask){ 0, 3, 6, 9, 12, 15, 0, 0 });
+    const f8_num a1 = __builtin_shuffle(q0, q1, (f8_mask){ 1, 4, 7, 10, 13, 0, 0, 0 });
+    const f8_num a2 = __builtin_shuffle(q0, q1, (f8_mask){ 2, 5, 8, 11, 14, 0, 0, 0 });
+    w[0] = __builtin_shuffle(a0, q2, (f8_mask){ 0, 1, 2, 3, 4, 5, 10, 13 });
+    w[1] = __builtin_shuffle(a1, q2, (f8_mask){ 0, 1, 2, 3, 4, 8, 11, 14 });
+    w[2] = __builtin_shuffle(a2, q2, (f8_mask){ 0, 1, 2, 3, 4, 9, 12, 15 });
+}
+
+/* the s and t of coordinates tc[0..F8_N-1] as lanes */
+AVX2_INLINE void f8_coords(const TexCoord *tc, f8_num *s, f8_num *t)
+{
+    _Static_assert(sizeof(TexCoord) == 2 * sizeof(NUM), "TexCoord is s, t");
+    f8_num q0, q1;
+    memcpy(&q0, tc, sizeof q0);
+    memcpy(&q1, tc + F8_N / 2, sizeof q1);
+    *s = __builtin_shuffle(q0, q1, (f8_mask){ 0, 2, 4, 6, 8, 10, 12, 14 });
+    *t = __builtin_shuffle(q0, q1, (f8_mask){ 1, 3, 5, 7, 9, 11, 13, 15 });
+}
+
+/* m ? a : b of int32 lanes */
+AVX2_INLINE f8_i32 f8_sel_i32(f8_i32 m, f8_i32 a, f8_i32 b) { return (a & m) | (b & ~m); }
+
+/* sample_level's GL_LINEAR indices and weight along one axis of size n (a
+** power of two), REPEAT or CLAMP_TO_EDGE, for finite coordinates: the
+** operations of reduce_coord, texc_scale, texc_ifloor, texc_frac_weight and
+** wrap_index (v4_linear_axis's, in F8_N lanes) */
+AVX2_INLINE void f8_linear_axis(f8_num s, int n, int repeat, f8_i32 *i0, f8_i32 *i1, f8_num *w)
+{
+    if (repeat) {
+        s = s - f8_floor(s);
+    } else {
+        s = f8_sel(s < -1, f8_set1(-1), s);
+        s = f8_sel(s > 2, f8_set1(2), s);
+    }
+    const f8_num uu = s * (NUM)n - (NUM)0.5;
+    const f8_num fl = f8_floor(uu);
+    *w = uu - fl;
+    const f8_i32 i = __builtin_convertvector(fl, f8_i32), j = i + 1;   /* |fl| <= 2n + 1 */
+    if (repeat) {
+        *i0 = i & (n - 1);
+        *i1 = j & (n - 1);
+    } else {
+        const f8_i32 zero = { 0 }, top = zero + (n - 1);
+        *i0 = f8_sel_i32(i > top, top, f8_sel_i32(i < zero, zero, i));
+        *i1 = f8_sel_i32(j > top, top, f8_sel_i32(j < zero, zero, j));
+    }
+}
+
+/* the RGBA8888 words at int32 offsets idx of base */
+AVX2_INLINE f8_i32 f8_gather_words(const uint32_t *base, f8_i32 idx)
+{
+    const int *b = (const int *)(const void *)base;
+    return (f8_i32)_mm256_i32gather_epi32(b, (__m256i)idx, 4);
+}
+
+/* fragment_compare(f, a, ref) of int32 lanes (values 0..255) */
+AVX2_INLINE f8_i32 f8_compare(const ModWriteAlpha *f, f8_i32 a)
+{
+    f8_i32 lt, eq, gt;
+    memcpy(&lt, &f->cmp.lt, sizeof lt);
+    memcpy(&eq, &f->cmp.eq, sizeof eq);
+    memcpy(&gt, &f->cmp.gt, sizeof gt);
+    const f8_i32 ref = (f8_i32){ 0 } + (int32_t)f->ref;
+    const f8_i32 below = a < ref, above = a > ref;
+    return (below & lt) | (above & gt) | (~(below | above) & eq);
+}
+
+/* the fused stage's state for one chunk */
+typedef struct F8ModWrite {
+    f8_num col[3][4];            /* the vertex colours, or the flat colour clamped in col[0] */
+    int smooth, rgb, replace, kind;
+    ModWriteAlpha alpha;         /* the alpha test */
+    int dither;
+    FRAGV t_row[4];              /* the dither thresholds by x & 3 */
+    f8_num thr[4];               /* those of F8_N neighbouring pixels from x & 3 = r */
+    ModWriteTexture tx;          /* where the kernel samples (source 1) */
+} F8ModWrite;
+
+static inline void f8_modwrite_setup(F8ModWrite *m, const FRAGV *const a[3], int smooth, int rgb, int replace,
+                                     int kind, unsigned int alpha_func, uint32_t alpha_ref)
+{
+    memset(m, 0, sizeof *m);
+    m->smooth = smooth, m->rgb = rgb && !replace, m->replace = replace, m->kind = kind;
+    modwrite_alpha_setup(&m->alpha, alpha_func, alpha_ref);
+    for (int i = 0; i < 3; i++)
+        for (int c = 0; c < 4; c++)
+            m->col[i][c] = f8_set1(smooth ? a[i][c] : frag_clamp01(a[0][c]));
+}
+
+/* RGB565's dither thresholds t_row[x & 3] (dither) */
+static inline void f8_modwrite_dither(F8ModWrite *m, int dither, const FRAGV t_row[4])
+{
+    m->dither = dither;
+    for (int x = 0; x < 4; x++)
+        m->t_row[x] = t_row[x];
+    for (int r = 0; r < 4; r++)
+        for (int L = 0; L < F8_N; L++)
+            m->thr[r][L] = t_row[(r + L) & 3];
+}
+
+/* channel i (byte i) of RGBA8888 words as frag_from_unorm(., 255) */
+AVX2_INLINE f8_num f8_byte(f8_i32 g, int i) { return f8_from_unorm((g >> (8 * i)) & 0xFF, 255); }
+
+/* the texels of coordinates tc[0..F8_N-1] as sample_level's GL_LINEAR
+** gives them (frag_bilerp_rgba8's operations); 0 when a coordinate is not
+** finite */
+AVX2_INLINE int f8_sample(const F8ModWrite *m, const TexCoord *tc, f8_num T[4])
+{
+    f8_num s, t;
+    f8_coords(tc, &s, &t);
+    const NUM inf = (NUM)INFINITY;
+    if (!f8_all((s < inf) & (s > -inf) & (t < inf) & (t > -inf)))
+        return 0;
+    f8_i32 x0, x1, y0, y1;
+    f8_num a, b;
+    f8_linear_axis(s, m->tx.w, m->tx.repeat_s, &x0, &x1, &a);
+    f8_linear_axis(t, m->tx.h, m->tx.repeat_t, &y0, &y1, &b);
+    const f8_i32 r0 = y0 * m->tx.w, r1 = y1 * m->tx.w;
+    const f8_i32 g00 = f8_gather_words(m->tx.texels, r0 + x0), g10 = f8_gather_words(m->tx.texels, r0 + x1);
+    const f8_i32 g01 = f8_gather_words(m->tx.texels, r1 + x0), g11 = f8_gather_words(m->tx.texels, r1 + x1);
+    const f8_num ia = 1 - a, ib = 1 - b;
+    for (int i = 0; i < 4; i++) {
+        const f8_num top = f8_byte(g00, i) * ia + f8_byte(g10, i) * a;
+        const f8_num bot = f8_byte(g01, i) * ia + f8_byte(g11, i) * a;
+        T[i] = top * ib + bot * b;
+    }
+    return 1;
+}
+
+/* the words written over d (lanes of the stored words) by F8_N fragments
+** with texels T and weights p; thr: the dither thresholds (RGB565) */
+AVX2_INLINE f8_i32 f8_modwrite(const F8ModWrite *m, int smooth, int kind, int rgb565, const WGT (*p)[3],
+                               const f8_num T[4], f8_i32 d, f8_num thr)
+{
+    f8_num y[4];
+    if (m->replace) {
+        for (int i = 0; i < 4; i++)
+            y[i] = T[i];
+    } else {
+        f8_num c[4];
+        if (smooth) {
+            f8_num w[3];
+            f8_weights(p, w);
+            for (int i = 0; i < 4; i++)
+                c[i] = f8_clamp01(m->col[0][i] * w[0] + m->col[1][i] * w[1] + m->col[2][i] * w[2]);
+        } else {
+            for (int i = 0; i < 4; i++)
+                c[i] = m->col[0][i];
+        }
+        for (int i = 0; i < 4; i++)
+            y[i] = c[i] * T[i];
+        if (m->rgb)
+            y[3] = c[3];
+    }
+    const f8_num half = f8_set1((NUM)0.5);
+    f8_i32 pass = { 0 };
+    pass = ~pass;
+    if (m->alpha.test)
+        pass = f8_compare(&m->alpha, f8_unorm(y[3], 255, half));
+    if (kind) {
+        for (int i = 0; i < 4; i++)
+            y[i] = f8_clamp01(y[i]);
+        const f8_num va = y[3], ia = 1 - va;
+        for (int i = 0; i < (rgb565 ? 3 : 4); i++) {
+            f8_num di;
+            if (!rgb565)
+                di = f8_byte(d, i);
+            else if (i == 1)
+                di = f8_from_unorm((d >> 5) & 63, 63);
+            else
+                di = f8_from_unorm((d >> (i == 0 ? 11 : 0)) & 31, 31);
+            y[i] = kind == 1 ? y[i] * va + di * ia : y[i] + di;
+        }
+    }
+    f8_i32 w;
+    if (rgb565)
+        w = (f8_channel(y[0], 5, m->dither, thr) << 11) | (f8_channel(y[1], 6, m->dither, thr) << 5)
+          | f8_channel(y[2], 5, m->dither, thr);
+    else
+        w = f8_unorm(y[0], 255, half) | (f8_unorm(y[1], 255, half) << 8) | (f8_unorm(y[2], 255, half) << 16)
+          | (f8_unorm(y[3], 255, half) << 24);
+    return (pass & w) | (~pass & d);
+}
+
+/* the kernel over fragments 0..n-1 (n a multiple of F8_N, the first live
+** ones live, the rest, fewer than F8_N, copies of the last live one: a
+** group of copies alone would read the word its original wrote) at the ascending
+** offsets k of dst (pixel x0 + k): texels from source 0 (ct + j stride,
+** sampled by a fetch stage) or 1 (sampled here at tc) */
+AVX2_INLINE void f8_modwrite_run(const F8ModWrite *mw, int src, int smooth, int kind, int rgb565, int n, int live,
+                                 const uint8_t *k, const WGT (*p)[3], const FRAGV *ct, size_t stride,
+                                 const TexCoord *tc, int x0, void *dst)
+{
+    const F8ModWrite local = *mw, *m = &local;   /* not aliased by the framebuffer stores */
+    uint32_t *d32 = dst;
+    uint16_t *d16 = dst;
+    for (int j = 0; j < n; j += F8_N) {
+        f8_num T[4];
+        if (src == 0 || !f8_sample(m, tc + j, T)) {
+            FRAGV texel[F8_N][4];
+            if (src == 1)
+                m->tx.sampler(m->tx.tex, F8_N, tc + j, NULL, NULL, texel[0], 4, m->tx.unorm8);
+            f8_gather_rows(src == 1 ? texel[0] : ct + (size_t)j * stride, src == 1 ? 4 : stride, 4, T);
+        }
+        /* a group with copies is never F8_N neighbouring pixels, whatever
+        ** its offsets say */
+        const int run = j + F8_N <= live && k[j + F8_N - 1] == k[j] + F8_N - 1;
+        f8_i32 d = { 0 };
+        if (kind || m->alpha.test) {
+            if (run && rgb565) {
+                f8_u16 h;
+                memcpy(&h, &d16[k[j]], sizeof h);
+                d = __builtin_convertvector(h, f8_i32);
+            } else if (run) {
+                memcpy(&d, &d32[k[j]], sizeof d);
+            } else {
+                for (int L = 0; L < F8_N; L++)
+                    d[L] = rgb565 ? d16[k[j + L]] : (int32_t)d32[k[j + L]];
+            }
+        }
+        f8_num thr = { 0 };
+        if (rgb565 && m->dither) {
+            if (run)
+                thr = m->thr[(x0 + k[j]) & 3];
+            else
+                for (int L = 0; L < F8_N; L++)
+                    thr[L] = m->t_row[(x0 + k[j + L]) & 3];
+        }
+        const f8_i32 w = f8_modwrite(m, smooth, kind, rgb565, &p[j], T, d, thr);
+        if (run && rgb565) {
+            const f8_u16 h = __builtin_convertvector(w, f8_u16);
+            memcpy(&d16[k[j]], &h, sizeof h);
+        } else if (run) {
+            memcpy(&d32[k[j]], &w, sizeof w);
+        } else {
+            /* padded lanes repeat the last fragment: the same word again */
+            for (int L = 0; L < F8_N; L++) {
+                if (rgb565)
+                    d16[k[j + L]] = (uint16_t)w[L];
+                else
+                    d32[k[j + L]] = (uint32_t)w[L];
+            }
+        }
+    }
+}
+
+/* f8_modwrite_run with the source, the colour's interpolation, the blend
+** and the format fixed per instance */
+static inline void f8_modwrite_dispatch(const F8ModWrite *m, int src, int rgb565, int n, int live, const uint8_t *k,
+                                        const WGT (*p)[3], const FRAGV *ct, size_t stride, const TexCoord *tc,
+                                        int x0, void *dst)
+{
+#define F8_RUN(S, SM, K, F) f8_modwrite_run(m, S, SM, K, F, n, live, k, p, ct, stride, tc, x0, dst)
+#define F8_KINDS(S, SM)                    \
+    switch (m->kind + 3 * rgb565) {        \
+    case 0: F8_RUN(S, SM, 0, 0); break;    \
+    case 1: F8_RUN(S, SM, 1, 0); break;    \
+    case 2: F8_RUN(S, SM, 2, 0); break;    \
+    case 3: F8_RUN(S, SM, 0, 1); break;    \
+    default: F8_RUN(S, SM, 1, 1); break;   \
+    }
+    switch (src * 2 + m->smooth) {
+    case 0: F8_KINDS(0, 0) break;
+    case 1: F8_KINDS(0, 1) break;
+    case 2: F8_KINDS(1, 0) break;
+    default: F8_KINDS(1, 1) break;
+    }
+#undef F8_KINDS
+#undef F8_RUN
+}
+
+#endif
