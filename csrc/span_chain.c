@@ -52,6 +52,14 @@ static inline void dither_row(const SpanBuf *b, int dither, FRAGV t_row[4])
         t_row[x] = dither ? fragment_dither_threshold(x, b->y) : FRAG_ONE / 2;
 }
 
+/* the colour buffer at the chunk's first pixel (RGBA8888 or RGB565 words) */
+static inline void *chunk_color(const GlesContext *ctx, const SpanBuf *b)
+{
+    const size_t at = (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
+    return ctx->color_format == GLES_COLOR_RGB565 ? (void *)((uint16_t *)ctx->color + at)
+                                                  : (void *)((uint32_t *)ctx->color + at);
+}
+
 static inline uint32_t pack565(const FRAGV v[3], int dither, FRAGV t_d)
 {
     return (fragment_channel(v[0], 5, dither, t_d) << 11) | (fragment_channel(v[1], 6, dither, t_d) << 5)

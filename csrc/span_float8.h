@@ -79,10 +79,10 @@ AVX2_INLINE f8_i32 f8_channel(f8_num v, int bits, int dither, f8_num t)
     return dither ? f8_unorm(v, (NUM)((1 << bits) - 1), t) : f8_msb(v, bits);
 }
 
-/* lanes L of out[i] = base[L stride + i] (i < count), for F8_N slots */
-AVX2_INLINE void f8_gather_rows(const NUM *base, size_t stride, int count, f8_num *out)
+/* lanes L of out[i] = base[L stride + i] (i < 4), for F8_N slots */
+AVX2_INLINE void f8_gather_rows(const NUM *base, size_t stride, f8_num out[4])
 {
-    for (int i = 0; i < count; i++) {
+    for (int i = 0; i < 4; i++) {
         f8_num v = { 0 };
         for (int L = 0; L < F8_N; L++)
             v[L] = base[(size_t)L * stride + (size_t)i];
@@ -300,7 +300,7 @@ AVX2_INLINE void f8_modwrite_run(const F8ModWrite *mw, int src, int smooth, int 
             FRAGV texel[F8_N][4];
             if (src == 1)
                 m->tx.sampler(m->tx.tex, F8_N, tc + j, NULL, NULL, texel[0], 4, m->tx.unorm8);
-            f8_gather_rows(src == 1 ? texel[0] : ct + (size_t)j * stride, src == 1 ? 4 : stride, 4, T);
+            f8_gather_rows(src == 1 ? texel[0] : ct + (size_t)j * stride, src == 1 ? 4 : stride, T);
         }
         /* a group with copies is never F8_N neighbouring pixels, whatever
         ** its offsets say */

@@ -1148,7 +1148,6 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
         _Static_assert(SPAN_CHUNK % 8 == 0, "a padded group stays within the chunk");
         n = avx2_modwrite_pad(8, n, b->k, b->p, smooth, b->tc, NULL, 0);
     }
-    const size_t at = (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
     const int rgb565 = ctx->color_format == GLES_COLOR_RGB565;
     if (rgb565) {
         FRAGV t_row[4];
@@ -1157,7 +1156,7 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
     }
     avx2_modwrite_dispatch(&m, a, src, rgb565, n, b->n, b->k, b->x0, (const WGT (*)[3])b->p, b->ct[0][u],
                            GLES_MAX_TEXTURE_UNITS * 4, b->tc,
-                           rgb565 ? (void *)((uint16_t *)ctx->color + at) : (void *)((uint32_t *)ctx->color + at),
+                           chunk_color(ctx, b),
                            ctx->unorm5, ctx->unorm6);
 }
 
@@ -1200,7 +1199,6 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
     _Static_assert(SPAN_CHUNK % 8 == 0, "a padded group stays within the chunk");
     const int n = avx2_modwrite_pad(F8_N, b->n, b->k, b->p, smooth, src == 1 ? b->tc : NULL,
                                     src == 0 ? b->ct[0][u] : NULL, stride);
-    const size_t at = (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
     const int rgb565 = ctx->color_format == GLES_COLOR_RGB565;
     if (rgb565) {
         FRAGV t_row[4];
@@ -1208,7 +1206,7 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
         f8_modwrite_dither(&m, ctx->dither, t_row);
     }
     f8_modwrite_dispatch(&m, src, rgb565, n, b->n, b->k, (const WGT (*)[3])b->p, b->ct[0][u], stride, b->tc, b->x0,
-                         rgb565 ? (void *)((uint16_t *)ctx->color + at) : (void *)((uint32_t *)ctx->color + at));
+                         chunk_color(ctx, b));
 }
 
 static void STAGE(stage_modulate_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
