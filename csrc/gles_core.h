@@ -109,11 +109,15 @@ int gles_debug_modulate_write_f(int smooth, int rgb, int kind, unsigned int alph
 ** RGB565). dst holds uint32_t RGBA8888 words, or (rgb565 != 0) uint16_t
 ** RGB565 words whose first is column x0, dithered when dither != 0. With
 ** pad != 0 a tail of fewer than eight fragments is padded to a group as
-** the stage that samples in the kernel pads it. Returns the fragments the
-** float lanes left to the exact code, or -1 when not run. */
+** the stage that samples in the kernel pads it. With dot3 = 1 (DOT3_RGB,
+** MODULATE alpha) or 2 (DOT3_RGBA) the colour first goes through a first
+** unit's COMBINE DOT3 with its texels ct0[4 j ..] (0.30, scales 1), as
+** stage_dot3_write runs it; ct0 is not read with dot3 = 0. Returns the
+** fragments the float lanes left to the exact code, or -1 when not run. */
 int gles_debug_modulate_write(int smooth, int rgb, int kind, unsigned int alpha_func, uint32_t alpha_ref,
-                              const int64_t col[12], int n, const uint8_t *k, const int32_t *p, const int64_t *ct,
-                              int pad, int rgb565, int dither, int x0, void *dst);
+                              const int64_t col[12], int n, const uint8_t *k, const int32_t *p, int dot3,
+                              const int64_t *ct0, const int64_t *ct, int pad, int rgb565, int dither, int x0,
+                              void *dst);
 /* for tests, fixed build (0 elsewhere): a lane kernel of the vertex batch
 ** over n lanes (a multiple of 8, at most 64), through the AVX2 kernel where
 ** simd != 0 and the CPU has AVX2, else the scalar code; returns 1 when run.

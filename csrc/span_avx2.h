@@ -1757,6 +1757,9 @@ typedef struct Avx2ModWrite {
     __m256 t_row_f;              /* t_row twice, as floats (0 without dither: the top bits are kept) */
     int replace;                 /* the texel is the colour (a lone REPLACE unit of an RGBA texture) */
     ModWriteTexture tx;          /* where the kernel samples (avx2_modwrite_run's source 1) */
+    int dot3;                    /* 0, or a first unit's DOT3 before the MODULATE: 1 DOT3_RGB, 2 DOT3_RGBA */
+    const FRAGV *ct0;            /* that unit's texels, ct0 + j ct0_stride */
+    size_t ct0_stride;
 } Avx2ModWrite;
 
 /* setup for vertex colours a[0..2] in [0, 2^30] (smooth), or the flat
@@ -1775,6 +1778,17 @@ static inline void avx2_modwrite_setup(Avx2ModWrite *m, const FRAGV *const a[3],
     m->dither = 0;
     m->replace = 0;
     m->tx.tex = NULL;
+    m->dot3 = 0;
+    m->ct0 = NULL;
+    m->ct0_stride = 0;
+}
+
+/* the colour goes through a first unit's COMBINE DOT3 with its texels ct0
+** (DOT3_RGB with MODULATE alpha, or rgba: DOT3_RGBA; scales 1) before
+** the MODULATE */
+static inline void avx2_modwrite_dot3(Avx2ModWrite *m, int rgba, const FRAGV *ct0, size_t stride)
+{
+    m->dot3 = rgba ? 2 : 1, m->ct0 = ct0, m->ct0_stride = stride;
 }
 
 /* the texel as the colour (REPLACE) instead of MODULATE */
@@ -1852,11 +1866,28 @@ AVX2_INLINE void avx2_bilerp8_float(const __m256i g[4], __m256i a, __m256i b, __
     }
 }
 
+/* COMBINE DOT3 of texels T0 and colours c (in place, all in [0, 1]): in
+** the rgb lanes 4 sum((T0_i - 1/2)(c_i - 1/2)) clamped to [0, 1], in the
+** alpha lane the same (DOT3_RGBA, rgba) or T0_a c_a (DOT3_RGB's MODULATE) */
+AVX2_INLINE void avx2_dot3_float(int rgba, const __m256 T0[4], __m256 c[4])
+{
+    const __m256 half = _mm256_set1_ps(0.5f);
+    __m256 s = _mm256_mul_ps(_mm256_sub_ps(T0[0], half), _mm256_sub_ps(c[0], half));
+    s = _mm256_add_ps(s, _mm256_mul_ps(_mm256_sub_ps(T0[1], half), _mm256_sub_ps(c[1], half)));
+    s = _mm256_add_ps(s, _mm256_mul_ps(_mm256_sub_ps(T0[2], half), _mm256_sub_ps(c[2], half)));
+    const __m256 d = _mm256_min_ps(_mm256_max_ps(_mm256_mul_ps(s, _mm256_set1_ps(4.0f)), _mm256_setzero_ps()),
+                                   _mm256_set1_ps(1.0f));
+    c[3] = rgba ? d : _mm256_mul_ps(T0[3], c[3]);
+    c[0] = c[1] = c[2] = d;
+}
+
 /* the source colour of eight fragments (weights p[0..7], texels T) after
 ** MODULATE (or the texel, for REPLACE), clamped to [0, 1], as floats
-** y[0..3]; the alpha test's outcome in *pass, the lanes not proved in *bad */
-AVX2_INLINE void avx2_modwrite_source8(const Avx2ModWrite *m, int smooth, const WGT (*p)[3], const __m256 T[4],
-                                       __m256 y[4], __m256i *pass, __m256 *bad)
+** y[0..3]; with m->dot3 the colour first goes through DOT3 with the first
+** unit's texels T0. The alpha test's outcome in *pass, the lanes not
+** proved in *bad */
+AVX2_INLINE void avx2_modwrite_source8(const Avx2ModWrite *m, int smooth, const WGT (*p)[3], const __m256 T0[4],
+                                       const __m256 T[4], __m256 y[4], __m256i *pass, __m256 *bad)
 {
     const __m256 zero = _mm256_setzero_ps(), one = _mm256_set1_ps(1.0f);
     *bad = zero;
@@ -1884,6 +1915,8 @@ AVX2_INLINE void avx2_modwrite_source8(const Avx2ModWrite *m, int smooth, const 
             for (int i = 0; i < 4; i++)
                 c[i] = m->col[0][i];
         }
+        if (m->dot3)
+            avx2_dot3_float(m->dot3 == 2, T0, c);
         for (int i = 0; i < 4; i++)
             y[i] = _mm256_min_ps(_mm256_mul_ps(c[i], T[i]), one);
         if (m->rgb)
@@ -1902,12 +1935,12 @@ AVX2_INLINE void avx2_modwrite_source8(const Avx2ModWrite *m, int smooth, const 
 ** fragments (as avx2_modwrite_source8), into *out; returns the lanes
 ** (bits) the float lanes do not prove (their words in *out are not the
 ** chain's) */
-AVX2_INLINE unsigned avx2_modwrite8(const Avx2ModWrite *m, int smooth, int kind, const WGT (*p)[3], const __m256 T[4],
-                                    __m256i d, __m256i *out)
+AVX2_INLINE unsigned avx2_modwrite8(const Avx2ModWrite *m, int smooth, int kind, const WGT (*p)[3],
+                                    const __m256 T0[4], const __m256 T[4], __m256i d, __m256i *out)
 {
     __m256 y[4], bad;
     __m256i pass;
-    avx2_modwrite_source8(m, smooth, p, T, y, &pass, &bad);
+    avx2_modwrite_source8(m, smooth, p, T0, T, y, &pass, &bad);
     const __m256 one = _mm256_set1_ps(1.0f);
     if (kind) {
         const __m256i byte = _mm256_set1_epi32(0xFF);
@@ -1933,11 +1966,11 @@ AVX2_INLINE unsigned avx2_modwrite8(const Avx2ModWrite *m, int smooth, int kind,
 /* the same over eight stored RGB565 words d (32-bit lanes) for blend kind
 ** 0 or 1, the thresholds' lanes of x & 3 given (x3: 0..3 per lane) */
 AVX2_INLINE unsigned avx2_modwrite565_8(const Avx2ModWrite *m, int smooth, int kind, const WGT (*p)[3],
-                                        const __m256 T[4], __m256i d, __m256i x3, __m256i *out)
+                                        const __m256 T0[4], const __m256 T[4], __m256i d, __m256i x3, __m256i *out)
 {
     __m256 y[4], bad;
     __m256i pass;
-    avx2_modwrite_source8(m, smooth, p, T, y, &pass, &bad);
+    avx2_modwrite_source8(m, smooth, p, T0, T, y, &pass, &bad);
     static const int shift[3] = { 11, 5, 0 }, bits[3] = { 5, 6, 5 };
     if (kind) {
         const __m256 b = _mm256_sub_ps(_mm256_set1_ps(1.0f), y[3]), a = y[3];
@@ -1963,16 +1996,35 @@ AVX2_INLINE unsigned avx2_modwrite565_8(const Avx2ModWrite *m, int smooth, int k
     return (unsigned)_mm256_movemask_ps(bad);
 }
 
-/* the exact chain's source colour for one fragment (stage_color_modulate):
-** colour a[0..2] at weights p (smooth) or the flat colour a[0], texel ct
-** (in [0, 2^31)), or the texel (REPLACE); 0 when it fails the alpha test */
+/* combine_block's DOT3 (scales 1) of the texel t0 and the clamped colour
+** c: 4 sum(frag_mul(t0_i - 1/2, c_i - 1/2)) clamped, in every lane
+** (rgba) or with frag_clamp01(frag_mul(t0_a, c_a)) as the alpha */
+static inline V4 avx2_dot3_exact(int rgba, const FRAGV *t0, V4 c)
+{
+    FRAGV cc[4], out[4];
+    v4_store(cc, c);
+    FRAGV d = 0;
+    for (int i = 0; i < 3; i++)
+        d += frag_mul(t0[i] - FRAG_ONE / 2, cc[i] - FRAG_ONE / 2);
+    out[0] = out[1] = out[2] = frag_clamp01(4 * d);
+    out[3] = rgba ? out[0] : frag_clamp01(frag_mul(t0[3], cc[3]));
+    return v4_load(out);
+}
+
+/* the exact chain's source colour for one fragment (stage_color_modulate,
+** or with m->dot3 stage_color and the two units' stage_env): colour a[0..2]
+** at weights p (smooth) or the flat colour a[0], then DOT3 with the first
+** unit's texel t0 (m->dot3), texel ct (in [0, 2^31)), or the texel
+** (REPLACE); 0 when it fails the alpha test */
 AVX2_INLINE int avx2_modwrite_source1(const Avx2ModWrite *m, const FRAGV *const a[3], int smooth, const WGT *p,
-                                      const FRAGV *ct, V4 *out)
+                                      const FRAGV *t0, const FRAGV *ct, V4 *out)
 {
     V4 mm = v4_load(ct);
     if (!m->replace) {
-        const V4 c = smooth ? v4_lerp3f_clamp01(v4_load(a[0]), v4_load(a[1]), v4_load(a[2]), p)
-                            : v4_clamp01(v4_load(a[0]));
+        V4 c = smooth ? v4_lerp3f_clamp01(v4_load(a[0]), v4_load(a[1]), v4_load(a[2]), p)
+                      : v4_clamp01(v4_load(a[0]));
+        if (m->dot3)
+            c = avx2_dot3_exact(m->dot3 == 2, t0, c);
         mm = v4_mul01(c, mm);
         if (m->rgb)
             mm = v4_keep_alpha(mm, c);
@@ -1986,20 +2038,20 @@ AVX2_INLINE int avx2_modwrite_source1(const Avx2ModWrite *m, const FRAGV *const 
 /* the exact chain for one fragment over the stored RGBA8888 word d
 ** (v4_rgba8) */
 AVX2_INLINE uint32_t avx2_modwrite1(const Avx2ModWrite *m, const FRAGV *const a[3], int smooth, int kind,
-                                    const WGT *p, const FRAGV *ct, uint32_t d)
+                                    const WGT *p, const FRAGV *t0, const FRAGV *ct, uint32_t d)
 {
     V4 mm;
-    return avx2_modwrite_source1(m, a, smooth, p, ct, &mm) ? v4_rgba8(mm, d, kind) : d;
+    return avx2_modwrite_source1(m, a, smooth, p, t0, ct, &mm) ? v4_rgba8(mm, d, kind) : d;
 }
 
 /* the same over the stored RGB565 word d at column x (stage_write_565,
 ** stage_write_565_alpha) */
 AVX2_INLINE uint32_t avx2_modwrite565_1(const Avx2ModWrite *m, const FRAGV *const a[3], int smooth, int kind,
-                                        const WGT *p, const FRAGV *ct, uint32_t d, int x,
+                                        const WGT *p, const FRAGV *t0, const FRAGV *ct, uint32_t d, int x,
                                         const FRAGV unorm5[32], const FRAGV unorm6[64])
 {
     V4 mm;
-    if (!avx2_modwrite_source1(m, a, smooth, p, ct, &mm))
+    if (!avx2_modwrite_source1(m, a, smooth, p, t0, ct, &mm))
         return d;
     const FRAGV t_d = m->t_row[x & 3];
     if (!kind)
@@ -2050,11 +2102,12 @@ AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *mw, const FRAGV *const a[
     uint32_t *dst32 = dst;
     uint16_t *dst16 = dst;
     FRAGV tmp[4];
+#define MODWRITE_T0(i) (m->dot3 ? m->ct0 + (size_t)(i) * m->ct0_stride : NULL)
 #define MODWRITE_EXACT(i, d) \
-    (rgb565 ? avx2_modwrite565_1(m, a, smooth, kind, p[i], avx2_modwrite_texel1(m, src, ct + (size_t)(i) * stride, \
-                                                                                tc + (i), tmp), \
+    (rgb565 ? avx2_modwrite565_1(m, a, smooth, kind, p[i], MODWRITE_T0(i), \
+                                 avx2_modwrite_texel1(m, src, ct + (size_t)(i) * stride, tc + (i), tmp), \
                                  d, x0 + k[i], unorm5, unorm6) \
-            : avx2_modwrite1(m, a, smooth, kind, p[i], \
+            : avx2_modwrite1(m, a, smooth, kind, p[i], MODWRITE_T0(i), \
                              avx2_modwrite_texel1(m, src, ct + (size_t)(i) * stride, tc + (i), tmp), d))
     int j = 0;
     for (; j + 8 <= n; j += 8) {
@@ -2073,13 +2126,14 @@ AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *mw, const FRAGV *const a[
               : run ? _mm256_loadu_si256((const __m256i *)(const void *)&dst32[k[j]])
                     : _mm256_i32gather_epi32((const int *)(const void *)dst32, idx, 4);
         }
-        __m256 T[4];
+        __m256 T[4], T0[4] = { _mm256_setzero_ps() };    /* read only with m->dot3 */
         __m256i w = d;
         unsigned bad = 0xFFu;
-        if (avx2_modwrite_texels8(m, src, ct + (size_t)j * stride, stride, tc + j, T)) {
+        if (avx2_modwrite_texels8(m, src, ct + (size_t)j * stride, stride, tc + j, T)
+            && (!m->dot3 || avx2_texels_ct8(MODWRITE_T0(j), m->ct0_stride, T0))) {
             const __m256i x3 = _mm256_and_si256(_mm256_add_epi32(idx, _mm256_set1_epi32(x0)), _mm256_set1_epi32(3));
-            bad = rgb565 ? avx2_modwrite565_8(m, smooth, kind, &p[j], T, d, x3, &w)
-                         : avx2_modwrite8(m, smooth, kind, &p[j], T, d, &w);
+            bad = rgb565 ? avx2_modwrite565_8(m, smooth, kind, &p[j], T0, T, d, x3, &w)
+                         : avx2_modwrite8(m, smooth, kind, &p[j], T0, T, d, &w);
         }
         uint32_t words[8];
         _mm256_storeu_si256((__m256i *)(void *)words, w);
@@ -2106,6 +2160,7 @@ AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *mw, const FRAGV *const a[
             dst32[k[j]] = MODWRITE_EXACT(j, dst32[k[j]]);
     }
 #undef MODWRITE_EXACT
+#undef MODWRITE_T0
 }
 
 /* avx2_modwrite_run with the texel source, the colour's interpolation

@@ -80,6 +80,7 @@ typedef struct ChainStages {
     /* the AVX2 instances of the fixed and float builds (RGBA8888 and
     ** RGB565); else NULL */
     SpanStage modulate_write, sample_write;
+    SpanStage dot3_write, dot3_sample_write;    /* NULL where the instance has none */
     int modulate_write_565;
 } ChainStages;
 
@@ -102,6 +103,7 @@ typedef struct DebugGroup {
     uint8_t k[SPAN_CHUNK];
     WGT p[SPAN_CHUNK][3];
     FRAGV ct[SPAN_CHUNK][4];
+    FRAGV ct0[SPAN_CHUNK][4];       /* a first unit's texels (DOT3) */
 } DebugGroup;
 
 /* n fragments into g, padded to a whole group of `group` when pad (n > 0);
@@ -145,9 +147,9 @@ static void debug_color_avx2(int clamp, const FRAGV *const col[3], int n, const 
 }
 /* gles_debug_modulate_write's kernel run, with the count of the lanes
 ** the kernel leaves to the exact code, group by group */
-static int debug_modulate_write_avx2(const Avx2ModWrite *m, const FRAGV *const a[3], int n, const uint8_t *k_in,
-                                     const WGT (*p_in)[3], const FRAGV *ct_in, int pad, int rgb565, int x0,
-                                     void *dst, const FRAGV unorm5[32], const FRAGV unorm6[64])
+static int debug_modulate_write_avx2(Avx2ModWrite *m, const FRAGV *const a[3], int n, const uint8_t *k_in,
+                                     const WGT (*p_in)[3], const FRAGV *ct0_in, const FRAGV *ct_in, int pad,
+                                     int rgb565, int x0, void *dst, const FRAGV unorm5[32], const FRAGV unorm6[64])
 {
     const int smooth = m->smooth, kind = m->kind;
     DebugGroup g;
@@ -156,6 +158,13 @@ static int debug_modulate_write_avx2(const Avx2ModWrite *m, const FRAGV *const a
     uint8_t *const k = g.k;
     WGT (*const p)[3] = g.p;
     FRAGV (*const ct)[4] = g.ct;
+    if (m->dot3) {
+        /* the first unit's texels, padded as the stage pads them */
+        memcpy(g.ct0, ct0_in, (size_t)live * sizeof g.ct0[0]);
+        for (int j = live; j < n; j++)
+            memcpy(g.ct0[j], g.ct0[live - 1], sizeof g.ct0[0]);
+        avx2_modwrite_dot3(m, m->dot3 == 2, g.ct0[0], 4);
+    }
     int exact = n % 8;
     for (int j = 0; j + 8 <= n; j += 8) {
         uint32_t d[8];
@@ -167,12 +176,13 @@ static int debug_modulate_write_avx2(const Avx2ModWrite *m, const FRAGV *const a
                              _mm256_set1_epi32(x0)),
             _mm256_set1_epi32(3));
         __m256i w;
-        __m256 T[4];
-        if (!avx2_texels_ct8(ct[j], 4, T))
+        __m256 T[4], T0[4] = { _mm256_setzero_ps() };
+        if (!avx2_texels_ct8(ct[j], 4, T) || (m->dot3 && !avx2_texels_ct8(g.ct0[j], 4, T0)))
             exact += 8;
         else
-            exact += __builtin_popcount(rgb565 ? avx2_modwrite565_8(m, smooth, kind, (const WGT (*)[3])&p[j], T, dv, x3, &w)
-                                               : avx2_modwrite8(m, smooth, kind, (const WGT (*)[3])&p[j], T, dv, &w));
+            exact += __builtin_popcount(
+                rgb565 ? avx2_modwrite565_8(m, smooth, kind, (const WGT (*)[3])&p[j], T0, T, dv, x3, &w)
+                       : avx2_modwrite8(m, smooth, kind, (const WGT (*)[3])&p[j], T0, T, dv, &w));
     }
     const TexCoord tc[SPAN_CHUNK] = { { 0, 0 } };   /* source 0 reads no coordinates */
     avx2_modwrite_dispatch(m, a, 0, rgb565, n, live, k, x0, (const WGT (*)[3])p, ct[0], 4, tc, dst, unorm5, unorm6);
@@ -204,11 +214,13 @@ int gles_debug_modulate_write_f(int smooth, int rgb, int kind, unsigned int alph
 }
 
 int gles_debug_modulate_write(int smooth, int rgb, int kind, unsigned int alpha_func, uint32_t alpha_ref,
-                              const int64_t col[12], int n, const uint8_t *k, const int32_t *p, const int64_t *ct,
-                              int pad, int rgb565, int dither, int x0, void *dst)
+                              const int64_t col[12], int n, const uint8_t *k, const int32_t *p, int dot3,
+                              const int64_t *ct0, const int64_t *ct, int pad, int rgb565, int dither, int x0,
+                              void *dst)
 {
 #if SIMD_X86 && NUM_IS_FIXED
-    if (n < 0 || n > SPAN_CHUNK || kind < 0 || kind > (rgb565 ? 1 : 2) || x0 < 0 || simd_detect() < SIMD_AVX2)
+    if (n < 0 || n > SPAN_CHUNK || kind < 0 || kind > (rgb565 ? 1 : 2) || x0 < 0 || dot3 < 0 || dot3 > 2
+        || simd_detect() < SIMD_AVX2)
         return -1;
     for (int i = 0; i < 12; i++)
         if (smooth && (col[i] < 0 || col[i] > FRAG_ONE))
@@ -216,6 +228,7 @@ int gles_debug_modulate_write(int smooth, int rgb, int kind, unsigned int alpha_
     const FRAGV *const a[3] = { col, smooth ? col + 4 : col, smooth ? col + 8 : col };
     Avx2ModWrite m;
     avx2_modwrite_setup(&m, a, smooth != 0, rgb != 0, kind, alpha_func, alpha_ref);
+    m.dot3 = dot3;
     FRAGV t_row[4], unorm5[32], unorm6[64];
     for (int x = 0; x < 4; x++)
         t_row[(x0 + x) & 3] = dither ? fragment_dither_threshold(x0 + x, 0) : FRAG_ONE / 2;
@@ -225,11 +238,11 @@ int gles_debug_modulate_write(int smooth, int rgb, int kind, unsigned int alpha_
             unorm5[d] = frag_from_unorm(d, 31);
         unorm6[d] = frag_from_unorm(d, 63);
     }
-    return debug_modulate_write_avx2(&m, a, n, k, (const WGT (*)[3])p, ct, pad, rgb565 != 0, x0, dst, unorm5,
+    return debug_modulate_write_avx2(&m, a, n, k, (const WGT (*)[3])p, ct0, ct, pad, rgb565 != 0, x0, dst, unorm5,
                                      unorm6);
 #else
     (void)smooth, (void)rgb, (void)kind, (void)alpha_func, (void)alpha_ref, (void)col, (void)n, (void)k, (void)p,
-        (void)ct, (void)pad, (void)rgb565, (void)dither, (void)x0, (void)dst;
+        (void)dot3, (void)ct0, (void)ct, (void)pad, (void)rgb565, (void)dither, (void)x0, (void)dst;
     return -1;
 #endif
 }
@@ -340,6 +353,46 @@ int span_blend_kind(const GlesContext *ctx)
     return -1;
 }
 
+/* whether operand op of source src is a source colour or alpha (SRC_COLOR
+** or SRC_ALPHA as `op`) of the unit's texture or the primary colour (which
+** is the previous colour at the first enabled unit) */
+static int dot3_arg(unsigned int src, unsigned int op, unsigned int want_op, int texture)
+{
+    return op == want_op && (texture ? src == GL_TEXTURE : src == GL_PRIMARY_COLOR || src == GL_PREVIOUS);
+}
+
+/* exactly two units, the first COMBINE DOT3_RGB (its alpha MODULATE) or
+** DOT3_RGBA of its texture and the primary colour (in either order) with
+** scales 1, the second MODULATE of an RGBA or RGB texture: the pair the
+** fused stage takes (stage_dot3_write) */
+static int span_dot3_pair(const GlesContext *ctx)
+{
+    const unsigned int units = ctx->tex_units_on, rest = units & (units - 1);
+    if (!units || !rest || (rest & (rest - 1)))
+        return 0;
+    const TexUnit *a = &ctx->units[__builtin_ctz(units)], *b = &ctx->units[__builtin_ctz(rest)];
+    if (b->env_mode != GL_MODULATE || (b->bound->format != GL_RGBA && b->bound->format != GL_RGB))
+        return 0;
+    if (a->env_mode != GL_COMBINE || (a->combine_rgb != GL_DOT3_RGB && a->combine_rgb != GL_DOT3_RGBA)
+        || a->rgb_scale != 1.0)
+        return 0;
+    for (int t = 0; t < 2; t++)     /* the texture as argument t, the colour as the other */
+        if (dot3_arg(a->src_rgb[t], a->op_rgb[t], GL_SRC_COLOR, 1)
+            && dot3_arg(a->src_rgb[1 - t], a->op_rgb[1 - t], GL_SRC_COLOR, 0))
+            break;
+        else if (t == 1)
+            return 0;
+    if (a->combine_rgb == GL_DOT3_RGBA)
+        return a->alpha_scale == 1.0;
+    if (a->combine_alpha != GL_MODULATE || a->alpha_scale != 1.0)
+        return 0;
+    for (int t = 0; t < 2; t++)
+        if (dot3_arg(a->src_alpha[t], a->op_alpha[t], GL_SRC_ALPHA, 1)
+            && dot3_arg(a->src_alpha[1 - t], a->op_alpha[1 - t], GL_SRC_ALPHA, 0))
+            return 1;
+    return 0;
+}
+
 /* the stages for the current state into s, for rectangles (rect) or
 ** triangles; returns their number */
 static int compose(GlesContext *ctx, SpanStage *s, int rect)
@@ -397,11 +450,15 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     ** one stage, where the instance has it (stage_modulate_write) */
     const int plain565 = ctx->color_format == GLES_COLOR_RGB565 && ctx->color_mask[0] && ctx->color_mask[1]
                       && ctx->color_mask[2];
-    const int writes_fused = lone >= 0 && !ctx->fog && !(ctx->alpha_test && tests)
+    const int target_fused = !ctx->fog && !(ctx->alpha_test && tests)
                           && ((plain && bk >= 0) || (plain565 && (bk == 0 || bk == 1) && cs->modulate_write_565))
-                          && !ctx->color_logic_op
-                          && cs->modulate_write != NULL;
+                          && !ctx->color_logic_op;
+    const int writes_fused = lone >= 0 && target_fused && cs->modulate_write != NULL;
     const int modulate_write = writes_fused && first_modulates;
+    /* a first unit's DOT3 before a second one's MODULATE, on triangles
+    ** (stage_dot3_write; the second unit sampled there too where it can
+    ** be, stage_dot3_sample_write) */
+    const int dot3 = !rect && target_fused && cs->dot3_write != NULL && span_dot3_pair(ctx);
     /* ... sampling too where the unit's sampler is a bilinear vector kernel
     ** (stage_sample_write), and then also for a lone REPLACE unit of an
     ** RGBA texture */
@@ -422,8 +479,20 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
         s[n++] = cs->persp;
         if (lod)
             s[n++] = cs->neighbours;
-        if (!direct && !modulate)
+        if (!direct && !modulate && !dot3)
             s[n++] = cs->color;
+    }
+    if (dot3) {
+        const int second = __builtin_ctz(units & (units - 1));
+        s[n++] = cs->fetch[first];
+        if (ctx->sample_group[second] > 1) {
+            s[n++] = cs->coords[second];
+            s[n++] = cs->dot3_sample_write;
+        } else {
+            s[n++] = cs->fetch[second];
+            s[n++] = cs->dot3_write;
+        }
+        return n;
     }
     if (sample_write) {
         s[n++] = rect ? cs->coords_rect[lone] : cs->coords[lone];

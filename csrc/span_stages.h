@@ -1108,12 +1108,16 @@ static void STAGE(stage_rect_source)(GlesContext *ctx, const TriSetup *t, SpanBu
 ** it (avx2_modwrite8). Source 0 takes the texels a fetch stage sampled;
 ** source 1 samples at the coordinates a coordinates stage left (a
 ** bilinear sampler with a vector kernel, texture_span_sample_group 8), and
-** there the unit may be a lone REPLACE of an RGBA texture. Vertex colours
-** outside [0, 1] go through the separate stages. */
+** there the unit may be a lone REPLACE of an RGBA texture. With dot3 the
+** units are two (span_dot3_pair): the first one's COMBINE DOT3 of its
+** texels (a fetch stage sampled them) and the colour comes before the
+** second one's MODULATE. Vertex colours outside [0, 1] go through the
+** separate stages. */
 static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesContext *ctx, const TriSetup *t,
-                                                                       SpanBuf *b, int src)
+                                                                       SpanBuf *b, int src, int dot3)
 {
-    const int u = __builtin_ctz(ctx->tex_units_on);
+    const unsigned int units = ctx->tex_units_on;
+    const int u0 = __builtin_ctz(units), u = dot3 ? __builtin_ctz(units & (units - 1)) : u0;
     const Texture *tex = ctx->units[u].bound;
     const int kind = span_blend_kind(ctx);
     const int replace = ctx->units[u].env_mode == GL_REPLACE;
@@ -1127,7 +1131,13 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
     if (!in_range) {
         if (src == 1)
             STAGE(chunk_sample)(ctx, b, u, 0);
-        STAGE(stage_color_modulate)(ctx, t, b, u);
+        if (dot3) {
+            STAGE(stage_color)(ctx, t, b);
+            STAGE(stage_env)(ctx, b, u0);
+            STAGE(stage_env)(ctx, b, u);
+        } else {
+            STAGE(stage_color_modulate)(ctx, t, b, u);
+        }
         if (ctx->alpha_test)
             STAGE(stage_alpha)(ctx, t, b);
         if (ctx->color_format == GLES_COLOR_RGB565)
@@ -1141,12 +1151,15 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
                         fragment_alpha_ref8(ctx));
     if (replace)
         avx2_modwrite_replace(&m);
+    const size_t stride = GLES_MAX_TEXTURE_UNITS * 4;
+    if (dot3)
+        avx2_modwrite_dot3(&m, ctx->units[u0].combine_rgb == GL_DOT3_RGBA, b->ct[0][u0], stride);
     int n = b->n;
     if (src == 1) {
         modwrite_texture_setup(&m.tx, tex, ctx->samplers[u], ctx->texel_unorm8);
         /* the tail padded to a group of eight (the slots past n are free) */
         _Static_assert(SPAN_CHUNK % 8 == 0, "a padded group stays within the chunk");
-        n = avx2_modwrite_pad(8, n, b->k, b->p, smooth, b->tc, NULL, 0);
+        n = avx2_modwrite_pad(8, n, b->k, b->p, smooth, b->tc, dot3 ? b->ct[0][u0] : NULL, stride);
     }
     const int rgb565 = ctx->color_format == GLES_COLOR_RGB565;
     if (rgb565) {
@@ -1154,20 +1167,28 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
         dither_row(b, ctx->dither, t_row);
         avx2_modwrite_dither(&m, ctx->dither, t_row);
     }
-    avx2_modwrite_dispatch(&m, a, src, rgb565, n, b->n, b->k, b->x0, (const WGT (*)[3])b->p, b->ct[0][u],
-                           GLES_MAX_TEXTURE_UNITS * 4, b->tc,
-                           chunk_color(ctx, b),
-                           ctx->unorm5, ctx->unorm6);
+    avx2_modwrite_dispatch(&m, a, src, rgb565, n, b->n, b->k, b->x0, (const WGT (*)[3])b->p, b->ct[0][u], stride,
+                           b->tc, chunk_color(ctx, b), ctx->unorm5, ctx->unorm6);
 }
 
 static void STAGE(stage_modulate_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
-    STAGE(modulate_write)(ctx, t, b, 0);
+    STAGE(modulate_write)(ctx, t, b, 0, 0);
 }
 
 static void STAGE(stage_sample_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
-    STAGE(modulate_write)(ctx, t, b, 1);
+    STAGE(modulate_write)(ctx, t, b, 1, 0);
+}
+
+static void STAGE(stage_dot3_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    STAGE(modulate_write)(ctx, t, b, 0, 1);
+}
+
+static void STAGE(stage_dot3_sample_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    STAGE(modulate_write)(ctx, t, b, 1, 1);
 }
 #endif
 
@@ -1256,6 +1277,10 @@ static const ChainStages STAGE(chain_stages) = {
     .modulate_write = STAGE(stage_modulate_write),
     .sample_write = STAGE(stage_sample_write),
     .modulate_write_565 = 1,
+#endif
+#if CHAIN_SIMD && NUM_IS_FIXED
+    .dot3_write = STAGE(stage_dot3_write),
+    .dot3_sample_write = STAGE(stage_dot3_sample_write),
 #endif
     .rect_source = STAGE(stage_rect_source),
 };

@@ -19,7 +19,7 @@ from typing import Any
 
 import numpy as np
 import pytest
-from conftest import BUILDS, HAS_SIMD, colour_window, random_triangles
+from conftest import BUILDS, HAS_SIMD, colour_window, make_ctx, random_triangles, set_frustum, set_ortho
 
 from gles import constants as C
 
@@ -98,8 +98,24 @@ def set_env(gl: Any, env: dict) -> None:
 
 
 def render(numeric: str, flags: int, s: dict) -> tuple:
-    ctx, gl, rng = colour_window(numeric, flags, W, H, s["persp"], s["seed"])
-    gl.glShadeModel(C.GL_SMOOTH)
+    if s.get("rgb565"):
+        ctx = make_ctx(numeric, W, H, color="rgb565", depth=0, stencil=0)
+        ctx.debug(flags)
+        gl, rng = ctx.gl, np.random.default_rng(s["seed"])
+        (set_frustum if s["persp"] else set_ortho)(gl, W, H)
+        gl.glClearColor(*rng.uniform(0, 1, 4))
+        gl.glClear(C.GL_COLOR_BUFFER_BIT)
+        if not s.get("dither", True):
+            gl.glDisable(C.GL_DITHER)
+    else:
+        ctx, gl, rng = colour_window(numeric, flags, W, H, s["persp"], s["seed"])
+    if s.get("blend"):
+        gl.glEnable(C.GL_BLEND)
+        gl.glBlendFunc(*s["blend"])
+    if s.get("alpha_test"):
+        gl.glEnable(C.GL_ALPHA_TEST)
+        gl.glAlphaFunc(*s["alpha_test"])
+    gl.glShadeModel(s.get("shade", C.GL_SMOOTH))
     verts, _ = random_triangles(rng, s["persp"], 5, W)
     # a covering quad first (two triangles): whole chunks of live fragments
     if s["persp"]:
@@ -166,4 +182,30 @@ def test_dot3_then_modulate(numeric: str, fn: int, scale: float) -> None:
         s = {"units": 2, "envs": [dot3_env(fn, C.GL_MODULATE, scale), {"mode": C.GL_MODULATE}],
              "formats": [(C.GL_RGBA, 4), (C.GL_RGBA, 4)], "persp": bool(seed & 1),
              "linear": [True, bool(seed & 2)], "seed": 100 + seed}
+        check(numeric, s)
+
+
+@pytest.mark.parametrize("numeric", BUILDS)
+def test_dot3_then_modulate_on_every_target(numeric: str) -> None:
+    """The pair the fixed build fuses (stage_dot3_write): DOT3_RGB (MODULATE
+    alpha) or DOT3_RGBA at scale 1 with the sources in either order, then
+    MODULATE of an RGBA or RGB texture, on RGBA8888 (no blend, SRC_ALPHA,
+    ONE/ONE; an alpha test) and RGB565 (dithered or not, no blend or
+    SRC_ALPHA), smooth and flat, bilinear or nearest on each unit."""
+    rng = np.random.default_rng(21)
+    blends = (None, (C.GL_SRC_ALPHA, C.GL_ONE_MINUS_SRC_ALPHA), (C.GL_ONE, C.GL_ONE))
+    for case in range(24):
+        env = dot3_env(C.GL_DOT3_RGBA if case % 3 == 2 else C.GL_DOT3_RGB, C.GL_MODULATE, 1.0)
+        if case % 2:
+            env["src_rgb"][:2] = env["src_rgb"][1::-1]
+            env["src_alpha"][:2] = [C.GL_PRIMARY_COLOR, C.GL_TEXTURE]
+        rgb565 = case % 4 == 3
+        second = (C.GL_RGB, 3) if case % 5 == 1 else (C.GL_RGBA, 4)
+        s = {"units": 2, "envs": [env, {"mode": C.GL_MODULATE}],
+             "formats": [FORMATS[int(rng.integers(len(FORMATS)))], second],
+             "persp": case % 4 == 1, "linear": [bool(rng.random() < 0.7), bool(rng.random() < 0.7)],
+             "seed": 300 + case, "rgb565": rgb565, "dither": case % 8 != 3,
+             "blend": blends[case % (2 if rgb565 else 3)],
+             "alpha_test": (C.GL_GREATER, 0.4) if case % 6 == 5 else None,
+             "shade": C.GL_FLAT if case % 7 == 6 else C.GL_SMOOTH}
         check(numeric, s)

@@ -61,8 +61,22 @@ def _pack565(v, x, dither) -> int:
     return word
 
 
-def _model(smooth, rgb, kind, func, ref, col, p, ct, d, rgb565=0, dither=0, x=0) -> int:
-    """One fragment's word as the reference chain forms it."""
+def _frag_mul(a: int, b: int) -> int:
+    """frag_mul: the 0.30 product rounded, (a b + 2^29) >> 30 (an arithmetic shift)."""
+    return (a * b + (1 << 29)) >> 30
+
+
+def _dot3(dot3: int, t0, c) -> list:
+    """combine_block's DOT3 (scales 1) of the texel t0 and the colour c:
+    4 sum(frag_mul(t0_i - 1/2, c_i - 1/2)) clamped in the rgb channels, and
+    in alpha the same (DOT3_RGBA, dot3 = 2) or MODULATE's t0_a c_a."""
+    d = _clamp01(4 * sum(_frag_mul(int(t0[i]) - ONE // 2, c[i] - ONE // 2) for i in range(3)))
+    return [d, d, d, d if dot3 == 2 else _clamp01(_frag_mul(int(t0[3]), c[3]))]
+
+
+def _model(smooth, rgb, kind, func, ref, col, p, ct, d, rgb565=0, dither=0, x=0, dot3=0, t0=None) -> int:
+    """One fragment's word as the reference chain forms it (with dot3, a
+    first unit's DOT3 of its texel t0 and the colour comes first)."""
     if smooth:
         c = []
         for i in range(4):
@@ -71,6 +85,8 @@ def _model(smooth, rgb, kind, func, ref, col, p, ct, d, rgb565=0, dither=0, x=0)
             c.append(_clamp01(v if acc >= 0 else -v))
     else:
         c = [_clamp01(col[0][i]) for i in range(4)]
+    if dot3:
+        c = _dot3(dot3, t0, c)
     m = [(c[i] * ct[i] + (1 << 29)) >> 30 for i in range(4)]  # MODULATE, frag_mul
     if rgb:
         m[3] = c[3]
@@ -97,29 +113,34 @@ def _model(smooth, rgb, kind, func, ref, col, p, ct, d, rgb565=0, dither=0, x=0)
     return sum(_to_unorm8(v) << (8 * i) for i, v in enumerate(out))
 
 
-def _run(smooth, rgb, kind, func, ref, col, p, ct, dst, k, rgb565=0, dither=0, x0=0, pad=0):
+def _run(smooth, rgb, kind, func, ref, col, p, ct, dst, k, rgb565=0, dither=0, x0=0, pad=0, dot3=0, t0=None):
     """The kernel's words at offsets k of dst, and its count of exact lanes."""
     ctx = make_ctx("fixed", 1, 1)
     ffi, lib = ctx._ffi, ctx._lib
     n = len(k)
     p = np.ascontiguousarray(p, dtype=np.int32).reshape(-1)
     ct = np.ascontiguousarray(ct, dtype=np.int64).reshape(-1)
+    t0 = np.ascontiguousarray(ct if t0 is None else t0, dtype=np.int64).reshape(-1)
+    assert t0.size >= 4 * n
     k = np.ascontiguousarray(k, dtype=np.uint8)
     out = np.array(dst, dtype=np.uint16 if rgb565 else np.uint32)
     exact = lib.gles_debug_modulate_write(
         smooth, rgb, kind, func, ref, [int(v) for v in np.ravel(col)], n,
-        ffi.cast("uint8_t *", k.ctypes.data), ffi.cast("int32_t *", p.ctypes.data),
-        ffi.cast("int64_t *", ct.ctypes.data), pad, rgb565, dither, x0, ffi.cast("void *", out.ctypes.data))
+        ffi.cast("uint8_t *", k.ctypes.data), ffi.cast("int32_t *", p.ctypes.data), dot3,
+        ffi.cast("int64_t *", t0.ctypes.data), ffi.cast("int64_t *", ct.ctypes.data), pad, rgb565, dither, x0,
+        ffi.cast("void *", out.ctypes.data))
     assert exact >= 0
     return out, exact
 
 
-def _expect(smooth, rgb, kind, func, ref, col, p, ct, dst, k, rgb565=0, dither=0, x0=0):
+def _expect(smooth, rgb, kind, func, ref, col, p, ct, dst, k, rgb565=0, dither=0, x0=0, dot3=0, t0=None):
     out = np.array(dst, dtype=np.uint16 if rgb565 else np.uint32)
     for j, off in enumerate(k):
         pj = p[j] if smooth else None
         x = x0 + int(off)
-        out[off] = _model(smooth, rgb, kind, func, ref, col, pj, ct[j], int(dst[off]), rgb565, dither, x)
+        t0j = None if t0 is None else t0[j]
+        out[off] = _model(smooth, rgb, kind, func, ref, col, pj, ct[j], int(dst[off]), rgb565, dither, x,
+                          dot3, t0j)
     return out
 
 
@@ -196,6 +217,70 @@ def test_rounding_ties_and_their_neighbours(kind):
                 out, exact = _run(smooth, 0, kind, C.GL_ALWAYS, 0, col, p, ct, dst, k)
                 expect = _expect(smooth, 0, kind, C.GL_ALWAYS, 0, col, p, ct, dst, k)
                 np.testing.assert_array_equal(out, expect)
+                total += exact
+    assert total > 0          # the ties did reach the exact code
+
+
+@pytest.mark.parametrize("kind", [0, 1, 2], ids=["none", "alpha", "add"])
+@pytest.mark.parametrize("dot3", [1, 2], ids=["dot3_rgb", "dot3_rgba"])
+def test_dot3_before_the_modulate_matches_the_integer_model(dot3, kind):
+    """stage_dot3_write's kernel: a first unit's COMBINE DOT3 of its texels
+    t0 and the colour, then the MODULATE, on random inputs whose channels
+    often sit at 1/2 (DOT3's zero), 0 and 1, smooth and flat, RGBA and RGB,
+    RGBA8888 and (kinds 0 and 1) RGB565, counts that are not whole groups."""
+    rng = np.random.default_rng(400 + 3 * dot3 + kind)
+    lanes = exact_total = 0
+    for trial in range(48):
+        smooth, rgb = trial % 2, (trial // 2) % 2
+        rgb565 = int(kind < 2 and trial % 3 == 0)
+        n = int(rng.integers(1, 65)) if trial % 4 == 3 else 64
+        col = rng.integers(0, ONE + 1, (3, 4))
+        col[:, :3][rng.random((3, 3)) < 0.2] = ONE // 2
+        p = _weights(rng, n)
+        ct, t0 = _texels(rng, n), _texels(rng, n)
+        t0[rng.random((n, 4)) < 0.1] = ONE // 2
+        dst = rng.integers(0, 1 << 32, 80, dtype=np.uint64).astype(np.uint32)
+        if rgb565:
+            dst &= 0xFFFF
+        k = np.arange(n) if trial % 2 else np.sort(rng.choice(80, n, replace=False))
+        func = FUNCS[trial % len(FUNCS)] if trial % 3 == 1 else C.GL_ALWAYS
+        ref = int(rng.integers(0, 256))
+        args = (smooth, rgb, kind, func, ref, col, p, ct, dst, k, rgb565, trial % 2, 0)
+        out, exact = _run(*args, pad=trial % 2, dot3=dot3, t0=t0)
+        np.testing.assert_array_equal(out, _expect(*args, dot3=dot3, t0=t0))
+        lanes += n - n % 8
+        exact_total += max(exact - n % 8, 0)
+    assert exact_total <= 0.05 * lanes
+
+
+@pytest.mark.parametrize("kind", [0, 1, 2], ids=["none", "alpha", "add"])
+def test_dot3_at_the_rounding_ties(kind):
+    """DOT3 results at the ties of the final rounding: with the colour
+    (1, 1/2, 1/2) only the red product counts, frag_mul(x, 1/2) with x =
+    t0_r - 1/2, so DOT3 gives D = 4 floor((x + 1) / 2); with a second
+    texel of 1 the byte is floor(255 D / 2^30 + 1/2). x is put where D
+    meets each tie and up to 40 units of 2^-30 either side; the alpha,
+    t0_a c_a, is placed at the ties too (DOT3_RGB)."""
+    rng = np.random.default_rng(17 + kind)
+    total = 0
+    for b in list(range(0, 255, 9)) + [254]:
+        tie = ((2 * b + 1) * ONE + 509) // 510
+        n = 24
+        x = np.clip(tie // 2 + np.arange(-n // 2, n // 2) * 3 + rng.integers(0, 3, n), 0, ONE // 2)
+        t0 = np.full((n, 4), ONE)
+        t0[:, 0] = ONE // 2 + x
+        t0[:, 1] = rng.integers(0, ONE + 1, n)              # times c_g - 1/2 = 0
+        t0[:, 3] = np.clip(tie + np.arange(-n // 2, n // 2) * 3, 0, ONE)
+        col = np.array([[ONE, ONE // 2, ONE // 2, ONE]] * 3)
+        ct = np.full((n, 4), ONE)
+        p = np.tile([ONE, 0, 0], (n, 1))
+        dst = rng.integers(0, 1 << 32, n, dtype=np.uint64).astype(np.uint32)
+        k = np.arange(n)
+        for smooth in (0, 1):
+            for dot3 in (1, 2):
+                args = (smooth, 0, kind, C.GL_ALWAYS, 0, col, p, ct, dst, k)
+                out, exact = _run(*args, dot3=dot3, t0=t0)
+                np.testing.assert_array_equal(out, _expect(*args, dot3=dot3, t0=t0))
                 total += exact
     assert total > 0          # the ties did reach the exact code
 
