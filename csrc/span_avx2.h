@@ -1758,8 +1758,10 @@ typedef struct Avx2ModWrite {
     int replace;                 /* the texel is the colour (a lone REPLACE unit of an RGBA texture) */
     ModWriteTexture tx;          /* where the kernel samples (avx2_modwrite_run's source 1) */
     int dot3;                    /* 0, or a first unit's DOT3 before the MODULATE: 1 DOT3_RGB, 2 DOT3_RGBA */
-    const FRAGV *ct0;            /* that unit's texels, ct0 + j ct0_stride */
+    const FRAGV *ct0;            /* that unit's texels, ct0 + j ct0_stride, */
     size_t ct0_stride;
+    const TexCoord *tc0;         /* or (where not NULL) sampled here at tc0[j] */
+    ModWriteTexture tx0;
 } Avx2ModWrite;
 
 /* setup for vertex colours a[0..2] in [0, 2^30] (smooth), or the flat
@@ -1781,6 +1783,8 @@ static inline void avx2_modwrite_setup(Avx2ModWrite *m, const FRAGV *const a[3],
     m->dot3 = 0;
     m->ct0 = NULL;
     m->ct0_stride = 0;
+    m->tc0 = NULL;
+    m->tx0.tex = NULL;
 }
 
 /* the colour goes through a first unit's COMBINE DOT3 with its texels ct0
@@ -1789,6 +1793,13 @@ static inline void avx2_modwrite_setup(Avx2ModWrite *m, const FRAGV *const a[3],
 static inline void avx2_modwrite_dot3(Avx2ModWrite *m, int rgba, const FRAGV *ct0, size_t stride)
 {
     m->dot3 = rgba ? 2 : 1, m->ct0 = ct0, m->ct0_stride = stride;
+}
+
+/* ... the first unit sampled here at the coordinates tc0 (as the texels of
+** avx2_modwrite_run's source 1; its texture set up in m->tx0) */
+static inline void avx2_modwrite_dot3_sampled(Avx2ModWrite *m, int rgba, const TexCoord *tc0)
+{
+    m->dot3 = rgba ? 2 : 1, m->tc0 = tc0;
 }
 
 /* the texel as the colour (REPLACE) instead of MODULATE */
@@ -2064,27 +2075,35 @@ AVX2_INLINE uint32_t avx2_modwrite565_1(const Avx2ModWrite *m, const FRAGV *cons
 /* eight fragments' texels from source 0 (the texels ct + k stride that a
 ** fetch stage sampled) or 1 (sampled here at the coordinates tc[0..7]);
 ** 0 when source 0 has a texel outside [0, 2^31) */
-AVX2_INLINE int avx2_modwrite_texels8(const Avx2ModWrite *m, int src, const FRAGV *ct, size_t stride,
+AVX2_INLINE int avx2_modwrite_texels8(const ModWriteTexture *tx, int src, const FRAGV *ct, size_t stride,
                                       const TexCoord *tc, __m256 T[4])
 {
     if (src == 0)
         return avx2_texels_ct8(ct, stride, T);
     __m256i g[4], a, b;
-    avx2_linear_texels8((const int *)(const void *)m->tx.texels, m->tx.log2w, m->tx.log2h, tc, m->tx.repeat_s,
-                        m->tx.repeat_t, g, &a, &b);
+    avx2_linear_texels8((const int *)(const void *)tx->texels, tx->log2w, tx->log2h, tc, tx->repeat_s, tx->repeat_t,
+                        g, &a, &b);
     avx2_bilerp8_float(g, a, b, T);
     return 1;
 }
 
 /* the exact texel of one fragment: ct (source 0), or from the sampler at tc */
-AVX2_INLINE const FRAGV *avx2_modwrite_texel1(const Avx2ModWrite *m, int src, const FRAGV *ct, const TexCoord *tc,
-                                              FRAGV tmp[4])
+AVX2_INLINE const FRAGV *avx2_modwrite_texel1(const ModWriteTexture *tx, int src, const FRAGV *ct,
+                                              const TexCoord *tc, FRAGV tmp[4])
 {
     if (src == 0)
         return ct;
-    m->tx.sampler(m->tx.tex, 1, tc, tc, tc, tmp, 4, m->tx.unorm8);
+    tx->sampler(tx->tex, 1, tc, tc, tc, tmp, 4, tx->unorm8);
     return tmp;
 }
+
+/* fragment i's place in the first unit's texels or coordinates (DOT3), or
+** NULL where they are not the source */
+AVX2_INLINE const FRAGV *modwrite_ct0(const Avx2ModWrite *m, int i)
+{
+    return m->ct0 ? m->ct0 + (size_t)i * m->ct0_stride : NULL;
+}
+AVX2_INLINE const TexCoord *modwrite_tc0(const Avx2ModWrite *m, int i) { return m->tc0 ? m->tc0 + i : NULL; }
 
 /* the kernel over fragments 0..n-1 at the offsets k of dst (RGBA8888
 ** words, or RGB565 words whose first is column x0): weights p, texels
@@ -2101,14 +2120,17 @@ AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *mw, const FRAGV *const a[
     const Avx2ModWrite local = *mw, *m = &local;
     uint32_t *dst32 = dst;
     uint16_t *dst16 = dst;
-    FRAGV tmp[4];
-#define MODWRITE_T0(i) (m->dot3 ? m->ct0 + (size_t)(i) * m->ct0_stride : NULL)
+    FRAGV tmp[4], tmp0[4];
+    /* the first unit's texels (DOT3): from ct0, or sampled at tc0 */
+    const int src0 = m->tc0 != NULL;
+#define MODWRITE_T0(i) \
+    (m->dot3 ? avx2_modwrite_texel1(&m->tx0, src0, modwrite_ct0(m, i), modwrite_tc0(m, i), tmp0) : NULL)
 #define MODWRITE_EXACT(i, d) \
     (rgb565 ? avx2_modwrite565_1(m, a, smooth, kind, p[i], MODWRITE_T0(i), \
-                                 avx2_modwrite_texel1(m, src, ct + (size_t)(i) * stride, tc + (i), tmp), \
+                                 avx2_modwrite_texel1(&m->tx, src, ct + (size_t)(i) * stride, tc + (i), tmp), \
                                  d, x0 + k[i], unorm5, unorm6) \
             : avx2_modwrite1(m, a, smooth, kind, p[i], MODWRITE_T0(i), \
-                             avx2_modwrite_texel1(m, src, ct + (size_t)(i) * stride, tc + (i), tmp), d))
+                             avx2_modwrite_texel1(&m->tx, src, ct + (size_t)(i) * stride, tc + (i), tmp), d))
     int j = 0;
     for (; j + 8 <= n; j += 8) {
         /* eight neighbouring pixels (a padded group never is) */
@@ -2129,8 +2151,9 @@ AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *mw, const FRAGV *const a[
         __m256 T[4], T0[4] = { _mm256_setzero_ps() };    /* read only with m->dot3 */
         __m256i w = d;
         unsigned bad = 0xFFu;
-        if (avx2_modwrite_texels8(m, src, ct + (size_t)j * stride, stride, tc + j, T)
-            && (!m->dot3 || avx2_texels_ct8(MODWRITE_T0(j), m->ct0_stride, T0))) {
+        if (avx2_modwrite_texels8(&m->tx, src, ct + (size_t)j * stride, stride, tc + j, T)
+            && (!m->dot3
+                || avx2_modwrite_texels8(&m->tx0, src0, modwrite_ct0(m, j), m->ct0_stride, modwrite_tc0(m, j), T0))) {
             const __m256i x3 = _mm256_and_si256(_mm256_add_epi32(idx, _mm256_set1_epi32(x0)), _mm256_set1_epi32(3));
             bad = rgb565 ? avx2_modwrite565_8(m, smooth, kind, &p[j], T0, T, d, x3, &w)
                          : avx2_modwrite8(m, smooth, kind, &p[j], T0, T, d, &w);

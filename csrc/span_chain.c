@@ -77,6 +77,7 @@ typedef struct ChainStages {
     SpanStage write_565, write_565_alpha;
     SpanStage rect_source;
     SpanStage coords[GLES_MAX_TEXTURE_UNITS], coords_rect[GLES_MAX_TEXTURE_UNITS];
+    SpanStage coords_tx[GLES_MAX_TEXTURE_UNITS];
     /* the AVX2 instances of the fixed and float builds (RGBA8888 and
     ** RGB565); else NULL */
     SpanStage modulate_write, sample_write;
@@ -457,8 +458,11 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     const int modulate_write = writes_fused && first_modulates;
     /* a first unit's DOT3 before a second one's MODULATE, on triangles
     ** (stage_dot3_write; the second unit sampled there too where it can
-    ** be, stage_dot3_sample_write) */
-    const int dot3 = !rect && target_fused && cs->dot3_write != NULL && span_dot3_pair(ctx);
+    ** be, stage_dot3_sample_write). Not DOT3_RGBA under SRC_ALPHA blending
+    ** on RGBA8888: its alpha carries DOT3's error into both blend terms,
+    ** past what the byte's margin proves (docs/architecture.md) */
+    const int dot3 = !rect && target_fused && cs->dot3_write != NULL && span_dot3_pair(ctx)
+                  && !(bk == 1 && plain && ctx->units[first].combine_rgb == GL_DOT3_RGBA);
     /* ... sampling too where the unit's sampler is a bilinear vector kernel
     ** (stage_sample_write), and then also for a lone REPLACE unit of an
     ** RGBA texture */
@@ -484,7 +488,8 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     }
     if (dot3) {
         const int second = __builtin_ctz(units & (units - 1));
-        s[n++] = cs->fetch[first];
+        /* the first unit's coordinates only where the stage samples it */
+        s[n++] = ctx->sample_group[first] > 1 ? cs->coords_tx[first] : cs->fetch[first];
         if (ctx->sample_group[second] > 1) {
             s[n++] = cs->coords[second];
             s[n++] = cs->dot3_sample_write;

@@ -484,10 +484,12 @@ static void STAGE(chunk_sample)(GlesContext *ctx, SpanBuf *b, int u, int direct)
 
 /* a triangle's coordinates of unit u for every live fragment, then its
 ** texels: into b->ct (FETCH_TEXELS), into the colour (FETCH_DIRECT), or
-** none (FETCH_COORDS: a later stage samples) */
+** none (FETCH_COORDS, FETCH_COORDS_TX: a later stage samples) */
 static void STAGE(stage_fetch)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, int u, int mode)
 {
-    const int lod = texture_needs_lod(ctx->units[u].bound);
+    /* FETCH_COORDS_TX is for a unit without a level of detail, so b->tx is free */
+    const int lod = mode != FETCH_COORDS_TX && texture_needs_lod(ctx->units[u].bound);
+    TexCoord *const tc = mode == FETCH_COORDS_TX ? b->tx : b->tc;
 #if CHAIN_SIMD && NUM_IS_FIXED
     const __m256i a[3] = { avx2_load_num4(t->v[0]->tex[u]), avx2_load_num4(t->v[1]->tex[u]),
                            avx2_load_num4(t->v[2]->tex[u]) };
@@ -498,7 +500,7 @@ static void STAGE(stage_fetch)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, 
     const NUM tv[3] = { t->v[0]->tex[u][1], t->v[1]->tex[u][1], t->v[2]->tex[u][1] };
     const int four = proj ? 0 : b->n & ~3;
     for (int j = 0; j < four; j += 4) {
-        avx2_tex_coord_affine4(sv, tv, &b->p[j], &b->tc[j]);
+        avx2_tex_coord_affine4(sv, tv, &b->p[j], &tc[j]);
         if (lod) {
             avx2_tex_coord_affine4(sv, tv, &b->px[j], &b->tx[j]);
             avx2_tex_coord_affine4(sv, tv, &b->py[j], &b->ty[j]);
@@ -509,14 +511,14 @@ static void STAGE(stage_fetch)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, 
     const int four = 0;
 #endif
     for (int j = four; j < b->n; j++)
-        TEX_COORD(b->p[j], &b->tc[j]);
+        TEX_COORD(b->p[j], &tc[j]);
     if (lod)
         for (int j = four; j < b->n; j++) {
             TEX_COORD(b->px[j], &b->tx[j]);
             TEX_COORD(b->py[j], &b->ty[j]);
         }
 #undef TEX_COORD
-    if (mode != FETCH_COORDS)
+    if (mode == FETCH_TEXELS || mode == FETCH_DIRECT)
         STAGE(chunk_sample)(ctx, b, u, mode == FETCH_DIRECT);
 }
 
@@ -699,6 +701,10 @@ static void STAGE(stage_color_modulate)(GlesContext *ctx, const TriSetup *t, Spa
     static void STAGE(stage_coords##u)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) \
     { \
         STAGE(stage_fetch)(ctx, t, b, u, FETCH_COORDS); \
+    } \
+    static void STAGE(stage_coords_tx##u)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) \
+    { \
+        STAGE(stage_fetch)(ctx, t, b, u, FETCH_COORDS_TX); \
     } \
     static void STAGE(stage_coords_rect##u)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) \
     { \
@@ -1128,9 +1134,16 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
     for (int i = 0; i < 3 && smooth; i++)
         for (int c = 0; c < 4; c++)
             in_range &= a[i][c] >= 0 && a[i][c] <= FRAG_ONE;
+    /* the first unit's texels are sampled here too where its sampler has
+    ** the vector kernel (its coordinates are in b->tx, FETCH_COORDS_TX) */
+    const size_t stride = GLES_MAX_TEXTURE_UNITS * 4;
+    const int sampled0 = dot3 && ctx->sample_group[u0] > 1;
     if (!in_range) {
         if (src == 1)
             STAGE(chunk_sample)(ctx, b, u, 0);
+        if (sampled0)
+            ctx->samplers[u0](ctx->units[u0].bound, b->n, b->tx, b->tx, b->tx, b->ct[0][u0], stride,
+                              ctx->texel_unorm8);
         if (dot3) {
             STAGE(stage_color)(ctx, t, b);
             STAGE(stage_env)(ctx, b, u0);
@@ -1151,15 +1164,21 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
                         fragment_alpha_ref8(ctx));
     if (replace)
         avx2_modwrite_replace(&m);
-    const size_t stride = GLES_MAX_TEXTURE_UNITS * 4;
-    if (dot3)
-        avx2_modwrite_dot3(&m, ctx->units[u0].combine_rgb == GL_DOT3_RGBA, b->ct[0][u0], stride);
+    const int rgba_dot = dot3 && ctx->units[u0].combine_rgb == GL_DOT3_RGBA;
+    if (sampled0) {
+        modwrite_texture_setup(&m.tx0, ctx->units[u0].bound, ctx->samplers[u0], ctx->texel_unorm8);
+        avx2_modwrite_dot3_sampled(&m, rgba_dot, b->tx);
+    } else if (dot3) {
+        avx2_modwrite_dot3(&m, rgba_dot, b->ct[0][u0], stride);
+    }
     int n = b->n;
     if (src == 1) {
         modwrite_texture_setup(&m.tx, tex, ctx->samplers[u], ctx->texel_unorm8);
         /* the tail padded to a group of eight (the slots past n are free) */
         _Static_assert(SPAN_CHUNK % 8 == 0, "a padded group stays within the chunk");
-        n = avx2_modwrite_pad(8, n, b->k, b->p, smooth, b->tc, dot3 ? b->ct[0][u0] : NULL, stride);
+        n = avx2_modwrite_pad(8, n, b->k, b->p, smooth, b->tc, dot3 && !sampled0 ? b->ct[0][u0] : NULL, stride);
+        for (int j = b->n; j < n && sampled0; j++)
+            b->tx[j] = b->tx[b->n - 1];
     }
     const int rgb565 = ctx->color_format == GLES_COLOR_RGB565;
     if (rgb565) {
@@ -1257,6 +1276,7 @@ static const ChainStages STAGE(chain_stages) = {
     .fetch_rect_direct = { STAGE(stage_fetch_rect_direct0), STAGE(stage_fetch_rect_direct1),
                            STAGE(stage_fetch_rect_direct2), STAGE(stage_fetch_rect_direct3) },
     .coords = { STAGE(stage_coords0), STAGE(stage_coords1), STAGE(stage_coords2), STAGE(stage_coords3) },
+    .coords_tx = { STAGE(stage_coords_tx0), STAGE(stage_coords_tx1), STAGE(stage_coords_tx2), STAGE(stage_coords_tx3) },
     .coords_rect = { STAGE(stage_coords_rect0), STAGE(stage_coords_rect1), STAGE(stage_coords_rect2),
                      STAGE(stage_coords_rect3) },
     .env = { STAGE(stage_env0), STAGE(stage_env1), STAGE(stage_env2), STAGE(stage_env3) },
