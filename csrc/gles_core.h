@@ -84,6 +84,12 @@ int gles_debug_persp_any(int simd, int eshift, const int64_t mant[3], const int 
 ** triangle's, for an affine one); mantissas below 2^30, as recipw_of makes */
 int gles_debug_persp(int simd, int eshift, int64_t lin_recip, const int64_t mant[3], const int qshift[3], int affine,
                      int n, const int64_t *e, int32_t *out);
+/* for tests, fixed build (0 elsewhere): stage_persp over one chunk of n
+** (at most 64) neighbouring pixels whose edge values are e0 + j ea (slot
+** j), for a triangle set up as gles_debug_persp's, by the chain's vector
+** instance where simd != 0 and the CPU has one, else its baseline */
+int gles_debug_persp_chunk(int simd, int eshift, int64_t lin_recip, const int64_t mant[3], const int qshift[3],
+                           int affine, int n, const int64_t e0[3], const int64_t ea[3], int32_t *out);
 /* for tests, fixed build (0 elsewhere): the colour stage's value of n
 ** fragments with weights p[3 j .. 3 j + 2] for vertex colours col[4 k ..
 ** 4 k + 3] (0.30), clamped to [0, 1] when clamp (as for texturing), into

@@ -294,6 +294,42 @@ static int debug_persp(int any, int simd, int eshift, int64_t lin_recip, const i
 #endif
 }
 
+int gles_debug_persp_chunk(int simd, int eshift, int64_t lin_recip, const int64_t mant[3], const int qshift[3],
+                           int affine, int n, const int64_t e0[3], const int64_t ea[3], int32_t *out)
+{
+#if NUM_IS_FIXED
+    if (n < 0 || n > SPAN_CHUNK || eshift < 0 || eshift > 62)
+        return 0;
+    TriSetup t;
+    SpanBuf b;
+    memset(&t, 0, sizeof t);
+    t.wgt = (WgtSetup){ .eshift = eshift, .lin_recip = lin_recip, .affine = affine };
+    for (int i = 0; i < 3; i++) {
+        if (qshift[i] < 0 || mant[i] < 0 || mant[i] >= ((int64_t)1 << 30))
+            return 0;
+        t.wgt.mant[i] = mant[i];
+        t.wgt.qshift[i] = qshift[i];
+        t.ea[i] = ea[i];
+        b.e0[i] = e0[i];
+    }
+    b.n = n;
+    for (int j = 0; j < n; j++)
+        b.k[j] = (uint8_t)j;
+#if SIMD_X86
+    if (simd && simd_detect() >= SIMD_AVX2)
+        stage_persp_avx2(NULL, &t, &b);
+    else
+#endif
+        stage_persp_base(NULL, &t, &b);
+    memcpy(out, b.p, (size_t)n * sizeof b.p[0]);
+    return 1;
+#else
+    (void)simd, (void)eshift, (void)lin_recip, (void)mant, (void)qshift, (void)affine, (void)n, (void)e0, (void)ea,
+        (void)out;
+    return 0;
+#endif
+}
+
 int gles_debug_persp_any(int simd, int eshift, const int64_t mant[3], const int qshift[3], int affine, int n,
                          const int64_t *e, int32_t *out)
 {

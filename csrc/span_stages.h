@@ -36,10 +36,55 @@ static inline int STAGE(persp4)(const WgtSetup *ws, const __m256i e[3], WGT (*p)
 }
 #endif
 
+#if CHAIN_SIMD && NUM_IS_FIXED
+/* wgt_linear of an affine triangle's slots 0..n-1 (n >= 4) when they are
+** offsets (k[j] = j: no test has dropped a fragment) and eshift is 0: l_i
+** = (e_i R + 2^30) >> 31 with e_i = e0_i + j ea_i, and e_i R + 2^30 =
+** (e0_i R + 2^30) + j (ea_i R) mod 2^64, which is the scalar code's value
+** wherever that fits int64 (as avx2_linear4v's products are); so each
+** group of four steps its four sums by 4 ea_i R instead of multiplying.
+** The kernels' range, 0 <= e_i < 2^31, holds at every slot when it holds
+** at the first and the last (e_i is linear in j). Returns the slots done:
+** the whole groups of four, or 0 where it does not apply. */
+static int STAGE(persp_affine_run)(const TriSetup *t, SpanBuf *b)
+{
+    const WgtSetup *ws = &t->wgt;
+    const int n = b->n;
+    if (!ws->affine || ws->eshift != 0 || ws->lin_recip < 0 || n < 4 || b->k[n - 1] != n - 1)
+        return 0;
+    __m256i sum[3], step[3];
+    for (int i = 1; i < 3; i++) {
+        const int64_t first = b->e0[i], last = b->e0[i] + t->ea[i] * (n - 1);
+        if (first < 0 || last < 0 || first > INT32_MAX || last > INT32_MAX)
+            return 0;
+        const uint64_t r = (uint64_t)ws->lin_recip, a = (uint64_t)first * r + ((uint64_t)1 << 30);
+        const uint64_t d = (uint64_t)t->ea[i] * r;
+        sum[i] = _mm256_setr_epi64x((int64_t)a, (int64_t)(a + d), (int64_t)(a + 2 * d), (int64_t)(a + 3 * d));
+        step[i] = _mm256_set1_epi64x((int64_t)(4 * d));
+    }
+    const __m256i one = _mm256_set1_epi64x(WGT_ONE);
+    WGT (*const p)[3] = b->p;
+    const int n4 = n & ~3;
+    for (int j = 0; j < n4; j += 4) {
+        __m256i l[3];
+        l[1] = _mm256_srli_epi64(sum[1], 31);
+        l[2] = _mm256_srli_epi64(sum[2], 31);
+        l[0] = _mm256_sub_epi64(_mm256_sub_epi64(one, l[1]), l[2]);
+        avx2_store_wgt4(l, &p[j]);
+        sum[1] = _mm256_add_epi64(sum[1], step[1]);
+        sum[2] = _mm256_add_epi64(sum[2], step[2]);
+    }
+    return n4;
+}
+#endif
+
 static void STAGE(stage_persp)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     (void)ctx;
     int j = 0;
+#if CHAIN_SIMD && NUM_IS_FIXED
+    j = STAGE(persp_affine_run)(t, b);
+#endif
 #if CHAIN_SIMD
     /* the loop's constants in locals (stores to b->p could alias t and b) */
     const WgtSetup ws = t->wgt;
