@@ -1894,11 +1894,12 @@ AVX2_INLINE void avx2_dot3_float(int rgba, const __m256 T0[4], __m256 c[4])
 
 /* the source colour of eight fragments (weights p[0..7], texels T) after
 ** MODULATE (or the texel, for REPLACE), clamped to [0, 1], as floats
-** y[0..3]; with m->dot3 the colour first goes through DOT3 with the first
-** unit's texels T0. The alpha test's outcome in *pass, the lanes not
+** y[0..3]; with dot3 (m->dot3 set) the colour first goes through DOT3
+** with the first unit's texels T0. The alpha test's outcome in *pass, the lanes not
 ** proved in *bad */
-AVX2_INLINE void avx2_modwrite_source8(const Avx2ModWrite *m, int smooth, const WGT (*p)[3], const __m256 T0[4],
-                                       const __m256 T[4], __m256 y[4], __m256i *pass, __m256 *bad)
+AVX2_INLINE void avx2_modwrite_source8(const Avx2ModWrite *m, int smooth, int dot3, const WGT (*p)[3],
+                                       const __m256 T0[4], const __m256 T[4], __m256 y[4], __m256i *pass,
+                                       __m256 *bad)
 {
     const __m256 zero = _mm256_setzero_ps(), one = _mm256_set1_ps(1.0f);
     *bad = zero;
@@ -1926,7 +1927,7 @@ AVX2_INLINE void avx2_modwrite_source8(const Avx2ModWrite *m, int smooth, const 
             for (int i = 0; i < 4; i++)
                 c[i] = m->col[0][i];
         }
-        if (m->dot3)
+        if (dot3)
             avx2_dot3_float(m->dot3 == 2, T0, c);
         for (int i = 0; i < 4; i++)
             y[i] = _mm256_min_ps(_mm256_mul_ps(c[i], T[i]), one);
@@ -1946,12 +1947,12 @@ AVX2_INLINE void avx2_modwrite_source8(const Avx2ModWrite *m, int smooth, const 
 ** fragments (as avx2_modwrite_source8), into *out; returns the lanes
 ** (bits) the float lanes do not prove (their words in *out are not the
 ** chain's) */
-AVX2_INLINE unsigned avx2_modwrite8(const Avx2ModWrite *m, int smooth, int kind, const WGT (*p)[3],
+AVX2_INLINE unsigned avx2_modwrite8(const Avx2ModWrite *m, int smooth, int kind, int dot3, const WGT (*p)[3],
                                     const __m256 T0[4], const __m256 T[4], __m256i d, __m256i *out)
 {
     __m256 y[4], bad;
     __m256i pass;
-    avx2_modwrite_source8(m, smooth, p, T0, T, y, &pass, &bad);
+    avx2_modwrite_source8(m, smooth, dot3, p, T0, T, y, &pass, &bad);
     const __m256 one = _mm256_set1_ps(1.0f);
     if (kind) {
         const __m256i byte = _mm256_set1_epi32(0xFF);
@@ -1976,12 +1977,13 @@ AVX2_INLINE unsigned avx2_modwrite8(const Avx2ModWrite *m, int smooth, int kind,
 
 /* the same over eight stored RGB565 words d (32-bit lanes) for blend kind
 ** 0 or 1, the thresholds' lanes of x & 3 given (x3: 0..3 per lane) */
-AVX2_INLINE unsigned avx2_modwrite565_8(const Avx2ModWrite *m, int smooth, int kind, const WGT (*p)[3],
-                                        const __m256 T0[4], const __m256 T[4], __m256i d, __m256i x3, __m256i *out)
+AVX2_INLINE unsigned avx2_modwrite565_8(const Avx2ModWrite *m, int smooth, int kind, int dot3, const WGT (*p)[3],
+                                        const __m256 T0[4], const __m256 T[4], __m256i d, __m256i x3,
+                                        __m256i *out)
 {
     __m256 y[4], bad;
     __m256i pass;
-    avx2_modwrite_source8(m, smooth, p, T0, T, y, &pass, &bad);
+    avx2_modwrite_source8(m, smooth, dot3, p, T0, T, y, &pass, &bad);
     static const int shift[3] = { 11, 5, 0 }, bits[3] = { 5, 6, 5 };
     if (kind) {
         const __m256 b = _mm256_sub_ps(_mm256_set1_ps(1.0f), y[3]), a = y[3];
@@ -2111,7 +2113,8 @@ AVX2_INLINE const TexCoord *modwrite_tc0(const Avx2ModWrite *m, int i) { return 
 ** the rest exactly. The first `live` offsets ascend; slots from there to
 ** n repeat the last live fragment (a padded group). */
 AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *mw, const FRAGV *const a[3], int smooth, int kind, int src,
-                                   int rgb565, int n, int live, const uint8_t *k, int x0, const WGT (*p)[3],
+                                   int rgb565, int dot3, int n, int live, const uint8_t *k, int x0,
+                                   const WGT (*p)[3],
                                    const FRAGV *ct, size_t stride, const TexCoord *tc, void *dst,
                                    const FRAGV unorm5[32], const FRAGV unorm6[64])
 {
@@ -2124,7 +2127,7 @@ AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *mw, const FRAGV *const a[
     /* the first unit's texels (DOT3): from ct0, or sampled at tc0 */
     const int src0 = m->tc0 != NULL;
 #define MODWRITE_T0(i) \
-    (m->dot3 ? avx2_modwrite_texel1(&m->tx0, src0, modwrite_ct0(m, i), modwrite_tc0(m, i), tmp0) : NULL)
+    (dot3 ? avx2_modwrite_texel1(&m->tx0, src0, modwrite_ct0(m, i), modwrite_tc0(m, i), tmp0) : NULL)
 #define MODWRITE_EXACT(i, d) \
     (rgb565 ? avx2_modwrite565_1(m, a, smooth, kind, p[i], MODWRITE_T0(i), \
                                  avx2_modwrite_texel1(&m->tx, src, ct + (size_t)(i) * stride, tc + (i), tmp), \
@@ -2148,15 +2151,15 @@ AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *mw, const FRAGV *const a[
               : run ? _mm256_loadu_si256((const __m256i *)(const void *)&dst32[k[j]])
                     : _mm256_i32gather_epi32((const int *)(const void *)dst32, idx, 4);
         }
-        __m256 T[4], T0[4] = { _mm256_setzero_ps() };    /* read only with m->dot3 */
+        __m256 T[4], T0[4] = { _mm256_setzero_ps() };    /* read only with dot3 */
         __m256i w = d;
         unsigned bad = 0xFFu;
         if (avx2_modwrite_texels8(&m->tx, src, ct + (size_t)j * stride, stride, tc + j, T)
-            && (!m->dot3
+            && (!dot3
                 || avx2_modwrite_texels8(&m->tx0, src0, modwrite_ct0(m, j), m->ct0_stride, modwrite_tc0(m, j), T0))) {
             const __m256i x3 = _mm256_and_si256(_mm256_add_epi32(idx, _mm256_set1_epi32(x0)), _mm256_set1_epi32(3));
-            bad = rgb565 ? avx2_modwrite565_8(m, smooth, kind, &p[j], T0, T, d, x3, &w)
-                         : avx2_modwrite8(m, smooth, kind, &p[j], T0, T, d, &w);
+            bad = rgb565 ? avx2_modwrite565_8(m, smooth, kind, dot3, &p[j], T0, T, d, x3, &w)
+                         : avx2_modwrite8(m, smooth, kind, dot3, &p[j], T0, T, d, &w);
         }
         uint32_t words[8];
         _mm256_storeu_si256((__m256i *)(void *)words, w);
@@ -2193,9 +2196,10 @@ static inline void avx2_modwrite_dispatch(const Avx2ModWrite *m, const FRAGV *co
                                           size_t stride, const TexCoord *tc, void *dst, const FRAGV unorm5[32],
                                           const FRAGV unorm6[64])
 {
-#define MODWRITE(S, K, F) \
-    (src ? avx2_modwrite_run(m, a, S, K, 1, F, n, live, k, x0, p, ct, stride, tc, dst, unorm5, unorm6) \
-         : avx2_modwrite_run(m, a, S, K, 0, F, n, live, k, x0, p, ct, stride, tc, dst, unorm5, unorm6))
+#define MODWRITE_D(S, K, F, D) \
+    (src ? avx2_modwrite_run(m, a, S, K, 1, F, D, n, live, k, x0, p, ct, stride, tc, dst, unorm5, unorm6) \
+         : avx2_modwrite_run(m, a, S, K, 0, F, D, n, live, k, x0, p, ct, stride, tc, dst, unorm5, unorm6))
+#define MODWRITE(S, K, F) (m->dot3 ? MODWRITE_D(S, K, F, 1) : MODWRITE_D(S, K, F, 0))
     switch ((rgb565 ? 6 : 0) + (m->smooth ? 3 : 0) + m->kind) {
     case 0: MODWRITE(0, 0, 0); break;
     case 1: MODWRITE(0, 1, 0); break;
@@ -2210,6 +2214,7 @@ static inline void avx2_modwrite_dispatch(const Avx2ModWrite *m, const FRAGV *co
     default: break;    /* RGB565 takes blend kinds 0 and 1 only */
     }
 #undef MODWRITE
+#undef MODWRITE_D
 }
 /* }==================================================================== */
 #endif

@@ -182,8 +182,8 @@ static int debug_modulate_write_avx2(Avx2ModWrite *m, const FRAGV *const a[3], i
             exact += 8;
         else
             exact += __builtin_popcount(
-                rgb565 ? avx2_modwrite565_8(m, smooth, kind, (const WGT (*)[3])&p[j], T0, T, dv, x3, &w)
-                       : avx2_modwrite8(m, smooth, kind, (const WGT (*)[3])&p[j], T0, T, dv, &w));
+                rgb565 ? avx2_modwrite565_8(m, smooth, kind, m->dot3 != 0, (const WGT (*)[3])&p[j], T0, T, dv, x3, &w)
+                       : avx2_modwrite8(m, smooth, kind, m->dot3 != 0, (const WGT (*)[3])&p[j], T0, T, dv, &w));
     }
     const TexCoord tc[SPAN_CHUNK] = { { 0, 0 } };   /* source 0 reads no coordinates */
     avx2_modwrite_dispatch(m, a, 0, rgb565, n, live, k, x0, (const WGT (*)[3])p, ct[0], 4, tc, dst, unorm5, unorm6);
@@ -321,6 +321,7 @@ int gles_debug_persp_chunk(int simd, int eshift, int64_t lin_recip, const int64_
     else
 #endif
         stage_persp_base(NULL, &t, &b);
+    (void)simd;
     memcpy(out, b.p, (size_t)n * sizeof b.p[0]);
     return 1;
 #else

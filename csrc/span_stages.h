@@ -38,31 +38,44 @@ static inline int STAGE(persp4)(const WgtSetup *ws, const __m256i e[3], WGT (*p)
 
 #if CHAIN_SIMD && NUM_IS_FIXED
 /* wgt_linear of an affine triangle's slots 0..n-1 (n >= 4) when they are
-** offsets (k[j] = j: no test has dropped a fragment) and eshift is 0: l_i
-** = (e_i R + 2^30) >> 31 with e_i = e0_i + j ea_i, and e_i R + 2^30 =
-** (e0_i R + 2^30) + j (ea_i R) mod 2^64, which is the scalar code's value
-** wherever that fits int64 (as avx2_linear4v's products are); so each
-** group of four steps its four sums by 4 ea_i R instead of multiplying.
-** The kernels' range, 0 <= e_i < 2^31, holds at every slot when it holds
-** at the first and the last (e_i is linear in j). Returns the slots done:
-** the whole groups of four, or 0 where it does not apply. */
+** offsets (k[j] = j: no test has dropped a fragment): l_i = (q_i R +
+** 2^30) >> 31 with q_i = e_i >> eshift and e_i = e0_i + j ea_i. From one
+** group of four to the next e_i grows by 4 ea_i = Q 2^eshift + D (0 <= D <
+** 2^eshift), so with e_i = q_i 2^eshift + r_i (0 <= r_i < 2^eshift) q_i
+** grows by Q, and by one more where r_i + D reaches 2^eshift (r_i then
+** drops by 2^eshift); the sum q_i R + 2^30 grows by Q R, and R more with
+** that carry. Sums are kept mod 2^64, so each is the scalar code's value
+** wherever that fits int64 (as avx2_linear4v's products are). The
+** kernels' range, 0 <= e_i and q_i < 2^31, holds at every slot when it
+** holds at the first and the last (e_i is linear in j). Returns the slots
+** done: the whole groups of four, or 0 where it does not apply. */
 static int STAGE(persp_affine_run)(const TriSetup *t, SpanBuf *b)
 {
     const WgtSetup *ws = &t->wgt;
-    const int n = b->n;
-    if (!ws->affine || ws->eshift != 0 || ws->lin_recip < 0 || n < 4 || b->k[n - 1] != n - 1)
+    const int n = b->n, sh = ws->eshift;
+    if (!ws->affine || ws->lin_recip < 0 || sh > 62 || n < 4 || b->k[n - 1] != n - 1)
         return 0;
-    __m256i sum[3], step[3];
+    const uint64_t r = (uint64_t)ws->lin_recip, unit = (uint64_t)1 << sh;
+    __m256i sum[3], rem[3], step[3], carry_at[3], dr[3];
     for (int i = 1; i < 3; i++) {
         const int64_t first = b->e0[i], last = b->e0[i] + t->ea[i] * (n - 1);
-        if (first < 0 || last < 0 || first > INT32_MAX || last > INT32_MAX)
+        if (first < 0 || last < 0 || (first >> sh) > INT32_MAX || (last >> sh) > INT32_MAX)
             return 0;
-        const uint64_t r = (uint64_t)ws->lin_recip, a = (uint64_t)first * r + ((uint64_t)1 << 30);
-        const uint64_t d = (uint64_t)t->ea[i] * r;
-        sum[i] = _mm256_setr_epi64x((int64_t)a, (int64_t)(a + d), (int64_t)(a + 2 * d), (int64_t)(a + 3 * d));
-        step[i] = _mm256_set1_epi64x((int64_t)(4 * d));
+        int64_t s4[4], r4[4];
+        for (int k = 0; k < 4; k++) {
+            const int64_t e = first + t->ea[i] * k;     /* >= 0: between first and last */
+            s4[k] = (int64_t)((uint64_t)(e >> sh) * r + ((uint64_t)1 << 30));
+            r4[k] = e & (int64_t)(unit - 1);
+        }
+        const int64_t e4 = 4 * t->ea[i], q4 = e4 >> sh, d4 = e4 & (int64_t)(unit - 1);
+        sum[i] = _mm256_loadu_si256((const __m256i *)(const void *)s4);
+        rem[i] = _mm256_loadu_si256((const __m256i *)(const void *)r4);
+        step[i] = _mm256_set1_epi64x((int64_t)((uint64_t)q4 * r));
+        dr[i] = _mm256_set1_epi64x(d4);
+        carry_at[i] = _mm256_set1_epi64x((int64_t)unit - 1);     /* a carry where r_i + D > 2^eshift - 1 */
     }
-    const __m256i one = _mm256_set1_epi64x(WGT_ONE);
+    const __m256i one = _mm256_set1_epi64x(WGT_ONE), lr = _mm256_set1_epi64x((int64_t)r);
+    const __m256i unitv = _mm256_set1_epi64x((int64_t)unit);
     WGT (*const p)[3] = b->p;
     const int n4 = n & ~3;
     for (int j = 0; j < n4; j += 4) {
@@ -71,8 +84,12 @@ static int STAGE(persp_affine_run)(const TriSetup *t, SpanBuf *b)
         l[2] = _mm256_srli_epi64(sum[2], 31);
         l[0] = _mm256_sub_epi64(_mm256_sub_epi64(one, l[1]), l[2]);
         avx2_store_wgt4(l, &p[j]);
-        sum[1] = _mm256_add_epi64(sum[1], step[1]);
-        sum[2] = _mm256_add_epi64(sum[2], step[2]);
+        for (int i = 1; i < 3; i++) {
+            rem[i] = _mm256_add_epi64(rem[i], dr[i]);
+            const __m256i carry = _mm256_cmpgt_epi64(rem[i], carry_at[i]);
+            sum[i] = _mm256_add_epi64(_mm256_add_epi64(sum[i], step[i]), _mm256_and_si256(carry, lr));
+            rem[i] = _mm256_sub_epi64(rem[i], _mm256_and_si256(carry, unitv));
+        }
     }
     return n4;
 }

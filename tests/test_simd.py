@@ -406,12 +406,13 @@ def test_color_kernel_matches_scalar(clamp):
         np.testing.assert_array_equal(_color_stage(1, clamp, col, p), want, err_msg=f"vector, trial {trial}")
 
 
-def _persp_chunk(simd: int, lin_recip: int, e0, ea, n: int) -> np.ndarray:
+def _persp_chunk(simd: int, eshift: int, lin_recip: int, e0, ea, n: int) -> np.ndarray:
     ctx = make_ctx("fixed", 1, 1)
     ffi, lib = ctx._ffi, ctx._lib
     out = np.zeros((n, 3), np.int32)
-    ok = lib.gles_debug_persp_chunk(simd, 0, lin_recip, [1 << 29] * 3, [0, 0, 0], 1, n, [int(v) for v in e0],
-                                    [int(v) for v in ea], ffi.cast("int32_t *", out.ctypes.data))
+    ok = lib.gles_debug_persp_chunk(simd, eshift, lin_recip, [1 << 29] * 3, [0, 0, 0], 1, n,
+                                    [int(v) for v in e0], [int(v) for v in ea],
+                                    ffi.cast("int32_t *", out.ctypes.data))
     assert ok == 1
     return out
 
@@ -419,32 +420,37 @@ def _persp_chunk(simd: int, lin_recip: int, e0, ea, n: int) -> np.ndarray:
 @pytest.mark.skipif(not HAS_SIMD, reason="no vector instance on this CPU")
 def test_affine_chunk_weights_step_as_the_scalar_code():
     """stage_persp over a chunk of neighbouring pixels of an affine triangle
-    steps each weight's sum e_i R + 2^30 by ea_i R (persp_affine_run): its
-    weights equal wgt_linear's, (e_i R + 2^30) >> 31 in Python's integers,
-    at every slot: inside the triangle, where a chunk's edge values leave
-    the kernel's range at one end (the whole chunk goes the other way), on
-    sums placed one below a multiple of 2^31, and with any count."""
+    steps each weight's sum (e_i >> eshift) R + 2^30 with a carry from the
+    bits below eshift (persp_affine_run): its weights equal wgt_linear's,
+    ((e_i >> eshift) R + 2^30) >> 31 in Python's integers, at every slot:
+    inside the triangle, where a chunk's edge values leave the kernel's
+    range at one end (the whole chunk goes the other way), on sums placed
+    one below a multiple of 2^31, with eshift 0 to 12 and any count."""
     rng = np.random.default_rng(14)
-    for trial in range(300):
-        area = int(rng.integers(1 << 8, 1 << 31))
-        lin_recip = (1 << 61) // area
+    for trial in range(400):
+        eshift = int(rng.integers(0, 13)) if trial % 3 else 0
+        area = int(rng.integers(1 << 8, 1 << 31)) << eshift | int(rng.integers(0, 1 << eshift))
+        lin_recip = (1 << 61) // (area >> eshift)
         n = int(rng.integers(1, 65))
         # the row's edge values: e1, e2 start inside and step by ea (e0 takes the rest)
-        ea = [0, int(rng.integers(-area // 64, area // 64 + 1)), int(rng.integers(-area // 64, area // 64 + 1))]
+        lim = area // 64
+        ea = [0, int(rng.integers(-lim, lim + 1)), int(rng.integers(-lim, lim + 1))]
         ea[0] = -ea[1] - ea[2]
         e0 = [0, int(rng.integers(0, area // 2)), int(rng.integers(0, area // 2))]
         if trial % 5 == 0:
-            # a sum e1 R + 2^30 one below a multiple of 2^31 at slot 0
+            # a sum (e1 >> eshift) R + 2^30 one below a multiple of 2^31 at slot 0
             m = (int(rng.integers(1, 1 << 30)) << 31) - 1 - (1 << 30)
-            e0[1] = min(max(m // lin_recip, 0), area // 2)
+            e0[1] = min(max(m // lin_recip, 0), (area >> eshift) // 2) << eshift
         if trial % 7 == 0:
             e0[2] = -int(rng.integers(1, 1 << 10))          # out of range at the start
         e0[0] = area - e0[1] - e0[2]
-        got = _persp_chunk(1, lin_recip, e0, ea, n)
-        np.testing.assert_array_equal(got, _persp_chunk(0, lin_recip, e0, ea, n), err_msg=f"trial {trial}")
+        got = _persp_chunk(1, eshift, lin_recip, e0, ea, n)
+        base = _persp_chunk(0, eshift, lin_recip, e0, ea, n)
+        np.testing.assert_array_equal(got, base, err_msg=f"trial {trial}")
         for j in range(n):
             e1, e2 = e0[1] + j * ea[1], e0[2] + j * ea[2]
             if e1 < 0 or e2 < 0:
                 continue            # (the scalar code's domain; checked against it above)
-            l1, l2 = (e1 * lin_recip + (1 << 30)) >> 31, (e2 * lin_recip + (1 << 30)) >> 31
+            l1 = ((e1 >> eshift) * lin_recip + (1 << 30)) >> 31
+            l2 = ((e2 >> eshift) * lin_recip + (1 << 30)) >> 31
             assert list(got[j]) == [(1 << 30) - l1 - l2, l1, l2], (trial, j)
