@@ -1757,12 +1757,20 @@ typedef struct Avx2ModWrite {
     __m256 t_row_f;              /* t_row twice, as floats (0 without dither: the top bits are kept) */
     int replace;                 /* the texel is the colour (a lone REPLACE unit of an RGBA texture) */
     ModWriteTexture tx;          /* where the kernel samples (avx2_modwrite_run's source 1) */
-    int dot3;                    /* 0, or a first unit's DOT3 before the MODULATE: 1 DOT3_RGB, 2 DOT3_RGBA */
-    const FRAGV *ct0;            /* that unit's texels, ct0 + j ct0_stride, */
-    size_t ct0_stride;
-    const TexCoord *tc0;         /* or (where not NULL) sampled here at tc0[j] */
-    ModWriteTexture tx0;
+    const struct ModWriteDot3 *dot3;   /* a first unit's DOT3 before the MODULATE, or NULL */
 } Avx2ModWrite;
+
+/* a first unit's COMBINE DOT3 (DOT3_RGB with MODULATE alpha, or rgba:
+** DOT3_RGBA; scales 1) of its texels and the colour, before the MODULATE:
+** the texels at ct0 + j ct0_stride, or (tc0 not NULL) sampled in the
+** kernel at tc0[j] from tx0 */
+typedef struct ModWriteDot3 {
+    int rgba;
+    const FRAGV *ct0;
+    size_t ct0_stride;
+    const TexCoord *tc0;
+    ModWriteTexture tx0;
+} ModWriteDot3;
 
 /* setup for vertex colours a[0..2] in [0, 2^30] (smooth), or the flat
 ** colour a[0] (any value: it is clamped, as stage_color_modulate does);
@@ -1780,26 +1788,7 @@ static inline void avx2_modwrite_setup(Avx2ModWrite *m, const FRAGV *const a[3],
     m->dither = 0;
     m->replace = 0;
     m->tx.tex = NULL;
-    m->dot3 = 0;
-    m->ct0 = NULL;
-    m->ct0_stride = 0;
-    m->tc0 = NULL;
-    m->tx0.tex = NULL;
-}
-
-/* the colour goes through a first unit's COMBINE DOT3 with its texels ct0
-** (DOT3_RGB with MODULATE alpha, or rgba: DOT3_RGBA; scales 1) before
-** the MODULATE */
-static inline void avx2_modwrite_dot3(Avx2ModWrite *m, int rgba, const FRAGV *ct0, size_t stride)
-{
-    m->dot3 = rgba ? 2 : 1, m->ct0 = ct0, m->ct0_stride = stride;
-}
-
-/* ... the first unit sampled here at the coordinates tc0 (as the texels of
-** avx2_modwrite_run's source 1; its texture set up in m->tx0) */
-static inline void avx2_modwrite_dot3_sampled(Avx2ModWrite *m, int rgba, const TexCoord *tc0)
-{
-    m->dot3 = rgba ? 2 : 1, m->tc0 = tc0;
+    m->dot3 = NULL;
 }
 
 /* the texel as the colour (REPLACE) instead of MODULATE */
@@ -1928,7 +1917,7 @@ AVX2_INLINE void avx2_modwrite_source8(const Avx2ModWrite *m, int smooth, int do
                 c[i] = m->col[0][i];
         }
         if (dot3)
-            avx2_dot3_float(m->dot3 == 2, T0, c);
+            avx2_dot3_float(m->dot3->rgba, T0, c);
         for (int i = 0; i < 4; i++)
             y[i] = _mm256_min_ps(_mm256_mul_ps(c[i], T[i]), one);
         if (m->rgb)
@@ -2036,8 +2025,8 @@ AVX2_INLINE int avx2_modwrite_source1(const Avx2ModWrite *m, const FRAGV *const 
     if (!m->replace) {
         V4 c = smooth ? v4_lerp3f_clamp01(v4_load(a[0]), v4_load(a[1]), v4_load(a[2]), p)
                       : v4_clamp01(v4_load(a[0]));
-        if (m->dot3)
-            c = avx2_dot3_exact(m->dot3 == 2, t0, c);
+        if (t0)     /* (NULL where the instance has no DOT3) */
+            c = avx2_dot3_exact(m->dot3->rgba, t0, c);
         mm = v4_mul01(c, mm);
         if (m->rgb)
             mm = v4_keep_alpha(mm, c);
@@ -2101,11 +2090,11 @@ AVX2_INLINE const FRAGV *avx2_modwrite_texel1(const ModWriteTexture *tx, int src
 
 /* fragment i's place in the first unit's texels or coordinates (DOT3), or
 ** NULL where they are not the source */
-AVX2_INLINE const FRAGV *modwrite_ct0(const Avx2ModWrite *m, int i)
+AVX2_INLINE const FRAGV *modwrite_ct0(const ModWriteDot3 *d, int i)
 {
-    return m->ct0 ? m->ct0 + (size_t)i * m->ct0_stride : NULL;
+    return d->ct0 ? d->ct0 + (size_t)i * d->ct0_stride : NULL;
 }
-AVX2_INLINE const TexCoord *modwrite_tc0(const Avx2ModWrite *m, int i) { return m->tc0 ? m->tc0 + i : NULL; }
+AVX2_INLINE const TexCoord *modwrite_tc0(const ModWriteDot3 *d, int i) { return d->tc0 ? d->tc0 + i : NULL; }
 
 /* the kernel over fragments 0..n-1 at the offsets k of dst (RGBA8888
 ** words, or RGB565 words whose first is column x0): weights p, texels
@@ -2125,9 +2114,10 @@ AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *mw, const FRAGV *const a[
     uint16_t *dst16 = dst;
     FRAGV tmp[4], tmp0[4];
     /* the first unit's texels (DOT3): from ct0, or sampled at tc0 */
-    const int src0 = m->tc0 != NULL;
+    const ModWriteDot3 d3 = dot3 ? *m->dot3 : (ModWriteDot3){ 0 };
+    const int src0 = d3.tc0 != NULL;
 #define MODWRITE_T0(i) \
-    (dot3 ? avx2_modwrite_texel1(&m->tx0, src0, modwrite_ct0(m, i), modwrite_tc0(m, i), tmp0) : NULL)
+    (dot3 ? avx2_modwrite_texel1(&d3.tx0, src0, modwrite_ct0(&d3, i), modwrite_tc0(&d3, i), tmp0) : NULL)
 #define MODWRITE_EXACT(i, d) \
     (rgb565 ? avx2_modwrite565_1(m, a, smooth, kind, p[i], MODWRITE_T0(i), \
                                  avx2_modwrite_texel1(&m->tx, src, ct + (size_t)(i) * stride, tc + (i), tmp), \
@@ -2156,7 +2146,8 @@ AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *mw, const FRAGV *const a[
         unsigned bad = 0xFFu;
         if (avx2_modwrite_texels8(&m->tx, src, ct + (size_t)j * stride, stride, tc + j, T)
             && (!dot3
-                || avx2_modwrite_texels8(&m->tx0, src0, modwrite_ct0(m, j), m->ct0_stride, modwrite_tc0(m, j), T0))) {
+                || avx2_modwrite_texels8(&d3.tx0, src0, modwrite_ct0(&d3, j), d3.ct0_stride, modwrite_tc0(&d3, j),
+                                         T0))) {
             const __m256i x3 = _mm256_and_si256(_mm256_add_epi32(idx, _mm256_set1_epi32(x0)), _mm256_set1_epi32(3));
             bad = rgb565 ? avx2_modwrite565_8(m, smooth, kind, dot3, &p[j], T0, T, d, x3, &w)
                          : avx2_modwrite8(m, smooth, kind, dot3, &p[j], T0, T, d, &w);
@@ -2190,16 +2181,17 @@ AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *mw, const FRAGV *const a[
 }
 
 /* avx2_modwrite_run with the texel source, the colour's interpolation
-** (m->smooth), the blend (m->kind) and the target fixed per instance */
-static inline void avx2_modwrite_dispatch(const Avx2ModWrite *m, const FRAGV *const a[3], int src, int rgb565, int n,
-                                          int live, const uint8_t *k, int x0, const WGT (*p)[3], const FRAGV *ct,
-                                          size_t stride, const TexCoord *tc, void *dst, const FRAGV unorm5[32],
-                                          const FRAGV unorm6[64])
+** (m->smooth), the blend (m->kind), the target and DOT3 (dot3, a constant
+** where this is inlined) fixed per instance */
+#define AVX2_MODWRITE_ARGS \
+    const Avx2ModWrite *m, const FRAGV *const a[3], int src, int rgb565, int n, int live, const uint8_t *k, int x0, \
+        const WGT (*p)[3], const FRAGV *ct, size_t stride, const TexCoord *tc, void *dst, const FRAGV unorm5[32], \
+        const FRAGV unorm6[64]
+AVX2_INLINE void avx2_modwrite_instances(AVX2_MODWRITE_ARGS, int dot3)
 {
-#define MODWRITE_D(S, K, F, D) \
-    (src ? avx2_modwrite_run(m, a, S, K, 1, F, D, n, live, k, x0, p, ct, stride, tc, dst, unorm5, unorm6) \
-         : avx2_modwrite_run(m, a, S, K, 0, F, D, n, live, k, x0, p, ct, stride, tc, dst, unorm5, unorm6))
-#define MODWRITE(S, K, F) (m->dot3 ? MODWRITE_D(S, K, F, 1) : MODWRITE_D(S, K, F, 0))
+#define MODWRITE(S, K, F) \
+    (src ? avx2_modwrite_run(m, a, S, K, 1, F, dot3, n, live, k, x0, p, ct, stride, tc, dst, unorm5, unorm6) \
+         : avx2_modwrite_run(m, a, S, K, 0, F, dot3, n, live, k, x0, p, ct, stride, tc, dst, unorm5, unorm6))
     switch ((rgb565 ? 6 : 0) + (m->smooth ? 3 : 0) + m->kind) {
     case 0: MODWRITE(0, 0, 0); break;
     case 1: MODWRITE(0, 1, 0); break;
@@ -2214,8 +2206,25 @@ static inline void avx2_modwrite_dispatch(const Avx2ModWrite *m, const FRAGV *co
     default: break;    /* RGB565 takes blend kinds 0 and 1 only */
     }
 #undef MODWRITE
-#undef MODWRITE_D
 }
+
+/* the instances with and without DOT3 as two functions: one function of
+** all of them grows past what the compiler optimises as well (its
+** register allocation), which cost the lone unit's kernel 2-3% */
+static __attribute__((noinline)) void avx2_modwrite_plain(AVX2_MODWRITE_ARGS)
+{
+    avx2_modwrite_instances(m, a, src, rgb565, n, live, k, x0, p, ct, stride, tc, dst, unorm5, unorm6, 0);
+}
+static __attribute__((noinline)) void avx2_modwrite_dot3(AVX2_MODWRITE_ARGS)
+{
+    avx2_modwrite_instances(m, a, src, rgb565, n, live, k, x0, p, ct, stride, tc, dst, unorm5, unorm6, 1);
+}
+static inline void avx2_modwrite_dispatch(AVX2_MODWRITE_ARGS)
+{
+    (m->dot3 ? avx2_modwrite_dot3 : avx2_modwrite_plain)(m, a, src, rgb565, n, live, k, x0, p, ct, stride, tc, dst,
+                                                         unorm5, unorm6);
+}
+#undef AVX2_MODWRITE_ARGS
 /* }==================================================================== */
 #endif
 

@@ -149,8 +149,9 @@ static void debug_color_avx2(int clamp, const FRAGV *const col[3], int n, const 
 /* gles_debug_modulate_write's kernel run, with the count of the lanes
 ** the kernel leaves to the exact code, group by group */
 static int debug_modulate_write_avx2(Avx2ModWrite *m, const FRAGV *const a[3], int n, const uint8_t *k_in,
-                                     const WGT (*p_in)[3], const FRAGV *ct0_in, const FRAGV *ct_in, int pad,
-                                     int rgb565, int x0, void *dst, const FRAGV unorm5[32], const FRAGV unorm6[64])
+                                     const WGT (*p_in)[3], int rgba_dot, const FRAGV *ct0_in, const FRAGV *ct_in,
+                                     int pad, int rgb565, int x0, void *dst, const FRAGV unorm5[32],
+                                     const FRAGV unorm6[64])
 {
     const int smooth = m->smooth, kind = m->kind;
     DebugGroup g;
@@ -159,13 +160,16 @@ static int debug_modulate_write_avx2(Avx2ModWrite *m, const FRAGV *const a[3], i
     uint8_t *const k = g.k;
     WGT (*const p)[3] = g.p;
     FRAGV (*const ct)[4] = g.ct;
-    if (m->dot3) {
+    ModWriteDot3 d3;
+    if (rgba_dot >= 0) {
         /* the first unit's texels, padded as the stage pads them */
         memcpy(g.ct0, ct0_in, (size_t)live * sizeof g.ct0[0]);
         for (int j = live; j < n; j++)
             memcpy(g.ct0[j], g.ct0[live - 1], sizeof g.ct0[0]);
-        avx2_modwrite_dot3(m, m->dot3 == 2, g.ct0[0], 4);
+        d3 = (ModWriteDot3){ .rgba = rgba_dot, .ct0 = g.ct0[0], .ct0_stride = 4 };
+        m->dot3 = &d3;
     }
+    const int dot3 = m->dot3 != NULL;
     int exact = n % 8;
     for (int j = 0; j + 8 <= n; j += 8) {
         uint32_t d[8];
@@ -178,12 +182,12 @@ static int debug_modulate_write_avx2(Avx2ModWrite *m, const FRAGV *const a[3], i
             _mm256_set1_epi32(3));
         __m256i w;
         __m256 T[4], T0[4] = { _mm256_setzero_ps() };
-        if (!avx2_texels_ct8(ct[j], 4, T) || (m->dot3 && !avx2_texels_ct8(g.ct0[j], 4, T0)))
+        if (!avx2_texels_ct8(ct[j], 4, T) || (dot3 && !avx2_texels_ct8(g.ct0[j], 4, T0)))
             exact += 8;
         else
             exact += __builtin_popcount(
-                rgb565 ? avx2_modwrite565_8(m, smooth, kind, m->dot3 != 0, (const WGT (*)[3])&p[j], T0, T, dv, x3, &w)
-                       : avx2_modwrite8(m, smooth, kind, m->dot3 != 0, (const WGT (*)[3])&p[j], T0, T, dv, &w));
+                rgb565 ? avx2_modwrite565_8(m, smooth, kind, dot3, (const WGT (*)[3])&p[j], T0, T, dv, x3, &w)
+                       : avx2_modwrite8(m, smooth, kind, dot3, (const WGT (*)[3])&p[j], T0, T, dv, &w));
     }
     const TexCoord tc[SPAN_CHUNK] = { { 0, 0 } };   /* source 0 reads no coordinates */
     avx2_modwrite_dispatch(m, a, 0, rgb565, n, live, k, x0, (const WGT (*)[3])p, ct[0], 4, tc, dst, unorm5, unorm6);
@@ -229,7 +233,6 @@ int gles_debug_modulate_write(int smooth, int rgb, int kind, unsigned int alpha_
     const FRAGV *const a[3] = { col, smooth ? col + 4 : col, smooth ? col + 8 : col };
     Avx2ModWrite m;
     avx2_modwrite_setup(&m, a, smooth != 0, rgb != 0, kind, alpha_func, alpha_ref);
-    m.dot3 = dot3;
     FRAGV t_row[4], unorm5[32], unorm6[64];
     for (int x = 0; x < 4; x++)
         t_row[(x0 + x) & 3] = dither ? fragment_dither_threshold(x0 + x, 0) : FRAG_ONE / 2;
@@ -239,8 +242,8 @@ int gles_debug_modulate_write(int smooth, int rgb, int kind, unsigned int alpha_
             unorm5[d] = frag_from_unorm(d, 31);
         unorm6[d] = frag_from_unorm(d, 63);
     }
-    return debug_modulate_write_avx2(&m, a, n, k, (const WGT (*)[3])p, ct0, ct, pad, rgb565 != 0, x0, dst, unorm5,
-                                     unorm6);
+    return debug_modulate_write_avx2(&m, a, n, k, (const WGT (*)[3])p, dot3 - 1, ct0, ct, pad, rgb565 != 0, x0, dst,
+                                     unorm5, unorm6);
 #else
     (void)smooth, (void)rgb, (void)kind, (void)alpha_func, (void)alpha_ref, (void)col, (void)n, (void)k, (void)p,
         (void)dot3, (void)ct0, (void)ct, (void)pad, (void)rgb565, (void)dither, (void)x0, (void)dst;

@@ -1226,12 +1226,15 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
                         fragment_alpha_ref8(ctx));
     if (replace)
         avx2_modwrite_replace(&m);
-    const int rgba_dot = dot3 && ctx->units[u0].combine_rgb == GL_DOT3_RGBA;
-    if (sampled0) {
-        modwrite_texture_setup(&m.tx0, ctx->units[u0].bound, ctx->samplers[u0], ctx->texel_unorm8);
-        avx2_modwrite_dot3_sampled(&m, rgba_dot, b->tx);
-    } else if (dot3) {
-        avx2_modwrite_dot3(&m, rgba_dot, b->ct[0][u0], stride);
+    ModWriteDot3 d3;
+    if (dot3) {
+        d3.rgba = ctx->units[u0].combine_rgb == GL_DOT3_RGBA;
+        d3.ct0 = sampled0 ? NULL : b->ct[0][u0];
+        d3.ct0_stride = stride;
+        d3.tc0 = sampled0 ? b->tx : NULL;
+        if (sampled0)
+            modwrite_texture_setup(&d3.tx0, ctx->units[u0].bound, ctx->samplers[u0], ctx->texel_unorm8);
+        m.dot3 = &d3;
     }
     int n = b->n;
     if (src == 1) {
