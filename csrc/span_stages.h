@@ -1192,10 +1192,20 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
     const int smooth = !replace && !b->rect && t->smooth;
     const FRAGV *flat = b->rect ? b->rect->in.c : t->flat;
     const FRAGV *const a[3] = { smooth ? t->col[0] : flat, smooth ? t->col[1] : flat, smooth ? t->col[2] : flat };
+    /* a triangle's chunks share the constants (a rectangle's are set up
+    ** per chunk): the first chunk forms them, the rest copy them */
+    _Static_assert(sizeof(Avx2ModWrite) <= GLES_FUSED_SETUP_BYTES, "the context has room for the setup");
+    Avx2ModWrite m;
+    const int cached = !b->rect && ctx->fused_serial == t->serial;
     int in_range = 1;
-    for (int i = 0; i < 3 && smooth; i++)
-        for (int c = 0; c < 4; c++)
-            in_range &= a[i][c] >= 0 && a[i][c] <= FRAG_ONE;
+    if (cached) {
+        in_range = ctx->fused_in_range;
+        memcpy(&m, ctx->fused_setup, sizeof m);
+    } else {
+        for (int i = 0; i < 3 && smooth; i++)
+            for (int c = 0; c < 4; c++)
+                in_range &= a[i][c] >= 0 && a[i][c] <= FRAG_ONE;
+    }
     /* the first unit's texels are sampled here too where its sampler has
     ** the vector kernel (its coordinates are in b->tx, FETCH_COORDS_TX) */
     const size_t stride = GLES_MAX_TEXTURE_UNITS * 4;
@@ -1219,13 +1229,22 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
             (kind ? STAGE(stage_write_565_alpha) : STAGE(stage_write_565))(ctx, t, b);
         else
             STAGE(write_rgba8)(ctx, b, kind);
+        if (!b->rect)
+            ctx->fused_serial = t->serial, ctx->fused_in_range = 0;
         return;
     }
-    Avx2ModWrite m;
-    avx2_modwrite_setup(&m, a, smooth, tex->format != GL_RGBA, kind, ctx->alpha_test ? ctx->alpha_func : GL_ALWAYS,
-                        fragment_alpha_ref8(ctx));
-    if (replace)
-        avx2_modwrite_replace(&m);
+    if (!cached) {
+        avx2_modwrite_setup(&m, a, smooth, tex->format != GL_RGBA, kind,
+                            ctx->alpha_test ? ctx->alpha_func : GL_ALWAYS, fragment_alpha_ref8(ctx));
+        if (replace)
+            avx2_modwrite_replace(&m);
+        if (src == 1)
+            modwrite_texture_setup(&m.tx, tex, ctx->samplers[u], ctx->texel_unorm8);
+        if (!b->rect) {
+            memcpy(ctx->fused_setup, &m, sizeof m);
+            ctx->fused_serial = t->serial, ctx->fused_in_range = 1;
+        }
+    }
     ModWriteDot3 d3;
     if (dot3) {
         d3.rgba = ctx->units[u0].combine_rgb == GL_DOT3_RGBA;
@@ -1238,7 +1257,6 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
     }
     int n = b->n;
     if (src == 1) {
-        modwrite_texture_setup(&m.tx, tex, ctx->samplers[u], ctx->texel_unorm8);
         /* the tail padded to a group of eight (the slots past n are free) */
         _Static_assert(SPAN_CHUNK % 8 == 0, "a padded group stays within the chunk");
         n = avx2_modwrite_pad(8, n, b->k, b->p, smooth, b->tc, dot3 && !sampled0 ? b->ct[0][u0] : NULL, stride);

@@ -18,6 +18,8 @@
 /* {====================================================================
 ** limits (each at or above the spec's minimum, Tables 6.20-6.22) */
 #define GLES_MAX_TEXTURE_UNITS 4
+/* room for the fused span stage's per-triangle constants (Avx2ModWrite) */
+#define GLES_FUSED_SETUP_BYTES 1024
 #define GLES_MAX_CLIP_PLANES 6
 #define GLES_MODELVIEW_STACK_DEPTH 32
 #define GLES_PROJECTION_STACK_DEPTH 4
@@ -216,6 +218,12 @@ struct GlesContext {
     uint64_t prim_serial;       /* counts primitive setups, from 1 */
     uint64_t *nb_key[2];        /* [y & 1][x]: prim_serial * (height + 2) + y + 1, 0 if none */
     WGT (*nb_w[2])[3];
+    /* the fused stage's setup for the triangle of serial fused_serial (0:
+    ** none): whether its colours are in range, and its kernel's constants
+    ** (an Avx2ModWrite, span_stages.h), which every chunk of it shares */
+    uint64_t fused_serial;
+    int fused_in_range;
+    unsigned char fused_setup[GLES_FUSED_SETUP_BYTES];
 
     unsigned int error;
     char message[256];
