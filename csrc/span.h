@@ -15,10 +15,9 @@
 #define SPAN_CHUNK 64
 
 /* what a fetch stage leaves: each unit's texels (b->ct), the texel as the
-** colour (b->c), or the coordinates only (a later stage samples) */
-/* what a fetch stage leaves: texels, texels as the colour, or coordinates
-** only, in b->tc (FETCH_COORDS) or, for a unit without a level of detail
-** whose coordinates b->tc cannot hold (a later unit's are there), in b->tx
+** colour (b->c), or the coordinates only (a later stage samples), in b->tc
+** (FETCH_COORDS) or, for a unit without a level of detail whose
+** coordinates b->tc cannot keep (a later unit's go there), in b->tx
 ** (FETCH_COORDS_TX) */
 enum { FETCH_TEXELS, FETCH_DIRECT, FETCH_COORDS, FETCH_COORDS_TX };
 

@@ -551,7 +551,6 @@ static void STAGE(stage_fetch)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, 
 {
     /* FETCH_COORDS_TX is for a unit without a level of detail, so b->tx is free */
     const int lod = mode != FETCH_COORDS_TX && texture_needs_lod(ctx->units[u].bound);
-    TexCoord *const tc = mode == FETCH_COORDS_TX ? b->tx : b->tc;
 #if CHAIN_SIMD && NUM_IS_FIXED
     const __m256i a[3] = { avx2_load_num4(t->v[0]->tex[u]), avx2_load_num4(t->v[1]->tex[u]),
                            avx2_load_num4(t->v[2]->tex[u]) };
@@ -562,7 +561,7 @@ static void STAGE(stage_fetch)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, 
     const NUM tv[3] = { t->v[0]->tex[u][1], t->v[1]->tex[u][1], t->v[2]->tex[u][1] };
     const int four = proj ? 0 : b->n & ~3;
     for (int j = 0; j < four; j += 4) {
-        avx2_tex_coord_affine4(sv, tv, &b->p[j], &tc[j]);
+        avx2_tex_coord_affine4(sv, tv, &b->p[j], &b->tc[j]);
         if (lod) {
             avx2_tex_coord_affine4(sv, tv, &b->px[j], &b->tx[j]);
             avx2_tex_coord_affine4(sv, tv, &b->py[j], &b->ty[j]);
@@ -573,13 +572,17 @@ static void STAGE(stage_fetch)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, 
     const int four = 0;
 #endif
     for (int j = four; j < b->n; j++)
-        TEX_COORD(b->p[j], &tc[j]);
+        TEX_COORD(b->p[j], &b->tc[j]);
     if (lod)
         for (int j = four; j < b->n; j++) {
             TEX_COORD(b->px[j], &b->tx[j]);
             TEX_COORD(b->py[j], &b->ty[j]);
         }
 #undef TEX_COORD
+    /* (formed in b->tc and copied: with its stores named b->tc the
+    ** compiler vectorizes the loop above in the float builds) */
+    if (mode == FETCH_COORDS_TX)
+        memcpy(b->tx, b->tc, (size_t)b->n * sizeof b->tc[0]);
     if (mode == FETCH_TEXELS || mode == FETCH_DIRECT)
         STAGE(chunk_sample)(ctx, b, u, mode == FETCH_DIRECT);
 }
