@@ -251,22 +251,34 @@ int gles_debug_modulate_write(int smooth, int rgb, int kind, unsigned int alpha_
 #endif
 }
 
+#if NUM_IS_FIXED
+/* a test's triangle weights setup into *s; 0 where a value is outside the
+** ranges the setup makes: the mantissas recipw_of makes have 30 bits
+** (wgt_persp_any's kernel takes 31, any) */
+static int debug_wgt_setup(WgtSetup *s, int any, int eshift, int64_t lin_recip, const int64_t mant[3],
+                           const int qshift[3], int affine)
+{
+    if (eshift < 0 || eshift > 62)
+        return 0;
+    *s = (WgtSetup){ .eshift = eshift, .lin_recip = lin_recip, .affine = affine };
+    for (int i = 0; i < 3; i++) {
+        if (qshift[i] < 0 || mant[i] < 0 || mant[i] >= ((int64_t)1 << (any ? 31 : 30)))
+            return 0;
+        s->mant[i] = mant[i];
+        s->qshift[i] = qshift[i];
+    }
+    return 1;
+}
+#endif
+
 /* gles_debug_persp_any and gles_debug_persp: wgt_persp_any or wgt_persp */
 static int debug_persp(int any, int simd, int eshift, int64_t lin_recip, const int64_t mant[3], const int qshift[3],
                        int affine, int n, const int64_t *e, int32_t *out)
 {
 #if NUM_IS_FIXED
-    if (n < 0 || eshift < 0 || eshift > 62)
+    WgtSetup s;
+    if (n < 0 || !debug_wgt_setup(&s, any, eshift, lin_recip, mant, qshift, affine))
         return 0;
-    WgtSetup s = { .eshift = eshift, .lin_recip = lin_recip, .affine = affine };
-    for (int i = 0; i < 3; i++) {
-        /* the mantissas recipw_of makes: 30 bits (wgt_persp_any's kernel
-        ** takes 31) */
-        if (qshift[i] < 0 || mant[i] < 0 || mant[i] >= ((int64_t)1 << (any ? 31 : 30)))
-            return 0;
-        s.mant[i] = mant[i];
-        s.qshift[i] = qshift[i];
-    }
     int j = 0;
 #if SIMD_X86
     if (simd && simd_detect() >= SIMD_AVX2)
@@ -301,17 +313,12 @@ int gles_debug_persp_chunk(int simd, int eshift, int64_t lin_recip, const int64_
                            int affine, int n, const int64_t e0[3], const int64_t ea[3], int32_t *out)
 {
 #if NUM_IS_FIXED
-    if (n < 0 || n > SPAN_CHUNK || eshift < 0 || eshift > 62)
-        return 0;
     TriSetup t;
     SpanBuf b;
     memset(&t, 0, sizeof t);
-    t.wgt = (WgtSetup){ .eshift = eshift, .lin_recip = lin_recip, .affine = affine };
+    if (n < 0 || n > SPAN_CHUNK || !debug_wgt_setup(&t.wgt, 0, eshift, lin_recip, mant, qshift, affine))
+        return 0;
     for (int i = 0; i < 3; i++) {
-        if (qshift[i] < 0 || mant[i] < 0 || mant[i] >= ((int64_t)1 << 30))
-            return 0;
-        t.wgt.mant[i] = mant[i];
-        t.wgt.qshift[i] = qshift[i];
         t.ea[i] = ea[i];
         b.e0[i] = e0[i];
     }
