@@ -401,12 +401,17 @@ int span_blend_kind(const GlesContext *ctx)
     return -1;
 }
 
-/* whether operand op of source src is a source colour or alpha (SRC_COLOR
-** or SRC_ALPHA as `op`) of the unit's texture or the primary colour (which
-** is the previous colour at the first enabled unit) */
-static int dot3_arg(unsigned int src, unsigned int op, unsigned int want_op, int texture)
+/* whether arguments 0 and 1 (sources src, operands op) are the unit's
+** texture and the primary colour (the previous colour at the first
+** enabled unit), in either order, each with operand want_op */
+static int dot3_args(const unsigned int src[3], const unsigned int op[3], unsigned int want_op)
 {
-    return op == want_op && (texture ? src == GL_TEXTURE : src == GL_PRIMARY_COLOR || src == GL_PREVIOUS);
+    if (op[0] != want_op || op[1] != want_op)
+        return 0;
+    for (int t = 0; t < 2; t++)     /* the texture as argument t, the colour as the other */
+        if (src[t] == GL_TEXTURE && (src[1 - t] == GL_PRIMARY_COLOR || src[1 - t] == GL_PREVIOUS))
+            return 1;
+    return 0;
 }
 
 /* exactly two units, the first COMBINE DOT3_RGB (its alpha MODULATE) or
@@ -422,23 +427,11 @@ static int span_dot3_pair(const GlesContext *ctx)
     if (b->env_mode != GL_MODULATE || (b->bound->format != GL_RGBA && b->bound->format != GL_RGB))
         return 0;
     if (a->env_mode != GL_COMBINE || (a->combine_rgb != GL_DOT3_RGB && a->combine_rgb != GL_DOT3_RGBA)
-        || a->rgb_scale != 1.0)
+        || a->rgb_scale != 1.0 || a->alpha_scale != 1.0 || !dot3_args(a->src_rgb, a->op_rgb, GL_SRC_COLOR))
         return 0;
-    for (int t = 0; t < 2; t++)     /* the texture as argument t, the colour as the other */
-        if (dot3_arg(a->src_rgb[t], a->op_rgb[t], GL_SRC_COLOR, 1)
-            && dot3_arg(a->src_rgb[1 - t], a->op_rgb[1 - t], GL_SRC_COLOR, 0))
-            break;
-        else if (t == 1)
-            return 0;
-    if (a->combine_rgb == GL_DOT3_RGBA)
-        return a->alpha_scale == 1.0;
-    if (a->combine_alpha != GL_MODULATE || a->alpha_scale != 1.0)
-        return 0;
-    for (int t = 0; t < 2; t++)
-        if (dot3_arg(a->src_alpha[t], a->op_alpha[t], GL_SRC_ALPHA, 1)
-            && dot3_arg(a->src_alpha[1 - t], a->op_alpha[1 - t], GL_SRC_ALPHA, 0))
-            return 1;
-    return 0;
+    /* DOT3_RGBA's alpha is its rgb result; DOT3_RGB's the MODULATE */
+    return a->combine_rgb == GL_DOT3_RGBA
+        || (a->combine_alpha == GL_MODULATE && dot3_args(a->src_alpha, a->op_alpha, GL_SRC_ALPHA));
 }
 
 /* the stages for the current state into s, for rectangles (rect) or

@@ -56,7 +56,7 @@ static int STAGE(persp_affine_run)(const TriSetup *t, SpanBuf *b)
     if (!ws->affine || ws->lin_recip < 0 || sh > 62 || n < 4 || b->k[n - 1] != n - 1)
         return 0;
     const uint64_t r = (uint64_t)ws->lin_recip, unit = (uint64_t)1 << sh;
-    __m256i sum[3], rem[3], step[3], carry_at[3], dr[3];
+    __m256i sum[3], rem[3], step[3], dr[3];
     for (int i = 1; i < 3; i++) {
         const int64_t first = b->e0[i], last = b->e0[i] + t->ea[i] * (n - 1);
         if (first < 0 || last < 0 || (first >> sh) > INT32_MAX || (last >> sh) > INT32_MAX)
@@ -72,10 +72,10 @@ static int STAGE(persp_affine_run)(const TriSetup *t, SpanBuf *b)
         rem[i] = _mm256_loadu_si256((const __m256i *)(const void *)r4);
         step[i] = _mm256_set1_epi64x((int64_t)((uint64_t)q4 * r));
         dr[i] = _mm256_set1_epi64x(d4);
-        carry_at[i] = _mm256_set1_epi64x((int64_t)unit - 1);     /* a carry where r_i + D > 2^eshift - 1 */
     }
     const __m256i one = _mm256_set1_epi64x(WGT_ONE), lr = _mm256_set1_epi64x((int64_t)r);
     const __m256i unitv = _mm256_set1_epi64x((int64_t)unit);
+    const __m256i carry_at = _mm256_set1_epi64x((int64_t)unit - 1);    /* a carry where r_i + D > 2^eshift - 1 */
     WGT (*const p)[3] = b->p;
     const int n4 = n & ~3;
     for (int j = 0; j < n4; j += 4) {
@@ -86,7 +86,7 @@ static int STAGE(persp_affine_run)(const TriSetup *t, SpanBuf *b)
         avx2_store_wgt4(l, &p[j]);
         for (int i = 1; i < 3; i++) {
             rem[i] = _mm256_add_epi64(rem[i], dr[i]);
-            const __m256i carry = _mm256_cmpgt_epi64(rem[i], carry_at[i]);
+            const __m256i carry = _mm256_cmpgt_epi64(rem[i], carry_at);
             sum[i] = _mm256_add_epi64(_mm256_add_epi64(sum[i], step[i]), _mm256_and_si256(carry, lr));
             rem[i] = _mm256_sub_epi64(rem[i], _mm256_and_si256(carry, unitv));
         }
