@@ -8,6 +8,7 @@
 ** bit for bit. fragment_inputs gives a primitive's fragment inputs at
 ** given edge values, for the reference and for points.
 */
+#include <string.h>
 #include "raster.h"
 #include "span.h"
 #include "fragment.h"
@@ -90,6 +91,44 @@ static void span_generic(GlesContext *ctx, const TriSetup *t, int y, int x0, int
         e[i] = t->ea[i] * x0 + t->eb[i] * y + t->ec[i];
     for (int k = 0; k < n; k++, e[0] += t->ea[0], e[1] += t->ea[1], e[2] += t->ea[2])
         fragment_from_setup(ctx, t, e, x0 + k, y, FRAG_ONE, NULL, NULL, NULL);
+}
+
+/* A flat colour's blend (blend 1 SRC_ALPHA, ONE_MINUS_SRC_ALPHA, 2 ONE,
+** ONE) maps each channel's destination byte alone to its result: the
+** table of those results, every byte of every channel done by
+** span_fused's scalar arithmetic, or NULL while the colour has blended
+** fewer than GLES_FLAT_TABLE_AFTER fragments (n more now) since it became
+** the key. */
+static const uint32_t (*span_flat_table(GlesContext *ctx, const FRAGV sterm[4], FRAGV da, int blend, int n))[256]
+{
+    FlatTable *ft = &ctx->flat_table;
+    if (ft->blend != blend || ft->da != da || ft->sterm[0] != sterm[0] || ft->sterm[1] != sterm[1]
+        || ft->sterm[2] != sterm[2] || ft->sterm[3] != sterm[3]) {
+        memcpy(ft->sterm, sterm, sizeof ft->sterm);
+        ft->da = da;
+        ft->blend = blend;
+        ft->ready = 0;
+        ft->seen = 0;
+    }
+    if (ft->ready)
+        return (const uint32_t (*)[256])ft->word;
+    ft->seen += n;
+    if (ft->seen < GLES_FLAT_TABLE_AFTER)
+        return NULL;
+    for (int i = 0; i < 4; i++)
+        for (int d = 0; d < 256; d++) {
+            const FRAGV dv = ctx->unorm8[d];
+            const FRAGV v = sterm[i] + (blend == 1 ? frag_mul(dv, da) : dv);
+            ft->word[i][d] = frag_to_unorm(v, 255, FRAG_ONE / 2) << (8 * i);
+        }
+    ft->ready = 1;
+    return (const uint32_t (*)[256])ft->word;
+}
+
+/* the blend of destination word d through a span_flat_table */
+static inline uint32_t span_flat_word(const uint32_t (*table)[256], uint32_t d)
+{
+    return table[0][d & 0xFFu] | table[1][(d >> 8) & 0xFFu] | table[2][(d >> 16) & 0xFFu] | table[3][d >> 24];
 }
 
 /* the fused spans: name, smooth, depth, blend (span_fused.h) */

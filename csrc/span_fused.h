@@ -35,6 +35,14 @@ static inline __attribute__((always_inline)) void SPAN_FN(span_fused)(GlesContex
         for (int i = 0; i < 4; i++)
             sterm[i] = blend == 1 ? frag_mul(frag_clamp01(t->flat[i]), sa) : frag_clamp01(t->flat[i]);
     }
+    /* ... so each channel's result is a function of its destination byte
+    ** alone: a table of them once the colour has blended enough fragments */
+    const uint32_t (*const table)[256] = !smooth && blend ? span_flat_table(ctx, sterm, da, blend, n) : NULL;
+    if (!smooth && !depth && table) {
+        for (int k = 0; k < n; k++)
+            dst[k] = span_flat_word(table, dst[k]);
+        return;
+    }
 #if CHAIN_SIMD
     const V4 sterm_v = !smooth && blend ? v4_load(sterm) : v4_set1(0), da_v = v4_set1(da);
     const int vector_ok = v4_fits(sterm_v) && v4_fits(da_v);
@@ -52,6 +60,10 @@ static inline __attribute__((always_inline)) void SPAN_FN(span_fused)(GlesContex
         }
         if (!smooth && !blend) {
             dst[k] = t->flat_packed;
+            continue;
+        }
+        if (!smooth && table) {
+            dst[k] = span_flat_word(table, dst[k]);
             continue;
         }
         FRAGV c[4];

@@ -20,6 +20,9 @@
 #define GLES_MAX_TEXTURE_UNITS 4
 /* room for the fused span stage's per-triangle constants (Avx2ModWrite) */
 #define GLES_FUSED_SETUP_BYTES 1024
+/* fragments of one flat colour's blend before its table is built: building
+** it (1024 entries) then costs at most what those fragments did */
+#define GLES_FLAT_TABLE_AFTER 1024
 #define GLES_MAX_CLIP_PLANES 6
 #define GLES_MODELVIEW_STACK_DEPTH 32
 #define GLES_PROJECTION_STACK_DEPTH 4
@@ -199,6 +202,16 @@ typedef struct TexCoord TexCoord;
 typedef void (*TexSpanSampler)(const Texture *tex, int n, const TexCoord *c, const TexCoord *dx,
                                const TexCoord *dy, FRAGV *out, size_t stride, const FRAGV *unorm);
 
+/* the words of one flat colour's blend, a table per destination byte,
+** built once that colour has blended GLES_FLAT_TABLE_AFTER fragments */
+typedef struct FlatTable {
+    FRAGV sterm[4], da;     /* the key: the source term and 1 - A */
+    int blend;              /* 0: no key */
+    int ready;
+    int64_t seen;           /* fragments of the key blended without the table */
+    uint32_t word[4][256];  /* [channel][byte]: that channel's result, in place */
+} FlatTable;
+
 /* {====================================================================
 ** the context */
 struct GlesContext {
@@ -224,6 +237,9 @@ struct GlesContext {
     uint64_t fused_serial;
     int fused_in_range;
     unsigned char fused_setup[GLES_FUSED_SETUP_BYTES];
+    /* a flat colour's blend as a table per destination byte (span.c's
+    ** span_flat_table) */
+    FlatTable flat_table;
 
     unsigned int error;
     char message[256];

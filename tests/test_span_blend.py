@@ -182,3 +182,85 @@ def test_blend_path_exact_on_a_full_ramp():
         want = (2 * (200 * a + d * (255 - a)) + 255) // 510
         np.testing.assert_array_equal(out[0], out[1], err_msg=numeric)
         np.testing.assert_array_equal(out[1], want, err_msg=numeric)
+
+
+
+A_COLOUR, B_COLOUR = (200, 17, 96, 77), (3, 250, 128, 160)
+
+
+def _flat_table_scene(numeric: str, blend: str, zless: bool, generic: bool,
+                      colours: tuple = (A_COLOUR, A_COLOUR, B_COLOUR, A_COLOUR)):
+    """A destination holding every byte value in every channel (returned too), then full-window
+    flat quads of the given colours blended over it. Each quad has 4096 fragments, so it goes
+    through span_flat_table's table after the first 1024 of a colour; by default colours A, A, B,
+    A: the second A reuses the table, B and the last A build it again. Under zless each quad is
+    tilted in depth, so part of it fails the test."""
+    n = 64
+    ctx = make_ctx(numeric, n, n, depth=24 if zless else 0)
+    gl = ctx.gl
+    if generic:
+        ctx.debug(1)
+    set_ortho(gl, n, n, -1.0, 1.0)
+    i = np.arange(n * n)
+    dest = np.stack([(i * k + off) % 256 for k, off in ((1, 0), (7, 3), (13, 91), (101, 200))], axis=1)
+    dest = np.ascontiguousarray(dest.reshape(n, n, 4), dtype=np.uint8)
+    ids = gl.glGenTextures(1)
+    gl.glBindTexture(C.GL_TEXTURE_2D, int(np.ravel(ids)[0]))
+    gl.glTexImage2D(C.GL_TEXTURE_2D, 0, C.GL_RGBA, n, n, 0, C.GL_RGBA, C.GL_UNSIGNED_BYTE, dest)
+    for p in (C.GL_TEXTURE_MIN_FILTER, C.GL_TEXTURE_MAG_FILTER):
+        gl.glTexParameteri(C.GL_TEXTURE_2D, p, C.GL_NEAREST)
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_REPLACE)
+    gl.glClearDepthf(1.0)
+    gl.glClear(C.GL_COLOR_BUFFER_BIT | C.GL_DEPTH_BUFFER_BIT)
+    quad = np.array([[0, 0, 0], [n, 0, 0], [n, n, 0], [0, 0, 0], [n, n, 0], [0, n, 0]], np.float32)
+    if zless:
+        gl.glEnable(C.GL_DEPTH_TEST)
+        gl.glDepthFunc(C.GL_LESS)
+    gl.glEnable(C.GL_TEXTURE_2D)
+    gl.glEnableClientState(C.GL_TEXTURE_COORD_ARRAY)
+    gl.glTexCoordPointer(2, C.GL_FLOAT, 0, np.ascontiguousarray(quad[:, :2] / n))
+    draw_arrays(gl, quad + [0, 0, -0.9])     # window depth 0.95
+    gl.glDisableClientState(C.GL_TEXTURE_COORD_ARRAY)
+    gl.glDisable(C.GL_TEXTURE_2D)
+    gl.glShadeModel(C.GL_FLAT)
+    gl.glEnable(C.GL_BLEND)
+    if blend == "alpha":
+        gl.glBlendFunc(C.GL_SRC_ALPHA, C.GL_ONE_MINUS_SRC_ALPHA)
+    else:
+        gl.glBlendFunc(C.GL_ONE, C.GL_ONE)
+    for k, col in enumerate(colours):
+        v = quad.copy()
+        if zless:
+            # depth -z: the left edge in front of the previous quads, the right edge behind all
+            v[:, 2] = np.where(v[:, 0] == 0, 0.7 + 0.1 * k, -0.95)
+        draw_arrays(gl, v, np.array([col] * 6, np.uint8))
+    assert gl.glGetError() == 0
+    return ctx.color_buffer(), ctx.last_span_path(), dest
+
+
+@pytest.mark.parametrize("numeric", BUILDS)
+@pytest.mark.parametrize("blend", ["alpha", "add"])
+@pytest.mark.parametrize("zless", [False, True], ids=["plain", "zless"])
+def test_flat_blend_table_matches_generic(numeric, blend, zless):
+    """Large flat blends, through the per-byte table after their first fragments, equal the
+    generic path bit for bit over a destination with every byte value in every channel."""
+    got, path, dest = _flat_table_scene(numeric, blend, zless, generic=False)
+    want, gpath, _ = _flat_table_scene(numeric, blend, zless, generic=True)
+    assert path == ("flat_zless_" if zless else "flat_") + blend and gpath == "generic"
+    np.testing.assert_array_equal(got, want)
+    assert (got != dest).any()
+    if zless:
+        # the tilted quads' right parts failed the depth test
+        assert (got[:, -1] == dest[:, -1]).all()
+
+
+@pytest.mark.parametrize("numeric", BUILDS)
+@pytest.mark.parametrize("blend", ["alpha", "add"])
+def test_flat_blend_table_formula(numeric, blend):
+    """One large flat quad blended over every byte value: A s + (1 - A) d (or min(s + d, 1)) in
+    real numbers, rounded to the byte, within the one step the conversion allows (§2.14.9)."""
+    got, _, dest = _flat_table_scene(numeric, blend, False, generic=False, colours=(A_COLOUR,))
+    d = dest.astype(np.float64)
+    s = np.array(A_COLOUR, np.float64)
+    want = np.minimum(d + s, 255) if blend == "add" else s * (s[3] / 255) + d * (1 - s[3] / 255)
+    assert np.abs(got.astype(np.float64) - want).max() <= 1
