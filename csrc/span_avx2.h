@@ -1070,15 +1070,14 @@ static inline void avx2_bilerp_rgba8(uint32_t c00, uint32_t c10, uint32_t c01, u
 }
 
 /* wgt_linear then wgt_depth3 of four fragments with edge values e1[k],
-** e2[k] (|e| <= 2^53: the conversion to double is exact, so the float
-** build's conversion from it rounds once, as (NUM)e does), the same IEEE
-** operations in lanes; dbl_to_i64's tests as selects (NaN and v <= 0 give
-** 0, v >= maxval gives maxval, else floor(v + 1/2)); maxval <= INT32_MAX */
-AVX2_INLINE void v4_depth4(const WgtSetup *s, const int64_t e1[4], const int64_t e2[4], const DEPTHV z[3],
-                           uint32_t maxval, uint32_t *out)
+** e2[k], given as the doubles d1, d2 (|e| <= 2^53: the conversion to
+** double is exact, so the float build's conversion from it rounds once, as
+** (NUM)e does), the same IEEE operations in lanes; dbl_to_i64's tests as
+** selects (NaN and v <= 0 give 0, v >= maxval gives maxval, else
+** floor(v + 1/2)); maxval <= INT32_MAX */
+AVX2_INLINE void v4_depth4_pd(const WgtSetup *s, __m256d d1, __m256d d2, const DEPTHV z[3], uint32_t maxval,
+                              uint32_t *out)
 {
-    const __m256d d1 = _mm256_setr_pd((double)e1[0], (double)e1[1], (double)e1[2], (double)e1[3]);
-    const __m256d d2 = _mm256_setr_pd((double)e2[0], (double)e2[1], (double)e2[2], (double)e2[3]);
 #if defined(GLES_NUM_FLOAT)
     const V4 l1 = _mm_mul_ps(_mm256_cvtpd_ps(d1), _mm_set1_ps(s->inv_area));
     const V4 l2 = _mm_mul_ps(_mm256_cvtpd_ps(d2), _mm_set1_ps(s->inv_area));
@@ -1100,6 +1099,13 @@ AVX2_INLINE void v4_depth4(const WgtSetup *s, const int64_t e1[4], const int64_t
     r = _mm256_blendv_pd(r, zero, _mm256_cmp_pd(vd, zero, _CMP_LE_OQ));
     r = _mm256_blendv_pd(r, zero, _mm256_cmp_pd(vd, vd, _CMP_UNORD_Q));
     _mm_storeu_si128((__m128i *)(void *)out, _mm256_cvttpd_epi32(r));
+}
+/* the same of edge values as int64 */
+AVX2_INLINE void v4_depth4(const WgtSetup *s, const int64_t e1[4], const int64_t e2[4], const DEPTHV z[3],
+                           uint32_t maxval, uint32_t *out)
+{
+    v4_depth4_pd(s, _mm256_setr_pd((double)e1[0], (double)e1[1], (double)e1[2], (double)e1[3]),
+                 _mm256_setr_pd((double)e2[0], (double)e2[1], (double)e2[2], (double)e2[3]), z, maxval, out);
 }
 
 /* the s (or t, odd = 1) of four fragments' coordinates c[0..3] */

@@ -279,6 +279,32 @@ static void STAGE(stage_depth)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 #if CHAIN_SIMD && !NUM_IS_FIXED
     if (!t->depth_offset && ctx->depth_max <= INT32_MAX) {
         const DEPTHV zv[3] = { t->v[0]->wz, t->v[1]->wz, t->v[2]->wz };
+        const int n4 = b->n & ~3;
+        /* slots that are offsets (the chain's first stage): the edge values
+        ** e0 + ea k step by ea per slot, and stay integers of magnitude below
+        ** 2^51 wherever they do at k = 0 and k = n4 (with |ea| below 2^44):
+        ** each double sum is then exact, the value the conversion of the
+        ** int64 gives */
+        const int64_t lim51 = (int64_t)1 << 51, lim_ea = (int64_t)1 << 44;
+        if (n4 && b->k[b->n - 1] == b->n - 1 && t->ea[1] > -lim_ea && t->ea[1] < lim_ea && t->ea[2] > -lim_ea
+            && t->ea[2] < lim_ea && b->e0[1] > -lim51 && b->e0[1] < lim51 && b->e0[2] > -lim51 && b->e0[2] < lim51
+            && b->e0[1] + t->ea[1] * n4 > -lim51 && b->e0[1] + t->ea[1] * n4 < lim51
+            && b->e0[2] + t->ea[2] * n4 > -lim51 && b->e0[2] + t->ea[2] * n4 < lim51) {
+            const __m256d k4 = _mm256_setr_pd(0, 1, 2, 3);
+            const double a1 = (double)t->ea[1], a2 = (double)t->ea[2];
+            __m256d d1 = _mm256_add_pd(_mm256_set1_pd((double)b->e0[1]), _mm256_mul_pd(k4, _mm256_set1_pd(a1)));
+            __m256d d2 = _mm256_add_pd(_mm256_set1_pd((double)b->e0[2]), _mm256_mul_pd(k4, _mm256_set1_pd(a2)));
+            const __m256d step1 = _mm256_set1_pd(4 * a1), step2 = _mm256_set1_pd(4 * a2);
+            /* the loop's constants in locals (the stores to b->z could alias fields) */
+            const WgtSetup ws = t->wgt;
+            const uint32_t top = ctx->depth_max;
+            uint32_t *const z = b->z;
+            for (; j < n4; j += 4) {
+                v4_depth4_pd(&ws, d1, d2, zv, top, &z[j]);
+                d1 = _mm256_add_pd(d1, step1);
+                d2 = _mm256_add_pd(d2, step2);
+            }
+        }
         const int64_t lim = (int64_t)1 << 53;
         for (; j + 4 <= b->n; j += 4) {
             int64_t e1[4], e2[4], e[3];
