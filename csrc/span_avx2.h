@@ -1047,6 +1047,30 @@ AVX2_INLINE uint32_t v4_pack_unorm8(V4 v)
     i = _mm_packus_epi16(_mm_packus_epi32(i, i), _mm_setzero_si128());
     return (uint32_t)_mm_cvtsi128_si32(i);
 }
+/* pack565 of red, green and blue (fragment_channel of 5, 6 and 5 bits;
+** the alpha lane gives 0): with dither frag_to_unorm (0 unless v > 0,
+** maxval from 1 up, else v maxval + t truncated), else frag_to_msb
+** (floor(v 2^bits), 0 unless v > 0, at most 2^bits - 1; the floor of a
+** larger value, or of infinity, is at least 2^bits, so the minimum is it) */
+AVX2_INLINE uint32_t v4_pack565(V4 v, int dither, FRAGV t)
+{
+    const V4 zero = V4_OP(setzero)(), top = V4_OP(setr)(31, 63, 31, 0);
+    V4 x;
+    if (dither) {
+        x = V4_OP(add)(V4_OP(mul)(v, top), V4_OP(set1)(t));
+        x = V4_OP(blendv)(x, top, v4_ge(v, V4_OP(set1)(1)));
+    } else {
+#if defined(GLES_NUM_FLOAT)
+        x = _mm_floor_ps(V4_OP(mul)(v, V4_OP(setr)(32, 64, 32, 1)));
+#else
+        x = _mm256_floor_pd(V4_OP(mul)(v, V4_OP(setr)(32, 64, 32, 1)));
+#endif
+        x = V4_OP(min)(x, top);
+    }
+    x = V4_OP(blendv)(zero, x, v4_gt(v, zero));
+    const __m128i i = _mm_sllv_epi32(v4_trunc_i32(x), _mm_setr_epi32(11, 5, 0, 0));
+    return (uint32_t)_mm_cvtsi128_si32(_mm_or_si128(_mm_or_si128(i, _mm_srli_si128(i, 4)), _mm_srli_si128(i, 8)));
+}
 /* frag_lerp3f: a0 w0 + a1 w1 + a2 w2 */
 AVX2_INLINE V4 v4_lerp3f(V4 a0, V4 a1, V4 a2, const WGT *p)
 {

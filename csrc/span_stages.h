@@ -1135,7 +1135,7 @@ static void STAGE(stage_write_565)(GlesContext *ctx, const TriSetup *t, SpanBuf 
     dither_row(b, dither, t_row);
     for (int j = 0; j < b->n; j++) {
         const FRAGV t_d = t_row[(b->x0 + b->k[j]) & 3];
-#if CHAIN_SIMD && NUM_IS_FIXED
+#if CHAIN_SIMD
         dst[b->k[j]] = (uint16_t)v4_pack565(v4_load(b->c[j]), dither, t_d);
 #else
         dst[b->k[j]] = (uint16_t)pack565(b->c[j], dither, t_d);
@@ -1157,7 +1157,7 @@ static void STAGE(stage_write_565_alpha)(GlesContext *ctx, const TriSetup *t, Sp
         uint32_t d = dst[b->k[j]];
         const FRAGV t_d = t_row[(b->x0 + b->k[j]) & 3];
         FRAGV dv[4] = { ctx->unorm5[d >> 11], ctx->unorm6[(d >> 5) & 63], ctx->unorm5[d & 31], 0 };
-#if CHAIN_SIMD && NUM_IS_FIXED
+#if CHAIN_SIMD
         /* dv goes to the register lane by lane: a vector load of the four
         ** scalar stores just made would wait for them (no store forwarding) */
         const V4 cv = v4_clamp01(v4_load(c)), va = v4_alpha(cv);
