@@ -1190,10 +1190,44 @@ AVX2_INLINE void v4_linear_axis(V4 s, int n, int repeat, __m128i *i0, __m128i *i
     }
 }
 
+/* frag_bilerp_rgba8 of four fragments, lane k fragment k: texel words
+** g[0..3] (c00, c10, c01, c11), weights a and b; each channel's bytes d
+** as d / 255 (ctx->texel_unorm8's values), then the scalar code's IEEE
+** operations in its order, one channel of the four fragments at a time;
+** stored as out[k stride + channel] */
+AVX2_INLINE void v4_bilerp4(const __m128i g[4], V4 a, V4 b, FRAGV *out, size_t stride)
+{
+    const V4 ia = V4_OP(sub)(V4_OP(set1)(1), a), ib = V4_OP(sub)(V4_OP(set1)(1), b);
+    const V4 d255 = V4_OP(set1)(255);
+    const __m128i byte = _mm_set1_epi32(0xFF);
+    V4 ch[4];
+    for (int c = 0; c < 4; c++) {
+        V4 v[4];
+        for (int i = 0; i < 4; i++)
+            v[i] = V4_OP(div)(v4_from_i32(_mm_and_si128(_mm_srli_epi32(g[i], 8 * c), byte)), d255);
+        const V4 top = V4_OP(add)(V4_OP(mul)(v[0], ia), V4_OP(mul)(v[1], a));
+        const V4 bot = V4_OP(add)(V4_OP(mul)(v[2], ia), V4_OP(mul)(v[3], a));
+        ch[c] = V4_OP(add)(V4_OP(mul)(top, ib), V4_OP(mul)(bot, b));
+    }
+    /* channels of four fragments to four fragments' channels */
+#if defined(GLES_NUM_FLOAT)
+    _MM_TRANSPOSE4_PS(ch[0], ch[1], ch[2], ch[3]);
+#else
+    const __m256d t0 = _mm256_unpacklo_pd(ch[0], ch[1]), t1 = _mm256_unpackhi_pd(ch[0], ch[1]);
+    const __m256d t2 = _mm256_unpacklo_pd(ch[2], ch[3]), t3 = _mm256_unpackhi_pd(ch[2], ch[3]);
+    ch[0] = _mm256_permute2f128_pd(t0, t2, 0x20);
+    ch[1] = _mm256_permute2f128_pd(t1, t3, 0x20);
+    ch[2] = _mm256_permute2f128_pd(t0, t2, 0x31);
+    ch[3] = _mm256_permute2f128_pd(t1, t3, 0x31);
+#endif
+    for (int k = 0; k < 4; k++)
+        v4_store(out + (size_t)k * stride, ch[k]);
+}
+
 /* sample_level's GL_LINEAR of a power-of-two level for fragments 0..n-1
 ** (n a multiple of 4), REPEAT or CLAMP_TO_EDGE on each axis: the indices
-** and weights of four fragments at a time in vector lanes, then each
-** fragment's four texels filtered by avx2_bilerp_rgba8. Stops before the
+** and weights of four fragments at a time in vector lanes, then their
+** texels gathered and filtered by v4_bilerp4. Stops before the
 ** first four coordinates of which one is not finite (NaN and the infinities
 ** take sample_level's tests); returns the number of fragments done. */
 static inline int avx2_sample_linear_real(const TexImage *li, int n, const TexCoord *c, FRAGV *out, size_t stride,
@@ -1210,17 +1244,12 @@ static inline int avx2_sample_linear_real(const TexImage *li, int n, const TexCo
         v4_linear_axis(sv, w, repeat_s, &x0, &x1, &a);
         v4_linear_axis(tv, h, repeat_t, &y0, &y1, &b);
         const __m128i r0 = _mm_mullo_epi32(y0, _mm_set1_epi32(w)), r1 = _mm_mullo_epi32(y1, _mm_set1_epi32(w));
-        int32_t i00[4], i10[4], i01[4], i11[4];
-        NUM wa[4], wb[4];
-        _mm_storeu_si128((__m128i *)(void *)i00, _mm_add_epi32(r0, x0));
-        _mm_storeu_si128((__m128i *)(void *)i10, _mm_add_epi32(r0, x1));
-        _mm_storeu_si128((__m128i *)(void *)i01, _mm_add_epi32(r1, x0));
-        _mm_storeu_si128((__m128i *)(void *)i11, _mm_add_epi32(r1, x1));
-        V4_OP(storeu)(wa, a);
-        V4_OP(storeu)(wb, b);
-        for (int k = 0; k < 4; k++)
-            avx2_bilerp_rgba8(tx[i00[k]], tx[i10[k]], tx[i01[k]], tx[i11[k]], wa[k], wb[k],
-                              out + (size_t)(j + k) * stride);
+        const int *t32 = (const int *)(const void *)tx;
+        const __m128i g[4] = { _mm_i32gather_epi32(t32, _mm_add_epi32(r0, x0), 4),
+                               _mm_i32gather_epi32(t32, _mm_add_epi32(r0, x1), 4),
+                               _mm_i32gather_epi32(t32, _mm_add_epi32(r1, x0), 4),
+                               _mm_i32gather_epi32(t32, _mm_add_epi32(r1, x1), 4) };
+        v4_bilerp4(g, a, b, out + (size_t)j * stride, stride);
     }
     return n;
 }
