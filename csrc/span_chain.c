@@ -507,9 +507,10 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     ** (stage_sample_write), and then also for a lone REPLACE unit of an
     ** RGBA texture */
     const int sample_write = writes_fused && (first_modulates || direct) && ctx->sample_group[lone] > 1;
-    /* a rectangle's colour and window depth; that stage reads the colour
-    ** itself, so only the tests need it then */
-    if (rect && (!(modulate_write || sample_write) || tests))
+    /* a rectangle's colour and window depth; the fused stage reads the
+    ** colour itself and a lone REPLACE unit of an RGBA texture samples
+    ** into it, so only the tests need it then */
+    if (rect && (!(modulate_write || sample_write || direct) || tests))
         s[n++] = cs->rect_source;
     /* the window depth is for the depth test only */
     if (tests && early) {
