@@ -1190,6 +1190,21 @@ AVX2_INLINE void v4_linear_axis(V4 s, int n, int repeat, __m128i *i0, __m128i *i
     }
 }
 
+/* the 4x4 transpose of v[0..3]: lane i of v[k] to lane k of v[i] */
+AVX2_INLINE void v4_transpose4(V4 v[4])
+{
+#if defined(GLES_NUM_FLOAT)
+    _MM_TRANSPOSE4_PS(v[0], v[1], v[2], v[3]);
+#else
+    const __m256d t0 = _mm256_unpacklo_pd(v[0], v[1]), t1 = _mm256_unpackhi_pd(v[0], v[1]);
+    const __m256d t2 = _mm256_unpacklo_pd(v[2], v[3]), t3 = _mm256_unpackhi_pd(v[2], v[3]);
+    v[0] = _mm256_permute2f128_pd(t0, t2, 0x20);
+    v[1] = _mm256_permute2f128_pd(t1, t3, 0x20);
+    v[2] = _mm256_permute2f128_pd(t0, t2, 0x31);
+    v[3] = _mm256_permute2f128_pd(t1, t3, 0x31);
+#endif
+}
+
 /* frag_bilerp_rgba8 of four fragments, lane k fragment k: texel words
 ** g[0..3] (c00, c10, c01, c11), weights a and b; each channel's bytes d
 ** as d / 255 (ctx->texel_unorm8's values), then the scalar code's IEEE
@@ -1209,17 +1224,7 @@ AVX2_INLINE void v4_bilerp4(const __m128i g[4], V4 a, V4 b, FRAGV *out, size_t s
         const V4 bot = V4_OP(add)(V4_OP(mul)(v[2], ia), V4_OP(mul)(v[3], a));
         ch[c] = V4_OP(add)(V4_OP(mul)(top, ib), V4_OP(mul)(bot, b));
     }
-    /* channels of four fragments to four fragments' channels */
-#if defined(GLES_NUM_FLOAT)
-    _MM_TRANSPOSE4_PS(ch[0], ch[1], ch[2], ch[3]);
-#else
-    const __m256d t0 = _mm256_unpacklo_pd(ch[0], ch[1]), t1 = _mm256_unpackhi_pd(ch[0], ch[1]);
-    const __m256d t2 = _mm256_unpacklo_pd(ch[2], ch[3]), t3 = _mm256_unpackhi_pd(ch[2], ch[3]);
-    ch[0] = _mm256_permute2f128_pd(t0, t2, 0x20);
-    ch[1] = _mm256_permute2f128_pd(t1, t3, 0x20);
-    ch[2] = _mm256_permute2f128_pd(t0, t2, 0x31);
-    ch[3] = _mm256_permute2f128_pd(t1, t3, 0x31);
-#endif
+    v4_transpose4(ch);      /* channels of four fragments to four fragments' channels */
     for (int k = 0; k < 4; k++)
         v4_store(out + (size_t)k * stride, ch[k]);
 }
@@ -1300,6 +1305,36 @@ AVX2_INLINE void avx2_store_words4(uint32_t *dst, uint32_t k4, int run, __m128i 
     dst[(k4 >> 16) & 0xFFu] = (uint32_t)_mm_extract_epi32(w, 2);
     dst[k4 >> 24] = (uint32_t)_mm_extract_epi32(w, 3);
 }
+
+#if !NUM_IS_FIXED
+/* v4_rgba8 of four fragments' colours c[0..3] over the words d, one
+** channel of the four fragments per V4: the same IEEE operations lane by
+** lane (v4_clamp01, the blend, then v4_pack_unorm8's selects) */
+AVX2_INLINE __m128i v4_rgba8x4(const FRAGV (*c)[4], __m128i d, int kind)
+{
+    V4 v[4] = { v4_load(c[0]), v4_load(c[1]), v4_load(c[2]), v4_load(c[3]) };
+    v4_transpose4(v);
+    const V4 zero = V4_OP(setzero)(), one = V4_OP(set1)(1), max8 = V4_OP(set1)(255);
+    if (kind)
+        for (int i = 0; i < 4; i++)
+            v[i] = v4_clamp01(v[i]);
+    const V4 ia = kind == 1 ? v4_one_minus(v[3]) : zero, va = v[3];
+    __m128i w = _mm_setzero_si128();
+    for (int i = 0; i < 4; i++) {
+        V4 x = v[i];
+        if (kind) {
+            const V4 dv = V4_OP(div)(v4_from_i32(_mm_and_si128(_mm_srli_epi32(d, 8 * i), _mm_set1_epi32(0xFF))),
+                                     max8);
+            x = kind == 2 ? v4_add(x, dv) : v4_add(v4_mul01(x, va), v4_mul01(dv, ia));
+        }
+        V4 y = V4_OP(add)(V4_OP(mul)(x, max8), V4_OP(set1)(0.5));
+        y = V4_OP(blendv)(y, max8, v4_ge(x, one));
+        y = V4_OP(blendv)(zero, y, v4_gt(x, zero));
+        w = _mm_or_si128(w, _mm_slli_epi32(v4_trunc_i32(y), 8 * i));
+    }
+    return w;
+}
+#endif
 
 #if NUM_IS_FIXED
 /* v4_rgba8 of four fragments c[0..3] over the stored words d (lanes 0..3),

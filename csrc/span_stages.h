@@ -991,6 +991,16 @@ static inline void STAGE(write_rgba8)(GlesContext *ctx, SpanBuf *b, int kind)
 {
     uint32_t *dst = (uint32_t *)ctx->color + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
     int j = 0;
+#if CHAIN_SIMD && !NUM_IS_FIXED
+    /* four fragments at a time, a channel per V4 */
+    for (; j + 4 <= b->n; j += 4) {
+        uint32_t k4;
+        memcpy(&k4, &b->k[j], sizeof k4);
+        const int run = slots_adjacent4(&b->k[j]);
+        const __m128i d = kind ? avx2_load_words4(dst, k4, run) : _mm_setzero_si128();
+        avx2_store_words4(dst, k4, run, v4_rgba8x4(&b->c[j], d, kind));
+    }
+#endif
 #if CHAIN_SIMD && NUM_IS_FIXED
     /* four fragments at a time (avx2_rgba8x4); a group with a channel
     ** outside the kernel's range by v4_rgba8 */
