@@ -1036,14 +1036,26 @@ AVX2_INLINE V4 v4_unorm8(uint32_t word)
 {
     return V4_OP(div)(v4_from_i32(_mm_cvtepu8_epi32(_mm_cvtsi32_si128((int)word))), V4_OP(set1)(255));
 }
-/* frag_to_unorm(v, 255, 1/2): 0 unless v > 0, 255 from 1 up, else v 255 + 1/2 truncated */
-AVX2_INLINE uint32_t v4_pack_unorm8(V4 v)
+/* the same of one byte (bits shift .. shift + 7) of four words, lane by lane */
+AVX2_INLINE V4 v4_byte_unorm8(__m128i words, int shift)
+{
+    return V4_OP(div)(v4_from_i32(_mm_and_si128(_mm_srli_epi32(words, shift), _mm_set1_epi32(0xFF))),
+                      V4_OP(set1)(255));
+}
+/* frag_to_unorm(v, 255, 1/2) per lane, as int32: 0 unless v > 0, 255
+** from 1 up, else v 255 + 1/2 truncated */
+AVX2_INLINE __m128i v4_to_unorm8(V4 v)
 {
     const V4 zero = V4_OP(setzero)(), one = V4_OP(set1)(1);
     V4 x = V4_OP(add)(V4_OP(mul)(v, V4_OP(set1)(255)), V4_OP(set1)(0.5));
     x = V4_OP(blendv)(x, V4_OP(set1)(255), v4_ge(v, one));
     x = V4_OP(blendv)(zero, x, v4_gt(v, zero));
-    __m128i i = v4_trunc_i32(x);
+    return v4_trunc_i32(x);
+}
+/* the four channels' v4_to_unorm8 as one RGBA8888 word */
+AVX2_INLINE uint32_t v4_pack_unorm8(V4 v)
+{
+    __m128i i = v4_to_unorm8(v);
     i = _mm_packus_epi16(_mm_packus_epi32(i, i), _mm_setzero_si128());
     return (uint32_t)_mm_cvtsi128_si32(i);
 }
@@ -1213,13 +1225,11 @@ AVX2_INLINE void v4_transpose4(V4 v[4])
 AVX2_INLINE void v4_bilerp4(const __m128i g[4], V4 a, V4 b, FRAGV *out, size_t stride)
 {
     const V4 ia = V4_OP(sub)(V4_OP(set1)(1), a), ib = V4_OP(sub)(V4_OP(set1)(1), b);
-    const V4 d255 = V4_OP(set1)(255);
-    const __m128i byte = _mm_set1_epi32(0xFF);
     V4 ch[4];
     for (int c = 0; c < 4; c++) {
         V4 v[4];
         for (int i = 0; i < 4; i++)
-            v[i] = V4_OP(div)(v4_from_i32(_mm_and_si128(_mm_srli_epi32(g[i], 8 * c), byte)), d255);
+            v[i] = v4_byte_unorm8(g[i], 8 * c);
         const V4 top = V4_OP(add)(V4_OP(mul)(v[0], ia), V4_OP(mul)(v[1], a));
         const V4 bot = V4_OP(add)(V4_OP(mul)(v[2], ia), V4_OP(mul)(v[3], a));
         ch[c] = V4_OP(add)(V4_OP(mul)(top, ib), V4_OP(mul)(bot, b));
@@ -1307,32 +1317,30 @@ AVX2_INLINE void avx2_store_words4(uint32_t *dst, uint32_t k4, int run, __m128i 
 }
 
 #if !NUM_IS_FIXED
-/* v4_rgba8 of four fragments' colours c[0..3] over the words d, one
-** channel of the four fragments per V4: the same IEEE operations lane by
-** lane (v4_clamp01, the blend, then v4_pack_unorm8's selects) */
-AVX2_INLINE __m128i v4_rgba8x4(const FRAGV (*c)[4], __m128i d, int kind)
+/* v4_rgba8 of four fragments c[0..3] over the stored words d (lanes 0..3),
+** into *out, one channel of the four fragments per V4: the same IEEE
+** operations lane by lane (v4_clamp01, the blend, then v4_to_unorm8).
+** Returns 1: every value is in range in these builds (the fixed build's
+** kernel of the same name may leave a group to v4_rgba8). */
+AVX2_INLINE int avx2_rgba8x4(const FRAGV (*c)[4], __m128i d, int kind, __m128i *out)
 {
     V4 v[4] = { v4_load(c[0]), v4_load(c[1]), v4_load(c[2]), v4_load(c[3]) };
     v4_transpose4(v);
-    const V4 zero = V4_OP(setzero)(), one = V4_OP(set1)(1), max8 = V4_OP(set1)(255);
     if (kind)
         for (int i = 0; i < 4; i++)
             v[i] = v4_clamp01(v[i]);
-    const V4 ia = kind == 1 ? v4_one_minus(v[3]) : zero, va = v[3];
+    const V4 va = v[3], ia = v4_one_minus(va);
     __m128i w = _mm_setzero_si128();
     for (int i = 0; i < 4; i++) {
         V4 x = v[i];
         if (kind) {
-            const V4 dv = V4_OP(div)(v4_from_i32(_mm_and_si128(_mm_srli_epi32(d, 8 * i), _mm_set1_epi32(0xFF))),
-                                     max8);
+            const V4 dv = v4_byte_unorm8(d, 8 * i);
             x = kind == 2 ? v4_add(x, dv) : v4_add(v4_mul01(x, va), v4_mul01(dv, ia));
         }
-        V4 y = V4_OP(add)(V4_OP(mul)(x, max8), V4_OP(set1)(0.5));
-        y = V4_OP(blendv)(y, max8, v4_ge(x, one));
-        y = V4_OP(blendv)(zero, y, v4_gt(x, zero));
-        w = _mm_or_si128(w, _mm_slli_epi32(v4_trunc_i32(y), 8 * i));
+        w = _mm_or_si128(w, _mm_slli_epi32(v4_to_unorm8(x), 8 * i));
     }
-    return w;
+    *out = w;
+    return 1;
 }
 #endif
 

@@ -281,15 +281,19 @@ static void STAGE(stage_depth)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
         const DEPTHV zv[3] = { t->v[0]->wz, t->v[1]->wz, t->v[2]->wz };
         const int n4 = b->n & ~3;
         /* slots that are offsets (the chain's first stage): the edge values
-        ** e0 + ea k step by ea per slot, and stay integers of magnitude below
-        ** 2^51 wherever they do at k = 0 and k = n4 (with |ea| below 2^44):
+        ** e0 + ea k step by ea per slot, and stay integers of magnitude at
+        ** most 2^51 wherever they do at k = 0 and k = n4 (with |ea| <= 2^44):
         ** each double sum is then exact, the value the conversion of the
         ** int64 gives */
-        const int64_t lim51 = (int64_t)1 << 51, lim_ea = (int64_t)1 << 44;
-        if (n4 && b->k[b->n - 1] == b->n - 1 && t->ea[1] > -lim_ea && t->ea[1] < lim_ea && t->ea[2] > -lim_ea
-            && t->ea[2] < lim_ea && b->e0[1] > -lim51 && b->e0[1] < lim51 && b->e0[2] > -lim51 && b->e0[2] < lim51
-            && b->e0[1] + t->ea[1] * n4 > -lim51 && b->e0[1] + t->ea[1] * n4 < lim51
-            && b->e0[2] + t->ea[2] * n4 > -lim51 && b->e0[2] + t->ea[2] * n4 < lim51) {
+        const uint64_t lim51 = (uint64_t)1 << 51, lim_ea = (uint64_t)1 << 44;
+        int steps = n4 && b->k[b->n - 1] == b->n - 1;
+        for (int i = 1; i <= 2 && steps; i++) {
+            /* -lim <= v < lim as one unsigned comparison of v + lim */
+            const int64_t first = b->e0[i];
+            steps = (uint64_t)t->ea[i] + lim_ea < 2 * lim_ea && (uint64_t)first + lim51 < 2 * lim51
+                 && (uint64_t)(first + t->ea[i] * n4) + lim51 < 2 * lim51;
+        }
+        if (steps) {
             const __m256d k4 = _mm256_setr_pd(0, 1, 2, 3);
             const double a1 = (double)t->ea[1], a2 = (double)t->ea[2];
             __m256d d1 = _mm256_add_pd(_mm256_set1_pd((double)b->e0[1]), _mm256_mul_pd(k4, _mm256_set1_pd(a1)));
@@ -991,19 +995,9 @@ static inline void STAGE(write_rgba8)(GlesContext *ctx, SpanBuf *b, int kind)
 {
     uint32_t *dst = (uint32_t *)ctx->color + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
     int j = 0;
-#if CHAIN_SIMD && !NUM_IS_FIXED
-    /* four fragments at a time, a channel per V4 */
-    for (; j + 4 <= b->n; j += 4) {
-        uint32_t k4;
-        memcpy(&k4, &b->k[j], sizeof k4);
-        const int run = slots_adjacent4(&b->k[j]);
-        const __m128i d = kind ? avx2_load_words4(dst, k4, run) : _mm_setzero_si128();
-        avx2_store_words4(dst, k4, run, v4_rgba8x4(&b->c[j], d, kind));
-    }
-#endif
-#if CHAIN_SIMD && NUM_IS_FIXED
+#if CHAIN_SIMD
     /* four fragments at a time (avx2_rgba8x4); a group with a channel
-    ** outside the kernel's range by v4_rgba8 */
+    ** outside the fixed build's kernel's range by v4_rgba8 */
     const int n = b->n;
     for (; j + 4 <= n; j += 4) {
         uint32_t k4;
@@ -1058,7 +1052,7 @@ static inline __attribute__((always_inline)) void STAGE(write_rgba8_ops)(GlesCon
 {
     uint32_t *dst = (uint32_t *)ctx->color + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
     int j = 0;
-#if CHAIN_SIMD && NUM_IS_FIXED
+#if CHAIN_SIMD
     /* four fragments at a time, as write_rgba8 */
     const int n = b->n;
     const __m128i vkeep = _mm_set1_epi32((int)keep);
