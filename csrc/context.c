@@ -107,8 +107,9 @@ GlesContext *gles_context_create(int width, int height, int color_format,
         ctx->nb_key[i] = calloc((size_t)width + 1, sizeof *ctx->nb_key[i]);
         ctx->nb_w[i] = calloc((size_t)width + 1, sizeof *ctx->nb_w[i]);
     }
+    ctx->rect_s = calloc(((size_t)width + 1) * GLES_MAX_TEXTURE_UNITS, sizeof *ctx->rect_s);
     if (!ctx->color || (depth_bits && !ctx->depth) || (stencil_bits && !ctx->stencil) || !ctx->nb_key[0]
-        || !ctx->nb_key[1] || !ctx->nb_w[0] || !ctx->nb_w[1]) {
+        || !ctx->nb_key[1] || !ctx->nb_w[0] || !ctx->nb_w[1] || !ctx->rect_s) {
         gles_context_destroy(ctx);
         return NULL;
     }
@@ -190,6 +191,7 @@ void gles_context_destroy(GlesContext *ctx)
         free(ctx->nb_key[i]);
         free(ctx->nb_w[i]);
     }
+    free(ctx->rect_s);
     free(ctx->verts);
     free(ctx->vert_stamp);
     free(ctx);

@@ -34,6 +34,11 @@ typedef struct RectSetup {
     double as[GLES_MAX_TEXTURE_UNITS], bs[GLES_MAX_TEXTURE_UNITS];
     double at[GLES_MAX_TEXTURE_UNITS], bt[GLES_MAX_TEXTURE_UNITS];
     int64_t sprite_x, sprite_y, sprite_size;            /* subpixels */
+    /* span_rect's columns: unit u's s (which depends on the column only) at
+    ** column col_x0 + i is col_s[u][i], or col_s[u] is NULL */
+    const TEXC *col_s[GLES_MAX_TEXTURE_UNITS];
+    int64_t col_x0;
+    uint64_t serial;            /* span_rect's ctx->prim_serial (the fused stage's setup) */
 } RectSetup;
 
 /* DrawTex's coordinates of unit u: s at pixel column px, t at row py,

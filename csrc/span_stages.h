@@ -617,17 +617,55 @@ static void STAGE(stage_fetch)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, 
         STAGE(chunk_sample)(ctx, b, u, mode == FETCH_DIRECT);
 }
 
+/* a rectangle's coordinates of one unit from its columns' s (col[i] at
+** the chunk's column x0 + i, through x0 + n for the right neighbours) and
+** the row's t0, with the neighbours' (the upper one's t1) where lod */
+static inline void STAGE(rect_from_columns)(SpanBuf *b, const TEXC *col, TEXC t0, TEXC t1, int lod)
+{
+    const int n = b->n;
+    if (b->k[n - 1] == n - 1) {     /* slots that are offsets */
+        int j = 0;
+#if CHAIN_SIMD
+        if (sizeof(TEXC) == 8) {
+            /* four (s, t0) pairs from four s: the 64-bit lanes interleaved */
+            __m256i tv;
+            memcpy(&tv, (const TEXC[4]){ t0, t0, t0, t0 }, sizeof tv);
+            for (; j + 4 <= n; j += 4) {
+                const __m256i sv = _mm256_loadu_si256((const __m256i *)(const void *)&col[j]);
+                const __m256i lo = _mm256_unpacklo_epi64(sv, tv), hi = _mm256_unpackhi_epi64(sv, tv);
+                _mm256_storeu_si256((__m256i *)(void *)&b->tc[j], _mm256_permute2x128_si256(lo, hi, 0x20));
+                _mm256_storeu_si256((__m256i *)(void *)&b->tc[j + 2], _mm256_permute2x128_si256(lo, hi, 0x31));
+            }
+        }
+#endif
+        for (; j < n; j++)
+            b->tc[j] = (TexCoord){ col[j], t0 };
+    } else
+        for (int j = 0; j < n; j++)
+            b->tc[j] = (TexCoord){ col[b->k[j]], t0 };
+    if (lod)
+        for (int j = 0; j < b->n; j++) {
+            b->tx[j] = (TexCoord){ col[b->k[j] + 1], t0 };
+            b->ty[j] = (TexCoord){ b->tc[j].s, t1 };
+        }
+}
+
 /* a rectangle's coordinates of unit u for every live fragment, then its texels */
 static void STAGE(stage_fetch_rect)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, int u, int mode)
 {
     (void)t;
     const RectSetup *r = b->rect;
+    /* the chunk's columns' s, where span_rect formed them */
+    const TEXC *const col = r->col_s[u] ? r->col_s[u] + (b->x0 - r->col_x0) : NULL;
+    const int lod = texture_needs_lod(ctx->units[u].bound);
     switch (r->coord[u]) {
     case RECT_COORD_LINEAR: {
         /* rect_linear_coords, with t once per row and the neighbours only
         ** where the filter reads them */
         const TEXC t0 = rect_linear_t(r, u, b->y);
-        if (texture_needs_lod(ctx->units[u].bound)) {
+        if (col) {
+            STAGE(rect_from_columns)(b, col, t0, lod ? rect_linear_t(r, u, b->y + 1) : 0, lod);
+        } else if (lod) {
             const TEXC t1 = rect_linear_t(r, u, b->y + 1);
             for (int j = 0; j < b->n; j++) {
                 const int64_t px = b->x0 + b->k[j];
@@ -649,7 +687,9 @@ static void STAGE(stage_fetch_rect)(GlesContext *ctx, const TriSetup *t, SpanBuf
     case RECT_COORD_SPRITE: {
         /* sprite_coords, the same way */
         const TEXC t0 = sprite_t(r->sprite_y, r->sprite_size, b->y);
-        if (texture_needs_lod(ctx->units[u].bound)) {
+        if (col) {
+            STAGE(rect_from_columns)(b, col, t0, lod ? sprite_t(r->sprite_y, r->sprite_size, b->y + 1) : 0, lod);
+        } else if (lod) {
             const TEXC t1 = sprite_t(r->sprite_y, r->sprite_size, b->y + 1);
             for (int j = 0; j < b->n; j++) {
                 const int64_t px = b->x0 + b->k[j];
@@ -1225,11 +1265,12 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
     const int smooth = !replace && !b->rect && t->smooth;
     const FRAGV *flat = b->rect ? b->rect->in.c : t->flat;
     const FRAGV *const a[3] = { smooth ? t->col[0] : flat, smooth ? t->col[1] : flat, smooth ? t->col[2] : flat };
-    /* a triangle's chunks share the constants (a rectangle's are set up
-    ** per chunk): the first chunk forms them, the rest copy them */
+    /* a primitive's chunks share the constants: the first chunk forms
+    ** them, the rest copy them */
     _Static_assert(sizeof(Avx2ModWrite) <= GLES_FUSED_SETUP_BYTES, "the context has room for the setup");
     Avx2ModWrite m;
-    const int cached = !b->rect && ctx->fused_serial == t->serial;
+    const uint64_t serial = b->rect ? b->rect->serial : t->serial;
+    const int cached = ctx->fused_serial == serial;
     int in_range = 1;
     if (cached) {
         in_range = ctx->fused_in_range;
@@ -1262,8 +1303,7 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
             (kind ? STAGE(stage_write_565_alpha) : STAGE(stage_write_565))(ctx, t, b);
         else
             STAGE(write_rgba8)(ctx, b, kind);
-        if (!b->rect)
-            ctx->fused_serial = t->serial, ctx->fused_in_range = 0;
+        ctx->fused_serial = serial, ctx->fused_in_range = 0;
         return;
     }
     if (!cached) {
@@ -1273,10 +1313,8 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
             avx2_modwrite_replace(&m);
         if (src == 1)
             modwrite_texture_setup(&m.tx, tex, ctx->samplers[u], ctx->texel_unorm8);
-        if (!b->rect) {
-            memcpy(ctx->fused_setup, &m, sizeof m);
-            ctx->fused_serial = t->serial, ctx->fused_in_range = 1;
-        }
+        memcpy(ctx->fused_setup, &m, sizeof m);
+        ctx->fused_serial = serial, ctx->fused_in_range = 1;
     }
     ModWriteDot3 d3;
     if (dot3) {

@@ -231,6 +231,8 @@ struct GlesContext {
     uint64_t prim_serial;       /* counts primitive setups, from 1 */
     uint64_t *nb_key[2];        /* [y & 1][x]: prim_serial * (height + 2) + y + 1, 0 if none */
     WGT (*nb_w[2])[3];
+    /* span_rect's s by column, width + 1 per unit (RectSetup.col_s) */
+    TEXC *rect_s;
     /* the fused stage's setup for the triangle of serial fused_serial (0:
     ** none): whether its colours are in range, and its kernel's constants
     ** (an Avx2ModWrite, span_stages.h), which every chunk of it shares */
