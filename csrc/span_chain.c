@@ -603,6 +603,15 @@ static void prefetch_bytes(const void *p, size_t bytes)
     __builtin_prefetch(c + bytes - 1, 1, 3);
 }
 
+/* a chunk's slots before any test: offsets 0, 1, 2, ... */
+#define SPAN_OFFSETS4(i) (i), (i) + 1, (i) + 2, (i) + 3
+#define SPAN_OFFSETS16(i) SPAN_OFFSETS4(i), SPAN_OFFSETS4((i) + 4), SPAN_OFFSETS4((i) + 8), SPAN_OFFSETS4((i) + 12)
+static const uint8_t span_offsets[SPAN_CHUNK] = { SPAN_OFFSETS16(0), SPAN_OFFSETS16(16), SPAN_OFFSETS16(32),
+                                                  SPAN_OFFSETS16(48) };
+#undef SPAN_OFFSETS16
+#undef SPAN_OFFSETS4
+_Static_assert(SPAN_CHUNK == 64, "span_offsets lists SPAN_CHUNK offsets");
+
 /* one row's run [x0, x0 + n) through `count` stages, a chunk at a time */
 static void run(GlesContext *ctx, const SpanStage *stages, int count, const TriSetup *t, const RectSetup *r, int y,
                 int x0, int n)
@@ -621,8 +630,7 @@ static void run(GlesContext *ctx, const SpanStage *stages, int count, const TriS
         int len = n - start < SPAN_CHUNK ? n - start : SPAN_CHUNK;
         b.x0 = x0 + start;
         b.n = len;
-        for (int k = 0; k < len; k++)
-            b.k[k] = (uint8_t)k;
+        memcpy(b.k, span_offsets, SPAN_CHUNK);
         if (t)
             for (int i = 0; i < 3; i++)
                 b.e0[i] = t->ea[i] * b.x0 + t->eb[i] * y + t->ec[i];

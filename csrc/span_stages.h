@@ -1269,12 +1269,13 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
     ** them, the rest copy them */
     _Static_assert(sizeof(Avx2ModWrite) <= GLES_FUSED_SETUP_BYTES, "the context has room for the setup");
     Avx2ModWrite m;
+    const Avx2ModWrite *mp = &m;
     const uint64_t serial = b->rect ? b->rect->serial : t->serial;
     const int cached = ctx->fused_serial == serial;
     int in_range = 1;
     if (cached) {
         in_range = ctx->fused_in_range;
-        memcpy(&m, ctx->fused_setup, sizeof m);
+        mp = (const Avx2ModWrite *)ctx->fused_setup;    /* read in place, not copied */
     } else {
         for (int i = 0; i < 3 && smooth; i++)
             for (int c = 0; c < 4; c++)
@@ -1316,6 +1317,12 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
         memcpy(ctx->fused_setup, &m, sizeof m);
         ctx->fused_serial = serial, ctx->fused_in_range = 1;
     }
+    const int rgb565 = ctx->color_format == GLES_COLOR_RGB565;
+    if (cached && (dot3 || rgb565)) {
+        /* a copy to complete with this chunk's DOT3 texels or dither row */
+        memcpy(&m, ctx->fused_setup, sizeof m);
+        mp = &m;
+    }
     ModWriteDot3 d3;
     if (dot3) {
         d3.rgba = ctx->units[u0].combine_rgb == GL_DOT3_RGBA;
@@ -1334,13 +1341,12 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
         for (int j = b->n; j < n && sampled0; j++)
             b->tx[j] = b->tx[b->n - 1];
     }
-    const int rgb565 = ctx->color_format == GLES_COLOR_RGB565;
     if (rgb565) {
         FRAGV t_row[4];
         dither_row(b, ctx->dither, t_row);
         avx2_modwrite_dither(&m, ctx->dither, t_row);
     }
-    avx2_modwrite_dispatch(&m, a, src, rgb565, n, b->n, b->k, b->x0, (const WGT (*)[3])b->p, b->ct[0][u], stride,
+    avx2_modwrite_dispatch(mp, a, src, rgb565, n, b->n, b->k, b->x0, (const WGT (*)[3])b->p, b->ct[0][u], stride,
                            b->tc, chunk_color(ctx, b), ctx->unorm5, ctx->unorm6);
 }
 

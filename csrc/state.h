@@ -238,7 +238,7 @@ struct GlesContext {
     ** (an Avx2ModWrite, span_stages.h), which every chunk of it shares */
     uint64_t fused_serial;
     int fused_in_range;
-    unsigned char fused_setup[GLES_FUSED_SETUP_BYTES];
+    void *fused_setup;          /* GLES_FUSED_SETUP_BYTES, 64-byte aligned (its vectors load in place) */
     /* a flat colour's blend as a table per destination byte (span.c's
     ** span_flat_table) */
     FlatTable flat_table;
