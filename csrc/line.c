@@ -12,6 +12,9 @@
 **       double), multiplies alpha.
 ** Attributes: perspective-correct along the line, through the triangle
 **       weights with the edge values (|D| - |n|, |n|, 0); depth linear.
+** Aliased lines of width 1 go through the span function for the state, a
+**       row's run (x-major) or a row's one fragment (y-major) at a time;
+**       wider and smooth lines, one fragment at a time.
 */
 #include <math.h>
 #include "state.h"
@@ -60,6 +63,65 @@ static void line_setup(GlesContext *ctx, TriSetup *t, const Vertex *a, const Ver
     t->depth_offset = 0;
 }
 
+/* whether a unit's filter needs the level of detail's neighbours */
+static int line_needs_lod(const GlesContext *ctx)
+{
+    for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
+        if ((ctx->tex_units_on & (1u << u)) && texture_needs_lod(ctx->units[u].bound))
+            return 1;
+    return 0;
+}
+
+/* An aliased x-major line of width 1 has one fragment per column pm, in
+** row ceil(m / one) - 1 (m the line's minor coordinate at the column's
+** centre c), with edge values (len - an, an, 0), an = |c - ma| = sg (c - ma)
+** for the sign sg of D: linear in the column. So the columns it keeps in
+** one row are a run of the span function for the state, whose reference
+** (span_generic) gives each the fragment raster_line's loop would, with
+** the same edge values: e = ea pm + ec. ea is then (-sg, sg, 0) pixels,
+** which is t->ea's level-of-detail neighbour for D > 0 only; the caller
+** takes this path for D < 0 only where no unit needs that neighbour. */
+static void line_runs(GlesContext *ctx, TriSetup *t, int xmajor, int64_t ma, int64_t na, int64_t nb, int64_t D,
+                      int64_t len, int64_t p0, int64_t p1, int64_t cn0, int64_t cn1)
+{
+    const int64_t one = GLES_SUBPIXEL_ONE, half = one / 2, sg = D > 0 ? 1 : -1;
+    int64_t *step = xmajor ? t->ea : t->eb, *across = xmajor ? t->eb : t->ea;
+    across[0] = across[1] = 0;
+    step[0] = -sg * one;
+    step[1] = sg * one;
+    t->ec[0] = len + sg * (ma - half);
+    t->ec[1] = sg * (half - ma);
+    SpanFunc span = ctx->span;
+    if (!t->smooth) {
+        t->flat_packed = span_pack_color(ctx, t->flat);
+        span = ctx->span_const;
+    }
+    if (!xmajor) {
+        /* one fragment per row */
+        for (int64_t pm = p0; pm <= p1; pm++) {
+            const int64_t col = i64_ceil_div(line_minor(na, nb - na, pm * one + half - ma, D), one) - 1;
+            if (col >= cn0 && col < cn1)
+                span(ctx, t, (int)pm, (int)col, 1);
+        }
+        return;
+    }
+    int64_t run_y = 0, run_x = 0, run_n = 0;
+    for (int64_t pm = p0; pm <= p1; pm++) {
+        const int64_t row = i64_ceil_div(line_minor(na, nb - na, pm * one + half - ma, D), one) - 1;
+        if (run_n && row != run_y) {
+            span(ctx, t, (int)run_y, (int)run_x, (int)run_n);
+            run_n = 0;
+        }
+        if (row < cn0 || row >= cn1)
+            continue;
+        if (!run_n)
+            run_y = row, run_x = pm;
+        run_n++;
+    }
+    if (run_n)
+        span(ctx, t, (int)run_y, (int)run_x, (int)run_n);
+}
+
 void raster_line(GlesContext *ctx, const Vertex *a, const Vertex *b, const Vertex *pv)
 {
     const int64_t one = GLES_SUBPIXEL_ONE, half = one / 2;
@@ -99,6 +161,15 @@ void raster_line(GlesContext *ctx, const Vertex *a, const Vertex *b, const Verte
     int64_t w = (int64_t)floor(width + 0.5);
     if (w < 1)
         w = 1;
+    /* (window coordinates below 2^40 subpixels: the edge values' constants
+    ** stay far inside int64) */
+    const int64_t lim = (int64_t)1 << 40;
+    if (!smooth && w == 1 && ((xmajor && D > 0) || !line_needs_lod(ctx)) && !(ctx->debug & GLES_DEBUG_GENERIC_SPANS)
+        && ma > -lim && ma < lim && mb > -lim && mb < lim && na > -lim && na < lim && nb > -lim && nb < lim) {
+        if (p0 <= p1)
+            line_runs(ctx, &t, xmajor, ma, na, nb, D, len, p0, p1, cn0, cn1);
+        return;
+    }
     double fx = (double)dx, fy = (double)dy, flen = sqrt(fx * fx + fy * fy);
     for (int64_t pm = p0; pm <= p1; pm++) {
         int64_t c = pm * one + half;            /* major coordinate of the centres */

@@ -32,7 +32,9 @@ this file draws random states from the whole fragment state space:
   current coordinates, and an occasional non-identity texture matrix;
 * overlapping random triangles, partly clipped, with per-vertex colours,
   drawn partly in one glDrawArrays and partly one by one, over phases with
-  state changes between them.
+  state changes between them; one scene in three draws the same vertices as
+  GL_LINES, LINE_STRIP or LINE_LOOP of width 1, 0.6 or 2 (aliased lines of
+  width 1 run through the span functions a row or a column at a time).
 
 Three random tests: the whole state space, with an optional second phase
 that changes one to three fields of up to three parts of the state (only the
@@ -117,6 +119,9 @@ SEED = st.integers(0, 2**32 - 1)
 
 # {================================================================
 # the strategy
+
+
+MODES = (C.GL_TRIANGLES,) * 6 + (C.GL_LINES, C.GL_LINE_STRIP, C.GL_LINE_LOOP)
 
 
 def rarely(n: int = 3) -> st.SearchStrategy[bool]:
@@ -308,6 +313,9 @@ def scenes(draw: Any, textured: bool = False, steps: bool = False) -> dict:
         "size": draw(SIZES),
         "persp": draw(st.booleans()),
         "triangles": draw(st.integers(4, 12)) if not steps else 0,
+        # one scene in three draws the vertices as lines (width-1 x-major lines run as spans)
+        "mode": draw(st.sampled_from(MODES)),
+        "line_width": draw(st.sampled_from((1.0, 1.0, 0.6, 2.0))),
         "geometry": draw(SEED),
         "clear": (draw(color4(0.0, 1.0)), draw(st.one_of(st.just(1.0), st.floats(0.0, 1.0))),
                   draw(st.integers(0, 255))),
@@ -722,14 +730,15 @@ def run_step(gl: Any, step: tuple, textures: Textures) -> None:
 # rendering
 
 
-def draw_phase(gl: Any, first: int, count: int) -> None:
-    """Triangles first .. first+count-1: about half in one call, then one call each."""
+def draw_phase(gl: Any, first: int, count: int, mode: int = C.GL_TRIANGLES) -> None:
+    """Triangles first .. first+count-1 (or their vertices as lines of `mode`): about half in
+    one call, then one call each."""
     if count <= 0:
         return
     batch = (count + 1) // 2
-    gl.glDrawArrays(C.GL_TRIANGLES, 3 * first, 3 * batch)
+    gl.glDrawArrays(mode, 3 * first, 3 * batch)
     for i in range(first + batch, first + count):
-        gl.glDrawArrays(C.GL_TRIANGLES, 3 * i, 3)
+        gl.glDrawArrays(mode, 3 * i, 3)
 
 
 def render(scene: dict, generic: bool, baseline: bool = False) -> dict:
@@ -771,12 +780,14 @@ def render(scene: dict, generic: bool, baseline: bool = False) -> dict:
     phases = [] if scene["changes"] is None else [change]
     phases += [lambda step=step: run_step(gl, step, textures) for step in scene.get("steps", ())]
     n = scene["triangles"]
+    mode = scene.get("mode", C.GL_TRIANGLES)
+    gl.glLineWidth(scene.get("line_width", 1.0))
     ends = [n * (i + 1) // (len(phases) + 1) for i in range(len(phases) + 1)]
-    draw_phase(gl, 0, ends[0])
+    draw_phase(gl, 0, ends[0], mode)
     paths = [ctx.last_span_path()]
     for i, phase in enumerate(phases):
         phase()
-        draw_phase(gl, ends[i], ends[i + 1] - ends[i])
+        draw_phase(gl, ends[i], ends[i + 1] - ends[i], mode)
         paths.append(ctx.last_span_path())
     return {"color": ctx.color_buffer(), "depth": ctx.depth_buffer(), "stencil": ctx.stencil_buffer(),
             "error": gl.glGetError(), "paths": paths}
