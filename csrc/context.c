@@ -110,8 +110,11 @@ GlesContext *gles_context_create(int width, int height, int color_format,
     ctx->rect_s = calloc(((size_t)width + 1) * GLES_MAX_TEXTURE_UNITS, sizeof *ctx->rect_s);
     _Static_assert(GLES_FUSED_SETUP_BYTES % 64 == 0, "aligned_alloc takes a multiple of the alignment");
     ctx->fused_setup = aligned_alloc(64, GLES_FUSED_SETUP_BYTES);
+    _Static_assert(GLES_TESTS_SETUP_BYTES % 64 == 0, "aligned_alloc takes a multiple of the alignment");
+    ctx->tests_setup = aligned_alloc(64, GLES_TESTS_SETUP_BYTES);
     if (!ctx->color || (depth_bits && !ctx->depth) || (stencil_bits && !ctx->stencil) || !ctx->nb_key[0]
-        || !ctx->nb_key[1] || !ctx->nb_w[0] || !ctx->nb_w[1] || !ctx->rect_s || !ctx->fused_setup) {
+        || !ctx->nb_key[1] || !ctx->nb_w[0] || !ctx->nb_w[1] || !ctx->rect_s || !ctx->fused_setup
+        || !ctx->tests_setup) {
         gles_context_destroy(ctx);
         return NULL;
     }
@@ -195,6 +198,7 @@ void gles_context_destroy(GlesContext *ctx)
     }
     free(ctx->rect_s);
     free(ctx->fused_setup);
+    free(ctx->tests_setup);
     free(ctx->verts);
     free(ctx->vert_stamp);
     free(ctx);

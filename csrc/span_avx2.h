@@ -1527,6 +1527,15 @@ static inline void avx2_tests_setup(const FragTests *ft, int writes, Avx2Stencil
     }
 }
 
+/* the tests' state of a primitive, kept in the context (ctx->tests_setup)
+** for its chunks; v.op points at ops */
+typedef struct Avx2TestsSetup {
+    FragTests ft;
+    int swrite, dwrite;             /* the stencil and depth buffers can change */
+    Avx2Tests v;
+    Avx2StencilOp ops[3];
+} Avx2TestsSetup;
+
 /* fragment_tests of r <= 8 fragments (lanes 0..r-1): stored stencil values
 ** s[0..r) and depths d[0..r), both updated in place, and window depths
 ** z[0..r). stencil and depth say which tests are on, swrite and dwrite

@@ -382,20 +382,35 @@ static inline __attribute__((always_inline)) uint64_t STAGE(tests_slots)(const A
 }
 #endif
 
-static void STAGE(tests)(GlesContext *ctx, SpanBuf *b, int with_color)
+static void STAGE(tests)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, int with_color)
 {
     const size_t row = (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
+#if CHAIN_SIMD
+    /* a primitive's chunks share the tests' setup: the first forms it in
+    ** the context, the rest read it there */
+    _Static_assert(sizeof(Avx2TestsSetup) <= GLES_TESTS_SETUP_BYTES, "the context has room for the setup");
+    Avx2TestsSetup *const ts = ctx->tests_setup;
+    const uint64_t serial = t ? t->serial : b->rect->serial;
+    if (ctx->tests_serial != serial) {
+        fragment_tests_setup(ctx, &ts->ft);
+        ts->swrite = ts->ft.stencil && avx2_stencil_writes(&ts->ft);
+        ts->dwrite = ts->ft.depth && ts->ft.depth_mask;
+        avx2_tests_setup(&ts->ft, ts->swrite, ts->ops, &ts->v);
+        ctx->tests_serial = serial;
+    }
+    const FragTests ft = ts->ft;
+#else
+    (void)t;
     FragTests ft;
     fragment_tests_setup(ctx, &ft);
+#endif
     const unsigned int dfunc = ft.depth ? ft.depth_func : GL_ALWAYS;
     uint8_t *const st = ft.stencil ? ft.stencil + row : NULL;
     uint32_t *const zb = ft.depth ? ft.depth + row : NULL;
     const int n = b->n;
 #if CHAIN_SIMD
-    const int swrite = st && avx2_stencil_writes(&ft), dwrite = zb && ft.depth_mask;
-    Avx2Tests v;
-    Avx2StencilOp ops[3];
-    avx2_tests_setup(&ft, swrite, ops, &v);
+    const int swrite = ts->swrite, dwrite = ts->dwrite;
+    const Avx2Tests v = ts->v;
     /* slots that are offsets (k[j] = j, as before any compaction) are the
     ** buffers' own; else the values are gathered first, and scattered after */
     const int dense = b->k[n - 1] == n - 1;
@@ -469,14 +484,12 @@ static void STAGE(tests)(GlesContext *ctx, SpanBuf *b, int with_color)
 
 static void STAGE(stage_tests_early)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
-    (void)t;
-    STAGE(tests)(ctx, b, 0);
+    STAGE(tests)(ctx, t, b, 0);
 }
 
 static void STAGE(stage_tests_late)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
-    (void)t;
-    STAGE(tests)(ctx, b, 1);
+    STAGE(tests)(ctx, t, b, 1);
 }
 
 /* depth LESS with writes and no stencil: the common case, without the
@@ -485,7 +498,7 @@ static void STAGE(stage_zless_early)(GlesContext *ctx, const TriSetup *t, SpanBu
 {
     (void)t;
 #if CHAIN_SIMD
-    STAGE(tests)(ctx, b, 0);
+    STAGE(tests)(ctx, t, b, 0);
 #else
     uint32_t *zb = ctx->depth + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
     int m = 0;

@@ -20,6 +20,7 @@
 #define GLES_MAX_TEXTURE_UNITS 4
 /* room for the fused span stage's per-triangle constants (Avx2ModWrite) */
 #define GLES_FUSED_SETUP_BYTES 1024
+#define GLES_TESTS_SETUP_BYTES 1024
 /* fragments of one flat colour's blend before its table is built: building
 ** it (1024 entries) then costs at most what those fragments did */
 #define GLES_FLAT_TABLE_AFTER 1024
@@ -239,6 +240,10 @@ struct GlesContext {
     uint64_t fused_serial;
     int fused_in_range;
     void *fused_setup;          /* GLES_FUSED_SETUP_BYTES, 64-byte aligned (its vectors load in place) */
+    /* the stencil and depth tests' setup (span_stages.h) for the primitive
+    ** of serial tests_serial (0: none), GLES_TESTS_SETUP_BYTES, 64-byte aligned */
+    uint64_t tests_serial;
+    void *tests_setup;
     /* a flat colour's blend as a table per destination byte (span.c's
     ** span_flat_table) */
     FlatTable flat_table;
