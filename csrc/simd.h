@@ -17,6 +17,10 @@
 
 enum { SIMD_BASELINE = 0, SIMD_AVX2 = 1 };
 
+/* the instructions of the vector instance, for the code that follows (in
+** a push_options / pop_options pair) */
+#define SIMD_TARGET_AVX2 _Pragma("GCC target(\"avx2\")")
+
 /* the best instance this CPU can run */
 static inline int simd_detect(void)
 {

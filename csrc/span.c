@@ -146,7 +146,7 @@ static inline uint32_t span_flat_word(const uint32_t (*table)[256], uint32_t d)
 
 #if SIMD_X86
 #pragma GCC push_options
-#pragma GCC target("avx2")
+SIMD_TARGET_AVX2
 #include "span_avx2.h"
 #define SPAN_FN(name) name##_avx2
 #define CHAIN_SIMD 1

@@ -1,7 +1,7 @@
 /*
 ** span_avx2.h -- AVX2 kernels of the fixed build's hottest fragment work,
 ** for the AVX2 instance of the span stages (span_stages.h) and samplers
-** (texsample.c); included only where `#pragma GCC target("avx2")` holds.
+** (texsample.c); included only where SIMD_TARGET_AVX2 (simd.h) holds.
 **
 ** A fragment's four FRAGV channels (0.30 in int64) are one 256-bit
 ** register. Each kernel is the scalar function's arithmetic, lane by lane:

@@ -95,7 +95,7 @@ typedef struct ChainStages {
 #if SIMD_X86
 /* the AVX2 instance: every function until pop_options may use AVX2 */
 #pragma GCC push_options
-#pragma GCC target("avx2")
+SIMD_TARGET_AVX2
 #include "span_avx2.h"
 #if NUM_IS_FIXED || defined(GLES_NUM_FLOAT)
 /* a test's fragments for a fused stage's kernel: copies with room for the

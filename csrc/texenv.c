@@ -10,7 +10,7 @@
 
 #if SIMD_X86
 #pragma GCC push_options
-#pragma GCC target("avx2")
+SIMD_TARGET_AVX2
 #include "span_avx2.h"
 #pragma GCC pop_options
 #endif
@@ -235,7 +235,7 @@ void texture_env_span(const GlesContext *ctx, int u, int n, const FRAGV (*cf)[4]
 
 #if SIMD_X86
 #pragma GCC push_options
-#pragma GCC target("avx2")
+SIMD_TARGET_AVX2
 /* {====================================================================
 ** COMBINE with a fragment's four channels in one register (V4): each
 ** argument is its rgb source's channels (or that source's alpha in every

@@ -17,7 +17,7 @@
 
 #if SIMD_X86
 #pragma GCC push_options
-#pragma GCC target("avx2")
+SIMD_TARGET_AVX2
 #include "span_avx2.h"
 #pragma GCC pop_options
 #endif
@@ -264,7 +264,7 @@ static inline int32_t lod_key(int level, int two, unsigned int filter)
 }
 
 #pragma GCC push_options
-#pragma GCC target("avx2")
+SIMD_TARGET_AVX2
 #if !NUM_IS_FIXED
 /* lod_choose's constants for lod_choose4_f and lod_choose4_d */
 typedef struct LodParamsR {
@@ -582,7 +582,7 @@ static int lod_block(const Texture *t, int n, const TexCoord *c, const TexCoord 
 SPAN_SAMPLERS(_base, 0)
 #if SIMD_X86
 #pragma GCC push_options
-#pragma GCC target("avx2")
+SIMD_TARGET_AVX2
 SPAN_SAMPLERS(_avx2, 1)
 #pragma GCC pop_options
 #endif

@@ -38,7 +38,7 @@
 #if SIMD_X86
 #include <immintrin.h>
 #pragma GCC push_options
-#pragma GCC target("avx2")
+SIMD_TARGET_AVX2
 #define VX_INLINE static inline __attribute__((always_inline))
 #endif
 

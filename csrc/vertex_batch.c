@@ -123,7 +123,7 @@ static inline __attribute__((always_inline)) void clip_codes(VbRows clip, unsign
 
 #if VERTEX_AVX2
 #pragma GCC push_options
-#pragma GCC target("avx2")
+SIMD_TARGET_AVX2
 static void clip_codes_avx2(VbRows clip, unsigned int *code, int cnt)
 {
     clip_codes(clip, code, cnt);
