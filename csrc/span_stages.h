@@ -1278,17 +1278,16 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
     const int smooth = !replace && !b->rect && t->smooth;
     const FRAGV *flat = b->rect ? b->rect->in.c : t->flat;
     const FRAGV *const a[3] = { smooth ? t->col[0] : flat, smooth ? t->col[1] : flat, smooth ? t->col[2] : flat };
-    /* a primitive's chunks share the constants: the first chunk forms
-    ** them, the rest copy them */
+    /* a primitive's chunks share the constants, in the context: the first
+    ** chunk forms them, each chunk completes them with its own DOT3 texels
+    ** and dither row */
     _Static_assert(sizeof(Avx2ModWrite) <= GLES_FUSED_SETUP_BYTES, "the context has room for the setup");
-    Avx2ModWrite m;
-    const Avx2ModWrite *mp = &m;
+    Avx2ModWrite *const m = ctx->fused_setup;
     const uint64_t serial = b->rect ? b->rect->serial : t->serial;
     const int cached = ctx->fused_serial == serial;
     int in_range = 1;
     if (cached) {
         in_range = ctx->fused_in_range;
-        mp = (const Avx2ModWrite *)ctx->fused_setup;    /* read in place, not copied */
     } else {
         for (int i = 0; i < 3 && smooth; i++)
             for (int c = 0; c < 4; c++)
@@ -1321,21 +1320,15 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
         return;
     }
     if (!cached) {
-        avx2_modwrite_setup(&m, a, smooth, tex->format != GL_RGBA, kind,
+        avx2_modwrite_setup(m, a, smooth, tex->format != GL_RGBA, kind,
                             ctx->alpha_test ? ctx->alpha_func : GL_ALWAYS, fragment_alpha_ref8(ctx));
         if (replace)
-            avx2_modwrite_replace(&m);
+            avx2_modwrite_replace(m);
         if (src == 1)
-            modwrite_texture_setup(&m.tx, tex, ctx->samplers[u], ctx->texel_unorm8);
-        memcpy(ctx->fused_setup, &m, sizeof m);
+            modwrite_texture_setup(&m->tx, tex, ctx->samplers[u], ctx->texel_unorm8);
         ctx->fused_serial = serial, ctx->fused_in_range = 1;
     }
     const int rgb565 = ctx->color_format == GLES_COLOR_RGB565;
-    if (cached && (dot3 || rgb565)) {
-        /* a copy to complete with this chunk's DOT3 texels or dither row */
-        memcpy(&m, ctx->fused_setup, sizeof m);
-        mp = &m;
-    }
     ModWriteDot3 d3;
     if (dot3) {
         d3.rgba = ctx->units[u0].combine_rgb == GL_DOT3_RGBA;
@@ -1344,7 +1337,7 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
         d3.tc0 = sampled0 ? b->tx : NULL;
         if (sampled0)
             modwrite_texture_setup(&d3.tx0, ctx->units[u0].bound, ctx->samplers[u0], ctx->texel_unorm8);
-        m.dot3 = &d3;
+        m->dot3 = &d3;
     }
     int n = b->n;
     if (src == 1) {
@@ -1357,10 +1350,11 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
     if (rgb565) {
         FRAGV t_row[4];
         dither_row(b, ctx->dither, t_row);
-        avx2_modwrite_dither(&m, ctx->dither, t_row);
+        avx2_modwrite_dither(m, ctx->dither, t_row);
     }
-    avx2_modwrite_dispatch(mp, a, src, rgb565, n, b->n, b->k, b->x0, (const WGT (*)[3])b->p, b->ct[0][u], stride,
+    avx2_modwrite_dispatch(m, a, src, rgb565, n, b->n, b->k, b->x0, (const WGT (*)[3])b->p, b->ct[0][u], stride,
                            b->tc, chunk_color(ctx, b), ctx->unorm5, ctx->unorm6);
+    m->dot3 = NULL;     /* d3 ends here */
 }
 
 static void STAGE(stage_modulate_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
