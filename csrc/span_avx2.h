@@ -663,12 +663,85 @@ AVX2_INLINE int avx2_div30(__m256i n, __m256i d, __m256i *q)
     return 1;
 }
 
+/* avx2_div30 of a numerator 0 <= n <= 2^31 and 0 < d < 2^31 */
+AVX2_INLINE int avx2_div30_pos(__m256i n, __m256i d, __m256i *q)
+{
+    const __m256d qd = _mm256_round_pd(_mm256_div_pd(_mm256_mul_pd(avx2_i64_to_pd(n), _mm256_set1_pd(1073741824.0)),
+                                                     avx2_i64_to_pd(d)),
+                                       _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
+    if (_mm256_movemask_pd(_mm256_cmp_pd(qd, _mm256_set1_pd(2147483645.0), _CMP_LT_OQ)) != 0xF)
+        return 0;
+    /* the rounded quotient is never below the exact one's floor (rounding
+    ** is monotone and the floor is a double), so the truncation is right
+    ** or one too high: -1 where the remainder n 2^30 - q d is negative */
+    const __m256i qi = avx2_pd_to_i64(qd);
+    const __m256i r = _mm256_sub_epi64(_mm256_slli_epi64(n, 30), _mm256_mul_epi32(qi, d));
+    *q = _mm256_add_epi64(qi, avx2_negative(r));
+    return 1;
+}
+
+/* avx2_persp_any4 where every edge value lies in a covered point's range,
+** 0 <= e_i and e_i >> eshift < 2^31 (a neighbour inside the triangle, as
+** most are): the numerators and the denominator are then non-negative,
+** so the scalar code's halvings are plain shifts, its largest magnitude
+** is the denominator, and its divisions are avx2_div30_pos's; the same
+** bits as avx2_persp_any4's general path */
+AVX2_INLINE int avx2_persp_any4_covered(const WgtSetup *s, const __m256i e[3], __m256i out[3])
+{
+    const __m128i esh = _mm_cvtsi32_si128(s->eshift);
+    __m256i n[3];
+    for (int i = 0; i < 3; i++) {
+        const __m256i ei = _mm256_srl_epi64(e[i], esh);
+        if (s->affine) {
+            n[i] = ei;
+            continue;
+        }
+        /* ei < 2^31 and 0 < mant < 2^31: the unsigned product is the signed one */
+        const int sh = s->qshift[i] < 62 ? s->qshift[i] : 62;
+        n[i] = _mm256_srl_epi64(_mm256_mul_epu32(ei, _mm256_set1_epi64x(s->mant[i])), _mm_cvtsi32_si128(sh));
+    }
+    __m256i den = _mm256_add_epi64(_mm256_add_epi64(n[0], n[1]), n[2]);
+    const int64_t lim = (int64_t)1 << 31;
+    /* the scalar code's k of m = den, as avx2_persp_any4 finds it */
+    __m256i kvec = _mm256_sub_epi64(
+        _mm256_srli_epi64(_mm256_castpd_si256(avx2_i64_to_pd(_mm256_srli_epi64(den, 32))), 52),
+        _mm256_set1_epi64x(1022));
+    kvec = _mm256_andnot_si256(avx2_negative(kvec), kvec);
+    kvec = _mm256_sub_epi64(kvec, _mm256_cmpgt_epi64(_mm256_srlv_epi64(den, kvec), _mm256_set1_epi64x(lim)));
+    den = _mm256_srlv_epi64(den, kvec);
+    const __m256i n1 = _mm256_srlv_epi64(n[1], kvec), n2 = _mm256_srlv_epi64(n[2], kvec);
+    den = _mm256_blendv_epi8(den, _mm256_set1_epi64x(1), _mm256_cmpeq_epi64(den, _mm256_setzero_si256()));
+    if (!_mm256_testz_si256(_mm256_cmpgt_epi64(den, _mm256_set1_epi64x(lim - 1)), _mm256_set1_epi64x(-1)))
+        return 0;
+    __m256i p1, p2;
+    if (!avx2_div30_pos(n1, den, &p1) || !avx2_div30_pos(n2, den, &p2))
+        return 0;
+    __m256i p0 = _mm256_sub_epi64(_mm256_sub_epi64(_mm256_set1_epi64x(WGT_ONE), p1), p2);
+    const __m256i hi = _mm256_set1_epi64x(lim - 1), lo = _mm256_set1_epi64x(-(lim - 1));
+    p0 = _mm256_blendv_epi8(p0, hi, _mm256_cmpgt_epi64(p0, hi));
+    p0 = _mm256_blendv_epi8(p0, lo, _mm256_cmpgt_epi64(lo, p0));
+    out[0] = p0;
+    out[1] = p1;
+    out[2] = p2;
+    return 1;
+}
+
 /* wgt_persp_any of four fragments' edge values (lanes e[i]) as lanes out[i]
 ** whose low 32 bits are the WGT values; 0 (nothing written) where an
 ** operand leaves the kernel's ranges, for the scalar code */
 AVX2_INLINE int avx2_persp_any4(const WgtSetup *s, const __m256i e[3], __m256i out[3])
 {
     const __m128i esh = _mm_cvtsi32_si128(s->eshift);
+    {
+        /* e < 0 (its top bit) or e >> eshift >= 2^31 in some lane */
+        const __m256i high = _mm256_set1_epi64x(~(int64_t)0x7FFFFFFF);
+        __m256i far = _mm256_setzero_si256();
+        for (int i = 0; i < 3; i++)
+            far = _mm256_or_si256(far, _mm256_or_si256(_mm256_and_si256(e[i], _mm256_set1_epi64x(INT64_MIN)),
+                                                       _mm256_and_si256(_mm256_srl_epi64(e[i], esh), high)));
+        if (_mm256_testz_si256(far, far))
+            return avx2_persp_any4_covered(s, e, out);
+    }
     __m256i n[3];
     for (int i = 0; i < 3; i++) {
         const __m256i ev = e[i];

@@ -257,6 +257,42 @@ def test_neighbour_weights_kernel_matches_scalar():
     np.testing.assert_array_equal(vec[:, 1], np.array(q, np.int64))
 
 
+@pytest.mark.skipif(not HAS_SIMD, reason="no vector instance on this CPU")
+def test_neighbour_weights_kernel_on_covered_points():
+    """Where every lane's edge values lie in a covered point's range (0 <= e
+    and e >> eshift < 2^31), avx2_persp_any4 takes its non-negative path
+    (avx2_persp_any4_covered): the same weights as wgt_persp_any on random
+    covered points, groups with one lane just past the range, sums that
+    normalise to exactly 2^31 (left to the scalar code) and quotients one
+    2^-31 below an integer."""
+    rng = np.random.default_rng(13)
+    for trial in range(40):
+        eshift = int(rng.integers(0, 10))
+        mant = rng.integers(1 << 29, 1 << 30, 3)
+        qshift = rng.integers(0, 40, 3)
+        qshift[rng.integers(0, 3)] = 0
+        affine = int(trial % 4 == 0)
+        e = (rng.integers(0, 1 << 31, (1024, 3)) >> rng.integers(0, 31, (1024, 1))) << eshift
+        e += rng.integers(0, 1 << eshift, (1024, 3))
+        e[rng.integers(0, 1024, 8), rng.integers(0, 3, 8)] = (1 << (31 + eshift)) + 5   # just past
+        e[rng.integers(0, 1024, 8), rng.integers(0, 3, 8)] = (1 << (31 + eshift)) - 1   # the top
+        vec, base = (_persp_any(simd, eshift, mant, qshift, affine, e) for simd in (1, 0))
+        np.testing.assert_array_equal(vec, base, err_msg=f"trial {trial}")
+    rows = []
+    for _ in range(256):
+        d = int(rng.integers(1 << 29, (1 << 31) - 1)) | 1
+        n1 = (-pow(1 << 30, -1, d)) % d                      # n1 2^30 = -1 (mod d)
+        n2 = int(rng.integers(0, d - n1 + 1))
+        rows.append([d - n1 - n2, n1, n2])
+    rows += [[1 << 30, 1 << 29, (1 << 29) + k] for k in range(4)]   # a sum of 2^31 (+ k)
+    e = np.array(rows, np.int64)
+    vec = _persp_any(1, 0, [1 << 29] * 3, [0, 0, 0], 1, e)
+    np.testing.assert_array_equal(vec, _persp_any(0, 0, [1 << 29] * 3, [0, 0, 0], 1, e))
+    # below 2^31 no normalising shift applies: C's truncating division
+    q = [(int(a) << 30) // int(d) for a, d in zip(e[:256, 1], e[:256].sum(axis=1))]
+    np.testing.assert_array_equal(vec[:256, 1], np.array(q, np.int64))
+
+
 def _persp(simd: int, eshift: int, lin_recip: int, mant, qshift, affine: int, e: np.ndarray) -> np.ndarray:
     ctx = make_ctx("fixed", 1, 1)
     ffi, lib = ctx._ffi, ctx._lib
