@@ -1242,14 +1242,28 @@ static void STAGE(stage_rect_source)(GlesContext *ctx, const TriSetup *t, SpanBu
     (void)t;
     const FragIn *in = &b->rect->in;
     const int texturing = ctx->tex_units_on != 0;
-    for (int j = 0; j < b->n; j++) {
-        b->z[j] = in->z;
-        for (int i = 0; i < 4; i++)
-            b->c[j][i] = texturing ? frag_clamp01(in->c[i]) : in->c[i];
-        if (texturing)
-            for (int i = 0; i < 4; i++)
-                b->cf[j][i] = b->c[j][i];
-    }
+    /* the colour once, in locals: the buffer's stores could alias the rectangle */
+    FRAGV c[4];
+    for (int i = 0; i < 4; i++)
+        c[i] = texturing ? frag_clamp01(in->c[i]) : in->c[i];
+    const uint32_t z = in->z;
+    const int n = b->n;
+    for (int j = 0; j < n; j++)
+        b->z[j] = z;
+#if CHAIN_SIMD
+    const V4 cv = v4_load(c);
+    for (int j = 0; j < n; j++)
+        v4_store(b->c[j], cv);
+    if (texturing)
+        for (int j = 0; j < n; j++)
+            v4_store(b->cf[j], cv);
+#else
+    for (int j = 0; j < n; j++)
+        memcpy(b->c[j], c, sizeof c);
+    if (texturing)
+        for (int j = 0; j < n; j++)
+            memcpy(b->cf[j], c, sizeof c);
+#endif
 }
 
 /* }==================================================================== */
