@@ -663,6 +663,32 @@ AVX2_INLINE int avx2_div30(__m256i n, __m256i d, __m256i *q)
     return 1;
 }
 
+/* wgt_persp_any's normalising shift k of magnitudes m (lanes below 2^63):
+** k0 = the bit length of m >> 32 (below 2^31, so its double is exact and
+** the exponent gives it), then one more where m >> k0 > 2^31: the scalar
+** code's k (0 where m <= 2^31) */
+AVX2_INLINE __m256i avx2_any_shift(__m256i m)
+{
+    __m256i k = _mm256_sub_epi64(
+        _mm256_srli_epi64(_mm256_castpd_si256(avx2_i64_to_pd(_mm256_srli_epi64(m, 32))), 52),
+        _mm256_set1_epi64x(1022));
+    k = _mm256_andnot_si256(avx2_negative(k), k);
+    return _mm256_sub_epi64(k, _mm256_cmpgt_epi64(_mm256_srlv_epi64(m, k), _mm256_set1_epi64x((int64_t)1 << 31)));
+}
+
+/* wgt_persp_any's weights from p1, p2 (each below 2^31 - 2 in magnitude,
+** so their clamps are no-ops): out0 = 1 - p1 - p2 clamped */
+AVX2_INLINE void avx2_any_weights(__m256i p1, __m256i p2, __m256i out[3])
+{
+    const int64_t lim = (int64_t)1 << 31;
+    __m256i p0 = _mm256_sub_epi64(_mm256_sub_epi64(_mm256_set1_epi64x(WGT_ONE), p1), p2);
+    const __m256i hi = _mm256_set1_epi64x(lim - 1), lo = _mm256_set1_epi64x(-(lim - 1));
+    p0 = _mm256_blendv_epi8(p0, hi, _mm256_cmpgt_epi64(p0, hi));
+    out[0] = _mm256_blendv_epi8(p0, lo, _mm256_cmpgt_epi64(lo, p0));
+    out[1] = p1;
+    out[2] = p2;
+}
+
 /* avx2_div30 of a numerator 0 <= n <= 2^31 and 0 < d < 2^31 */
 AVX2_INLINE int avx2_div30_pos(__m256i n, __m256i d, __m256i *q)
 {
@@ -702,12 +728,7 @@ AVX2_INLINE int avx2_persp_any4_covered(const WgtSetup *s, const __m256i e[3], _
     }
     __m256i den = _mm256_add_epi64(_mm256_add_epi64(n[0], n[1]), n[2]);
     const int64_t lim = (int64_t)1 << 31;
-    /* the scalar code's k of m = den, as avx2_persp_any4 finds it */
-    __m256i kvec = _mm256_sub_epi64(
-        _mm256_srli_epi64(_mm256_castpd_si256(avx2_i64_to_pd(_mm256_srli_epi64(den, 32))), 52),
-        _mm256_set1_epi64x(1022));
-    kvec = _mm256_andnot_si256(avx2_negative(kvec), kvec);
-    kvec = _mm256_sub_epi64(kvec, _mm256_cmpgt_epi64(_mm256_srlv_epi64(den, kvec), _mm256_set1_epi64x(lim)));
+    const __m256i kvec = avx2_any_shift(den);    /* the largest magnitude is den's */
     den = _mm256_srlv_epi64(den, kvec);
     const __m256i n1 = _mm256_srlv_epi64(n[1], kvec), n2 = _mm256_srlv_epi64(n[2], kvec);
     den = _mm256_blendv_epi8(den, _mm256_set1_epi64x(1), _mm256_cmpeq_epi64(den, _mm256_setzero_si256()));
@@ -716,13 +737,7 @@ AVX2_INLINE int avx2_persp_any4_covered(const WgtSetup *s, const __m256i e[3], _
     __m256i p1, p2;
     if (!avx2_div30_pos(n1, den, &p1) || !avx2_div30_pos(n2, den, &p2))
         return 0;
-    __m256i p0 = _mm256_sub_epi64(_mm256_sub_epi64(_mm256_set1_epi64x(WGT_ONE), p1), p2);
-    const __m256i hi = _mm256_set1_epi64x(lim - 1), lo = _mm256_set1_epi64x(-(lim - 1));
-    p0 = _mm256_blendv_epi8(p0, hi, _mm256_cmpgt_epi64(p0, hi));
-    p0 = _mm256_blendv_epi8(p0, lo, _mm256_cmpgt_epi64(lo, p0));
-    out[0] = p0;
-    out[1] = p1;
-    out[2] = p2;
+    avx2_any_weights(p1, p2, out);
     return 1;
 }
 
@@ -766,14 +781,7 @@ AVX2_INLINE int avx2_persp_any4(const WgtSetup *s, const __m256i e[3], __m256i o
     /* |INT64_MIN| is not a magnitude: the scalar code's */
     if (_mm256_movemask_pd(_mm256_castsi256_pd(m)))
         return 0;
-    /* k0 = the bit length of m >> 32 (below 2^31, so its double is exact
-    ** and the exponent gives it), then one more where m >> k0 > 2^31: the
-    ** scalar code's k (0 where m <= 2^31) */
-    __m256i kvec = _mm256_sub_epi64(
-        _mm256_srli_epi64(_mm256_castpd_si256(avx2_i64_to_pd(_mm256_srli_epi64(m, 32))), 52),
-        _mm256_set1_epi64x(1022));
-    kvec = _mm256_andnot_si256(avx2_negative(kvec), kvec);
-    kvec = _mm256_sub_epi64(kvec, _mm256_cmpgt_epi64(_mm256_srlv_epi64(m, kvec), _mm256_set1_epi64x(lim)));
+    const __m256i kvec = avx2_any_shift(m);
     den = avx2_div_pow2v(den, kvec);
     __m256i n1 = avx2_div_pow2v(n[1], kvec), n2 = avx2_div_pow2v(n[2], kvec);
     den = _mm256_blendv_epi8(den, _mm256_set1_epi64x(1), _mm256_cmpeq_epi64(den, _mm256_setzero_si256()));
@@ -787,14 +795,7 @@ AVX2_INLINE int avx2_persp_any4(const WgtSetup *s, const __m256i e[3], __m256i o
     __m256i p1, p2;
     if (!avx2_div30(n1, den, &p1) || !avx2_div30(n2, den, &p2))
         return 0;
-    /* |p1|, |p2| < 2^31 - 2, so their clamps are no-ops; out0 is clamped */
-    __m256i p0 = _mm256_sub_epi64(_mm256_sub_epi64(_mm256_set1_epi64x(WGT_ONE), p1), p2);
-    const __m256i hi = _mm256_set1_epi64x(lim - 1), lo = _mm256_set1_epi64x(-(lim - 1));
-    p0 = _mm256_blendv_epi8(p0, hi, _mm256_cmpgt_epi64(p0, hi));
-    p0 = _mm256_blendv_epi8(p0, lo, _mm256_cmpgt_epi64(lo, p0));
-    out[0] = p0;
-    out[1] = p1;
-    out[2] = p2;
+    avx2_any_weights(p1, p2, out);
     return 1;
 }
 

@@ -211,6 +211,16 @@ def _persp_any(simd: int, eshift: int, mant, qshift, affine: int, e: np.ndarray)
     return out
 
 
+def _random_weight_setup(rng: np.random.Generator, trial: int) -> tuple:
+    """A triangle's weight setup: eshift, 1/w mantissas (below 2^30, as
+    recipw_of makes), their shifts (one of them 0), and affine one trial in four."""
+    eshift = int(rng.integers(0, 10))
+    mant = rng.integers(1 << 29, 1 << 30, 3)
+    qshift = rng.integers(0, 40, 3)
+    qshift[rng.integers(0, 3)] = 0
+    return eshift, mant, qshift, int(trial % 4 == 0)
+
+
 def _division_edge_cases(rng: np.random.Generator, count: int) -> np.ndarray:
     """Affine edge values whose weights n 2^30 / den lie just below (or,
     negated, just above) an integer, 1/den away: a double quotient rounds
@@ -235,11 +245,7 @@ def test_neighbour_weights_kernel_matches_scalar():
     where only the remainder correction is right."""
     rng = np.random.default_rng(11)
     for trial in range(40):
-        eshift = int(rng.integers(0, 10))
-        mant = rng.integers(1 << 29, 1 << 30, 3)
-        qshift = rng.integers(0, 40, 3)
-        qshift[rng.integers(0, 3)] = 0
-        affine = int(trial % 4 == 0)
+        eshift, mant, qshift, affine = _random_weight_setup(rng, trial)
         # edge values as the rasterizer's: e >> eshift within 31 bits, up to
         # 1.25 times past it for a neighbour (where the kernel leaves lanes
         # to the scalar code); scaled down by random powers of two
@@ -267,11 +273,7 @@ def test_neighbour_weights_kernel_on_covered_points():
     2^-31 below an integer."""
     rng = np.random.default_rng(13)
     for trial in range(40):
-        eshift = int(rng.integers(0, 10))
-        mant = rng.integers(1 << 29, 1 << 30, 3)
-        qshift = rng.integers(0, 40, 3)
-        qshift[rng.integers(0, 3)] = 0
-        affine = int(trial % 4 == 0)
+        eshift, mant, qshift, affine = _random_weight_setup(rng, trial)
         e = (rng.integers(0, 1 << 31, (1024, 3)) >> rng.integers(0, 31, (1024, 1))) << eshift
         e += rng.integers(0, 1 << eshift, (1024, 3))
         e[rng.integers(0, 1024, 8), rng.integers(0, 3, 8)] = (1 << (31 + eshift)) + 5   # just past
