@@ -72,15 +72,17 @@ static int line_needs_lod(const GlesContext *ctx)
     return 0;
 }
 
-/* An aliased x-major line of width 1 has one fragment per column pm, in
-** row ceil(m / one) - 1 (m the line's minor coordinate at the column's
+/* An aliased line of width 1 has one fragment per major-axis pixel pm, at
+** minor pixel ceil(m / one) - 1 (m the line's minor coordinate at pm's
 ** centre c), with edge values (len - an, an, 0), an = |c - ma| = sg (c - ma)
-** for the sign sg of D: linear in the column. So the columns it keeps in
-** one row are a run of the span function for the state, whose reference
-** (span_generic) gives each the fragment raster_line's loop would, with
-** the same edge values: e = ea pm + ec. ea is then (-sg, sg, 0) pixels,
-** which is t->ea's level-of-detail neighbour for D > 0 only; the caller
-** takes this path for D < 0 only where no unit needs that neighbour. */
+** for the sign sg of D: linear in pm. So an x-major line's columns in one
+** row are a run of the span function for the state (a y-major line's
+** fragments runs of one), whose reference (span_generic) gives each the
+** fragment raster_line's loop would, with the same edge values: e = ea x
+** + eb y + ec with ea (x-major) or eb (y-major) = (-sg, sg, 0) pixels. ea
+** is also the level of detail's neighbour, which that step is for an
+** x-major line with D > 0 only; the caller takes this path otherwise only
+** where no unit needs that neighbour. */
 static void line_runs(GlesContext *ctx, TriSetup *t, int xmajor, int64_t ma, int64_t na, int64_t nb, int64_t D,
                       int64_t len, int64_t p0, int64_t p1, int64_t cn0, int64_t cn1)
 {
@@ -96,10 +98,11 @@ static void line_runs(GlesContext *ctx, TriSetup *t, int xmajor, int64_t ma, int
         t->flat_packed = span_pack_color(ctx, t->flat);
         span = ctx->span_const;
     }
+#define LINE_MINOR_PIXEL(pm) (i64_ceil_div(line_minor(na, nb - na, (pm) * one + half - ma, D), one) - 1)
     if (!xmajor) {
         /* one fragment per row */
         for (int64_t pm = p0; pm <= p1; pm++) {
-            const int64_t col = i64_ceil_div(line_minor(na, nb - na, pm * one + half - ma, D), one) - 1;
+            const int64_t col = LINE_MINOR_PIXEL(pm);
             if (col >= cn0 && col < cn1)
                 span(ctx, t, (int)pm, (int)col, 1);
         }
@@ -107,7 +110,7 @@ static void line_runs(GlesContext *ctx, TriSetup *t, int xmajor, int64_t ma, int
     }
     int64_t run_y = 0, run_x = 0, run_n = 0;
     for (int64_t pm = p0; pm <= p1; pm++) {
-        const int64_t row = i64_ceil_div(line_minor(na, nb - na, pm * one + half - ma, D), one) - 1;
+        const int64_t row = LINE_MINOR_PIXEL(pm);
         if (run_n && row != run_y) {
             span(ctx, t, (int)run_y, (int)run_x, (int)run_n);
             run_n = 0;
@@ -118,6 +121,7 @@ static void line_runs(GlesContext *ctx, TriSetup *t, int xmajor, int64_t ma, int
             run_y = row, run_x = pm;
         run_n++;
     }
+#undef LINE_MINOR_PIXEL
     if (run_n)
         span(ctx, t, (int)run_y, (int)run_x, (int)run_n);
 }

@@ -113,35 +113,6 @@ struct SpanBuf {
 ** ascend, so the last one tells) */
 static inline int slots_adjacent4(const uint8_t *k) { return k[3] == k[0] + 3; }
 
-#if NUM_IS_FIXED
-/* sprite_s of the chunk's fragments into tc[j].s, with t0 as t. From one
-** fragment to the next pixel the numerator grows by GLES_SUBPIXEL_ONE, so
-** n 2^32 by a constant: the quotient is carried with its remainder
-** instead of divided again. Exact where the numerator is >= 0 (C's
-** truncation is then the floor, and it only grows along the row); any
-** other fragment is divided as sprite_s divides. */
-static inline void sprite_s_chunk(int64_t x, int64_t size, const SpanBuf *b, TEXC t0, TexCoord *tc)
-{
-    const int64_t step = (int64_t)GLES_SUBPIXEL_ONE * TEXC_ONE;
-    const int64_t sq = size > 0 ? step / size : 0, sr = size > 0 ? step % size : 0;
-    int64_t q = 0, r = -1;          /* r < 0: no running quotient */
-    for (int j = 0; j < b->n; j++) {
-        if (r >= 0 && b->k[j] == b->k[j - 1] + 1) {
-            q += sq;
-            r += sr;
-            if (r >= size) {
-                r -= size;
-                q++;
-            }
-        } else {
-            const int64_t num = sprite_s_num(x, size, b->x0 + b->k[j]);
-            q = texc_ratio(num, size);
-            r = num >= 0 && size > 0 ? num * TEXC_ONE - q * size : -1;
-        }
-        tc[j] = (TexCoord){ q, t0 };
-    }
-}
-#endif
 
 /* fragment_write's arithmetic on RGBA8888 with every channel written and no
 ** logic op, for blend kind 0 (none), 1 (SRC_ALPHA, ONE_MINUS_SRC_ALPHA) or

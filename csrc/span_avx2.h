@@ -613,28 +613,6 @@ AVX2_INLINE void avx2_lod_choose4(const Avx2LodParams *p, const TexCoord *c, con
 
 /* }==================================================================== */
 
-/* rect_linear_s of the four pixel columns x0 + k[0..3], stored as the s of
-** tc[0..3] with t0 as their t: the same double operations (a + b (x + 1/2),
-** scaled by 2^32, then floor(v + 1/2)), and the conversion to int64 exact
-** by the 2^52 + 2^51 bias while |v| < 2^51; 0 (nothing stored) when a lane
-** is past that or NaN, for the scalar code */
-AVX2_INLINE int avx2_rect_linear_s4(double a, double b, int x0, const uint8_t *k, TEXC t0, TexCoord *tc)
-{
-    uint32_t k4;
-    memcpy(&k4, k, sizeof k4);
-    const __m128i px = _mm_add_epi32(_mm_cvtepu8_epi32(_mm_cvtsi32_si128((int)k4)), _mm_set1_epi32(x0));
-    const __m256d x = _mm256_add_pd(_mm256_cvtepi32_pd(px), _mm256_set1_pd(0.5));
-    const __m256d v = _mm256_mul_pd(_mm256_add_pd(_mm256_set1_pd(a), _mm256_mul_pd(_mm256_set1_pd(b), x)),
-                                    _mm256_set1_pd(4294967296.0));
-    const __m256d lim = _mm256_set1_pd(2251799813685248.0);   /* 2^51 */
-    const __m256d abs = _mm256_andnot_pd(_mm256_set1_pd(-0.0), v);
-    if (_mm256_movemask_pd(_mm256_cmp_pd(abs, lim, _CMP_LT_OQ)) != 0xF)
-        return 0;
-    const __m256d r = _mm256_floor_pd(_mm256_add_pd(v, _mm256_set1_pd(0.5)));
-    avx2_store_st4(avx2_pd_to_i64(r), _mm256_set1_epi64x(t0), tc);
-    return 1;
-}
-
 /* trunc(n 2^30 / d) (C's division) for |n| <= 2^31 and 0 < d < 2^31, where
 ** the quotient's magnitude stays below 2^31 - 2: the double quotient is
 ** within 2^-22 of the exact one, so its truncation is off by at most one,

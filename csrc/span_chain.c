@@ -645,15 +645,15 @@ void span_chain(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
 }
 
 /* each enabled unit's s of columns x0..x1 (x1 for the right neighbours),
-** computed once for the rectangle's rows where it has more than one: a
-** unit's s depends on the column only (rect_linear_s, sprite_s) */
-static void rect_columns(GlesContext *ctx, RectSetup *r, int64_t x0, int64_t x1, int64_t rows)
+** computed once for all the rectangle's rows: a unit's s depends on the
+** column only (rect_linear_s, sprite_s) */
+static void rect_columns(GlesContext *ctx, RectSetup *r, int64_t x0, int64_t x1)
 {
     r->col_x0 = x0;
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++) {
         r->col_s[u] = NULL;
         const int coord = r->coord[u];
-        if (rows < 2 || !(ctx->tex_units_on & (1u << u)) || (coord != RECT_COORD_LINEAR && coord != RECT_COORD_SPRITE))
+        if (!(ctx->tex_units_on & (1u << u)) || (coord != RECT_COORD_LINEAR && coord != RECT_COORD_SPRITE))
             continue;
         /* 0 <= x0 < x1 <= width: x1 - x0 + 1 entries fit the unit's width + 1 */
         TEXC *col = ctx->rect_s + (size_t)u * ((size_t)ctx->width + 1);
@@ -670,7 +670,7 @@ void span_rect(GlesContext *ctx, const RectSetup *r, int64_t x0, int64_t y0, int
     int count = compose(ctx, stages, 1);
     RectSetup rc = *r;
     rc.serial = ++ctx->prim_serial;
-    rect_columns(ctx, &rc, x0, x1, y1 - y0);
+    rect_columns(ctx, &rc, x0, x1);
     for (int64_t y = y0; y < y1; y++)
         run(ctx, stages, count, NULL, &rc, (int)y, (int)x0, (int)(x1 - x0));
 }

@@ -668,56 +668,18 @@ static void STAGE(stage_fetch_rect)(GlesContext *ctx, const TriSetup *t, SpanBuf
 {
     (void)t;
     const RectSetup *r = b->rect;
-    /* the chunk's columns' s, where span_rect formed them */
-    const TEXC *const col = r->col_s[u] ? r->col_s[u] + (b->x0 - r->col_x0) : NULL;
     const int lod = texture_needs_lod(ctx->units[u].bound);
     switch (r->coord[u]) {
-    case RECT_COORD_LINEAR: {
-        /* rect_linear_coords, with t once per row and the neighbours only
-        ** where the filter reads them */
-        const TEXC t0 = rect_linear_t(r, u, b->y);
-        if (col) {
-            STAGE(rect_from_columns)(b, col, t0, lod ? rect_linear_t(r, u, b->y + 1) : 0, lod);
-        } else if (lod) {
-            const TEXC t1 = rect_linear_t(r, u, b->y + 1);
-            for (int j = 0; j < b->n; j++) {
-                const int64_t px = b->x0 + b->k[j];
-                b->tc[j] = (TexCoord){ rect_linear_s(r, u, px), t0 };
-                b->tx[j] = (TexCoord){ rect_linear_s(r, u, px + 1), t0 };
-                b->ty[j] = (TexCoord){ b->tc[j].s, t1 };
-            }
-        } else {
-            int j = 0;
-#if CHAIN_SIMD && NUM_IS_FIXED
-            while (j + 4 <= b->n && avx2_rect_linear_s4(r->as[u], r->bs[u], b->x0, &b->k[j], t0, &b->tc[j]))
-                j += 4;
-#endif
-            for (; j < b->n; j++)
-                b->tc[j] = (TexCoord){ rect_linear_s(r, u, b->x0 + b->k[j]), t0 };
-        }
-        break;
-    }
+    case RECT_COORD_LINEAR:
     case RECT_COORD_SPRITE: {
-        /* sprite_coords, the same way */
-        const TEXC t0 = sprite_t(r->sprite_y, r->sprite_size, b->y);
-        if (col) {
-            STAGE(rect_from_columns)(b, col, t0, lod ? sprite_t(r->sprite_y, r->sprite_size, b->y + 1) : 0, lod);
-        } else if (lod) {
-            const TEXC t1 = sprite_t(r->sprite_y, r->sprite_size, b->y + 1);
-            for (int j = 0; j < b->n; j++) {
-                const int64_t px = b->x0 + b->k[j];
-                b->tc[j] = (TexCoord){ sprite_s(r->sprite_x, r->sprite_size, px), t0 };
-                b->tx[j] = (TexCoord){ sprite_s(r->sprite_x, r->sprite_size, px + 1), t0 };
-                b->ty[j] = (TexCoord){ b->tc[j].s, t1 };
-            }
-        } else {
-#if NUM_IS_FIXED
-            sprite_s_chunk(r->sprite_x, r->sprite_size, b, t0, b->tc);
-#else
-            for (int j = 0; j < b->n; j++)
-                b->tc[j] = (TexCoord){ sprite_s(r->sprite_x, r->sprite_size, b->x0 + b->k[j]), t0 };
-#endif
-        }
+        /* rect_linear_coords or sprite_coords: s from the columns span_rect
+        ** formed (every enabled unit's), t once per row, the neighbours only
+        ** where the filter reads them */
+        const int sprite = r->coord[u] == RECT_COORD_SPRITE;
+        const TEXC t0 = sprite ? sprite_t(r->sprite_y, r->sprite_size, b->y) : rect_linear_t(r, u, b->y);
+        const TEXC t1 = !lod ? 0
+                      : sprite ? sprite_t(r->sprite_y, r->sprite_size, b->y + 1) : rect_linear_t(r, u, b->y + 1);
+        STAGE(rect_from_columns)(b, r->col_s[u] + (b->x0 - r->col_x0), t0, t1, lod);
         break;
     }
     default:
@@ -1342,7 +1304,6 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
             modwrite_texture_setup(&m->tx, tex, ctx->samplers[u], ctx->texel_unorm8);
         ctx->fused_serial = serial, ctx->fused_in_range = 1;
     }
-    const int rgb565 = ctx->color_format == GLES_COLOR_RGB565;
     ModWriteDot3 d3;
     if (dot3) {
         d3.rgba = ctx->units[u0].combine_rgb == GL_DOT3_RGBA;
@@ -1361,6 +1322,7 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
         for (int j = b->n; j < n && sampled0; j++)
             b->tx[j] = b->tx[b->n - 1];
     }
+    const int rgb565 = ctx->color_format == GLES_COLOR_RGB565;
     if (rgb565) {
         FRAGV t_row[4];
         dither_row(b, ctx->dither, t_row);

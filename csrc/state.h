@@ -20,6 +20,7 @@
 #define GLES_MAX_TEXTURE_UNITS 4
 /* room for the fused span stage's per-triangle constants (Avx2ModWrite) */
 #define GLES_FUSED_SETUP_BYTES 1024
+/* room for the stencil and depth tests' per-primitive setup (Avx2TestsSetup) */
 #define GLES_TESTS_SETUP_BYTES 1024
 /* fragments of one flat colour's blend before its table is built: building
 ** it (1024 entries) then costs at most what those fragments did */
@@ -234,7 +235,7 @@ struct GlesContext {
     WGT (*nb_w[2])[3];
     /* span_rect's s by column, width + 1 per unit (RectSetup.col_s) */
     TEXC *rect_s;
-    /* the fused stage's setup for the triangle of serial fused_serial (0:
+    /* the fused stage's setup for the primitive of serial fused_serial (0:
     ** none): whether its colours are in range, and its kernel's constants
     ** (an Avx2ModWrite, span_stages.h), which every chunk of it shares */
     uint64_t fused_serial;
