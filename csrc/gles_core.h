@@ -84,8 +84,11 @@ int gles_debug_persp_any(int simd, int eshift, const int64_t mant[3], const int 
 ** triangle's, for an affine one); mantissas below 2^30, as recipw_of makes */
 int gles_debug_persp(int simd, int eshift, int64_t lin_recip, const int64_t mant[3], const int qshift[3], int affine,
                      int n, const int64_t *e, int32_t *out);
+/* the most pixels of a row the span chain takes through its stages at
+** once (a chunk; tests size rows past it) */
+int gles_span_chunk(void);
 /* for tests, fixed build (0 elsewhere): stage_persp over one chunk of n
-** (at most 64) neighbouring pixels whose edge values are e0 + j ea (slot
+** (at most gles_span_chunk()) neighbouring pixels whose edge values are e0 + j ea (slot
 ** j), for a triangle set up as gles_debug_persp's, by the chain's vector
 ** instance where simd != 0 and the CPU has one, else its baseline */
 int gles_debug_persp_chunk(int simd, int eshift, int64_t lin_recip, const int64_t mant[3], const int qshift[3],
@@ -97,19 +100,20 @@ int gles_debug_persp_chunk(int simd, int eshift, int64_t lin_recip, const int64_
 ** (the colours in int32 range, else the scalar code, as the stage does) */
 int gles_debug_color(int simd, int clamp, const int64_t col[12], int n, const int32_t *p, int64_t *out);
 /* for tests, float build with AVX2 (-1 elsewhere): the float build's
-** fused stage's kernel (f8_modwrite_run) over n fragments (n <= 64,
-** padded to a whole group as the stage pads) at offsets k (ascending) of
-** the RGBA8888 words dst: vertex colours col[4 i ..] at weights p[3 j ..]
-** (smooth) or the flat colour col[0..3], texels ct[4 j ..], as
-** gles_debug_modulate_write; returns 0 when run */
+** fused stage's kernel (f8_modwrite_run) over n fragments (at most
+** gles_span_chunk(), padded to a whole group as the stage pads) at offsets
+** k (ascending) of the RGBA8888 words dst: vertex colours col[4 i ..] at
+** weights p[3 j ..] (smooth) or the flat colour col[0..3], texels
+** ct[4 j ..], as gles_debug_modulate_write; returns 0 when run */
 int gles_debug_modulate_write_f(int smooth, int rgb, int kind, unsigned int alpha_func, uint32_t alpha_ref,
                                 const float col[12], int n, const uint8_t *k, const float *p, const float *ct,
                                 uint32_t *dst);
 /* for tests, fixed build with AVX2 (-1 elsewhere): stage_modulate_write's
-** kernel over n fragments (n <= 64) at offsets k (ascending) of the words
-** dst: vertex colours col[4 i ..] (0.30, in [0, 1]) at weights p[3 j ..]
-** (smooth), or the flat colour col[0..3]; texels ct[4 j ..] (0.30) of an
-** RGBA (or, rgb != 0, RGB) texture under MODULATE; the alpha test
+** kernel over n fragments (at most gles_span_chunk()) at offsets k
+** (ascending) of the words dst: vertex colours col[4 i ..] (0.30, in
+** [0, 1]) at weights p[3 j ..] (smooth), or the flat colour col[0..3];
+** texels ct[4 j ..] (0.30) of an RGBA (or, rgb != 0, RGB) texture under
+** MODULATE; the alpha test
 ** (alpha_func, GL_ALWAYS for none, against the 8-bit alpha_ref) and blend
 ** kind 0 (none), 1 (SRC_ALPHA, ONE_MINUS_SRC_ALPHA) or 2 (ONE, ONE, not on
 ** RGB565). dst holds uint32_t RGBA8888 words, or (rgb565 != 0) uint16_t

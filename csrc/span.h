@@ -11,8 +11,14 @@
 #include "texture.h"
 #include "fragment.h"
 
-/* the pixels a chunk holds: the chain cuts longer runs */
-#define SPAN_CHUNK 64
+/* the pixels a chunk holds: the chain cuts longer runs. Each stage has a
+** fixed cost per chunk, which 128 pays half as often as 64 did on long
+** rows; 256 saves a little more but doubles the SpanBuf on the stack
+** (benchmarks/README.md) */
+#define SPAN_CHUNK 128
+/* a bit per slot of a chunk, in 64-bit words (the tests' outcomes) */
+#define SPAN_KEEP_WORDS (SPAN_CHUNK / 64)
+_Static_assert(SPAN_CHUNK % 64 == 0 && SPAN_CHUNK <= 256, "slots are whole words of bits, offsets are bytes");
 
 /* what a fetch stage leaves: each unit's texels (b->ct), the texel as the
 ** colour (b->c), or the coordinates only (a later stage samples), in b->tc

@@ -1665,11 +1665,11 @@ static const uint64_t avx2_compact8[256] = { AVX2_C64(0u), AVX2_C64(64u), AVX2_C
 
 /* keep the n offsets k[j] whose bit is set in keep, in order, at the front
 ** of k (which has room for SPAN_CHUNK); returns how many */
-AVX2_INLINE int avx2_compact_offsets(uint8_t *k, int n, uint64_t keep)
+AVX2_INLINE int avx2_compact_offsets(uint8_t *k, int n, const uint64_t keep[SPAN_KEEP_WORDS])
 {
     int m = 0, j = 0;
     for (; j + 8 <= n; j += 8) {
-        const unsigned bits = (unsigned)(keep >> j) & 0xFFu;
+        const unsigned bits = (unsigned)(keep[j >> 6] >> (j & 63)) & 0xFFu;
         const __m128i idx = _mm_loadl_epi64((const __m128i *)(const void *)&avx2_compact8[bits]);
         const __m128i src = _mm_loadl_epi64((const __m128i *)(const void *)(k + j));
         /* m <= j: the eight bytes stored stay within the slots read so far */
@@ -1677,7 +1677,7 @@ AVX2_INLINE int avx2_compact_offsets(uint8_t *k, int n, uint64_t keep)
         m += __builtin_popcount(bits);
     }
     for (; j < n; j++)
-        if ((keep >> j) & 1)
+        if ((keep[j >> 6] >> (j & 63)) & 1)
             k[m++] = k[j];
     return m;
 }

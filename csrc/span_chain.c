@@ -309,6 +309,8 @@ static int debug_persp(int any, int simd, int eshift, int64_t lin_recip, const i
 #endif
 }
 
+int gles_span_chunk(void) { return SPAN_CHUNK; }
+
 int gles_debug_persp_chunk(int simd, int eshift, int64_t lin_recip, const int64_t mant[3], const int qshift[3],
                            int affine, int n, const int64_t e0[3], const int64_t ea[3], int32_t *out)
 {
@@ -606,11 +608,12 @@ static void prefetch_bytes(const void *p, size_t bytes)
 /* a chunk's slots before any test: offsets 0, 1, 2, ... */
 #define SPAN_OFFSETS4(i) (i), (i) + 1, (i) + 2, (i) + 3
 #define SPAN_OFFSETS16(i) SPAN_OFFSETS4(i), SPAN_OFFSETS4((i) + 4), SPAN_OFFSETS4((i) + 8), SPAN_OFFSETS4((i) + 12)
-static const uint8_t span_offsets[SPAN_CHUNK] = { SPAN_OFFSETS16(0), SPAN_OFFSETS16(16), SPAN_OFFSETS16(32),
-                                                  SPAN_OFFSETS16(48) };
+#define SPAN_OFFSETS64(i) SPAN_OFFSETS16(i), SPAN_OFFSETS16((i) + 16), SPAN_OFFSETS16((i) + 32), SPAN_OFFSETS16((i) + 48)
+static const uint8_t span_offsets[SPAN_CHUNK] = { SPAN_OFFSETS64(0), SPAN_OFFSETS64(64) };
+#undef SPAN_OFFSETS64
 #undef SPAN_OFFSETS16
 #undef SPAN_OFFSETS4
-_Static_assert(SPAN_CHUNK == 64, "span_offsets lists SPAN_CHUNK offsets");
+_Static_assert(SPAN_CHUNK == 128, "span_offsets lists SPAN_CHUNK offsets");
 
 /* one row's run [x0, x0 + n) through `count` stages, a chunk at a time */
 static void run(GlesContext *ctx, const SpanStage *stages, int count, const TriSetup *t, const RectSetup *r, int y,

@@ -362,23 +362,21 @@ static void STAGE(stage_depth)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 #if CHAIN_SIMD
 /* the vector tests of n fragments in slots: stored stencil values s[0..n)
 ** and depths d[0..n), window depths z[0..n) (avx2_tests8's flags); the
-** passing slots' bits */
-static inline __attribute__((always_inline)) uint64_t STAGE(tests_slots)(const Avx2Tests *v, uint8_t *s,
-                                                                            uint32_t *d, const uint32_t *z,
-                                                                            int n, int stencil, int swrite,
-                                                                            int depth, int dwrite,
-                                                                            unsigned int dfunc)
+** passing slots' bits into keep (slot j: bit j % 64 of word j / 64; a
+** group of eight never straddles two words) */
+static inline __attribute__((always_inline)) void STAGE(tests_slots)(const Avx2Tests *v, uint8_t *s, uint32_t *d,
+                                                                        const uint32_t *z, int n, int stencil,
+                                                                        int swrite, int depth, int dwrite,
+                                                                        unsigned int dfunc,
+                                                                        uint64_t keep[SPAN_KEEP_WORDS])
 {
-    uint64_t keep = 0;
-    int j = 0;
+    for (int i = 0; i < SPAN_KEEP_WORDS; i++)
+        keep[i] = 0;
     /* (a buffer whose test is off is NULL: no offset is added to it) */
-    for (; j + 8 <= n; j += 8)
-        keep |= (uint64_t)avx2_tests8(v, stencil ? s + j : s, d ? d + j : d, z + j, 8, stencil, swrite, depth,
-                                      dwrite, dfunc) << j;
-    if (j < n)
-        keep |= (uint64_t)avx2_tests8(v, stencil ? s + j : s, d ? d + j : d, z + j, n - j, stencil, swrite, depth,
-                                      dwrite, dfunc) << j;
-    return keep;
+    for (int j = 0; j < n; j += 8)
+        keep[j >> 6] |= (uint64_t)avx2_tests8(v, stencil ? s + j : s, d ? d + j : d, z + j, n - j < 8 ? n - j : 8,
+                                              stencil, swrite, depth, dwrite, dfunc)
+                        << (j & 63);
 }
 #endif
 
@@ -428,10 +426,12 @@ static void STAGE(tests)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, int wi
         s = st ? ls : NULL;
         d = zb ? ld : NULL;
     }
-    uint64_t keep;
+    uint64_t keep[SPAN_KEEP_WORDS];
 #define TESTS_VECTOR(FUNC) \
-    keep = st ? STAGE(tests_slots)(&v, s, d, b->z, n, 1, swrite, zb != NULL, dwrite, FUNC) \
-              : STAGE(tests_slots)(&v, s, d, b->z, n, 0, 0, 1, dwrite, FUNC); \
+    if (st) \
+        STAGE(tests_slots)(&v, s, d, b->z, n, 1, swrite, zb != NULL, dwrite, FUNC, keep); \
+    else \
+        STAGE(tests_slots)(&v, s, d, b->z, n, 0, 0, 1, dwrite, FUNC, keep); \
     break;
     switch (dfunc) {
     case GL_NEVER: TESTS_VECTOR(GL_NEVER)
@@ -452,15 +452,21 @@ static void STAGE(tests)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, int wi
             for (int j = 0; j < n; j++)
                 zb[b->k[j]] = ld[j];
     }
-    if (keep == (n == 64 ? ~(uint64_t)0 : ((uint64_t)1 << n) - 1))
+    int all = 1;
+    for (int i = 0; i < SPAN_KEEP_WORDS; i++) {
+        const int w = n - 64 * i;
+        all &= keep[i] == (w >= 64 ? ~(uint64_t)0 : w > 0 ? ((uint64_t)1 << w) - 1 : 0);
+    }
+    if (all)
         return;     /* every fragment passes */
     if (with_color) {
         int m = 0;
-        for (uint64_t bits = keep; bits; bits &= bits - 1, m++) {
-            const int j = __builtin_ctzll(bits);
-            if (m != j)
-                v4_store(b->c[m], v4_load(b->c[j]));
-        }
+        for (int i = 0; i < SPAN_KEEP_WORDS; i++)
+            for (uint64_t bits = keep[i]; bits; bits &= bits - 1, m++) {
+                const int j = 64 * i + __builtin_ctzll(bits);
+                if (m != j)
+                    v4_store(b->c[m], v4_load(b->c[j]));
+            }
     }
     b->n = avx2_compact_offsets(b->k, n, keep);
 #else

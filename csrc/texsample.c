@@ -12,8 +12,9 @@
 #include "span.h"
 #include "fragment.h"   /* span_avx2.h's logic op body */
 
-/* the most fragments a span sampler is given at once (a chunk) */
-#define SPAN_SAMPLE_MAX SPAN_CHUNK
+/* the most fragments lod_block takes at once (lod_blocks gives it a chunk
+** in such pieces) */
+#define SPAN_SAMPLE_MAX 64
 
 #if SIMD_X86
 #pragma GCC push_options
@@ -208,7 +209,7 @@ void texture_sample(const Texture *t, const TexCoord *c, const TexCoord *dx, con
             int j = SIMD && FILTER == GL_LINEAR ? linear_block(t, n, c, out, stride, ws, wt) : 0;         \
             for (; j < n; j++)                                                                             \
                 sample_level(t, 0, FILTER, c[j].s, c[j].t, out + (size_t)j * stride, unorm, ws, wt, SIMD); \
-        } else if (!(SIMD && lod_block(t, n, c, dx, dy, out, stride, unorm, ws, wt))) {                    \
+        } else if (!(SIMD && lod_blocks(t, n, c, dx, dy, out, stride, unorm, ws, wt))) {                    \
             for (int j = 0; j < n; j++)                                                                    \
                 sample_w(t, &c[j], &dx[j], &dy[j], out + (size_t)j * stride, unorm, ws, wt, SIMD);         \
         }                                                                                                  \
@@ -560,6 +561,19 @@ static int lod_block(const Texture *t, int n, const TexCoord *c, const TexCoord 
     return 0;
 }
 #endif
+
+/* lod_block over a chunk, SPAN_SAMPLE_MAX fragments at a time; 0 (nothing
+** done) where it does not apply, which is the same for every piece */
+static inline int lod_blocks(const Texture *t, int n, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
+                             FRAGV *out, size_t stride, const FRAGV *unorm, unsigned int ws, unsigned int wt)
+{
+    for (int j = 0; j < n; j += SPAN_SAMPLE_MAX) {
+        const int m = n - j < SPAN_SAMPLE_MAX ? n - j : SPAN_SAMPLE_MAX;
+        if (!lod_block(t, m, c + j, dx + j, dy + j, out + (size_t)j * stride, stride, unorm, ws, wt))
+            return 0;
+    }
+    return 1;
+}
 
 /* every [wrap: repeat, clamp, other][nearest, linear, with a level of
 ** detail] of one instruction set, with its names from SFX */

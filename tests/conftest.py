@@ -34,6 +34,10 @@ BUILDS = ("fixed", "float", "double")
 # that the path tests also compare the baseline instance (ctx.debug(16))
 HAS_SIMD = gles.Context(1, 1).simd != "baseline"
 
+# the most pixels of a row the span chain takes through its stages at once
+# (a chunk): tests draw rows wider than this so that they cross a chunk's end
+SPAN_CHUNK = int(gles.Context(1, 1)._lib.gles_span_chunk())
+
 
 def make_ctx(numeric: str, w: int = 64, h: int = 64, **kw: Any) -> gles.Context:
     """A context of the given build and size; keyword options go to gles.Context."""

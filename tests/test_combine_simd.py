@@ -19,7 +19,16 @@ from typing import Any
 
 import numpy as np
 import pytest
-from conftest import BUILDS, HAS_SIMD, colour_window, make_ctx, random_triangles, set_frustum, set_ortho
+from conftest import (
+    BUILDS,
+    HAS_SIMD,
+    SPAN_CHUNK,
+    colour_window,
+    make_ctx,
+    random_triangles,
+    set_frustum,
+    set_ortho,
+)
 
 from gles import constants as C
 
@@ -39,8 +48,8 @@ FORMATS = ((C.GL_RGBA, 4), (C.GL_RGBA, 4), (C.GL_RGB, 3), (C.GL_LUMINANCE_ALPHA,
 # vector one exists) and the per-fragment reference
 PATHS = (0, 1) + ((16,) if HAS_SIMD else ())
 
-# 67 columns: a row is a chunk of 64 and a last 3
-W, H = 67, 8
+# a row is a chunk and a last 3 columns
+W, H = SPAN_CHUNK + 3, 8
 
 
 def edge_bytes(rng: np.random.Generator, shape: tuple) -> np.ndarray:

@@ -23,7 +23,7 @@ from typing import Any
 
 import numpy as np
 import pytest
-from conftest import BUILDS, HAS_SIMD, colour_window, make_ctx, random_triangles, set_ortho
+from conftest import BUILDS, HAS_SIMD, SPAN_CHUNK, colour_window, make_ctx, random_triangles, set_ortho
 
 from gles import constants as C
 
@@ -41,8 +41,10 @@ BLENDS = ((C.GL_SRC_ALPHA, C.GL_ONE_MINUS_SRC_ALPHA), (C.GL_ONE, C.GL_ONE), (C.G
 # the paths: debug flags; the baseline instance only where a vector one exists
 PATHS = (1, 0) + ((16,) if HAS_SIMD else ())
 
-# 67 columns: a row is a chunk of 64 and a last 3, so groups of four end early
-W, H = 67, 8
+# a row is a chunk and a last 3 columns, so groups of four end early
+W, H = SPAN_CHUNK + 3, 8
+# the textures' width: the power of two past the window's
+TEX_W = 1 << (W - 1).bit_length()
 CLEAR = (10, 200, 90, 140)
 
 
@@ -69,8 +71,8 @@ def words(img: np.ndarray) -> np.ndarray:
 
 
 def texels(seed: int, alpha: np.ndarray | None = None) -> np.ndarray:
-    """A 128 x 8 RGBA texture of random bytes (alpha[y, x] when given)."""
-    img = np.random.default_rng(seed).integers(0, 256, size=(8, 128, 4)).astype(np.uint8)
+    """A TEX_W x 8 RGBA texture of random bytes (alpha[y, x] when given)."""
+    img = np.random.default_rng(seed).integers(0, 256, size=(8, TEX_W, 4)).astype(np.uint8)
     if alpha is not None:
         img[..., 3] = alpha
     return img
@@ -79,14 +81,14 @@ def texels(seed: int, alpha: np.ndarray | None = None) -> np.ndarray:
 def replace_quad(gl: Any, img: np.ndarray) -> None:
     """The window covered by texels img[y, x] at pixel (x, y), NEAREST, REPLACE."""
     gl.glBindTexture(C.GL_TEXTURE_2D, 1)
-    gl.glTexImage2D(C.GL_TEXTURE_2D, 0, C.GL_RGBA, 128, 8, 0, C.GL_RGBA, C.GL_UNSIGNED_BYTE,
+    gl.glTexImage2D(C.GL_TEXTURE_2D, 0, C.GL_RGBA, TEX_W, 8, 0, C.GL_RGBA, C.GL_UNSIGNED_BYTE,
                     np.ascontiguousarray(img))
     gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MIN_FILTER, C.GL_NEAREST)
     gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MAG_FILTER, C.GL_NEAREST)
     gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_REPLACE)
     gl.glEnable(C.GL_TEXTURE_2D)
     v = np.array([[0, 0], [W, 0], [0, H], [W, H]], dtype=np.float32)
-    t = np.array([[0, 0], [W / 128, 0], [0, 1], [W / 128, 1]], dtype=np.float32)
+    t = np.array([[0, 0], [W / TEX_W, 0], [0, 1], [W / TEX_W, 1]], dtype=np.float32)
     gl.glEnableClientState(C.GL_VERTEX_ARRAY)
     gl.glEnableClientState(C.GL_TEXTURE_COORD_ARRAY)
     gl.glVertexPointer(2, C.GL_FLOAT, 0, v)
@@ -108,7 +110,7 @@ def new_ctx(numeric: str, flags: int) -> Any:
 # the alpha test on known alphas
 
 # every alpha 0..255 in the window, and more
-ALPHAS = ((np.arange(128)[None, :] * 5 + np.arange(8)[:, None] * 67) % 256).astype(np.uint8)
+ALPHAS = ((np.arange(TEX_W)[None, :] * 5 + np.arange(8)[:, None] * 67) % 256).astype(np.uint8)
 REFS = (0.0, 1.0, 0.5, 1 / 255, 254 / 255, 128 / 255, 0.3, 0.9981)
 
 

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from conftest import BUILDS, HAS_SIMD, make_ctx
+from conftest import BUILDS, HAS_SIMD, SPAN_CHUNK, make_ctx
 
 from gles import constants as C
 
@@ -469,9 +469,9 @@ def test_affine_chunk_weights_step_as_the_scalar_code():
         eshift = int(rng.integers(0, 13)) if trial % 3 else 0
         area = int(rng.integers(1 << 8, 1 << 31)) << eshift | int(rng.integers(0, 1 << eshift))
         lin_recip = (1 << 61) // (area >> eshift)
-        n = int(rng.integers(1, 65))
+        n = int(rng.integers(1, SPAN_CHUNK + 1))
         # the row's edge values: e1, e2 start inside and step by ea (e0 takes the rest)
-        lim = area // 64
+        lim = area // SPAN_CHUNK
         ea = [0, int(rng.integers(-lim, lim + 1)), int(rng.integers(-lim, lim + 1))]
         ea[0] = -ea[1] - ea[2]
         e0 = [0, int(rng.integers(0, area // 2)), int(rng.integers(0, area // 2))]

@@ -11,8 +11,9 @@ test_span_texture.py check that for the state families of the fused spans;
 this file draws random states from the whole fragment state space:
 
 * the context: numeric build, colour format, depth bits 0/16/24, stencil
-  bits 0/8, a window of 24..40 x 24..32 or (one in three) 70..150 x 4..12,
-  wider than a chunk of the span chain; random clear colour, depth, stencil;
+  bits 0/8, a window of 24..40 x 24..32 or (one in three) 4..12 rows wider
+  than a chunk of the span chain (up to WIDE: over two chunks); random clear
+  colour, depth, stencil;
 * shade model, perspective or ortho projection, dither, scissor (random box),
   colour mask, depth test (func, mask, DepthRange), stencil test (func, ref,
   value mask, write mask, the three ops incl. INCR_WRAP/DECR_WRAP_OES), alpha
@@ -64,7 +65,7 @@ from typing import Any, Callable
 
 import numpy as np
 import pytest
-from conftest import BUILDS, HAS_SIMD, make_ctx, random_triangles, set_frustum, set_ortho
+from conftest import BUILDS, HAS_SIMD, SPAN_CHUNK, make_ctx, random_triangles, set_frustum, set_ortho
 from hypothesis import event, given, settings
 from hypothesis import strategies as st
 
@@ -263,9 +264,12 @@ for _u in range(UNITS):
     CHANGES[f"enable{_u}"] = st.booleans()
     CHANGES[f"subimage{_u}"] = SEED
 
-# most windows are small; one in three is wider than the chain's 64-pixel chunks
+# a row over two chunks of the chain and into a third
+WIDE = 2 * SPAN_CHUNK + 22
+
+# most windows are small; one in three is wider than a chunk of the chain, or two
 SIZES = st.sampled_from((False, False, True)).flatmap(
-    lambda wide: st.tuples(st.integers(70, 150), st.integers(4, 12)) if wide
+    lambda wide: st.tuples(st.integers(SPAN_CHUNK + 6, WIDE), st.integers(4, 12)) if wide
     else st.tuples(st.integers(24, 40), st.integers(24, 32)))
 
 
@@ -986,7 +990,7 @@ def case_offset_stencil_wrap(numeric: str, seed: int) -> dict:
 
 
 def case_wide_alpha_test(numeric: str, seed: int) -> dict:
-    """Rows of up to 150 pixels (several chunks of the chain) through a LUMINANCE_ALPHA
+    """Rows of WIDE pixels (three chunks of the chain) through a LUMINANCE_ALPHA
     texture, the alpha test (so depth and stencil come after it), depth LESS and stencil."""
     s = base_state()
     s["tex0"] = tex(seed, format=(C.GL_LUMINANCE_ALPHA, C.GL_UNSIGNED_BYTE), log_w=5, log_h=2,
@@ -996,11 +1000,11 @@ def case_wide_alpha_test(numeric: str, seed: int) -> dict:
     s["stencil"] = {"on": True, "func": C.GL_ALWAYS, "ref": 0, "value_mask": 0xFF, "write_mask": 0xFF,
                     "ops": (C.GL_KEEP, C.GL_KEEP, C.GL_INCR)}
     return make_scene(numeric, seed, s, changes={"stencil": {**s["stencil"], "on": False}},
-                      size=(150, 6), persp=False, triangles=10)
+                      size=(WIDE, 6), persp=False, triangles=10)
 
 
 def case_mipmap_after_stencil(numeric: str, seed: int) -> dict:
-    """LINEAR_MIPMAP_LINEAR over rows of up to 150 pixels where an early stencil test
+    """LINEAR_MIPMAP_LINEAR over rows of WIDE pixels where an early stencil test
     (EQUAL to what a first pass counted) leaves scattered fragments: the level of
     detail's neighbour weights, found again or taken from the row below, for slots
     that are not neighbours, across chunks and overlapping triangles."""
@@ -1016,13 +1020,13 @@ def case_mipmap_after_stencil(numeric: str, seed: int) -> dict:
         "tex0": tex(seed, log_w=6, log_h=5, mip="full", min=C.GL_LINEAR_MIPMAP_LINEAR, mag=C.GL_LINEAR),
         "tc0": {"kind": "array4", "seed": seed, "matrix": None},
     }
-    return make_scene(numeric, seed, s, changes=changes, size=(150, 40), triangles=24)
+    return make_scene(numeric, seed, s, changes=changes, size=(WIDE, 40), triangles=24)
 
 
 def case_modulate_alpha_test_blend(numeric: str, seed: int) -> dict:
     """A lone MODULATE unit (an RGBA texture, RGB on odd seeds), the alpha test and each
     RGBA8888 blend the fused MODULATE + write stage takes (none, SRC_ALPHA /
-    ONE_MINUS_SRC_ALPHA, ONE / ONE), smooth or flat (seeds 2, 3), over rows of up to 150
+    ONE_MINUS_SRC_ALPHA, ONE / ONE), smooth or flat (seeds 2, 3), over rows of WIDE
     pixels; then another blend without the alpha test, under an early depth test."""
     s = base_state()
     s["smooth"] = seed < 2
@@ -1036,7 +1040,7 @@ def case_modulate_alpha_test_blend(numeric: str, seed: int) -> dict:
     s["blend"] = blends[seed % 3]
     changes = {"alpha": {"on": False, "func": C.GL_ALWAYS, "ref": 0.0}, "blend": blends[(seed + 1) % 3],
                "depth": {"on": True, "func": C.GL_LESS, "mask": True, "range": None}}
-    return make_scene(numeric, seed, s, changes=changes, size=(150, 12), triangles=12)
+    return make_scene(numeric, seed, s, changes=changes, size=(WIDE, 12), triangles=12)
 
 
 def case_modulate_rgb565(numeric: str, seed: int) -> dict:
@@ -1054,7 +1058,7 @@ def case_modulate_rgb565(numeric: str, seed: int) -> dict:
     if seed == 2:
         s["alpha"] = {"on": True, "func": C.GL_GEQUAL, "ref": 0.5}
     changes = {"dither": not s["dither"], "blend": off if seed < 2 else alpha}
-    return make_scene(numeric, seed, s, changes=changes, color="rgb565", depth_bits=16, size=(150, 12),
+    return make_scene(numeric, seed, s, changes=changes, color="rgb565", depth_bits=16, size=(WIDE, 12),
                       triangles=12)
 
 

@@ -27,7 +27,7 @@ from typing import Any
 
 import numpy as np
 import pytest
-from conftest import BUILDS, HAS_SIMD, make_ctx, random_triangles, set_frustum, set_ortho
+from conftest import BUILDS, HAS_SIMD, SPAN_CHUNK, make_ctx, random_triangles, set_frustum, set_ortho
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -260,7 +260,7 @@ PASS = st.fixed_dictionaries({
 @st.composite
 def scenes(draw: Any) -> dict:
     wide = draw(st.booleans())
-    w = draw(st.integers(65, 150)) if wide else draw(st.integers(5, 40))
+    w = draw(st.integers(SPAN_CHUNK + 1, 2 * SPAN_CHUNK + 22)) if wide else draw(st.integers(5, 40))
     h = draw(st.integers(2, 6)) if wide else draw(st.integers(4, 20))
     passes = draw(st.lists(PASS, min_size=1, max_size=3))
     ref = passes[0]["stencil"]["ref"]

@@ -11,8 +11,8 @@ and the last n % 4 fragments of a chunk one by one.
   each kind; the expected words follow span_rgba8's arithmetic (num.h's
   frag_from_unorm, frag_mul, frag_to_unorm) in exact integers (fixed) or
   float32 / float64 operations in the same order. Alpha tests keep random
-  fragments, so groups of four are consecutive or not; rows are 67 wide (a
-  chunk of 64 and a last 3).
+  fragments, so groups of four are consecutive or not; a row is a chunk
+  and a last 3 columns.
 * A random test: triangles (smooth, perspective: interpolated colours can
   overshoot [0, 1] by a rounding step), DrawTex rectangles and point sprites
   under random kinds, logic ops, masks, texture environments (COMBINE with
@@ -28,7 +28,7 @@ from typing import Any
 import numpy as np
 import pytest
 from conftest import BUILDS, HAS_SIMD, make_ctx, random_triangles, set_frustum, set_ortho
-from test_frag_stages import H, W
+from test_frag_stages import TEX_W, H, W
 from test_frag_stages import replace_quad as quad
 
 from gles import constants as C
@@ -99,14 +99,14 @@ def test_write_model(numeric: str) -> None:
     rng = np.random.default_rng(5)
     for kind in range(3):
         for keep_frac in (1.0, 0.8, 0.5, 0.2):
-            dst = rng.integers(0, 256, size=(8, 128, 4)).astype(np.uint8)
-            src = rng.integers(0, 256, size=(8, 128, 4)).astype(np.uint8)
+            dst = rng.integers(0, 256, size=(8, TEX_W, 4)).astype(np.uint8)
+            src = rng.integers(0, 256, size=(8, TEX_W, 4)).astype(np.uint8)
             # edges: every byte value against extreme stored bytes and alphas
-            src[0, :, :] = np.arange(128)[:, None] * 2 + np.array([0, 1, 0, 1])
-            src[1, :, 3] = rng.choice((0, 1, 254, 255), size=128)
-            dst[2, :, :] = rng.choice((0, 255), size=(128, 4))
+            src[0, :, :] = (np.arange(TEX_W)[:, None] * 2 + np.array([0, 1, 0, 1])) % 256
+            src[1, :, 3] = rng.choice((0, 1, 254, 255), size=TEX_W)
+            dst[2, :, :] = rng.choice((0, 255), size=(TEX_W, 4))
             # alpha test GREATER on an alpha of its own: the second draw keeps random fragments
-            passes = rng.random((8, 128)) < keep_frac
+            passes = rng.random((8, TEX_W)) < keep_frac
             shown = src.copy()
             shown[..., 3] = np.where(passes, np.maximum(src[..., 3], 1), 0)
             expect = np.where(passes[:, :W, None], model(numeric, shown[:, :W], dst[:, :W], kind), dst[:, :W])
@@ -217,8 +217,8 @@ def render(numeric: str, flags: int, s: dict) -> tuple:
     gl.glClear(C.GL_COLOR_BUFFER_BIT | C.GL_STENCIL_BUFFER_BIT)
     # a random framebuffer (the blends and logic ops read it), and for a
     # stencil test a random stencil pattern from it
-    img = rng.integers(0, 256, size=(8, 128, 4)).astype(np.uint8)
-    img[..., 3] = rng.choice((0, 255), size=(8, 128))
+    img = rng.integers(0, 256, size=(8, TEX_W, 4)).astype(np.uint8)
+    img[..., 3] = rng.choice((0, 255), size=(8, TEX_W))
     gl.glEnable(C.GL_STENCIL_TEST)
     gl.glStencilFunc(C.GL_ALWAYS, 1, 0xFF)
     gl.glStencilOp(C.GL_KEEP, C.GL_KEEP, C.GL_REPLACE)
