@@ -113,6 +113,7 @@ struct SpanBuf {
     FRAGV cf[SPAN_CHUNK][4];        /* the primary colour, clamped (environments) */
     FRAGV ct[SPAN_CHUNK][GLES_MAX_TEXTURE_UNITS][4];   /* each unit's texel */
     TexCoord tc[SPAN_CHUNK], tx[SPAN_CHUNK], ty[SPAN_CHUNK];   /* one unit's, and its neighbours' */
+    int tc_unit, tc_done;           /* tc[0..tc_done) holds unit tc_unit's already (-1: none) */
 };
 
 /* 1 when the four slots from k are four neighbouring pixels (offsets

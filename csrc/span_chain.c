@@ -459,6 +459,8 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
                              ? !ctx->color_mask[0] && !ctx->color_mask[1] && !ctx->color_mask[2]
                              : !ctx->color_mask[0] && !ctx->color_mask[1] && !ctx->color_mask[2] && !ctx->color_mask[3];
     const int color_work = !no_color || ctx->alpha_test;
+    if (!rect)
+        ctx->chain_coords_unit = -1;
     int lod = 0;
     if (stencil) {
         FragTests ft;
@@ -524,6 +526,10 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
         return n;
     if (!rect) {
         s[n++] = cs->persp;
+        /* the first texture stage after it is the first unit's: its
+        ** coordinates come with the weights where it needs no neighbours */
+        if (first >= 0 && !texture_needs_lod(ctx->units[first].bound))
+            ctx->chain_coords_unit = first;
         if (lod)
             s[n++] = cs->neighbours;
         if (!direct && !modulate && !dot3)
@@ -633,6 +639,7 @@ static void run(GlesContext *ctx, const SpanStage *stages, int count, const TriS
         int len = n - start < SPAN_CHUNK ? n - start : SPAN_CHUNK;
         b.x0 = x0 + start;
         b.n = len;
+        b.tc_unit = -1;
         memcpy(b.k, span_offsets, SPAN_CHUNK);
         if (t)
             for (int i = 0; i < 3; i++)

@@ -47,9 +47,12 @@ static inline int STAGE(persp4)(const WgtSetup *ws, const __m256i e[3], WGT (*p)
 ** that carry. Sums are kept mod 2^64, so each is the scalar code's value
 ** wherever that fits int64 (as avx2_linear4v's products are). The
 ** kernels' range, 0 <= e_i and q_i < 2^31, holds at every slot when it
-** holds at the first and the last (e_i is linear in j). Returns the slots
+** holds at the first and the last (e_i is linear in j). Unit u's s and t
+** (u >= 0: an affine unit) are formed from the same lanes as stage_fetch
+** forms them from the stored weights (avx2_tex_coord_affine4 reads a
+** weight's int32, the lane's low dword), into b->tc. Returns the slots
 ** done: the whole groups of four, or 0 where it does not apply. */
-static int STAGE(persp_affine_run)(const TriSetup *t, SpanBuf *b)
+static int STAGE(persp_affine_run)(const TriSetup *t, SpanBuf *b, int u)
 {
     const WgtSetup *ws = &t->wgt;
     const int n = b->n, sh = ws->eshift;
@@ -78,12 +81,21 @@ static int STAGE(persp_affine_run)(const TriSetup *t, SpanBuf *b)
     const __m256i carry_at = _mm256_set1_epi64x((int64_t)unit - 1);    /* a carry where r_i + D > 2^eshift - 1 */
     WGT (*const p)[3] = b->p;
     const int n4 = n & ~3;
+    NUM sv[3] = { 0, 0, 0 }, tv[3] = { 0, 0, 0 };
+    if (u >= 0)
+        for (int i = 0; i < 3; i++) {
+            sv[i] = t->v[i]->tex[u][0];
+            tv[i] = t->v[i]->tex[u][1];
+        }
+    TexCoord *const tc = b->tc;
     for (int j = 0; j < n4; j += 4) {
         __m256i l[3];
         l[1] = _mm256_srli_epi64(sum[1], 31);
         l[2] = _mm256_srli_epi64(sum[2], 31);
         l[0] = _mm256_sub_epi64(_mm256_sub_epi64(one, l[1]), l[2]);
         avx2_store_wgt4(l, &p[j]);
+        if (u >= 0)
+            avx2_store_st4(avx2_texc_lerp3x4(sv, l), avx2_texc_lerp3x4(tv, l), &tc[j]);
         for (int i = 1; i < 3; i++) {
             rem[i] = _mm256_add_epi64(rem[i], dr[i]);
             const __m256i carry = _mm256_cmpgt_epi64(rem[i], carry_at);
@@ -100,7 +112,15 @@ static void STAGE(stage_persp)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
     (void)ctx;
     int j = 0;
 #if CHAIN_SIMD && NUM_IS_FIXED
-    j = STAGE(persp_affine_run)(t, b);
+    /* the chain's first unit's coordinates too, where it has no level of
+    ** detail and no q (stage_fetch then starts past them) */
+    const int u = ctx ? ctx->chain_coords_unit : -1;     /* (the debug entry has no context) */
+    const int coords = u >= 0 && !((t->tex_projective >> u) & 1);
+    j = STAGE(persp_affine_run)(t, b, coords ? u : -1);
+    if (coords && j) {
+        b->tc_unit = u;
+        b->tc_done = j;
+    }
 #endif
 #if CHAIN_SIMD
     /* the loop's constants in locals (stores to b->p could alias t and b) */
@@ -609,7 +629,10 @@ static void STAGE(stage_fetch)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, 
     const NUM sv[3] = { t->v[0]->tex[u][0], t->v[1]->tex[u][0], t->v[2]->tex[u][0] };
     const NUM tv[3] = { t->v[0]->tex[u][1], t->v[1]->tex[u][1], t->v[2]->tex[u][1] };
     const int four = proj ? 0 : b->n & ~3;
-    for (int j = 0; j < four; j += 4) {
+    /* stage_persp may have formed the first ones (not with neighbours) */
+    const int from = b->tc_unit == u && !lod ? b->tc_done : 0;
+    b->tc_unit = -1;
+    for (int j = from; j < four; j += 4) {
         avx2_tex_coord_affine4(sv, tv, &b->p[j], &b->tc[j]);
         if (lod) {
             avx2_tex_coord_affine4(sv, tv, &b->px[j], &b->tx[j]);

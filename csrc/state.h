@@ -379,6 +379,7 @@ struct GlesContext {
     const char *span_name;
     SpanStage chain[GLES_MAX_STAGES];   /* the chain's stages, when span is span_chain */
     int chain_len;
+    int chain_coords_unit;      /* the unit whose coordinates stage_persp forms, else -1 */
     uint8_t stencil_lut[4][256];        /* the chain's stencil tables (fragment_stencil_lut) */
     /* raster.c: the last flat colour packed for the framebuffer (format -1: none) */
     FRAGV flat_cache_color[4];
