@@ -719,22 +719,25 @@ AVX2_INLINE int avx2_persp_any4_covered(const WgtSetup *s, const __m256i e[3], _
     return 1;
 }
 
-/* wgt_persp_any of four fragments' edge values (lanes e[i]) as lanes out[i]
-** whose low 32 bits are the WGT values; 0 (nothing written) where an
-** operand leaves the kernel's ranges, for the scalar code */
-AVX2_INLINE int avx2_persp_any4(const WgtSetup *s, const __m256i e[3], __m256i out[3])
+/* 1 when every lane's edge values are a covered point's (0 <= e, e >>
+** eshift < 2^31): avx2_persp_any4_covered's range */
+AVX2_INLINE int avx2_edges4_covered(const WgtSetup *s, const __m256i e[3])
 {
     const __m128i esh = _mm_cvtsi32_si128(s->eshift);
-    {
-        /* e < 0 (its top bit) or e >> eshift >= 2^31 in some lane */
-        const __m256i high = _mm256_set1_epi64x(~(int64_t)0x7FFFFFFF);
-        __m256i far = _mm256_setzero_si256();
-        for (int i = 0; i < 3; i++)
-            far = _mm256_or_si256(far, _mm256_or_si256(_mm256_and_si256(e[i], _mm256_set1_epi64x(INT64_MIN)),
-                                                       _mm256_and_si256(_mm256_srl_epi64(e[i], esh), high)));
-        if (_mm256_testz_si256(far, far))
-            return avx2_persp_any4_covered(s, e, out);
-    }
+    /* e < 0 (its top bit) or e >> eshift >= 2^31 in some lane */
+    const __m256i high = _mm256_set1_epi64x(~(int64_t)0x7FFFFFFF);
+    __m256i far = _mm256_setzero_si256();
+    for (int i = 0; i < 3; i++)
+        far = _mm256_or_si256(far, _mm256_or_si256(_mm256_and_si256(e[i], _mm256_set1_epi64x(INT64_MIN)),
+                                                   _mm256_and_si256(_mm256_srl_epi64(e[i], esh), high)));
+    return _mm256_testz_si256(far, far);
+}
+
+/* avx2_persp_any4 of lanes that are not all covered points (out of line:
+** the stages inline the covered path alone) */
+static __attribute__((noinline)) int avx2_persp_any4_general(const WgtSetup *s, const __m256i e[3], __m256i out[3])
+{
+    const __m128i esh = _mm_cvtsi32_si128(s->eshift);
     __m256i n[3];
     for (int i = 0; i < 3; i++) {
         const __m256i ev = e[i];
@@ -775,6 +778,14 @@ AVX2_INLINE int avx2_persp_any4(const WgtSetup *s, const __m256i e[3], __m256i o
         return 0;
     avx2_any_weights(p1, p2, out);
     return 1;
+}
+
+/* wgt_persp_any of four fragments' edge values (lanes e[i]) as lanes out[i]
+** whose low 32 bits are the WGT values; 0 (nothing written) where an
+** operand leaves the kernel's ranges, for the scalar code */
+AVX2_INLINE int avx2_persp_any4(const WgtSetup *s, const __m256i e[3], __m256i out[3])
+{
+    return avx2_edges4_covered(s, e) ? avx2_persp_any4_covered(s, e, out) : avx2_persp_any4_general(s, e, out);
 }
 
 /* four fragments' weights l[0..2] (lanes whose low 32 bits are the WGT

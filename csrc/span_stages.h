@@ -155,7 +155,8 @@ static inline void STAGE(neighbour1)(const TriSetup *t, const SpanBuf *b, int j,
 #if CHAIN_SIMD
 /* one neighbour's weights of four fragments from its edge values; 0 where
 ** a lane leaves the kernels' ranges */
-static inline int STAGE(neighbour4)(const WgtSetup *ws, const __m256i e[3], WGT (*out)[3])
+static inline __attribute__((always_inline)) int STAGE(neighbour4)(const WgtSetup *ws, const __m256i e[3],
+                                                                    WGT (*out)[3])
 {
 #if NUM_IS_FIXED
     __m256i l[3];
