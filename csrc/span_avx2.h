@@ -456,28 +456,56 @@ AVX2_INLINE void avx2_linear_texels8(const int *tx32, int log2w, int log2h, cons
 ** fragments at a time in 32-bit lanes (texels gathered, channels apart),
 ** a last four padded to such a group (not forced inline, as
 ** avx2_bilerp_rgba8) */
+/* the trilinear mix t1 + frag_mul(f, t2 - t1) of texels in [0, 2^30], per
+** lane: t2 - t1 and f fit vpmuldq's operands, and adding 2^60 before the
+** shift makes frag_mul's arithmetic shift a logical one (then 2^30 comes
+** off) */
+AVX2_INLINE __m256i avx2_lod_mix_lanes(__m256i f, __m256i t1, __m256i t2)
+{
+    const __m256i p = _mm256_add_epi64(_mm256_mul_epi32(_mm256_sub_epi64(t2, t1), f),
+                                       _mm256_set1_epi64x(((int64_t)1 << 60) + ((int64_t)1 << 29)));
+    return _mm256_add_epi64(t1, _mm256_sub_epi64(_mm256_srli_epi64(p, 30), _mm256_set1_epi64x(FRAG_ONE)));
+}
+
+/* avx2_lod_mix_lanes of one fragment's four channels */
+static inline void avx2_lod_mix(FRAGV f, const FRAGV t1[4], const FRAGV t2[4], FRAGV out[4])
+{
+    avx2_store4(out, avx2_lod_mix_lanes(_mm256_set1_epi64x(f), avx2_load4(t1), avx2_load4(t2)));
+}
+
+/* the bilerp8 channels ch[0..3] of eight coordinates cj on a level (as
+** avx2_sample_linear samples each group) */
+AVX2_INLINE void avx2_linear_channels8(const TexImage *li, const TexCoord *cj, int repeat_s, int repeat_t,
+                                       __m256i ch[4])
+{
+    const int log2w = __builtin_ctz((unsigned)li->width), log2h = __builtin_ctz((unsigned)li->height);
+    const __m256i one16 = _mm256_set1_epi32(65536);
+    __m256i g[4], a, b;
+    avx2_linear_texels8((const int *)(const void *)li->texels, log2w, log2h, cj, repeat_s, repeat_t, g, &a, &b);
+    const __m256i ia = _mm256_sub_epi32(one16, a), ib = _mm256_sub_epi32(one16, b);
+    for (int k = 0; k < 4; k++)
+        ch[k] = avx2_bilerp8_channel(g, 8 * k, a, ia, b, ib);
+}
+
+/* c[j..j+7], or (a last four of n) c[j..j+3] padded with copies of the
+** last into pad */
+AVX2_INLINE const TexCoord *avx2_group8_coords(const TexCoord *c, int j, int n, TexCoord pad[8])
+{
+    if (j + 8 <= n)
+        return &c[j];
+    memcpy(pad, &c[j], 4 * sizeof *pad);
+    for (int k = 4; k < 8; k++)
+        pad[k] = pad[3];
+    return pad;
+}
+
 static inline void avx2_sample_linear(const TexImage *li, int n, const TexCoord *c, FRAGV *out, size_t stride,
                                     int repeat_s, int repeat_t)
 {
-    const int log2w = __builtin_ctz((unsigned)li->width), log2h = __builtin_ctz((unsigned)li->height);
-    const int *tx32 = (const int *)(const void *)li->texels;
-    const __m256i one16 = _mm256_set1_epi32(65536);
     for (int j = 0; j < n; j += 8) {
-        /* a last four as a group of eight, padded with copies of the last */
         TexCoord pad[8];
-        const TexCoord *cj = &c[j];
-        if (j + 8 > n) {
-            memcpy(pad, cj, 4 * sizeof *pad);
-            for (int k = 4; k < 8; k++)
-                pad[k] = pad[3];
-            cj = pad;
-        }
-        __m256i g[4], a, b;
-        avx2_linear_texels8(tx32, log2w, log2h, cj, repeat_s, repeat_t, g, &a, &b);
-        const __m256i ia = _mm256_sub_epi32(one16, a), ib = _mm256_sub_epi32(one16, b);
         __m256i ch[4];
-        for (int k = 0; k < 4; k++)
-            ch[k] = avx2_bilerp8_channel(g, 8 * k, a, ia, b, ib);
+        avx2_linear_channels8(li, avx2_group8_coords(c, j, n, pad), repeat_s, repeat_t, ch);
         for (int h = 0; h < (j + 8 > n ? 1 : 2); h++) {
             __m256i v[4];
             for (int k = 0; k < 4; k++)
@@ -487,15 +515,29 @@ static inline void avx2_sample_linear(const TexImage *li, int n, const TexCoord 
     }
 }
 
-/* the trilinear mix t1 + frag_mul(f, t2 - t1) of texels in [0, 2^30]:
-** t2 - t1 and f fit vpmuldq's operands, and adding 2^60 before the shift
-** makes frag_mul's arithmetic shift a logical one (then 2^30 comes off) */
-static inline void avx2_lod_mix(FRAGV f, const FRAGV t1[4], const FRAGV t2[4], FRAGV out[4])
+/* avx2_sample_linear of two levels l1, l2 at the same coordinates, mixed
+** by frac[0..n) as lod_mix mixes them (avx2_lod_mix_lanes, per channel),
+** with no store of either level's texels between */
+static void avx2_sample_linear_mix(const TexImage *l1, const TexImage *l2, int n, const TexCoord *c,
+                                   const FRAGV *frac, FRAGV *out, size_t stride, int repeat_s, int repeat_t)
 {
-    const __m256i a = avx2_load4(t1), d = _mm256_sub_epi64(avx2_load4(t2), a);
-    const __m256i p = _mm256_add_epi64(_mm256_mul_epi32(d, _mm256_set1_epi64x(f)),
-                                       _mm256_set1_epi64x(((int64_t)1 << 60) + ((int64_t)1 << 29)));
-    avx2_store4(out, _mm256_add_epi64(a, _mm256_sub_epi64(_mm256_srli_epi64(p, 30), _mm256_set1_epi64x(FRAG_ONE))));
+    for (int j = 0; j < n; j += 8) {
+        TexCoord pad[8];
+        const TexCoord *cj = avx2_group8_coords(c, j, n, pad);
+        __m256i ch1[4], ch2[4];
+        avx2_linear_channels8(l1, cj, repeat_s, repeat_t, ch1);
+        avx2_linear_channels8(l2, cj, repeat_s, repeat_t, ch2);
+        for (int h = 0; h < (j + 8 > n ? 1 : 2); h++) {
+            const __m256i f = avx2_load4(&frac[j + 4 * h]);
+            __m256i v[4];
+            for (int k = 0; k < 4; k++) {
+                const __m128i q1 = h ? _mm256_extracti128_si256(ch1[k], 1) : _mm256_castsi256_si128(ch1[k]);
+                const __m128i q2 = h ? _mm256_extracti128_si256(ch2[k], 1) : _mm256_castsi256_si128(ch2[k]);
+                v[k] = avx2_lod_mix_lanes(f, avx2_bilerp_to_frag(q1), avx2_bilerp_to_frag(q2));
+            }
+            avx2_store_transposed4(v[0], v[1], v[2], v[3], out + (size_t)(j + 4 * h) * stride, stride);
+        }
+    }
 }
 
 /* {====================================================================

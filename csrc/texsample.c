@@ -526,18 +526,28 @@ static int lod_block(const Texture *t, int n, const TexCoord *c, const TexCoord 
         const int level = kj & 0xFF, two = (kj & LOD_KEY_TWO) != 0;
         const unsigned int filter = kj & LOD_KEY_LINEAR ? GL_LINEAR : GL_NEAREST;
         const int m4 = filter == GL_LINEAR ? (e - j) & ~3 : 0;
+        /* fragments whose two levels the kernel samples and mixes at once */
+        int mixed = 0;
+#if NUM_IS_FIXED
+        if (two && m4) {
+            avx2_sample_linear_mix(&t->level[level], &t->level[level + 1], m4, c + j, frac + j,
+                                   out + (size_t)j * stride, stride, ws == GL_REPEAT, wt == GL_REPEAT);
+            mixed = m4;
+        }
+#endif
         for (int k = 0; k <= two; k++) {
             FRAGV *dst = k ? second[j] : out + (size_t)j * stride;
             const size_t dstride = k ? 4 : stride;
-            const int done = m4 ? sample_linear4(&t->level[level + k], m4, c + j, dst, dstride, ws == GL_REPEAT,
-                                                 wt == GL_REPEAT)
-                                : 0;
+            const int done = mixed ? mixed
+                           : m4    ? sample_linear4(&t->level[level + k], m4, c + j, dst, dstride, ws == GL_REPEAT,
+                                                    wt == GL_REPEAT)
+                                   : 0;
             for (int i = done; i < e - j; i++)
                 sample_level(t, level + k, filter, c[j + i].s, c[j + i].t, dst + (size_t)i * dstride, unorm, ws,
                              wt, 1);
         }
         if (two)
-            for (int i = j; i < e; i++)
+            for (int i = j + mixed; i < e; i++)
 #if NUM_IS_FIXED
                 avx2_lod_mix(frac[i], out + (size_t)i * stride, second[i], out + (size_t)i * stride);
 #else
