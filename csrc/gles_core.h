@@ -150,6 +150,10 @@ int gles_debug_modulate_write(int smooth, int rgb, int kind, unsigned int alpha_
 **      float into out[0] (exact: the result is a float's value or inf)
 **   5: num_normalize3 of the lanes' vectors (rows x, y, z at in[0],
 **      in[64], in[128]) into out[0], out[64], out[128]
+**   8: num_pow of the lanes in[0..n) with the exponent m[0] (16.16) into
+**      out[0..n)
+**   9: fx_exp2 of int64 lanes (0.30, |y| < 2^62; lane i's low and high
+**      words at in[2 i], in[2 i + 1], n <= 64) into out[0..n)
 ** m holds 10 values, out 256, in 256 (kernels 2 and 4: n m[1] floats). */
 int gles_debug_vertex_lanes(int simd, int kernel, int n, const int32_t *m, const int32_t *in, int32_t *out);
 

@@ -490,8 +490,8 @@ static inline NUM lane_dot(NUM n[3][LIGHT_BATCH], int i, const NUM u[3])
 /* a directional light's term for every lane: only n . VP, n . h and the
 ** specular power depend on the vertex. `cm`: COLOR_MATERIAL (a constant
 ** at each call, so each instance loses the test). `simd`: the AVX2 kernels
-** of vertex_avx2.h (every lane up to cnt, padding included), with pow,
-** which stays scalar, between them */
+** of vertex_avx2.h (every lane up to cnt, padding included), the
+** specular power among them (vx_specular_avx2) */
 static inline void directional_batch(const LightPrep *p, NUM shin, LightBatch *b, NUM n[3][LIGHT_BATCH],
                                      NUM acc[3][LIGHT_BATCH], int cnt, const int cm, int simd)
 {
@@ -512,12 +512,7 @@ static inline void directional_batch(const LightPrep *p, NUM shin, LightBatch *b
         NUM term[3][LIGHT_BATCH];
         vx_dir_terms_avx2(ndotvp, b->col, l->n_ambient, l->n_diffuse, p->amb, p->dif, cm, term, cnt);
         if (p->specular)
-            for (int i = 0; i < b->n; i++)
-                if (ndotvp[i] > NUM_ZERO && ndoth[i] > NUM_ZERO) {
-                    NUM sp = num_pow(ndoth[i], shin);
-                    for (int k = 0; k < 3; k++)
-                        term[k][i] = num_add(term[k][i], num_mul(sp, p->spec[k]));
-                }
+            vx_specular_avx2(ndotvp, ndoth, shin, p->spec, term, b->n);
         vx_scale_add_avx2(p->scale, term, acc, cnt);
         return;
     }

@@ -17,6 +17,7 @@
 #if SIMD_X86
 #include <immintrin.h>
 #include <string.h>
+#include "fx_avx2.h"
 
 #define AVX2_INLINE static inline __attribute__((always_inline))
 
@@ -557,38 +558,16 @@ typedef struct Avx2LodParams {
 /* the larger of two lanes (vpmaxsq is AVX-512) */
 AVX2_INLINE __m256i avx2_max64(__m256i a, __m256i b) { return _mm256_blendv_epi8(a, b, _mm256_cmpgt_epi64(b, a)); }
 
-/* lod_log2 of rho lanes in [0, 2^63). fx_log2's operands are all
-** non-negative and each product it forms has both factors below 2^32
-** (the mantissa's low 22 bits times fx_recip_tab <= 2^30; y < 2^22;
-** y2 < 2^14; ln1p <= y times 1/ln 2 < 2^31), so vpmuludq forms each
-** exactly and the logical shifts are its shifts. b - 1 is the exponent of
-** r as a double (r < 2^31, made exact by the 2^52 bias), y2 / 2 a shift,
-** and y3 / 3 = (y3 43691) >> 17, exact for y3 < 2^17 (here y3 < 2^6). */
+/* lod_log2 of rho lanes in [0, 2^63): fx_log2 of r = rho >> 16 clamped
+** to int32 (fxv_log2), r = 0 taken as 1 for the tables and replaced */
 AVX2_INLINE __m256i avx2_lod_log2(__m256i rho)
 {
     const __m256i zero = _mm256_setzero_si256(), imax = _mm256_set1_epi64x(INT32_MAX);
     __m256i r = _mm256_srli_epi64(rho, 16);
     r = _mm256_blendv_epi8(r, imax, _mm256_cmpgt_epi64(r, imax));
     const __m256i r0 = _mm256_cmpeq_epi64(r, zero);
-    r = _mm256_sub_epi64(r, r0);                  /* r = 0 as 1 (so in the tables), replaced below */
-    const __m256d two52 = _mm256_set1_pd(4503599627370496.0);
-    const __m256d rd = _mm256_sub_pd(_mm256_castsi256_pd(_mm256_or_si256(r, _mm256_castpd_si256(two52))), two52);
-    const __m256i e = _mm256_srli_epi64(_mm256_castpd_si256(rd), 52);          /* b - 1 + 1023 */
-    const __m256i m = _mm256_sllv_epi64(r, _mm256_sub_epi64(_mm256_set1_epi64x(1053), e)); /* r << (31 - b) */
-    const __m256i frac = _mm256_sub_epi64(m, _mm256_set1_epi64x((int64_t)1 << 30));
-    const __m256i i = _mm256_srli_epi64(frac, 22);
-    const __m256i rt = _mm256_i64gather_epi64((const long long *)(const void *)fx_recip_tab, i, 8);
-    const __m256i lt = _mm256_i64gather_epi64((const long long *)(const void *)fx_log2_tab, i, 8);
-    const __m256i y = _mm256_srli_epi64(
-        _mm256_mul_epu32(_mm256_and_si256(frac, _mm256_set1_epi64x((1 << 22) - 1)), rt), 30);
-    const __m256i y2 = _mm256_srli_epi64(_mm256_mul_epu32(y, y), 30);
-    const __m256i y3 = _mm256_srli_epi64(_mm256_mul_epu32(y2, y), 30);
-    const __m256i ln1p = _mm256_add_epi64(_mm256_sub_epi64(y, _mm256_srli_epi64(y2, 1)),
-                                          _mm256_srli_epi64(_mm256_mul_epu32(y3, _mm256_set1_epi64x(43691)), 17));
-    __m256i l = _mm256_sub_epi64(_mm256_slli_epi64(e, 30), _mm256_set1_epi64x((int64_t)(1023 + 16) << 30));
-    l = _mm256_add_epi64(_mm256_add_epi64(l, lt),
-                         _mm256_srli_epi64(_mm256_mul_epu32(ln1p, _mm256_set1_epi64x(1549082005)), 30));
-    l = _mm256_blendv_epi8(l, _mm256_set1_epi64x(-((int64_t)17 << 30)), r0);
+    const __m256i l = _mm256_blendv_epi8(fxv_log2(_mm256_sub_epi64(r, r0)), _mm256_set1_epi64x(-((int64_t)17 << 30)),
+                                         r0);
     return _mm256_blendv_epi8(l, _mm256_set1_epi64x(-((int64_t)1 << 40)), _mm256_cmpeq_epi64(rho, zero));
 }
 

@@ -40,6 +40,7 @@
 #pragma GCC push_options
 SIMD_TARGET_AVX2
 #define VX_INLINE static inline __attribute__((always_inline))
+#include "fx_avx2.h"
 #endif
 
 #if SIMD_X86
@@ -405,7 +406,8 @@ static void vx_normalize3_avx2(NUM *x, NUM *y, NUM *z, int cnt)
 ** a time in 64-bit lanes holding sign-extended NUMs. Every lane runs the
 ** whole body; a lane that the scalar code leaves with `continue` (the
 ** light at the vertex, the vertex outside the cone) or that is padding
-** keeps its acc. num_pow stays scalar, for the lanes that reach it.
+** keeps its acc. num_pow is fxv_pow (fx_avx2.h) for the lanes that reach
+** it.
 **  * num_sub, num_add, num_neg: 64-bit sums clamped to int32's range;
 **    num_mul: vx_mul; num_dot: the exact split sum of vx_dot_terms (three
 **    lane-by-lane products, rounded once by vx_acc_round); num_normalize3:
@@ -512,15 +514,58 @@ VX_INLINE __m256i vx_recip(__m256i den)
     return vx_sub(_mm256_xor_si256(q, sg), sg);       /* the sign, then the clamp of num_sat */
 }
 
-/* num_pow(x[j], s) for the lanes j set in `bits`, 0 in the others */
+/* num_pow(x[j], s) for the lanes j set in `bits`, 0 in the others:
+** fxv_pow for an exponent in its range [0, 128], else lane by lane */
 VX_INLINE __m256i vx_pow_lanes(__m256i x, NUM s, int bits)
 {
+    const __m256i sel = _mm256_cmpgt_epi64(_mm256_and_si256(_mm256_set1_epi64x(bits), _mm256_setr_epi64x(1, 2, 4, 8)),
+                                          _mm256_setzero_si256());
+    if (s >= 0 && s <= 128 * NUM_ONE)
+        return _mm256_and_si256(fxv_pow(x, s), sel);
     int64_t xv[4], r[4] = { 0, 0, 0, 0 };
     _mm256_storeu_si256((__m256i *)(void *)xv, x);
     for (int j = 0; j < 4; j++)
         if (bits >> j & 1)
             r[j] = num_pow((NUM)xv[j], s);
     return _mm256_setr_epi64x(r[0], r[1], r[2], r[3]);
+}
+
+/* num_pow(x[i], s) of lanes 0..n-1 (n a multiple of 4) */
+static void vx_pow_avx2(const NUM *x, NUM s, NUM *out, int n)
+{
+    for (int i = 0; i < n; i += 4)
+        vx_store4(out + i, vx_pow_lanes(vx_load4(x + i), s, 15));
+}
+
+/* fx_exp2(y[i]) of lanes 0..n-1 (n a multiple of 4, |y| < 2^62) */
+static void vx_exp2_avx2(const int64_t *y, NUM *out, int n)
+{
+    for (int i = 0; i < n; i += 4)
+        vx_store4(out + i, fxv_exp2(_mm256_loadu_si256((const __m256i *)(const void *)(y + i))));
+}
+
+/* the specular terms of a directional light's lanes 0..n-1 (n <= cnt):
+** where n . VP > 0 and n . h > 0, term[k] = num_add(term[k],
+** num_mul(num_pow(n . h, shin), spec[k])) (light.c's directional_batch) */
+static void vx_specular_avx2(const NUM *ndotvp, const NUM *ndoth, NUM shin, const NUM spec[3],
+                             NUM (*term)[NUM_BATCH], int n)
+{
+    const __m256i z0 = _mm256_setzero_si256(), ramp = _mm256_setr_epi64x(0, 1, 2, 3);
+    for (int i = 0; i < n; i += 4) {
+        const __m256i d = vx_load4(ndotvp + i), h = vx_load4(ndoth + i);
+        const __m256i live = _mm256_cmpgt_epi64(_mm256_set1_epi64x(n - i), ramp);
+        const __m256i use = _mm256_and_si256(live, _mm256_and_si256(_mm256_cmpgt_epi64(d, z0),
+                                                                     _mm256_cmpgt_epi64(h, z0)));
+        const int bits = _mm256_movemask_pd(_mm256_castsi256_pd(use));
+        if (!bits)
+            continue;
+        const __m256i sp = vx_pow_lanes(h, shin, bits);
+        for (int k = 0; k < 3; k++) {
+            const __m256i t = vx_load4(term[k] + i);
+            vx_store4(term[k] + i,
+                      _mm256_blendv_epi8(t, vx_add(t, vx_mul(sp, _mm256_set1_epi64x(spec[k]))), use));
+        }
+    }
 }
 
 /* acc[k] += the light's term for lanes 0..cnt-1 (lanes n..cnt-1 untouched);
@@ -1062,6 +1107,36 @@ static inline void vx_dot3_lanes(int simd, NUM m0, NUM m1, NUM m2, const NUM *x,
     (void)simd;
     num_dot3_lanes(m0, m1, m2, x, y, z, out, cnt);
 }
+
+/* num_pow(x[i], s) of lanes 0..n-1 (n a multiple of 4) */
+static inline void vx_pow_all(int simd, const NUM *x, NUM s, NUM *out, int n)
+{
+#if VERTEX_AVX2
+    if (simd) {
+        vx_pow_avx2(x, s, out, n);
+        return;
+    }
+#endif
+    (void)simd;
+    for (int i = 0; i < n; i++)
+        out[i] = num_pow(x[i], s);
+}
+
+#if NUM_IS_FIXED
+/* fx_exp2(y[i]) of lanes 0..n-1 (n a multiple of 4, |y| < 2^62) */
+static inline void vx_exp2_all(int simd, const int64_t *y, NUM *out, int n)
+{
+#if VERTEX_AVX2
+    if (simd) {
+        vx_exp2_avx2(y, out, n);
+        return;
+    }
+#endif
+    (void)simd;
+    for (int i = 0; i < n; i++)
+        out[i] = fx_exp2(y[i]);
+}
+#endif
 
 /* num_normalize3 of lanes 0..n-1 of rows x, y, z (the AVX2 kernel also
 ** normalises the padding lanes up to cnt) */

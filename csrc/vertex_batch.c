@@ -414,6 +414,21 @@ int gles_debug_vertex_lanes(int simd, int kernel, int n, const int32_t *m, const
         return light_debug_directional(simd, n, m, in, out);
     case 6:
         return light_debug_positional(simd, n, m, in, out);
+    case 8:
+        vx_pow_all(simd, in, m[0], out, n);
+        return 1;
+    case 9: {
+        /* int64 lanes, |y| < 2^62, as little-endian pairs of int32 */
+        int64_t y[VERTEX_BATCH];
+        for (int i = 0; i < n; i++) {
+            const uint64_t v = (uint64_t)(uint32_t)in[2 * i] | (uint64_t)(uint32_t)in[2 * i + 1] << 32;
+            y[i] = (int64_t)v;
+            if (y[i] >= ((int64_t)1 << 62) || y[i] <= -((int64_t)1 << 62))
+                return 0;
+        }
+        vx_exp2_all(simd, y, out, n);
+        return 1;
+    }
     case 5: {
         NUM rows[3][VERTEX_BATCH];
         for (int k = 0; k < 3; k++)
