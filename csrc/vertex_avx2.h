@@ -518,10 +518,11 @@ VX_INLINE __m256i vx_recip(__m256i den)
 ** fxv_pow for an exponent in its range [0, 128], else lane by lane */
 VX_INLINE __m256i vx_pow_lanes(__m256i x, NUM s, int bits)
 {
-    const __m256i sel = _mm256_cmpgt_epi64(_mm256_and_si256(_mm256_set1_epi64x(bits), _mm256_setr_epi64x(1, 2, 4, 8)),
-                                          _mm256_setzero_si256());
-    if (s >= 0 && s <= 128 * NUM_ONE)
+    if (s >= 0 && s <= 128 * NUM_ONE) {
+        const __m256i sel = _mm256_cmpgt_epi64(
+            _mm256_and_si256(_mm256_set1_epi64x(bits), _mm256_setr_epi64x(1, 2, 4, 8)), _mm256_setzero_si256());
         return _mm256_and_si256(fxv_pow(x, s), sel);
+    }
     int64_t xv[4], r[4] = { 0, 0, 0, 0 };
     _mm256_storeu_si256((__m256i *)(void *)xv, x);
     for (int j = 0; j < 4; j++)

@@ -46,14 +46,24 @@ SIZES = [(256, 256), (2048, 1), (1, 2048), (64, 4), (8, 32), (1, 1)]
 
 
 @cache
-def _tables() -> tuple[list[int], list[int]]:
+def fx_table(name: str) -> tuple[int, ...]:
+    """One of csrc/tables.h's tables (fx_log2_tab, fx_recip_tab, fx_exp2_tab)."""
     text = TABLES.read_text()
+    body = text[text.index(name):]
+    return tuple(int(v) for v in re.findall(r"-?\d+", body[body.index("{") + 1: body.index("}")]))
 
-    def table(name: str) -> list[int]:
-        body = text[text.index(name):]
-        return [int(v) for v in re.findall(r"-?\d+", body[body.index("{") + 1: body.index("}")])]
 
-    return table("fx_log2_tab"), table("fx_recip_tab")
+def fx_log2(x: int) -> int:
+    """num.h's fx_log2 (fixed build) of 1 <= x < 2^31 in exact integers, 0.30."""
+    log2_tab, recip_tab = fx_table("fx_log2_tab"), fx_table("fx_recip_tab")
+    b = x.bit_length()
+    frac = (x << (31 - b)) - (1 << 30)
+    i = frac >> 22
+    y = ((frac & ((1 << 22) - 1)) * recip_tab[i]) >> 30
+    y2 = (y * y) >> 30
+    y3 = (y2 * y) >> 30
+    ln1p = y - y2 // 2 + y3 // 3
+    return (b - 17) * (1 << 30) + log2_tab[i] + ((ln1p * 1549082005) >> 30)
 
 
 def lod_log2(rho: int) -> int:
@@ -63,16 +73,7 @@ def lod_log2(rho: int) -> int:
     r = rho >> 16
     if r == 0:
         return -(17 << 30)
-    x = min(r, (1 << 31) - 1)
-    log2_tab, recip_tab = _tables()
-    b = x.bit_length()
-    frac = (x << (31 - b)) - (1 << 30)
-    i = frac >> 22
-    y = ((frac & ((1 << 22) - 1)) * recip_tab[i]) >> 30
-    y2 = (y * y) >> 30
-    y3 = (y2 * y) >> 30
-    ln1p = y - y2 // 2 + y3 // 3
-    return (b - 17) * (1 << 30) + log2_tab[i] + ((ln1p * 1549082005) >> 30)
+    return fx_log2(min(r, (1 << 31) - 1))
 
 
 def _first_r_at(target: int) -> int:

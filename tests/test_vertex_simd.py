@@ -24,6 +24,7 @@ import math
 import numpy as np
 import pytest
 from conftest import BUILDS, HAS_SIMD, make_ctx
+from test_lod_simd import fx_log2, fx_table
 from test_vertex_batch import _render
 
 from gles import constants as C
@@ -34,6 +35,7 @@ EDGES = np.array([I32_MIN, I32_MIN + 1, I32_MAX, I32_MAX - 1, 0, 1, -1, 2**15, -
                  np.int64)
 BASELINE = 16  # GLES_DEBUG_BASELINE_SIMD
 REFERENCE = 8  # GLES_DEBUG_VERTEX_REFERENCE
+EXP2_TAB = np.array(fx_table("fx_exp2_tab"), np.int64)
 
 
 @pytest.fixture(scope="module")
@@ -339,45 +341,24 @@ def test_normalize_exact(core):
 # {================================================================
 # the specular and spot power
 
-def _fx_tables() -> dict[str, list[int]]:
-    """fx_log2_tab, fx_recip_tab and fx_exp2_tab, read from csrc/tables.h."""
-    import re
-    from pathlib import Path
-    text = (Path(__file__).resolve().parents[1] / "csrc" / "tables.h").read_text()
-    out = {}
-    for name in ("fx_log2_tab", "fx_recip_tab", "fx_exp2_tab"):
-        body = re.search(name + r"\[\d+\] = \{(.*?)\};", text, re.S).group(1)
-        out[name] = [int(v) for v in re.findall(r"-?\d+(?=LL)", body)]
-    return out
-
-
-def _pow_expected(tab: dict[str, np.ndarray], x: np.ndarray, s: int) -> np.ndarray:
+def _pow_expected(x: np.ndarray, s: int) -> np.ndarray:
     """num_pow (fixed) of int64 lanes x in integers: fx_log2, (l s) / 65536 truncated
-    toward zero, fx_exp2 (every product stays below 2^63 for s in [-2^23, 2^23])."""
+    toward zero, fx_exp2."""
     x = np.asarray(x, np.int64)
+    if s == 0:
+        return np.full_like(x, 65536)
     pos = x > 0
-    xc = np.where(pos, x, 1)
-    b = np.floor(np.log2(xc.astype(np.float64))).astype(np.int64) + 1        # bit length (exact below 2^31)
-    frac = (xc << (31 - b)) - 2**30
-    i = frac >> 22
-    y = ((frac & (2**22 - 1)) * tab["fx_recip_tab"][i]) >> 30
-    y2 = (y * y) >> 30
-    y3 = (y2 * y) >> 30
-    ln1p = y - y2 // 2 + y3 // 3
-    lg = (b - 17) * 2**30 + tab["fx_log2_tab"][i] + ((ln1p * 1549082005) >> 30)
-    p = np.abs(lg * s) // 65536 * np.where(lg * s >= 0, 1, -1)
-    v = np.where(pos, _exp2_expected(tab, p), 0)
-    v = np.where(x == 65536, 65536, v)
-    return np.full_like(x, 65536) if s == 0 else v
+    lg = [fx_log2(int(v)) if v > 0 else 0 for v in x.tolist()]
+    p = np.array([abs(v * s) // 65536 * (1 if v * s >= 0 else -1) for v in lg], np.int64)
+    v = np.where(pos, _exp2_expected(p), 0)
+    return np.where(x == 65536, 65536, v)
 
 
 def test_pow_exact(core):
     """num_pow over lanes (the specular and spot powers): AVX2 = scalar = the integer
     algorithm, for bases over the whole int32 range, near 1.0 and tiny, and exponents
     at 0, one ulp, 1.0, 128 and just past the kernel's range (the scalar fallback);
-    then 2^17 random cosines and exponents, where an exponent one ulp off in a single
-    lane changes some rounded results."""
-    tab = {k: np.array(v, np.int64) for k, v in _fx_tables().items()}
+    then 2^17 random cosines and exponents (the AVX2 kernel against the integers)."""
     rng = np.random.default_rng(1311)
     exps = [0, 1, 2, 65535, 65536, 65537, 128 * 65536 - 1, 128 * 65536, 129 * 65536, -1]
     exps += rng.integers(0, 128 * 65536 + 1, 40).tolist() + rng.integers(0, 4 * 65536, 20).tolist()
@@ -393,15 +374,15 @@ def test_pow_exact(core):
             x = rng.integers(1, 2**12, 64)            # tiny bases: deep negative logarithms
         x[:4] = [65536, 65535, 1, I32_MAX]
         got = _both(core, 8, 64, [s], x.astype(np.int32))
-        assert got[:64].tolist() == _pow_expected(tab, x, int(s)).tolist(), f"s {s}"
+        assert got[:64].tolist() == _pow_expected(x, int(s)).tolist(), f"s {s}"
     for _ in range(2048):
         s = int(rng.integers(1, 128 * 65536 + 1))
         x = rng.integers(1, 65536, 64)
         got = _lanes(core, 1, 8, 64, [s], x.astype(np.int32))
-        assert got[:64].tolist() == _pow_expected(tab, x, s).tolist(), f"s {s}"
+        assert got[:64].tolist() == _pow_expected(x, s).tolist(), f"s {s}"
 
 
-def _exp2_expected(tab: dict[str, np.ndarray], p: np.ndarray) -> np.ndarray:
+def _exp2_expected(p: np.ndarray) -> np.ndarray:
     """fx_exp2 of int64 lanes p (0.30) in integers, as 16.16 saturated."""
     p = np.asarray(p, np.int64)
     pc = np.clip(p, -20 * 2**30, 15 * 2**30)
@@ -412,7 +393,7 @@ def _exp2_expected(tab: dict[str, np.ndarray], p: np.ndarray) -> np.ndarray:
     x2 = (xx * xx) >> 30
     x3 = (x2 * xx) >> 30
     e = 2**30 + xx + x2 // 2 + x3 // 6
-    r = (tab["fx_exp2_tab"][j] * e + 2**29) >> 30
+    r = (EXP2_TAB[j] * e + 2**29) >> 30
     sh = 14 - ip
     rounded = (r + (np.int64(1) << np.maximum(sh - 1, 0))) >> np.maximum(sh, 0)
     v = np.minimum(np.where(sh <= 0, r, rounded), I32_MAX)
@@ -423,21 +404,20 @@ def test_exp2_exact(core):
     """fx_exp2 over lanes: AVX2 = scalar = the integer algorithm at the saturations,
     at every integer exponent and its neighbours, and at exponents where one step of
     2^-30 changes the rounded result (found by search: a few in a million are)."""
-    tab = {k: np.array(v, np.int64) for k, v in _fx_tables().items()}
     rng = np.random.default_rng(1312)
     edges = [15 * 2**30, 15 * 2**30 - 1, -20 * 2**30, -20 * 2**30 + 1, 2**61, -(2**61), 0, 1, -1]
     edges += [k * 2**30 + d for k in range(-20, 15) for d in (-1, 0, 1)]
     found = []
     while len(found) < 256:
         p = rng.integers(-20 * 2**30, 15 * 2**30, 1 << 20)
-        found += p[_exp2_expected(tab, p) != _exp2_expected(tab, p - 1)].tolist()
+        found += p[_exp2_expected(p) != _exp2_expected(p - 1)].tolist()
     cases = np.array(edges + found + [v - 1 for v in found], np.int64)
     for i in range(0, len(cases), 64):
         y = np.zeros(64, np.int64)
         chunk = cases[i:i + 64]
         y[:len(chunk)] = chunk
         got = _both(core, 9, 64, [], y.view(np.int32))
-        assert got[:64].tolist() == _exp2_expected(tab, y).tolist()
+        assert got[:64].tolist() == _exp2_expected(y).tolist()
 
 
 # {================================================================
