@@ -65,13 +65,15 @@ int gles_height(GlesContext *ctx);
 void gles_debug_set(GlesContext *ctx, int flags);
 /* name of the span function the last triangle used (for path tests) */
 const char *gles_last_span_name(GlesContext *ctx);
-/* the instruction set the span stages run with: "avx2" or "baseline" */
+/* the instruction set the span stages run with: "avx512" (the double
+** build's bilinear kernel; the rest as "avx2"), "avx2" or "baseline" */
 const char *gles_simd_name(GlesContext *ctx);
 /* for tests: the texels unit's span sampler gives for n fragments (at
 ** most 4096) at coords (s, t, then the right and upper neighbours' s, t,
 ** six doubles a fragment), as FRAGV values in double (0.30 integers in the
-** fixed build), through the vector instance (simd != 0, where the CPU has
-** one) or the baseline; 0 when the unit samples no complete texture */
+** fixed build), through the best instance the CPU has up to level simd
+** (0 baseline, 1 AVX2, 2 AVX-512); 0 when the unit samples no complete
+** texture */
 int gles_debug_sample(GlesContext *ctx, int unit, int simd, int n, const double *coords, double *out);
 /* for tests, fixed build (0 elsewhere): the perspective weights of n points
 ** with edge values e[3 j .. 3 j + 2] for a triangle of the given 1/w

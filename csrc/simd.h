@@ -3,7 +3,10 @@
 ** run time. The shipped core is compiled for the baseline of its target
 ** (SSE2 on x86-64); on x86-64 with GCC the span chain and the texture
 ** samplers also have an AVX2 instance (span_stages.h, texsample.c), taken
-** when the CPU and the OS support AVX2. Every instance computes the same
+** when the CPU and the OS support AVX2. The double build's bilinear kernel
+** has an AVX-512F instance besides (span_avx512.h), eight fragments to a
+** register where AVX2 holds four; the fixed and float builds' kernels fill
+** AVX2's lanes already and have none. Every instance computes the same
 ** bits, and the baseline stays the portable path that tests compare with.
 */
 #ifndef GLES_SIMD_H
@@ -15,23 +18,36 @@
 #define SIMD_X86 0
 #endif
 
-enum { SIMD_BASELINE = 0, SIMD_AVX2 = 1 };
+enum { SIMD_BASELINE = 0, SIMD_AVX2 = 1, SIMD_AVX512 = 2 };
+
+/* whether this build has an AVX-512 instance */
+#if SIMD_X86 && defined(GLES_NUM_DOUBLE)
+#define SIMD_AVX512_INSTANCE 1
+#else
+#define SIMD_AVX512_INSTANCE 0
+#endif
 
 /* the instructions of the vector instance, for the code that follows (in
 ** a push_options / pop_options pair) */
 #define SIMD_TARGET_AVX2 _Pragma("GCC target(\"avx2\")")
+#define SIMD_TARGET_AVX512 _Pragma("GCC target(\"avx2,avx512f\")")
 
 /* the best instance this CPU can run */
 static inline int simd_detect(void)
 {
 #if SIMD_X86
     __builtin_cpu_init();
-    return __builtin_cpu_supports("avx2") ? SIMD_AVX2 : SIMD_BASELINE;
+    if (!__builtin_cpu_supports("avx2"))
+        return SIMD_BASELINE;
+    return SIMD_AVX512_INSTANCE && __builtin_cpu_supports("avx512f") ? SIMD_AVX512 : SIMD_AVX2;
 #else
     return SIMD_BASELINE;
 #endif
 }
 
-static inline const char *simd_name(int level) { return level == SIMD_AVX2 ? "avx2" : "baseline"; }
+static inline const char *simd_name(int level)
+{
+    return level == SIMD_AVX512 ? "avx512" : (level == SIMD_AVX2 ? "avx2" : "baseline");
+}
 
 #endif

@@ -42,6 +42,7 @@
 #define GLES_DEBUG_DROP_LAST_PIXEL 4
 #define GLES_DEBUG_VERTEX_REFERENCE 8  /* per-vertex reference path instead of batches */
 #define GLES_DEBUG_BASELINE_SIMD 16    /* the baseline span stages even where AVX2 runs */
+#define GLES_DEBUG_AVX2_SIMD 32        /* at most the AVX2 instance where AVX-512 runs */
 
 /* {====================================================================
 ** matrices */
@@ -412,11 +413,13 @@ static inline void ctx_error(GlesContext *ctx, unsigned int err)
         ctx->error = err;
 }
 
-/* the instance of the span stages to run: the CPU's best, unless the
-** debug switch asks for the baseline */
+/* the instance of the span stages to run: the CPU's best, unless a
+** debug switch asks for the baseline or at most AVX2 */
 static inline int ctx_simd(const GlesContext *ctx)
 {
-    return (ctx->debug & GLES_DEBUG_BASELINE_SIMD) ? SIMD_BASELINE : ctx->simd;
+    if (ctx->debug & GLES_DEBUG_BASELINE_SIMD)
+        return SIMD_BASELINE;
+    return (ctx->debug & GLES_DEBUG_AVX2_SIMD) && ctx->simd > SIMD_AVX2 ? SIMD_AVX2 : ctx->simd;
 }
 
 int ctx_message(GlesContext *ctx, int status, const char *fmt, ...);

@@ -21,6 +21,12 @@
 SIMD_TARGET_AVX2
 #include "span_avx2.h"
 #pragma GCC pop_options
+#if SIMD_AVX512_INSTANCE
+#pragma GCC push_options
+SIMD_TARGET_AVX512
+#include "span_avx512.h"
+#pragma GCC pop_options
+#endif
 #endif
 
 /* wrap a texel index into [0, n); sizes are powers of two (§3.7.1) */
@@ -206,10 +212,10 @@ void texture_sample(const Texture *t, const TexCoord *c, const TexCoord *dx, con
     {                                                                                                      \
         const unsigned int ws = WS ? WS : t->wrap_s, wt = WT ? WT : t->wrap_t;                             \
         if (FILTER) {                                                                                      \
-            int j = SIMD && FILTER == GL_LINEAR ? linear_block(t, n, c, out, stride, ws, wt) : 0;         \
+            int j = SIMD && FILTER == GL_LINEAR ? linear_block(SIMD, t, n, c, out, stride, ws, wt) : 0;         \
             for (; j < n; j++)                                                                             \
                 sample_level(t, 0, FILTER, c[j].s, c[j].t, out + (size_t)j * stride, unorm, ws, wt, SIMD); \
-        } else if (!(SIMD && lod_blocks(t, n, c, dx, dy, out, stride, unorm, ws, wt))) {                    \
+        } else if (!(SIMD && lod_blocks(SIMD, t, n, c, dx, dy, out, stride, unorm, ws, wt))) {                    \
             for (int j = 0; j < n; j++)                                                                    \
                 sample_w(t, &c[j], &dx[j], &dy[j], out + (size_t)j * stride, unorm, ws, wt, SIMD);         \
         }                                                                                                  \
@@ -226,30 +232,39 @@ static inline int linear_kernel_fits(const Texture *t, unsigned int ws, unsigned
 }
 
 #if SIMD_X86
-/* the vector kernel of this build over the first n (a multiple of 4) of a
-** level's GL_LINEAR samples; returns how many it did from the start */
-static inline int sample_linear4(const TexImage *li, int n, const TexCoord *c, FRAGV *out, size_t stride, int rs,
-                                 int rt)
+/* the vector kernel of this build and instance (simd: SIMD_AVX2 or
+** SIMD_AVX512) over the first n (a multiple of 4) of a level's GL_LINEAR
+** samples; returns how many it did from the start */
+static inline int sample_linear4(int simd, const TexImage *li, int n, const TexCoord *c, FRAGV *out, size_t stride,
+                                 int rs, int rt)
 {
 #if NUM_IS_FIXED
+    (void)simd;
     avx2_sample_linear(li, n, c, out, stride, rs, rt);
     return n;
 #else
-    return avx2_sample_linear_real(li, n, c, out, stride, rs, rt);
+    int j = 0;
+#if SIMD_AVX512_INSTANCE
+    if (simd >= SIMD_AVX512)    /* eight at a time, the last four (or from a coordinate not finite) by AVX2 */
+        j = avx512_sample_linear_real(li, n, c, out, stride, rs, rt);
+#else
+    (void)simd;
+#endif
+    return j + avx2_sample_linear_real(li, n - j, c + j, out + (size_t)j * stride, stride, rs, rt);
 #endif
 }
 #endif
 
 /* the vector kernel's share of n level-0 GL_LINEAR samples, from the start
 ** (a multiple of four; 0 where it does not apply: see linear_kernel_fits) */
-static inline int linear_block(const Texture *t, int n, const TexCoord *c, FRAGV *out, size_t stride, unsigned int ws,
-                               unsigned int wt)
+static inline int linear_block(int simd, const Texture *t, int n, const TexCoord *c, FRAGV *out, size_t stride,
+                               unsigned int ws, unsigned int wt)
 {
 #if SIMD_X86
     if (linear_kernel_fits(t, ws, wt))
-        return sample_linear4(&t->level[0], n & ~3, c, out, stride, ws == GL_REPEAT, wt == GL_REPEAT);
+        return sample_linear4(simd, &t->level[0], n & ~3, c, out, stride, ws == GL_REPEAT, wt == GL_REPEAT);
 #endif
-    (void)t, (void)n, (void)c, (void)out, (void)stride, (void)ws, (void)wt;
+    (void)simd, (void)t, (void)n, (void)c, (void)out, (void)stride, (void)ws, (void)wt;
     return 0;
 }
 
@@ -451,7 +466,7 @@ AVX2_INLINE void lod_choose4_d(const LodParamsR *p, const TexCoord *c, const Tex
 ** level's run, and the next level's into `second`), other samples one by
 ** one, and the run's mix of two levels. The same arithmetic per sample as
 ** sample_w; returns 0 where it does not apply (as linear_block) */
-static int lod_block(const Texture *t, int n, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
+static int lod_block(int simd, const Texture *t, int n, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
                      FRAGV *out, size_t stride, const FRAGV *unorm, unsigned int ws, unsigned int wt)
 {
     if (!linear_kernel_fits(t, ws, wt) || n > SPAN_SAMPLE_MAX)
@@ -539,7 +554,7 @@ static int lod_block(const Texture *t, int n, const TexCoord *c, const TexCoord 
             FRAGV *dst = k ? second[j] : out + (size_t)j * stride;
             const size_t dstride = k ? 4 : stride;
             const int done = mixed ? mixed
-                           : m4    ? sample_linear4(&t->level[level + k], m4, c + j, dst, dstride, ws == GL_REPEAT,
+                           : m4    ? sample_linear4(simd, &t->level[level + k], m4, c + j, dst, dstride, ws == GL_REPEAT,
                                                     wt == GL_REPEAT)
                                    : 0;
             for (int i = done; i < e - j; i++)
@@ -564,22 +579,23 @@ static int lod_block(const Texture *t, int n, const TexCoord *c, const TexCoord 
 }
 #pragma GCC pop_options
 #else
-static int lod_block(const Texture *t, int n, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
+static int lod_block(int simd, const Texture *t, int n, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
                      FRAGV *out, size_t stride, const FRAGV *unorm, unsigned int ws, unsigned int wt)
 {
-    (void)t, (void)n, (void)c, (void)dx, (void)dy, (void)out, (void)stride, (void)unorm, (void)ws, (void)wt;
+    (void)simd, (void)t, (void)n, (void)c, (void)dx, (void)dy, (void)out, (void)stride, (void)unorm, (void)ws,
+        (void)wt;
     return 0;
 }
 #endif
 
 /* lod_block over a chunk, SPAN_SAMPLE_MAX fragments at a time; 0 (nothing
 ** done) where it does not apply, which is the same for every piece */
-static inline int lod_blocks(const Texture *t, int n, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
+static inline int lod_blocks(int simd, const Texture *t, int n, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
                              FRAGV *out, size_t stride, const FRAGV *unorm, unsigned int ws, unsigned int wt)
 {
     for (int j = 0; j < n; j += SPAN_SAMPLE_MAX) {
         const int m = n - j < SPAN_SAMPLE_MAX ? n - j : SPAN_SAMPLE_MAX;
-        if (!lod_block(t, m, c + j, dx + j, dy + j, out + (size_t)j * stride, stride, unorm, ws, wt))
+        if (!lod_block(simd, t, m, c + j, dx + j, dy + j, out + (size_t)j * stride, stride, unorm, ws, wt))
             return 0;
     }
     return 1;
@@ -607,7 +623,10 @@ SPAN_SAMPLERS(_base, 0)
 #if SIMD_X86
 #pragma GCC push_options
 SIMD_TARGET_AVX2
-SPAN_SAMPLERS(_avx2, 1)
+SPAN_SAMPLERS(_avx2, SIMD_AVX2)
+#if SIMD_AVX512_INSTANCE
+SPAN_SAMPLERS(_avx512, SIMD_AVX512)   /* the same code, with the AVX-512 kernel (span_avx512.h) */
+#endif
 #pragma GCC pop_options
 #endif
 #undef SPAN_SAMPLERS
@@ -619,6 +638,10 @@ TexSpanSampler texture_span_sampler(const Texture *t, int simd)
 #if SIMD_X86
     if (simd >= SIMD_AVX2)
         table = span_samplers_avx2;
+#if SIMD_AVX512_INSTANCE
+    if (simd >= SIMD_AVX512)
+        table = span_samplers_avx512;
+#endif
 #else
     (void)simd;
 #endif
@@ -666,7 +689,7 @@ int gles_debug_sample(GlesContext *ctx, int unit, int simd, int n, const double 
         dy[j] = (TexCoord){ texc_from_double(p[4]), texc_from_double(p[5]) };
     }
     /* in chunks, as the span stages call it */
-    const TexSpanSampler sampler = texture_span_sampler(t, simd ? ctx->simd : SIMD_BASELINE);
+    const TexSpanSampler sampler = texture_span_sampler(t, simd < ctx->simd ? simd : ctx->simd);
     for (int j = 0; j < n; j += SPAN_SAMPLE_MAX) {
         const int m = n - j < SPAN_SAMPLE_MAX ? n - j : SPAN_SAMPLE_MAX;
         sampler(t, m, c + j, dx + j, dy + j, texels[j], 4, ctx->texel_unorm8);

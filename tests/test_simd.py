@@ -18,7 +18,7 @@ from conftest import BUILDS, HAS_SIMD, SPAN_CHUNK, make_ctx
 
 from gles import constants as C
 
-PATHS = {"reference": 1, "chain": 0, "baseline": 16}
+PATHS = {"reference": 1, "chain": 0, "baseline": 16, "avx2": 32}
 
 
 def test_simd_name_and_switch():
@@ -28,6 +28,24 @@ def test_simd_name_and_switch():
     assert ctx.simd == "baseline"
     ctx.debug(0)
     assert ctx.simd == ("avx2" if HAS_SIMD else "baseline")
+
+
+def test_avx512_instance_name_and_switch():
+    """Only the double build has an AVX-512 instance; debug(32) caps it at
+    AVX2, debug(16) at the baseline."""
+    for numeric in ("fixed", "float"):
+        assert make_ctx(numeric, 4, 4).simd in ("avx2", "baseline")
+    ctx = make_ctx("double", 4, 4)
+    assert ctx.simd in (("avx512", "avx2") if HAS_SIMD else ("baseline",))
+    best = ctx.simd
+    ctx.debug(32)
+    assert ctx.simd == ("avx2" if HAS_SIMD else "baseline")
+    ctx.debug(16)
+    assert ctx.simd == "baseline"
+    ctx.debug(48)
+    assert ctx.simd == "baseline"
+    ctx.debug(0)
+    assert ctx.simd == best
 
 
 def _texture(gl, img: np.ndarray, filt: int) -> None:
@@ -134,13 +152,14 @@ def _bilinear_scene(numeric: str, flags: int, env: int) -> np.ndarray:
 @pytest.mark.parametrize("env", [C.GL_MODULATE, C.GL_REPLACE], ids=["modulate", "replace"])
 def test_bilinear_over_extreme_texels(numeric, env):
     ref = _bilinear_scene(numeric, PATHS["reference"], env)
-    for name in ("chain", "baseline"):
+    for name in ("chain", "avx2", "baseline"):
         np.testing.assert_array_equal(_bilinear_scene(numeric, PATHS[name], env), ref, err_msg=name)
 
 
 def _sampled(ctx, coords: np.ndarray, simd: int) -> np.ndarray:
     """What texture unit 0's span sampler gives at coords (n x 6: s, t and
-    the right and upper neighbours' s, t) through one instance."""
+    the right and upper neighbours' s, t) through the best instance up to
+    level simd (0 baseline, 1 AVX2, 2 AVX-512)."""
     n = len(coords)
     src = np.ascontiguousarray(coords, dtype=np.float64)
     out = np.zeros((n, 4), np.float64)
@@ -151,10 +170,11 @@ def _sampled(ctx, coords: np.ndarray, simd: int) -> np.ndarray:
     return out
 
 
-def _sampler_case(numeric: str, seed: int, filt: int, wrap: tuple[int, int]) -> tuple[np.ndarray, np.ndarray]:
+def _sampler_case(numeric: str, seed: int, filt: int, wrap: tuple[int, int]) -> list[np.ndarray]:
     """One random power-of-two texture and 4095 random coordinates
     (tails that are not a multiple of the kernels' widths included),
-    sampled by the vector and the baseline instance."""
+    sampled by the baseline, the AVX2 and the AVX-512 instance (each the
+    best the CPU has up to that level)."""
     rng = np.random.default_rng(seed)
     w, h = (1 << int(rng.integers(0, 9)) for _ in range(2))
     ctx = make_ctx(numeric, 4, 4)
@@ -174,12 +194,14 @@ def _sampler_case(numeric: str, seed: int, filt: int, wrap: tuple[int, int]) -> 
     n = 4095                 # eight at a time, then four, then one by one
     st = rng.uniform(-3, 3, (n, 2)) * rng.choice([1, 1, 1, 40], (n, 1))
     st[: n // 8] = np.round(st[: n // 8] * 64) / 64          # texel centres and edges
-    # coordinates that are not finite, alone in a group of four and together
-    st[[1001, 2050, 2051, 3000]] = [[np.nan, 0.5], [0.25, np.inf], [-np.inf, np.nan], [1e30, -1e30]]
+    # coordinates that are not finite, alone in a group of four and together,
+    # and (1500: the sampler takes 64 at a time) in the second four of eight
+    st[[1001, 1500, 2050, 2051, 3000]] = [[np.nan, 0.5], [0.5, np.nan], [0.25, np.inf], [-np.inf, np.nan],
+                                          [1e30, -1e30]]
     # neighbours a random footprint away: magnified to minified by 2^8
     step = np.exp2(rng.uniform(-8, 8, (n, 1))) / max(w, h) * rng.choice([-1, 1], (n, 2))
     coords = np.concatenate([st, st + step * [1, 0], st + step * [0, 1]], axis=1)
-    return _sampled(ctx, coords, 1), _sampled(ctx, coords, 0)
+    return [_sampled(ctx, coords, level) for level in (0, 1, 2)]
 
 
 @pytest.mark.parametrize("numeric", BUILDS)
@@ -195,8 +217,9 @@ def test_span_samplers_match_baseline(numeric, filt, wrap):
     sub-texel positions (every 16-bit weight, so the kernels' rounding
     ties occur) and footprints."""
     for seed in range(3):
-        vec, base = _sampler_case(numeric, seed, filt, wrap)
-        np.testing.assert_array_equal(vec, base, err_msg=f"seed {seed}")
+        base, avx2, avx512 = _sampler_case(numeric, seed, filt, wrap)
+        np.testing.assert_array_equal(avx2, base, err_msg=f"seed {seed}, AVX2")
+        np.testing.assert_array_equal(avx512, base, err_msg=f"seed {seed}, AVX-512")
 
 
 def _persp_any(simd: int, eshift: int, mant, qshift, affine: int, e: np.ndarray) -> np.ndarray:
