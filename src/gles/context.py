@@ -290,7 +290,9 @@ class Context:
         fill rule's tie-break, 4 drops the last pixel of every span (both
         break the rasterizer on purpose, to show tests catch it); 8 runs the
         vertex stage per vertex, the reference of the batched path; 16 runs
-        the baseline (portable) span stages where the CPU has AVX2."""
+        the baseline (portable) span stages where the CPU has AVX2; 32 runs
+        at most the AVX2 instance where the double build would take its
+        AVX-512 one."""
         with self._lock:
             self._lib.gles_debug_set(self._ptr, int(flags))
 
@@ -301,8 +303,10 @@ class Context:
 
     @property
     def simd(self) -> str:
-        """The instruction set the fragment stages run with here: "avx2"
-        (x86-64 CPUs that have it) or "baseline". Both give the same bits."""
+        """The instruction set the fragment stages run with here: "avx512"
+        (the double build, on x86-64 CPUs with AVX-512F: its bilinear
+        kernel, the rest as "avx2"), "avx2" (x86-64 CPUs that have it) or
+        "baseline". All give the same bits."""
         with self._lock:
             return self._ffi.string(self._lib.gles_simd_name(self._ptr)).decode()
 
