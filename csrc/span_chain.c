@@ -621,6 +621,100 @@ static const uint8_t span_offsets[SPAN_CHUNK] = { SPAN_OFFSETS64(0), SPAN_OFFSET
 #undef SPAN_OFFSETS4
 _Static_assert(SPAN_CHUNK == 128, "span_offsets lists SPAN_CHUNK offsets");
 
+/* {====================================================================
+** the stencil cull: where a fragment that fails the stencil test leaves
+** the stencil value as it is (its op is KEEP, or nothing of the value is
+** writable), failing is all it does (§4.1.5: no depth, no colour), so a
+** chunk's fragments before its first pass and after its last can go
+** before any stage runs, and a chunk with no pass goes whole */
+
+typedef struct StencilCull {
+    const uint8_t *row;         /* the stencil values of the run's row; NULL: no cull */
+    unsigned int func;
+    uint8_t ref, mask;          /* the reference and the value mask, both 8 bits */
+} StencilCull;
+
+static inline void stencil_cull_setup(const GlesContext *ctx, int y, StencilCull *sc)
+{
+    sc->row = NULL;
+    if (!ctx->stencil_test || !ctx->stencil || ctx->stencil_func == GL_ALWAYS
+        || !(ctx->stencil_fail == GL_KEEP || (ctx->stencil_writemask & 0xFFu) == 0))
+        return;
+    FragTests ft;
+    fragment_tests_setup(ctx, &ft);
+    sc->row = ctx->stencil + (size_t)y * (size_t)ctx->width;
+    sc->func = ft.stencil_func;
+    sc->mask = (uint8_t)ft.value_mask;
+    sc->ref = (uint8_t)(ft.ref & ft.value_mask);
+}
+
+/* whether the stencil test passes at pixel x */
+static inline int stencil_cull_pass(const StencilCull *sc, int x)
+{
+    return fragment_compare(sc->func, sc->ref, sc->row[x] & sc->mask);
+}
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+/* the test's outcome at the sixteen pixels from x, as bits */
+static inline unsigned stencil_cull_pass16(const StencilCull *sc, int x)
+{
+    const __m128i v = _mm_and_si128(_mm_loadu_si128((const __m128i *)(const void *)(sc->row + x)),
+                                    _mm_set1_epi8((char)sc->mask));
+    const __m128i r = _mm_set1_epi8((char)sc->ref);
+    /* le(a, b): a <= b as unsigned bytes */
+#define STENCIL_LE(a, b) _mm_cmpeq_epi8(_mm_min_epu8(a, b), a)
+    unsigned m;
+    switch (sc->func) {
+    case GL_EQUAL: m = (unsigned)_mm_movemask_epi8(_mm_cmpeq_epi8(r, v)); break;
+    case GL_NOTEQUAL: m = ~(unsigned)_mm_movemask_epi8(_mm_cmpeq_epi8(r, v)); break;
+    case GL_LESS: m = ~(unsigned)_mm_movemask_epi8(STENCIL_LE(v, r)); break;     /* r < v */
+    case GL_LEQUAL: m = (unsigned)_mm_movemask_epi8(STENCIL_LE(r, v)); break;
+    case GL_GREATER: m = ~(unsigned)_mm_movemask_epi8(STENCIL_LE(r, v)); break;  /* r > v */
+    case GL_GEQUAL: m = (unsigned)_mm_movemask_epi8(STENCIL_LE(v, r)); break;
+    default: m = 0; break;      /* GL_NEVER */
+    }
+#undef STENCIL_LE
+    return m & 0xFFFFu;
+}
+#endif
+
+/* the first pixel of [x, x + n) where the test passes, or x + n; sixteen
+** at a time where SSE2 runs */
+static int stencil_cull_first(const StencilCull *sc, int x, int n)
+{
+    int i = 0;
+#if defined(__SSE2__)
+    for (; i + 16 <= n; i += 16) {
+        const unsigned m = stencil_cull_pass16(sc, x + i);
+        if (m)
+            return x + i + __builtin_ctz(m);
+    }
+#endif
+    for (; i < n && !stencil_cull_pass(sc, x + i); i++)
+        ;
+    return x + i;
+}
+
+/* the last pixel of [x, x + n) where the test passes, one passing (first)
+** known */
+static int stencil_cull_last(const StencilCull *sc, int first, int x, int n)
+{
+    int e = x + n;
+#if defined(__SSE2__)
+    for (; e - 16 >= first; e -= 16) {
+        const unsigned m = stencil_cull_pass16(sc, e - 16);
+        if (m)
+            return e - 16 + 31 - __builtin_clz(m);
+    }
+#endif
+    while (!stencil_cull_pass(sc, e - 1))
+        e--;
+    return e - 1;
+}
+
+/* }==================================================================== */
+
 /* one row's run [x0, x0 + n) through `count` stages, a chunk at a time */
 static void run(GlesContext *ctx, const SpanStage *stages, int count, const TriSetup *t, const RectSetup *r, int y,
                 int x0, int n)
@@ -628,6 +722,8 @@ static void run(GlesContext *ctx, const SpanStage *stages, int count, const TriS
     SpanBuf b;
     b.y = y;
     b.rect = r;
+    StencilCull cull;
+    stencil_cull_setup(ctx, y, &cull);
     if (n > 0) {
         const size_t at = (size_t)y * (size_t)ctx->width + (size_t)x0;
         const size_t bpp = ctx->color_format == GLES_COLOR_RGB565 ? 2 : 4;
@@ -638,6 +734,13 @@ static void run(GlesContext *ctx, const SpanStage *stages, int count, const TriS
     for (int start = 0; start < n; start += SPAN_CHUNK) {
         int len = n - start < SPAN_CHUNK ? n - start : SPAN_CHUNK;
         b.x0 = x0 + start;
+        if (cull.row) {
+            const int first = stencil_cull_first(&cull, b.x0, len);
+            if (first == b.x0 + len)
+                continue;
+            len = stencil_cull_last(&cull, first, first, b.x0 + len - first) - first + 1;
+            b.x0 = first;
+        }
         b.n = len;
         b.tc_unit = -1;
         memcpy(b.k, span_offsets, SPAN_CHUNK);

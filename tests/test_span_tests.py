@@ -12,8 +12,10 @@ the baseline instance.
   function, op in each of the three places (fail, depth fail, pass), write
   and value mask and reference (also outside 0..255, which clamps), and each
   depth function with and without depth writes, before and after an alpha
-  test. The expected buffers come from the spec's formulas (§4.1.5, §4.1.6)
-  in numpy; every path must produce them.
+  test; and each function where failing keeps the stored value, the case in
+  which the chain drops the failing ends of a chunk before any stage. The
+  expected buffers come from the spec's formulas (§4.1.5, §4.1.6) in
+  numpy; every path must produce them.
 * A random test: random stored stencil and depth values (rich in 0, 255 and
   the reference and its neighbours), random triangles and points drawn
   twice (the second pass meets equal depths), random stencil, depth, alpha
@@ -204,6 +206,15 @@ def model_cases() -> list[dict]:
             cases.append({**base, "func": FUNCS[int(rng.integers(0, 8))], "ref": ref,
                           "value_mask": value_mask, "write_mask": 0x1FF if value_mask == 0x1FF else 0xFF,
                           "ops": (C.GL_INVERT, C.GL_DECR, C.GL_REPLACE)})
+    # a failing fragment that keeps the stored value (fail KEEP, or nothing
+    # writable): the chain drops each chunk's failing ends before any stage
+    # (run's stencil cull), sixteen values at a time where it can
+    for func in FUNCS:
+        for value_mask, ref in ((0xFF, 37), (0x3C, 200), (0x00, 5), (0xF0, 300), (0xFF, 0), (0xFF, 255)):
+            cases.append({**base, "func": func, "ref": ref, "value_mask": value_mask,
+                          "ops": (C.GL_KEEP, C.GL_INCR, C.GL_INVERT)})
+        cases.append({**base, "func": func, "ref": 100, "write_mask": 0x00,
+                      "ops": (C.GL_INVERT, C.GL_KEEP, C.GL_KEEP)})
     for alpha in (C.GL_ALWAYS, C.GL_NEVER):
         cases.append({**base, "alpha": alpha, "func": C.GL_NOTEQUAL, "ops": (C.GL_INCR, C.GL_DECR_WRAP_OES,
                                                                              C.GL_INCR_WRAP_OES)})
