@@ -696,13 +696,13 @@ static int stencil_cull_first(const StencilCull *sc, int x, int n)
     return x + i;
 }
 
-/* the last pixel of [x, x + n) where the test passes, one passing (first)
-** known */
-static int stencil_cull_last(const StencilCull *sc, int first, int x, int n)
+/* the last pixel of [x, x + n) where the test passes, given that it
+** passes at x */
+static int stencil_cull_last(const StencilCull *sc, int x, int n)
 {
     int e = x + n;
 #if defined(__SSE2__)
-    for (; e - 16 >= first; e -= 16) {
+    for (; e - 16 >= x; e -= 16) {
         const unsigned m = stencil_cull_pass16(sc, e - 16);
         if (m)
             return e - 16 + 31 - __builtin_clz(m);
@@ -738,7 +738,7 @@ static void run(GlesContext *ctx, const SpanStage *stages, int count, const TriS
             const int first = stencil_cull_first(&cull, b.x0, len);
             if (first == b.x0 + len)
                 continue;
-            len = stencil_cull_last(&cull, first, first, b.x0 + len - first) - first + 1;
+            len = stencil_cull_last(&cull, first, b.x0 + len - first) - first + 1;
             b.x0 = first;
         }
         b.n = len;
