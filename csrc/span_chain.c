@@ -636,7 +636,7 @@ typedef struct StencilCull {
 
 static inline void stencil_cull_setup(const GlesContext *ctx, int y, StencilCull *sc)
 {
-    sc->row = NULL;
+    *sc = (StencilCull){ NULL, GL_ALWAYS, 0, 0 };
     if (!ctx->stencil_test || !ctx->stencil || ctx->stencil_func == GL_ALWAYS
         || !(ctx->stencil_fail == GL_KEEP || (ctx->stencil_writemask & 0xFFu) == 0))
         return;
