@@ -1403,12 +1403,18 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
     const int smooth = !replace && !b->rect && t->smooth;
     const FRAGV *flat = b->rect ? b->rect->in.c : t->flat;
     const FRAGV *const a[3] = { smooth ? t->col[0] : flat, smooth ? t->col[1] : flat, smooth ? t->col[2] : flat };
-    F8ModWrite m;
-    f8_modwrite_setup(&m, a, smooth, tex->format != GL_RGBA, replace, span_blend_kind(ctx),
-                      ctx->alpha_test ? ctx->alpha_func : GL_ALWAYS, fragment_alpha_ref8(ctx));
+    /* the setup once per primitive (many rows of a small one are short) */
+    _Static_assert(sizeof(F8ModWrite) <= GLES_FUSED_SETUP_BYTES, "the context has room for the setup");
+    F8ModWrite *const m = ctx->fused_setup;
+    const uint64_t serial = b->rect ? b->rect->serial : t->serial;
+    if (ctx->fused_serial != serial) {
+        f8_modwrite_setup(m, a, smooth, tex->format != GL_RGBA, replace, span_blend_kind(ctx),
+                          ctx->alpha_test ? ctx->alpha_func : GL_ALWAYS, fragment_alpha_ref8(ctx));
+        if (src == 1)
+            modwrite_texture_setup(&m->tx, tex, ctx->samplers[u], ctx->texel_unorm8);
+        ctx->fused_serial = serial, ctx->fused_in_range = 1;
+    }
     const size_t stride = GLES_MAX_TEXTURE_UNITS * 4;
-    if (src == 1)
-        modwrite_texture_setup(&m.tx, tex, ctx->samplers[u], ctx->texel_unorm8);
     _Static_assert(SPAN_CHUNK % 8 == 0, "a padded group stays within the chunk");
     const int n = avx2_modwrite_pad(F8_N, b->n, b->k, b->p, smooth, src == 1 ? b->tc : NULL,
                                     src == 0 ? b->ct[0][u] : NULL, stride);
@@ -1416,9 +1422,9 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
     if (rgb565) {
         FRAGV t_row[4];
         dither_row(b, ctx->dither, t_row);
-        f8_modwrite_dither(&m, ctx->dither, t_row);
+        f8_modwrite_dither(m, ctx->dither, t_row);
     }
-    f8_modwrite_dispatch(&m, src, rgb565, n, b->n, b->k, (const WGT (*)[3])b->p, b->ct[0][u], stride, b->tc, b->x0,
+    f8_modwrite_dispatch(m, src, rgb565, n, b->n, b->k, (const WGT (*)[3])b->p, b->ct[0][u], stride, b->tc, b->x0,
                          chunk_color(ctx, b));
 }
 
