@@ -110,6 +110,77 @@ static __attribute__((noinline)) int avx512_sample_linear_real(const TexImage *l
     }
     return j;
 }
+
+/* avx2_rgba8x4 (the double build's) of eight fragments c[0..7] over the
+** stored words d: the fragments' channels to channel lanes, then per lane
+** the same IEEE operations (v4_clamp01, the blend of kind 1 or 2,
+** v4_to_unorm8) and the packing */
+AVX512_INLINE __m256i v8_rgba8x8(const double (*c)[4], __m256i d, int kind)
+{
+    /* fragments 0 | 4, 1 | 5, 2 | 6, 3 | 7; then each half's 4x4 transpose */
+    __m512d q[4];
+    for (int i = 0; i < 4; i++)
+        q[i] = _mm512_insertf64x4(_mm512_castpd256_pd512(_mm256_loadu_pd(c[i])), _mm256_loadu_pd(c[i + 4]), 1);
+    const __m512d rb01 = _mm512_unpacklo_pd(q[0], q[1]), ga01 = _mm512_unpackhi_pd(q[0], q[1]);
+    const __m512d rb23 = _mm512_unpacklo_pd(q[2], q[3]), ga23 = _mm512_unpackhi_pd(q[2], q[3]);
+    const __m512i lo = _mm512_setr_epi64(0, 1, 8, 9, 4, 5, 12, 13), hi = _mm512_setr_epi64(2, 3, 10, 11, 6, 7, 14, 15);
+    __m512d v[4] = { _mm512_permutex2var_pd(rb01, lo, rb23), _mm512_permutex2var_pd(ga01, lo, ga23),
+                     _mm512_permutex2var_pd(rb01, hi, rb23), _mm512_permutex2var_pd(ga01, hi, ga23) };
+    const __m512d zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1);
+    if (kind)
+        for (int i = 0; i < 4; i++)
+            v[i] = _mm512_min_pd(one, _mm512_max_pd(zero, v[i]));
+    const __m512d va = v[3], ia = _mm512_sub_pd(one, va);
+    __m256i w = _mm256_setzero_si256();
+    for (int i = 0; i < 4; i++) {
+        __m512d x = v[i];
+        if (kind) {
+            const __m512d dv = v8_byte_unorm8(d, 8 * i);
+            x = kind == 2 ? _mm512_add_pd(x, dv) : _mm512_add_pd(_mm512_mul_pd(x, va), _mm512_mul_pd(dv, ia));
+        }
+        /* v4_to_unorm8: 0 unless x > 0, 255 from 1 up, else x 255 + 1/2 truncated */
+        __m512d u = _mm512_add_pd(_mm512_mul_pd(x, _mm512_set1_pd(255)), _mm512_set1_pd(0.5));
+        u = _mm512_mask_blend_pd(_mm512_cmp_pd_mask(x, one, _CMP_GE_OQ), u, _mm512_set1_pd(255));
+        u = _mm512_mask_blend_pd(_mm512_cmp_pd_mask(x, zero, _CMP_GT_OQ), zero, u);
+        w = _mm256_or_si256(w, _mm256_slli_epi32(_mm512_cvttpd_epi32(u), 8 * i));
+    }
+    return w;
+}
+
+/* write_rgba8 (blend kind 0, 1 or 2, a constant where inlined) of the
+** chunk's fragments eight at a time, up to the last whole eight, at the
+** ascending offsets k of dst; returns the count done */
+AVX512_INLINE int v8_write_rgba8_kind(uint32_t *dst, const uint8_t *k, int n, const double (*c)[4], int kind)
+{
+    int j = 0;
+    for (; j + 8 <= n; j += 8) {
+        const int run = k[j + 7] == k[j] + 7;
+        __m256i d = _mm256_setzero_si256();
+        if (kind && run)
+            d = _mm256_loadu_si256((const __m256i *)(const void *)&dst[k[j]]);
+        else if (kind)
+            d = _mm256_i32gather_epi32((const int *)(const void *)dst,
+                                       _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)&k[j])), 4);
+        const __m256i w = v8_rgba8x8(&c[j], d, kind);
+        if (run) {
+            _mm256_storeu_si256((__m256i *)(void *)&dst[k[j]], w);
+        } else {
+            uint32_t words[8];
+            _mm256_storeu_si256((__m256i *)(void *)words, w);
+            for (int i = 0; i < 8; i++)
+                dst[k[j + i]] = words[i];
+        }
+    }
+    return j;
+}
+
+static __attribute__((noinline)) int avx512_write_rgba8(uint32_t *dst, const uint8_t *k, int n, const double (*c)[4],
+                                                        int kind)
+{
+    return kind == 0 ? v8_write_rgba8_kind(dst, k, n, c, 0)
+         : kind == 1 ? v8_write_rgba8_kind(dst, k, n, c, 1)
+                     : v8_write_rgba8_kind(dst, k, n, c, 2);
+}
 #endif
 
 #endif

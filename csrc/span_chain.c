@@ -97,6 +97,12 @@ typedef struct ChainStages {
 #pragma GCC push_options
 SIMD_TARGET_AVX2
 #include "span_avx2.h"
+#if SIMD_AVX512_INSTANCE
+#pragma GCC push_options
+SIMD_TARGET_AVX512
+#include "span_avx512.h"   /* the double build's writer (as texsample.c includes it: once) */
+#pragma GCC pop_options
+#endif
 #if NUM_IS_FIXED || defined(GLES_NUM_FLOAT)
 /* a test's fragments for a fused stage's kernel: copies with room for the
 ** padded group, as the stage pads its chunk */

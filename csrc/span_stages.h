@@ -1042,8 +1042,13 @@ static inline void STAGE(write_rgba8)(GlesContext *ctx, SpanBuf *b, int kind)
     int j = 0;
 #if CHAIN_SIMD
     /* four fragments at a time (avx2_rgba8x4); a group with a channel
-    ** outside the fixed build's kernel's range by v4_rgba8 */
+    ** outside the fixed build's kernel's range by v4_rgba8; first eight at
+    ** a time where the double build runs AVX-512 */
     const int n = b->n;
+#if SIMD_AVX512_INSTANCE
+    if (ctx_simd(ctx) >= SIMD_AVX512)
+        j = avx512_write_rgba8(dst, b->k, n, b->c, kind);
+#endif
     for (; j + 4 <= n; j += 4) {
         uint32_t k4;
         memcpy(&k4, &b->k[j], sizeof k4);

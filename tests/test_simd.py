@@ -99,7 +99,7 @@ def _blend_scene(numeric: str, flags: int, blend: tuple[int, int] | None, color:
 def test_writers_over_every_byte(numeric, blend):
     """Every destination byte under every source alpha: the same bits on every path."""
     ref = _blend_scene(numeric, PATHS["reference"], blend)
-    for name in ("chain", "baseline"):
+    for name in ("chain", "avx2", "baseline"):
         np.testing.assert_array_equal(_blend_scene(numeric, PATHS[name], blend), ref, err_msg=name)
 
 
@@ -110,7 +110,7 @@ def test_writers_over_every_byte(numeric, blend):
 def test_565_writers_over_every_value(numeric, blend, dither):
     """The same on RGB565: every 5- and 6-bit destination value, dithered or not."""
     ref = _blend_scene(numeric, PATHS["reference"], blend, "rgb565", dither)
-    for name in ("chain", "baseline"):
+    for name in ("chain", "avx2", "baseline"):
         np.testing.assert_array_equal(_blend_scene(numeric, PATHS[name], blend, "rgb565", dither), ref,
                                       err_msg=name)
 
