@@ -4,8 +4,8 @@
 ** (SSE2 on x86-64); on x86-64 with GCC the span chain and the texture
 ** samplers also have an AVX2 instance (span_stages.h, texsample.c), taken
 ** when the CPU and the OS support AVX2. The double build's bilinear kernel
-** has an AVX-512F instance besides (span_avx512.h), eight fragments to a
-** register where AVX2 holds four; the fixed and float builds' kernels fill
+** and RGBA8888 writers have AVX-512F instances besides (span_avx512.h),
+** eight fragments to a register where AVX2 holds four; the fixed and float builds' kernels fill
 ** AVX2's lanes already and have none. Every instance computes the same
 ** bits, and the baseline stays the portable path that tests compare with.
 */

@@ -1,11 +1,12 @@
 /*
-** span_avx512.h -- the double build's bilinear kernel in eight lanes
-** (AVX-512F), taken where the CPU has it (simd.h); AVX2 holds four of its
-** fragments to a register. The fixed build's kernel holds eight in AVX2's
-** 32-bit lanes already; the float build's, four in 128-bit lanes, has no
-** such instance (its scenes run within 1.3x of the fixed build's).
-** Included once, from texsample.c, after span_avx2.h, inside a target
-** pragma for these instructions; every function is static.
+** span_avx512.h -- the double build's bilinear kernel and RGBA8888
+** writers in eight lanes of AVX-512F, taken where the CPU has it (simd.h);
+** AVX2 holds four of its fragments to a register. The fixed build's
+** kernels hold eight in AVX2's 32-bit lanes already; the float build's
+** have no such instance (its scenes run within 1.3x of the fixed build's).
+** Included after span_avx2.h (by texsample.c and span_chain.c: the guard
+** keeps one copy), inside a target pragma for these instructions; every
+** function is static.
 */
 #ifndef GLES_SPAN_AVX512_H
 #define GLES_SPAN_AVX512_H
