@@ -160,6 +160,47 @@ SIMD_TARGET_AVX2
 static const char *const fused_names[2][3][2] = { FUSED_SPANS(FUSED_NAME) };
 #undef FUSED_NAME
 
+/* {====================================================================
+** stencil-only passes: every colour channel masked, no alpha test and no
+** depth test (§4.1.6: then no depth write either), the stencil test on.
+** A fragment changes nothing but its stencil value, which is a function of
+** the stored value alone (the test against the reference, then the fail
+** or the pass op, through the write mask): one table, built when the state
+** is chosen, and the span is a byte loop. Masks drawn into the stencil
+** buffer (reflections, shadow volumes' caps, decals) are such passes. */
+
+static int stencil_only_state(const GlesContext *ctx)
+{
+    const int no_color = ctx->color_format == GLES_COLOR_RGB565
+                             ? !ctx->color_mask[0] && !ctx->color_mask[1] && !ctx->color_mask[2]
+                             : !ctx->color_mask[0] && !ctx->color_mask[1] && !ctx->color_mask[2] && !ctx->color_mask[3];
+    return no_color && !ctx->alpha_test && !(ctx->depth_test && ctx->depth) && ctx->stencil_test && ctx->stencil
+        && !(ctx->debug & GLES_DEBUG_GENERIC_SPANS);
+}
+
+/* the value each stored value becomes (fragment_tests' op with no depth
+** test: the fail op where the test fails, else the pass op) */
+static void stencil_only_table(const GlesContext *ctx, uint8_t table[256])
+{
+    FragTests ft;
+    fragment_tests_setup(ctx, &ft);
+    uint8_t lut[4][256];
+    fragment_stencil_lut(&ft, lut);
+    for (int s = 0; s < 256; s++)
+        table[s] = lut[0][s] ? lut[3][s] : lut[1][s];
+}
+
+static void span_stencil_only(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
+{
+    (void)t;
+    uint8_t *row = ctx->stencil + (size_t)y * (size_t)ctx->width + (size_t)x0;
+    const uint8_t *table = ctx->stencil_only;
+    for (int k = 0; k < n; k++)
+        row[k] = table[row[k]];
+}
+
+/* }==================================================================== */
+
 /* the state conditions every specialised span shares, texturing aside */
 static int simple_but_texture(const GlesContext *ctx, int bk)
 {
@@ -188,6 +229,10 @@ void span_choose(GlesContext *ctx)
     } else if (ctx->debug & GLES_DEBUG_GENERIC_SPANS) {
         ctx->span = ctx->span_const = span_generic;
         ctx->span_name = "generic";
+    } else if (stencil_only_state(ctx)) {
+        stencil_only_table(ctx, ctx->stencil_only);
+        ctx->span = ctx->span_const = span_stencil_only;
+        ctx->span_name = "stencil_only";
     } else {
         span_chain_compose(ctx);
         ctx->span = ctx->span_const = span_chain;

@@ -382,6 +382,7 @@ struct GlesContext {
     int chain_len;
     int chain_coords_unit;      /* the unit whose coordinates stage_persp forms, else -1 */
     uint8_t stencil_lut[4][256];        /* the chain's stencil tables (fragment_stencil_lut) */
+    uint8_t stencil_only[256];          /* span_stencil_only's: each stored value's new value */
     /* raster.c: the last flat colour packed for the framebuffer (format -1: none) */
     FRAGV flat_cache_color[4];
     int flat_cache_format;

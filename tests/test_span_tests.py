@@ -152,10 +152,12 @@ def model_case(numeric: str, flags: int, case: dict) -> dict:
     if case["alpha"] is not None:
         gl.glEnable(C.GL_ALPHA_TEST)
         gl.glAlphaFunc(case["alpha"], 0.5)
+    if not case.get("color_mask", True):
+        gl.glColorMask(0, 0, 0, 0)
     quad(gl, 0.0)
     assert gl.glGetError() == C.GL_NO_ERROR
     return {"before": before, "stencil": ctx.stencil_buffer(), "depth": ctx.depth_buffer(),
-            "color": ctx.color_buffer()}
+            "color": ctx.color_buffer(), "span": ctx.last_span_path()}
 
 
 def model_expect(case: dict, before: dict) -> dict:
@@ -176,6 +178,8 @@ def model_expect(case: dict, before: dict) -> dict:
     passed = spass & zpass
     depth = np.where(passed & bool(case["depth_mask"]) & (case["depth_func"] is not None), z, d)
     color = np.where(passed[..., None], np.array(QUAD_RGBA, np.uint8), before["color"])
+    if not case.get("color_mask", True):
+        color = before["color"]
     return {"stencil": stencil.astype(np.uint8), "depth": depth.astype(np.uint32), "color": color}
 
 
@@ -215,6 +219,13 @@ def model_cases() -> list[dict]:
                           "ops": (C.GL_KEEP, C.GL_INCR, C.GL_INVERT)})
         cases.append({**base, "func": func, "ref": 100, "write_mask": 0x00,
                       "ops": (C.GL_INVERT, C.GL_KEEP, C.GL_KEEP)})
+    # a stencil-only pass (every colour channel masked, no depth or alpha
+    # test): the span is a table lookup per stored value (span_stencil_only)
+    for func in FUNCS:
+        ops = tuple(OPS[i] for i in rng.integers(0, len(OPS), size=3))
+        cases.append({**base, "func": func, "depth_func": None, "ops": ops, "color_mask": False,
+                      "ref": int(rng.choice([0, 77, 255, 300])), "value_mask": int(rng.choice([0xFF, 0x3C])),
+                      "write_mask": int(rng.choice([0xFF, 0x0F, 0x00]))})
     for alpha in (C.GL_ALWAYS, C.GL_NEVER):
         cases.append({**base, "alpha": alpha, "func": C.GL_NOTEQUAL, "ops": (C.GL_INCR, C.GL_DECR_WRAP_OES,
                                                                              C.GL_INCR_WRAP_OES)})
@@ -234,6 +245,8 @@ def test_tests_match_the_spec(numeric):
         for flags, name in PATHS:
             out = model_case(numeric, flags, case)
             want = model_expect(case, out["before"])
+            if not case.get("color_mask", True):
+                assert out["span"] == ("generic" if flags & 1 else "stencil_only"), name
             for buf in ("stencil", "depth", "color"):
                 np.testing.assert_array_equal(out[buf], want[buf], err_msg=f"case {i} {case}, {name}, {buf}")
 
