@@ -201,10 +201,12 @@ static inline void f8_modwrite_dither(F8ModWrite *m, int dither, const FRAGV t_r
 /* channel i (byte i) of RGBA8888 words as frag_from_unorm(., 255) */
 AVX2_INLINE f8_num f8_byte(f8_i32 g, int i) { return f8_from_unorm((g >> (8 * i)) & 0xFF, 255); }
 
-/* the texels of coordinates tc[0..F8_N-1] as sample_level's GL_LINEAR
-** gives them (frag_bilerp_rgba8's operations); 0 when a coordinate is not
+/* the texels of coordinates tc[0..F8_N-1] on a w x h level (powers of
+** two; REPEAT or CLAMP_TO_EDGE per axis) as sample_level's GL_LINEAR gives
+** them (frag_bilerp_rgba8's operations); 0 when a coordinate is not
 ** finite */
-AVX2_INLINE int f8_sample(const F8ModWrite *m, const TexCoord *tc, f8_num T[4])
+AVX2_INLINE int f8_sample_level(const uint32_t *texels, int w, int h, int repeat_s, int repeat_t, const TexCoord *tc,
+                                f8_num T[4])
 {
     f8_num s, t;
     f8_coords(tc, &s, &t);
@@ -213,11 +215,11 @@ AVX2_INLINE int f8_sample(const F8ModWrite *m, const TexCoord *tc, f8_num T[4])
         return 0;
     f8_i32 x0, x1, y0, y1;
     f8_num a, b;
-    f8_linear_axis(s, m->tx.w, m->tx.repeat_s, &x0, &x1, &a);
-    f8_linear_axis(t, m->tx.h, m->tx.repeat_t, &y0, &y1, &b);
-    const f8_i32 r0 = y0 * m->tx.w, r1 = y1 * m->tx.w;
-    const f8_i32 g00 = f8_gather_words(m->tx.texels, r0 + x0), g10 = f8_gather_words(m->tx.texels, r0 + x1);
-    const f8_i32 g01 = f8_gather_words(m->tx.texels, r1 + x0), g11 = f8_gather_words(m->tx.texels, r1 + x1);
+    f8_linear_axis(s, w, repeat_s, &x0, &x1, &a);
+    f8_linear_axis(t, h, repeat_t, &y0, &y1, &b);
+    const f8_i32 r0 = y0 * w, r1 = y1 * w;
+    const f8_i32 g00 = f8_gather_words(texels, r0 + x0), g10 = f8_gather_words(texels, r0 + x1);
+    const f8_i32 g01 = f8_gather_words(texels, r1 + x0), g11 = f8_gather_words(texels, r1 + x1);
     const f8_num ia = 1 - a, ib = 1 - b;
     for (int i = 0; i < 4; i++) {
         const f8_num top = f8_byte(g00, i) * ia + f8_byte(g10, i) * a;
@@ -226,6 +228,45 @@ AVX2_INLINE int f8_sample(const F8ModWrite *m, const TexCoord *tc, f8_num T[4])
     }
     return 1;
 }
+
+/* the fused stage's texture at tc[0..F8_N-1] (f8_sample_level) */
+AVX2_INLINE int f8_sample(const F8ModWrite *m, const TexCoord *tc, f8_num T[4])
+{
+    return f8_sample_level(m->tx.texels, m->tx.w, m->tx.h, m->tx.repeat_s, m->tx.repeat_t, tc, T);
+}
+
+#if defined(GLES_NUM_FLOAT)
+/* the float build's bilinear span kernel (sample_linear4): fragments
+** 0..n-1 of a power-of-two level, REPEAT or CLAMP_TO_EDGE on each axis,
+** eight at a time by f8_sample_level, stored as out[k stride + channel];
+** stops before the first eight with a coordinate that is not finite and
+** returns the count done (a multiple of 8; AVX2's four take the rest) */
+static int f8_sample_linear(const TexImage *li, int n, const TexCoord *c, float *out, size_t stride, int repeat_s,
+                            int repeat_t)
+{
+    int j = 0;
+    for (; j + F8_N <= n; j += F8_N) {
+        f8_num T[4];
+        if (!f8_sample_level(li->texels, li->width, li->height, repeat_s, repeat_t, c + j, T))
+            break;
+        /* four channel registers to eight fragments' four channels */
+        const __m256 rg_lo = _mm256_unpacklo_ps((__m256)T[0], (__m256)T[1]);
+        const __m256 rg_hi = _mm256_unpackhi_ps((__m256)T[0], (__m256)T[1]);
+        const __m256 ba_lo = _mm256_unpacklo_ps((__m256)T[2], (__m256)T[3]);
+        const __m256 ba_hi = _mm256_unpackhi_ps((__m256)T[2], (__m256)T[3]);
+        const __m256 f[4] = { _mm256_shuffle_ps(rg_lo, ba_lo, _MM_SHUFFLE(1, 0, 1, 0)),    /* fragments 0 | 4 */
+                              _mm256_shuffle_ps(rg_lo, ba_lo, _MM_SHUFFLE(3, 2, 3, 2)),    /* 1 | 5 */
+                              _mm256_shuffle_ps(rg_hi, ba_hi, _MM_SHUFFLE(1, 0, 1, 0)),    /* 2 | 6 */
+                              _mm256_shuffle_ps(rg_hi, ba_hi, _MM_SHUFFLE(3, 2, 3, 2)) };  /* 3 | 7 */
+        float *o = out + (size_t)j * stride;
+        for (int k = 0; k < 4; k++) {
+            _mm_storeu_ps(o + (size_t)k * stride, _mm256_castps256_ps128(f[k]));
+            _mm_storeu_ps(o + (size_t)(k + 4) * stride, _mm256_extractf128_ps(f[k], 1));
+        }
+    }
+    return j;
+}
+#endif
 
 /* the words written over d (lanes of the stored words) by F8_N fragments
 ** with texels T and weights p; thr: the dither thresholds (RGB565) */

@@ -247,6 +247,9 @@ static inline int sample_linear4(int simd, const TexImage *li, int n, const TexC
 #if SIMD_AVX512_INSTANCE
     if (simd >= SIMD_AVX512)    /* eight at a time, the last four (or from a coordinate not finite) by AVX2 */
         j = avx512_sample_linear_real(li, n, c, out, stride, rs, rt);
+#elif defined(GLES_NUM_FLOAT)
+    (void)simd;
+    j = f8_sample_linear(li, n, c, out, stride, rs, rt);     /* eight at a time in AVX2's float lanes, likewise */
 #else
     (void)simd;
 #endif
