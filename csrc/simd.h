@@ -5,9 +5,10 @@
 ** samplers also have an AVX2 instance (span_stages.h, texsample.c), taken
 ** when the CPU and the OS support AVX2. The double build's bilinear kernel
 ** and RGBA8888 writers have AVX-512F instances besides (span_avx512.h),
-** eight fragments to a register where AVX2 holds four; the fixed and float builds' kernels fill
-** AVX2's lanes already and have none. Every instance computes the same
-** bits, and the baseline stays the portable path that tests compare with.
+** eight fragments to a register where AVX2 holds four; the fixed and float
+** builds' kernels hold eight fragments in AVX2's lanes already and have
+** none. Every instance computes the same bits, and the baseline stays the
+** portable path that tests compare with.
 */
 #ifndef GLES_SIMD_H
 #define GLES_SIMD_H

@@ -1,9 +1,9 @@
 /*
 ** span_avx512.h -- the double build's bilinear kernel and RGBA8888
 ** writers in eight lanes of AVX-512F, taken where the CPU has it (simd.h);
-** AVX2 holds four of its fragments to a register. The fixed build's
-** kernels hold eight in AVX2's 32-bit lanes already; the float build's
-** have no such instance (its scenes run within 1.3x of the fixed build's).
+** AVX2 holds four of its fragments to a register. The fixed and float
+** builds' bilinear kernels hold eight in AVX2's 32-bit lanes already
+** (avx2_sample_linear, f8_sample_linear).
 ** Included after span_avx2.h (by texsample.c and span_chain.c: the guard
 ** keeps one copy), inside a target pragma for these instructions; every
 ** function is static.
