@@ -171,11 +171,8 @@ static const char *const fused_names[2][3][2] = { FUSED_SPANS(FUSED_NAME) };
 
 static int stencil_only_state(const GlesContext *ctx)
 {
-    const int no_color = ctx->color_format == GLES_COLOR_RGB565
-                             ? !ctx->color_mask[0] && !ctx->color_mask[1] && !ctx->color_mask[2]
-                             : !ctx->color_mask[0] && !ctx->color_mask[1] && !ctx->color_mask[2] && !ctx->color_mask[3];
-    return no_color && !ctx->alpha_test && !(ctx->depth_test && ctx->depth) && ctx->stencil_test && ctx->stencil
-        && !(ctx->debug & GLES_DEBUG_GENERIC_SPANS);
+    return span_no_color(ctx) && !ctx->alpha_test && !(ctx->depth_test && ctx->depth) && ctx->stencil_test
+        && ctx->stencil && !(ctx->debug & GLES_DEBUG_GENERIC_SPANS);
 }
 
 /* the value each stored value becomes (fragment_tests' op with no depth

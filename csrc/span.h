@@ -120,6 +120,14 @@ struct SpanBuf {
 ** ascend, so the last one tells) */
 static inline int slots_adjacent4(const uint8_t *k) { return k[3] == k[0] + 3; }
 
+/* 1 when the colour mask leaves every channel of the colour buffer as it
+** is (RGB565 has no alpha to write) */
+static inline int span_no_color(const GlesContext *ctx)
+{
+    return !ctx->color_mask[0] && !ctx->color_mask[1] && !ctx->color_mask[2]
+        && (ctx->color_format == GLES_COLOR_RGB565 || !ctx->color_mask[3]);
+}
+
 
 /* fragment_write's arithmetic on RGBA8888 with every channel written and no
 ** logic op, for blend kind 0 (none), 1 (SRC_ALPHA, ONE_MINUS_SRC_ALPHA) or

@@ -67,8 +67,10 @@ AVX512_INLINE void v8_bilerp8(const __m256i g[4], __m512d a, __m512d b, double *
     ** fragment's two pairs per 256-bit half */
     const __m512d rg_even = _mm512_unpacklo_pd(ch[0], ch[1]), rg_odd = _mm512_unpackhi_pd(ch[0], ch[1]);
     const __m512d ba_even = _mm512_unpacklo_pd(ch[2], ch[3]), ba_odd = _mm512_unpackhi_pd(ch[2], ch[3]);
-    const __m512i lo = _mm512_setr_epi64(0, 1, 8, 9, 2, 3, 10, 11), hi = _mm512_setr_epi64(4, 5, 12, 13, 6, 7, 14, 15);
-    const __m512d f02 = _mm512_permutex2var_pd(rg_even, lo, ba_even), f46 = _mm512_permutex2var_pd(rg_even, hi, ba_even);
+    const __m512i lo = _mm512_setr_epi64(0, 1, 8, 9, 2, 3, 10, 11);
+    const __m512i hi = _mm512_setr_epi64(4, 5, 12, 13, 6, 7, 14, 15);
+    const __m512d f02 = _mm512_permutex2var_pd(rg_even, lo, ba_even);
+    const __m512d f46 = _mm512_permutex2var_pd(rg_even, hi, ba_even);
     const __m512d f13 = _mm512_permutex2var_pd(rg_odd, lo, ba_odd), f57 = _mm512_permutex2var_pd(rg_odd, hi, ba_odd);
     _mm256_storeu_pd(out, _mm512_castpd512_pd256(f02));
     _mm256_storeu_pd(out + stride, _mm512_castpd512_pd256(f13));
@@ -89,7 +91,8 @@ static __attribute__((noinline)) int avx512_sample_linear_real(const TexImage *l
 {
     const int w = li->width, h = li->height;
     const int *t32 = (const int *)(const void *)li->texels;
-    const __m512i even = _mm512_setr_epi64(0, 2, 4, 6, 8, 10, 12, 14), odd = _mm512_setr_epi64(1, 3, 5, 7, 9, 11, 13, 15);
+    const __m512i even = _mm512_setr_epi64(0, 2, 4, 6, 8, 10, 12, 14);
+    const __m512i odd = _mm512_setr_epi64(1, 3, 5, 7, 9, 11, 13, 15);
     const __m512d inf = _mm512_set1_pd(INFINITY);
     int j = 0;
     for (; j + 8 <= n; j += 8) {
@@ -102,7 +105,8 @@ static __attribute__((noinline)) int avx512_sample_linear_real(const TexImage *l
         __m512d a, b;
         v8_linear_axis(s, w, repeat_s, &x0, &x1, &a);
         v8_linear_axis(t, h, repeat_t, &y0, &y1, &b);
-        const __m256i r0 = _mm256_mullo_epi32(y0, _mm256_set1_epi32(w)), r1 = _mm256_mullo_epi32(y1, _mm256_set1_epi32(w));
+        const __m256i r0 = _mm256_mullo_epi32(y0, _mm256_set1_epi32(w));
+        const __m256i r1 = _mm256_mullo_epi32(y1, _mm256_set1_epi32(w));
         const __m256i g[4] = { _mm256_i32gather_epi32(t32, _mm256_add_epi32(r0, x0), 4),
                                _mm256_i32gather_epi32(t32, _mm256_add_epi32(r0, x1), 4),
                                _mm256_i32gather_epi32(t32, _mm256_add_epi32(r1, x0), 4),

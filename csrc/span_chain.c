@@ -461,17 +461,20 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     const int early = !ctx->alpha_test;
     /* with every channel masked the write leaves the colour as it is: no
     ** write, and without an alpha test no colour work at all */
-    const int no_color = ctx->color_format == GLES_COLOR_RGB565
-                             ? !ctx->color_mask[0] && !ctx->color_mask[1] && !ctx->color_mask[2]
-                             : !ctx->color_mask[0] && !ctx->color_mask[1] && !ctx->color_mask[2] && !ctx->color_mask[3];
+    const int no_color = span_no_color(ctx);
     const int color_work = !no_color || ctx->alpha_test;
     if (!rect)
         ctx->chain_coords_unit = -1;
     int lod = 0;
+    ctx->stencil_cull.on = 0;
     if (stencil) {
         FragTests ft;
         fragment_tests_setup(ctx, &ft);
         fragment_stencil_lut(&ft, ctx->stencil_lut);
+        ctx->stencil_cull.on = ft.stencil_func != GL_ALWAYS && (ft.fail == GL_KEEP || ft.write_mask == 0);
+        ctx->stencil_cull.func = ft.stencil_func;
+        ctx->stencil_cull.ref = (uint8_t)(ft.ref & ft.value_mask);
+        ctx->stencil_cull.mask = (uint8_t)ft.value_mask;
     }
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
         if (units & (1u << u)) {
@@ -634,31 +637,26 @@ _Static_assert(SPAN_CHUNK == 128, "span_offsets lists SPAN_CHUNK offsets");
 ** chunk's fragments before its first pass and after its last can go
 ** before any stage runs, and a chunk with no pass goes whole */
 
+/* a row's stencil values with the cull's state (ctx->stencil_cull) and
+** the chain's table of the test's outcome per stored value */
 typedef struct StencilCull {
-    const uint8_t *row;         /* the stencil values of the run's row; NULL: no cull */
+    const uint8_t *row;         /* NULL: no cull */
+    const uint8_t *pass;        /* ctx->stencil_lut[0] */
     unsigned int func;
-    uint8_t ref, mask;          /* the reference and the value mask, both 8 bits */
+    uint8_t ref, mask;
 } StencilCull;
 
 static inline void stencil_cull_setup(const GlesContext *ctx, int y, StencilCull *sc)
 {
-    *sc = (StencilCull){ NULL, GL_ALWAYS, 0, 0 };
-    if (!ctx->stencil_test || !ctx->stencil || ctx->stencil_func == GL_ALWAYS
-        || !(ctx->stencil_fail == GL_KEEP || (ctx->stencil_writemask & 0xFFu) == 0))
-        return;
-    FragTests ft;
-    fragment_tests_setup(ctx, &ft);
-    sc->row = ctx->stencil + (size_t)y * (size_t)ctx->width;
-    sc->func = ft.stencil_func;
-    sc->mask = (uint8_t)ft.value_mask;
-    sc->ref = (uint8_t)(ft.ref & ft.value_mask);
+    sc->row = ctx->stencil_cull.on ? ctx->stencil + (size_t)y * (size_t)ctx->width : NULL;
+    sc->pass = ctx->stencil_lut[0];
+    sc->func = ctx->stencil_cull.func;
+    sc->ref = ctx->stencil_cull.ref;
+    sc->mask = ctx->stencil_cull.mask;
 }
 
 /* whether the stencil test passes at pixel x */
-static inline int stencil_cull_pass(const StencilCull *sc, int x)
-{
-    return fragment_compare(sc->func, sc->ref, sc->row[x] & sc->mask);
-}
+static inline int stencil_cull_pass(const StencilCull *sc, int x) { return sc->pass[sc->row[x]]; }
 
 #if defined(__SSE2__)
 #include <emmintrin.h>

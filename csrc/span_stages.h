@@ -1417,7 +1417,7 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
                           ctx->alpha_test ? ctx->alpha_func : GL_ALWAYS, fragment_alpha_ref8(ctx));
         if (src == 1)
             modwrite_texture_setup(&m->tx, tex, ctx->samplers[u], ctx->texel_unorm8);
-        ctx->fused_serial = serial, ctx->fused_in_range = 1;
+        ctx->fused_serial = serial;
     }
     const size_t stride = GLES_MAX_TEXTURE_UNITS * 4;
     _Static_assert(SPAN_CHUNK % 8 == 0, "a padded group stays within the chunk");

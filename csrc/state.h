@@ -382,6 +382,10 @@ struct GlesContext {
     int chain_len;
     int chain_coords_unit;      /* the unit whose coordinates stage_persp forms, else -1 */
     uint8_t stencil_lut[4][256];        /* the chain's stencil tables (fragment_stencil_lut) */
+    /* the chain's stencil cull (span_chain.c's run), set with those tables:
+    ** on where a fragment failing the test keeps the stored value; the
+    ** function, the masked reference and the value mask (8 bits) */
+    struct { int on; unsigned int func; uint8_t ref, mask; } stencil_cull;
     uint8_t stencil_only[256];          /* span_stencil_only's: each stored value's new value */
     /* raster.c: the last flat colour packed for the framebuffer (format -1: none) */
     FRAGV flat_cache_color[4];

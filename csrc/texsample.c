@@ -212,10 +212,10 @@ void texture_sample(const Texture *t, const TexCoord *c, const TexCoord *dx, con
     {                                                                                                      \
         const unsigned int ws = WS ? WS : t->wrap_s, wt = WT ? WT : t->wrap_t;                             \
         if (FILTER) {                                                                                      \
-            int j = SIMD && FILTER == GL_LINEAR ? linear_block(SIMD, t, n, c, out, stride, ws, wt) : 0;         \
+            int j = SIMD && FILTER == GL_LINEAR ? linear_block(SIMD, t, n, c, out, stride, ws, wt) : 0;   \
             for (; j < n; j++)                                                                             \
                 sample_level(t, 0, FILTER, c[j].s, c[j].t, out + (size_t)j * stride, unorm, ws, wt, SIMD); \
-        } else if (!(SIMD && lod_blocks(SIMD, t, n, c, dx, dy, out, stride, unorm, ws, wt))) {                    \
+        } else if (!(SIMD && lod_blocks(SIMD, t, n, c, dx, dy, out, stride, unorm, ws, wt))) {              \
             for (int j = 0; j < n; j++)                                                                    \
                 sample_w(t, &c[j], &dx[j], &dy[j], out + (size_t)j * stride, unorm, ws, wt, SIMD);         \
         }                                                                                                  \
@@ -557,8 +557,8 @@ static int lod_block(int simd, const Texture *t, int n, const TexCoord *c, const
             FRAGV *dst = k ? second[j] : out + (size_t)j * stride;
             const size_t dstride = k ? 4 : stride;
             const int done = mixed ? mixed
-                           : m4    ? sample_linear4(simd, &t->level[level + k], m4, c + j, dst, dstride, ws == GL_REPEAT,
-                                                    wt == GL_REPEAT)
+                           : m4    ? sample_linear4(simd, &t->level[level + k], m4, c + j, dst, dstride,
+                                                    ws == GL_REPEAT, wt == GL_REPEAT)
                                    : 0;
             for (int i = done; i < e - j; i++)
                 sample_level(t, level + k, filter, c[j + i].s, c[j + i].t, dst + (size_t)i * dstride, unorm, ws,
@@ -593,8 +593,9 @@ static int lod_block(int simd, const Texture *t, int n, const TexCoord *c, const
 
 /* lod_block over a chunk, SPAN_SAMPLE_MAX fragments at a time; 0 (nothing
 ** done) where it does not apply, which is the same for every piece */
-static inline int lod_blocks(int simd, const Texture *t, int n, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
-                             FRAGV *out, size_t stride, const FRAGV *unorm, unsigned int ws, unsigned int wt)
+static inline int lod_blocks(int simd, const Texture *t, int n, const TexCoord *c, const TexCoord *dx,
+                             const TexCoord *dy, FRAGV *out, size_t stride, const FRAGV *unorm, unsigned int ws,
+                             unsigned int wt)
 {
     for (int j = 0; j < n; j += SPAN_SAMPLE_MAX) {
         const int m = n - j < SPAN_SAMPLE_MAX ? n - j : SPAN_SAMPLE_MAX;
