@@ -716,6 +716,24 @@ static inline void wgt_linear(const WgtSetup *s, const int64_t e[3], WGT out[3])
     out[0] = (WGT)(WGT_ONE - l1 - l2);
 }
 
+/* wgt_persp's weights from the numerators n_i >= 0 and their sum den > 0 */
+static inline void wgt_persp_quotients(int64_t den, int64_t n1, int64_t n2, WGT out[3])
+{
+    int sh = u64_bits((uint64_t)den) - 32;
+    if (sh > 0) {
+        den >>= sh;
+        n1 >>= sh;
+        n2 >>= sh;
+    }
+    /* one division: n_i <= den < 2^32, so n_i * (2^62 / den) <= 2^62 */
+    int64_t recip = (((int64_t)1 << 62) + den / 2) / den;
+    int64_t p1 = (n1 * recip + ((int64_t)1 << 31)) >> 32;
+    int64_t p2 = (n2 * recip + ((int64_t)1 << 31)) >> 32;
+    out[1] = (WGT)p1;
+    out[2] = (WGT)p2;
+    out[0] = (WGT)(WGT_ONE - p1 - p2);
+}
+
 static inline void wgt_persp(const WgtSetup *s, const int64_t e[3], WGT out[3])
 {
     if (s->affine) {
@@ -732,19 +750,7 @@ static inline void wgt_persp(const WgtSetup *s, const int64_t e[3], WGT out[3])
         wgt_linear(s, e, out);
         return;
     }
-    int sh = u64_bits((uint64_t)den) - 32;
-    if (sh > 0) {
-        den >>= sh;
-        n[1] >>= sh;
-        n[2] >>= sh;
-    }
-    /* one division: n_i <= den < 2^32, so n_i * (2^62 / den) <= 2^62 */
-    int64_t recip = (((int64_t)1 << 62) + den / 2) / den;
-    int64_t p1 = (n[1] * recip + ((int64_t)1 << 31)) >> 32;
-    int64_t p2 = (n[2] * recip + ((int64_t)1 << 31)) >> 32;
-    out[1] = (WGT)p1;
-    out[2] = (WGT)p2;
-    out[0] = (WGT)(WGT_ONE - p1 - p2);
+    wgt_persp_quotients(den, n[1], n[2], out);
 }
 
 /* perspective weights at edge values that may lie outside the triangle

@@ -131,6 +131,50 @@ static inline uint32_t span_flat_word(const uint32_t (*table)[256], uint32_t d)
     return table[0][d & 0xFFu] | table[1][(d >> 8) & 0xFFu] | table[2][(d >> 16) & 0xFFu] | table[3][d >> 24];
 }
 
+#if NUM_IS_FIXED
+/* The smooth spans of the fixed build with their weights stepped along a
+** row. Where the edge values take no shift (eshift 0, so area2 < 2^31:
+** every triangle below about 16000 pixels), wgt_linear's products e_i R
+** (plus its 2^30) and wgt_persp's e_i mant_i are linear in the column, so
+** each pixel's is the last one's plus a step of the triangle: an add where
+** the general loop multiplies, and no range tests per pixel. A covered
+** pixel has 0 <= e_i <= area2 (the three sum to area2), so every product
+** lies in [0, 2^62) (R = 2^61 / area2, mant < 2^30) and the sums, kept mod
+** 2^64, are the scalar code's. The depth is wgt_depth3 with l0 = 1 - l1 -
+** l2 taken out, z0 + l1 (z1 - z0) + l2 (z2 - z0), and the colour likewise
+** (v4_lerp_deltas): the same integers. The constants are the triangle's,
+** found at its first row. */
+static void span_smooth_setup(const TriSetup *t, SmoothStep *s)
+{
+    const WgtSetup *ws = &t->wgt;
+    s->ok = ws->eshift == 0 && ws->lin_recip > 0;
+    /* the colour's differences as vpmuldq's int32 operands */
+    for (int i = 0; i < 4; i++) {
+        const FRAGV a0 = t->col[0][i], d1 = t->col[1][i] - a0, d2 = t->col[2][i] - a0;
+        if (a0 < INT32_MIN || a0 > INT32_MAX || d1 < INT32_MIN || d1 > INT32_MAX || d2 < INT32_MIN || d2 > INT32_MAX)
+            s->ok = 0;
+        s->base[i] = a0 * ((int64_t)1 << 30) + ((int64_t)1 << 29);
+        s->d1[i] = d1;
+        s->d2[i] = d2;
+    }
+    if (!s->ok)
+        return;
+    s->affine = ws->affine;
+    s->r = (uint64_t)ws->lin_recip;
+    for (int i = 0; i < 3; i++) {
+        /* wgt_persp's n_i is 0 from a shift of 63 */
+        s->mant[i] = ws->qshift[i] < 63 ? (uint64_t)ws->mant[i] : 0;
+        s->qs[i] = ws->qshift[i] < 63 ? ws->qshift[i] : 0;
+        s->per_step[i] = (uint64_t)t->ea[i] * s->mant[i];
+        s->lin_step[i] = i ? (uint64_t)t->ea[i] * s->r : 0;
+    }
+    const int64_t z0 = t->v[0]->wz >> 12;
+    s->dz1 = (t->v[1]->wz >> 12) - z0;
+    s->dz2 = (t->v[2]->wz >> 12) - z0;
+    s->zbase = z0 * WGT_ONE + ((int64_t)1 << 33);
+}
+#endif
+
 /* the fused spans: name, smooth, depth, blend (span_fused.h) */
 #define FUSED_SPANS(X)                                                                             \
     X(flat, 0, 0, 0) X(smooth, 1, 0, 0) X(flat_zless, 0, 1, 0) X(smooth_zless, 1, 1, 0)              \

@@ -138,13 +138,12 @@ AVX2_INLINE uint32_t avx2_pack_unorm8(__m256i v)
     v = _mm256_blendv_epi8(v, one, _mm256_cmpgt_epi64(v, one));
     v = _mm256_srli_epi64(_mm256_add_epi64(_mm256_mul_epu32(v, _mm256_set1_epi64x(255)),
                                            _mm256_set1_epi64x((int64_t)1 << 29)), 30);
-    /* the low byte of each 64-bit lane, in lane order */
+    /* the low byte of each 64-bit lane, in lane order: lanes 0, 1 to bytes
+    ** 0, 1 of the low half, lanes 2, 3 to bytes 2, 3 of the high half */
     const __m256i pick = _mm256_setr_epi8(0, 8, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1,
-                                          0, 8, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1);
+                                          -1, -1, 0, 8, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1);
     v = _mm256_shuffle_epi8(v, pick);
-    uint32_t lo = (uint32_t)_mm_cvtsi128_si32(_mm256_castsi256_si128(v)) & 0xFFFFu;
-    uint32_t hi = (uint32_t)_mm_cvtsi128_si32(_mm256_extracti128_si256(v, 1)) & 0xFFFFu;
-    return lo | (hi << 16);
+    return (uint32_t)_mm_cvtsi128_si32(_mm_or_si128(_mm256_castsi256_si128(v), _mm256_extracti128_si256(v, 1)));
 }
 
 /* frag_bilerp_rgba8: the same sum, as ib (c00 ia + c10 a) + b (c01 ia + c11 a)
@@ -1021,6 +1020,21 @@ AVX2_INLINE V4 v4_lerp3f_clamp01(V4 a0, V4 a1, V4 a2, const WGT *p)
     const __m256i pos = _mm256_andnot_si256(_mm256_cmpgt_epi64(_mm256_setzero_si256(), acc), acc);
     const __m256i r = _mm256_srli_epi64(_mm256_add_epi64(pos, _mm256_set1_epi64x((int64_t)1 << 29)), 30);
     return _mm256_blendv_epi8(r, one, _mm256_cmpgt_epi64(r, one));
+}
+/* v4_lerp3f_clamp01's sum regrouped for weights with p0 = 1 - p1 - p2 (as
+** wgt_persp and wgt_linear form p0): a0 2^30 + d1 p1 + d2 p2, d_i = a_i -
+** a0 in lanes that fit int32, from base = a0 2^30 + 2^29 (the rounding
+** added). The result, max(sum, 0) >> 30, is frag_lerp3f's where that is
+** positive and 0 where it is not, which every consumer's clamp takes alike. */
+AVX2_INLINE V4 v4_lerp_base(V4 a0)
+{
+    return _mm256_add_epi64(_mm256_slli_epi64(a0, 30), _mm256_set1_epi64x((int64_t)1 << 29));
+}
+AVX2_INLINE V4 v4_lerp_deltas(V4 base, V4 d1, V4 d2, WGT p1, WGT p2)
+{
+    const __m256i acc = _mm256_add_epi64(_mm256_add_epi64(base, _mm256_mul_epi32(d1, _mm256_set1_epi64x(p1))),
+                                         _mm256_mul_epi32(d2, _mm256_set1_epi64x(p2)));
+    return _mm256_srli_epi64(_mm256_andnot_si256(_mm256_cmpgt_epi64(_mm256_setzero_si256(), acc), acc), 30);
 }
 /* the same for weights just computed, in registers: a vector load of
 ** three scalar stores would wait for them (no store forwarding) */

@@ -15,6 +15,76 @@
 ** the pixels are the same; the random-state tests check it.
 */
 
+#if NUM_IS_FIXED
+/* span_smooth_setup's stepped span over the row (see there); 0 where it
+** does not apply (the general loop then draws the row) */
+static inline __attribute__((always_inline)) int SPAN_FN(span_smooth_stepped)(GlesContext *ctx, const TriSetup *t,
+                                                                              const int64_t e[3], uint32_t *dst,
+                                                                              uint32_t *zb, int n, const int depth,
+                                                                              const int blend)
+{
+    const SmoothStep *s = &ctx->smooth_step;
+    if (ctx->smooth_serial != t->serial) {
+        span_smooth_setup(t, &ctx->smooth_step);
+        ctx->smooth_serial = t->serial;
+    }
+    if (!s->ok)
+        return 0;
+    /* e_i is linear in the column: non-negative at both ends, at every pixel */
+    for (int i = 0; i < 3; i++)
+        if (e[i] < 0 || e[i] + t->ea[i] * (n - 1) < 0)
+            return 0;
+#if CHAIN_SIMD
+    const V4 base = v4_load(s->base), d1 = v4_load(s->d1), d2 = v4_load(s->d2);
+#else
+    const FRAGV *c0 = t->col[0], *c1 = t->col[1], *c2 = t->col[2];
+#endif
+    const uint64_t half = (uint64_t)1 << 30;
+    uint64_t lin1 = (uint64_t)e[1] * s->r + half, lin2 = (uint64_t)e[2] * s->r + half;
+    uint64_t per0 = (uint64_t)e[0] * s->mant[0], per1 = (uint64_t)e[1] * s->mant[1];
+    uint64_t per2 = (uint64_t)e[2] * s->mant[2];
+    const uint64_t lin1_step = s->lin_step[1], lin2_step = s->lin_step[2];
+    const uint64_t per0_step = s->per_step[0], per1_step = s->per_step[1], per2_step = s->per_step[2];
+    const int qs0 = s->qs[0], qs1 = s->qs[1], qs2 = s->qs[2], affine = s->affine;
+    const int64_t zbase = s->zbase, dz1 = s->dz1, dz2 = s->dz2, zmax = ctx->depth_max;
+    for (int k = 0; k < n; k++) {
+        const int64_t l1 = (int64_t)(lin1 >> 31), l2 = (int64_t)(lin2 >> 31);
+        int draw = 1;
+        if (depth) {
+            int64_t z = (zbase + l1 * dz1 + l2 * dz2) >> 34;
+            z = z < 0 ? 0 : (z > zmax ? zmax : z);
+            draw = (uint32_t)z < zb[k];
+            if (draw)
+                zb[k] = (uint32_t)z;
+        }
+        if (draw) {
+            WGT p[3] = { (WGT)(WGT_ONE - l1 - l2), (WGT)l1, (WGT)l2 };
+            if (!affine) {
+                const int64_t n0 = (int64_t)(per0 >> qs0), n1 = (int64_t)(per1 >> qs1);
+                const int64_t n2 = (int64_t)(per2 >> qs2);
+                if (n0 + n1 + n2 > 0)
+                    wgt_persp_quotients(n0 + n1 + n2, n1, n2, p);
+            }
+#if CHAIN_SIMD
+            const V4 c = v4_lerp_deltas(base, d1, d2, p[1], p[2]);
+            dst[k] = blend ? v4_rgba8(c, dst[k], blend) : avx2_pack_unorm8(c);
+#else
+            FRAGV c[4];
+            for (int i = 0; i < 4; i++)
+                c[i] = frag_lerp3f(c0[i], c1[i], c2[i], p[0], p[1], p[2]);
+            dst[k] = span_rgba8(ctx, c, dst[k], blend);
+#endif
+        }
+        lin1 += lin1_step;
+        lin2 += lin2_step;
+        per0 += per0_step;
+        per1 += per1_step;
+        per2 += per2_step;
+    }
+    return 1;
+}
+#endif
+
 static inline __attribute__((always_inline)) void SPAN_FN(span_fused)(GlesContext *ctx, const TriSetup *t, int y,
                                                                       int x0, int n, const int smooth,
                                                                       const int depth, const int blend)
@@ -25,6 +95,10 @@ static inline __attribute__((always_inline)) void SPAN_FN(span_fused)(GlesContex
     int64_t e[3];
     for (int i = 0; i < 3; i++)
         e[i] = t->ea[i] * x0 + t->eb[i] * y + t->ec[i];
+#if NUM_IS_FIXED
+    if (smooth && SPAN_FN(span_smooth_stepped)(ctx, t, e, dst, zb, n, depth, blend))
+        return;
+#endif
     const Vertex *v0 = t->v[0], *v1 = t->v[1], *v2 = t->v[2];
     const FRAGV *c0 = t->col[0], *c1 = t->col[1], *c2 = t->col[2];
     /* a constant source: its blend term is the same for the whole span */

@@ -217,6 +217,20 @@ typedef struct FlatTable {
 
 /* {====================================================================
 ** the context */
+/* the fixed build's stepped smooth spans' constants of one triangle
+** (span.c's span_smooth_setup, span_fused.h's span_smooth_stepped) */
+typedef struct SmoothStep {
+    int ok;                     /* stepping applies to the triangle */
+    int affine;
+    int qs[3];                  /* wgt_persp's shifts (0 where its n_i is 0) */
+    uint64_t r;                 /* wgt_linear's R */
+    uint64_t lin_step[3];       /* e_i R from one column to the next (i = 1, 2) */
+    uint64_t mant[3];           /* wgt_persp's mantissas (0 where n_i is 0) */
+    uint64_t per_step[3];       /* e_i mant_i from one column to the next */
+    int64_t zbase, dz1, dz2;    /* wgt_depth3 as zbase + l1 dz1 + l2 dz2 */
+    FRAGV base[4], d1[4], d2[4];  /* the colour as v4_lerp_deltas takes it */
+} SmoothStep;
+
 struct GlesContext {
     /* framebuffer */
     int width, height;
@@ -242,6 +256,10 @@ struct GlesContext {
     uint64_t fused_serial;
     int fused_in_range;
     void *fused_setup;          /* GLES_FUSED_SETUP_BYTES, 64-byte aligned (its vectors load in place) */
+    /* the stepped smooth spans' constants of the primitive of serial
+    ** smooth_serial (0: none), which its rows share */
+    uint64_t smooth_serial;
+    SmoothStep smooth_step;
     /* the stencil and depth tests' setup (span_stages.h) for the primitive
     ** of serial tests_serial (0: none), GLES_TESTS_SETUP_BYTES, 64-byte aligned */
     uint64_t tests_serial;
