@@ -177,12 +177,17 @@ AVX2_INLINE __m256i avx2_negative(__m256i v) { return _mm256_cmpgt_epi64(_mm256_
 AVX2_INLINE __m256i avx2_negate_where(__m256i v, __m256i mask) { return _mm256_sub_epi64(_mm256_xor_si256(v, mask), mask); }
 AVX2_INLINE __m256i avx2_abs64(__m256i v) { return avx2_negate_where(v, avx2_negative(v)); }
 
-/* each lane rounded half away from zero to `shift` fewer fraction bits */
+/* each lane rounded half away from zero to `shift` fewer fraction bits:
+** with h = 2^(shift - 1), (x + h) >> shift for x >= 0 and -((h - x) >> shift)
+** = floor((x + h - 1) / 2^shift) for x < 0, so floor((x + h + s) / 2^shift)
+** with s = -1 where x < 0. AVX2 has no 64-bit arithmetic shift: z + 2^63
+** (mod 2^64, the unsigned order of signed z) shifted logically is
+** floor(z / 2^shift) + 2^(63 - shift), which comes off after. */
 AVX2_INLINE __m256i avx2_round_shift(__m256i acc, int shift)
 {
-    const __m256i sign = avx2_negative(acc);
-    const __m256i mag = _mm256_add_epi64(avx2_negate_where(acc, sign), _mm256_set1_epi64x((int64_t)1 << (shift - 1)));
-    return avx2_negate_where(_mm256_srli_epi64(mag, shift), sign);
+    const __m256i bias = _mm256_set1_epi64x(INT64_MIN + ((int64_t)1 << (shift - 1)));   /* 2^63 + h mod 2^64 */
+    const __m256i z = _mm256_add_epi64(_mm256_add_epi64(acc, avx2_negative(acc)), bias);
+    return _mm256_sub_epi64(_mm256_srli_epi64(z, shift), _mm256_set1_epi64x((int64_t)1 << (63 - shift)));
 }
 
 /* i64_div_pow2 of each lane by the same k, and by a k per lane (truncation
