@@ -431,17 +431,52 @@ AVX2_INLINE void avx2_linear_axis8(__m256i lo, __m256i hi, int log2n, int repeat
     *w = _mm256_srli_epi32(_mm256_sll_epi32(g, up), 16);
 }
 
+/* the texel words g[0..3] of avx2_linear_texels8 where every lane reads the
+** same two rows and its columns lie in the eight from lane 0's xa on (a
+** magnified or axis-aligned texture: blits, sprites, screen-aligned
+** quads): a load of eight texels from each row and four permutations in
+** place of the gathers, the same words. 0 (g untouched) where that does
+** not hold or a load would pass the level's end. */
+AVX2_INLINE int avx2_row_texels8(const int *tx32, int log2w, int log2h, __m256i xa, __m256i xb, __m256i ya,
+                                 __m256i yb, __m256i g[4])
+{
+    const __m256i lane0 = _mm256_setzero_si256();
+    const __m256i x0 = _mm256_permutevar8x32_epi32(xa, lane0);
+    const __m256i da = _mm256_sub_epi32(xa, x0), db = _mm256_sub_epi32(xb, x0);
+    const __m256i same_rows = _mm256_and_si256(_mm256_cmpeq_epi32(ya, _mm256_permutevar8x32_epi32(ya, lane0)),
+                                               _mm256_cmpeq_epi32(yb, _mm256_permutevar8x32_epi32(yb, lane0)));
+    if (_mm256_movemask_epi8(same_rows) != -1
+        || !_mm256_testz_si256(_mm256_or_si256(da, db), _mm256_set1_epi32(~7)))
+        return 0;
+    const int64_t col = _mm256_cvtsi256_si32(xa), end = (int64_t)1 << (log2w + log2h);
+    const int64_t first0 = ((int64_t)_mm256_cvtsi256_si32(ya) << log2w) + col;
+    const int64_t first1 = ((int64_t)_mm256_cvtsi256_si32(yb) << log2w) + col;
+    if (first0 + 8 > end || first1 + 8 > end)
+        return 0;
+    const __m256i row0 = _mm256_loadu_si256((const __m256i *)(const void *)(tx32 + first0));
+    const __m256i row1 = _mm256_loadu_si256((const __m256i *)(const void *)(tx32 + first1));
+    g[0] = _mm256_permutevar8x32_epi32(row0, da);
+    g[1] = _mm256_permutevar8x32_epi32(row0, db);
+    g[2] = _mm256_permutevar8x32_epi32(row1, da);
+    g[3] = _mm256_permutevar8x32_epi32(row1, db);
+    return 1;
+}
+
 /* the four texels and the weights of sample_level's GL_LINEAR for the
 ** coordinates c[0..7] on a power-of-two level (2^log2w texels wide), REPEAT
 ** or CLAMP_TO_EDGE on each axis: g[0..3] the texel words at (i0, j0),
-** (i1, j0), (i0, j1), (i1, j1), *a and *b the 16-bit weights along s and t */
+** (i1, j0), (i0, j1), (i1, j1), *a and *b the 16-bit weights along s and t;
+** with `rows`, by avx2_row_texels8 where it applies (magnified levels: a
+** minified one's columns spread too far for it to pay its test) */
 AVX2_INLINE void avx2_linear_texels8(const int *tx32, int log2w, int log2h, const TexCoord *c, int repeat_s,
-                                     int repeat_t, __m256i g[4], __m256i *a, __m256i *b)
+                                     int repeat_t, int rows, __m256i g[4], __m256i *a, __m256i *b)
 {
     __m256i s_lo, s_hi, t_lo, t_hi, xa, xb, ya, yb;
     avx2_load_st8(c, &s_lo, &s_hi, &t_lo, &t_hi);
     avx2_linear_axis8(s_lo, s_hi, log2w, repeat_s, &xa, &xb, a);
     avx2_linear_axis8(t_lo, t_hi, log2h, repeat_t, &ya, &yb, b);
+    if (rows && avx2_row_texels8(tx32, log2w, log2h, xa, xb, ya, yb, g))
+        return;
     const __m256i r0 = _mm256_slli_epi32(ya, log2w), r1 = _mm256_slli_epi32(yb, log2w);
     if (_mm256_movemask_epi8(_mm256_cmpeq_epi32(xb, _mm256_add_epi32(xa, _mm256_set1_epi32(1)))) == -1) {
         /* no lane wraps or clamps at the right edge: each row's two
@@ -480,13 +515,13 @@ static inline void avx2_lod_mix(FRAGV f, const FRAGV t1[4], const FRAGV t2[4], F
 
 /* the bilerp8 channels ch[0..3] of eight coordinates cj on a level (as
 ** avx2_sample_linear samples each group) */
-AVX2_INLINE void avx2_linear_channels8(const TexImage *li, const TexCoord *cj, int repeat_s, int repeat_t,
+AVX2_INLINE void avx2_linear_channels8(const TexImage *li, const TexCoord *cj, int repeat_s, int repeat_t, int rows,
                                        __m256i ch[4])
 {
     const int log2w = __builtin_ctz((unsigned)li->width), log2h = __builtin_ctz((unsigned)li->height);
     const __m256i one16 = _mm256_set1_epi32(65536);
     __m256i g[4], a, b;
-    avx2_linear_texels8((const int *)(const void *)li->texels, log2w, log2h, cj, repeat_s, repeat_t, g, &a, &b);
+    avx2_linear_texels8((const int *)(const void *)li->texels, log2w, log2h, cj, repeat_s, repeat_t, rows, g, &a, &b);
     const __m256i ia = _mm256_sub_epi32(one16, a), ib = _mm256_sub_epi32(one16, b);
     for (int k = 0; k < 4; k++)
         ch[k] = avx2_bilerp8_channel(g, 8 * k, a, ia, b, ib);
@@ -510,7 +545,7 @@ static inline void avx2_sample_linear(const TexImage *li, int n, const TexCoord 
     for (int j = 0; j < n; j += 8) {
         TexCoord pad[8];
         __m256i ch[4];
-        avx2_linear_channels8(li, avx2_group8_coords(c, j, n, pad), repeat_s, repeat_t, ch);
+        avx2_linear_channels8(li, avx2_group8_coords(c, j, n, pad), repeat_s, repeat_t, 1, ch);
         for (int h = 0; h < (j + 8 > n ? 1 : 2); h++) {
             __m256i v[4];
             for (int k = 0; k < 4; k++)
@@ -530,8 +565,8 @@ static void avx2_sample_linear_mix(const TexImage *l1, const TexImage *l2, int n
         TexCoord pad[8];
         const TexCoord *cj = avx2_group8_coords(c, j, n, pad);
         __m256i ch1[4], ch2[4];
-        avx2_linear_channels8(l1, cj, repeat_s, repeat_t, ch1);
-        avx2_linear_channels8(l2, cj, repeat_s, repeat_t, ch2);
+        avx2_linear_channels8(l1, cj, repeat_s, repeat_t, 0, ch1);
+        avx2_linear_channels8(l2, cj, repeat_s, repeat_t, 0, ch2);
         for (int h = 0; h < (j + 8 > n ? 1 : 2); h++) {
             const __m256i f = avx2_load4(&frac[j + 4 * h]);
             __m256i v[4];
@@ -2286,7 +2321,7 @@ AVX2_INLINE int avx2_modwrite_texels8(const ModWriteTexture *tx, int src, const 
     if (src == 0)
         return avx2_texels_ct8(ct, stride, T);
     __m256i g[4], a, b;
-    avx2_linear_texels8((const int *)(const void *)tx->texels, tx->log2w, tx->log2h, tc, tx->repeat_s, tx->repeat_t,
+    avx2_linear_texels8((const int *)(const void *)tx->texels, tx->log2w, tx->log2h, tc, tx->repeat_s, tx->repeat_t, 1,
                         g, &a, &b);
     avx2_bilerp8_float(g, a, b, T);
     return 1;

@@ -198,6 +198,14 @@ def _sampler_case(numeric: str, seed: int, filt: int, wrap: tuple[int, int]) -> 
     # and (1500: the sampler takes 64 at a time) in the second four of eight
     st[[1001, 1500, 2050, 2051, 3000]] = [[np.nan, 0.5], [0.5, np.nan], [0.25, np.inf], [-np.inf, np.nan],
                                           [1e30, -1e30]]
+    # groups of eight along one texel row, magnified (the kernels load a
+    # row's texels where every lane reads the same rows), some of them on
+    # the last rows, at the right edge or stepping leftwards
+    for g, first in enumerate(range(3104, 3104 + 8 * 96, 8)):
+        t = (h - rng.uniform(0, 1.5)) / h if g % 3 == 0 else rng.uniform(-1, 2)
+        s0 = (w - rng.uniform(0, 8)) / w if g % 4 == 0 else rng.uniform(-1, 2)
+        ds = rng.uniform(0, 1) / w * (-1 if g % 5 == 0 else 1)
+        st[first:first + 8] = np.column_stack([s0 + ds * np.arange(8), np.full(8, t)])
     # neighbours a random footprint away: magnified to minified by 2^8
     step = np.exp2(rng.uniform(-8, 8, (n, 1))) / max(w, h) * rng.choice([-1, 1], (n, 2))
     coords = np.concatenate([st, st + step * [1, 0], st + step * [0, 1]], axis=1)
