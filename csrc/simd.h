@@ -35,7 +35,7 @@ enum { SIMD_BASELINE = 0, SIMD_AVX2 = 1, SIMD_AVX512 = 2 };
 ** register count and three-operand forms take 1-2% off the scalar parts of
 ** the stages. */
 #define SIMD_TARGET_AVX2 _Pragma("GCC target(\"avx2,bmi,bmi2\")")
-#define SIMD_TARGET_AVX512 _Pragma("GCC target(\"avx2,avx512f\")")
+#define SIMD_TARGET_AVX512 _Pragma("GCC target(\"avx2,bmi,bmi2,avx512f\")")
 
 /* the best instance this CPU can run */
 static inline int simd_detect(void)

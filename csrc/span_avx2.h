@@ -78,6 +78,41 @@ AVX2_INLINE void avx2_store3x4_32(__m128i a, __m128i b, __m128i c, void *out)
     _mm256_storeu_si256((__m256i *)out, first);
     _mm_storeu_si128((__m128i *)((char *)out + 32), last);
 }
+
+/* The texel words of a bilinear group of eight fragments (every build's
+** kernel): lanes xa, xb the columns and ya, yb the rows of its four texels
+** on a level w texels wide of `total` texels, g[0..3] the words at (xa, ya),
+** (xb, ya), (xa, yb), (xb, yb). Where every lane reads the same two rows
+** and its columns lie in the eight from lane 0's xa on (a magnified or
+** axis-aligned texture: blits, sprites, screen-aligned quads), a load of
+** eight texels from each row and four permutations give the words the
+** gathers would, in a fraction of their time on CPUs whose gathers are
+** slow. 0 (g untouched) where that does not hold or a load would pass the
+** level's end. */
+AVX2_INLINE int avx2_row_texels8(const void *texels, int64_t w, int64_t total, __m256i xa, __m256i xb, __m256i ya,
+                                 __m256i yb, __m256i g[4])
+{
+    const __m256i lane0 = _mm256_setzero_si256();
+    const __m256i x0 = _mm256_permutevar8x32_epi32(xa, lane0);
+    const __m256i da = _mm256_sub_epi32(xa, x0), db = _mm256_sub_epi32(xb, x0);
+    const __m256i same_rows = _mm256_and_si256(_mm256_cmpeq_epi32(ya, _mm256_permutevar8x32_epi32(ya, lane0)),
+                                               _mm256_cmpeq_epi32(yb, _mm256_permutevar8x32_epi32(yb, lane0)));
+    if (_mm256_movemask_epi8(same_rows) != -1
+        || !_mm256_testz_si256(_mm256_or_si256(da, db), _mm256_set1_epi32(~7)))
+        return 0;
+    const int64_t col = _mm256_cvtsi256_si32(xa);
+    const int64_t first0 = _mm256_cvtsi256_si32(ya) * w + col, first1 = _mm256_cvtsi256_si32(yb) * w + col;
+    if (first0 + 8 > total || first1 + 8 > total)
+        return 0;
+    const int *tx32 = texels;
+    const __m256i row0 = _mm256_loadu_si256((const __m256i *)(const void *)(tx32 + first0));
+    const __m256i row1 = _mm256_loadu_si256((const __m256i *)(const void *)(tx32 + first1));
+    g[0] = _mm256_permutevar8x32_epi32(row0, da);
+    g[1] = _mm256_permutevar8x32_epi32(row0, db);
+    g[2] = _mm256_permutevar8x32_epi32(row1, da);
+    g[3] = _mm256_permutevar8x32_epi32(row1, db);
+    return 1;
+}
 #endif
 
 #if SIMD_X86 && NUM_IS_FIXED
@@ -431,37 +466,6 @@ AVX2_INLINE void avx2_linear_axis8(__m256i lo, __m256i hi, int log2n, int repeat
     *w = _mm256_srli_epi32(_mm256_sll_epi32(g, up), 16);
 }
 
-/* the texel words g[0..3] of avx2_linear_texels8 where every lane reads the
-** same two rows and its columns lie in the eight from lane 0's xa on (a
-** magnified or axis-aligned texture: blits, sprites, screen-aligned
-** quads): a load of eight texels from each row and four permutations in
-** place of the gathers, the same words. 0 (g untouched) where that does
-** not hold or a load would pass the level's end. */
-AVX2_INLINE int avx2_row_texels8(const int *tx32, int log2w, int log2h, __m256i xa, __m256i xb, __m256i ya,
-                                 __m256i yb, __m256i g[4])
-{
-    const __m256i lane0 = _mm256_setzero_si256();
-    const __m256i x0 = _mm256_permutevar8x32_epi32(xa, lane0);
-    const __m256i da = _mm256_sub_epi32(xa, x0), db = _mm256_sub_epi32(xb, x0);
-    const __m256i same_rows = _mm256_and_si256(_mm256_cmpeq_epi32(ya, _mm256_permutevar8x32_epi32(ya, lane0)),
-                                               _mm256_cmpeq_epi32(yb, _mm256_permutevar8x32_epi32(yb, lane0)));
-    if (_mm256_movemask_epi8(same_rows) != -1
-        || !_mm256_testz_si256(_mm256_or_si256(da, db), _mm256_set1_epi32(~7)))
-        return 0;
-    const int64_t col = _mm256_cvtsi256_si32(xa), end = (int64_t)1 << (log2w + log2h);
-    const int64_t first0 = ((int64_t)_mm256_cvtsi256_si32(ya) << log2w) + col;
-    const int64_t first1 = ((int64_t)_mm256_cvtsi256_si32(yb) << log2w) + col;
-    if (first0 + 8 > end || first1 + 8 > end)
-        return 0;
-    const __m256i row0 = _mm256_loadu_si256((const __m256i *)(const void *)(tx32 + first0));
-    const __m256i row1 = _mm256_loadu_si256((const __m256i *)(const void *)(tx32 + first1));
-    g[0] = _mm256_permutevar8x32_epi32(row0, da);
-    g[1] = _mm256_permutevar8x32_epi32(row0, db);
-    g[2] = _mm256_permutevar8x32_epi32(row1, da);
-    g[3] = _mm256_permutevar8x32_epi32(row1, db);
-    return 1;
-}
-
 /* the four texels and the weights of sample_level's GL_LINEAR for the
 ** coordinates c[0..7] on a power-of-two level (2^log2w texels wide), REPEAT
 ** or CLAMP_TO_EDGE on each axis: g[0..3] the texel words at (i0, j0),
@@ -475,7 +479,7 @@ AVX2_INLINE void avx2_linear_texels8(const int *tx32, int log2w, int log2h, cons
     avx2_load_st8(c, &s_lo, &s_hi, &t_lo, &t_hi);
     avx2_linear_axis8(s_lo, s_hi, log2w, repeat_s, &xa, &xb, a);
     avx2_linear_axis8(t_lo, t_hi, log2h, repeat_t, &ya, &yb, b);
-    if (rows && avx2_row_texels8(tx32, log2w, log2h, xa, xb, ya, yb, g))
+    if (rows && avx2_row_texels8(tx32, (int64_t)1 << log2w, (int64_t)1 << (log2w + log2h), xa, xb, ya, yb, g))
         return;
     const __m256i r0 = _mm256_slli_epi32(ya, log2w), r1 = _mm256_slli_epi32(yb, log2w);
     if (_mm256_movemask_epi8(_mm256_cmpeq_epi32(xb, _mm256_add_epi32(xa, _mm256_set1_epi32(1)))) == -1) {
@@ -540,12 +544,12 @@ AVX2_INLINE const TexCoord *avx2_group8_coords(const TexCoord *c, int j, int n, 
 }
 
 static inline void avx2_sample_linear(const TexImage *li, int n, const TexCoord *c, FRAGV *out, size_t stride,
-                                    int repeat_s, int repeat_t)
+                                    int repeat_s, int repeat_t, int rows)
 {
     for (int j = 0; j < n; j += 8) {
         TexCoord pad[8];
         __m256i ch[4];
-        avx2_linear_channels8(li, avx2_group8_coords(c, j, n, pad), repeat_s, repeat_t, 1, ch);
+        avx2_linear_channels8(li, avx2_group8_coords(c, j, n, pad), repeat_s, repeat_t, rows, ch);
         for (int h = 0; h < (j + 8 > n ? 1 : 2); h++) {
             __m256i v[4];
             for (int k = 0; k < 4; k++)

@@ -87,7 +87,7 @@ AVX512_INLINE void v8_bilerp8(const __m256i g[4], __m512d a, __m512d b, double *
 ** which one is not finite; returns the number of fragments done */
 static __attribute__((noinline)) int avx512_sample_linear_real(const TexImage *li, int n, const TexCoord *c,
                                                                double *out, size_t stride, int repeat_s,
-                                                               int repeat_t)
+                                                               int repeat_t, int rows)
 {
     const int w = li->width, h = li->height;
     const int *t32 = (const int *)(const void *)li->texels;
@@ -105,12 +105,15 @@ static __attribute__((noinline)) int avx512_sample_linear_real(const TexImage *l
         __m512d a, b;
         v8_linear_axis(s, w, repeat_s, &x0, &x1, &a);
         v8_linear_axis(t, h, repeat_t, &y0, &y1, &b);
-        const __m256i r0 = _mm256_mullo_epi32(y0, _mm256_set1_epi32(w));
-        const __m256i r1 = _mm256_mullo_epi32(y1, _mm256_set1_epi32(w));
-        const __m256i g[4] = { _mm256_i32gather_epi32(t32, _mm256_add_epi32(r0, x0), 4),
-                               _mm256_i32gather_epi32(t32, _mm256_add_epi32(r0, x1), 4),
-                               _mm256_i32gather_epi32(t32, _mm256_add_epi32(r1, x0), 4),
-                               _mm256_i32gather_epi32(t32, _mm256_add_epi32(r1, x1), 4) };
+        __m256i g[4];
+        if (!rows || !avx2_row_texels8(t32, w, (int64_t)w * h, x0, x1, y0, y1, g)) {
+            const __m256i r0 = _mm256_mullo_epi32(y0, _mm256_set1_epi32(w));
+            const __m256i r1 = _mm256_mullo_epi32(y1, _mm256_set1_epi32(w));
+            g[0] = _mm256_i32gather_epi32(t32, _mm256_add_epi32(r0, x0), 4);
+            g[1] = _mm256_i32gather_epi32(t32, _mm256_add_epi32(r0, x1), 4);
+            g[2] = _mm256_i32gather_epi32(t32, _mm256_add_epi32(r1, x0), 4);
+            g[3] = _mm256_i32gather_epi32(t32, _mm256_add_epi32(r1, x1), 4);
+        }
         v8_bilerp8(g, a, b, out + (size_t)j * stride, stride);
     }
     return j;

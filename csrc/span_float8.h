@@ -204,9 +204,9 @@ AVX2_INLINE f8_num f8_byte(f8_i32 g, int i) { return f8_from_unorm((g >> (8 * i)
 /* the texels of coordinates tc[0..F8_N-1] on a w x h level (powers of
 ** two; REPEAT or CLAMP_TO_EDGE per axis) as sample_level's GL_LINEAR gives
 ** them (frag_bilerp_rgba8's operations); 0 when a coordinate is not
-** finite */
-AVX2_INLINE int f8_sample_level(const uint32_t *texels, int w, int h, int repeat_s, int repeat_t, const TexCoord *tc,
-                                f8_num T[4])
+** finite. `rows`: try avx2_row_texels8's loads before the gathers. */
+AVX2_INLINE int f8_sample_level(const uint32_t *texels, int w, int h, int repeat_s, int repeat_t, int rows,
+                                const TexCoord *tc, f8_num T[4])
 {
     f8_num s, t;
     f8_coords(tc, &s, &t);
@@ -217,9 +217,15 @@ AVX2_INLINE int f8_sample_level(const uint32_t *texels, int w, int h, int repeat
     f8_num a, b;
     f8_linear_axis(s, w, repeat_s, &x0, &x1, &a);
     f8_linear_axis(t, h, repeat_t, &y0, &y1, &b);
-    const f8_i32 r0 = y0 * w, r1 = y1 * w;
-    const f8_i32 g00 = f8_gather_words(texels, r0 + x0), g10 = f8_gather_words(texels, r0 + x1);
-    const f8_i32 g01 = f8_gather_words(texels, r1 + x0), g11 = f8_gather_words(texels, r1 + x1);
+    f8_i32 g00, g10, g01, g11;
+    __m256i g[4];
+    if (rows && avx2_row_texels8(texels, w, (int64_t)w * h, (__m256i)x0, (__m256i)x1, (__m256i)y0, (__m256i)y1, g)) {
+        g00 = (f8_i32)g[0], g10 = (f8_i32)g[1], g01 = (f8_i32)g[2], g11 = (f8_i32)g[3];
+    } else {
+        const f8_i32 r0 = y0 * w, r1 = y1 * w;
+        g00 = f8_gather_words(texels, r0 + x0), g10 = f8_gather_words(texels, r0 + x1);
+        g01 = f8_gather_words(texels, r1 + x0), g11 = f8_gather_words(texels, r1 + x1);
+    }
     const f8_num ia = 1 - a, ib = 1 - b;
     for (int i = 0; i < 4; i++) {
         const f8_num top = f8_byte(g00, i) * ia + f8_byte(g10, i) * a;
@@ -232,7 +238,7 @@ AVX2_INLINE int f8_sample_level(const uint32_t *texels, int w, int h, int repeat
 /* the fused stage's texture at tc[0..F8_N-1] (f8_sample_level) */
 AVX2_INLINE int f8_sample(const F8ModWrite *m, const TexCoord *tc, f8_num T[4])
 {
-    return f8_sample_level(m->tx.texels, m->tx.w, m->tx.h, m->tx.repeat_s, m->tx.repeat_t, tc, T);
+    return f8_sample_level(m->tx.texels, m->tx.w, m->tx.h, m->tx.repeat_s, m->tx.repeat_t, 1, tc, T);
 }
 
 #if defined(GLES_NUM_FLOAT)
@@ -242,12 +248,12 @@ AVX2_INLINE int f8_sample(const F8ModWrite *m, const TexCoord *tc, f8_num T[4])
 ** stops before the first eight with a coordinate that is not finite and
 ** returns the count done (a multiple of 8; AVX2's four take the rest) */
 static int f8_sample_linear(const TexImage *li, int n, const TexCoord *c, float *out, size_t stride, int repeat_s,
-                            int repeat_t)
+                            int repeat_t, int rows)
 {
     int j = 0;
     for (; j + F8_N <= n; j += F8_N) {
         f8_num T[4];
-        if (!f8_sample_level(li->texels, li->width, li->height, repeat_s, repeat_t, c + j, T))
+        if (!f8_sample_level(li->texels, li->width, li->height, repeat_s, repeat_t, rows, c + j, T))
             break;
         /* four channel registers to eight fragments' four channels */
         const __m256 rg_lo = _mm256_unpacklo_ps((__m256)T[0], (__m256)T[1]);

@@ -234,22 +234,25 @@ static inline int linear_kernel_fits(const Texture *t, unsigned int ws, unsigned
 #if SIMD_X86
 /* the vector kernel of this build and instance (simd: SIMD_AVX2 or
 ** SIMD_AVX512) over the first n (a multiple of 4) of a level's GL_LINEAR
-** samples; returns how many it did from the start */
+** samples; returns how many it did from the start. `rows`: the level is
+** read where it is not minified past the next level (a lone level, not
+** one of a trilinear pair), so groups of eight often read one row's
+** neighbouring texels (avx2_row_texels8) */
 static inline int sample_linear4(int simd, const TexImage *li, int n, const TexCoord *c, FRAGV *out, size_t stride,
-                                 int rs, int rt)
+                                 int rs, int rt, int rows)
 {
 #if NUM_IS_FIXED
     (void)simd;
-    avx2_sample_linear(li, n, c, out, stride, rs, rt);
+    avx2_sample_linear(li, n, c, out, stride, rs, rt, rows);
     return n;
 #else
     int j = 0;
 #if SIMD_AVX512_INSTANCE
     if (simd >= SIMD_AVX512)    /* eight at a time, the last four (or from a coordinate not finite) by AVX2 */
-        j = avx512_sample_linear_real(li, n, c, out, stride, rs, rt);
+        j = avx512_sample_linear_real(li, n, c, out, stride, rs, rt, rows);
 #elif defined(GLES_NUM_FLOAT)
     (void)simd;
-    j = f8_sample_linear(li, n, c, out, stride, rs, rt);     /* eight at a time in AVX2's float lanes, likewise */
+    j = f8_sample_linear(li, n, c, out, stride, rs, rt, rows);     /* eight at a time in AVX2's float lanes, likewise */
 #else
     (void)simd;
 #endif
@@ -265,7 +268,7 @@ static inline int linear_block(int simd, const Texture *t, int n, const TexCoord
 {
 #if SIMD_X86
     if (linear_kernel_fits(t, ws, wt))
-        return sample_linear4(simd, &t->level[0], n & ~3, c, out, stride, ws == GL_REPEAT, wt == GL_REPEAT);
+        return sample_linear4(simd, &t->level[0], n & ~3, c, out, stride, ws == GL_REPEAT, wt == GL_REPEAT, 1);
 #endif
     (void)simd, (void)t, (void)n, (void)c, (void)out, (void)stride, (void)ws, (void)wt;
     return 0;
@@ -558,7 +561,7 @@ static int lod_block(int simd, const Texture *t, int n, const TexCoord *c, const
             const size_t dstride = k ? 4 : stride;
             const int done = mixed ? mixed
                            : m4    ? sample_linear4(simd, &t->level[level + k], m4, c + j, dst, dstride,
-                                                    ws == GL_REPEAT, wt == GL_REPEAT)
+                                                    ws == GL_REPEAT, wt == GL_REPEAT, !two)
                                    : 0;
             for (int i = done; i < e - j; i++)
                 sample_level(t, level + k, filter, c[j + i].s, c[j + i].t, dst + (size_t)i * dstride, unorm, ws,
