@@ -144,19 +144,10 @@ static inline uint32_t span_flat_word(const uint32_t (*table)[256], uint32_t d)
 ** l2 taken out, z0 + l1 (z1 - z0) + l2 (z2 - z0), and the colour likewise
 ** (v4_lerp_deltas): the same integers. The constants are the triangle's,
 ** found at its first row. */
-static void span_smooth_setup(const TriSetup *t, SmoothStep *s)
+static void span_smooth_setup(const TriSetup *t, SmoothStep *s, int colour_ok)
 {
     const WgtSetup *ws = &t->wgt;
-    s->ok = ws->eshift == 0 && ws->lin_recip > 0;
-    /* the colour's differences as vpmuldq's int32 operands */
-    for (int i = 0; i < 4; i++) {
-        const FRAGV a0 = t->col[0][i], d1 = t->col[1][i] - a0, d2 = t->col[2][i] - a0;
-        if (a0 < INT32_MIN || a0 > INT32_MAX || d1 < INT32_MIN || d1 > INT32_MAX || d2 < INT32_MIN || d2 > INT32_MAX)
-            s->ok = 0;
-        s->base[i] = a0 * ((int64_t)1 << 30) + ((int64_t)1 << 29);
-        s->d1[i] = d1;
-        s->d2[i] = d2;
-    }
+    s->ok = colour_ok && ws->eshift == 0 && ws->lin_recip > 0;
     if (!s->ok)
         return;
     s->affine = ws->affine;

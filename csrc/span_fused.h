@@ -23,9 +23,21 @@ static inline __attribute__((always_inline)) int SPAN_FN(span_smooth_stepped)(Gl
                                                                               uint32_t *zb, int n, const int depth,
                                                                               const int blend)
 {
-    const SmoothStep *s = &ctx->smooth_step;
+    SmoothStep *const s = &ctx->smooth_step;
     if (ctx->smooth_serial != t->serial) {
-        span_smooth_setup(t, &ctx->smooth_step);
+        /* the vector instance's colour as v4_lerp_deltas takes it: the
+        ** differences are vpmuldq's int32 operands */
+#if CHAIN_SIMD
+        const V4 a0 = v4_load(t->col[0]);
+        const V4 d1 = _mm256_sub_epi64(v4_load(t->col[1]), a0), d2 = _mm256_sub_epi64(v4_load(t->col[2]), a0);
+        const int colour_ok = v4_lerp_fits(a0) && v4_lerp_fits(d1) && v4_lerp_fits(d2);
+        v4_store(s->base, v4_lerp_base(a0));
+        v4_store(s->d1, d1);
+        v4_store(s->d2, d2);
+#else
+        const int colour_ok = 1;    /* (frag_lerp3f takes any colour) */
+#endif
+        span_smooth_setup(t, s, colour_ok);
         ctx->smooth_serial = t->serial;
     }
     if (!s->ok)

@@ -228,7 +228,7 @@ typedef struct SmoothStep {
     uint64_t mant[3];           /* wgt_persp's mantissas (0 where n_i is 0) */
     uint64_t per_step[3];       /* e_i mant_i from one column to the next */
     int64_t zbase, dz1, dz2;    /* wgt_depth3 as zbase + l1 dz1 + l2 dz2 */
-    FRAGV base[4], d1[4], d2[4];  /* the colour as v4_lerp_deltas takes it */
+    FRAGV base[4], d1[4], d2[4];  /* the colour as v4_lerp_deltas takes it (the vector instance) */
 } SmoothStep;
 
 struct GlesContext {
