@@ -3,7 +3,7 @@
 ** run time. The shipped core is compiled for the baseline of its target
 ** (SSE2 on x86-64); on x86-64 with GCC the span chain and the texture
 ** samplers also have an AVX2 instance (span_stages.h, texsample.c), taken
-** when the CPU and the OS support AVX2 (with BMI1 and BMI2). The double
+** when the CPU and the OS support AVX2 (with BMI1, BMI2 and FMA). The double
 ** build's bilinear kernel and RGBA8888 writers have AVX-512F instances
 ** besides (span_avx512.h),
 ** eight fragments to a register where AVX2 holds four; the fixed and float
@@ -30,19 +30,22 @@ enum { SIMD_BASELINE = 0, SIMD_AVX2 = 1, SIMD_AVX512 = 2 };
 #endif
 
 /* the instructions of the vector instance, for the code that follows (in
-** a push_options / pop_options pair). BMI1 and BMI2 come with AVX2 on every
-** CPU that has it (Haswell, Excavator, Zen and later); their shifts by a
-** register count and three-operand forms take 1-2% off the scalar parts of
-** the stages. */
-#define SIMD_TARGET_AVX2 _Pragma("GCC target(\"avx2,bmi,bmi2\")")
-#define SIMD_TARGET_AVX512 _Pragma("GCC target(\"avx2,bmi,bmi2,avx512f\")")
+** a push_options / pop_options pair). BMI1, BMI2 and FMA come with AVX2 on
+** every CPU that has it (Haswell, Excavator, Zen and later); BMI2's shifts
+** by a register count take 1-2% off the stages' scalar parts, and the fixed
+** build's float-lane kernels (span_avx2.h's modulate-write) fuse their
+** products and sums. The core is compiled with -ffp-contract=off, so no
+** other a * b + c becomes an FMA: the float builds keep their operations. */
+#define SIMD_TARGET_AVX2 _Pragma("GCC target(\"avx2,bmi,bmi2,fma\")")
+#define SIMD_TARGET_AVX512 _Pragma("GCC target(\"avx2,bmi,bmi2,fma,avx512f\")")
 
 /* the best instance this CPU can run */
 static inline int simd_detect(void)
 {
 #if SIMD_X86
     __builtin_cpu_init();
-    if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("bmi") || !__builtin_cpu_supports("bmi2"))
+    if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("bmi") || !__builtin_cpu_supports("bmi2")
+        || !__builtin_cpu_supports("fma"))
         return SIMD_BASELINE;
     return SIMD_AVX512_INSTANCE && __builtin_cpu_supports("avx512f") ? SIMD_AVX512 : SIMD_AVX2;
 #else

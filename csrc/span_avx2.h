@@ -2113,9 +2113,9 @@ AVX2_INLINE void avx2_bilerp8_float(const __m256i g[4], __m256i a, __m256i b, __
         __m256 c[4];
         for (int q = 0; q < 4; q++)
             c[q] = _mm256_cvtepi32_ps(_mm256_shuffle_epi8(g[q], pick));
-        const __m256 h0 = _mm256_add_ps(_mm256_mul_ps(c[0], iaf), _mm256_mul_ps(c[1], af));
-        const __m256 h1 = _mm256_add_ps(_mm256_mul_ps(c[2], iaf), _mm256_mul_ps(c[3], af));
-        T[i] = _mm256_add_ps(_mm256_mul_ps(h0, ibk), _mm256_mul_ps(h1, bk));
+        const __m256 h0 = _mm256_fmadd_ps(c[0], iaf, _mm256_mul_ps(c[1], af));
+        const __m256 h1 = _mm256_fmadd_ps(c[2], iaf, _mm256_mul_ps(c[3], af));
+        T[i] = _mm256_fmadd_ps(h0, ibk, _mm256_mul_ps(h1, bk));
     }
 }
 
@@ -2126,8 +2126,8 @@ AVX2_INLINE void avx2_dot3_float(int rgba, const __m256 T0[4], __m256 c[4])
 {
     const __m256 half = _mm256_set1_ps(0.5f);
     __m256 s = _mm256_mul_ps(_mm256_sub_ps(T0[0], half), _mm256_sub_ps(c[0], half));
-    s = _mm256_add_ps(s, _mm256_mul_ps(_mm256_sub_ps(T0[1], half), _mm256_sub_ps(c[1], half)));
-    s = _mm256_add_ps(s, _mm256_mul_ps(_mm256_sub_ps(T0[2], half), _mm256_sub_ps(c[2], half)));
+    s = _mm256_fmadd_ps(_mm256_sub_ps(T0[1], half), _mm256_sub_ps(c[1], half), s);
+    s = _mm256_fmadd_ps(_mm256_sub_ps(T0[2], half), _mm256_sub_ps(c[2], half), s);
     const __m256 d = _mm256_min_ps(_mm256_max_ps(_mm256_mul_ps(s, _mm256_set1_ps(4.0f)), _mm256_setzero_ps()),
                                    _mm256_set1_ps(1.0f));
     c[3] = rgba ? d : _mm256_mul_ps(T0[3], c[3]);
@@ -2160,9 +2160,8 @@ AVX2_INLINE void avx2_modwrite_source8(const Avx2ModWrite *m, int smooth, int do
                                              _mm256_andnot_ps(sign, w2));
             *bad = _mm256_cmp_ps(mag, _mm256_set1_ps(0x1.02p30f), _CMP_GT_OQ);
             for (int i = 0; i < 4; i++) {
-                const __m256 sum = _mm256_add_ps(_mm256_mul_ps(m->col[0][i], w0),
-                                                 _mm256_add_ps(_mm256_mul_ps(m->col[1][i], w1),
-                                                               _mm256_mul_ps(m->col[2][i], w2)));
+                const __m256 sum = _mm256_fmadd_ps(m->col[0][i], w0,
+                                                   _mm256_fmadd_ps(m->col[1][i], w1, _mm256_mul_ps(m->col[2][i], w2)));
                 c[i] = _mm256_min_ps(_mm256_max_ps(sum, zero), one);
             }
         } else {
@@ -2179,8 +2178,8 @@ AVX2_INLINE void avx2_modwrite_source8(const Avx2ModWrite *m, int smooth, int do
     *pass = _mm256_set1_epi32(-1);
     if (m->alpha.test) {
         /* fragment_alpha8 of the alpha, proved as the bytes are */
-        const __m256i a8 = avx2_floor_proved(_mm256_add_ps(_mm256_mul_ps(y[3], _mm256_set1_ps(255.0f)),
-                                                           _mm256_set1_ps(0.5f)), bad);
+        const __m256i a8 = avx2_floor_proved(_mm256_fmadd_ps(y[3], _mm256_set1_ps(255.0f), _mm256_set1_ps(0.5f)),
+                                             bad);
         *pass = avx2_cmp_i32(&m->alpha.cmp, a8, m->alpha.ref_v);
     }
 }
@@ -2203,14 +2202,13 @@ AVX2_INLINE unsigned avx2_modwrite8(const Avx2ModWrite *m, int smooth, int kind,
         for (int i = 0; i < 4; i++) {
             const __m256i di = i == 3 ? _mm256_srli_epi32(d, 24) : _mm256_and_si256(_mm256_srli_epi32(d, 8 * i), byte);
             const __m256 dv = _mm256_mul_ps(_mm256_cvtepi32_ps(di), inv255);
-            y[i] = kind == 1 ? _mm256_add_ps(_mm256_mul_ps(y[i], a), _mm256_mul_ps(dv, b))
+            y[i] = kind == 1 ? _mm256_fmadd_ps(y[i], a, _mm256_mul_ps(dv, b))
                              : _mm256_min_ps(_mm256_add_ps(y[i], dv), one);
         }
     }
     __m256i v[4];
     for (int i = 0; i < 4; i++)
-        v[i] = avx2_floor_proved(_mm256_add_ps(_mm256_mul_ps(y[i], _mm256_set1_ps(255.0f)), _mm256_set1_ps(0.5f)),
-                                 &bad);
+        v[i] = avx2_floor_proved(_mm256_fmadd_ps(y[i], _mm256_set1_ps(255.0f), _mm256_set1_ps(0.5f)), &bad);
     const __m256i w = avx2_pack_rgba8x8(v);
     /* a fragment that fails the alpha test leaves the stored word */
     *out = _mm256_blendv_epi8(d, w, pass);
@@ -2233,7 +2231,7 @@ AVX2_INLINE unsigned avx2_modwrite565_8(const Avx2ModWrite *m, int smooth, int k
             const int maxval = (1 << bits[i]) - 1;
             const __m256i di = _mm256_and_si256(_mm256_srli_epi32(d, shift[i]), _mm256_set1_epi32(maxval));
             const __m256 dv = _mm256_mul_ps(_mm256_cvtepi32_ps(di), _mm256_set1_ps(1.0f / (float)maxval));
-            y[i] = _mm256_add_ps(_mm256_mul_ps(y[i], a), _mm256_mul_ps(dv, b));
+            y[i] = _mm256_fmadd_ps(y[i], a, _mm256_mul_ps(dv, b));
         }
     }
     /* dither: floor(y maxval + t), else the top bits floor(y 2^bits),
@@ -2242,7 +2240,7 @@ AVX2_INLINE unsigned avx2_modwrite565_8(const Avx2ModWrite *m, int smooth, int k
     __m256i w = _mm256_setzero_si256();
     for (int i = 0; i < 3; i++) {
         const int maxval = (1 << bits[i]) - 1;
-        const __m256 z = m->dither ? _mm256_add_ps(_mm256_mul_ps(y[i], _mm256_set1_ps((float)maxval)), t)
+        const __m256 z = m->dither ? _mm256_fmadd_ps(y[i], _mm256_set1_ps((float)maxval), t)
                                    : _mm256_mul_ps(y[i], _mm256_set1_ps((float)(1 << bits[i])));
         const __m256i v = _mm256_min_epi32(avx2_floor_proved_upto(z, (float)maxval, &bad), _mm256_set1_epi32(maxval));
         w = _mm256_or_si256(w, _mm256_slli_epi32(v, shift[i]));
