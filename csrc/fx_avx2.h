@@ -28,8 +28,10 @@ FXV_INLINE __m256i fxv_log2(__m256i x)
     const __m256i m = _mm256_sllv_epi64(x, _mm256_sub_epi64(_mm256_set1_epi64x(1053), e)); /* x << (31 - b) */
     const __m256i frac = _mm256_sub_epi64(m, _mm256_set1_epi64x((int64_t)1 << 30));
     const __m256i i = _mm256_srli_epi64(frac, 22);
-    const __m256i rt = _mm256_i64gather_epi64((const long long *)(const void *)fx_recip_tab, i, 8);
-    const __m256i lt = _mm256_i64gather_epi64((const long long *)(const void *)fx_log2_tab, i, 8);
+    /* both tables' row i in one gather (fx_log2_recip_tab): the
+    ** reciprocal is the low dword, which vpmuludq reads */
+    const __m256i rt = _mm256_i64gather_epi64((const long long *)(const void *)fx_log2_recip_tab, i, 8);
+    const __m256i lt = _mm256_srli_epi64(rt, 32);
     const __m256i y = _mm256_srli_epi64(
         _mm256_mul_epu32(_mm256_and_si256(frac, _mm256_set1_epi64x((1 << 22) - 1)), rt), 30);
     const __m256i y2 = _mm256_srli_epi64(_mm256_mul_epu32(y, y), 30);

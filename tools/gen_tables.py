@@ -25,10 +25,16 @@ def main() -> None:
     recip_tab = [rnd(ONE30 / (1 + Decimal(i) / 256)) for i in range(256)]
     exp2_tab = [rnd((LN2 * Decimal(i) / 256).exp() * ONE30) for i in range(257)]
 
-    def arr(name: str, vals: list[int], comment: str) -> list[str]:
-        out = [f"/* {comment} */", f"static const int64_t {name}[{len(vals)}] = {{"]
+    # both of row i in one 64-bit word, for a vector lookup of one gather
+    # (each below 2^31: log2 < 2^30, the reciprocal at most 2^30)
+    assert all(0 <= v < 2**31 for v in log2_tab + recip_tab)
+    pair_tab = [(log2_tab[i] << 32) | recip_tab[i] for i in range(256)]
+
+    def arr(name: str, vals: list[int], comment: str, ctype: str = "int64_t",
+            suffix: str = "LL") -> list[str]:
+        out = [f"/* {comment} */", f"static const {ctype} {name}[{len(vals)}] = {{"]
         for k in range(0, len(vals), 6):
-            out.append("    " + ", ".join(f"{v}LL" for v in vals[k:k + 6]) + ",")
+            out.append("    " + ", ".join(f"{v}{suffix}" for v in vals[k:k + 6]) + ",")
         out.append("};")
         return out
 
@@ -42,6 +48,9 @@ def main() -> None:
     lines += arr("fx_log2_tab", log2_tab, "log2(1 + i/256), i = 0..256")
     lines += arr("fx_recip_tab", recip_tab, "1 / (1 + i/256), i = 0..255")
     lines += arr("fx_exp2_tab", exp2_tab, "2^(i/256), i = 0..256")
+    lines += arr("fx_log2_recip_tab", pair_tab,
+                 "fx_log2_tab[i] << 32 | fx_recip_tab[i], i = 0..255 (the vector code's one lookup)",
+                 "uint64_t", "ULL")
     lines += ["#endif", ""]
     out = Path(__file__).resolve().parent.parent / "csrc" / "tables.h"
     out.write_text("\n".join(lines))
