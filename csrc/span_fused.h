@@ -125,8 +125,7 @@ static inline __attribute__((always_inline)) void SPAN_FN(span_fused)(GlesContex
     ** alone: a table of them once the colour has blended enough fragments */
     const uint32_t (*const table)[256] = !smooth && blend ? span_flat_table(ctx, sterm, da, blend, n) : NULL;
     if (!smooth && !depth && table) {
-        for (int k = 0; k < n; k++)
-            dst[k] = span_flat_word(table, dst[k]);
+        span_flat_run(table, dst, n);
         return;
     }
 #if CHAIN_SIMD
