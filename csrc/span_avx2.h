@@ -2382,7 +2382,9 @@ AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *mw, const FRAGV *const a[
         const __m256i idx = _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)&k[j]));
         /* the stored words, where the blend or the alpha test reads them */
         __m256i d;
-        if (rgb565) {
+        if (rgb565 && run) {
+            d = _mm256_cvtepu16_epi32(_mm_loadu_si128((const __m128i *)(const void *)&dst16[k[j]]));
+        } else if (rgb565) {
             uint16_t w16[8];
             for (int i = 0; i < 8; i++)
                 w16[i] = dst16[k[j + i]];
@@ -2412,10 +2414,15 @@ AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *mw, const FRAGV *const a[
                 if (bad >> i & 1u)
                     words[i] = MODWRITE_EXACT(j + i, before[i]);
         }
-        if (rgb565)
+        if (rgb565 && run) {
+            /* the eight words' low halves (each below 2^16), in order */
+            const __m256i wv = _mm256_loadu_si256((const __m256i *)(const void *)words);
+            const __m128i packed = _mm_packus_epi32(_mm256_castsi256_si128(wv), _mm256_extracti128_si256(wv, 1));
+            _mm_storeu_si128((__m128i *)(void *)&dst16[k[j]], packed);
+        } else if (rgb565) {
             for (int i = 0; i < 8; i++)
                 dst16[k[j + i]] = (uint16_t)words[i];
-        else if (run)
+        } else if (run)
             memcpy(&dst32[k[j]], words, sizeof words);
         else
             for (int i = 0; i < 8; i++)
