@@ -1118,6 +1118,21 @@ AVX2_INLINE V4 v4_alpha(V4 a) { return _mm256_permute4x64_pd(a, 0xFF); }
 ** convert to double exactly, and in the float build from there to float
 ** with one rounding, as (NUM)e does; then the scalar code's IEEE operations
 ** in its order. Stored as out[lane][0..2]. */
+/* the edge values' doubles d (exact integers) as the build's numbers,
+** (NUM)e as wgt_persp converts them */
+AVX2_INLINE V4 v4_edge_num(__m256d d)
+{
+#if defined(GLES_NUM_FLOAT)
+    return _mm256_cvtpd_ps(d);
+#else
+    return d;
+#endif
+}
+
+/* v4_persp4's weights from the edge values ev as the build's numbers
+** (ev[0] read only where the triangle is not affine) */
+AVX2_INLINE void v4_persp4_ev(const WgtSetup *s, const V4 ev[3], WGT (*out)[3]);
+
 AVX2_INLINE int v4_persp4(const WgtSetup *s, const __m256i e[3], WGT (*out)[3])
 {
     const __m256i bias = _mm256_set1_epi64x((int64_t)1 << 51);
@@ -1126,12 +1141,14 @@ AVX2_INLINE int v4_persp4(const WgtSetup *s, const __m256i e[3], WGT (*out)[3])
         /* e + 2^51 in [0, 2^52) */
         if (!_mm256_testz_si256(_mm256_add_epi64(e[i], bias), _mm256_set1_epi64x(~(((int64_t)1 << 52) - 1))))
             return 0;
-#if defined(GLES_NUM_FLOAT)
-        ev[i] = _mm256_cvtpd_ps(avx2_i64_to_pd(e[i]));
-#else
-        ev[i] = avx2_i64_to_pd(e[i]);
-#endif
+        ev[i] = v4_edge_num(avx2_i64_to_pd(e[i]));
     }
+    v4_persp4_ev(s, ev, out);
+    return 1;
+}
+
+AVX2_INLINE void v4_persp4_ev(const WgtSetup *s, const V4 ev[3], WGT (*out)[3])
+{
     V4 o1, o2;
     if (s->affine) {
         o1 = V4_OP(mul)(ev[1], V4_OP(set1)(s->inv_area));
@@ -1157,7 +1174,6 @@ AVX2_INLINE int v4_persp4(const WgtSetup *s, const __m256i e[3], WGT (*out)[3])
     _mm256_storeu_pd(d + 8, _mm256_blend_pd(_mm256_blend_pd(bc, _mm256_permute4x64_pd(o2, 0xAA), 1),
                                             _mm256_permute4x64_pd(o0, 0xFF), 2));
 #endif
-    return 1;
 }
 
 AVX2_INLINE V4 v4_load(const FRAGV *c) { return V4_OP(loadu)(c); }

@@ -107,6 +107,61 @@ static int STAGE(persp_affine_run)(const TriSetup *t, SpanBuf *b, int u)
 }
 #endif
 
+#if CHAIN_SIMD && !NUM_IS_FIXED
+/* whether slots 0..n4-1 are offsets (the chain's first stage) whose edge
+** values e0 + ea k (edges 1 and 2) stay integers of magnitude at most 2^51,
+** which holds wherever it does at k = 0 and k = n4 (with |ea| <= 2^44):
+** each double sum of STAGE(edge_steps) is then exact, the value the
+** conversion of the int64 gives */
+static inline int STAGE(edge_steps_exact)(const TriSetup *t, const SpanBuf *b, int n4)
+{
+    const uint64_t lim51 = (uint64_t)1 << 51, lim_ea = (uint64_t)1 << 44;
+    int steps = n4 && b->k[b->n - 1] == b->n - 1;
+    for (int i = 1; i <= 2 && steps; i++) {
+        /* -lim <= v < lim as one unsigned comparison of v + lim */
+        const int64_t first = b->e0[i];
+        steps = (uint64_t)t->ea[i] + lim_ea < 2 * lim_ea && (uint64_t)first + lim51 < 2 * lim51
+             && (uint64_t)(first + t->ea[i] * n4) + lim51 < 2 * lim51;
+    }
+    return steps;
+}
+
+/* edges 1 and 2's values at slots 0..3 as doubles, and their step to the
+** next four */
+static inline void STAGE(edge_steps)(const TriSetup *t, const SpanBuf *b, __m256d *d1, __m256d *d2, __m256d *step1,
+                                     __m256d *step2)
+{
+    const __m256d k4 = _mm256_setr_pd(0, 1, 2, 3);
+    const double a1 = (double)t->ea[1], a2 = (double)t->ea[2];
+    *d1 = _mm256_add_pd(_mm256_set1_pd((double)b->e0[1]), _mm256_mul_pd(k4, _mm256_set1_pd(a1)));
+    *d2 = _mm256_add_pd(_mm256_set1_pd((double)b->e0[2]), _mm256_mul_pd(k4, _mm256_set1_pd(a2)));
+    *step1 = _mm256_set1_pd(4 * a1);
+    *step2 = _mm256_set1_pd(4 * a2);
+}
+
+/* an affine triangle's weights (wgt_linear reads edges 1 and 2 alone)
+** four at a time from the stepped edge values, where STAGE(edge_steps)
+** is exact; returns the slots done */
+static int STAGE(persp_affine_steps)(const TriSetup *t, SpanBuf *b)
+{
+    const int n4 = b->n & ~3;
+    if (!t->wgt.affine || !STAGE(edge_steps_exact)(t, b, n4))
+        return 0;
+    __m256d d1, d2, step1, step2;
+    STAGE(edge_steps)(t, b, &d1, &d2, &step1, &step2);
+    /* the loop's constants in locals (stores to b->p could alias t and b) */
+    const WgtSetup ws = t->wgt;
+    WGT (*const p)[3] = b->p;
+    for (int j = 0; j < n4; j += 4) {
+        const V4 ev[3] = { v4_edge_num(d1), v4_edge_num(d1), v4_edge_num(d2) };
+        v4_persp4_ev(&ws, ev, &p[j]);
+        d1 = _mm256_add_pd(d1, step1);
+        d2 = _mm256_add_pd(d2, step2);
+    }
+    return n4;
+}
+#endif
+
 static void STAGE(stage_persp)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     (void)ctx;
@@ -121,6 +176,9 @@ static void STAGE(stage_persp)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
         b->tc_unit = u;
         b->tc_done = j;
     }
+#endif
+#if CHAIN_SIMD && !NUM_IS_FIXED
+    j = STAGE(persp_affine_steps)(t, b);
 #endif
 #if CHAIN_SIMD
     /* the loop's constants in locals (stores to b->p could alias t and b) */
@@ -301,25 +359,9 @@ static void STAGE(stage_depth)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
     if (!t->depth_offset && ctx->depth_max <= INT32_MAX) {
         const DEPTHV zv[3] = { t->v[0]->wz, t->v[1]->wz, t->v[2]->wz };
         const int n4 = b->n & ~3;
-        /* slots that are offsets (the chain's first stage): the edge values
-        ** e0 + ea k step by ea per slot, and stay integers of magnitude at
-        ** most 2^51 wherever they do at k = 0 and k = n4 (with |ea| <= 2^44):
-        ** each double sum is then exact, the value the conversion of the
-        ** int64 gives */
-        const uint64_t lim51 = (uint64_t)1 << 51, lim_ea = (uint64_t)1 << 44;
-        int steps = n4 && b->k[b->n - 1] == b->n - 1;
-        for (int i = 1; i <= 2 && steps; i++) {
-            /* -lim <= v < lim as one unsigned comparison of v + lim */
-            const int64_t first = b->e0[i];
-            steps = (uint64_t)t->ea[i] + lim_ea < 2 * lim_ea && (uint64_t)first + lim51 < 2 * lim51
-                 && (uint64_t)(first + t->ea[i] * n4) + lim51 < 2 * lim51;
-        }
-        if (steps) {
-            const __m256d k4 = _mm256_setr_pd(0, 1, 2, 3);
-            const double a1 = (double)t->ea[1], a2 = (double)t->ea[2];
-            __m256d d1 = _mm256_add_pd(_mm256_set1_pd((double)b->e0[1]), _mm256_mul_pd(k4, _mm256_set1_pd(a1)));
-            __m256d d2 = _mm256_add_pd(_mm256_set1_pd((double)b->e0[2]), _mm256_mul_pd(k4, _mm256_set1_pd(a2)));
-            const __m256d step1 = _mm256_set1_pd(4 * a1), step2 = _mm256_set1_pd(4 * a2);
+        if (STAGE(edge_steps_exact)(t, b, n4)) {
+            __m256d d1, d2, step1, step2;
+            STAGE(edge_steps)(t, b, &d1, &d2, &step1, &step2);
             /* the loop's constants in locals (the stores to b->z could alias fields) */
             const WgtSetup ws = t->wgt;
             const uint32_t top = ctx->depth_max;
