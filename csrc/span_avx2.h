@@ -113,6 +113,22 @@ AVX2_INLINE int avx2_row_texels8(const void *texels, int64_t w, int64_t total, _
     g[3] = _mm256_permutevar8x32_epi32(row1, db);
     return 1;
 }
+
+/* the same words by avx2_row_texels8 where `rows` asks for it and it
+** applies, else by four gathers of eight (the float and double builds'
+** kernels, on levels of any width) */
+AVX2_INLINE void avx2_texel_words8(const void *texels, int w, int64_t total, __m256i xa, __m256i xb, __m256i ya,
+                                   __m256i yb, int rows, __m256i g[4])
+{
+    if (rows && avx2_row_texels8(texels, w, total, xa, xb, ya, yb, g))
+        return;
+    const int *tx32 = texels;
+    const __m256i r0 = _mm256_mullo_epi32(ya, _mm256_set1_epi32(w)), r1 = _mm256_mullo_epi32(yb, _mm256_set1_epi32(w));
+    g[0] = _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r0, xa), 4);
+    g[1] = _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r0, xb), 4);
+    g[2] = _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r1, xa), 4);
+    g[3] = _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r1, xb), 4);
+}
 #endif
 
 #if SIMD_X86 && NUM_IS_FIXED

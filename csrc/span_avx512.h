@@ -106,14 +106,7 @@ static __attribute__((noinline)) int avx512_sample_linear_real(const TexImage *l
         v8_linear_axis(s, w, repeat_s, &x0, &x1, &a);
         v8_linear_axis(t, h, repeat_t, &y0, &y1, &b);
         __m256i g[4];
-        if (!rows || !avx2_row_texels8(t32, w, (int64_t)w * h, x0, x1, y0, y1, g)) {
-            const __m256i r0 = _mm256_mullo_epi32(y0, _mm256_set1_epi32(w));
-            const __m256i r1 = _mm256_mullo_epi32(y1, _mm256_set1_epi32(w));
-            g[0] = _mm256_i32gather_epi32(t32, _mm256_add_epi32(r0, x0), 4);
-            g[1] = _mm256_i32gather_epi32(t32, _mm256_add_epi32(r0, x1), 4);
-            g[2] = _mm256_i32gather_epi32(t32, _mm256_add_epi32(r1, x0), 4);
-            g[3] = _mm256_i32gather_epi32(t32, _mm256_add_epi32(r1, x1), 4);
-        }
+        avx2_texel_words8(t32, w, (int64_t)w * h, x0, x1, y0, y1, rows, g);
         v8_bilerp8(g, a, b, out + (size_t)j * stride, stride);
     }
     return j;

@@ -146,13 +146,6 @@ AVX2_INLINE void f8_linear_axis(f8_num s, int n, int repeat, f8_i32 *i0, f8_i32 
     }
 }
 
-/* the RGBA8888 words at int32 offsets idx of base */
-AVX2_INLINE f8_i32 f8_gather_words(const uint32_t *base, f8_i32 idx)
-{
-    const int *b = (const int *)(const void *)base;
-    return (f8_i32)_mm256_i32gather_epi32(b, (__m256i)idx, 4);
-}
-
 /* fragment_compare(f, a, ref) of int32 lanes (values 0..255) */
 AVX2_INLINE f8_i32 f8_compare(const ModWriteAlpha *f, f8_i32 a)
 {
@@ -217,15 +210,9 @@ AVX2_INLINE int f8_sample_level(const uint32_t *texels, int w, int h, int repeat
     f8_num a, b;
     f8_linear_axis(s, w, repeat_s, &x0, &x1, &a);
     f8_linear_axis(t, h, repeat_t, &y0, &y1, &b);
-    f8_i32 g00, g10, g01, g11;
     __m256i g[4];
-    if (rows && avx2_row_texels8(texels, w, (int64_t)w * h, (__m256i)x0, (__m256i)x1, (__m256i)y0, (__m256i)y1, g)) {
-        g00 = (f8_i32)g[0], g10 = (f8_i32)g[1], g01 = (f8_i32)g[2], g11 = (f8_i32)g[3];
-    } else {
-        const f8_i32 r0 = y0 * w, r1 = y1 * w;
-        g00 = f8_gather_words(texels, r0 + x0), g10 = f8_gather_words(texels, r0 + x1);
-        g01 = f8_gather_words(texels, r1 + x0), g11 = f8_gather_words(texels, r1 + x1);
-    }
+    avx2_texel_words8(texels, w, (int64_t)w * h, (__m256i)x0, (__m256i)x1, (__m256i)y0, (__m256i)y1, rows, g);
+    const f8_i32 g00 = (f8_i32)g[0], g10 = (f8_i32)g[1], g01 = (f8_i32)g[2], g11 = (f8_i32)g[3];
     const f8_num ia = 1 - a, ib = 1 - b;
     for (int i = 0; i < 4; i++) {
         const f8_num top = f8_byte(g00, i) * ia + f8_byte(g10, i) * a;
