@@ -114,6 +114,7 @@ struct SpanBuf {
     FRAGV ct[SPAN_CHUNK][GLES_MAX_TEXTURE_UNITS][4];   /* each unit's texel */
     TexCoord tc[SPAN_CHUNK], tx[SPAN_CHUNK], ty[SPAN_CHUNK];   /* one unit's, and its neighbours' */
     int tc_unit, tc_done;           /* tc[0..tc_done) holds unit tc_unit's already (-1: none) */
+    int tx_unit, tx_done;           /* likewise tx[0..tx_done), unit tx_unit's (FETCH_COORDS_TX) */
 };
 
 /* 1 when the four slots from k are four neighbouring pixels (offsets

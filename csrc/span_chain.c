@@ -464,7 +464,7 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     const int no_color = span_no_color(ctx);
     const int color_work = !no_color || ctx->alpha_test;
     if (!rect)
-        ctx->chain_coords_unit = -1;
+        ctx->chain_coords_unit = ctx->chain_coords_tx_unit = -1;
     int lod = 0;
     ctx->stencil_cull.on = 0;
     if (stencil) {
@@ -546,7 +546,14 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     }
     if (dot3) {
         const int second = __builtin_ctz(units & (units - 1));
-        /* the first unit's coordinates only where the stage samples it */
+        /* the first unit's coordinates only where the stage samples it:
+        ** stage_persp forms them into b->tx then, and the second's into
+        ** b->tc where it has no level of detail */
+        if (ctx->sample_group[first] > 1 && ctx->chain_coords_unit == first
+            && !texture_needs_lod(ctx->units[second].bound)) {
+            ctx->chain_coords_tx_unit = first;
+            ctx->chain_coords_unit = second;
+        }
         s[n++] = ctx->sample_group[first] > 1 ? cs->coords_tx[first] : cs->fetch[first];
         if (ctx->sample_group[second] > 1) {
             s[n++] = cs->coords[second];
@@ -747,6 +754,7 @@ static void run(GlesContext *ctx, const SpanStage *stages, int count, const TriS
         }
         b.n = len;
         b.tc_unit = -1;
+        b.tx_unit = -1;
         memcpy(b.k, span_offsets, SPAN_CHUNK);
         if (t)
             for (int i = 0; i < 3; i++)

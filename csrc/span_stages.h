@@ -37,73 +37,93 @@ static inline int STAGE(persp4)(const WgtSetup *ws, const __m256i e[3], WGT (*p)
 #endif
 
 #if CHAIN_SIMD && NUM_IS_FIXED
-/* wgt_linear of an affine triangle's slots 0..n-1 (n >= 4) when they are
-** offsets (k[j] = j: no test has dropped a fragment): l_i = (q_i R +
-** 2^30) >> 31 with q_i = e_i >> eshift and e_i = e0_i + j ea_i. From one
-** group of four to the next e_i grows by 4 ea_i = Q 2^eshift + D (0 <= D <
-** 2^eshift), so with e_i = q_i 2^eshift + r_i (0 <= r_i < 2^eshift) q_i
-** grows by Q, and by one more where r_i + D reaches 2^eshift (r_i then
-** drops by 2^eshift); the sum q_i R + 2^30 grows by Q R, and R more with
-** that carry. Sums are kept mod 2^64, so each is the scalar code's value
-** wherever that fits int64 (as avx2_linear4v's products are). The
-** kernels' range, 0 <= e_i and q_i < 2^31, holds at every slot when it
-** holds at the first and the last (e_i is linear in j). Unit u's s and t
-** (u >= 0: an affine unit) are formed from the same lanes as stage_fetch
-** forms them from the stored weights (avx2_tex_coord_affine4 reads a
-** weight's int32, the lane's low dword), into b->tc. Returns the slots
-** done: the whole groups of four, or 0 where it does not apply. */
-static int STAGE(persp_affine_run)(const TriSetup *t, SpanBuf *b, int u)
+/* STAGE(persp_affine_run)'s loop over groups of four slots to n4 from the
+** running sums of edges 1 and 2 (lanes = four slots) and their step: the
+** weights, unit u's coordinates into b->tc (units >= 1) and unit v's
+** into b->tx (units == 2) */
+static inline __attribute__((always_inline)) void STAGE(persp_affine_loop)(const TriSetup *t, SpanBuf *b, int n4,
+                                                                          __m256i sum1, __m256i sum2,
+                                                                          __m256i step1, __m256i step2, int u,
+                                                                          int v, const int units)
 {
-    const WgtSetup *ws = &t->wgt;
-    const int n = b->n, sh = ws->eshift;
-    if (!ws->affine || ws->lin_recip < 0 || sh > 62 || n < 4 || b->k[n - 1] != n - 1)
-        return 0;
-    const uint64_t r = (uint64_t)ws->lin_recip, unit = (uint64_t)1 << sh;
-    __m256i sum[3], rem[3], step[3], dr[3];
-    for (int i = 1; i < 3; i++) {
-        const int64_t first = b->e0[i], last = b->e0[i] + t->ea[i] * (n - 1);
-        if (first < 0 || last < 0 || (first >> sh) > INT32_MAX || (last >> sh) > INT32_MAX)
-            return 0;
-        int64_t s4[4], r4[4];
-        for (int k = 0; k < 4; k++) {
-            const int64_t e = first + t->ea[i] * k;     /* >= 0: between first and last */
-            s4[k] = (int64_t)((uint64_t)(e >> sh) * r + ((uint64_t)1 << 30));
-            r4[k] = e & (int64_t)(unit - 1);
-        }
-        const int64_t e4 = 4 * t->ea[i], q4 = e4 >> sh, d4 = e4 & (int64_t)(unit - 1);
-        sum[i] = _mm256_loadu_si256((const __m256i *)(const void *)s4);
-        rem[i] = _mm256_loadu_si256((const __m256i *)(const void *)r4);
-        step[i] = _mm256_set1_epi64x((int64_t)((uint64_t)q4 * r));
-        dr[i] = _mm256_set1_epi64x(d4);
-    }
-    const __m256i one = _mm256_set1_epi64x(WGT_ONE), lr = _mm256_set1_epi64x((int64_t)r);
-    const __m256i unitv = _mm256_set1_epi64x((int64_t)unit);
-    const __m256i carry_at = _mm256_set1_epi64x((int64_t)unit - 1);    /* a carry where r_i + D > 2^eshift - 1 */
-    WGT (*const p)[3] = b->p;
-    const int n4 = n & ~3;
-    NUM sv[3] = { 0, 0, 0 }, tv[3] = { 0, 0, 0 };
-    if (u >= 0)
-        for (int i = 0; i < 3; i++) {
+    NUM sv[3] = { 0, 0, 0 }, tv[3] = { 0, 0, 0 }, sv2[3] = { 0, 0, 0 }, tv2[3] = { 0, 0, 0 };
+    for (int i = 0; i < 3; i++) {
+        if (units >= 1) {
             sv[i] = t->v[i]->tex[u][0];
             tv[i] = t->v[i]->tex[u][1];
         }
-    TexCoord *const tc = b->tc;
-    for (int j = 0; j < n4; j += 4) {
-        __m256i l[3];
-        l[1] = _mm256_srli_epi64(sum[1], 31);
-        l[2] = _mm256_srli_epi64(sum[2], 31);
-        l[0] = _mm256_sub_epi64(_mm256_sub_epi64(one, l[1]), l[2]);
-        avx2_store_wgt4(l, &p[j]);
-        if (u >= 0)
-            avx2_store_st4(avx2_texc_lerp3x4(sv, l), avx2_texc_lerp3x4(tv, l), &tc[j]);
-        for (int i = 1; i < 3; i++) {
-            rem[i] = _mm256_add_epi64(rem[i], dr[i]);
-            const __m256i carry = _mm256_cmpgt_epi64(rem[i], carry_at);
-            sum[i] = _mm256_add_epi64(_mm256_add_epi64(sum[i], step[i]), _mm256_and_si256(carry, lr));
-            rem[i] = _mm256_sub_epi64(rem[i], _mm256_and_si256(carry, unitv));
+        if (units == 2) {
+            sv2[i] = t->v[i]->tex[v][0];
+            tv2[i] = t->v[i]->tex[v][1];
         }
     }
-    return n4;
+    const __m256i one = _mm256_set1_epi64x(WGT_ONE);
+    WGT (*const p)[3] = b->p;
+    TexCoord *const tc = b->tc, *const tx = b->tx;
+    for (int j = 0; j < n4; j += 4) {
+        __m256i l[3];
+        l[1] = _mm256_srli_epi64(sum1, 31);
+        l[2] = _mm256_srli_epi64(sum2, 31);
+        l[0] = _mm256_sub_epi64(_mm256_sub_epi64(one, l[1]), l[2]);
+        avx2_store_wgt4(l, &p[j]);
+        if (units >= 1)
+            avx2_store_st4(avx2_texc_lerp3x4(sv, l), avx2_texc_lerp3x4(tv, l), &tc[j]);
+        if (units == 2)
+            avx2_store_st4(avx2_texc_lerp3x4(sv2, l), avx2_texc_lerp3x4(tv2, l), &tx[j]);
+        sum1 = _mm256_add_epi64(sum1, step1);
+        sum2 = _mm256_add_epi64(sum2, step2);
+    }
+}
+#endif
+
+#if CHAIN_SIMD && NUM_IS_FIXED
+/* wgt_linear of an affine triangle's slots 0..n-1 when they are offsets
+** (k[j] = j: no test has dropped a fragment): l_i = (q_i R + 2^30) >> 31
+** with q_i = e_i >> eshift and e_i = e0_i + j ea_i. From one group of four
+** to the next e_i grows by 4 ea_i, a multiple of 2^eshift wherever eshift
+** <= 10 (ea_i is a multiple of 2^8 and 4 ea_i of 2^10; eshift is at most
+** 10 below MAX_VIEWPORT_DIMS 4096, the rest is left to stage_persp), so q_i
+** grows by 4 ea_i >> eshift and the sum by that times R. Sums are kept mod
+** 2^64, so each is the scalar code's value wherever that fits int64 (as
+** avx2_linear4v's products are). The kernels' range, 0 <= e_i and q_i <
+** 2^31, holds at every slot when it holds at the first and the last (e_i
+** is linear in j). Unit u's s and t (u >= 0: an affine unit) are formed
+** from the same lanes as stage_fetch forms them from the stored weights
+** (avx2_tex_coord_affine4 reads a weight's int32, the lane's low dword),
+** into b->tc, and unit v's (v >= 0, with u) into b->tx. A last group of
+** fewer than four slots is formed whole: the slots past n are free, and
+** what lands there (the sums' continuation, in or out of the range) is
+** never read. Returns the slots done (n), or 0 where it does not apply. */
+static int STAGE(persp_affine_run)(const TriSetup *t, SpanBuf *b, int u, int v)
+{
+    _Static_assert(SPAN_CHUNK % 4 == 0, "a last group rounded up to four stays within the chunk");
+    const WgtSetup *ws = &t->wgt;
+    const int n = b->n, sh = ws->eshift;
+    if (!ws->affine || ws->lin_recip < 0 || sh > 62 || n < 1 || b->k[n - 1] != n - 1 || (u < 0 && v >= 0))
+        return 0;
+    const uint64_t r = (uint64_t)ws->lin_recip, half = (uint64_t)1 << 30;
+    __m256i sum[3], step[3];
+    for (int i = 1; i < 3; i++) {
+        const int64_t first = b->e0[i], last = b->e0[i] + t->ea[i] * (n - 1), e4 = 4 * t->ea[i];
+        if (first < 0 || last < 0 || (first >> sh) > INT32_MAX || (last >> sh) > INT32_MAX
+            || (e4 & (((int64_t)1 << sh) - 1)))
+            return 0;
+        step[i] = _mm256_set1_epi64x((int64_t)((uint64_t)(e4 >> sh) * r));
+        /* the line's values (a slot past n may lie past the triangle) */
+        uint64_t s4[4];
+        for (int k = 0; k < 4; k++)
+            s4[k] = (uint64_t)((first + t->ea[i] * k) >> sh) * r + half;
+        sum[i] = _mm256_setr_epi64x((int64_t)s4[0], (int64_t)s4[1], (int64_t)s4[2], (int64_t)s4[3]);
+    }
+    const int n4 = (n + 3) & ~3;
+    /* the loop's instances: the units' coordinates asked for */
+    if (u < 0)
+        STAGE(persp_affine_loop)(t, b, n4, sum[1], sum[2], step[1], step[2], u, v, 0);
+    else if (v < 0)
+        STAGE(persp_affine_loop)(t, b, n4, sum[1], sum[2], step[1], step[2], u, v, 1);
+    else
+        STAGE(persp_affine_loop)(t, b, n4, sum[1], sum[2], step[1], step[2], u, v, 2);
+    return n;
 }
 #endif
 
@@ -170,11 +190,17 @@ static void STAGE(stage_persp)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
     /* the chain's first unit's coordinates too, where it has no level of
     ** detail and no q (stage_fetch then starts past them) */
     const int u = ctx ? ctx->chain_coords_unit : -1;     /* (the debug entry has no context) */
+    const int v = ctx ? ctx->chain_coords_tx_unit : -1;  /* ... and a second unit's, into b->tx */
     const int coords = u >= 0 && !((t->tex_projective >> u) & 1);
-    j = STAGE(persp_affine_run)(t, b, coords ? u : -1);
+    const int coords_tx = v >= 0 && !((t->tex_projective >> v) & 1);
+    j = STAGE(persp_affine_run)(t, b, coords ? u : -1, coords_tx ? v : -1);
     if (coords && j) {
         b->tc_unit = u;
         b->tc_done = j;
+    }
+    if (coords_tx && j) {
+        b->tx_unit = v;
+        b->tx_done = j;
     }
 #endif
 #if CHAIN_SIMD && !NUM_IS_FIXED
@@ -663,6 +689,13 @@ static void STAGE(stage_fetch)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, 
 {
     /* FETCH_COORDS_TX is for a unit without a level of detail, so b->tx is free */
     const int lod = mode != FETCH_COORDS_TX && texture_needs_lod(ctx->units[u].bound);
+    if (mode == FETCH_COORDS_TX && b->tx_unit == u) {
+        /* stage_persp formed b->tx[0..tx_done) */
+        for (int j = b->tx_done; j < b->n; j++)
+            span_tex_coord(t, u, b->p[j], &b->tx[j]);
+        b->tx_unit = -1;
+        return;
+    }
 #if CHAIN_SIMD && NUM_IS_FIXED
     const __m256i a[3] = { avx2_load_num4(t->v[0]->tex[u]), avx2_load_num4(t->v[1]->tex[u]),
                            avx2_load_num4(t->v[2]->tex[u]) };
@@ -674,6 +707,7 @@ static void STAGE(stage_fetch)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, 
     const int four = proj ? 0 : b->n & ~3;
     /* stage_persp may have formed the first ones (not with neighbours) */
     const int from = b->tc_unit == u && !lod ? b->tc_done : 0;
+    const int tail = from > four ? from : four;     /* it forms a last group whole */
     b->tc_unit = -1;
     for (int j = from; j < four; j += 4) {
         avx2_tex_coord_affine4(sv, tv, &b->p[j], &b->tc[j]);
@@ -684,9 +718,9 @@ static void STAGE(stage_fetch)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, 
     }
 #else
 #define TEX_COORD(p, out) span_tex_coord(t, u, p, out)
-    const int four = 0;
+    const int four = 0, tail = 0;
 #endif
-    for (int j = four; j < b->n; j++)
+    for (int j = tail; j < b->n; j++)
         TEX_COORD(b->p[j], &b->tc[j]);
     if (lod)
         for (int j = four; j < b->n; j++) {

@@ -399,6 +399,7 @@ struct GlesContext {
     SpanStage chain[GLES_MAX_STAGES];   /* the chain's stages, when span is span_chain */
     int chain_len;
     int chain_coords_unit;      /* the unit whose coordinates stage_persp forms, else -1 */
+    int chain_coords_tx_unit;   /* ... and the unit whose it forms into b->tx, else -1 */
     uint8_t stencil_lut[4][256];        /* the chain's stencil tables (fragment_stencil_lut) */
     /* the chain's stencil cull (span_chain.c's run), set with those tables:
     ** on where a fragment failing the test keeps the stored value; the

@@ -107,17 +107,18 @@ def set_env(gl: Any, env: dict) -> None:
 
 
 def render(numeric: str, flags: int, s: dict) -> tuple:
+    w, h = s.get("size", (W, H))
     if s.get("rgb565"):
-        ctx = make_ctx(numeric, W, H, color="rgb565", depth=0, stencil=0)
+        ctx = make_ctx(numeric, w, h, color="rgb565", depth=0, stencil=0)
         ctx.debug(flags)
         gl, rng = ctx.gl, np.random.default_rng(s["seed"])
-        (set_frustum if s["persp"] else set_ortho)(gl, W, H)
+        (set_frustum if s["persp"] else set_ortho)(gl, w, h)
         gl.glClearColor(*rng.uniform(0, 1, 4))
         gl.glClear(C.GL_COLOR_BUFFER_BIT)
         if not s.get("dither", True):
             gl.glDisable(C.GL_DITHER)
     else:
-        ctx, gl, rng = colour_window(numeric, flags, W, H, s["persp"], s["seed"])
+        ctx, gl, rng = colour_window(numeric, flags, w, h, s["persp"], s["seed"])
     if s.get("blend"):
         gl.glEnable(C.GL_BLEND)
         gl.glBlendFunc(*s["blend"])
@@ -125,12 +126,12 @@ def render(numeric: str, flags: int, s: dict) -> tuple:
         gl.glEnable(C.GL_ALPHA_TEST)
         gl.glAlphaFunc(*s["alpha_test"])
     gl.glShadeModel(s.get("shade", C.GL_SMOOTH))
-    verts, _ = random_triangles(rng, s["persp"], 5, W)
+    verts, _ = random_triangles(rng, s["persp"], 5, w)
     # a covering quad first (two triangles): whole chunks of live fragments
     if s["persp"]:
         quad = np.array([[-2, -2, -1], [2, -2, -1], [-2, 2, -1], [2, -2, -1], [2, 2, -1], [-2, 2, -1]], float)
     else:
-        quad = np.array([[0, 0, 0], [W, 0, 0], [0, H, 0], [W, 0, 0], [W, H, 0], [0, H, 0]], float)
+        quad = np.array([[0, 0, 0], [w, 0, 0], [0, h, 0], [w, 0, 0], [w, h, 0], [0, h, 0]], float)
     verts = np.ascontiguousarray(np.concatenate([quad, verts]), dtype=np.float32)
     cols = np.ascontiguousarray(edge_bytes(rng, (len(verts), 4)))
     gl.glEnableClientState(C.GL_VERTEX_ARRAY)
@@ -218,3 +219,19 @@ def test_dot3_then_modulate_on_every_target(numeric: str) -> None:
              "alpha_test": (C.GL_GREATER, 0.4) if case % 6 == 5 else None,
              "shade": C.GL_FLAT if case % 7 == 6 else C.GL_SMOOTH}
         check(numeric, s)
+
+
+@pytest.mark.parametrize("numeric", BUILDS)
+def test_large_affine_triangles(numeric: str) -> None:
+    """A window-covering quad of two triangles of about 24000 pixels each
+    (the fixed build's edge values then take a shift, which its stepped
+    affine weights divide out), under DOT3 then MODULATE (the two units'
+    coordinates formed with the weights) and under one MODULATE unit."""
+    for seed in range(2):
+        pair = {"units": 2, "envs": [dot3_env(C.GL_DOT3_RGB, C.GL_MODULATE, 1.0), {"mode": C.GL_MODULATE}],
+                "formats": [(C.GL_RGBA, 4), (C.GL_RGBA, 4)], "persp": False, "linear": [True, True],
+                "seed": 500 + seed, "size": (256, 192)}
+        check(numeric, pair)
+        one = {"units": 1, "envs": [{"mode": C.GL_MODULATE}], "formats": [(C.GL_RGBA, 4)], "persp": False,
+               "linear": [bool(seed)], "seed": 510 + seed, "size": (256, 192)}
+        check(numeric, one)
