@@ -87,8 +87,10 @@ AVX2_INLINE void avx2_store3x4_32(__m128i a, __m128i b, __m128i c, void *out)
 ** axis-aligned texture: blits, sprites, screen-aligned quads), a load of
 ** eight texels from each row and four permutations give the words the
 ** gathers would, in a fraction of their time on CPUs whose gathers are
-** slow. 0 (g untouched) where that does not hold or a load would pass the
-** level's end. */
+** slow; where they lie in the sixteen from there (a texture minified up
+** to about 2:1), two loads per row, and each word the permutation of the
+** half its column is in. 0 (g untouched) where that does not hold or a
+** load would pass the level's end. */
 AVX2_INLINE int avx2_row_texels8(const void *texels, int64_t w, int64_t total, __m256i xa, __m256i xb, __m256i ya,
                                  __m256i yb, __m256i g[4])
 {
@@ -97,12 +99,15 @@ AVX2_INLINE int avx2_row_texels8(const void *texels, int64_t w, int64_t total, _
     const __m256i da = _mm256_sub_epi32(xa, x0), db = _mm256_sub_epi32(xb, x0);
     const __m256i same_rows = _mm256_and_si256(_mm256_cmpeq_epi32(ya, _mm256_permutevar8x32_epi32(ya, lane0)),
                                                _mm256_cmpeq_epi32(yb, _mm256_permutevar8x32_epi32(yb, lane0)));
-    if (_mm256_movemask_epi8(same_rows) != -1
-        || !_mm256_testz_si256(_mm256_or_si256(da, db), _mm256_set1_epi32(~7)))
+    const __m256i offsets = _mm256_or_si256(da, db);
+    if (_mm256_movemask_epi8(same_rows) != -1 || !_mm256_testz_si256(offsets, _mm256_set1_epi32(~15)))
         return 0;
+    /* (permutevar8x32 reads the low three bits of an offset) */
+    const int wide = !_mm256_testz_si256(offsets, _mm256_set1_epi32(8));
     const int64_t col = _mm256_cvtsi256_si32(xa);
     const int64_t first0 = _mm256_cvtsi256_si32(ya) * w + col, first1 = _mm256_cvtsi256_si32(yb) * w + col;
-    if (first0 + 8 > total || first1 + 8 > total)
+    const int64_t span = wide ? 16 : 8;
+    if (first0 + span > total || first1 + span > total)
         return 0;
     const int *tx32 = texels;
     const __m256i row0 = _mm256_loadu_si256((const __m256i *)(const void *)(tx32 + first0));
@@ -111,6 +116,16 @@ AVX2_INLINE int avx2_row_texels8(const void *texels, int64_t w, int64_t total, _
     g[1] = _mm256_permutevar8x32_epi32(row0, db);
     g[2] = _mm256_permutevar8x32_epi32(row1, da);
     g[3] = _mm256_permutevar8x32_epi32(row1, db);
+    if (wide) {
+        const __m256i next0 = _mm256_loadu_si256((const __m256i *)(const void *)(tx32 + first0 + 8));
+        const __m256i next1 = _mm256_loadu_si256((const __m256i *)(const void *)(tx32 + first1 + 8));
+        const __m256i in_a = _mm256_cmpgt_epi32(da, _mm256_set1_epi32(7));
+        const __m256i in_b = _mm256_cmpgt_epi32(db, _mm256_set1_epi32(7));
+        g[0] = _mm256_blendv_epi8(g[0], _mm256_permutevar8x32_epi32(next0, da), in_a);
+        g[1] = _mm256_blendv_epi8(g[1], _mm256_permutevar8x32_epi32(next0, db), in_b);
+        g[2] = _mm256_blendv_epi8(g[2], _mm256_permutevar8x32_epi32(next1, da), in_a);
+        g[3] = _mm256_blendv_epi8(g[3], _mm256_permutevar8x32_epi32(next1, db), in_b);
+    }
     return 1;
 }
 
