@@ -1178,32 +1178,65 @@ AVX2_INLINE int v4_persp4(const WgtSetup *s, const __m256i e[3], WGT (*out)[3])
     return 1;
 }
 
-AVX2_INLINE void v4_persp4_ev(const WgtSetup *s, const V4 ev[3], WGT (*out)[3])
+/* v4_persp4_ev's weights o[0..2] of four fragments, in lanes */
+AVX2_INLINE void v4_persp4_lanes(const WgtSetup *s, const V4 ev[3], V4 o[3])
 {
-    V4 o1, o2;
     if (s->affine) {
-        o1 = V4_OP(mul)(ev[1], V4_OP(set1)(s->inv_area));
-        o2 = V4_OP(mul)(ev[2], V4_OP(set1)(s->inv_area));
+        o[1] = V4_OP(mul)(ev[1], V4_OP(set1)(s->inv_area));
+        o[2] = V4_OP(mul)(ev[2], V4_OP(set1)(s->inv_area));
     } else {
         const V4 n0 = V4_OP(mul)(ev[0], V4_OP(set1)(s->q[0]));
         const V4 n1 = V4_OP(mul)(ev[1], V4_OP(set1)(s->q[1]));
         const V4 n2 = V4_OP(mul)(ev[2], V4_OP(set1)(s->q[2]));
         const V4 inv = V4_OP(div)(V4_OP(set1)(1), V4_OP(add)(V4_OP(add)(n0, n1), n2));
-        o1 = V4_OP(mul)(n1, inv);
-        o2 = V4_OP(mul)(n2, inv);
+        o[1] = V4_OP(mul)(n1, inv);
+        o[2] = V4_OP(mul)(n2, inv);
     }
-    const V4 o0 = V4_OP(sub)(V4_OP(sub)(V4_OP(set1)(1), o1), o2);
+    o[0] = V4_OP(sub)(V4_OP(sub)(V4_OP(set1)(1), o[1]), o[2]);
+}
+
+/* four fragments' weights o[0..2] (lanes) stored as out[lane][0..2] */
+AVX2_INLINE void v4_store_wgt4(const V4 o[3], WGT (*out)[3])
+{
 #if defined(GLES_NUM_FLOAT)
-    avx2_store3x4_32(_mm_castps_si128(o0), _mm_castps_si128(o1), _mm_castps_si128(o2), out);
+    avx2_store3x4_32(_mm_castps_si128(o[0]), _mm_castps_si128(o[1]), _mm_castps_si128(o[2]), out);
 #else
     /* a0 b0 c0 a1 | b1 c1 a2 b2 | c2 a3 b3 c3 */
-    const __m256d ab = _mm256_unpacklo_pd(o0, o1), bc = _mm256_unpackhi_pd(o1, o2);
+    const __m256d ab = _mm256_unpacklo_pd(o[0], o[1]), bc = _mm256_unpackhi_pd(o[1], o[2]);
     double *d = &out[0][0];
-    _mm256_storeu_pd(d, _mm256_blend_pd(_mm256_blend_pd(ab, _mm256_permute4x64_pd(o2, 0x00), 4),
-                                        _mm256_permute4x64_pd(o0, 0x55), 8));
+    _mm256_storeu_pd(d, _mm256_blend_pd(_mm256_blend_pd(ab, _mm256_permute4x64_pd(o[2], 0x00), 4),
+                                        _mm256_permute4x64_pd(o[0], 0x55), 8));
     _mm256_storeu_pd(d + 4, _mm256_blend_pd(bc, ab, 0xC));
-    _mm256_storeu_pd(d + 8, _mm256_blend_pd(_mm256_blend_pd(bc, _mm256_permute4x64_pd(o2, 0xAA), 1),
-                                            _mm256_permute4x64_pd(o0, 0xFF), 2));
+    _mm256_storeu_pd(d + 8, _mm256_blend_pd(_mm256_blend_pd(bc, _mm256_permute4x64_pd(o[2], 0xAA), 1),
+                                            _mm256_permute4x64_pd(o[0], 0xFF), 2));
+#endif
+}
+
+AVX2_INLINE void v4_persp4_ev(const WgtSetup *s, const V4 ev[3], WGT (*out)[3])
+{
+    V4 o[3];
+    v4_persp4_lanes(s, ev, o);
+    v4_store_wgt4(o, out);
+}
+
+/* span_tex_coord of an affine unit (vertex values sv[i], tv[i]) at four
+** fragments' weights o (lanes): texc_lerp3's operations in its order,
+** (a0 w0 + a1 w1) + a2 w2, stored as out[0..3] */
+AVX2_INLINE void v4_tex_coord_affine4(const NUM sv[3], const NUM tv[3], const V4 o[3], TexCoord *out)
+{
+#define V4_LERP3(a) V4_OP(add)(V4_OP(add)(V4_OP(mul)(V4_OP(set1)(a[0]), o[0]), V4_OP(mul)(V4_OP(set1)(a[1]), o[1])), \
+                               V4_OP(mul)(V4_OP(set1)(a[2]), o[2]))
+    const V4 s = V4_LERP3(sv), t = V4_LERP3(tv);
+#undef V4_LERP3
+#if defined(GLES_NUM_FLOAT)
+    _Static_assert(sizeof(TexCoord) == 2 * sizeof(float), "four TexCoords are eight floats");
+    _mm_storeu_ps(&out[0].s, _mm_unpacklo_ps(s, t));
+    _mm_storeu_ps(&out[2].s, _mm_unpackhi_ps(s, t));
+#else
+    _Static_assert(sizeof(TexCoord) == 2 * sizeof(double), "four TexCoords are eight doubles");
+    const __m256d lo = _mm256_unpacklo_pd(s, t), hi = _mm256_unpackhi_pd(s, t);   /* s0 t0 s2 t2, s1 t1 s3 t3 */
+    _mm256_storeu_pd(&out[0].s, _mm256_permute2f128_pd(lo, hi, 0x20));
+    _mm256_storeu_pd(&out[2].s, _mm256_permute2f128_pd(lo, hi, 0x31));
 #endif
 }
 

@@ -572,6 +572,12 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     if (direct) {
         s[n++] = rect ? cs->fetch_rect_direct[lone] : cs->fetch_direct[lone];
     } else {
+        /* the second unit's coordinates into b->tx, with the first's,
+        ** where neither has a level of detail (its fetch samples there) */
+        const unsigned int rest = units & (units - 1);
+        if (!rect && rest && ctx->chain_coords_unit == first
+            && !texture_needs_lod(ctx->units[__builtin_ctz(rest)].bound))
+            ctx->chain_coords_tx_unit = __builtin_ctz(rest);
         for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
             if (units & (1u << u))
                 s[n++] = rect ? cs->fetch_rect[u] : cs->fetch[u];

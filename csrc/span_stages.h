@@ -161,10 +161,14 @@ static inline void STAGE(edge_steps)(const TriSetup *t, const SpanBuf *b, __m256
 
 /* an affine triangle's weights (wgt_linear reads edges 1 and 2 alone)
 ** four at a time from the stepped edge values, where STAGE(edge_steps)
-** is exact; returns the slots done */
-static int STAGE(persp_affine_steps)(const TriSetup *t, SpanBuf *b)
+** is exact, with unit u's coordinates (u >= 0: an affine unit) formed from
+** the same lanes into b->tc, and unit v's (v >= 0) into b->tx; a last group of fewer than four slots whole
+** (the slots past n are free; the exactness holds to the group's end, as
+** the test covers it). Returns the slots done (n), or 0. */
+static int STAGE(persp_affine_steps)(const TriSetup *t, SpanBuf *b, int u, int v)
 {
-    const int n4 = b->n & ~3;
+    _Static_assert(SPAN_CHUNK % 4 == 0, "a last group rounded up to four stays within the chunk");
+    const int n4 = (b->n + 3) & ~3;
     if (!t->wgt.affine || !STAGE(edge_steps_exact)(t, b, n4))
         return 0;
     __m256d d1, d2, step1, step2;
@@ -172,13 +176,31 @@ static int STAGE(persp_affine_steps)(const TriSetup *t, SpanBuf *b)
     /* the loop's constants in locals (stores to b->p could alias t and b) */
     const WgtSetup ws = t->wgt;
     WGT (*const p)[3] = b->p;
+    TexCoord *const tc = b->tc, *const tx = b->tx;
+    NUM sv[3] = { 0, 0, 0 }, tv[3] = { 0, 0, 0 }, sv2[3] = { 0, 0, 0 }, tv2[3] = { 0, 0, 0 };
+    for (int i = 0; i < 3; i++) {
+        if (u >= 0) {
+            sv[i] = t->v[i]->tex[u][0];
+            tv[i] = t->v[i]->tex[u][1];
+        }
+        if (v >= 0) {
+            sv2[i] = t->v[i]->tex[v][0];
+            tv2[i] = t->v[i]->tex[v][1];
+        }
+    }
     for (int j = 0; j < n4; j += 4) {
         const V4 ev[3] = { v4_edge_num(d1), v4_edge_num(d1), v4_edge_num(d2) };
-        v4_persp4_ev(&ws, ev, &p[j]);
+        V4 o[3];
+        v4_persp4_lanes(&ws, ev, o);
+        v4_store_wgt4(o, &p[j]);
+        if (u >= 0)
+            v4_tex_coord_affine4(sv, tv, o, &tc[j]);
+        if (v >= 0)
+            v4_tex_coord_affine4(sv2, tv2, o, &tx[j]);
         d1 = _mm256_add_pd(d1, step1);
         d2 = _mm256_add_pd(d2, step2);
     }
-    return n4;
+    return b->n;
 }
 #endif
 
@@ -204,7 +226,21 @@ static void STAGE(stage_persp)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
     }
 #endif
 #if CHAIN_SIMD && !NUM_IS_FIXED
-    j = STAGE(persp_affine_steps)(t, b);
+    {
+        /* the chain's first units' coordinates too, as in the fixed build */
+        const int u = ctx ? ctx->chain_coords_unit : -1, v = ctx ? ctx->chain_coords_tx_unit : -1;
+        const int coords = u >= 0 && !((t->tex_projective >> u) & 1);
+        const int coords_tx = v >= 0 && !((t->tex_projective >> v) & 1);
+        j = STAGE(persp_affine_steps)(t, b, coords ? u : -1, coords_tx ? v : -1);
+        if (coords && j) {
+            b->tc_unit = u;
+            b->tc_done = j;
+        }
+        if (coords_tx && j) {
+            b->tx_unit = v;
+            b->tx_done = j;
+        }
+    }
 #endif
 #if CHAIN_SIMD
     /* the loop's constants in locals (stores to b->p could alias t and b) */
@@ -662,7 +698,7 @@ static void STAGE(stage_color)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 /* one unit's texels for the chunk's coordinates b->tc (and b->tx, b->ty),
 ** into b->ct, or (direct) straight into the colour b->c: a lone REPLACE
 ** unit of an RGBA texture is the colour, so it needs no environment */
-static void STAGE(chunk_sample)(GlesContext *ctx, SpanBuf *b, int u, int direct)
+static void STAGE(chunk_sample_at)(GlesContext *ctx, SpanBuf *b, int u, int direct, TexCoord *tc)
 {
     /* a tail past the kernel's last whole group is padded with copies of
     ** the last coordinate when the kernel takes the group whole for less
@@ -675,11 +711,18 @@ static void STAGE(chunk_sample)(GlesContext *ctx, SpanBuf *b, int u, int direct)
     if (g > 1 && n % g >= (g == 8 ? 4 : 3)) {
         const int padded = (n + g - 1) & ~(g - 1);
         for (int j = n; j < padded; j++)
-            b->tc[j] = b->tc[n - 1];
+            tc[j] = tc[n - 1];
         n = padded;
     }
-    ctx->samplers[u](ctx->units[u].bound, n, b->tc, b->tx, b->ty, direct ? b->c[0] : b->ct[0][u],
-                     direct ? 4 : GLES_MAX_TEXTURE_UNITS * 4, ctx->texel_unorm8);
+    /* (at coordinates other than b->tc the unit has no level of detail) */
+    ctx->samplers[u](ctx->units[u].bound, n, tc, tc == b->tc ? b->tx : tc, tc == b->tc ? b->ty : tc,
+                     direct ? b->c[0] : b->ct[0][u], direct ? 4 : GLES_MAX_TEXTURE_UNITS * 4, ctx->texel_unorm8);
+}
+
+/* unit u's texels at the coordinates in b->tc */
+static void STAGE(chunk_sample)(GlesContext *ctx, SpanBuf *b, int u, int direct)
+{
+    STAGE(chunk_sample_at)(ctx, b, u, direct, b->tc);
 }
 
 /* a triangle's coordinates of unit u for every live fragment, then its
@@ -689,13 +732,20 @@ static void STAGE(stage_fetch)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, 
 {
     /* FETCH_COORDS_TX is for a unit without a level of detail, so b->tx is free */
     const int lod = mode != FETCH_COORDS_TX && texture_needs_lod(ctx->units[u].bound);
-    if (mode == FETCH_COORDS_TX && b->tx_unit == u) {
-        /* stage_persp formed b->tx[0..tx_done) */
+    if (b->tx_unit == u) {
+        /* stage_persp formed b->tx[0..tx_done) (a unit without a level of
+        ** detail): the rest, then its texels at them (FETCH_COORDS_TX
+        ** leaves them to a later stage) */
         for (int j = b->tx_done; j < b->n; j++)
             span_tex_coord(t, u, b->p[j], &b->tx[j]);
         b->tx_unit = -1;
+        if (mode == FETCH_TEXELS || mode == FETCH_DIRECT)
+            STAGE(chunk_sample_at)(ctx, b, u, mode == FETCH_DIRECT, b->tx);
         return;
     }
+    /* stage_persp may have formed the first ones (not with neighbours) */
+    const int from = b->tc_unit == u && !lod ? b->tc_done : 0;
+    b->tc_unit = -1;
 #if CHAIN_SIMD && NUM_IS_FIXED
     const __m256i a[3] = { avx2_load_num4(t->v[0]->tex[u]), avx2_load_num4(t->v[1]->tex[u]),
                            avx2_load_num4(t->v[2]->tex[u]) };
@@ -705,10 +755,7 @@ static void STAGE(stage_fetch)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, 
     const NUM sv[3] = { t->v[0]->tex[u][0], t->v[1]->tex[u][0], t->v[2]->tex[u][0] };
     const NUM tv[3] = { t->v[0]->tex[u][1], t->v[1]->tex[u][1], t->v[2]->tex[u][1] };
     const int four = proj ? 0 : b->n & ~3;
-    /* stage_persp may have formed the first ones (not with neighbours) */
-    const int from = b->tc_unit == u && !lod ? b->tc_done : 0;
     const int tail = from > four ? from : four;     /* it forms a last group whole */
-    b->tc_unit = -1;
     for (int j = from; j < four; j += 4) {
         avx2_tex_coord_affine4(sv, tv, &b->p[j], &b->tc[j]);
         if (lod) {
@@ -718,7 +765,7 @@ static void STAGE(stage_fetch)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, 
     }
 #else
 #define TEX_COORD(p, out) span_tex_coord(t, u, p, out)
-    const int four = 0, tail = 0;
+    const int four = 0, tail = from;
 #endif
     for (int j = tail; j < b->n; j++)
         TEX_COORD(b->p[j], &b->tc[j]);
