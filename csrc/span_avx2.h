@@ -1305,6 +1305,33 @@ AVX2_INLINE uint32_t v4_pack565(V4 v, int dither, FRAGV t)
     const __m128i i = _mm_sllv_epi32(v4_trunc_i32(x), _mm_setr_epi32(11, 5, 0, 0));
     return (uint32_t)_mm_cvtsi128_si32(_mm_or_si128(_mm_or_si128(i, _mm_srli_si128(i, 4)), _mm_srli_si128(i, 8)));
 }
+/* v4_pack565 of four fragments, channel by channel: red, green and blue
+** of the four in lanes (rgb[0..2]), the dither thresholds t (lanes); the
+** same operations lane by lane, the four words in int32 lanes */
+AVX2_INLINE __m128i v4_pack565x4(const V4 rgb[3], int dither, V4 t)
+{
+    static const int bits[3] = { 5, 6, 5 }, shift[3] = { 11, 5, 0 };
+    const V4 zero = V4_OP(setzero)();
+    __m128i w = _mm_setzero_si128();
+    for (int i = 0; i < 3; i++) {
+        const V4 v = rgb[i], top = V4_OP(set1)((NUM)((1 << bits[i]) - 1));
+        V4 x;
+        if (dither) {
+            x = V4_OP(add)(V4_OP(mul)(v, top), t);
+            x = V4_OP(blendv)(x, top, v4_ge(v, V4_OP(set1)(1)));
+        } else {
+#if defined(GLES_NUM_FLOAT)
+            x = _mm_floor_ps(V4_OP(mul)(v, V4_OP(set1)((NUM)(1 << bits[i]))));
+#else
+            x = _mm256_floor_pd(V4_OP(mul)(v, V4_OP(set1)((NUM)(1 << bits[i]))));
+#endif
+            x = V4_OP(min)(x, top);
+        }
+        x = V4_OP(blendv)(zero, x, v4_gt(v, zero));
+        w = _mm_or_si128(w, _mm_slli_epi32(v4_trunc_i32(x), shift[i]));
+    }
+    return w;
+}
 /* frag_lerp3f: a0 w0 + a1 w1 + a2 w2 */
 AVX2_INLINE V4 v4_lerp3f(V4 a0, V4 a1, V4 a2, const WGT *p)
 {

@@ -1303,6 +1303,42 @@ static void STAGE(stage_write_rgba8_masked)(GlesContext *ctx, const TriSetup *t,
 }
 
 /* RGB565, red, green and blue written, no blend or logic op */
+#if CHAIN_SIMD && !NUM_IS_FIXED
+/* the float builds' RGB565 writes four fragments at a time (blend: SRC_ALPHA,
+** ONE_MINUS_SRC_ALPHA): their colours transposed to channels, the stored
+** words' channels as d / maxval (the division that ctx->unorm5 and
+** unorm6 hold), then the per-fragment code's operations lane by lane;
+** returns the slots done (the whole groups) */
+static int STAGE(write_565x4)(GlesContext *ctx, SpanBuf *b, uint16_t *dst, const FRAGV t_row[4], int blend)
+{
+    const int n4 = b->n & ~3, dither = ctx->dither;
+    for (int j = 0; j < n4; j += 4) {
+        const uint8_t *k = &b->k[j];
+        V4 ch[4] = { v4_load(b->c[j]), v4_load(b->c[j + 1]), v4_load(b->c[j + 2]), v4_load(b->c[j + 3]) };
+        v4_transpose4(ch);
+        const V4 t = V4_OP(setr)(t_row[(b->x0 + k[0]) & 3], t_row[(b->x0 + k[1]) & 3], t_row[(b->x0 + k[2]) & 3],
+                                 t_row[(b->x0 + k[3]) & 3]);
+        if (blend) {
+            const __m128i d = _mm_setr_epi32(dst[k[0]], dst[k[1]], dst[k[2]], dst[k[3]]);
+            const __m128i dc[3] = { _mm_srli_epi32(d, 11), _mm_and_si128(_mm_srli_epi32(d, 5), _mm_set1_epi32(63)),
+                                    _mm_and_si128(d, _mm_set1_epi32(31)) };
+            static const int maxval[3] = { 31, 63, 31 };
+            const V4 va = v4_clamp01(ch[3]), ia = v4_one_minus(va);
+            for (int i = 0; i < 3; i++) {
+                const V4 dv = V4_OP(div)(v4_from_i32(dc[i]), V4_OP(set1)((NUM)maxval[i]));
+                ch[i] = v4_add(v4_mul01(v4_clamp01(ch[i]), va), v4_mul01(dv, ia));
+            }
+        }
+        const __m128i w = v4_pack565x4(ch, dither, t);
+        dst[k[0]] = (uint16_t)_mm_extract_epi32(w, 0);
+        dst[k[1]] = (uint16_t)_mm_extract_epi32(w, 1);
+        dst[k[2]] = (uint16_t)_mm_extract_epi32(w, 2);
+        dst[k[3]] = (uint16_t)_mm_extract_epi32(w, 3);
+    }
+    return n4;
+}
+#endif
+
 static void STAGE(stage_write_565)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     (void)t;
@@ -1310,7 +1346,11 @@ static void STAGE(stage_write_565)(GlesContext *ctx, const TriSetup *t, SpanBuf 
     const int dither = ctx->dither;
     FRAGV t_row[4];
     dither_row(b, dither, t_row);
-    for (int j = 0; j < b->n; j++) {
+    int j = 0;
+#if CHAIN_SIMD && !NUM_IS_FIXED
+    j = STAGE(write_565x4)(ctx, b, dst, t_row, 0);
+#endif
+    for (; j < b->n; j++) {
         const FRAGV t_d = t_row[(b->x0 + b->k[j]) & 3];
 #if CHAIN_SIMD
         dst[b->k[j]] = (uint16_t)v4_pack565(v4_load(b->c[j]), dither, t_d);
@@ -1329,7 +1369,11 @@ static void STAGE(stage_write_565_alpha)(GlesContext *ctx, const TriSetup *t, Sp
     const int dither = ctx->dither;
     FRAGV t_row[4];
     dither_row(b, dither, t_row);
-    for (int j = 0; j < b->n; j++) {
+    int j = 0;
+#if CHAIN_SIMD && !NUM_IS_FIXED
+    j = STAGE(write_565x4)(ctx, b, dst, t_row, 1);
+#endif
+    for (; j < b->n; j++) {
         const FRAGV *c = b->c[j];
         uint32_t d = dst[b->k[j]];
         const FRAGV t_d = t_row[(b->x0 + b->k[j]) & 3];
