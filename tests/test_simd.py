@@ -489,12 +489,14 @@ def _persp_chunk(simd: int, eshift: int, lin_recip: int, e0, ea, n: int) -> np.n
 @pytest.mark.skipif(not HAS_SIMD, reason="no vector instance on this CPU")
 def test_affine_chunk_weights_step_as_the_scalar_code():
     """stage_persp over a chunk of neighbouring pixels of an affine triangle
-    steps each weight's sum (e_i >> eshift) R + 2^30 with a carry from the
-    bits below eshift (persp_affine_run): its weights equal wgt_linear's,
-    ((e_i >> eshift) R + 2^30) >> 31 in Python's integers, at every slot:
-    inside the triangle, where a chunk's edge values leave the kernel's
-    range at one end (the whole chunk goes the other way), on sums placed
-    one below a multiple of 2^31, with eshift 0 to 12 and any count."""
+    steps each weight's sum (e_i >> eshift) R + 2^30 by (4 ea_i >> eshift) R
+    per group of four where 4 ea_i is a multiple of 2^eshift (a triangle's
+    ea_i is a multiple of 2^8; persp_affine_run), else takes the general
+    loop: its weights equal wgt_linear's, ((e_i >> eshift) R + 2^30) >> 31
+    in Python's integers, at every slot: inside the triangle, where a
+    chunk's edge values leave the kernel's range at one end (the whole chunk
+    goes the other way), on sums placed one below a multiple of 2^31, with
+    eshift 0 to 12, steps that are multiples of 2^8 or any, and any count."""
     rng = np.random.default_rng(14)
     for trial in range(400):
         eshift = int(rng.integers(0, 13)) if trial % 3 else 0
@@ -504,6 +506,8 @@ def test_affine_chunk_weights_step_as_the_scalar_code():
         # the row's edge values: e1, e2 start inside and step by ea (e0 takes the rest)
         lim = area // SPAN_CHUNK
         ea = [0, int(rng.integers(-lim, lim + 1)), int(rng.integers(-lim, lim + 1))]
+        if trial % 2:
+            ea = [v >> 8 << 8 for v in ea]      # a triangle's (A times one subpixel unit)
         ea[0] = -ea[1] - ea[2]
         e0 = [0, int(rng.integers(0, area // 2)), int(rng.integers(0, area // 2))]
         if trial % 5 == 0:
