@@ -208,14 +208,19 @@ static void STAGE(stage_persp)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     (void)ctx;
     int j = 0;
-#if CHAIN_SIMD && NUM_IS_FIXED
-    /* the chain's first unit's coordinates too, where it has no level of
-    ** detail and no q (stage_fetch then starts past them) */
+#if CHAIN_SIMD
+    /* an affine triangle's weights by steps, with the chain's first unit's
+    ** coordinates where it has no level of detail and no q, and a second
+    ** such unit's into b->tx (stage_fetch then starts past them) */
     const int u = ctx ? ctx->chain_coords_unit : -1;     /* (the debug entry has no context) */
-    const int v = ctx ? ctx->chain_coords_tx_unit : -1;  /* ... and a second unit's, into b->tx */
+    const int v = ctx ? ctx->chain_coords_tx_unit : -1;
     const int coords = u >= 0 && !((t->tex_projective >> u) & 1);
     const int coords_tx = v >= 0 && !((t->tex_projective >> v) & 1);
+#if NUM_IS_FIXED
     j = STAGE(persp_affine_run)(t, b, coords ? u : -1, coords_tx ? v : -1);
+#else
+    j = STAGE(persp_affine_steps)(t, b, coords ? u : -1, coords_tx ? v : -1);
+#endif
     if (coords && j) {
         b->tc_unit = u;
         b->tc_done = j;
@@ -224,25 +229,6 @@ static void STAGE(stage_persp)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
         b->tx_unit = v;
         b->tx_done = j;
     }
-#endif
-#if CHAIN_SIMD && !NUM_IS_FIXED
-    {
-        /* the chain's first units' coordinates too, as in the fixed build */
-        const int u = ctx ? ctx->chain_coords_unit : -1, v = ctx ? ctx->chain_coords_tx_unit : -1;
-        const int coords = u >= 0 && !((t->tex_projective >> u) & 1);
-        const int coords_tx = v >= 0 && !((t->tex_projective >> v) & 1);
-        j = STAGE(persp_affine_steps)(t, b, coords ? u : -1, coords_tx ? v : -1);
-        if (coords && j) {
-            b->tc_unit = u;
-            b->tc_done = j;
-        }
-        if (coords_tx && j) {
-            b->tx_unit = v;
-            b->tx_done = j;
-        }
-    }
-#endif
-#if CHAIN_SIMD
     /* the loop's constants in locals (stores to b->p could alias t and b) */
     const WgtSetup ws = t->wgt;
     Edges4 ed;
