@@ -1253,16 +1253,38 @@ AVX2_INLINE int v4_lerp_fits(V4 v) { (void)v; return 1; }
 /* frag_clamp01: v < 0 ? 0 : (v > 1 ? 1 : v); max and min return their
 ** second operand when unordered or equal, so NaN and -0 pass as there */
 AVX2_INLINE V4 v4_clamp01(V4 v) { return V4_OP(min)(V4_OP(set1)(1), V4_OP(max)(V4_OP(setzero)(), v)); }
+/* d / 255 of integers d in [0, 255], correctly rounded as the division
+** rounds, without a division: 1/255 split as UNORM8_RECIP_HI + LO (the
+** first rounded, the second the rounded rest), then d HI + (d LO) in one
+** fused multiply-add. d / 255 is d's eight bits repeated in binary, never
+** within 2^-8 of a rounding midpoint relative to the last place, and the
+** sum is within about 2^-100 of it, so its one rounding is the quotient's
+** (test_simd checks all 256 values in each build against the scalar
+** code's division) */
+#if defined(GLES_NUM_FLOAT)
+#define UNORM8_RECIP_HI 0x1.010102p-8f
+#define UNORM8_RECIP_LO (-0x1.fdfdfep-33f)
+#else
+#define UNORM8_RECIP_HI 0x1.0101010101010p-8
+#define UNORM8_RECIP_LO 0x1.0101010101010p-64
+#endif
+AVX2_INLINE V4 v4_div255(V4 d)
+{
+#if defined(GLES_NUM_FLOAT)
+    return _mm_fmadd_ps(d, _mm_set1_ps(UNORM8_RECIP_HI), _mm_mul_ps(d, _mm_set1_ps(UNORM8_RECIP_LO)));
+#else
+    return _mm256_fmadd_pd(d, _mm256_set1_pd(UNORM8_RECIP_HI), _mm256_mul_pd(d, _mm256_set1_pd(UNORM8_RECIP_LO)));
+#endif
+}
 /* the four bytes of a word as d / 255 (frag_from_unorm, ctx->unorm8) */
 AVX2_INLINE V4 v4_unorm8(uint32_t word)
 {
-    return V4_OP(div)(v4_from_i32(_mm_cvtepu8_epi32(_mm_cvtsi32_si128((int)word))), V4_OP(set1)(255));
+    return v4_div255(v4_from_i32(_mm_cvtepu8_epi32(_mm_cvtsi32_si128((int)word))));
 }
 /* the same of one byte (bits shift .. shift + 7) of four words, lane by lane */
 AVX2_INLINE V4 v4_byte_unorm8(__m128i words, int shift)
 {
-    return V4_OP(div)(v4_from_i32(_mm_and_si128(_mm_srli_epi32(words, shift), _mm_set1_epi32(0xFF))),
-                      V4_OP(set1)(255));
+    return v4_div255(v4_from_i32(_mm_and_si128(_mm_srli_epi32(words, shift), _mm_set1_epi32(0xFF))));
 }
 /* frag_to_unorm(v, 255, 1/2) per lane, as int32: 0 unless v > 0, 255
 ** from 1 up, else v 255 + 1/2 truncated */

@@ -44,7 +44,9 @@ AVX512_INLINE void v8_linear_axis(__m512d s, int n, int repeat, __m256i *i0, __m
 AVX512_INLINE __m512d v8_byte_unorm8(__m256i words, int shift)
 {
     const __m256i d = _mm256_and_si256(_mm256_srli_epi32(words, shift), _mm256_set1_epi32(0xFF));
-    return _mm512_div_pd(_mm512_cvtepi32_pd(d), _mm512_set1_pd(255));
+    /* v4_div255's d / 255 */
+    const __m512d x = _mm512_cvtepi32_pd(d);
+    return _mm512_fmadd_pd(x, _mm512_set1_pd(UNORM8_RECIP_HI), _mm512_mul_pd(x, _mm512_set1_pd(UNORM8_RECIP_LO)));
 }
 
 /* v4_bilerp4 of eight fragments (lane k fragment k), stored as
