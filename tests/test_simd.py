@@ -212,6 +212,26 @@ def _sampler_case(numeric: str, seed: int, filt: int, wrap: tuple[int, int]) -> 
     return [_sampled(ctx, coords, level) for level in (0, 1, 2)]
 
 
+@pytest.mark.parametrize("numeric", ["float", "double"])
+def test_samplers_give_every_byte_over_255(numeric):
+    """At texel centres (both weights 0) a bilinear sample is its texel:
+    every byte value d in every channel comes out as d / 255 divided in the
+    build's type (numpy's division), from the baseline, the AVX2 and the
+    AVX-512 instance (whose kernels form it without a division)."""
+    ctx = make_ctx(numeric, 4, 4)
+    gl = ctx.gl
+    y, x = np.mgrid[0:16, 0:16]
+    img = np.stack([(16 * y + x + 85 * c) % 256 for c in range(4)], axis=-1).astype(np.uint8)
+    gl.glEnable(C.GL_TEXTURE_2D)
+    _texture(gl, img, C.GL_LINEAR)
+    st = np.column_stack([(x.ravel() + 0.5) / 16, (y.ravel() + 0.5) / 16])
+    coords = np.concatenate([st, st, st], axis=1)
+    kind = np.float32 if numeric == "float" else np.float64
+    want = (img.reshape(-1, 4).astype(kind) / kind(255)).astype(np.float64)
+    for level in (0, 1, 2):
+        np.testing.assert_array_equal(_sampled(ctx, coords, level), want, err_msg=f"level {level}")
+
+
 @pytest.mark.parametrize("numeric", BUILDS)
 @pytest.mark.parametrize("filt", [C.GL_LINEAR, C.GL_LINEAR_MIPMAP_LINEAR, C.GL_NEAREST_MIPMAP_LINEAR,
                                   C.GL_LINEAR_MIPMAP_NEAREST], ids=["linear", "lml", "nml", "lmn"])
