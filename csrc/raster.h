@@ -25,6 +25,15 @@ struct TriSetup {
     uint32_t flat_packed;   /* the same in the framebuffer's format */
 };
 
+/* unit u's s and t at the three vertices (0 where u < 0: no unit) */
+static inline void span_unit_st(const TriSetup *t, int u, NUM s[3], NUM tt[3])
+{
+    for (int i = 0; i < 3; i++) {
+        s[i] = u >= 0 ? t->v[i]->tex[u][0] : 0;
+        tt[i] = u >= 0 ? t->v[i]->tex[u][1] : 0;
+    }
+}
+
 /* texture coordinates of unit u at perspective weights p */
 static inline void span_tex_coord(const TriSetup *t, int u, const WGT p[3], TexCoord *out)
 {

@@ -46,17 +46,9 @@ static inline __attribute__((always_inline)) void STAGE(persp_affine_loop)(const
                                                                           __m256i step1, __m256i step2, int u,
                                                                           int v, const int units)
 {
-    NUM sv[3] = { 0, 0, 0 }, tv[3] = { 0, 0, 0 }, sv2[3] = { 0, 0, 0 }, tv2[3] = { 0, 0, 0 };
-    for (int i = 0; i < 3; i++) {
-        if (units >= 1) {
-            sv[i] = t->v[i]->tex[u][0];
-            tv[i] = t->v[i]->tex[u][1];
-        }
-        if (units == 2) {
-            sv2[i] = t->v[i]->tex[v][0];
-            tv2[i] = t->v[i]->tex[v][1];
-        }
-    }
+    NUM sv[3], tv[3], sv2[3], tv2[3];
+    span_unit_st(t, units >= 1 ? u : -1, sv, tv);
+    span_unit_st(t, units == 2 ? v : -1, sv2, tv2);
     const __m256i one = _mm256_set1_epi64x(WGT_ONE);
     WGT (*const p)[3] = b->p;
     TexCoord *const tc = b->tc, *const tx = b->tx;
@@ -162,9 +154,10 @@ static inline void STAGE(edge_steps)(const TriSetup *t, const SpanBuf *b, __m256
 /* an affine triangle's weights (wgt_linear reads edges 1 and 2 alone)
 ** four at a time from the stepped edge values, where STAGE(edge_steps)
 ** is exact, with unit u's coordinates (u >= 0: an affine unit) formed from
-** the same lanes into b->tc, and unit v's (v >= 0) into b->tx; a last group of fewer than four slots whole
-** (the slots past n are free; the exactness holds to the group's end, as
-** the test covers it). Returns the slots done (n), or 0. */
+** the same lanes into b->tc, and unit v's (v >= 0) into b->tx; a last
+** group of fewer than four slots whole (the slots past n are free; the
+** exactness holds to the group's end, as the test covers it). Returns the
+** slots done (n), or 0. */
 static int STAGE(persp_affine_steps)(const TriSetup *t, SpanBuf *b, int u, int v)
 {
     _Static_assert(SPAN_CHUNK % 4 == 0, "a last group rounded up to four stays within the chunk");
@@ -177,17 +170,9 @@ static int STAGE(persp_affine_steps)(const TriSetup *t, SpanBuf *b, int u, int v
     const WgtSetup ws = t->wgt;
     WGT (*const p)[3] = b->p;
     TexCoord *const tc = b->tc, *const tx = b->tx;
-    NUM sv[3] = { 0, 0, 0 }, tv[3] = { 0, 0, 0 }, sv2[3] = { 0, 0, 0 }, tv2[3] = { 0, 0, 0 };
-    for (int i = 0; i < 3; i++) {
-        if (u >= 0) {
-            sv[i] = t->v[i]->tex[u][0];
-            tv[i] = t->v[i]->tex[u][1];
-        }
-        if (v >= 0) {
-            sv2[i] = t->v[i]->tex[v][0];
-            tv2[i] = t->v[i]->tex[v][1];
-        }
-    }
+    NUM sv[3], tv[3], sv2[3], tv2[3];
+    span_unit_st(t, u, sv, tv);
+    span_unit_st(t, v, sv2, tv2);
     for (int j = 0; j < n4; j += 4) {
         const V4 ev[3] = { v4_edge_num(d1), v4_edge_num(d1), v4_edge_num(d2) };
         V4 o[3];
@@ -738,8 +723,8 @@ static void STAGE(stage_fetch)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, 
     const int proj = (t->tex_projective >> u) & 1;
 #define TEX_COORD(p, out) avx2_tex_coord(proj, a, p, out)
     /* an affine unit's s and t for four fragments at a time */
-    const NUM sv[3] = { t->v[0]->tex[u][0], t->v[1]->tex[u][0], t->v[2]->tex[u][0] };
-    const NUM tv[3] = { t->v[0]->tex[u][1], t->v[1]->tex[u][1], t->v[2]->tex[u][1] };
+    NUM sv[3], tv[3];
+    span_unit_st(t, u, sv, tv);
     const int four = proj ? 0 : b->n & ~3;
     const int tail = from > four ? from : four;     /* it forms a last group whole */
     for (int j = from; j < four; j += 4) {
@@ -1288,7 +1273,6 @@ static void STAGE(stage_write_rgba8_masked)(GlesContext *ctx, const TriSetup *t,
     }
 }
 
-/* RGB565, red, green and blue written, no blend or logic op */
 #if CHAIN_SIMD && !NUM_IS_FIXED
 /* the float builds' RGB565 writes four fragments at a time (blend: SRC_ALPHA,
 ** ONE_MINUS_SRC_ALPHA): their colours transposed to channels, the stored
@@ -1325,6 +1309,7 @@ static int STAGE(write_565x4)(GlesContext *ctx, SpanBuf *b, uint16_t *dst, const
 }
 #endif
 
+/* RGB565, red, green and blue written, no blend or logic op */
 static void STAGE(stage_write_565)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     (void)t;
