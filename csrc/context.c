@@ -104,17 +104,12 @@ GlesContext *gles_context_create(int width, int height, int color_format,
     ctx->color = calloc(npix, color_format == GLES_COLOR_RGB565 ? 2 : 4);
     ctx->depth = depth_bits ? calloc(npix, sizeof(uint32_t)) : NULL;
     ctx->stencil = stencil_bits ? calloc(npix, 1) : NULL;
-    for (int i = 0; i < 2; i++) {
-        ctx->nb_key[i] = calloc((size_t)width + 1, sizeof *ctx->nb_key[i]);
-        ctx->nb_w[i] = calloc((size_t)width + 1, sizeof *ctx->nb_w[i]);
-    }
     ctx->rect_s = calloc(((size_t)width + 1) * GLES_MAX_TEXTURE_UNITS, sizeof *ctx->rect_s);
     _Static_assert(GLES_FUSED_SETUP_BYTES % 64 == 0, "aligned_alloc takes a multiple of the alignment");
     ctx->fused_setup = aligned_alloc(64, GLES_FUSED_SETUP_BYTES);
     _Static_assert(GLES_TESTS_SETUP_BYTES % 64 == 0, "aligned_alloc takes a multiple of the alignment");
     ctx->tests_setup = aligned_alloc(64, GLES_TESTS_SETUP_BYTES);
-    if (!ctx->color || (depth_bits && !ctx->depth) || (stencil_bits && !ctx->stencil) || !ctx->nb_key[0]
-        || !ctx->nb_key[1] || !ctx->nb_w[0] || !ctx->nb_w[1] || !ctx->rect_s || !ctx->fused_setup
+    if (!ctx->color || (depth_bits && !ctx->depth) || (stencil_bits && !ctx->stencil) || !ctx->rect_s || !ctx->fused_setup
         || !ctx->tests_setup) {
         gles_context_destroy(ctx);
         return NULL;
@@ -193,10 +188,6 @@ void gles_context_destroy(GlesContext *ctx)
     free(ctx->color);
     free(ctx->depth);
     free(ctx->stencil);
-    for (int i = 0; i < 2; i++) {
-        free(ctx->nb_key[i]);
-        free(ctx->nb_w[i]);
-    }
     free(ctx->rect_s);
     free(ctx->fused_setup);
     free(ctx->tests_setup);

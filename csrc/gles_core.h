@@ -75,17 +75,19 @@ const char *gles_simd_name(GlesContext *ctx);
 ** (0 baseline, 1 AVX2, 2 AVX-512); 0 when the unit samples no complete
 ** texture */
 int gles_debug_sample(GlesContext *ctx, int unit, int simd, int n, const double *coords, double *out);
-/* for tests, fixed build (0 elsewhere): the perspective weights of n points
-** with edge values e[3 j .. 3 j + 2] for a triangle of the given 1/w
-** mantissas and shifts (wgt_persp_any), into out[3 j ..], four at a time by
+/* for tests, fixed build (0 elsewhere): the perspective weights (wgt_persp)
+** of n points with edge values e[3 j .. 3 j + 2] for a triangle of the given
+** 1/w mantissas (below 2^30, as recipw_of makes) and shifts (lin_recip is
+** the triangle's, for an affine one), into out[3 j ..], four at a time by
 ** the vector kernel where simd != 0 and the CPU has one, else one by one */
-int gles_debug_persp_any(int simd, int eshift, const int64_t mant[3], const int qshift[3], int affine, int n,
-                         const int64_t *e, int32_t *out);
-/* for tests, fixed build (0 elsewhere): as gles_debug_persp_any, the
-** weights of the fragments themselves (wgt_persp; lin_recip is the
-** triangle's, for an affine one); mantissas below 2^30, as recipw_of makes */
 int gles_debug_persp(int simd, int eshift, int64_t lin_recip, const int64_t mant[3], const int qshift[3], int affine,
                      int n, const int64_t *e, int32_t *out);
+/* for tests, fixed build (0 elsewhere): as gles_debug_persp, each point's
+** weights and their tangents (wgt_tangent) along the edge steps ea and eb
+** of a triangle of twice the area area2, nine values a point in out */
+int gles_debug_persp_tangent(int simd, int eshift, int64_t lin_recip, const int64_t mant[3], const int qshift[3],
+                             int affine, int64_t area2, const int64_t ea[3], const int64_t eb[3], int n,
+                             const int64_t *e, int32_t *out);
 /* the most pixels of a row the span chain takes through its stages at
 ** once (a chunk; tests size rows past it) */
 int gles_span_chunk(void);

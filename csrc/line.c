@@ -61,15 +61,7 @@ static void line_setup(GlesContext *ctx, TriSetup *t, const Vertex *a, const Ver
     t->ea[0] = -GLES_SUBPIXEL_ONE;
     t->ea[1] = GLES_SUBPIXEL_ONE;
     t->depth_offset = 0;
-}
-
-/* whether a unit's filter needs the level of detail's neighbours */
-static int line_needs_lod(const GlesContext *ctx)
-{
-    for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
-        if ((ctx->tex_units_on & (1u << u)) && texture_needs_lod(ctx->units[u].bound))
-            return 1;
-    return 0;
+    raster_tangent_setup(ctx, t, len > 0 ? len : 1);
 }
 
 /* An aliased line of width 1 has one fragment per major-axis pixel pm, at
@@ -168,7 +160,7 @@ void raster_line(GlesContext *ctx, const Vertex *a, const Vertex *b, const Verte
     /* (window coordinates below 2^40 subpixels: the edge values' constants
     ** stay far inside int64) */
     const int64_t lim = (int64_t)1 << 40;
-    if (!smooth && w == 1 && ((xmajor && D > 0) || !line_needs_lod(ctx)) && !(ctx->debug & GLES_DEBUG_GENERIC_SPANS)
+    if (!smooth && w == 1 && ((xmajor && D > 0) || !raster_needs_lod(ctx)) && !(ctx->debug & GLES_DEBUG_GENERIC_SPANS)
         && ma > -lim && ma < lim && mb > -lim && mb < lim && na > -lim && na < lim && nb > -lim && nb < lim) {
         if (p0 <= p1)
             line_runs(ctx, &t, xmajor, ma, na, nb, D, len, p0, p1, cn0, cn1);

@@ -716,8 +716,19 @@ static inline void wgt_linear(const WgtSetup *s, const int64_t e[3], WGT out[3])
     out[0] = (WGT)(WGT_ONE - l1 - l2);
 }
 
-/* wgt_persp's weights from the numerators n_i >= 0 and their sum den > 0 */
-static inline void wgt_persp_quotients(int64_t den, int64_t n1, int64_t n2, WGT out[3])
+/* What wgt_persp's division was at a fragment, for the level of detail's
+** tangents (wgt_tangent): den (the sum of the numerators) scaled by 2^-sh
+** into [2^31, 2^32) (sh < 0 scales up), and half = recip >> 1 for recip =
+** round(2^62 / that), the reciprocal wgt_persp divides by wherever den >=
+** 2^31; half 0 where the weights are the linear ones (affine, den <= 0) */
+typedef struct WgtDen {
+    uint32_t half;
+    int32_t sh;
+} WgtDen;
+
+/* wgt_persp's weights from the numerators n_i >= 0 and their sum den > 0,
+** and, where d is not NULL, its WgtDen */
+static inline void wgt_persp_quotients(int64_t den, int64_t n1, int64_t n2, WGT out[3], WgtDen *d)
 {
     int sh = u64_bits((uint64_t)den) - 32;
     if (sh > 0) {
@@ -732,10 +743,26 @@ static inline void wgt_persp_quotients(int64_t den, int64_t n1, int64_t n2, WGT 
     out[1] = (WGT)p1;
     out[2] = (WGT)p2;
     out[0] = (WGT)(WGT_ONE - p1 - p2);
+    if (!d)
+        return;
+    if (den >= ((int64_t)1 << 31)) {
+        d->half = (uint32_t)(recip >> 1);
+        d->sh = sh > 0 ? sh : 0;
+    } else {
+        /* (a small den, wgt_persp's shift 0): scaled up into range, with a
+        ** reciprocal of its own */
+        const int up = 32 - u64_bits((uint64_t)den);
+        const int64_t dn = den << up;
+        d->half = (uint32_t)(((((int64_t)1 << 62) + dn / 2) / dn) >> 1);
+        d->sh = -up;
+    }
 }
 
-static inline void wgt_persp(const WgtSetup *s, const int64_t e[3], WGT out[3])
+/* wgt_persp, with its WgtDen where d is not NULL */
+static inline void wgt_persp_den(const WgtSetup *s, const int64_t e[3], WGT out[3], WgtDen *d)
 {
+    if (d)
+        *d = (WgtDen){ 0, 0 };
     if (s->affine) {
         wgt_linear(s, e, out);
         return;
@@ -750,48 +777,91 @@ static inline void wgt_persp(const WgtSetup *s, const int64_t e[3], WGT out[3])
         wgt_linear(s, e, out);
         return;
     }
-    wgt_persp_quotients(den, n[1], n[2], out);
+    wgt_persp_quotients(den, n[1], n[2], out, d);
 }
 
-/* perspective weights at edge values that may lie outside the triangle
-** (a neighbour pixel, for the level of detail); weights are clamped to
-** [-2, 2) so they stay representable */
-static inline void wgt_persp_any(const WgtSetup *s, const int64_t e[3], WGT out[3])
+static inline void wgt_persp(const WgtSetup *s, const int64_t e[3], WGT out[3]) { wgt_persp_den(s, e, out, NULL); }
+
+/* The level of detail's neighbours (ES 1.1 §3.7.7): the perspective
+** weights' tangent one pixel along an edge step d (t->ea right, t->eb up),
+** p_i + dp_i with dp_i = (a_i - p_i sum_j a_j) / den, a_i = d_i / w_i:
+** the derivative at the fragment, which the spec's du/dx asks for, where a
+** difference with the neighbour's weights would be a secant. */
+typedef struct WgtTangent {
+    int32_t a[3];      /* a_i = ((d_i >> eshift) mant_i) >> qshift_i, scaled by 2^-ashift below 2^29 */
+    int32_t asum;      /* their sum */
+    int32_t ashift;    /* the same for both steps of a triangle */
+    int32_t lin[3];    /* the linear weights' step d_i / area in 2^-30, within +-(2^31 - 1) */
+} WgtTangent;
+
+/* floor(n / 2^k) for k >= 0 (0 or -1 from k = 63 on) */
+static inline int64_t i64_floor_shift(int64_t n, int k)
 {
-    int64_t n[3], den = 0;
-    for (int i = 0; i < 3; i++) {
-        int64_t ei = i64_div_pow2(e[i], s->eshift);
-        int sh = s->qshift[i] < 62 ? s->qshift[i] : 62;
-        n[i] = s->affine ? ei : i64_div_pow2(ei * s->mant[i], sh);
-        den += n[i];
+    if (k > 62)
+        return n < 0 ? -1 : 0;
+    return n < 0 ? -(int64_t)((((uint64_t)0 - (uint64_t)n) + (((uint64_t)1 << k) - 1)) >> k) : n >> k;
+}
+
+/* WgtTangent of the edge steps ea (g[0]) and eb (g[1]) for a triangle of
+** twice the area area2 > 0 */
+static inline void wgt_tangents_setup(const WgtSetup *s, int64_t area2, const int64_t ea[3], const int64_t eb[3],
+                                      WgtTangent g[2])
+{
+    const int64_t lim = ((int64_t)1 << 31) - 1, big = (int64_t)1 << 31;
+    const int64_t area = area2 >> s->eshift > 0 ? area2 >> s->eshift : 1;
+    int64_t a[2][3];
+    uint64_t top = 0;
+    for (int k = 0; k < 2; k++)
+        for (int i = 0; i < 3; i++) {
+            const int64_t x = i64_clamp(i64_div_pow2((k ? eb : ea)[i], s->eshift), -big, big);
+            const int sh = s->qshift[i] < 62 ? s->qshift[i] : 62;
+            a[k][i] = s->affine ? 0 : i64_div_pow2(x * s->mant[i], sh);     /* |a_i| < 2^61 */
+            const uint64_t m = a[k][i] < 0 ? (uint64_t)0 - (uint64_t)a[k][i] : (uint64_t)a[k][i];
+            top = m > top ? m : top;
+            /* |x| < 2 area: x 2^30 < 2^62 */
+            g[k].lin[i] = (int32_t)(x >= 2 * area    ? lim
+                                    : x <= -2 * area ? -lim
+                                                     : i64_clamp(i64_round_div(x * ((int64_t)1 << 30), area), -lim, lim));
+        }
+    const int ashift = u64_bits(top) > 29 ? u64_bits(top) - 29 : 0;
+    for (int k = 0; k < 2; k++) {
+        g[k].ashift = ashift;
+        g[k].asum = 0;
+        for (int i = 0; i < 3; i++) {
+            g[k].a[i] = (int32_t)i64_div_pow2(a[k][i], ashift);
+            g[k].asum += g[k].a[i];
+        }
     }
-    int64_t lim = (int64_t)1 << 31;
-    /* bring numerators and denominator to |x| <= 2^31, then one division
-    ** each: the smallest k with every |x| >> k <= 2^31, found from the bit
-    ** length of the largest (x / 2^k truncates as k halvings would) */
-    uint64_t m = 0;
-    for (int i = 0; i < 3; i++) {
-        int64_t x = i == 0 ? den : n[i];
-        uint64_t ax = x < 0 ? (uint64_t)0 - (uint64_t)x : (uint64_t)x;
-        if (ax > m)
-            m = ax;
+}
+
+/* the tangent weights out of weights p at a fragment whose division was d
+** (WgtDen): the numerator n_i = a_i - floor((p_i sum_j a_j + 2^29) / 2^30)
+** (in units of 2^ashift), and with k = sh - ashift, dp_i = floor((floor(n_i
+** 2^-k) half + 2^30) / 2^31) for k >= 0, floor((n_i half + 2^(30 + k)) /
+** 2^(31 + k)) for -30 <= k < 0 (n_i 2^-k half / 2^31 rounded once), +-2^62
+** below (a derivative past 2^30 weights a pixel); the linear step where
+** d.half is 0. Each weight is kept within +-(2^31 - 1), out[0] = 1 - out[1]
+** - out[2]. */
+static inline void wgt_tangent(const WgtTangent *g, const WGT p[3], WgtDen d, WGT out[3])
+{
+    const int64_t lim = ((int64_t)1 << 31) - 1;
+    int64_t dp[3] = { 0, g->lin[1], g->lin[2] };
+    if (d.half) {
+        const int k = d.sh - g->ashift;
+        for (int i = 1; i < 3; i++) {
+            const int64_t n = g->a[i] - i64_floor_div((int64_t)p[i] * g->asum + ((int64_t)1 << 29), (int64_t)1 << 30);
+            if (k >= 0)
+                dp[i] = i64_floor_div(i64_floor_shift(n, k) * (int64_t)d.half + ((int64_t)1 << 30), (int64_t)1 << 31);
+            else if (k >= -30)
+                dp[i] = i64_floor_div(n * (int64_t)d.half + ((int64_t)1 << (30 + k)), (int64_t)1 << (31 + k));
+            else
+                dp[i] = n == 0 ? 0 : (n < 0 ? -((int64_t)1 << 62) : (int64_t)1 << 62);
+        }
     }
-    if (m > (uint64_t)lim) {
-        int k = u64_bits(m) - 32;          /* m >> k has 32 bits */
-        if ((m >> k) > (uint64_t)lim)
-            k++;
-        /* k <= 33 */
-        den = i64_div_pow2(den, k);
-        n[1] = i64_div_pow2(n[1], k);
-        n[2] = i64_div_pow2(n[2], k);
-    }
-    if (den == 0)
-        den = 1;
-    int64_t p1 = i64_clamp(n[1] * ((int64_t)1 << 30) / den, -(lim - 1), lim - 1);
-    int64_t p2 = i64_clamp(n[2] * ((int64_t)1 << 30) / den, -(lim - 1), lim - 1);
-    out[1] = (WGT)p1;
-    out[2] = (WGT)p2;
-    out[0] = (WGT)i64_clamp(WGT_ONE - p1 - p2, -(lim - 1), lim - 1);
+    const int64_t o1 = i64_clamp(p[1] + dp[1], -lim, lim), o2 = i64_clamp(p[2] + dp[2], -lim, lim);
+    out[1] = (WGT)o1;
+    out[2] = (WGT)o2;
+    out[0] = (WGT)i64_clamp(WGT_ONE - o1 - o2, -lim, lim);
 }
 
 #else
@@ -853,10 +923,15 @@ static inline void wgt_linear(const WgtSetup *s, const int64_t e[3], WGT out[3])
     out[0] = 1 - out[1] - out[2];
 }
 
-static inline void wgt_persp(const WgtSetup *s, const int64_t e[3], WGT out[3])
+/* wgt_persp's 1/den (WgtDen; 0 where the weights are linear, affine) */
+typedef NUM WgtDen;
+
+static inline void wgt_persp_den(const WgtSetup *s, const int64_t e[3], WGT out[3], WgtDen *d)
 {
     if (s->affine) {
         wgt_linear(s, e, out);
+        if (d)
+            *d = 0;
         return;
     }
     NUM n0 = (NUM)e[0] * s->q[0], n1 = (NUM)e[1] * s->q[1], n2 = (NUM)e[2] * s->q[2];
@@ -864,11 +939,46 @@ static inline void wgt_persp(const WgtSetup *s, const int64_t e[3], WGT out[3])
     out[1] = n1 * inv;
     out[2] = n2 * inv;
     out[0] = 1 - out[1] - out[2];
+    if (d)
+        *d = inv;
 }
 
-static inline void wgt_persp_any(const WgtSetup *s, const int64_t e[3], WGT out[3])
+static inline void wgt_persp(const WgtSetup *s, const int64_t e[3], WGT out[3]) { wgt_persp_den(s, e, out, NULL); }
+
+/* as the fixed build's WgtTangent: a_i = d_i / w_i, the linear step d_i / area */
+typedef struct WgtTangent {
+    NUM a[3];
+    NUM lin[3];
+    int affine;
+} WgtTangent;
+
+static inline void wgt_tangents_setup(const WgtSetup *s, int64_t area2, const int64_t ea[3], const int64_t eb[3],
+                                      WgtTangent g[2])
 {
-    wgt_persp(s, e, out);
+    (void)area2;
+    for (int k = 0; k < 2; k++) {
+        g[k].affine = s->affine;
+        for (int i = 0; i < 3; i++) {
+            g[k].a[i] = (NUM)(k ? eb : ea)[i] * s->q[i];
+            g[k].lin[i] = (NUM)(k ? eb : ea)[i] * s->inv_area;
+        }
+    }
+}
+
+/* the tangent weights: dp_i = a_i / den - p_i r, r = sum_j a_j / den (the
+** linear step where the triangle is affine) */
+static inline void wgt_tangent(const WgtTangent *g, const WGT p[3], WgtDen inv, WGT out[3])
+{
+    NUM d1 = g->lin[1], d2 = g->lin[2];
+    if (!g->affine) {
+        const NUM a0 = g->a[0] * inv, a1 = g->a[1] * inv, a2 = g->a[2] * inv;
+        const NUM r = a0 + a1 + a2;
+        d1 = a1 - p[1] * r;
+        d2 = a2 - p[2] * r;
+    }
+    out[1] = p[1] + d1;
+    out[2] = p[2] + d2;
+    out[0] = 1 - out[1] - out[2];
 }
 #endif
 /* }==================================================================== */

@@ -59,6 +59,7 @@ static void point_setup(GlesContext *ctx, TriSetup *t, const Vertex *v)
     for (int i = 0; i < 3; i++)
         t->ea[i] = t->eb[i] = t->ec[i] = 0;
     t->depth_offset = 0;
+    raster_tangent_setup(ctx, t, 1);
 }
 
 void raster_point(GlesContext *ctx, const Vertex *v)

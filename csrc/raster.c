@@ -225,6 +225,7 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
     NUM w[3] = { a->clip[3], b->clip[3], c->clip[3] };
     RecipW q[3] = { a->rw, b->rw, c->rw };
     wgt_setup(&t.wgt, area2, w, q);
+    raster_tangent_setup(ctx, &t, area2);
     int use_back = back && ctx->two_sided;
     for (int i = 0; i < 3; i++)
         t.col[i] = use_back ? t.v[i]->color_back : t.v[i]->color;

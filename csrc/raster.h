@@ -16,10 +16,11 @@ struct TriSetup {
     ** pixel indices; positive inside, zero on the edge */
     int64_t ea[3], eb[3], ec[3];
     WgtSetup wgt;
+    WgtTangent tan[2];      /* the weights' tangents along ea and eb, where a unit needs the level of detail */
     const FRAGV *col[3];    /* each vertex's colour for the visible face */
     int smooth;             /* colours vary over the triangle */
     unsigned int tex_projective;  /* bit per unit whose q varies (divide by q) */
-    uint64_t serial;        /* ctx->prim_serial of this setup (stage_neighbours' row cache) */
+    uint64_t serial;        /* ctx->prim_serial of this setup (the stages' per-primitive setups) */
     int64_t depth_offset;         /* polygon offset in depth units, 0 when off */
     FRAGV flat[4];          /* colour of the provoking vertex */
     uint32_t flat_packed;   /* the same in the framebuffer's format */
@@ -32,6 +33,24 @@ static inline void span_unit_st(const TriSetup *t, int u, NUM s[3], NUM tt[3])
         s[i] = u >= 0 ? t->v[i]->tex[u][0] : 0;
         tt[i] = u >= 0 ? t->v[i]->tex[u][1] : 0;
     }
+}
+
+/* whether an enabled unit's filter needs the level of detail */
+static inline int raster_needs_lod(const GlesContext *ctx)
+{
+    for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
+        if ((ctx->tex_units_on & (1u << u)) && texture_needs_lod(ctx->units[u].bound))
+            return 1;
+    return 0;
+}
+
+/* t->tan from t->wgt, t->ea and t->eb (twice the area area2), where a
+** unit needs the level of detail */
+static inline void raster_tangent_setup(const GlesContext *ctx, TriSetup *t, int64_t area2)
+{
+    if (!raster_needs_lod(ctx))
+        return;
+    wgt_tangents_setup(&t->wgt, area2, t->ea, t->eb, t->tan);
 }
 
 /* texture coordinates of unit u at perspective weights p */

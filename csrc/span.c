@@ -27,9 +27,10 @@ uint32_t span_pack_color(const GlesContext *ctx, const FRAGV *c)
 }
 
 /* The fragment at (x, y) of a primitive described by a TriSetup, with edge
-** values e (weights come from t->wgt; t->ea and t->eb are the edge steps to
-** the right and upper neighbours, for the level of detail). Triangles,
-** lines and points all end here. */
+** values e (weights come from t->wgt; the level of detail's neighbours are
+** the coordinates at the weights' tangents t->tan along the edge steps to
+** the right and upper pixels, t->ea and t->eb). Triangles, lines and points
+** all end here. */
 void fragment_inputs(const GlesContext *ctx, const TriSetup *t, const int64_t e[3], FRAGV coverage,
                      const TexCoord *sprite, const TexCoord *sprite_dx, const TexCoord *sprite_dy, FragIn *out)
 {
@@ -38,8 +39,14 @@ void fragment_inputs(const GlesContext *ctx, const TriSetup *t, const int64_t e[
     out->coverage = coverage;
     out->z = 0;
     out->fog = 0;
-    WGT p[3];
-    wgt_persp(&t->wgt, e, p);
+    WGT p[3], px[3] = { 0 }, py[3] = { 0 };
+    WgtDen den;
+    wgt_persp_den(&t->wgt, e, p, &den);
+    if (raster_needs_lod(ctx)) {
+        /* the level of detail's neighbours: the weights' tangents */
+        wgt_tangent(&t->tan[0], p, den, px);
+        wgt_tangent(&t->tan[1], p, den, py);
+    }
     for (int i = 0; i < 4; i++)
         out->c[i] = t->smooth ? frag_lerp3f(t->col[0][i], t->col[1][i], t->col[2][i], p[0], p[1], p[2]) : t->flat[i];
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++) {
@@ -53,12 +60,6 @@ void fragment_inputs(const GlesContext *ctx, const TriSetup *t, const int64_t e[
         }
         span_tex_coord(t, u, p, &out->tc[u]);
         if (texture_needs_lod(ctx->units[u].bound)) {
-            /* the right and upper neighbours' coordinates */
-            int64_t ex[3] = { e[0] + t->ea[0], e[1] + t->ea[1], e[2] + t->ea[2] };
-            int64_t ey[3] = { e[0] + t->eb[0], e[1] + t->eb[1], e[2] + t->eb[2] };
-            WGT px[3], py[3];
-            wgt_persp_any(&t->wgt, ex, px);
-            wgt_persp_any(&t->wgt, ey, py);
             span_tex_coord(t, u, px, &out->tdx[u]);
             span_tex_coord(t, u, py, &out->tdy[u]);
         }

@@ -256,19 +256,6 @@ AVX2_INLINE __m256i avx2_round_shift(__m256i acc, int shift)
     return _mm256_sub_epi64(_mm256_srli_epi64(z, shift), _mm256_set1_epi64x((int64_t)1 << (63 - shift)));
 }
 
-/* i64_div_pow2 of each lane by the same k, and by a k per lane (truncation
-** toward zero: the magnitude shifted, the sign put back); lanes above -2^63 */
-AVX2_INLINE __m256i avx2_div_pow2(__m256i v, __m128i k)
-{
-    const __m256i sign = avx2_negative(v);
-    return avx2_negate_where(_mm256_srl_epi64(avx2_negate_where(v, sign), k), sign);
-}
-AVX2_INLINE __m256i avx2_div_pow2v(__m256i v, __m256i k)
-{
-    const __m256i sign = avx2_negative(v);
-    return avx2_negate_where(_mm256_srlv_epi64(avx2_negate_where(v, sign), k), sign);
-}
-
 /* four fragments' s and t (lanes = fragments) stored as TexCoord out[0..3] */
 AVX2_INLINE void avx2_store_st4(__m256i s, __m256i t, TexCoord *out)
 {
@@ -708,181 +695,6 @@ AVX2_INLINE void avx2_lod_choose4(const Avx2LodParams *p, const TexCoord *c, con
 
 /* }==================================================================== */
 
-/* trunc(n 2^30 / d) (C's division) for |n| <= 2^31 and 0 < d < 2^31, where
-** the quotient's magnitude stays below 2^31 - 2: the double quotient is
-** within 2^-22 of the exact one, so its truncation is off by at most one,
-** which the exact remainder n 2^30 - q d corrects; 0 when a lane's quotient
-** is out of that range */
-AVX2_INLINE int avx2_div30(__m256i n, __m256i d, __m256i *q)
-{
-    const __m256d qd = _mm256_round_pd(_mm256_div_pd(_mm256_mul_pd(avx2_i64_to_pd(n), _mm256_set1_pd(1073741824.0)),
-                                                     avx2_i64_to_pd(d)),
-                                       _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
-    const __m256d lim = _mm256_set1_pd(2147483645.0);
-    if (_mm256_movemask_pd(_mm256_cmp_pd(_mm256_andnot_pd(_mm256_set1_pd(-0.0), qd), lim, _CMP_LT_OQ)) != 0xF)
-        return 0;
-    __m256i qi = avx2_pd_to_i64(qd);
-    const __m256i r = _mm256_sub_epi64(_mm256_slli_epi64(n, 30), _mm256_mul_epi32(qi, d));
-    const __m256i one = _mm256_set1_epi64x(1), zero = _mm256_setzero_si256();
-    const __m256i neg_n = avx2_negative(n);
-    /* n >= 0: 0 <= r < d; n < 0: -d < r <= 0 */
-    const __m256i too_low = _mm256_andnot_si256(neg_n, _mm256_cmpgt_epi64(zero, r));
-    const __m256i too_high = _mm256_andnot_si256(neg_n, _mm256_cmpgt_epi64(r, _mm256_sub_epi64(d, one)));
-    const __m256i too_low_n = _mm256_and_si256(neg_n, _mm256_cmpgt_epi64(_mm256_sub_epi64(one, d), r));
-    const __m256i too_high_n = _mm256_and_si256(neg_n, _mm256_cmpgt_epi64(r, zero));
-    qi = _mm256_add_epi64(qi, _mm256_or_si256(too_low, too_low_n));                    /* -1 where set */
-    qi = _mm256_sub_epi64(qi, _mm256_or_si256(too_high, too_high_n));                  /* +1 where set */
-    *q = qi;
-    return 1;
-}
-
-/* wgt_persp_any's normalising shift k of magnitudes m (lanes below 2^63):
-** k0 = the bit length of m >> 32 (below 2^31, so its double is exact and
-** the exponent gives it), then one more where m >> k0 > 2^31: the scalar
-** code's k (0 where m <= 2^31) */
-AVX2_INLINE __m256i avx2_any_shift(__m256i m)
-{
-    __m256i k = _mm256_sub_epi64(
-        _mm256_srli_epi64(_mm256_castpd_si256(avx2_i64_to_pd(_mm256_srli_epi64(m, 32))), 52),
-        _mm256_set1_epi64x(1022));
-    k = _mm256_andnot_si256(avx2_negative(k), k);
-    return _mm256_sub_epi64(k, _mm256_cmpgt_epi64(_mm256_srlv_epi64(m, k), _mm256_set1_epi64x((int64_t)1 << 31)));
-}
-
-/* wgt_persp_any's weights from p1, p2 (each below 2^31 - 2 in magnitude,
-** so their clamps are no-ops): out0 = 1 - p1 - p2 clamped */
-AVX2_INLINE void avx2_any_weights(__m256i p1, __m256i p2, __m256i out[3])
-{
-    const int64_t lim = (int64_t)1 << 31;
-    __m256i p0 = _mm256_sub_epi64(_mm256_sub_epi64(_mm256_set1_epi64x(WGT_ONE), p1), p2);
-    const __m256i hi = _mm256_set1_epi64x(lim - 1), lo = _mm256_set1_epi64x(-(lim - 1));
-    p0 = _mm256_blendv_epi8(p0, hi, _mm256_cmpgt_epi64(p0, hi));
-    out[0] = _mm256_blendv_epi8(p0, lo, _mm256_cmpgt_epi64(lo, p0));
-    out[1] = p1;
-    out[2] = p2;
-}
-
-/* avx2_div30 of a numerator 0 <= n <= 2^31 and 0 < d < 2^31 */
-AVX2_INLINE int avx2_div30_pos(__m256i n, __m256i d, __m256i *q)
-{
-    const __m256d qd = _mm256_round_pd(_mm256_div_pd(_mm256_mul_pd(avx2_i64_to_pd(n), _mm256_set1_pd(1073741824.0)),
-                                                     avx2_i64_to_pd(d)),
-                                       _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
-    if (_mm256_movemask_pd(_mm256_cmp_pd(qd, _mm256_set1_pd(2147483645.0), _CMP_LT_OQ)) != 0xF)
-        return 0;
-    /* the rounded quotient is never below the exact one's floor (rounding
-    ** is monotone and the floor is a double), so the truncation is right
-    ** or one too high: -1 where the remainder n 2^30 - q d is negative */
-    const __m256i qi = avx2_pd_to_i64(qd);
-    const __m256i r = _mm256_sub_epi64(_mm256_slli_epi64(n, 30), _mm256_mul_epi32(qi, d));
-    *q = _mm256_add_epi64(qi, avx2_negative(r));
-    return 1;
-}
-
-/* avx2_persp_any4 where every edge value lies in a covered point's range,
-** 0 <= e_i and e_i >> eshift < 2^31 (a neighbour inside the triangle, as
-** most are): the numerators and the denominator are then non-negative,
-** so the scalar code's halvings are plain shifts, its largest magnitude
-** is the denominator, and its divisions are avx2_div30_pos's; the same
-** bits as avx2_persp_any4's general path */
-AVX2_INLINE int avx2_persp_any4_covered(const WgtSetup *s, const __m256i e[3], __m256i out[3])
-{
-    const __m128i esh = _mm_cvtsi32_si128(s->eshift);
-    __m256i n[3];
-    for (int i = 0; i < 3; i++) {
-        const __m256i ei = _mm256_srl_epi64(e[i], esh);
-        if (s->affine) {
-            n[i] = ei;
-            continue;
-        }
-        /* ei < 2^31 and 0 < mant < 2^31: the unsigned product is the signed one */
-        const int sh = s->qshift[i] < 62 ? s->qshift[i] : 62;
-        n[i] = _mm256_srl_epi64(_mm256_mul_epu32(ei, _mm256_set1_epi64x(s->mant[i])), _mm_cvtsi32_si128(sh));
-    }
-    __m256i den = _mm256_add_epi64(_mm256_add_epi64(n[0], n[1]), n[2]);
-    const int64_t lim = (int64_t)1 << 31;
-    const __m256i kvec = avx2_any_shift(den);    /* the largest magnitude is den's */
-    den = _mm256_srlv_epi64(den, kvec);
-    const __m256i n1 = _mm256_srlv_epi64(n[1], kvec), n2 = _mm256_srlv_epi64(n[2], kvec);
-    den = _mm256_blendv_epi8(den, _mm256_set1_epi64x(1), _mm256_cmpeq_epi64(den, _mm256_setzero_si256()));
-    if (!_mm256_testz_si256(_mm256_cmpgt_epi64(den, _mm256_set1_epi64x(lim - 1)), _mm256_set1_epi64x(-1)))
-        return 0;
-    __m256i p1, p2;
-    if (!avx2_div30_pos(n1, den, &p1) || !avx2_div30_pos(n2, den, &p2))
-        return 0;
-    avx2_any_weights(p1, p2, out);
-    return 1;
-}
-
-/* 1 when every lane's edge values are a covered point's (0 <= e, e >>
-** eshift < 2^31): avx2_persp_any4_covered's range */
-AVX2_INLINE int avx2_edges4_covered(const WgtSetup *s, const __m256i e[3])
-{
-    const __m128i esh = _mm_cvtsi32_si128(s->eshift);
-    /* e < 0 (its top bit) or e >> eshift >= 2^31 in some lane */
-    const __m256i high = _mm256_set1_epi64x(~(int64_t)0x7FFFFFFF);
-    __m256i far = _mm256_setzero_si256();
-    for (int i = 0; i < 3; i++)
-        far = _mm256_or_si256(far, _mm256_or_si256(_mm256_and_si256(e[i], _mm256_set1_epi64x(INT64_MIN)),
-                                                   _mm256_and_si256(_mm256_srl_epi64(e[i], esh), high)));
-    return _mm256_testz_si256(far, far);
-}
-
-/* avx2_persp_any4 of lanes that are not all covered points (out of line:
-** the stages inline the covered path alone) */
-static __attribute__((noinline)) int avx2_persp_any4_general(const WgtSetup *s, const __m256i e[3], __m256i out[3])
-{
-    const __m128i esh = _mm_cvtsi32_si128(s->eshift);
-    __m256i n[3];
-    for (int i = 0; i < 3; i++) {
-        const __m256i ev = e[i];
-        if (!_mm256_testz_si256(_mm256_cmpeq_epi64(ev, _mm256_set1_epi64x(INT64_MIN)), _mm256_set1_epi64x(-1)))
-            return 0;
-        const __m256i ei = avx2_div_pow2(ev, esh);
-        if (s->affine) {
-            n[i] = ei;
-            continue;
-        }
-        if (!avx2_fits_i32(ei))
-            return 0;
-        const int sh = s->qshift[i] < 62 ? s->qshift[i] : 62;
-        n[i] = avx2_div_pow2(_mm256_mul_epi32(ei, _mm256_set1_epi64x(s->mant[i])), _mm_cvtsi32_si128(sh));
-    }
-    __m256i den = _mm256_add_epi64(_mm256_add_epi64(n[0], n[1]), n[2]);
-    /* the normalising shift k per lane, as the scalar code finds it */
-    __m256i m = avx2_abs64(den), a1 = avx2_abs64(n[1]), a2 = avx2_abs64(n[2]);
-    m = _mm256_blendv_epi8(m, a1, _mm256_cmpgt_epi64(a1, m));
-    m = _mm256_blendv_epi8(m, a2, _mm256_cmpgt_epi64(a2, m));
-    const int64_t lim = (int64_t)1 << 31;
-    /* |INT64_MIN| is not a magnitude: the scalar code's */
-    if (_mm256_movemask_pd(_mm256_castsi256_pd(m)))
-        return 0;
-    const __m256i kvec = avx2_any_shift(m);
-    den = avx2_div_pow2v(den, kvec);
-    __m256i n1 = avx2_div_pow2v(n[1], kvec), n2 = avx2_div_pow2v(n[2], kvec);
-    den = _mm256_blendv_epi8(den, _mm256_set1_epi64x(1), _mm256_cmpeq_epi64(den, _mm256_setzero_si256()));
-    /* a negative denominator: trunc(n / d) = trunc(-n / -d) */
-    const __m256i dneg = avx2_negative(den);
-    den = avx2_negate_where(den, dneg);
-    n1 = avx2_negate_where(n1, dneg);
-    n2 = avx2_negate_where(n2, dneg);
-    if (!_mm256_testz_si256(_mm256_cmpgt_epi64(den, _mm256_set1_epi64x(lim - 1)), _mm256_set1_epi64x(-1)))
-        return 0;
-    __m256i p1, p2;
-    if (!avx2_div30(n1, den, &p1) || !avx2_div30(n2, den, &p2))
-        return 0;
-    avx2_any_weights(p1, p2, out);
-    return 1;
-}
-
-/* wgt_persp_any of four fragments' edge values (lanes e[i]) as lanes out[i]
-** whose low 32 bits are the WGT values; 0 (nothing written) where an
-** operand leaves the kernel's ranges, for the scalar code */
-AVX2_INLINE int avx2_persp_any4(const WgtSetup *s, const __m256i e[3], __m256i out[3])
-{
-    return avx2_edges4_covered(s, e) ? avx2_persp_any4_covered(s, e, out) : avx2_persp_any4_general(s, e, out);
-}
-
 /* four fragments' weights l[0..2] (lanes whose low 32 bits are the WGT
 ** values) stored as out[lane][0..2] */
 AVX2_INLINE void avx2_store_wgt4(const __m256i l[3], WGT (*out)[3])
@@ -906,7 +718,7 @@ AVX2_INLINE void avx2_store_wgt4(const __m256i l[3], WGT (*out)[3])
 ** exact remainder 2^62 + den / 2 - q den (q den < 2^64 from vpmuludq; the
 ** true value is near 2^62) corrects it. n_i <= den, so n_i recip <= 2^62
 ** + den and p_i = (n_i recip + 2^31) >> 32 is one vpmuludq and a shift. */
-AVX2_INLINE int avx2_persp4(const WgtSetup *s, const __m256i e[3], __m256i l[3])
+AVX2_INLINE int avx2_persp4_den(const WgtSetup *s, const __m256i e[3], __m256i l[3], __m256i *den_out)
 {
     const __m128i esh = _mm_cvtsi32_si128(s->eshift);
     const __m256i high = _mm256_set1_epi64x(~(int64_t)0x7FFFFFFF);
@@ -948,6 +760,56 @@ AVX2_INLINE int avx2_persp4(const WgtSetup *s, const __m256i e[3], __m256i l[3])
     l[1] = _mm256_srli_epi64(_mm256_add_epi64(_mm256_mul_epu32(n1, q), round), 32);
     l[2] = _mm256_srli_epi64(_mm256_add_epi64(_mm256_mul_epu32(n2, q), round), 32);
     l[0] = _mm256_sub_epi64(_mm256_sub_epi64(_mm256_set1_epi64x(WGT_ONE), l[1]), l[2]);
+    if (den_out)
+        /* WgtDen's half in the low 32 bits, sh in the high ones */
+        *den_out = _mm256_or_si256(_mm256_srli_epi64(q, 1), _mm256_slli_epi64(sh, 32));
+    return 1;
+}
+
+AVX2_INLINE int avx2_persp4(const WgtSetup *s, const __m256i e[3], __m256i l[3])
+{
+    return avx2_persp4_den(s, e, l, NULL);
+}
+
+/* wgt_tangent along both steps g[0], g[1] of four fragments of a triangle
+** that is not affine: their weights l[1], l[2] (lanes in [0, 2^30 + 1]) and
+** WgtDen lanes (half in the low 32 bits, sh >= 0 in the high ones,
+** avx2_persp4_den's), the tangent weights as lanes out[k][i] whose low 32
+** bits are the WGT values; 0 (nothing written) where a lane has sh <
+** ashift - 30, for the scalar code. Then |n_i| < 2^31 (|a_i| < 2^29, |p_i
+** asum| < 3 2^59), so floor(n_i 2^-k) for k >= 0 is vpsravd's of the low
+** dword, and with kn = max(-k, 0) both of wgt_tangent's quotients are
+** floor((m half + 2^(30 - kn)) / 2^(31 - kn)): |m half| < 2^61 (vpmuldq),
+** and the floor is a logical shift of it plus 2^62, less 2^(62 - 31 + kn). */
+AVX2_INLINE int avx2_tangents4(const WgtTangent g[2], const __m256i l[3], __m256i den, __m256i out[2][3])
+{
+    const __m256i one = _mm256_set1_epi64x(1);
+    const __m256i k = _mm256_sub_epi64(_mm256_srli_epi64(den, 32), _mm256_set1_epi64x(g[0].ashift));
+    if (_mm256_movemask_pd(_mm256_castsi256_pd(_mm256_cmpgt_epi64(_mm256_set1_epi64x(-30), k))))
+        return 0;
+    const __m256i neg = avx2_negative(k), kp = _mm256_andnot_si256(neg, k);
+    const __m256i s = _mm256_add_epi64(_mm256_set1_epi64x(31), _mm256_and_si256(neg, k));      /* 31 - kn */
+    const __m256i bias = _mm256_add_epi64(_mm256_set1_epi64x((int64_t)1 << 62), _mm256_sllv_epi64(one, _mm256_sub_epi64(s, one)));
+    const __m256i unbias = _mm256_sllv_epi64(one, _mm256_sub_epi64(_mm256_set1_epi64x(62), s));
+    const __m256i lim = _mm256_set1_epi64x(((int64_t)1 << 31) - 1), nlim = _mm256_set1_epi64x(-(((int64_t)1 << 31) - 1));
+    const __m256i bias29 = _mm256_set1_epi64x(((int64_t)1 << 62) + ((int64_t)1 << 29));
+    const __m256i pb[3] = { l[0], _mm256_sub_epi64(l[1], unbias), _mm256_sub_epi64(l[2], unbias) };
+    for (int d = 0; d < 2; d++) {
+        const __m256i asum = _mm256_set1_epi64x(g[d].asum);
+        for (int i = 1; i < 3; i++) {
+            /* n = (a_i + 2^32) - ((p_i asum + 2^62 + 2^29) >> 30) */
+            const __m256i n = _mm256_sub_epi64(_mm256_set1_epi64x((int64_t)g[d].a[i] + ((int64_t)1 << 32)),
+                                               _mm256_srli_epi64(_mm256_add_epi64(_mm256_mul_epi32(l[i], asum), bias29), 30));
+            const __m256i m = _mm256_srav_epi32(n, kp);
+            /* p_i + dp_i = (p_i - 2^(31 + kn)) + ((m half + 2^62 + 2^(30 - kn)) >> (31 - kn)) */
+            __m256i o = _mm256_add_epi64(pb[i], _mm256_srlv_epi64(_mm256_add_epi64(_mm256_mul_epi32(m, den), bias), s));
+            o = _mm256_blendv_epi8(o, lim, _mm256_cmpgt_epi64(o, lim));
+            out[d][i] = _mm256_blendv_epi8(o, nlim, _mm256_cmpgt_epi64(nlim, o));
+        }
+        __m256i o0 = _mm256_sub_epi64(_mm256_sub_epi64(_mm256_set1_epi64x(WGT_ONE), out[d][1]), out[d][2]);
+        o0 = _mm256_blendv_epi8(o0, lim, _mm256_cmpgt_epi64(o0, lim));
+        out[d][0] = _mm256_blendv_epi8(o0, nlim, _mm256_cmpgt_epi64(nlim, o0));
+    }
     return 1;
 }
 
@@ -1164,23 +1026,35 @@ AVX2_INLINE V4 v4_edge_num(__m256d d)
 ** (ev[0] read only where the triangle is not affine) */
 AVX2_INLINE void v4_persp4_ev(const WgtSetup *s, const V4 ev[3], WGT (*out)[3]);
 
-AVX2_INLINE int v4_persp4(const WgtSetup *s, const __m256i e[3], WGT (*out)[3])
+/* edge value lanes e as the build's numbers ev; 0 where one leaves
+** (-2^51, 2^51), where the conversion is exact */
+AVX2_INLINE int v4_edge_lanes(const __m256i e[3], V4 ev[3])
 {
     const __m256i bias = _mm256_set1_epi64x((int64_t)1 << 51);
-    V4 ev[3];
     for (int i = 0; i < 3; i++) {
         /* e + 2^51 in [0, 2^52) */
         if (!_mm256_testz_si256(_mm256_add_epi64(e[i], bias), _mm256_set1_epi64x(~(((int64_t)1 << 52) - 1))))
             return 0;
         ev[i] = v4_edge_num(avx2_i64_to_pd(e[i]));
     }
+    return 1;
+}
+
+AVX2_INLINE int v4_persp4(const WgtSetup *s, const __m256i e[3], WGT (*out)[3])
+{
+    V4 ev[3];
+    if (!v4_edge_lanes(e, ev))
+        return 0;
     v4_persp4_ev(s, ev, out);
     return 1;
 }
 
-/* v4_persp4_ev's weights o[0..2] of four fragments, in lanes */
-AVX2_INLINE void v4_persp4_lanes(const WgtSetup *s, const V4 ev[3], V4 o[3])
+/* v4_persp4_ev's weights o[0..2] of four fragments, in lanes, and where
+** inv is not NULL, their WgtDen (1/den; 0 where the triangle is affine) */
+AVX2_INLINE void v4_persp4_lanes_den(const WgtSetup *s, const V4 ev[3], V4 o[3], V4 *inv_out)
 {
+    if (inv_out)
+        *inv_out = V4_OP(setzero)();
     if (s->affine) {
         o[1] = V4_OP(mul)(ev[1], V4_OP(set1)(s->inv_area));
         o[2] = V4_OP(mul)(ev[2], V4_OP(set1)(s->inv_area));
@@ -1191,8 +1065,24 @@ AVX2_INLINE void v4_persp4_lanes(const WgtSetup *s, const V4 ev[3], V4 o[3])
         const V4 inv = V4_OP(div)(V4_OP(set1)(1), V4_OP(add)(V4_OP(add)(n0, n1), n2));
         o[1] = V4_OP(mul)(n1, inv);
         o[2] = V4_OP(mul)(n2, inv);
+        if (inv_out)
+            *inv_out = inv;
     }
     o[0] = V4_OP(sub)(V4_OP(sub)(V4_OP(set1)(1), o[1]), o[2]);
+}
+
+AVX2_INLINE void v4_persp4_lanes(const WgtSetup *s, const V4 ev[3], V4 o[3]) { v4_persp4_lanes_den(s, ev, o, NULL); }
+
+/* wgt_tangent of four fragments of a triangle that is not affine, from
+** their weights o and 1/den (lanes), in wgt_tangent's order */
+AVX2_INLINE void v4_tangent4(const WgtTangent *g, const V4 o[3], V4 inv, V4 out[3])
+{
+    const V4 a0 = V4_OP(mul)(V4_OP(set1)(g->a[0]), inv), a1 = V4_OP(mul)(V4_OP(set1)(g->a[1]), inv);
+    const V4 a2 = V4_OP(mul)(V4_OP(set1)(g->a[2]), inv);
+    const V4 r = V4_OP(add)(V4_OP(add)(a0, a1), a2);
+    out[1] = V4_OP(add)(o[1], V4_OP(sub)(a1, V4_OP(mul)(o[1], r)));
+    out[2] = V4_OP(add)(o[2], V4_OP(sub)(a2, V4_OP(mul)(o[2], r)));
+    out[0] = V4_OP(sub)(V4_OP(sub)(V4_OP(set1)(1), out[1]), out[2]);
 }
 
 /* four fragments' weights o[0..2] (lanes) stored as out[lane][0..2] */

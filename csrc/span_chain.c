@@ -68,7 +68,7 @@ static inline uint32_t pack565(const FRAGV v[3], int dither, FRAGV t_d)
 
 /* the stages of one instance of span_stages.h */
 typedef struct ChainStages {
-    SpanStage persp, neighbours, depth, tests_early, tests_late, zless_early, color;
+    SpanStage persp, persp_lod, depth, tests_early, tests_late, zless_early, color;
     SpanStage fetch[GLES_MAX_TEXTURE_UNITS], fetch_rect[GLES_MAX_TEXTURE_UNITS], env[GLES_MAX_TEXTURE_UNITS];
     SpanStage fetch_direct[GLES_MAX_TEXTURE_UNITS], fetch_rect_direct[GLES_MAX_TEXTURE_UNITS];
     SpanStage color_modulate[GLES_MAX_TEXTURE_UNITS];
@@ -131,18 +131,22 @@ static int debug_group(DebugGroup *g, int n, const uint8_t *k, const WGT *p, con
 #undef CHAIN_SIMD
 #if NUM_IS_FIXED
 /* the kernels of four points' edge values e[lane] as the span stages run
-** them: wgt_persp_any (any = 1) or wgt_persp (persp4_avx2, the weights
-** stage's); 0 where they leave a group to the scalar code */
-static int debug_persp4_avx2(const WgtSetup *s, int any, const int64_t e[4][3], WGT out[4][3])
+** them: wgt_persp (persp4_avx2, the weights stage's), and where g is not
+** NULL, also the tangents along g[0] and g[1] into tx and ty
+** (stage_persp_lod's); 0 where they leave a group to the scalar code */
+static int debug_persp4_avx2(const WgtSetup *s, const WgtTangent *g, const int64_t e[4][3], WGT out[4][3],
+                             WGT tx[4][3], WGT ty[4][3])
 {
-    __m256i ev[3], l[3];
+    __m256i ev[3], l[3], den, o[2][3];
     for (int i = 0; i < 3; i++)
         ev[i] = _mm256_setr_epi64x(e[0][i], e[1][i], e[2][i], e[3][i]);
-    if (!any)
+    if (!g)
         return persp4_avx2(s, ev, out);
-    if (!avx2_persp_any4(s, ev, l))
+    if (s->affine || !avx2_persp4_den(s, ev, l, &den) || !avx2_tangents4(g, l, den, o))
         return 0;
     avx2_store_wgt4(l, out);
+    avx2_store_wgt4(o[0], tx);
+    avx2_store_wgt4(o[1], ty);
     return 1;
 }
 /* gles_debug_color's vector path: stage_color's kernels */
@@ -259,61 +263,63 @@ int gles_debug_modulate_write(int smooth, int rgb, int kind, unsigned int alpha_
 
 #if NUM_IS_FIXED
 /* a test's triangle weights setup into *s; 0 where a value is outside the
-** ranges the setup makes: the mantissas recipw_of makes have 30 bits
-** (wgt_persp_any's kernel takes 31, any) */
-static int debug_wgt_setup(WgtSetup *s, int any, int eshift, int64_t lin_recip, const int64_t mant[3],
-                           const int qshift[3], int affine)
+** ranges the setup makes (the mantissas recipw_of makes have 30 bits) */
+static int debug_wgt_setup(WgtSetup *s, int eshift, int64_t lin_recip, const int64_t mant[3], const int qshift[3],
+                           int affine)
 {
     if (eshift < 0 || eshift > 62)
         return 0;
     *s = (WgtSetup){ .eshift = eshift, .lin_recip = lin_recip, .affine = affine };
     for (int i = 0; i < 3; i++) {
-        if (qshift[i] < 0 || mant[i] < 0 || mant[i] >= ((int64_t)1 << (any ? 31 : 30)))
+        if (qshift[i] < 0 || mant[i] < 0 || mant[i] >= ((int64_t)1 << 30))
             return 0;
         s->mant[i] = mant[i];
         s->qshift[i] = qshift[i];
     }
     return 1;
 }
-#endif
 
-/* gles_debug_persp_any and gles_debug_persp: wgt_persp_any or wgt_persp */
-static int debug_persp(int any, int simd, int eshift, int64_t lin_recip, const int64_t mant[3], const int qshift[3],
-                       int affine, int n, const int64_t *e, int32_t *out)
+/* gles_debug_persp and gles_debug_persp_tangent: wgt_persp, and where g is
+** not NULL its tangents along g[0] and g[1] (out: 3 or 9 values a point) */
+static int debug_persp(int simd, const WgtSetup *s, const WgtTangent *g, int n, const int64_t *e, int32_t *out)
 {
-#if NUM_IS_FIXED
-    WgtSetup s;
-    if (n < 0 || !debug_wgt_setup(&s, any, eshift, lin_recip, mant, qshift, affine))
-        return 0;
+    const size_t per = g ? 9 : 3;
     int j = 0;
 #if SIMD_X86
     if (simd && simd_detect() >= SIMD_AVX2)
         for (; j + 4 <= n; j += 4) {
+            WGT o[3][4][3];
             const int64_t (*ej)[3] = (const int64_t (*)[3])(e + 3 * (size_t)j);
-            WGT (*oj)[3] = (WGT (*)[3])(out + 3 * (size_t)j);
-            if (!debug_persp4_avx2(&s, any, ej, oj)) {
-                if (any)
-                    break;
+            if (!debug_persp4_avx2(s, g, ej, o[0], o[1], o[2]))
                 /* stage_persp's fallback: the scalar code for the group */
-                for (int k = 0; k < 4; k++)
-                    wgt_persp(&s, ej[k], oj[k]);
-            }
+                for (int k = 0; k < 4; k++) {
+                    WgtDen den;
+                    wgt_persp_den(s, ej[k], o[0][k], &den);
+                    if (g) {
+                        wgt_tangent(&g[0], o[0][k], den, o[1][k]);
+                        wgt_tangent(&g[1], o[0][k], den, o[2][k]);
+                    }
+                }
+            for (int k = 0; k < 4; k++)
+                for (size_t m = 0; m < per; m++)
+                    out[(size_t)(j + k) * per + m] = o[m / 3][k][m % 3];
         }
 #endif
     (void)simd;
     for (; j < n; j++) {
-        if (any)
-            wgt_persp_any(&s, e + 3 * (size_t)j, out + 3 * (size_t)j);
-        else
-            wgt_persp(&s, e + 3 * (size_t)j, out + 3 * (size_t)j);
+        WGT o[3][3];
+        WgtDen den;
+        wgt_persp_den(s, e + 3 * (size_t)j, o[0], &den);
+        if (g) {
+            wgt_tangent(&g[0], o[0], den, o[1]);
+            wgt_tangent(&g[1], o[0], den, o[2]);
+        }
+        for (size_t m = 0; m < per; m++)
+            out[(size_t)j * per + m] = o[m / 3][m % 3];
     }
     return 1;
-#else
-    (void)any, (void)simd, (void)eshift, (void)lin_recip, (void)mant, (void)qshift, (void)affine, (void)n, (void)e,
-        (void)out;
-    return 0;
-#endif
 }
+#endif
 
 int gles_span_chunk(void) { return SPAN_CHUNK; }
 
@@ -324,7 +330,7 @@ int gles_debug_persp_chunk(int simd, int eshift, int64_t lin_recip, const int64_
     TriSetup t;
     SpanBuf b;
     memset(&t, 0, sizeof t);
-    if (n < 0 || n > SPAN_CHUNK || !debug_wgt_setup(&t.wgt, 0, eshift, lin_recip, mant, qshift, affine))
+    if (n < 0 || n > SPAN_CHUNK || !debug_wgt_setup(&t.wgt, eshift, lin_recip, mant, qshift, affine))
         return 0;
     for (int i = 0; i < 3; i++) {
         t.ea[i] = ea[i];
@@ -349,16 +355,36 @@ int gles_debug_persp_chunk(int simd, int eshift, int64_t lin_recip, const int64_
 #endif
 }
 
-int gles_debug_persp_any(int simd, int eshift, const int64_t mant[3], const int qshift[3], int affine, int n,
-                         const int64_t *e, int32_t *out)
-{
-    return debug_persp(1, simd, eshift, 0, mant, qshift, affine, n, e, out);
-}
-
 int gles_debug_persp(int simd, int eshift, int64_t lin_recip, const int64_t mant[3], const int qshift[3], int affine,
                      int n, const int64_t *e, int32_t *out)
 {
-    return debug_persp(0, simd, eshift, lin_recip, mant, qshift, affine, n, e, out);
+#if NUM_IS_FIXED
+    WgtSetup s;
+    if (n < 0 || !debug_wgt_setup(&s, eshift, lin_recip, mant, qshift, affine))
+        return 0;
+    return debug_persp(simd, &s, NULL, n, e, out);
+#else
+    (void)simd, (void)eshift, (void)lin_recip, (void)mant, (void)qshift, (void)affine, (void)n, (void)e, (void)out;
+    return 0;
+#endif
+}
+
+int gles_debug_persp_tangent(int simd, int eshift, int64_t lin_recip, const int64_t mant[3], const int qshift[3],
+                             int affine, int64_t area2, const int64_t ea[3], const int64_t eb[3], int n,
+                             const int64_t *e, int32_t *out)
+{
+#if NUM_IS_FIXED
+    WgtSetup s;
+    WgtTangent g[2];
+    if (n < 0 || area2 <= 0 || !debug_wgt_setup(&s, eshift, lin_recip, mant, qshift, affine))
+        return 0;
+    wgt_tangents_setup(&s, area2, ea, eb, g);
+    return debug_persp(simd, &s, g, n, e, out);
+#else
+    (void)simd, (void)eshift, (void)lin_recip, (void)mant, (void)qshift, (void)affine, (void)area2, (void)ea, (void)eb,
+        (void)n, (void)e, (void)out;
+    return 0;
+#endif
 }
 
 int gles_debug_color(int simd, int clamp, const int64_t col[12], int n, const int32_t *p, int64_t *out)
@@ -534,13 +560,13 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     if (!color_work)
         return n;
     if (!rect) {
-        s[n++] = cs->persp;
+        /* the weights, with the level of detail's neighbours (their
+        ** tangents) where a unit needs them */
+        s[n++] = lod ? cs->persp_lod : cs->persp;
         /* the first texture stage after it is the first unit's: its
         ** coordinates come with the weights where it needs no neighbours */
         if (first >= 0 && !texture_needs_lod(ctx->units[first].bound))
             ctx->chain_coords_unit = first;
-        if (lod)
-            s[n++] = cs->neighbours;
         if (!direct && !modulate && !dot3)
             s[n++] = cs->color;
     }

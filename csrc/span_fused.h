@@ -75,7 +75,7 @@ static inline __attribute__((always_inline)) int SPAN_FN(span_smooth_stepped)(Gl
                 const int64_t n0 = (int64_t)(per0 >> qs0), n1 = (int64_t)(per1 >> qs1);
                 const int64_t n2 = (int64_t)(per2 >> qs2);
                 if (n0 + n1 + n2 > 0)
-                    wgt_persp_quotients(n0 + n1 + n2, n1, n2, p);
+                    wgt_persp_quotients(n0 + n1 + n2, n1, n2, p, NULL);
             }
 #if CHAIN_SIMD
             const V4 c = v4_lerp_deltas(base, d1, d2, p[1], p[2]);

@@ -233,102 +233,101 @@ static void STAGE(stage_persp)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
         STAGE(persp1)(t, b, j);
 }
 
-/* wgt_persp_any at slot j's edge values plus d: its right neighbour's
-** weights for d = ea, its upper neighbour's for d = eb */
-static inline void STAGE(neighbour1)(const TriSetup *t, const SpanBuf *b, int j, const int64_t d[3], WGT out[3])
+/* slot j's weights and the level of detail's neighbours: the weights'
+** tangents along ea (b->px) and eb (b->py) */
+static inline void STAGE(persp_lod1)(const TriSetup *t, SpanBuf *b, int j)
 {
     int64_t e[3];
+    WgtDen den;
     chunk_edges(t, b, b->k[j], e);
-    const int64_t en[3] = { e[0] + d[0], e[1] + d[1], e[2] + d[2] };
-    wgt_persp_any(&t->wgt, en, out);
+    wgt_persp_den(&t->wgt, e, b->p[j], &den);
+    wgt_tangent(&t->tan[0], b->p[j], den, b->px[j]);
+    wgt_tangent(&t->tan[1], b->p[j], den, b->py[j]);
 }
 
-#if CHAIN_SIMD
-/* one neighbour's weights of four fragments from its edge values; 0 where
-** a lane leaves the kernels' ranges */
-static inline __attribute__((always_inline)) int STAGE(neighbour4)(const WgtSetup *ws, const __m256i e[3],
-                                                                    WGT (*out)[3])
+/* stage_persp, with the weights' tangents (the level of detail's
+** neighbours) from the same division */
+static void STAGE(stage_persp_lod)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
-#if NUM_IS_FIXED
-    __m256i l[3];
-    if (!avx2_persp_any4(ws, e, l))
-        return 0;
-    avx2_store_wgt4(l, out);
-    return 1;
-#else
-    /* wgt_persp_any is wgt_persp in this build */
-    return v4_persp4(ws, e, out);
-#endif
-}
-#endif
-
-/* The right and upper neighbours' weights, shared by every unit whose
-** filter needs a level of detail. The upper neighbour of (x, y) is the
-** point (x, y + 1), which is the right neighbour of the fragment (x - 1,
-** y + 1): rows run upwards, so each row keeps its upper neighbours' weights
-** in ctx->nb_w (by x), and the next row of the same primitive takes its
-** right neighbours from there. A cached value is wgt_persp_any of the same
-** integer edge values, so it is the value computed again; the key (the
-** primitive's serial and the row) says whether an entry is that value. */
-static void STAGE(stage_neighbours)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
-{
-    const uint64_t key_prev = t->serial * ((uint64_t)ctx->height + 2) + (uint64_t)b->y, key_cur = key_prev + 1;
-    const uint64_t *const prev_key = ctx->nb_key[(b->y + 1) & 1] + b->x0 + 1;   /* row y - 1, at x + 1 */
-    const WGT (*const prev_w)[3] = (const WGT (*)[3])ctx->nb_w[(b->y + 1) & 1] + b->x0 + 1;
-    uint64_t *const cur_key = ctx->nb_key[b->y & 1] + b->x0;
-    WGT (*const cur_w)[3] = ctx->nb_w[b->y & 1] + b->x0;
-    WGT (*const px)[3] = b->px, (*const py)[3] = b->py;
     const int n = b->n;
     int j = 0;
+    if (t->wgt.affine) {
+        /* the tangents step by the linear weights' constant steps */
+        STAGE(stage_persp)(ctx, t, b);
+#if NUM_IS_FIXED
+        const WgtDen lin = { 0, 0 };
+#else
+        const WgtDen lin = 0;
+#endif
+        for (; j < n; j++) {
+            wgt_tangent(&t->tan[0], b->p[j], lin, b->px[j]);
+            wgt_tangent(&t->tan[1], b->p[j], lin, b->py[j]);
+        }
+        return;
+    }
 #if CHAIN_SIMD
-    /* the neighbours' edge values are the fragment's plus ea or eb: the
-    ** same steps from e0 + ea and e0 + eb */
+    /* the loop's constants in locals (stores to b->p could alias t and b) */
     const WgtSetup ws = t->wgt;
-    const int64_t ex0[3] = { b->e0[0] + t->ea[0], b->e0[1] + t->ea[1], b->e0[2] + t->ea[2] };
-    const int64_t ey0[3] = { b->e0[0] + t->eb[0], b->e0[1] + t->eb[1], b->e0[2] + t->eb[2] };
-    Edges4 edx, edy;
-    avx2_edges4_setup(ex0, t->ea, &edx);
-    avx2_edges4_setup(ey0, t->ea, &edy);
-    const __m256i want = _mm256_set1_epi64x((int64_t)key_prev);
+    const WgtTangent tan[2] = { t->tan[0], t->tan[1] };
+    Edges4 ed;
+    avx2_edges4_setup(b->e0, t->ea, &ed);
+    WGT (*const p)[3] = b->p, (*const px)[3] = b->px, (*const py)[3] = b->py;
+#if NUM_IS_FIXED
+    /* the weights and their divisions first, then the tangents: as one
+    ** loop, each group's division, tangents and stores form one long chain
+    ** of dependent operations, and the groups overlap less (measured) */
+    __m256i dens[SPAN_CHUNK / 4];
+#endif
     for (; j + 4 <= n; j += 4) {
-        const int k0 = b->k[j], adjacent = slots_adjacent4(&b->k[j]);
-        __m256i ey[3];
-        avx2_edges4(&edy, &b->k[j], ey);
-        if (!STAGE(neighbour4)(&ws, ey, &py[j]))
-            /* a lane out of the kernels' ranges: the group by the scalar code */
+        __m256i e[3];
+        avx2_edges4(&ed, &b->k[j], e);
+#if NUM_IS_FIXED
+        __m256i l[3];
+        if (!avx2_persp4_den(&ws, e, l, &dens[j / 4])) {
+            /* a lane out of the kernels' ranges: the group by the scalar
+            ** code (a WgtDen of 0 marks it done) */
+            dens[j / 4] = _mm256_setzero_si256();
             for (int k = j; k < j + 4; k++)
-                STAGE(neighbour1)(t, b, k, t->eb, py[k]);
-        const __m256i keys = _mm256_loadu_si256((const __m256i *)(const void *)&prev_key[k0]);
-        if (adjacent && _mm256_movemask_epi8(_mm256_cmpeq_epi64(keys, want)) == -1) {
-            memcpy(&px[j], &prev_w[k0], 4 * sizeof px[0]);
-        } else {
-            __m256i ex[3];
-            avx2_edges4(&edx, &b->k[j], ex);
-            if (!STAGE(neighbour4)(&ws, ex, &px[j]))
-                for (int k = j; k < j + 4; k++)
-                    STAGE(neighbour1)(t, b, k, t->ea, px[k]);
+                STAGE(persp_lod1)(t, b, k);
+            continue;
         }
-        if (adjacent) {
-            memcpy(&cur_w[k0], &py[j], 4 * sizeof py[0]);
-            _mm256_storeu_si256((__m256i *)(void *)&cur_key[k0], _mm256_set1_epi64x((int64_t)key_cur));
-        } else {
-            for (int k = j; k < j + 4; k++) {
-                memcpy(cur_w[b->k[k]], py[k], sizeof py[0]);
-                cur_key[b->k[k]] = key_cur;
-            }
+        avx2_store_wgt4(l, &p[j]);
+#else
+        V4 ev[3], l[3], inv, o[3];
+        if (!v4_edge_lanes(e, ev)) {
+            for (int k = j; k < j + 4; k++)
+                STAGE(persp_lod1)(t, b, k);
+            continue;
         }
+        v4_persp4_lanes_den(&ws, ev, l, &inv);
+        v4_store_wgt4(l, &p[j]);
+        v4_tangent4(&tan[0], l, inv, o);
+        v4_store_wgt4(o, &px[j]);
+        v4_tangent4(&tan[1], l, inv, o);
+        v4_store_wgt4(o, &py[j]);
+#endif
+    }
+#if NUM_IS_FIXED
+    for (int i = 0; i + 4 <= j; i += 4) {
+        if (_mm256_testz_si256(dens[i / 4], dens[i / 4]))
+            continue;
+        /* the weights again, as 64-bit lanes (they are >= 0) */
+        __m256i l[3], o[2][3];
+        avx2_wgt_lanes4((const WGT (*)[3])&p[i], l);
+        for (int c = 0; c < 3; c++)
+            l[c] = _mm256_and_si256(l[c], _mm256_set1_epi64x(0xFFFFFFFF));
+        if (!avx2_tangents4(tan, l, dens[i / 4], o)) {
+            for (int k = i; k < i + 4; k++)
+                STAGE(persp_lod1)(t, b, k);
+            continue;
+        }
+        avx2_store_wgt4(o[0], &px[i]);
+        avx2_store_wgt4(o[1], &py[i]);
     }
 #endif
-    for (; j < n; j++) {
-        const int k = b->k[j];
-        STAGE(neighbour1)(t, b, j, t->eb, py[j]);
-        if (prev_key[k] == key_prev)
-            memcpy(px[j], prev_w[k], sizeof px[0]);
-        else
-            STAGE(neighbour1)(t, b, j, t->ea, px[j]);
-        memcpy(cur_w[k], py[j], sizeof py[0]);
-        cur_key[k] = key_cur;
-    }
+#endif
+    for (; j < n; j++)
+        STAGE(persp_lod1)(t, b, j);
 }
 
 /* }==================================================================== */
@@ -1584,7 +1583,7 @@ static void STAGE(stage_sample_write)(GlesContext *ctx, const TriSetup *t, SpanB
 
 static const ChainStages STAGE(chain_stages) = {
     .persp = STAGE(stage_persp),
-    .neighbours = STAGE(stage_neighbours),
+    .persp_lod = STAGE(stage_persp_lod),
     .depth = STAGE(stage_depth),
     .tests_early = STAGE(stage_tests_early),
     .tests_late = STAGE(stage_tests_late),

@@ -241,13 +241,7 @@ struct GlesContext {
     uint32_t *depth;
     uint8_t *stencil;
     int profile;
-    /* stage_neighbours' row cache: the upper-neighbour weights that the
-    ** last rows of even and odd y found, by x, each keyed by the primitive
-    ** and row that found it (nb_key); a fragment's right neighbour in row
-    ** y is the upper neighbour of x + 1 in row y - 1 */
     uint64_t prim_serial;       /* counts primitive setups, from 1 */
-    uint64_t *nb_key[2];        /* [y & 1][x]: prim_serial * (height + 2) + y + 1, 0 if none */
-    WGT (*nb_w[2])[3];
     /* span_rect's s by column, width + 1 per unit (RectSetup.col_s) */
     TEXC *rect_s;
     /* the fused stage's setup for the primitive of serial fused_serial (0:

@@ -12,6 +12,8 @@ weights' extremes.
 
 from __future__ import annotations
 
+from fractions import Fraction
+
 import numpy as np
 import pytest
 from conftest import BUILDS, HAS_SIMD, SPAN_CHUNK, make_ctx
@@ -250,100 +252,145 @@ def test_span_samplers_match_baseline(numeric, filt, wrap):
         np.testing.assert_array_equal(avx512, base, err_msg=f"seed {seed}, AVX-512")
 
 
-def _persp_any(simd: int, eshift: int, mant, qshift, affine: int, e: np.ndarray) -> np.ndarray:
+def _persp_tangent(simd: int, eshift: int, lin_recip: int, mant, qshift, affine: int, area2: int, ea, eb,
+                   e: np.ndarray) -> np.ndarray:
+    """gles_debug_persp_tangent: each point's weights, then their tangents along ea and eb (n x 3 x 3)."""
     ctx = make_ctx("fixed", 1, 1)
     ffi, lib = ctx._ffi, ctx._lib
     e = np.ascontiguousarray(e, dtype=np.int64)
-    out = np.zeros(e.shape, np.int32)
-    ok = lib.gles_debug_persp_any(simd, eshift, [int(m) for m in mant], [int(q) for q in qshift], affine,
-                                  len(e), ffi.cast("int64_t *", e.ctypes.data),
-                                  ffi.cast("int32_t *", out.ctypes.data))
+    out = np.zeros((len(e), 3, 3), np.int32)
+    ok = lib.gles_debug_persp_tangent(simd, eshift, lin_recip, [int(m) for m in mant],
+                                      [int(q) for q in qshift], affine, area2, [int(v) for v in ea],
+                                      [int(v) for v in eb], len(e), ffi.cast("int64_t *", e.ctypes.data),
+                                      ffi.cast("int32_t *", out.ctypes.data))
     assert ok == 1
     return out
 
 
-def _random_weight_setup(rng: np.random.Generator, trial: int) -> tuple:
-    """A triangle's weight setup: eshift, 1/w mantissas (below 2^30, as
-    recipw_of makes), their shifts (one of them 0), and affine one trial in four."""
-    eshift = int(rng.integers(0, 10))
+def _covered_points(rng: np.random.Generator, area: int, count: int) -> np.ndarray:
+    """Edge values of covered points (e_i >= 0 summing to the area), some scaled
+    down by powers of two (sums far below 2^31 after every shift)."""
+    w = rng.dirichlet([0.3, 0.3, 0.3], count)
+    e = np.floor(w * area).astype(np.int64)
+    e[:, 0] = area - e[:, 1] - e[:, 2]
+    e >>= rng.integers(0, 3, (count, 1)) * rng.integers(0, 20, (count, 1))
+    e[e.sum(axis=1) <= 0] = [area, 0, 0]
+    return e
+
+
+def _tangent_setup(rng: np.random.Generator, trial: int) -> tuple:
+    """A triangle that is not affine (1/w mantissas below 2^30, one shift 0), its
+    area and edge steps, multiples of 2^8 summing to 0 in odd trials (a
+    triangle's): up to 1/64 of the area (trial % 3 == 0), a sliver's four
+    times the area (the tangents saturate), or up to 2^-12 of it."""
+    eshift = int(rng.integers(0, 11))
     mant = rng.integers(1 << 29, 1 << 30, 3)
-    qshift = rng.integers(0, 40, 3)
+    qshift = rng.integers(0, 70 if trial % 5 == 0 else 24, 3)
     qshift[rng.integers(0, 3)] = 0
-    return eshift, mant, qshift, int(trial % 4 == 0)
-
-
-def _division_edge_cases(rng: np.random.Generator, count: int) -> np.ndarray:
-    """Affine edge values whose weights n 2^30 / den lie just below (or,
-    negated, just above) an integer, 1/den away: a double quotient rounds
-    across the integer there, and only the exact remainder corrects it."""
-    rows = []
-    for _ in range(count):
-        d = int(rng.integers(1 << 29, (1 << 31) - 1)) | 1
-        inv = pow(1 << 30, -1, d)
-        n1 = (-inv) % d                              # n1 2^30 = -1 (mod d)
-        n2 = int(rng.integers(-(1 << 30), 1 << 30))
-        for s1, sd in ((1, 1), (-1, 1), (1, -1), (-1, -1)):
-            a, den = s1 * n1, sd * d
-            rows.append([den - a - n2, a, n2])
-    return np.array(rows, np.int64)
+    area = int(rng.integers(1 << 8, 1 << 31)) << eshift
+    lin_recip = (1 << 61) // (area >> eshift)
+    reach = [area // 64, 4 * area, area >> 12][trial % 3]
+    steps = []
+    for _ in range(2):
+        d = rng.integers(-reach - 1, reach + 1, 3) >> 8 << 8
+        if trial % 2:
+            d[0] = -d[1] - d[2]
+        steps.append([int(v) for v in d])
+    return eshift, lin_recip, mant, qshift, area, steps[0], steps[1]
 
 
 @pytest.mark.skipif(not HAS_SIMD, reason="no vector instance on this CPU")
-def test_neighbour_weights_kernel_matches_scalar():
-    """The vector kernel of the level of detail's neighbour weights
-    (avx2_persp_any4) gives wgt_persp_any's weights bit for bit: on random
-    triangles and points, and on quotients one 2^-31 below an integer,
-    where only the remainder correction is right."""
-    rng = np.random.default_rng(11)
-    for trial in range(40):
-        eshift, mant, qshift, affine = _random_weight_setup(rng, trial)
-        # edge values as the rasterizer's: e >> eshift within 31 bits, up to
-        # 1.25 times past it for a neighbour (where the kernel leaves lanes
-        # to the scalar code); scaled down by random powers of two
-        top = int(1.25 * 2**31)
-        e = (rng.integers(-top, top, (1024, 3)) >> rng.integers(0, 30, (1024, 1))) << eshift
-        e += rng.integers(0, 1 << eshift, (1024, 3))
-        vec, base = (_persp_any(simd, eshift, mant, qshift, affine, e) for simd in (1, 0))
+def test_tangent_kernel_matches_scalar():
+    """The vector kernel of the level of detail's tangent weights (avx2_tangent4
+    after avx2_persp4_den) gives wgt_tangent's bit for bit, with the same
+    fragment weights: on covered points of random triangles that are not
+    affine, with a triangle's edge steps, a sliver's (saturating the
+    tangents) and steps of any size, and on sums below 2^31 (left to the
+    scalar code, which scales them up)."""
+    rng = np.random.default_rng(15)
+    for trial in range(60):
+        eshift, lin_recip, mant, qshift, area, ea, eb = _tangent_setup(rng, trial)
+        e = _covered_points(rng, area, 512)
+        vec, base = (_persp_tangent(simd, eshift, lin_recip, mant, qshift, 0, area, ea, eb, e)
+                     for simd in (1, 0))
         np.testing.assert_array_equal(vec, base, err_msg=f"trial {trial}")
-    e = _division_edge_cases(rng, 256)
-    vec = _persp_any(1, 0, [1 << 29] * 3, [0, 0, 0], 1, e)
-    np.testing.assert_array_equal(vec, _persp_any(0, 0, [1 << 29] * 3, [0, 0, 0], 1, e))
-    # and the weights are C's truncating division (an independent check)
-    n1, den = e[:, 1], e.sum(axis=1)
-    q = [(abs(int(a)) << 30) // abs(int(d)) * (1 if (a < 0) == (d < 0) else -1) for a, d in zip(n1, den)]
-    np.testing.assert_array_equal(vec[:, 1], np.array(q, np.int64))
+        np.testing.assert_array_equal(vec[:, 0], _persp(0, eshift, lin_recip, mant, qshift, 0, e),
+                                      err_msg=f"trial {trial}: the weights")
 
 
-@pytest.mark.skipif(not HAS_SIMD, reason="no vector instance on this CPU")
-def test_neighbour_weights_kernel_on_covered_points():
-    """Where every lane's edge values lie in a covered point's range (0 <= e
-    and e >> eshift < 2^31), avx2_persp_any4 takes its non-negative path
-    (avx2_persp_any4_covered): the same weights as wgt_persp_any on random
-    covered points, groups with one lane just past the range, sums that
-    normalise to exactly 2^31 (left to the scalar code) and quotients one
-    2^-31 below an integer."""
-    rng = np.random.default_rng(13)
-    for trial in range(40):
-        eshift, mant, qshift, affine = _random_weight_setup(rng, trial)
-        e = (rng.integers(0, 1 << 31, (1024, 3)) >> rng.integers(0, 31, (1024, 1))) << eshift
-        e += rng.integers(0, 1 << eshift, (1024, 3))
-        e[rng.integers(0, 1024, 8), rng.integers(0, 3, 8)] = (1 << (31 + eshift)) + 5   # just past
-        e[rng.integers(0, 1024, 8), rng.integers(0, 3, 8)] = (1 << (31 + eshift)) - 1   # the top
-        vec, base = (_persp_any(simd, eshift, mant, qshift, affine, e) for simd in (1, 0))
-        np.testing.assert_array_equal(vec, base, err_msg=f"trial {trial}")
-    rows = []
-    for _ in range(256):
-        d = int(rng.integers(1 << 29, (1 << 31) - 1)) | 1
-        n1 = (-pow(1 << 30, -1, d)) % d                      # n1 2^30 = -1 (mod d)
-        n2 = int(rng.integers(0, d - n1 + 1))
-        rows.append([d - n1 - n2, n1, n2])
-    rows += [[1 << 30, 1 << 29, (1 << 29) + k] for k in range(4)]   # a sum of 2^31 (+ k)
-    e = np.array(rows, np.int64)
-    vec = _persp_any(1, 0, [1 << 29] * 3, [0, 0, 0], 1, e)
-    np.testing.assert_array_equal(vec, _persp_any(0, 0, [1 << 29] * 3, [0, 0, 0], 1, e))
-    # below 2^31 no normalising shift applies: C's truncating division
-    q = [(int(a) << 30) // int(d) for a, d in zip(e[:256, 1], e[:256].sum(axis=1))]
-    np.testing.assert_array_equal(vec[:256, 1], np.array(q, np.int64))
+def _tangent_exact(eshift: int, mant, qshift, area: int, d, other, e: np.ndarray,
+                   p: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The tangent weights in exact rationals, in units of 2^-30: p_i + (a_i - p_i
+    sum_j a_j) / den with n_i = ((e_i >> eshift) mant_i) >> qshift_i, den = sum n_i,
+    a_i = ((d_i >> eshift, truncated) mant_i) >> qshift_i (truncated), and the
+    fragment's own weights p as the renderer gives them; with the largest
+    |a_i| / den (in 2^-30) of this step and the other one (their a_i share a
+    scale), the size of the terms that cancel."""
+    def trunc_shift(x: int, k: int) -> int:
+        return -((-x) >> k) if x < 0 else x >> k
+    def a_of(step) -> list[int]:
+        return [trunc_shift(trunc_shift(int(v), eshift) * int(m), min(int(q), 62))
+                for v, m, q in zip(step, mant, qshift)]
+    a = a_of(d)
+    top = max(abs(v) for v in a + a_of(other))
+    out, scale = [], []
+    for row, pw in zip(e.tolist(), p.astype(np.int64).tolist()):
+        den = sum(((x >> eshift) * int(m)) >> int(q) if q < 63 else 0 for x, m, q in zip(row, mant, qshift))
+        if den <= 0:        # the linear weights: not this formula
+            out.append([np.nan] * 3)
+            scale.append(np.nan)
+            continue
+        scale.append(top * 2.0**30 / den)
+        r = Fraction(sum(a) * (1 << 30), den)
+        t = [pw[i] + Fraction(a[i] * (1 << 30), den) - Fraction(pw[i], 1 << 30) * r for i in (1, 2)]
+        out.append([(1 << 30) - t[0] - t[1], t[0], t[1]])
+    return np.array([[float(v) for v in row] for row in out]), np.array(scale)
+
+
+def test_tangent_weights_are_the_derivative():
+    """wgt_tangent's weights are the fragment's weights plus their derivative
+    along the edge step, (a_i - p_i sum_j a_j) / den in exact rationals, within
+    the roundings of the a_i to 29 bits, of a reciprocal of 31 bits and of the
+    products to 2^-30 (8 units of 2^-30, and 2^-26 of the largest a_i / den,
+    the terms whose difference the derivative is): on covered points of
+    random triangles whose steps keep the derivative below a weight of one
+    per pixel, including sums below 2^31 (the scaled-up reciprocal)."""
+    rng = np.random.default_rng(16)
+    for trial in range(24):
+        eshift, lin_recip, mant, qshift, area, ea, eb = _tangent_setup(rng, 3 * trial)   # a triangle's steps
+        e = _covered_points(rng, area, 96)
+        out = _persp_tangent(0, eshift, lin_recip, mant, qshift, 0, area, ea, eb, e).astype(np.float64)
+        for k, d, other in ((1, ea, eb), (2, eb, ea)):
+            want, scale = _tangent_exact(eshift, mant, qshift, area, d, other, e, out[:, 0])
+            deriv = np.abs(want - out[:, 0])
+            with np.errstate(invalid="ignore"):
+                fits = (deriv < 2**29).all(axis=1) & (np.abs(want) < 2**31 - 1).all(axis=1)
+            assert fits.sum() > 24, f"trial {trial}: too few points in range"
+            err = np.abs(out[fits, k] - want[fits])
+            tol = 8 + scale[fits, None] * 2.0**-26
+            past = float((err - tol).max())
+            assert (err <= tol).all(), f"trial {trial}, step {k}: {past:.1f} past the bound"
+
+
+def test_affine_tangent_is_the_linear_step():
+    """On an affine triangle the tangents are the weights plus the linear
+    step d_i / area (rounded to 2^-30), the same at every fragment; on a sliver
+    (steps of at least twice the area) the step saturates at +-(2^31 - 1)."""
+    area = (1 << 20) + 12345
+    lin_recip = (1 << 61) // area
+    e = np.array([[area - 1000 - 2000, 1000, 2000], [area // 3, area // 3, area - 2 * (area // 3)]], np.int64)
+    ea, eb = [-256, 512, -256], [0, -(3 << 8), 3 << 8]
+    for simd in (0, 1):
+        out = _persp_tangent(simd, 0, lin_recip, [1 << 29] * 3, [0, 0, 0], 1, area, ea, eb, e)
+        out = out.astype(np.int64)
+        for k, d in ((1, ea), (2, eb)):
+            for i in (1, 2):
+                step = round(Fraction(d[i] << 30, area))
+                np.testing.assert_array_equal(out[:, k, i] - out[:, 0, i], step)
+            np.testing.assert_array_equal(out[:, k].sum(axis=1), 1 << 30)
+    sliver = _persp_tangent(0, 0, lin_recip, [1 << 29] * 3, [0, 0, 0], 1, area, [-4 * area, 4 * area, 0],
+                            [0, 0, 0], e).astype(np.int64)
+    np.testing.assert_array_equal(sliver[:, 1, 1], (1 << 31) - 1)
 
 
 def _persp(simd: int, eshift: int, lin_recip: int, mant, qshift, affine: int, e: np.ndarray) -> np.ndarray:
