@@ -519,9 +519,9 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     const int first_modulates = first >= 0 && ctx->units[first].env_mode == GL_MODULATE
                              && (ctx->units[first].bound->format == GL_RGBA
                                  || ctx->units[first].bound->format == GL_RGB);
-    /* on triangles it takes the colour as it is formed
-    ** (stage_color_modulate), after the fetches */
-    const int modulate = !rect && first_modulates;
+    /* it takes the colour as it is formed (stage_color_modulate), after
+    ** the fetches */
+    const int modulate = first_modulates;
     const int bk = span_blend_kind(ctx);
     const int plain = ctx->color_format == GLES_COLOR_RGBA8888 && ctx->color_mask[0] && ctx->color_mask[1]
                    && ctx->color_mask[2] && ctx->color_mask[3];
@@ -546,10 +546,11 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     ** (stage_sample_write), and then also for a lone REPLACE unit of an
     ** RGBA texture */
     const int sample_write = writes_fused && (first_modulates || direct) && ctx->sample_group[lone] > 1;
-    /* a rectangle's colour and window depth; the fused stage reads the
-    ** colour itself and a lone REPLACE unit of an RGBA texture samples
-    ** into it, so only the tests need it then */
-    if (rect && (!(modulate_write || sample_write || direct) || tests))
+    /* a rectangle's colour and window depth; the fused stage and
+    ** stage_color_modulate read the colour themselves and a lone REPLACE
+    ** unit of an RGBA texture samples into it, so only the tests need it
+    ** then */
+    if (rect && (!(modulate_write || sample_write || direct || modulate) || tests))
         s[n++] = cs->rect_source;
     /* the window depth is for the depth test only */
     if (tests && early) {

@@ -884,17 +884,20 @@ static inline void STAGE(color_modulate_loop)(SpanBuf *b, int u, int smooth, int
 }
 #endif
 
-/* stage_color, then stage_env's MODULATE of unit u (an RGBA or RGB
-** texture) in one pass: the colour goes from registers into the product.
-** The chain runs it after the unit's fetch (which does not read the
-** colour); the primary colour b->cf is kept only for later units. */
+static void STAGE(stage_rect_source)(GlesContext *ctx, const TriSetup *t, SpanBuf *b);
+
+/* stage_color (a rectangle's: stage_rect_source's), then stage_env's
+** MODULATE of unit u (an RGBA or RGB texture) in one pass: the colour goes
+** from registers into the product. The chain runs it after the unit's
+** fetch (which does not read the colour); the primary colour b->cf is
+** kept only for later units. */
 static void STAGE(stage_color_modulate)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, int u)
 {
 #if CHAIN_SIMD
     const int alpha = ctx->units[u].bound->format != GL_RGBA;
     const int keep_cf = (ctx->tex_units_on & ~(1u << u)) != 0;
-    if (!t->smooth) {
-        const V4 f = v4_load(t->flat);
+    if (b->rect || !t->smooth) {
+        const V4 f = v4_load(b->rect ? b->rect->in.c : t->flat);
         if (alpha)
             STAGE(color_modulate_loop)(b, u, 0, keep_cf, 1, f, f, f);
         else
@@ -910,7 +913,10 @@ static void STAGE(stage_color_modulate)(GlesContext *ctx, const TriSetup *t, Spa
         return;
     }
 #endif
-    STAGE(stage_color)(ctx, t, b);
+    if (b->rect)
+        STAGE(stage_rect_source)(ctx, t, b);
+    else
+        STAGE(stage_color)(ctx, t, b);
     STAGE(stage_env)(ctx, b, u);
 }
 
