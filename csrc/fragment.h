@@ -13,8 +13,8 @@ void fragment_init(GlesContext *ctx);
 typedef struct FragIn {
     FRAGV c[4];                             /* primary colour */
     TexCoord tc[GLES_MAX_TEXTURE_UNITS];    /* per enabled unit */
-    TexCoord tdx[GLES_MAX_TEXTURE_UNITS];   /* the right and upper neighbours', */
-    TexCoord tdy[GLES_MAX_TEXTURE_UNITS];   /* read when the filter needs LOD */
+    TexCoord tdx[GLES_MAX_TEXTURE_UNITS];   /* one pixel right and up (along the */
+    TexCoord tdy[GLES_MAX_TEXTURE_UNITS];   /* tangent), read when the filter needs LOD */
     FRAGV fog;                              /* fog factor f */
     FRAGV coverage;                         /* antialiasing coverage, FRAG_ONE if none */
     uint32_t z;                             /* window depth (with the depth test on) */

@@ -5,7 +5,9 @@
 ** REPEAT wraps the coordinate exactly before it is scaled to texel space,
 ** so large coordinates never overflow; the level of detail uses
 ** rho = max(|du/dx|, |du/dy|, |dv/dx|, |dv/dy|), the lower bound the spec
-** allows, from the coordinates of the pixel's right and upper neighbours.
+** allows, from the coordinates one pixel right and up: a triangle's or
+** line's along the weights' tangents (wgt_tangent), so the differences are
+** the derivatives at the fragment; a rectangle's at the next pixels.
 */
 #include "state.h"
 #include "texture.h"
