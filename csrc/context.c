@@ -100,7 +100,7 @@ GlesContext *gles_context_create(int width, int height, int color_format,
     ctx->depth_max = depth_bits ? (uint32_t)((1ull << depth_bits) - 1) : 0;
     ctx->profile = profile;
     ctx->simd = simd_detect();
-    ctx->chain_coords_unit = ctx->chain_coords_tx_unit = -1;
+    ctx->chain_coords_unit = ctx->chain_coords_tx_unit = ctx->chain_lod_unit = -1;
     ctx->color = calloc(npix, color_format == GLES_COLOR_RGB565 ? 2 : 4);
     ctx->depth = depth_bits ? calloc(npix, sizeof(uint32_t)) : NULL;
     ctx->stencil = stencil_bits ? calloc(npix, 1) : NULL;

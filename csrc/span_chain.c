@@ -490,7 +490,7 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     const int no_color = span_no_color(ctx);
     const int color_work = !no_color || ctx->alpha_test;
     if (!rect)
-        ctx->chain_coords_unit = ctx->chain_coords_tx_unit = -1;
+        ctx->chain_coords_unit = ctx->chain_coords_tx_unit = ctx->chain_lod_unit = -1;
     int lod = 0;
     ctx->stencil_cull.on = 0;
     if (stencil) {
@@ -502,9 +502,11 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
         ctx->stencil_cull.ref = (uint8_t)(ft.ref & ft.value_mask);
         ctx->stencil_cull.mask = (uint8_t)ft.value_mask;
     }
+    unsigned int lod_units = 0;
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
         if (units & (1u << u)) {
             lod |= texture_needs_lod(ctx->units[u].bound);
+            lod_units |= (unsigned)texture_needs_lod(ctx->units[u].bound) << u;
             ctx->samplers[u] = texture_span_sampler(ctx->units[u].bound, ctx_simd(ctx));
             ctx->sample_group[u] = texture_span_sample_group(ctx->units[u].bound, ctx_simd(ctx));
         }
@@ -564,6 +566,11 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
         /* the weights, with the level of detail's neighbours (their
         ** tangents) where a unit needs them */
         s[n++] = lod ? cs->persp_lod : cs->persp;
+        /* ... and the coordinates of the one unit with a level of detail
+        ** where it is the first unit: its fetch is the first stage to read
+        ** or write b->tc, tx and ty (not so in the DOT3 pair's stages) */
+        if (first >= 0 && lod_units == 1u << first && !dot3)
+            ctx->chain_lod_unit = first;
         /* the first texture stage after it is the first unit's: its
         ** coordinates come with the weights where it needs no neighbours */
         if (first >= 0 && !texture_needs_lod(ctx->units[first].bound))
@@ -788,6 +795,7 @@ static void run(GlesContext *ctx, const SpanStage *stages, int count, const TriS
         b.n = len;
         b.tc_unit = -1;
         b.tx_unit = -1;
+        b.lod_unit = -1;
         memcpy(b.k, span_offsets, SPAN_CHUNK);
         if (t)
             for (int i = 0; i < 3; i++)

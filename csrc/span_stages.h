@@ -308,21 +308,40 @@ static void STAGE(stage_persp_lod)(GlesContext *ctx, const TriSetup *t, SpanBuf 
 #endif
     }
 #if NUM_IS_FIXED
+    /* the chain's one unit with a level of detail, where it has no q: its
+    ** coordinates at the weights and the tangents from the same lanes
+    ** (stage_fetch forms them so from the stored weights), into b->tc, tx
+    ** and ty, up to the first group the scalar code takes; from there the
+    ** tangents' weights are stored, for stage_fetch */
+    const int u = ctx ? ctx->chain_lod_unit : -1;     /* (the debug entry has no context) */
+    int done = u >= 0 && !((t->tex_projective >> u) & 1) ? 0 : -1;
+    NUM sv[3], tv[3];
+    span_unit_st(t, done == 0 ? u : -1, sv, tv);
+    TexCoord *const tc = b->tc, *const tx = b->tx, *const ty = b->ty;
     for (int i = 0; i + 4 <= j; i += 4) {
-        if (_mm256_testz_si256(dens[i / 4], dens[i / 4]))
-            continue;
-        /* the weights again, as 64-bit lanes (they are >= 0) */
         __m256i l[3], o[2][3];
+        if (_mm256_testz_si256(dens[i / 4], dens[i / 4]))
+            continue;   /* the scalar code's group (above) */
+        /* the weights again, as 64-bit lanes (they are >= 0) */
         avx2_wgt_lanes4((const WGT (*)[3])&p[i], l);
         for (int c = 0; c < 3; c++)
             l[c] = _mm256_and_si256(l[c], _mm256_set1_epi64x(0xFFFFFFFF));
         if (!avx2_tangents4(tan, l, dens[i / 4], o)) {
             for (int k = i; k < i + 4; k++)
                 STAGE(persp_lod1)(t, b, k);
-            continue;
+        } else if (done == i) {
+            avx2_store_st4(avx2_texc_lerp3x4(sv, l), avx2_texc_lerp3x4(tv, l), &tc[i]);
+            avx2_store_st4(avx2_texc_lerp3x4(sv, o[0]), avx2_texc_lerp3x4(tv, o[0]), &tx[i]);
+            avx2_store_st4(avx2_texc_lerp3x4(sv, o[1]), avx2_texc_lerp3x4(tv, o[1]), &ty[i]);
+            done += 4;
+        } else {
+            avx2_store_wgt4(o[0], &px[i]);
+            avx2_store_wgt4(o[1], &py[i]);
         }
-        avx2_store_wgt4(o[0], &px[i]);
-        avx2_store_wgt4(o[1], &py[i]);
+    }
+    if (done > 0) {
+        b->lod_unit = u;
+        b->lod_done = done;
     }
 #endif
 #endif
@@ -713,9 +732,12 @@ static void STAGE(stage_fetch)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, 
             STAGE(chunk_sample_at)(ctx, b, u, mode == FETCH_DIRECT, b->tx);
         return;
     }
-    /* stage_persp may have formed the first ones (not with neighbours) */
-    const int from = b->tc_unit == u && !lod ? b->tc_done : 0;
+    /* stage_persp may have formed the first ones (not with neighbours), or
+    ** stage_persp_lod the first ones with them */
+    const int from = b->tc_unit == u && !lod ? b->tc_done : b->lod_unit == u && lod ? b->lod_done : 0;
     b->tc_unit = -1;
+    if (b->lod_unit == u)
+        b->lod_unit = -1;
 #if CHAIN_SIMD && NUM_IS_FIXED
     const __m256i a[3] = { avx2_load_num4(t->v[0]->tex[u]), avx2_load_num4(t->v[1]->tex[u]),
                            avx2_load_num4(t->v[2]->tex[u]) };

@@ -1197,3 +1197,62 @@ def test_forced_path_is_generic_and_the_other_is_named():
             assert all(isinstance(p, str) and p for p in out["paths"])
             unforced += out["paths"]
     assert set(unforced) != {"generic"}, unforced
+
+
+# {================================================================
+# the level of detail's tangents where the vector kernels leave groups
+
+
+def _extreme_perspective_slivers(numeric: str, generic: bool, seed: int) -> np.ndarray:
+    """Thin mipmapped triangles whose vertices' w differ by up to 2^20 (clip
+    coordinates sent as they are): near the far vertices the weights' sum
+    falls below 2^31 in the fixed build, and the weights and tangents of
+    those groups come from the scalar code inside the vector stage."""
+    rng = np.random.default_rng(seed)
+    w, h = 48, 16
+    ctx = make_ctx(numeric, w, h)
+    gl = ctx.gl
+    if generic:
+        ctx.debug(1)
+    size = 32
+    gl.glBindTexture(C.GL_TEXTURE_2D, int(gl.glGenTextures(1)))
+    level = 0
+    while size >= 1:
+        img = rng.integers(0, 256, (size, size, 4), dtype=np.uint8)
+        gl.glTexImage2D(C.GL_TEXTURE_2D, level, C.GL_RGBA, size, size, 0, C.GL_RGBA, C.GL_UNSIGNED_BYTE, img)
+        size //= 2
+        level += 1
+    gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MIN_FILTER, C.GL_LINEAR_MIPMAP_LINEAR)
+    gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MAG_FILTER, C.GL_LINEAR)
+    gl.glEnable(C.GL_TEXTURE_2D)
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_MODULATE)
+    verts, tcs = [], []
+    for _ in range(40):
+        # a row or two high, up to the window wide, w from 1 to 2^20 per vertex
+        y = rng.uniform(1, h - 3)
+        xs = rng.uniform(0, w, 3)
+        ys = np.array([y, y + rng.uniform(0.5, 2.5), y + rng.uniform(0, 2.5)])
+        ws = 2.0 ** rng.uniform(0, 20, 3)
+        ws[rng.integers(0, 3)] = 1.0
+        for x_w, y_w, wv in zip(xs, ys, ws):
+            verts.append([(2 * x_w / w - 1) * wv, (2 * y_w / h - 1) * wv, 0.0, wv])
+        tcs += rng.uniform(-4, 4, (3, 2)).tolist()
+    gl.glEnableClientState(C.GL_VERTEX_ARRAY)
+    gl.glVertexPointer(4, C.GL_FLOAT, 0, np.ascontiguousarray(verts, dtype=np.float32))
+    gl.glEnableClientState(C.GL_TEXTURE_COORD_ARRAY)
+    gl.glTexCoordPointer(2, C.GL_FLOAT, 0, np.ascontiguousarray(tcs, dtype=np.float32))
+    gl.glDrawArrays(C.GL_TRIANGLES, 0, len(verts))
+    assert gl.glGetError() == C.GL_NO_ERROR
+    return ctx.color_buffer()
+
+
+@pytest.mark.parametrize("numeric", BUILDS)
+def test_lod_tangents_of_extreme_perspective_match_generic(numeric):
+    """The weights' tangents and the coordinates at them, where vertices' w differ
+    by up to 2^20 on thin triangles (groups the vector kernels leave to the
+    scalar code), equal the per-fragment reference's bit for bit."""
+    for seed in range(3):
+        chain = _extreme_perspective_slivers(numeric, False, seed)
+        assert (chain != chain[0, 0]).any(), "nothing drawn"
+        np.testing.assert_array_equal(chain, _extreme_perspective_slivers(numeric, True, seed),
+                                      err_msg=f"seed {seed}")
