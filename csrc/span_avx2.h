@@ -1166,6 +1166,20 @@ AVX2_INLINE V4 v4_div255(V4 d)
     return _mm256_fmadd_pd(d, _mm256_set1_pd(UNORM8_RECIP_HI), _mm256_mul_pd(d, _mm256_set1_pd(UNORM8_RECIP_LO)));
 #endif
 }
+/* ((0 + p0) + p1) + p2 in every lane (combine_block's DOT3 sum) */
+AVX2_INLINE V4 v4_sum3(V4 p)
+{
+#if defined(GLES_NUM_FLOAT)
+    __m128 s = _mm_add_ss(_mm_setzero_ps(), p);
+    s = _mm_add_ss(_mm_add_ss(s, _mm_shuffle_ps(p, p, 1)), _mm_movehl_ps(p, p));
+    return _mm_shuffle_ps(s, s, 0);
+#else
+    const __m128d lo = _mm256_castpd256_pd128(p);
+    __m128d s = _mm_add_sd(_mm_setzero_pd(), lo);
+    s = _mm_add_sd(_mm_add_sd(s, _mm_unpackhi_pd(lo, lo)), _mm256_extractf128_pd(p, 1));
+    return _mm256_broadcastsd_pd(s);
+#endif
+}
 /* the four bytes of a word as d / 255 (frag_from_unorm, ctx->unorm8) */
 AVX2_INLINE V4 v4_unorm8(uint32_t word)
 {

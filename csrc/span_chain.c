@@ -76,6 +76,7 @@ typedef struct ChainStages {
     SpanStage write, write_rgba8, write_rgba8_alpha, write_rgba8_add, write_rgba8_logic, write_rgba8_masked;
     SpanStage write_565, write_565_alpha;
     SpanStage rect_source;
+    SpanStage color_dot3_modulate;  /* float and double builds, AVX2 */
     SpanStage coords[GLES_MAX_TEXTURE_UNITS], coords_rect[GLES_MAX_TEXTURE_UNITS];
     SpanStage coords_tx[GLES_MAX_TEXTURE_UNITS];
     /* the AVX2 instances of the fixed and float builds (RGBA8888 and
@@ -544,6 +545,10 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     ** past what the byte's margin proves (docs/architecture.md) */
     const int dot3 = !rect && target_fused && cs->dot3_write != NULL && span_dot3_pair(ctx)
                   && !(bk == 1 && plain && ctx->units[first].combine_rgb == GL_DOT3_RGBA);
+    /* where no fused stage takes that pair (the float and double builds),
+    ** the colour and both units' environments in one stage after the
+    ** fetches (stage_color_dot3_modulate) */
+    const int dot3_env = !rect && !dot3 && cs->color_dot3_modulate != NULL && span_dot3_pair(ctx);
     /* ... sampling too where the unit's sampler is a bilinear vector kernel
     ** (stage_sample_write), and then also for a lone REPLACE unit of an
     ** RGBA texture */
@@ -575,7 +580,7 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
         ** coordinates come with the weights where it needs no neighbours */
         if (first >= 0 && !texture_needs_lod(ctx->units[first].bound))
             ctx->chain_coords_unit = first;
-        if (!direct && !modulate && !dot3)
+        if (!direct && !modulate && !dot3 && !dot3_env)
             s[n++] = cs->color;
     }
     if (dot3) {
@@ -619,9 +624,12 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
             s[n++] = cs->modulate_write;
             return n;
         }
-        for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
-            if (units & (1u << u))
-                s[n++] = modulate && u == first ? cs->color_modulate[u] : cs->env[u];
+        if (dot3_env)
+            s[n++] = cs->color_dot3_modulate;
+        else
+            for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
+                if (units & (1u << u))
+                    s[n++] = modulate && u == first ? cs->color_modulate[u] : cs->env[u];
     }
     if (ctx->fog)
         s[n++] = rect ? cs->fog_const : cs->fog;

@@ -942,6 +942,37 @@ static void STAGE(stage_color_modulate)(GlesContext *ctx, const TriSetup *t, Spa
     STAGE(stage_env)(ctx, b, u);
 }
 
+#if CHAIN_SIMD && !NUM_IS_FIXED
+/* stage_color, then stage_env of the two units of span_dot3_pair (the
+** first COMBINE DOT3_RGB with MODULATE alpha, or DOT3_RGBA, of its texture
+** and the primary colour, scales 1; the second MODULATE of an RGBA or RGB
+** texture) in one pass, the colour from registers: combine_loop's DOT3,
+** (t - b)(c - b) with b = 1/2 in the rgb lanes and 0 in alpha (the product
+** commutes, so the arguments' order is immaterial), 4 v4_sum3 in the rgb
+** lanes (all four for DOT3_RGBA; the scales of 1 change nothing), clamped;
+** then stage_env's MODULATE. Later stages read only b->c. */
+static void STAGE(stage_color_dot3_modulate)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    const unsigned int units = ctx->tex_units_on;
+    const int u0 = __builtin_ctz(units), u1 = __builtin_ctz(units & (units - 1));
+    const int rgba_dot = ctx->units[u0].combine_rgb == GL_DOT3_RGBA;
+    const int keep_alpha = ctx->units[u1].bound->format != GL_RGBA;
+    const V4 bias = v4_keep_alpha(v4_set1(FRAG_ONE / 2), v4_set1(0)), four = v4_set1(4);
+    const int smooth = t->smooth;
+    const V4 a0 = v4_load(smooth ? t->col[0] : t->flat), a1 = v4_load(smooth ? t->col[1] : t->flat);
+    const V4 a2 = v4_load(smooth ? t->col[2] : t->flat), flat = v4_clamp01(a0);
+    const int n = b->n;
+    for (int j = 0; j < n; j++) {
+        const V4 c = smooth ? v4_lerp3f_clamp01(a0, a1, a2, b->p[j]) : flat;
+        const V4 p = V4_OP(mul)(V4_OP(sub)(v4_load(b->ct[j][u0]), bias), V4_OP(sub)(c, bias));
+        const V4 d = V4_OP(mul)(v4_sum3(p), four);
+        const V4 v = v4_clamp01(rgba_dot ? d : v4_keep_alpha(d, p));
+        const V4 m = v4_mul01(v, v4_load(b->ct[j][u1]));
+        v4_store(b->c[j], keep_alpha ? v4_keep_alpha(m, v) : m);
+    }
+}
+#endif
+
 #define UNIT_STAGES(u) \
     static void STAGE(stage_fetch##u)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) \
     { \
@@ -1650,6 +1681,9 @@ static const ChainStages STAGE(chain_stages) = {
 #if CHAIN_SIMD && NUM_IS_FIXED
     .dot3_write = STAGE(stage_dot3_write),
     .dot3_sample_write = STAGE(stage_dot3_sample_write),
+#endif
+#if CHAIN_SIMD && !NUM_IS_FIXED
+    .color_dot3_modulate = STAGE(stage_color_dot3_modulate),
 #endif
     .rect_source = STAGE(stage_rect_source),
 };

@@ -315,13 +315,6 @@ AVX2_INLINE V4 env_mask(int rgb, int alpha)
 {
     return _mm_castsi128_ps(_mm_setr_epi32(-rgb, -rgb, -rgb, -alpha));
 }
-/* ((0 + p0) + p1) + p2 in every lane */
-AVX2_INLINE V4 env_sum3(V4 p)
-{
-    __m128 s = _mm_add_ss(_mm_setzero_ps(), p);
-    s = _mm_add_ss(_mm_add_ss(s, _mm_shuffle_ps(p, p, 1)), _mm_movehl_ps(p, p));
-    return _mm_shuffle_ps(s, s, 0);
-}
 #else
 typedef __m256i EnvIdx;
 AVX2_INLINE V4 env_pick(V4 v, EnvIdx idx)
@@ -332,13 +325,6 @@ AVX2_INLINE EnvIdx env_idx(int alpha) { return alpha ? _mm256_setr_epi32(6, 7, 6
 AVX2_INLINE V4 env_mask(int rgb, int alpha)
 {
     return _mm256_castsi256_pd(_mm256_setr_epi64x(-rgb, -rgb, -rgb, -alpha));
-}
-AVX2_INLINE V4 env_sum3(V4 p)
-{
-    const __m128d lo = _mm256_castpd256_pd128(p);
-    __m128d s = _mm_add_sd(_mm_setzero_pd(), lo);
-    s = _mm_add_sd(_mm_add_sd(s, _mm_unpackhi_pd(lo, lo)), _mm256_extractf128_pd(p, 1));
-    return _mm256_broadcastsd_pd(s);
 }
 #endif
 AVX2_INLINE V4 env_mul(V4 a, V4 b) { return V4_OP(mul)(a, b); }
@@ -361,7 +347,7 @@ AVX2_INLINE V4 env_scales(int rgb, int alpha, int extra)
 }
 AVX2_INLINE V4 env_scale(V4 v, V4 s) { return V4_OP(mul)(v, s); }
 /* scale * (4 * d), d the sum of lanes 0-2 in combine_block's order */
-AVX2_INLINE V4 env_dot3(V4 p, V4 s) { return env_scale(V4_OP(mul)(env_sum3(p), V4_OP(set1)(4)), s); }
+AVX2_INLINE V4 env_dot3(V4 p, V4 s) { return env_scale(V4_OP(mul)(v4_sum3(p), V4_OP(set1)(4)), s); }
 /* DOT3 in lanes 0-2 (scales s) and lane 3 of p (scales sa) */
 AVX2_INLINE V4 env_dot3_alpha(V4 p, V4 s, V4 sa) { return v4_keep_alpha(env_dot3(p, s), env_scale(p, sa)); }
 AVX2_INLINE int env_fits(V4 any) { (void)any; return 1; }
