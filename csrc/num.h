@@ -981,6 +981,19 @@ static inline void wgt_tangent(const WgtTangent *g, const WGT p[3], WgtDen inv, 
     out[0] = 1 - out[1] - out[2];
 }
 #endif
+
+/* wgt_persp's weights p at edge values e and, where g is not NULL, their
+** tangents along g[0] (tx) and g[1] (ty) from the same division */
+static inline void wgt_persp_tangents(const WgtSetup *s, const WgtTangent g[2], const int64_t e[3], WGT p[3],
+                                      WGT tx[3], WGT ty[3])
+{
+    WgtDen den;
+    wgt_persp_den(s, e, p, g ? &den : NULL);
+    if (!g)
+        return;
+    wgt_tangent(&g[0], p, den, tx);
+    wgt_tangent(&g[1], p, den, ty);
+}
 /* }==================================================================== */
 
 /* {==================================================================== */

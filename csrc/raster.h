@@ -16,7 +16,8 @@ struct TriSetup {
     ** pixel indices; positive inside, zero on the edge */
     int64_t ea[3], eb[3], ec[3];
     WgtSetup wgt;
-    WgtTangent tan[2];      /* the weights' tangents along ea and eb, where a unit needs the level of detail */
+    WgtTangent tan[2];      /* the weights' tangents along ea and eb, where lod */
+    int lod;                /* a unit needs the level of detail (raster_tangent_setup) */
     const FRAGV *col[3];    /* each vertex's colour for the visible face */
     int smooth;             /* colours vary over the triangle */
     unsigned int tex_projective;  /* bit per unit whose q varies (divide by q) */
@@ -44,13 +45,13 @@ static inline int raster_needs_lod(const GlesContext *ctx)
     return 0;
 }
 
-/* t->tan from t->wgt, t->ea and t->eb (twice the area area2), where a
-** unit needs the level of detail */
+/* t->lod, and t->tan from t->wgt, t->ea and t->eb (twice the area area2)
+** where it is set */
 static inline void raster_tangent_setup(const GlesContext *ctx, TriSetup *t, int64_t area2)
 {
-    if (!raster_needs_lod(ctx))
-        return;
-    wgt_tangents_setup(&t->wgt, area2, t->ea, t->eb, t->tan);
+    t->lod = raster_needs_lod(ctx);
+    if (t->lod)
+        wgt_tangents_setup(&t->wgt, area2, t->ea, t->eb, t->tan);
 }
 
 /* texture coordinates of unit u at perspective weights p */

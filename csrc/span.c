@@ -39,14 +39,9 @@ void fragment_inputs(const GlesContext *ctx, const TriSetup *t, const int64_t e[
     out->coverage = coverage;
     out->z = 0;
     out->fog = 0;
+    /* with the level of detail's neighbours: the weights' tangents */
     WGT p[3], px[3] = { 0 }, py[3] = { 0 };
-    WgtDen den;
-    wgt_persp_den(&t->wgt, e, p, &den);
-    if (raster_needs_lod(ctx)) {
-        /* the level of detail's neighbours: the weights' tangents */
-        wgt_tangent(&t->tan[0], p, den, px);
-        wgt_tangent(&t->tan[1], p, den, py);
-    }
+    wgt_persp_tangents(&t->wgt, t->lod ? t->tan : NULL, e, p, px, py);
     for (int i = 0; i < 4; i++)
         out->c[i] = t->smooth ? frag_lerp3f(t->col[0][i], t->col[1][i], t->col[2][i], p[0], p[1], p[2]) : t->flat[i];
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++) {

@@ -293,14 +293,8 @@ static int debug_persp(int simd, const WgtSetup *s, const WgtTangent *g, int n, 
             const int64_t (*ej)[3] = (const int64_t (*)[3])(e + 3 * (size_t)j);
             if (!debug_persp4_avx2(s, g, ej, o[0], o[1], o[2]))
                 /* stage_persp's fallback: the scalar code for the group */
-                for (int k = 0; k < 4; k++) {
-                    WgtDen den;
-                    wgt_persp_den(s, ej[k], o[0][k], &den);
-                    if (g) {
-                        wgt_tangent(&g[0], o[0][k], den, o[1][k]);
-                        wgt_tangent(&g[1], o[0][k], den, o[2][k]);
-                    }
-                }
+                for (int k = 0; k < 4; k++)
+                    wgt_persp_tangents(s, g, ej[k], o[0][k], o[1][k], o[2][k]);
             for (int k = 0; k < 4; k++)
                 for (size_t m = 0; m < per; m++)
                     out[(size_t)(j + k) * per + m] = o[m / 3][k][m % 3];
@@ -309,12 +303,7 @@ static int debug_persp(int simd, const WgtSetup *s, const WgtTangent *g, int n, 
     (void)simd;
     for (; j < n; j++) {
         WGT o[3][3];
-        WgtDen den;
-        wgt_persp_den(s, e + 3 * (size_t)j, o[0], &den);
-        if (g) {
-            wgt_tangent(&g[0], o[0], den, o[1]);
-            wgt_tangent(&g[1], o[0], den, o[2]);
-        }
+        wgt_persp_tangents(s, g, e + 3 * (size_t)j, o[0], o[1], o[2]);
         for (size_t m = 0; m < per; m++)
             out[(size_t)j * per + m] = o[m / 3][m % 3];
     }
@@ -492,7 +481,6 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     const int color_work = !no_color || ctx->alpha_test;
     if (!rect)
         ctx->chain_coords_unit = ctx->chain_coords_tx_unit = ctx->chain_lod_unit = -1;
-    int lod = 0;
     ctx->stencil_cull.on = 0;
     if (stencil) {
         FragTests ft;
@@ -506,11 +494,11 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     unsigned int lod_units = 0;
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
         if (units & (1u << u)) {
-            lod |= texture_needs_lod(ctx->units[u].bound);
             lod_units |= (unsigned)texture_needs_lod(ctx->units[u].bound) << u;
             ctx->samplers[u] = texture_span_sampler(ctx->units[u].bound, ctx_simd(ctx));
             ctx->sample_group[u] = texture_span_sample_group(ctx->units[u].bound, ctx_simd(ctx));
         }
+    const int lod = lod_units != 0;
     /* a lone REPLACE unit of an RGBA texture: its texel is the colour
     ** (texture_env), so it is sampled into the colour and the primary
     ** colour is not formed */

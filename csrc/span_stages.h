@@ -238,11 +238,8 @@ static void STAGE(stage_persp)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 static inline void STAGE(persp_lod1)(const TriSetup *t, SpanBuf *b, int j)
 {
     int64_t e[3];
-    WgtDen den;
     chunk_edges(t, b, b->k[j], e);
-    wgt_persp_den(&t->wgt, e, b->p[j], &den);
-    wgt_tangent(&t->tan[0], b->p[j], den, b->px[j]);
-    wgt_tangent(&t->tan[1], b->p[j], den, b->py[j]);
+    wgt_persp_tangents(&t->wgt, t->tan, e, b->p[j], b->px[j], b->py[j]);
 }
 
 /* stage_persp, with the weights' tangents (the level of detail's

@@ -1200,14 +1200,13 @@ def test_forced_path_is_generic_and_the_other_is_named():
 
 
 # {================================================================
-# the level of detail's tangents where the vector kernels leave groups
+# the level of detail's tangents under extreme perspective
 
 
 def _extreme_perspective_slivers(numeric: str, generic: bool, seed: int) -> np.ndarray:
     """Thin mipmapped triangles whose vertices' w differ by up to 2^20 (clip
-    coordinates sent as they are): near the far vertices the weights' sum
-    falls below 2^31 in the fixed build, and the weights and tangents of
-    those groups come from the scalar code inside the vector stage."""
+    coordinates sent as they are): the weights' tangents there are large
+    and their terms cancel near the far vertices."""
     rng = np.random.default_rng(seed)
     w, h = 48, 16
     ctx = make_ctx(numeric, w, h)
@@ -1249,8 +1248,8 @@ def _extreme_perspective_slivers(numeric: str, generic: bool, seed: int) -> np.n
 @pytest.mark.parametrize("numeric", BUILDS)
 def test_lod_tangents_of_extreme_perspective_match_generic(numeric):
     """The weights' tangents and the coordinates at them, where vertices' w differ
-    by up to 2^20 on thin triangles (groups the vector kernels leave to the
-    scalar code), equal the per-fragment reference's bit for bit."""
+    by up to 2^20 on thin triangles, equal the per-fragment reference's bit
+    for bit."""
     for seed in range(3):
         chain = _extreme_perspective_slivers(numeric, False, seed)
         assert (chain != chain[0, 0]).any(), "nothing drawn"
