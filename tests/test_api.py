@@ -11,6 +11,7 @@ import pytest
 from conftest import decode_png
 
 import gles
+from gles import constants as C
 from gles import gl
 from gles import gl as G
 
@@ -611,3 +612,30 @@ def test_missing_commands_are_es_commands():
         assert name in gl.COMMON_COMMANDS
         assert callable(getattr(gl, name))
         assert (name in gl.COMMON_LITE_COMMANDS) == (name not in FLOAT_ONLY_NAMES)
+
+
+@pytest.mark.parametrize("numeric", ["fixed", "double"])
+def test_parameter_vectors_read_alike(numeric):
+    """A list or tuple of Python floats (read without an array), a float32
+    array, a list of ints and a list mixing in a numpy scalar set the same
+    material, light and fog values; a short list or a non-number still
+    raises, naming the command."""
+    ctx = gles.Context(8, 8, numeric=numeric, range_check="off")
+    gl = ctx.gl
+    want = [0.25, 0.5, 0.75, 1.0]
+    forms = [want, tuple(want), np.array(want, np.float32), [0.25, 0.5, 0.75, 1],
+             [0.25, np.float64(0.5), 0.75, 1.0], want + [9.0]]
+    for form in forms:
+        gl.glMaterialfv(C.GL_FRONT_AND_BACK, C.GL_AMBIENT, [0.0, 0.0, 0.0, 0.0])
+        gl.glMaterialfv(C.GL_FRONT_AND_BACK, C.GL_AMBIENT, form)
+        assert np.allclose(gl.glGetMaterialfv(C.GL_FRONT, C.GL_AMBIENT), want, atol=2**-16), form
+        gl.glLightfv(C.GL_LIGHT1, C.GL_DIFFUSE, form)
+        assert np.allclose(gl.glGetLightfv(C.GL_LIGHT1, C.GL_DIFFUSE), want, atol=2**-16), form
+    gl.glMaterialfv(C.GL_FRONT_AND_BACK, C.GL_SHININESS, [7.5])
+    assert np.allclose(gl.glGetMaterialfv(C.GL_FRONT, C.GL_SHININESS), [7.5])
+    with pytest.raises(ValueError, match="glMaterialfv"):
+        gl.glMaterialfv(C.GL_FRONT_AND_BACK, C.GL_AMBIENT, [0.5, 0.5, 0.5])
+    with pytest.raises((TypeError, ValueError), match="glMaterialfv"):
+        gl.glMaterialfv(C.GL_FRONT_AND_BACK, C.GL_AMBIENT, [0.5, 0.5, "x", 0.5])
+    assert np.allclose(gl.glGetMaterialfv(C.GL_FRONT, C.GL_AMBIENT), want, atol=2**-16)
+    assert gl.glGetError() == C.GL_NO_ERROR

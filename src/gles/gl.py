@@ -323,6 +323,11 @@ class _CoreFunctions:
             return fn
         if ctype.kind != "function":
             return fn
+        if all(t.kind == "pointer" for t in ctype.args):
+            # only the context's and the binding's own pointers: nothing the
+            # caller passes can fail conversion
+            setattr(self, name, fn)
+            return fn
 
         def call(*args: Any) -> Any:
             try:
@@ -570,6 +575,16 @@ class GLBase:
 
     def _params(self, pname: int, params: Any, fixed: bool, what: str) -> Any:
         n = _PARAM_COUNT.get(_index(pname), 1)
+        if not fixed and type(params) in (list, tuple) and len(params) >= n:
+            # a short list of Python floats, as _values would read it: no array
+            out = [0.0, 0.0, 0.0, 0.0]
+            for i in range(n):
+                v = params[i]
+                if type(v) is not float:
+                    break
+                out[i] = v
+            else:
+                return self._ffi.new("double[4]", out)
         vals = _values(params, n, what, np.int64 if fixed else np.float64)[:n]
         out = [0.0, 0.0, 0.0, 0.0]
         for i in range(n):

@@ -353,7 +353,11 @@ def _vector_checker(name: str, at: int,
             # a short list of plain numbers, all in range: no array needed
             # (a value at a limit, NaN or anything else takes the full test)
             try:
-                if all(UNDERFLOW_LIMIT < abs(x) < OVERFLOW_LIMIT or not x for x in head[:n]):
+                for i in range(n):
+                    x = head[i]
+                    if not (UNDERFLOW_LIMIT < abs(x) < OVERFLOW_LIMIT or not x):
+                        break
+                else:
                     return args
             except TypeError:
                 pass
