@@ -135,38 +135,43 @@ ClipRect raster_clip_rect(const GlesContext *ctx)
 ** row bounds solve (E > 0, or E == 0 on a tie edge). A row's covered
 ** pixels form one interval, as each inequality holds on a half-line of the
 ** row, so the first and last covered pixel give the same run [lo, hi) as
-** the divisions. Writes (row, lo, hi) per row with a run; returns their
-** number. */
+** the divisions. The test has no branch: with E biased by tie - 1 (E > 0
+** is E - 1 >= 0 for integers), a centre is covered where no biased value
+** is negative, the sign bit of their OR; the row's centres are bits of a
+** mask (the box is at most RASTER_SCAN_MAX wide). Writes (row, lo, hi)
+** per row with a run; returns their number. */
 static int scan_runs(const TriSetup *t, const int tie[3], const ClipRect *box, int drop_last,
                      int64_t runs[RASTER_SCAN_MAX][3])
 {
+    _Static_assert(RASTER_SCAN_MAX <= 32, "a row's centres are bits of a uint32_t");
+    const int width = (int)(box->x1 - box->x0 + 1);
+    const int64_t a0 = t->ea[0], a1 = t->ea[1], a2 = t->ea[2];
+    int64_t r0 = a0 * box->x0 + t->eb[0] * box->y0 + t->ec[0] + tie[0] - 1;
+    int64_t r1 = a1 * box->x0 + t->eb[1] * box->y0 + t->ec[1] + tie[1] - 1;
+    int64_t r2 = a2 * box->x0 + t->eb[2] * box->y0 + t->ec[2] + tie[2] - 1;
     int m = 0;
     for (int64_t py = box->y0; py <= box->y1; py++) {
-        int64_t e0 = t->ea[0] * box->x0 + t->eb[0] * py + t->ec[0];
-        int64_t e1 = t->ea[1] * box->x0 + t->eb[1] * py + t->ec[1];
-        int64_t e2 = t->ea[2] * box->x0 + t->eb[2] * py + t->ec[2];
-        int64_t lo = 0, hi = 0;
-        int any = 0;
-        for (int64_t px = box->x0; px <= box->x1; px++) {
-            if ((e0 > 0 || (e0 == 0 && tie[0])) && (e1 > 0 || (e1 == 0 && tie[1]))
-                && (e2 > 0 || (e2 == 0 && tie[2]))) {
-                if (!any)
-                    lo = px;
-                any = 1;
-                hi = px + 1;
+        int64_t e0 = r0, e1 = r1, e2 = r2;
+        uint32_t covered = 0;
+        for (int k = 0; k < width; k++) {
+            covered |= (uint32_t)(~(uint64_t)(e0 | e1 | e2) >> 63) << k;
+            e0 += a0;
+            e1 += a1;
+            e2 += a2;
+        }
+        if (covered) {
+            const int64_t lo = box->x0 + __builtin_ctz(covered);
+            const int64_t hi = box->x0 + 32 - __builtin_clz(covered) - (drop_last != 0);
+            if (lo < hi) {
+                runs[m][0] = py;
+                runs[m][1] = lo;
+                runs[m][2] = hi;
+                m++;
             }
-            e0 += t->ea[0];
-            e1 += t->ea[1];
-            e2 += t->ea[2];
         }
-        if (drop_last && hi > lo)
-            hi--;
-        if (any && lo < hi) {
-            runs[m][0] = py;
-            runs[m][1] = lo;
-            runs[m][2] = hi;
-            m++;
-        }
+        r0 += t->eb[0];
+        r1 += t->eb[1];
+        r2 += t->eb[2];
     }
     return m;
 }
