@@ -98,12 +98,13 @@ static inline void step_next(EdgeStep *e)
         e->be += e->eb;
         return;
     }
+    /* the carry without a branch: it is taken about dr / d of the rows,
+    ** unpredictably */
     e->q += e->dq;
     e->r += e->dr;
-    if (e->r >= e->d) {
-        e->q++;
-        e->r -= e->d;
-    }
+    const int64_t carry = e->r >= e->d;
+    e->q += carry;
+    e->r -= carry * e->d;
 }
 
 static inline int same_color(const FRAGV *p, const FRAGV *q)
