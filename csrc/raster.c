@@ -43,8 +43,9 @@ static void edge_setup(TriSetup *t, int i, const Vertex *p, const Vertex *q, int
     t->ea[i] = A * one;
     t->eb[i] = B * one;
     t->ec[i] = A * (half - p->wx) + B * (half - p->wy);
-    /* left edges go down (A > 0), bottom edges go right (A == 0, B > 0) */
-    tie[i] = A > 0 || (A == 0 && B > 0);
+    /* left edges go down (A > 0), bottom edges go right (A == 0, B > 0);
+    ** bitwise, not a branch (the winding changes from triangle to triangle) */
+    tie[i] = (A > 0) | ((A == 0) & (B > 0));
 }
 
 /* One edge's covered-run bound, stepped row by row. With
@@ -160,16 +161,15 @@ static int scan_runs(const TriSetup *t, const int tie[3], const ClipRect *box, i
             e1 += a1;
             e2 += a2;
         }
-        if (covered) {
-            const int64_t lo = box->x0 + __builtin_ctz(covered);
-            const int64_t hi = box->x0 + 32 - __builtin_clz(covered) - (drop_last != 0);
-            if (lo < hi) {
-                runs[m][0] = py;
-                runs[m][1] = lo;
-                runs[m][2] = hi;
-                m++;
-            }
-        }
+        /* the row's run, kept where it is not empty, without a branch
+        ** (m < RASTER_SCAN_MAX here: at most one run per row before) */
+        const uint32_t any = covered ? covered : 1;
+        const int64_t lo = box->x0 + __builtin_ctz(any);
+        const int64_t hi = box->x0 + 32 - __builtin_clz(any) - (drop_last != 0);
+        runs[m][0] = py;
+        runs[m][1] = lo;
+        runs[m][2] = hi;
+        m += (covered != 0) & (lo < hi);
         r0 += t->eb[0];
         r1 += t->eb[1];
         r2 += t->eb[2];
