@@ -1097,7 +1097,9 @@ static void STAGE(stage_alpha)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 #if CHAIN_SIMD
     /* fragment_alpha_pass of four fragments at a time, the function fixed
     ** for the chunk; the survivors' colours and offsets move to the front
-    ** as they go (slot m <= j: only slots read already are written) */
+    ** as they go (slot m <= j: only slots read already are written), every
+    ** group alike: a branch for groups that all pass or all fail costs more
+    ** where the texture's alpha decides, as it mispredicts */
     const int n = b->n;
     const __m128i rv = _mm_set1_epi32((int)ref);
     int j, m = 0;
@@ -1106,12 +1108,6 @@ static void STAGE(stage_alpha)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
         const V4 c0 = v4_load(b->c[j]), c1 = v4_load(b->c[j + 1]), c2 = v4_load(b->c[j + 2]), \
                  c3 = v4_load(b->c[j + 3]); \
         const unsigned bits = avx2_cmp4_i32(FUNC, v4_alpha8x4(c0, c1, c2, c3), rv); \
-        if (bits == 0xF && m == j) { \
-            m += 4; \
-            continue; \
-        } \
-        if (!bits) \
-            continue; \
         uint32_t k4; \
         memcpy(&k4, &b->k[j], sizeof k4); \
         k4 = (uint32_t)_mm_cvtsi128_si32(_mm_shuffle_epi8(_mm_cvtsi32_si128((int)k4), \
