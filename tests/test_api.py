@@ -639,3 +639,37 @@ def test_parameter_vectors_read_alike(numeric):
         gl.glMaterialfv(C.GL_FRONT_AND_BACK, C.GL_AMBIENT, [0.5, 0.5, "x", 0.5])
     assert np.allclose(gl.glGetMaterialfv(C.GL_FRONT, C.GL_AMBIENT), want, atol=2**-16)
     assert gl.glGetError() == C.GL_NO_ERROR
+
+
+@pytest.mark.parametrize("numeric", ["fixed", "float"])
+def test_texture_parameters_read_alike(numeric):
+    """Texture parameters given as Python ints, GL_* constants, floats,
+    tuples and numpy arrays (a list of plain numbers is read without an
+    array) set the same state; an int past 32 bits still raises."""
+    def crop_rect(gl):
+        return np.ravel(gl.glGetTexParameteriv(C.GL_TEXTURE_2D, C.GL_TEXTURE_CROP_RECT_OES)).tolist()
+
+    ctx = gles.Context(8, 8, numeric=numeric, range_check="off")
+    gl = ctx.gl
+    tex = gl.glGenTextures(1)
+    gl.glBindTexture(C.GL_TEXTURE_2D, tex)
+    for crop in ([1, 2, 3, 4], (1, 2, 3, 4), np.array([1, 2, 3, 4], np.int32), [1, 2, 3, 4, 99]):
+        gl.glTexParameteriv(C.GL_TEXTURE_2D, C.GL_TEXTURE_CROP_RECT_OES, [0, 0, 0, 0])
+        gl.glTexParameteriv(C.GL_TEXTURE_2D, C.GL_TEXTURE_CROP_RECT_OES, crop)
+        assert crop_rect(gl) == [1, 2, 3, 4]
+    for mode in (C.GL_REPLACE, int(C.GL_REPLACE), np.int32(C.GL_REPLACE)):
+        gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_MODULATE)
+        gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, mode)
+        assert np.ravel(gl.glGetTexEnviv(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE)).tolist() == [C.GL_REPLACE]
+    if numeric == "float":
+        for colour in ([0.25, 0.5, 0.75, 1.0], [0.25, 0.5, 0.75, 1], (0.25, 0.5, 0.75, True)):
+            gl.glTexEnvfv(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_COLOR, colour)
+            got = gl.glGetTexEnvfv(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_COLOR)
+            assert np.allclose(got, [0.25, 0.5, 0.75, 1.0])
+        gl.glTexParameterf(C.GL_TEXTURE_2D, C.GL_TEXTURE_MIN_FILTER, C.GL_NEAREST)
+        filt = gl.glGetTexParameteriv(C.GL_TEXTURE_2D, C.GL_TEXTURE_MIN_FILTER)
+        assert np.ravel(filt).tolist() == [C.GL_NEAREST]
+    with pytest.raises(ValueError, match="glTexParameteriv"):
+        gl.glTexParameteriv(C.GL_TEXTURE_2D, C.GL_TEXTURE_CROP_RECT_OES, [1, 2, 3, 2**40])
+    assert crop_rect(gl) == [1, 2, 3, 4]
+    assert gl.glGetError() == C.GL_NO_ERROR
