@@ -583,10 +583,14 @@ class GLBase:
 
     def glColor4ub(self, r: int, g: int, b: int, a: int) -> None:
         # Table 2.7: c / 255
-        vals = [_index(c) for c in (r, g, b, a)]
-        for c in vals:
-            if not 0 <= c <= 255:
-                raise ValueError(f"{_describe(c, 'glColor4ub argument')} does not fit GLubyte")
+        vals: Any = (r, g, b, a)
+        if not (type(r) is int and type(g) is int and type(b) is int and type(a) is int
+                and 0 <= r <= 255 and 0 <= g <= 255 and 0 <= b <= 255 and 0 <= a <= 255):
+            # (four plain ints in range, the usual call, need no conversion)
+            vals = [_index(c) for c in vals]
+            for c in vals:
+                if not 0 <= c <= 255:
+                    raise ValueError(f"{_describe(c, 'glColor4ub argument')} does not fit GLubyte")
         with self._lock:
             self._lib.gles_Color4(self._p, vals[0] / 255.0, vals[1] / 255.0, vals[2] / 255.0, vals[3] / 255.0)
 
