@@ -280,21 +280,25 @@ def _values(data: Any, n: int, what: str, dtype: Any = np.float64) -> np.ndarray
 _EXACT = 2**53      # ints below this in magnitude are exact as doubles
 
 
-def _plain_values(src: Any, n: int, form: str) -> bool:
-    """Whether the first n of a list or tuple are Python numbers that
-    _values would take unchanged, so that they need no array: ints within 32
-    bits for the integer forms, floats or ints below 2^53 (exact as doubles)
-    for the f forms; ints include the GL_* constants and bools, as numpy
-    reads them. Anything else takes _values, which converts or raises."""
-    reals = form == "f"
-    for i in range(n):
-        v = src[i]
-        if type(v) is float:
-            if not reals:
-                return False
-        elif not isinstance(v, int) or not (-_EXACT < v < _EXACT if reals else _INT_MIN <= v <= _INT_MAX):
-            return False
-    return True
+def _plain_or_values(src: Any, n: int, form: str, what: str) -> Any:
+    """The first n values of a pname command's `src`. A list or tuple of
+    Python numbers that _values would take unchanged is returned as it is,
+    with no array: floats, or ints below 2^53 (exact as doubles), for the f
+    forms; ints within 32 bits for the x and i forms (ints include the GL_*
+    constants and bools, as numpy reads them). Anything else goes through
+    _values, which converts or raises."""
+    if type(src) in (list, tuple) and len(src) >= n:
+        reals = form == "f"
+        for i in range(n):
+            v = src[i]
+            if type(v) is float:
+                if not reals:
+                    break
+            elif not isinstance(v, int) or not (-_EXACT < v < _EXACT if reals else _INT_MIN <= v <= _INT_MAX):
+                break
+        else:
+            return src
+    return _values(src, n, what, np.float64 if form == "f" else np.int64)
 
 
 def _c_arg_error(name: str, ctype: Any, args: tuple, exc: Exception) -> Exception:
@@ -599,18 +603,7 @@ class GLBase:
 
     def _params(self, pname: int, params: Any, fixed: bool, what: str) -> Any:
         n = _PARAM_COUNT.get(_index(pname), 1)
-        if not fixed and type(params) in (list, tuple) and len(params) >= n:
-            # a short list of Python floats (the usual colour or position),
-            # as _values would read it: no array
-            out = [0.0, 0.0, 0.0, 0.0]
-            for i in range(n):
-                v = params[i]
-                if type(v) is not float:
-                    break
-                out[i] = v
-            else:
-                return self._ffi.new("double[4]", out)
-        vals = _values(params, n, what, np.int64 if fixed else np.float64)[:n]
+        vals = _plain_or_values(params, n, "x" if fixed else "f", what)
         out = [0.0, 0.0, 0.0, 0.0]
         for i in range(n):
             out[i] = float(vals[i]) * _FIX if fixed else float(vals[i])
@@ -769,9 +762,7 @@ class GLBase:
         """Doubles for a texture parameter: x forms scale reals, i forms
         map reals like colours, enums and integers pass unchanged."""
         n = _TEX_COUNT.get(_index(pname), 1) if vector else 1
-        src = params if vector else (params,)
-        raw = src[:n] if type(src) in (list, tuple) and len(src) >= n and _plain_values(src, n, form) else \
-            _values(src, n, what, np.float64 if form == "f" else np.int64)[:n]
+        raw = _plain_or_values(params if vector else (params,), n, form, what)
         real = _index(pname) in _TEX_REAL
         out = [0.0, 0.0, 0.0, 0.0]
         for i in range(n):
