@@ -205,8 +205,33 @@ static int debug_modulate_write_avx2(Avx2ModWrite *m, const FRAGV *const a[3], i
     return exact;
 }
 #endif
+#if !NUM_IS_FIXED
+/* gles_debug_unorm_div's kernel: d / (2^bits - 1) as the writers form it */
+static void debug_unorm_div_avx2(int bits, double *out)
+{
+    for (int d = 0; d < 1 << bits; d += 4) {
+        FRAGV q[4];
+        v4_store(q, v4_unorm_quot(v4_from_i32(_mm_setr_epi32(d, d + 1, d + 2, d + 3)), bits));
+        for (int i = 0; i < 4; i++)
+            out[d + i] = (double)q[i];
+    }
+}
+#endif
 #pragma GCC pop_options
 #endif
+
+int gles_debug_unorm_div(int bits, double *out)
+{
+#if SIMD_X86 && !NUM_IS_FIXED
+    if ((bits != 5 && bits != 6 && bits != 8) || simd_detect() < SIMD_AVX2)
+        return -1;
+    debug_unorm_div_avx2(bits, out);
+    return 0;
+#else
+    (void)bits, (void)out;
+    return -1;
+#endif
+}
 
 int gles_debug_modulate_write_f(int smooth, int rgb, int kind, unsigned int alpha_func, uint32_t alpha_ref,
                                 const float col[12], int n, const uint8_t *k, const float *p, const float *ct,

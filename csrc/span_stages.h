@@ -1343,10 +1343,10 @@ static int STAGE(write_565x4)(GlesContext *ctx, SpanBuf *b, uint16_t *dst, const
             const __m128i d = _mm_setr_epi32(dst[k[0]], dst[k[1]], dst[k[2]], dst[k[3]]);
             const __m128i dc[3] = { _mm_srli_epi32(d, 11), _mm_and_si128(_mm_srli_epi32(d, 5), _mm_set1_epi32(63)),
                                     _mm_and_si128(d, _mm_set1_epi32(31)) };
-            static const int maxval[3] = { 31, 63, 31 };
+            static const int bits[3] = { 5, 6, 5 };
             const V4 va = v4_clamp01(ch[3]), ia = v4_one_minus(va);
             for (int i = 0; i < 3; i++) {
-                const V4 dv = V4_OP(div)(v4_from_i32(dc[i]), V4_OP(set1)((NUM)maxval[i]));
+                const V4 dv = v4_unorm_quot(v4_from_i32(dc[i]), bits[i]);
                 ch[i] = v4_add(v4_mul01(v4_clamp01(ch[i]), va), v4_mul01(dv, ia));
             }
         }
