@@ -571,47 +571,74 @@ static void vx_specular_avx2(const NUM *ndotvp, const NUM *ndoth, NUM shin, cons
 
 /* acc[k] += the light's term for lanes 0..cnt-1 (lanes n..cnt-1 untouched);
 ** v: the eye positions over w, nrm: the normals, col: the vertex colours,
-** read when `cm` */
+** read when `cm`. In passes over the batch's groups of four, each a short
+** chain (the distance and attenuation, the direction and spot factor, the
+** half vector, the terms): the groups of one pass are independent, so the
+** core overlaps their divisions, square roots and table lookups, which one
+** long chain per group left waiting on each other. Each lane's operations
+** are those of one pass per group, in the same order. */
 static void vx_positional_avx2(const VxPositional *L, NUM (*v)[NUM_BATCH], NUM (*nrm)[NUM_BATCH],
                                NUM (*col)[NUM_BATCH], NUM (*acc)[NUM_BATCH], int n, int cnt, int cm)
 {
     const __m256i z0 = _mm256_setzero_si256(), one = _mm256_set1_epi64x(NUM_ONE);
     const __m256i ramp = _mm256_setr_epi64x(0, 1, 2, 3);
-    for (int i = 0; i < cnt; i += 4) {
-        __m256i vp[3], nv[3], u[3];
+    enum { GROUPS = NUM_BATCH / 4 };
+    __m256i u[GROUPS][3], dist[GROUPS], dead[GROUPS], scale[GROUPS], h[GROUPS][3], hzero[GROUPS];
+    const int groups = (cnt + 3) / 4;
+    /* the direction to the light, its distance, the padding lanes */
+    for (int g = 0; g < groups; g++) {
+        const int i = 4 * g;
+        __m256i vp[3];
         __m128i vp32[3];
         for (int k = 0; k < 3; k++) {
             vp[k] = vx_sub(_mm256_set1_epi64x(L->p[k]), vx_load4(v[k] + i));
             vp32[k] = vx_pack4(vp[k]);
         }
+        if (L->attenuate)
+            dist[g] = vx_length3(vp);
+        vx_normalize3_4(vp32, u[g], &dead[g]);
+        dead[g] = _mm256_or_si256(dead[g], _mm256_cmpgt_epi64(_mm256_add_epi64(ramp, _mm256_set1_epi64x(i)),
+                                                              _mm256_set1_epi64x(n - 1)));   /* padding */
+    }
+    /* the attenuation and the spot factor */
+    for (int g = 0; g < groups; g++) {
         __m256i att = one;
         if (L->attenuate) {
-            __m256i d = vx_length3(vp);
+            const __m256i d = dist[g];
             __m256i t2 = vx_mul(vx_mul(_mm256_set1_epi64x(L->ka[2]), d), d);
             __m256i den = vx_add(_mm256_set1_epi64x(L->ka[0]), vx_add(vx_mul(_mm256_set1_epi64x(L->ka[1]), d), t2));
             att = vx_recip(den);
         }
-        __m256i dead;
-        vx_normalize3_4(vp32, u, &dead);
-        dead = _mm256_or_si256(dead, _mm256_cmpgt_epi64(_mm256_add_epi64(ramp, _mm256_set1_epi64x(i)),
-                                                         _mm256_set1_epi64x(n - 1)));   /* padding */
         __m256i spot = one;
         if (L->spot) {
-            __m256i s[3] = { _mm256_set1_epi64x(L->sdir[0]), _mm256_set1_epi64x(L->sdir[1]),
-                             _mm256_set1_epi64x(L->sdir[2]) };
-            __m256i cosang = vx_sub(z0, vx_dot3v(u, s));
-            dead = _mm256_or_si256(dead, _mm256_cmpgt_epi64(_mm256_set1_epi64x(L->cos_cutoff), cosang));
-            int live = ~_mm256_movemask_pd(_mm256_castsi256_pd(dead)) & 15;
+            __m256i sd[3] = { _mm256_set1_epi64x(L->sdir[0]), _mm256_set1_epi64x(L->sdir[1]),
+                              _mm256_set1_epi64x(L->sdir[2]) };
+            __m256i cosang = vx_sub(z0, vx_dot3v(u[g], sd));
+            dead[g] = _mm256_or_si256(dead[g], _mm256_cmpgt_epi64(_mm256_set1_epi64x(L->cos_cutoff), cosang));
+            int live = ~_mm256_movemask_pd(_mm256_castsi256_pd(dead[g])) & 15;
             if (!live)
                 continue;
             spot = vx_pow_lanes(cosang, L->spot_exp, live);
         }
-        if (_mm256_movemask_pd(_mm256_castsi256_pd(dead)) == 15)
+        scale[g] = vx_mul(att, spot);
+    }
+    /* the half vectors (u + (0, 0, 1), normalized) */
+    if (L->specular)
+        for (int g = 0; g < groups; g++) {
+            if (_mm256_movemask_pd(_mm256_castsi256_pd(dead[g])) == 15)
+                continue;
+            __m128i h32[3] = { vx_pack4(u[g][0]), vx_pack4(u[g][1]), vx_pack4(vx_add(u[g][2], one)) };
+            vx_normalize3_4(h32, h[g], &hzero[g]);
+        }
+    /* the terms, into acc */
+    for (int g = 0; g < groups; g++) {
+        const int i = 4 * g;
+        if (_mm256_movemask_pd(_mm256_castsi256_pd(dead[g])) == 15)
             continue;
-        __m256i scale = vx_mul(att, spot);
+        __m256i nv[3];
         for (int k = 0; k < 3; k++)
             nv[k] = vx_load4(nrm[k] + i);
-        __m256i ndotvp = vx_dot3v(nv, u);
+        __m256i ndotvp = vx_dot3v(nv, u[g]);
         __m256i pos = _mm256_cmpgt_epi64(ndotvp, z0);
         __m256i term[3];
         for (int k = 0; k < 3; k++) {
@@ -627,11 +654,8 @@ static void vx_positional_avx2(const VxPositional *L, NUM (*v)[NUM_BATCH], NUM (
             term[k] = _mm256_blendv_epi8(t, vx_add(t, vx_mul(ndotvp, f)), pos);
         }
         if (L->specular) {
-            __m128i h32[3] = { vx_pack4(u[0]), vx_pack4(u[1]), vx_pack4(vx_add(u[2], one)) };
-            __m256i h[3], hzero;
-            vx_normalize3_4(h32, h, &hzero);
-            __m256i ndoth = vx_dot3v(nv, h);
-            __m256i use = _mm256_andnot_si256(_mm256_or_si256(dead, hzero),
+            __m256i ndoth = vx_dot3v(nv, h[g]);
+            __m256i use = _mm256_andnot_si256(_mm256_or_si256(dead[g], hzero[g]),
                                               _mm256_and_si256(pos, _mm256_cmpgt_epi64(ndoth, z0)));
             int bits = _mm256_movemask_pd(_mm256_castsi256_pd(use));
             if (bits) {
@@ -642,7 +666,7 @@ static void vx_positional_avx2(const VxPositional *L, NUM (*v)[NUM_BATCH], NUM (
         }
         for (int k = 0; k < 3; k++) {
             __m256i a = vx_load4(acc[k] + i);
-            vx_store4(acc[k] + i, _mm256_blendv_epi8(vx_add(a, vx_mul(scale, term[k])), a, dead));
+            vx_store4(acc[k] + i, _mm256_blendv_epi8(vx_add(a, vx_mul(scale[g], term[k])), a, dead[g]));
         }
     }
 }
