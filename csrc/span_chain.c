@@ -82,7 +82,9 @@ typedef struct ChainStages {
     /* the AVX2 instances of the fixed and float builds (RGBA8888 and
     ** RGB565); else NULL */
     SpanStage modulate_write, sample_write;
-    SpanStage dot3_write, dot3_sample_write;    /* NULL where the instance has none */
+    /* the fixed build's AVX2 instance; dot3_sample_write also the double
+    ** build's; NULL where the instance has none */
+    SpanStage dot3_write, dot3_sample_write;
     int modulate_write_565;
 } ChainStages;
 
@@ -553,15 +555,23 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     const int modulate_write = writes_fused && first_modulates;
     /* a first unit's DOT3 before a second one's MODULATE, on triangles
     ** (stage_dot3_write; the second unit sampled there too where it can
-    ** be, stage_dot3_sample_write). Not DOT3_RGBA under SRC_ALPHA blending
-    ** on RGBA8888: its alpha carries DOT3's error into both blend terms,
-    ** past what the byte's margin proves (docs/architecture.md) */
-    const int dot3 = !rect && target_fused && cs->dot3_write != NULL && span_dot3_pair(ctx)
-                  && !(bk == 1 && plain && ctx->units[first].combine_rgb == GL_DOT3_RGBA);
+    ** be, stage_dot3_sample_write). In the fixed build's float lanes (which
+    ** have stage_dot3_write) not DOT3_RGBA under SRC_ALPHA blending on
+    ** RGBA8888: its alpha carries DOT3's error into both blend terms, past
+    ** what the byte's margin proves (docs/architecture.md); the double
+    ** build's stage, exact, takes the pair where both units are sampled
+    ** by the bilinear kernels */
+    const int dot3_pair = !rect && span_dot3_pair(ctx);
+    const int second = dot3_pair ? __builtin_ctz(units & (units - 1)) : -1;
+    const int dot3 = dot3_pair && target_fused
+                  && (cs->dot3_write != NULL
+                          ? !(bk == 1 && plain && ctx->units[first].combine_rgb == GL_DOT3_RGBA)
+                          : cs->dot3_sample_write != NULL && ctx->sample_group[first] > 1
+                                && ctx->sample_group[second] > 1);
     /* where no fused stage takes that pair (the float and double builds),
     ** the colour and both units' environments in one stage after the
     ** fetches (stage_color_dot3_modulate) */
-    const int dot3_env = !rect && !dot3 && cs->color_dot3_modulate != NULL && span_dot3_pair(ctx);
+    const int dot3_env = !dot3 && dot3_pair && cs->color_dot3_modulate != NULL;
     /* ... sampling too where the unit's sampler is a bilinear vector kernel
     ** (stage_sample_write), and then also for a lone REPLACE unit of an
     ** RGBA texture */
@@ -597,7 +607,6 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
             s[n++] = cs->color;
     }
     if (dot3) {
-        const int second = __builtin_ctz(units & (units - 1));
         /* the first unit's coordinates only where the stage samples it:
         ** stage_persp forms them into b->tx then, and the second's into
         ** b->tc where it has no level of detail */

@@ -24,6 +24,7 @@ from conftest import (
     HAS_SIMD,
     SPAN_CHUNK,
     colour_window,
+    draw_arrays,
     make_ctx,
     random_triangles,
     set_frustum,
@@ -47,6 +48,8 @@ FORMATS = ((C.GL_RGBA, 4), (C.GL_RGBA, 4), (C.GL_RGB, 3), (C.GL_LUMINANCE_ALPHA,
 # the paths: the chain's default instance first, then the baseline (where a
 # vector one exists) and the per-fragment reference
 PATHS = (0, 1) + ((16,) if HAS_SIMD else ())
+
+HAS_AVX512 = make_ctx("double", 1, 1).simd == "avx512"
 
 # a row is a chunk and a last 3 columns
 W, H = SPAN_CHUNK + 3, 8
@@ -117,6 +120,28 @@ def render(numeric: str, flags: int, s: dict) -> tuple:
         gl.glClear(C.GL_COLOR_BUFFER_BIT)
         if not s.get("dither", True):
             gl.glDisable(C.GL_DITHER)
+    elif s.get("holes"):
+        ctx = make_ctx(numeric, w, h, depth=0, stencil=8)
+        ctx.debug(flags)
+        gl, rng = ctx.gl, np.random.default_rng(s["seed"])
+        gl.glClearColor(*rng.uniform(0, 1, 4))
+        gl.glClear(C.GL_COLOR_BUFFER_BIT | C.GL_STENCIL_BUFFER_BIT)
+        # stencil 1 under thin slivers, then draw where it is 0: the
+        # chunks' live slots are not all neighbours
+        set_ortho(gl, w, h)
+        gl.glEnable(C.GL_STENCIL_TEST)
+        gl.glStencilFunc(C.GL_ALWAYS, 1, 0xFF)
+        gl.glStencilOp(C.GL_KEEP, C.GL_KEEP, C.GL_REPLACE)
+        gl.glColorMask(False, False, False, False)
+        x = rng.uniform(0, w, 40)
+        zero, top = np.zeros(40), np.full(40, h)
+        slivers = np.stack([np.stack([x, zero, zero], -1), np.stack([x + 0.7, zero, zero], -1),
+                            np.stack([x, top, zero], -1)], 1).reshape(-1, 3)
+        draw_arrays(gl, np.ascontiguousarray(slivers, dtype=np.float32))
+        gl.glColorMask(True, True, True, True)
+        gl.glStencilFunc(C.GL_EQUAL, 0, 0xFF)
+        gl.glStencilOp(C.GL_KEEP, C.GL_KEEP, C.GL_KEEP)
+        (set_frustum if s["persp"] else set_ortho)(gl, w, h)
     else:
         ctx, gl, rng = colour_window(numeric, flags, w, h, s["persp"], s["seed"])
     if s.get("blend"):
@@ -149,19 +174,34 @@ def render(numeric: str, flags: int, s: dict) -> tuple:
         filt = C.GL_LINEAR if s["linear"][u] else C.GL_NEAREST
         gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MIN_FILTER, filt)
         gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MAG_FILTER, filt)
+        if s.get("clamp"):
+            gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_WRAP_S, C.GL_CLAMP_TO_EDGE)
+            gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_WRAP_T, C.GL_CLAMP_TO_EDGE)
         gl.glEnable(C.GL_TEXTURE_2D)
         set_env(gl, s["envs"][u])
         gl.glEnableClientState(C.GL_TEXTURE_COORD_ARRAY)
         tc = np.ascontiguousarray(rng.uniform(-1, 2, size=(len(verts), 2)), dtype=np.float32)
         gl.glTexCoordPointer(2, C.GL_FLOAT, 0, tc)
+    if s.get("non_finite"):
+        # one vertex's coordinates scaled to infinity by the texture matrix
+        gl.glMatrixMode(C.GL_TEXTURE)
+        for _ in range(10):
+            gl.glScalef(1e38, 1e38, 1.0)
+        gl.glMatrixMode(C.GL_MODELVIEW)
     gl.glDrawArrays(C.GL_TRIANGLES, 0, len(verts))
     return gl.glGetError(), ctx.color_buffer()
+
+
+def paths(numeric: str) -> tuple:
+    """PATHS, and for the double build where the CPU runs its AVX-512
+    instance also that instance capped at AVX2 (debug 32)."""
+    return PATHS + ((32,) if numeric == "double" and HAS_AVX512 else ())
 
 
 def check(numeric: str, s: dict) -> None:
     err, ref = render(numeric, PATHS[0], s)
     assert err == C.GL_NO_ERROR
-    for flags in PATHS[1:]:
+    for flags in paths(numeric)[1:]:
         e, got = render(numeric, flags, s)
         assert e == err
         assert (got == ref).all(), (numeric, flags, s)
@@ -235,3 +275,27 @@ def test_large_affine_triangles(numeric: str) -> None:
         one = {"units": 1, "envs": [{"mode": C.GL_MODULATE}], "formats": [(C.GL_RGBA, 4)], "persp": False,
                "linear": [bool(seed)], "seed": 510 + seed, "size": (256, 192)}
         check(numeric, one)
+
+
+@pytest.mark.parametrize("numeric", BUILDS)
+def test_dot3_pair_in_lanes(numeric: str) -> None:
+    """The DOT3 pair where the double build's AVX-512 instance takes it in
+    one pass of eight lanes (stage_dot3_sample_write, avx512_dot3_write):
+    both units bilinear, each blend kind, DOT3_RGB or DOT3_RGBA, an RGB or
+    RGBA second texture, smooth or flat; chunks with tails (width a chunk
+    and 3), live slots that are not neighbours (a stencil test drops
+    slivers), an alpha test (the separate stages' code), REPEAT or
+    CLAMP_TO_EDGE, and coordinates that are not finite (the texture matrix
+    scaled to infinity: the chunk goes to the separate stages, as the
+    samplers leave such groups to the scalar code). Every path gives the
+    same pixels."""
+    blends = (None, (C.GL_SRC_ALPHA, C.GL_ONE_MINUS_SRC_ALPHA), (C.GL_ONE, C.GL_ONE))
+    for case in range(18):
+        env = dot3_env(C.GL_DOT3_RGBA if case % 2 else C.GL_DOT3_RGB, C.GL_MODULATE, 1.0)
+        s = {"units": 2, "envs": [env, {"mode": C.GL_MODULATE}],
+             "formats": [(C.GL_RGBA, 4), (C.GL_RGB, 3) if case % 3 == 1 else (C.GL_RGBA, 4)],
+             "persp": case % 4 == 2, "linear": [True, True], "seed": 700 + case,
+             "blend": blends[case % 3], "shade": C.GL_FLAT if case % 5 == 4 else C.GL_SMOOTH,
+             "holes": case % 2 == 0, "alpha_test": (C.GL_GREATER, 0.3) if case % 9 == 8 else None,
+             "non_finite": case % 6 == 5, "clamp": case % 4 == 1}
+        check(numeric, s)
