@@ -2407,8 +2407,8 @@ AVX2_INLINE const TexCoord *modwrite_tc0(const ModWriteDot3 *d, int i) { return 
 ** from source src (ct + j stride, or sampled at tc[j]); eight at a time,
 ** the rest exactly. The first `live` offsets ascend; slots from there to
 ** n repeat the last live fragment (a padded group). */
-AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *restrict m, const FRAGV *const a[3], int smooth, int kind, int src,
-                                   int rgb565, int dot3, int n, int live, const uint8_t *k, int x0,
+AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *restrict m, const FRAGV *const a[3], int smooth, int kind,
+                                   int src, int rgb565, int dot3, int n, int live, const uint8_t *k, int x0,
                                    const WGT (*p)[3],
                                    const FRAGV *ct, size_t stride, const TexCoord *tc, void *dst,
                                    const FRAGV unorm5[32], const FRAGV unorm6[64])

@@ -1611,13 +1611,9 @@ static void STAGE(stage_dot3_sample_write)(GlesContext *ctx, const TriSetup *t, 
                 m.col[i][k] = t->smooth ? t->col[k][i] : 0;
         }
         _Static_assert(SPAN_CHUNK % 8 == 0, "a padded group stays within the chunk");
-        int n = live;
-        for (; n % 8; n++) {
-            b->k[n] = b->k[n - 1];
-            memcpy(b->p[n], b->p[n - 1], sizeof b->p[n]);
-            b->tc[n] = b->tc[n - 1];
-            b->tx[n] = b->tx[n - 1];
-        }
+        const int n = avx2_modwrite_pad(8, live, b->k, b->p, 1, b->tc, NULL, 0);
+        for (int j = live; j < n; j++)
+            b->tx[j] = b->tx[live - 1];
         if (avx512_dot3_write(&m, n, live, b->k, (const WGT (*)[3])b->p, b->tx, b->tc, chunk_color(ctx, b)))
             return;
     }
