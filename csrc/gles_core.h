@@ -103,10 +103,6 @@ int gles_debug_persp_chunk(int simd, int eshift, int64_t lin_recip, const int64_
 ** out[4 j ..]: by the vector kernels where simd != 0 and the CPU has them
 ** (the colours in int32 range, else the scalar code, as the stage does) */
 int gles_debug_color(int simd, int clamp, const int64_t col[12], int n, const int32_t *p, int64_t *out);
-/* for tests, float and double builds with AVX2 (-1 elsewhere): d / (2^bits
-** - 1) for every d in [0, 2^bits) (bits 5, 6 or 8) as the vector writers
-** form it without a division, in the build's type, into out[d] */
-int gles_debug_unorm_div(int bits, double *out);
 /* for tests, float build with AVX2 (-1 elsewhere): the float build's
 ** fused stage's kernel (f8_modwrite_run) over n fragments (at most
 ** gles_span_chunk(), padded to a whole group as the stage pads) at offsets

@@ -1148,44 +1148,22 @@ AVX2_INLINE V4 v4_clamp01(V4 v) { return V4_OP(min)(V4_OP(set1)(1), V4_OP(max)(V
 ** first rounded, the second the rounded rest), then d HI + (d LO) in one
 ** fused multiply-add. d / 255 is d's eight bits repeated in binary, never
 ** within 2^-8 of a rounding midpoint relative to the last place, and the
-** sum is within about 2^-100 of it, so its one rounding is the quotient's.
-** The same holds for the double build's d / 31 and d / 63 of d in [0, 31]
-** and [0, 63] (five and six bits repeated: at least 2^-6 and 2^-7 from a
-** midpoint) with their own pairs (test_simd checks every value in each
-** build against numpy's division) */
+** sum is within about 2^-100 of it, so its one rounding is the quotient's
+** (test_simd checks all 256 values in each build against the scalar
+** code's division) */
 #if defined(GLES_NUM_FLOAT)
 #define UNORM8_RECIP_HI 0x1.010102p-8f
 #define UNORM8_RECIP_LO (-0x1.fdfdfep-33f)
 #else
 #define UNORM8_RECIP_HI 0x1.0101010101010p-8
 #define UNORM8_RECIP_LO 0x1.0101010101010p-64
-#define UNORM5_RECIP_HI 0x1.0842108421084p-5
-#define UNORM5_RECIP_LO 0x1.0842108421084p-60
-#define UNORM6_RECIP_HI 0x1.0410410410410p-6
-#define UNORM6_RECIP_LO 0x1.0410410410410p-60
 #endif
-/* d (hi + lo) with one rounding: d / m for m's pair (above) */
-AVX2_INLINE V4 v4_div_unorm(V4 d, NUM hi, NUM lo)
+AVX2_INLINE V4 v4_div255(V4 d)
 {
 #if defined(GLES_NUM_FLOAT)
-    return _mm_fmadd_ps(d, _mm_set1_ps(hi), _mm_mul_ps(d, _mm_set1_ps(lo)));
+    return _mm_fmadd_ps(d, _mm_set1_ps(UNORM8_RECIP_HI), _mm_mul_ps(d, _mm_set1_ps(UNORM8_RECIP_LO)));
 #else
-    return _mm256_fmadd_pd(d, _mm256_set1_pd(hi), _mm256_mul_pd(d, _mm256_set1_pd(lo)));
-#endif
-}
-AVX2_INLINE V4 v4_div255(V4 d) { return v4_div_unorm(d, UNORM8_RECIP_HI, UNORM8_RECIP_LO); }
-/* d / (2^bits - 1) of integers d in [0, 2^bits), bits 5, 6 or 8, as the
-** division rounds it: by the pairs, but the float build's 5 and 6 by its
-** division (cheap in four float lanes; the double build's is slow) */
-AVX2_INLINE V4 v4_unorm_quot(V4 d, int bits)
-{
-    if (bits == 8)
-        return v4_div255(d);
-#if defined(GLES_NUM_FLOAT)
-    return V4_OP(div)(d, V4_OP(set1)((NUM)((1 << bits) - 1)));
-#else
-    return bits == 5 ? v4_div_unorm(d, UNORM5_RECIP_HI, UNORM5_RECIP_LO)
-                     : v4_div_unorm(d, UNORM6_RECIP_HI, UNORM6_RECIP_LO);
+    return _mm256_fmadd_pd(d, _mm256_set1_pd(UNORM8_RECIP_HI), _mm256_mul_pd(d, _mm256_set1_pd(UNORM8_RECIP_LO)));
 #endif
 }
 /* ((0 + p0) + p1) + p2 in every lane (combine_block's DOT3 sum) */

@@ -49,12 +49,13 @@ AVX512_INLINE __m512d v8_byte_unorm8(__m256i words, int shift)
     return _mm512_fmadd_pd(x, _mm512_set1_pd(UNORM8_RECIP_HI), _mm512_mul_pd(x, _mm512_set1_pd(UNORM8_RECIP_LO)));
 }
 
-/* v4_bilerp4 of eight fragments (lane k fragment k), one register per
-** channel */
-AVX512_INLINE void v8_bilerp_channels(const __m256i g[4], __m512d a, __m512d b, __m512d ch[4])
+/* v4_bilerp4 of eight fragments (lane k fragment k), stored as
+** out[k stride + channel] */
+AVX512_INLINE void v8_bilerp8(const __m256i g[4], __m512d a, __m512d b, double *out, size_t stride)
 {
     const __m512d one = _mm512_set1_pd(1);
     const __m512d ia = _mm512_sub_pd(one, a), ib = _mm512_sub_pd(one, b);
+    __m512d ch[4];
     for (int c = 0; c < 4; c++) {
         __m512d v[4];
         for (int i = 0; i < 4; i++)
@@ -63,12 +64,6 @@ AVX512_INLINE void v8_bilerp_channels(const __m256i g[4], __m512d a, __m512d b, 
         const __m512d bot = _mm512_add_pd(_mm512_mul_pd(v[2], ia), _mm512_mul_pd(v[3], a));
         ch[c] = _mm512_add_pd(_mm512_mul_pd(top, ib), _mm512_mul_pd(bot, b));
     }
-}
-
-/* eight fragments' channels ch[0..3] (lane k fragment k) stored as
-** out[k stride + channel] */
-AVX512_INLINE void v8_store_channels(const __m512d ch[4], double *out, size_t stride)
-{
     /* channels of eight fragments to eight fragments' channels: pairs
     ** (r, g) and (b, a) of fragments 0 2 4 6 and 1 3 5 7, then one
     ** fragment's two pairs per 256-bit half */
@@ -89,37 +84,6 @@ AVX512_INLINE void v8_store_channels(const __m512d ch[4], double *out, size_t st
     _mm256_storeu_pd(out + 7 * stride, _mm512_extractf64x4_pd(f57, 1));
 }
 
-/* the s and t of eight coordinates c[0..7] as lanes */
-AVX512_INLINE void v8_load_st(const TexCoord *c, __m512d *s, __m512d *t)
-{
-    const __m512d p0 = _mm512_loadu_pd(&c[0].s), p1 = _mm512_loadu_pd(&c[4].s);
-    *s = _mm512_permutex2var_pd(p0, _mm512_setr_epi64(0, 2, 4, 6, 8, 10, 12, 14), p1);
-    *t = _mm512_permutex2var_pd(p0, _mm512_setr_epi64(1, 3, 5, 7, 9, 11, 13, 15), p1);
-}
-
-/* whether every lane of s and t is finite */
-AVX512_INLINE int v8_finite(__m512d s, __m512d t)
-{
-    const __m512d inf = _mm512_set1_pd(INFINITY);
-    return (__mmask8)(_mm512_cmp_pd_mask(_mm512_abs_pd(s), inf, _CMP_LT_OQ)
-                      & _mm512_cmp_pd_mask(_mm512_abs_pd(t), inf, _CMP_LT_OQ)) == 0xFF;
-}
-
-/* avx2_sample_linear_real's texels of eight fragments at finite
-** coordinates (s, t) on level li, one register per channel */
-AVX512_INLINE void v8_linear_channels(const TexImage *li, __m512d s, __m512d t, int repeat_s, int repeat_t,
-                                      int rows, __m512d ch[4])
-{
-    const int w = li->width, h = li->height;
-    __m256i x0, x1, y0, y1;
-    __m512d a, b;
-    v8_linear_axis(s, w, repeat_s, &x0, &x1, &a);
-    v8_linear_axis(t, h, repeat_t, &y0, &y1, &b);
-    __m256i g[4];
-    avx2_texel_words8(li->texels, w, (int64_t)w * h, x0, x1, y0, y1, rows, g);
-    v8_bilerp_channels(g, a, b, ch);
-}
-
 /* avx2_sample_linear_real eight fragments at a time: the first n - n % 8
 ** of fragments 0..n-1, stopping before the first eight coordinates of
 ** which one is not finite; returns the number of fragments done */
@@ -127,24 +91,44 @@ static __attribute__((noinline)) int avx512_sample_linear_real(const TexImage *l
                                                                double *out, size_t stride, int repeat_s,
                                                                int repeat_t, int rows)
 {
+    const int w = li->width, h = li->height;
+    const int *t32 = (const int *)(const void *)li->texels;
+    const __m512i even = _mm512_setr_epi64(0, 2, 4, 6, 8, 10, 12, 14);
+    const __m512i odd = _mm512_setr_epi64(1, 3, 5, 7, 9, 11, 13, 15);
+    const __m512d inf = _mm512_set1_pd(INFINITY);
     int j = 0;
     for (; j + 8 <= n; j += 8) {
-        __m512d st, tt, ch[4];
-        v8_load_st(&c[j], &st, &tt);
-        if (!v8_finite(st, tt))
+        const __m512d p0 = _mm512_loadu_pd(&c[j].s), p1 = _mm512_loadu_pd(&c[j + 4].s);
+        const __m512d s = _mm512_permutex2var_pd(p0, even, p1), t = _mm512_permutex2var_pd(p0, odd, p1);
+        if ((__mmask8)(_mm512_cmp_pd_mask(_mm512_abs_pd(s), inf, _CMP_LT_OQ)
+                       & _mm512_cmp_pd_mask(_mm512_abs_pd(t), inf, _CMP_LT_OQ)) != 0xFF)
             break;
-        v8_linear_channels(li, st, tt, repeat_s, repeat_t, rows, ch);
-        v8_store_channels(ch, out + (size_t)j * stride, stride);
+        __m256i x0, x1, y0, y1;
+        __m512d a, b;
+        v8_linear_axis(s, w, repeat_s, &x0, &x1, &a);
+        v8_linear_axis(t, h, repeat_t, &y0, &y1, &b);
+        __m256i g[4];
+        avx2_texel_words8(t32, w, (int64_t)w * h, x0, x1, y0, y1, rows, g);
+        v8_bilerp8(g, a, b, out + (size_t)j * stride, stride);
     }
     return j;
 }
 
-/* avx2_rgba8x4 (the double build's) of eight fragments' channels v[0..3]
-** (lane k fragment k) over the stored words d: per lane the same IEEE
-** operations (v4_clamp01, the blend of kind 1 or 2, v4_to_unorm8) and the
-** packing */
-AVX512_INLINE __m256i v8_rgba8_lanes(__m512d v[4], __m256i d, int kind)
+/* avx2_rgba8x4 (the double build's) of eight fragments c[0..7] over the
+** stored words d: the fragments' channels to channel lanes, then per lane
+** the same IEEE operations (v4_clamp01, the blend of kind 1 or 2,
+** v4_to_unorm8) and the packing */
+AVX512_INLINE __m256i v8_rgba8x8(const double (*c)[4], __m256i d, int kind)
 {
+    /* fragments 0 | 4, 1 | 5, 2 | 6, 3 | 7; then each half's 4x4 transpose */
+    __m512d q[4];
+    for (int i = 0; i < 4; i++)
+        q[i] = _mm512_insertf64x4(_mm512_castpd256_pd512(_mm256_loadu_pd(c[i])), _mm256_loadu_pd(c[i + 4]), 1);
+    const __m512d rb01 = _mm512_unpacklo_pd(q[0], q[1]), ga01 = _mm512_unpackhi_pd(q[0], q[1]);
+    const __m512d rb23 = _mm512_unpacklo_pd(q[2], q[3]), ga23 = _mm512_unpackhi_pd(q[2], q[3]);
+    const __m512i lo = _mm512_setr_epi64(0, 1, 8, 9, 4, 5, 12, 13), hi = _mm512_setr_epi64(2, 3, 10, 11, 6, 7, 14, 15);
+    __m512d v[4] = { _mm512_permutex2var_pd(rb01, lo, rb23), _mm512_permutex2var_pd(ga01, lo, ga23),
+                     _mm512_permutex2var_pd(rb01, hi, rb23), _mm512_permutex2var_pd(ga01, hi, ga23) };
     const __m512d zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1);
     if (kind)
         for (int i = 0; i < 4; i++)
@@ -164,22 +148,6 @@ AVX512_INLINE __m256i v8_rgba8_lanes(__m512d v[4], __m256i d, int kind)
         w = _mm256_or_si256(w, _mm256_slli_epi32(_mm512_cvttpd_epi32(u), 8 * i));
     }
     return w;
-}
-
-/* v8_rgba8_lanes of eight fragments c[0..7]: their channels to channel
-** lanes first */
-AVX512_INLINE __m256i v8_rgba8x8(const double (*c)[4], __m256i d, int kind)
-{
-    /* fragments 0 | 4, 1 | 5, 2 | 6, 3 | 7; then each half's 4x4 transpose */
-    __m512d q[4];
-    for (int i = 0; i < 4; i++)
-        q[i] = _mm512_insertf64x4(_mm512_castpd256_pd512(_mm256_loadu_pd(c[i])), _mm256_loadu_pd(c[i + 4]), 1);
-    const __m512d rb01 = _mm512_unpacklo_pd(q[0], q[1]), ga01 = _mm512_unpackhi_pd(q[0], q[1]);
-    const __m512d rb23 = _mm512_unpacklo_pd(q[2], q[3]), ga23 = _mm512_unpackhi_pd(q[2], q[3]);
-    const __m512i lo = _mm512_setr_epi64(0, 1, 8, 9, 4, 5, 12, 13), hi = _mm512_setr_epi64(2, 3, 10, 11, 6, 7, 14, 15);
-    __m512d v[4] = { _mm512_permutex2var_pd(rb01, lo, rb23), _mm512_permutex2var_pd(ga01, lo, ga23),
-                     _mm512_permutex2var_pd(rb01, hi, rb23), _mm512_permutex2var_pd(ga01, hi, ga23) };
-    return v8_rgba8_lanes(v, d, kind);
 }
 
 /* write_rgba8 (blend kind 0, 1 or 2, a constant where inlined) of the
@@ -215,103 +183,6 @@ static __attribute__((noinline)) int avx512_write_rgba8(uint32_t *dst, const uin
     return kind == 0 ? v8_write_rgba8_kind(dst, k, n, c, 0)
          : kind == 1 ? v8_write_rgba8_kind(dst, k, n, c, 1)
                      : v8_write_rgba8_kind(dst, k, n, c, 2);
-}
-
-/* the double build's DOT3 pair (span_dot3_pair) and RGBA8888 write in one
-** pass of eight lanes (stage_dot3_sample_write): both units' texels as
-** avx512_sample_linear_real forms them (level 0, GL_LINEAR), the colour as
-** stage_color forms it (v4_lerp3f_clamp01 of the weights, or the clamped
-** flat colour), stage_color_dot3_modulate's operations and write_rgba8's
-** (v8_rgba8_lanes): each lane the same IEEE operations in the same order,
-** with no texel or colour stored between */
-typedef struct V8Dot3 {
-    const TexImage *l0, *l1;        /* level 0 of the first unit (DOT3) and of the second (MODULATE) */
-    int rs0, rt0, rs1, rt1;         /* their REPEAT axes (else CLAMP_TO_EDGE) */
-    int smooth, rgba_dot, keep_alpha, kind;
-    double col[4][3];               /* channel i of the three vertex colours (smooth) */
-    double flat[4];                 /* the flat colour, clamped */
-} V8Dot3;
-
-/* three weights of eight fragments p[0..7] (24 doubles) as lanes: lane L
-** of w[i] is double 3 L + i, from the first 16 and then the last 8 */
-AVX512_INLINE void v8_wgt_lanes8(const double (*p)[3], __m512d w[3])
-{
-    const double *q = &p[0][0];
-    const __m512d q0 = _mm512_loadu_pd(q), q1 = _mm512_loadu_pd(q + 8), q2 = _mm512_loadu_pd(q + 16);
-    w[0] = _mm512_mask_permutexvar_pd(_mm512_permutex2var_pd(q0, _mm512_setr_epi64(0, 3, 6, 9, 12, 15, 0, 0), q1),
-                                      0xC0, _mm512_setr_epi64(0, 0, 0, 0, 0, 0, 2, 5), q2);
-    w[1] = _mm512_mask_permutexvar_pd(_mm512_permutex2var_pd(q0, _mm512_setr_epi64(1, 4, 7, 10, 13, 0, 0, 0), q1),
-                                      0xE0, _mm512_setr_epi64(0, 0, 0, 0, 0, 0, 3, 6), q2);
-    w[2] = _mm512_mask_permutexvar_pd(_mm512_permutex2var_pd(q0, _mm512_setr_epi64(2, 5, 8, 11, 14, 0, 0, 0), q1),
-                                      0xE0, _mm512_setr_epi64(0, 0, 0, 0, 0, 1, 4, 7), q2);
-}
-
-/* the kernel over slots 0..n-1 in groups of eight (n a multiple of 8;
-** slots from `live` on repeat the last live one and are not written) at
-** the ascending offsets k of dst: weights p, the first unit's coordinates
-** c0 and the second's c1. Returns 1, or 0 (nothing written) where a
-** coordinate is not finite */
-static __attribute__((noinline)) int avx512_dot3_write(const V8Dot3 *m, int n, int live, const uint8_t *k,
-                                                       const double (*p)[3], const TexCoord *c0,
-                                                       const TexCoord *c1, uint32_t *dst)
-{
-    const __m512d zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1), half = _mm512_set1_pd(0.5);
-    for (int j = 0; j < n; j += 8) {
-        __m512d s0, s1, u0, u1;
-        v8_load_st(&c0[j], &s0, &u0);
-        v8_load_st(&c1[j], &s1, &u1);
-        if (!v8_finite(s0, u0) || !v8_finite(s1, u1))
-            return 0;
-    }
-    for (int j = 0; j < n; j += 8) {
-        __m512d s, t, t0[4], t1[4], c[4], pr[4];
-        v8_load_st(&c0[j], &s, &t);
-        v8_linear_channels(m->l0, s, t, m->rs0, m->rt0, 1, t0);
-        v8_load_st(&c1[j], &s, &t);
-        v8_linear_channels(m->l1, s, t, m->rs1, m->rt1, 1, t1);
-        if (m->smooth) {
-            __m512d w[3];
-            v8_wgt_lanes8(&p[j], w);
-            for (int i = 0; i < 4; i++) {
-                /* v4_lerp3f: (a0 p0 + a1 p1) + a2 p2, then v4_clamp01 */
-                const __m512d v = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(_mm512_set1_pd(m->col[i][0]), w[0]),
-                                                              _mm512_mul_pd(_mm512_set1_pd(m->col[i][1]), w[1])),
-                                                _mm512_mul_pd(_mm512_set1_pd(m->col[i][2]), w[2]));
-                c[i] = _mm512_min_pd(one, _mm512_max_pd(zero, v));
-            }
-        } else {
-            for (int i = 0; i < 4; i++)
-                c[i] = _mm512_set1_pd(m->flat[i]);
-        }
-        /* (t - b)(c - b), b = 1/2 in the rgb lanes and 0 in alpha; the
-        ** sum ((0 + p_r) + p_g) + p_b times 4 */
-        for (int i = 0; i < 4; i++)
-            pr[i] = _mm512_mul_pd(_mm512_sub_pd(t0[i], i < 3 ? half : zero), _mm512_sub_pd(c[i], i < 3 ? half : zero));
-        const __m512d d = _mm512_mul_pd(_mm512_add_pd(_mm512_add_pd(_mm512_add_pd(zero, pr[0]), pr[1]), pr[2]),
-                                        _mm512_set1_pd(4));
-        const __m512d v = _mm512_min_pd(one, _mm512_max_pd(zero, d));
-        const __m512d va = m->rgba_dot ? v : _mm512_min_pd(one, _mm512_max_pd(zero, pr[3]));
-        __m512d out[4] = { _mm512_mul_pd(v, t1[0]), _mm512_mul_pd(v, t1[1]), _mm512_mul_pd(v, t1[2]),
-                           m->keep_alpha ? va : _mm512_mul_pd(va, t1[3]) };
-        const int lanes = live - j < 8 ? live - j : 8;
-        const int run = lanes == 8 && k[j + 7] == k[j] + 7;
-        __m256i dw = _mm256_setzero_si256();
-        if (m->kind && run)
-            dw = _mm256_loadu_si256((const __m256i *)(const void *)&dst[k[j]]);
-        else if (m->kind)
-            dw = _mm256_i32gather_epi32((const int *)(const void *)dst,
-                                        _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)&k[j])), 4);
-        const __m256i w = v8_rgba8_lanes(out, dw, m->kind);
-        if (run) {
-            _mm256_storeu_si256((__m256i *)(void *)&dst[k[j]], w);
-        } else {
-            uint32_t words[8];
-            _mm256_storeu_si256((__m256i *)(void *)words, w);
-            for (int i = 0; i < lanes; i++)
-                dst[k[j + i]] = words[i];
-        }
-    }
-    return 1;
 }
 #endif
 

@@ -82,9 +82,7 @@ typedef struct ChainStages {
     /* the AVX2 instances of the fixed and float builds (RGBA8888 and
     ** RGB565); else NULL */
     SpanStage modulate_write, sample_write;
-    /* the fixed build's AVX2 instance; dot3_sample_write also the double
-    ** build's; NULL where the instance has none */
-    SpanStage dot3_write, dot3_sample_write;
+    SpanStage dot3_write, dot3_sample_write;    /* NULL where the instance has none */
     int modulate_write_565;
 } ChainStages;
 
@@ -207,33 +205,8 @@ static int debug_modulate_write_avx2(Avx2ModWrite *m, const FRAGV *const a[3], i
     return exact;
 }
 #endif
-#if !NUM_IS_FIXED
-/* gles_debug_unorm_div's kernel: d / (2^bits - 1) as the writers form it */
-static void debug_unorm_div_avx2(int bits, double *out)
-{
-    for (int d = 0; d < 1 << bits; d += 4) {
-        FRAGV q[4];
-        v4_store(q, v4_unorm_quot(v4_from_i32(_mm_setr_epi32(d, d + 1, d + 2, d + 3)), bits));
-        for (int i = 0; i < 4; i++)
-            out[d + i] = (double)q[i];
-    }
-}
-#endif
 #pragma GCC pop_options
 #endif
-
-int gles_debug_unorm_div(int bits, double *out)
-{
-#if SIMD_X86 && !NUM_IS_FIXED
-    if ((bits != 5 && bits != 6 && bits != 8) || simd_detect() < SIMD_AVX2)
-        return -1;
-    debug_unorm_div_avx2(bits, out);
-    return 0;
-#else
-    (void)bits, (void)out;
-    return -1;
-#endif
-}
 
 int gles_debug_modulate_write_f(int smooth, int rgb, int kind, unsigned int alpha_func, uint32_t alpha_ref,
                                 const float col[12], int n, const uint8_t *k, const float *p, const float *ct,
@@ -555,23 +528,15 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     const int modulate_write = writes_fused && first_modulates;
     /* a first unit's DOT3 before a second one's MODULATE, on triangles
     ** (stage_dot3_write; the second unit sampled there too where it can
-    ** be, stage_dot3_sample_write). In the fixed build's float lanes (which
-    ** have stage_dot3_write) not DOT3_RGBA under SRC_ALPHA blending on
-    ** RGBA8888: its alpha carries DOT3's error into both blend terms, past
-    ** what the byte's margin proves (docs/architecture.md); the double
-    ** build's stage, exact, takes the pair where both units are sampled
-    ** by the bilinear kernels */
-    const int dot3_pair = !rect && span_dot3_pair(ctx);
-    const int second = dot3_pair ? __builtin_ctz(units & (units - 1)) : -1;
-    const int dot3 = dot3_pair && target_fused
-                  && (cs->dot3_write != NULL
-                          ? !(bk == 1 && plain && ctx->units[first].combine_rgb == GL_DOT3_RGBA)
-                          : cs->dot3_sample_write != NULL && ctx->sample_group[first] > 1
-                                && ctx->sample_group[second] > 1);
+    ** be, stage_dot3_sample_write). Not DOT3_RGBA under SRC_ALPHA blending
+    ** on RGBA8888: its alpha carries DOT3's error into both blend terms,
+    ** past what the byte's margin proves (docs/architecture.md) */
+    const int dot3 = !rect && target_fused && cs->dot3_write != NULL && span_dot3_pair(ctx)
+                  && !(bk == 1 && plain && ctx->units[first].combine_rgb == GL_DOT3_RGBA);
     /* where no fused stage takes that pair (the float and double builds),
     ** the colour and both units' environments in one stage after the
     ** fetches (stage_color_dot3_modulate) */
-    const int dot3_env = !dot3 && dot3_pair && cs->color_dot3_modulate != NULL;
+    const int dot3_env = !rect && !dot3 && cs->color_dot3_modulate != NULL && span_dot3_pair(ctx);
     /* ... sampling too where the unit's sampler is a bilinear vector kernel
     ** (stage_sample_write), and then also for a lone REPLACE unit of an
     ** RGBA texture */
@@ -607,6 +572,7 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
             s[n++] = cs->color;
     }
     if (dot3) {
+        const int second = __builtin_ctz(units & (units - 1));
         /* the first unit's coordinates only where the stage samples it:
         ** stage_persp forms them into b->tx then, and the second's into
         ** b->tc where it has no level of detail */

@@ -1343,10 +1343,10 @@ static int STAGE(write_565x4)(GlesContext *ctx, SpanBuf *b, uint16_t *dst, const
             const __m128i d = _mm_setr_epi32(dst[k[0]], dst[k[1]], dst[k[2]], dst[k[3]]);
             const __m128i dc[3] = { _mm_srli_epi32(d, 11), _mm_and_si128(_mm_srli_epi32(d, 5), _mm_set1_epi32(63)),
                                     _mm_and_si128(d, _mm_set1_epi32(31)) };
-            static const int bits[3] = { 5, 6, 5 };
+            static const int maxval[3] = { 31, 63, 31 };
             const V4 va = v4_clamp01(ch[3]), ia = v4_one_minus(va);
             for (int i = 0; i < 3; i++) {
-                const V4 dv = v4_unorm_quot(v4_from_i32(dc[i]), bits[i]);
+                const V4 dv = V4_OP(div)(v4_from_i32(dc[i]), V4_OP(set1)((NUM)maxval[i]));
                 ch[i] = v4_add(v4_mul01(v4_clamp01(ch[i]), va), v4_mul01(dv, ia));
             }
         }
@@ -1578,56 +1578,6 @@ static void STAGE(stage_dot3_sample_write)(GlesContext *ctx, const TriSetup *t, 
 }
 #endif
 
-#if CHAIN_SIMD && defined(GLES_NUM_DOUBLE)
-/* the DOT3 pair (span_dot3_pair, both units sampled by the bilinear
-** kernels: texture_span_sample_group > 1) and an RGBA8888 write (blend
-** kind 0, 1 or 2) in one pass of eight lanes where the CPU runs the
-** AVX-512 instance (avx512_dot3_write: the chunk padded to whole groups
-** with copies of its last fragment, as the fixed build's stage pads); else
-** (no AVX-512, an alpha test, or a coordinate that is not finite) through
-** the separate stages' code: both units' texels,
-** stage_color_dot3_modulate, the alpha test and the write. The first
-** unit's coordinates are in b->tx, the second's in b->tc
-** (stage_coords_tx and stage_coords formed them). */
-static void STAGE(stage_dot3_sample_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
-{
-    const unsigned int units = ctx->tex_units_on;
-    const int u0 = __builtin_ctz(units), u1 = __builtin_ctz(units & (units - 1));
-    const int kind = span_blend_kind(ctx);
-#if SIMD_AVX512_INSTANCE
-    const int live = b->n;
-    if (ctx_simd(ctx) >= SIMD_AVX512 && !ctx->alpha_test) {
-        const Texture *x0 = ctx->units[u0].bound, *x1 = ctx->units[u1].bound;
-        V8Dot3 m = { .l0 = &x0->level[0], .l1 = &x1->level[0],
-                     .rs0 = x0->wrap_s == GL_REPEAT, .rt0 = x0->wrap_t == GL_REPEAT,
-                     .rs1 = x1->wrap_s == GL_REPEAT, .rt1 = x1->wrap_t == GL_REPEAT,
-                     .smooth = t->smooth, .rgba_dot = ctx->units[u0].combine_rgb == GL_DOT3_RGBA,
-                     .keep_alpha = x1->format != GL_RGBA, .kind = kind };
-        FRAGV flat[4];
-        v4_store(flat, v4_clamp01(v4_load(t->smooth ? t->col[0] : t->flat)));   /* (read when flat) */
-        for (int i = 0; i < 4; i++) {
-            m.flat[i] = flat[i];
-            for (int k = 0; k < 3; k++)
-                m.col[i][k] = t->smooth ? t->col[k][i] : 0;
-        }
-        _Static_assert(SPAN_CHUNK % 8 == 0, "a padded group stays within the chunk");
-        const int n = avx2_modwrite_pad(8, live, b->k, b->p, 1, b->tc, NULL, 0);
-        for (int j = live; j < n; j++)
-            b->tx[j] = b->tx[live - 1];
-        if (avx512_dot3_write(&m, n, live, b->k, (const WGT (*)[3])b->p, b->tx, b->tc, chunk_color(ctx, b)))
-            return;
-    }
-#endif
-    STAGE(chunk_sample_at)(ctx, b, u0, 0, b->tx);
-    STAGE(chunk_sample)(ctx, b, u1, 0);
-    STAGE(stage_color_dot3_modulate)(ctx, t, b);
-    if (ctx->alpha_test)
-        STAGE(stage_alpha)(ctx, t, b);
-    if (b->n > 0)
-        STAGE(write_rgba8)(ctx, b, kind);
-}
-#endif
-
 #if CHAIN_SIMD && defined(GLES_NUM_FLOAT)
 /* stage_color_modulate of the one enabled unit (or a rectangle's colour
 ** and stage_env's MODULATE), the alpha test and write_rgba8 (blend kind 0,
@@ -1723,8 +1673,6 @@ static const ChainStages STAGE(chain_stages) = {
 #endif
 #if CHAIN_SIMD && NUM_IS_FIXED
     .dot3_write = STAGE(stage_dot3_write),
-#endif
-#if CHAIN_SIMD && (NUM_IS_FIXED || defined(GLES_NUM_DOUBLE))
     .dot3_sample_write = STAGE(stage_dot3_sample_write),
 #endif
 #if CHAIN_SIMD && !NUM_IS_FIXED

@@ -278,17 +278,14 @@ def test_large_affine_triangles(numeric: str) -> None:
 
 
 @pytest.mark.parametrize("numeric", BUILDS)
-def test_dot3_pair_in_lanes(numeric: str) -> None:
-    """The DOT3 pair where the double build's AVX-512 instance takes it in
-    one pass of eight lanes (stage_dot3_sample_write, avx512_dot3_write):
-    both units bilinear, each blend kind, DOT3_RGB or DOT3_RGBA, an RGB or
-    RGBA second texture, smooth or flat; chunks with tails (width a chunk
-    and 3), live slots that are not neighbours (a stencil test drops
-    slivers), an alpha test (the separate stages' code), REPEAT or
-    CLAMP_TO_EDGE, and coordinates that are not finite (the texture matrix
-    scaled to infinity: the chunk goes to the separate stages, as the
-    samplers leave such groups to the scalar code). Every path gives the
-    same pixels."""
+def test_dot3_pair_cases(numeric: str) -> None:
+    """The DOT3 pair (both units bilinear) under each blend kind, DOT3_RGB
+    or DOT3_RGBA, an RGB or RGBA second texture, smooth or flat; chunks
+    with tails (width a chunk and 3), live slots that are not neighbours (a
+    stencil test drops slivers), an alpha test, REPEAT or CLAMP_TO_EDGE, and
+    coordinates that are not finite (the texture matrix scaled to
+    infinity, which the samplers leave to the scalar code). Every path,
+    the double build's AVX2-capped one included, gives the same pixels."""
     blends = (None, (C.GL_SRC_ALPHA, C.GL_ONE_MINUS_SRC_ALPHA), (C.GL_ONE, C.GL_ONE))
     for case in range(18):
         env = dot3_env(C.GL_DOT3_RGBA if case % 2 else C.GL_DOT3_RGB, C.GL_MODULATE, 1.0)

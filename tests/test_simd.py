@@ -117,25 +117,6 @@ def test_565_writers_over_every_value(numeric, blend, dither):
                                       err_msg=name)
 
 
-@pytest.mark.parametrize("numeric", ["float", "double"])
-@pytest.mark.parametrize("bits", [5, 6, 8])
-def test_unorm_quotients_without_division(numeric, bits):
-    """The vector writers' d / 31, d / 63 and d / 255 (a product pair and
-    one fused multiply-add, no division) are the build's correctly rounded
-    quotients for every d: a 1-ulp slip rarely reaches a pixel, so the
-    kernel is checked alone."""
-    if not HAS_SIMD:
-        pytest.skip("no vector instance on this CPU")
-    ctx = make_ctx(numeric, 1, 1)
-    ffi, lib = ctx._ffi, ctx._lib
-    top = (1 << bits) - 1
-    out = np.zeros(1 << bits, np.float64)
-    assert lib.gles_debug_unorm_div(bits, ffi.cast("double *", out.ctypes.data)) == 0
-    kind = np.float32 if numeric == "float" else np.float64
-    want = (np.arange(top + 1).astype(kind) / kind(top)).astype(np.float64)
-    np.testing.assert_array_equal(out, want)
-
-
 def _bilinear_scene(numeric: str, flags: int, env: int) -> np.ndarray:
     """A 16x16 texture of extreme and random bytes, magnified 16x with
     GL_LINEAR (so the weights take every 1/16 step, 0 included) and
