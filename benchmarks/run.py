@@ -88,10 +88,14 @@ def backend_status(name: str) -> str | None:
     return mesa.available(name)
 
 
+# the threads a gles context rasterizes with (--threads; llvmpipe's are LP_NUM_THREADS)
+THREADS = 1
+
+
 def make_context(backend: str, w: int, h: int, color: str) -> Any:
     """A fresh context of the backend with the scene's colour format (24-bit depth, 8-bit stencil)."""
     if backend.startswith("gles-"):
-        return gles.Context(w, h, numeric=backend[len("gles-"):], color=color)
+        return gles.Context(w, h, numeric=backend[len("gles-"):], color=color, threads=THREADS)
     return mesa.MesaContext(w, h, driver=backend, color=color)
 
 
@@ -222,7 +226,7 @@ def count_instructions(tool: str, backend: str, scene: str, w: int, h: int, fram
     Under callgrind with `start_lib`, counting starts after setup; otherwise at the process start.
     """
     cmd = [sys.executable, str(Path(__file__).resolve()), "--one", backend, scene,
-           "--size", f"{w}x{h}", "--frames", str(frames), "--warmup", str(warmup)]
+           "--size", f"{w}x{h}", "--frames", str(frames), "--warmup", str(warmup), "--threads", str(THREADS)]
     env = {**os.environ, **COUNT_ENV, "LP_NUM_THREADS": lp_threads}
     env.pop(START_ENV, None)
     with tempfile.TemporaryDirectory() as tmp:
@@ -378,13 +382,22 @@ def main(argv: list[str] | None = None) -> int:
                          "llvmpipe compiles its shaders there)")
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1,
                     help="counted subprocesses run at once (default: CPU count; counts do not depend on it)")
-    ap.add_argument("--lp-threads", default="1", help="LP_NUM_THREADS for llvmpipe (default 1)")
+    ap.add_argument("--threads", type=int, default=1,
+                    help="threads each gles context rasterizes with, and llvmpipe's LP_NUM_THREADS "
+                         "unless --lp-threads says otherwise (default 1)")
+    ap.add_argument("--lp-threads", help="LP_NUM_THREADS for llvmpipe (default: --threads)")
     ap.add_argument("--out", help="also write the report as Markdown to this file")
     ap.add_argument("--one", nargs=2, metavar=("BACKEND", "SCENE"),
                     help="run one backend and scene (setup, --warmup, --frames frames) and exit; "
                          "what --instructions counts")
     args = ap.parse_args(argv)
     w, h = parse_size(ap, args.size)
+    if not 1 <= args.threads <= gles.context.MAX_THREADS:
+        ap.error(f"--threads must be in 1..{gles.context.MAX_THREADS}")
+    global THREADS
+    THREADS = args.threads
+    if args.lp_threads is None:
+        args.lp_threads = str(args.threads)
     if args.one:
         backend, scene = args.one
         if backend not in BACKENDS or scene not in SCENES:
@@ -458,7 +471,8 @@ def main(argv: list[str] | None = None) -> int:
     cmd = "python benchmarks/run.py " + " ".join(argv if argv is not None else sys.argv[1:])
     lines = [f"Command: `{cmd.strip()}`", "",
              f"{w}x{h}, {args.frames} timed frames after {args.warmup} warm-up, median ms per frame "
-             f"(each frame ends with glFinish); LP_NUM_THREADS={args.lp_threads}.", "",
+             f"(each frame ends with glFinish); gles threads={args.threads}, "
+             f"LP_NUM_THREADS={args.lp_threads}.", "",
              f"Machine: {machine()}.", ""]
     if mesa_info:
         lines += ["Mesa: " + "; ".join(mesa_info) + ".", ""]

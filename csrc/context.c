@@ -99,6 +99,7 @@ GlesContext *gles_context_create(int width, int height, int color_format,
     ctx->stencil_bits = stencil_bits;
     ctx->depth_max = depth_bits ? (uint32_t)((1ull << depth_bits) - 1) : 0;
     ctx->profile = profile;
+    ctx->threads = ctx->band_count = 1;
     ctx->simd = simd_detect();
     ctx->chain_coords_unit = ctx->chain_coords_tx_unit = ctx->chain_lod_unit = -1;
     ctx->color = calloc(npix, color_format == GLES_COLOR_RGB565 ? 2 : 4);
@@ -188,13 +189,79 @@ void gles_context_destroy(GlesContext *ctx)
     free(ctx->color);
     free(ctx->depth);
     free(ctx->stencil);
+    gles_threads_set(ctx, 1);
     free(ctx->rect_s);
     free(ctx->fused_setup);
     free(ctx->tests_setup);
     free(ctx->verts);
     free(ctx->vert_stamp);
+    free(ctx->draw_prims);
     free(ctx);
 }
+
+static void worker_free(GlesContext *w)
+{
+    free(w->rect_s);
+    free(w->fused_setup);
+    free(w->tests_setup);
+    free(w);
+}
+
+/* a worker's copy of the context, with its own per-primitive scratch
+** (draw.c's worker_prepare fills in the rest per draw); NULL without memory */
+static GlesContext *worker_create(const GlesContext *ctx)
+{
+    GlesContext *w = calloc(1, sizeof *w);
+    if (!w)
+        return NULL;
+    w->rect_s = calloc(((size_t)ctx->width + 1) * GLES_MAX_TEXTURE_UNITS, sizeof *w->rect_s);
+    w->fused_setup = aligned_alloc(64, GLES_FUSED_SETUP_BYTES);
+    w->tests_setup = aligned_alloc(64, GLES_TESTS_SETUP_BYTES);
+    if (!w->rect_s || !w->fused_setup || !w->tests_setup) {
+        worker_free(w);
+        return NULL;
+    }
+    return w;
+}
+
+/* workers[0..n) and the array */
+static void workers_free(GlesContext **workers, int n)
+{
+    for (int i = 0; workers && i < n; i++)
+        worker_free(workers[i]);
+    free(workers);
+}
+
+int gles_threads_set(GlesContext *ctx, int threads)
+{
+    if (threads < 1)
+        threads = 1;
+    if (threads > GLES_MAX_THREADS)
+        threads = GLES_MAX_THREADS;
+    WorkPool *pool = threads > 1 ? pool_shared(threads) : NULL;
+    if (pool && pool_threads(pool) < threads)
+        threads = pool_threads(pool);   /* the workers that could be started */
+    if (!pool)
+        threads = 1;
+    if (threads == ctx->threads)
+        return threads;
+    GlesContext **workers = threads > 1 ? calloc((size_t)threads - 1, sizeof *workers) : NULL;
+    int made = 0;
+    while (workers && made < threads - 1 && (workers[made] = worker_create(ctx)) != NULL)
+        made++;
+    if (threads > 1 && made < threads - 1) {
+        /* no memory for the workers' copies: keep what there is */
+        workers_free(workers, made);
+        return ctx->threads;
+    }
+    workers_free(ctx->worker_ctx, ctx->threads - 1);
+    ctx->pool = pool;
+    ctx->worker_ctx = workers;
+    ctx->threads = threads;
+    return threads;
+}
+
+int gles_threads(GlesContext *ctx) { return ctx->threads; }
 
 unsigned int gles_GetError(GlesContext *ctx)
 {

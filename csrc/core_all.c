@@ -25,3 +25,4 @@
 #include "range.c"
 #include "draw.c"
 #include "framebuffer.c"
+#include "pool.c"

@@ -92,6 +92,11 @@ typedef struct Batch {
     int visible;         /* viewport meets the framebuffer */
     int reference;       /* GLES_DEBUG_VERTEX_REFERENCE: per vertex */
     ClipRect clip;       /* the pixels fragments may reach */
+    /* threaded: the queue's primitives go to ctx->draw_prims (ndeferred
+    ** of them) after their attributes, rasterized once the draw's vertex
+    ** work is done; `work` estimates their pixels */
+    int deferred;
+    int64_t ndeferred, work;
     /* vertices waiting for attributes, and the primitives that use them */
     int npend, nprim;
     int64_t pend[VERTEX_BATCH];
@@ -228,11 +233,12 @@ static Vertex *slot_of(const Batch *b, int64_t index)
     return &b->ctx->verts[index - b->base];
 }
 
-/* rasterize a queued primitive: its vertices have their attributes */
-static void draw_prim(Batch *b, const Prim *p)
+/* rasterize a queued primitive on ctx (the draw's context or a worker's
+** copy), the draw's cache slot 0 being array index base: its vertices
+** have their attributes */
+static void draw_prim(GlesContext *ctx, int64_t base, const Prim *p)
 {
-    GlesContext *ctx = b->ctx;
-    Vertex *v0 = slot_of(b, p->i[0]), *v1 = slot_of(b, p->i[1]), *v2 = slot_of(b, p->i[2]);
+    Vertex *v0 = &ctx->verts[p->i[0] - base], *v1 = &ctx->verts[p->i[1] - base], *v2 = &ctx->verts[p->i[2] - base];
     switch (p->kind) {
     case PRIM_POINT:
         raster_point(ctx, v0);
@@ -250,14 +256,71 @@ static void draw_prim(Batch *b, const Prim *p)
     clipped_triangle(ctx, v0, v1, v2, p->codes);
 }
 
-/* attributes of the waiting vertices in one batch, then the queue in order */
+/* {====================================================================
+** threads: a draw's primitives rasterized by every thread of the pool,
+** each on its bands of rows (raster_owns_row) */
+
+typedef struct DrawJob {
+    const Prim *prims;
+    int64_t n, base;
+} DrawJob;
+
+static void draw_job(GlesContext *ctx, void *arg)
+{
+    const DrawJob *j = arg;
+    for (int64_t i = 0; i < j->n; i++)
+        draw_prim(ctx, j->base, &j->prims[i]);
+}
+
+/* the deferred primitives, in order: on every thread where they cover
+** enough pixels, else on the calling thread */
+static void draw_deferred(Batch *b)
+{
+    GlesContext *ctx = b->ctx;
+    const Prim *prims = ctx->draw_prims;
+    DrawJob job = { prims, b->ndeferred, b->base };
+    if (!raster_threaded(ctx, b->work, draw_job, &job))
+        draw_job(ctx, &job);
+    b->ndeferred = 0;
+    b->work = 0;
+}
+
+/* the queue appended to the deferred primitives; 0 where there is no
+** memory for them (the caller rasterizes the queue itself) */
+static int defer_queue(Batch *b)
+{
+    GlesContext *ctx = b->ctx;
+    const int64_t need = b->ndeferred + b->nprim;
+    if (need > ctx->draw_prims_cap) {
+        int64_t cap = ctx->draw_prims_cap ? ctx->draw_prims_cap : 4 * DRAW_QUEUE;
+        while (cap < need)
+            cap *= 2;
+        Prim *p = realloc(ctx->draw_prims, (size_t)cap * sizeof *p);
+        if (!p)
+            return 0;
+        ctx->draw_prims = p;
+        ctx->draw_prims_cap = cap;
+    }
+    memcpy((Prim *)ctx->draw_prims + b->ndeferred, b->prim, (size_t)b->nprim * sizeof b->prim[0]);
+    b->ndeferred = need;
+    return 1;
+}
+
+/* }==================================================================== */
+
+/* attributes of the waiting vertices in one batch, then the queue in
+** order (threaded: kept for draw_deferred) */
 static void flush(Batch *b)
 {
     if (b->npend)
         vertex_batch_attribs(b->ctx, b->pend, b->pendv, b->npend);
     b->npend = 0;
-    for (int i = 0; i < b->nprim; i++)
-        draw_prim(b, &b->prim[i]);
+    if (!b->deferred || !defer_queue(b)) {
+        if (b->deferred)
+            draw_deferred(b);   /* no memory to keep the queue: what came before it first */
+        for (int i = 0; i < b->nprim; i++)
+            draw_prim(b->ctx, b->base, &b->prim[i]);
+    }
     b->nprim = 0;
 }
 
@@ -299,6 +362,9 @@ static void queue_triangle(Batch *b, int64_t i0, int64_t i1, int64_t i2)
         ClipRect box;
         if (area2 == 0 || culled(b->ctx, area2) || !raster_centre_box(&b->clip, v0, v1, v2, &box))
             return;
+        b->work += (box.x1 - box.x0 + 1) * (box.y1 - box.y0 + 1);
+    } else {
+        b->work += RASTER_THREADED_PIXELS;     /* it crosses a plane: likely large */
     }
     enqueue(b, PRIM_TRIANGLE, 3, i0, i1, i2, codes, area2);
 }
@@ -308,6 +374,7 @@ static void queue_line(Batch *b, int64_t i0, int64_t i1)
     const Vertex *v0 = slot_of(b, i0), *v1 = slot_of(b, i1);
     if (v0->outcode & v1->outcode)
         return;
+    b->work += 64;
     enqueue(b, PRIM_LINE, 2, i0, i1, i1, v0->outcode | v1->outcode, 0);
 }
 
@@ -315,6 +382,7 @@ static void queue_point(Batch *b, int64_t i0)
 {
     if (slot_of(b, i0)->outcode)
         return;
+    b->work += 16;
     enqueue(b, PRIM_POINT, 1, i0, i0, i0, 0, 0);
 }
 
@@ -463,8 +531,11 @@ static void assemble(Batch *b, unsigned int mode, int count, const Indices *ix)
     default:
         break;
     }
-    if (!b->reference)
+    if (!b->reference) {
         flush(b);
+        if (b->deferred)
+            draw_deferred(b);
+    }
 }
 
 static int mode_ok(unsigned int mode) { return mode <= GL_TRIANGLE_FAN; }
@@ -510,6 +581,9 @@ static void batch_init(Batch *b, GlesContext *ctx, int64_t base, int64_t last)
     b->clip = raster_clip_rect(ctx);
     b->npend = 0;
     b->nprim = 0;
+    b->deferred = ctx->pool != NULL && !b->reference;
+    b->ndeferred = 0;
+    b->work = 0;
 }
 
 int gles_DrawArrays(GlesContext *ctx, unsigned int mode, int first, int count)

@@ -16,6 +16,18 @@
 #include "texture.h"
 #include "fragment.h"
 
+/* the rectangle's rows through the span chain, on each thread its own */
+typedef struct DrawTexJob {
+    const RectSetup *r;
+    int64_t x0, y0, x1, y1;
+} DrawTexJob;
+
+static void drawtex_job(GlesContext *ctx, void *arg)
+{
+    const DrawTexJob *j = arg;
+    span_rect(ctx, j->r, j->x0, j->y0, j->x1, j->y1);
+}
+
 void gles_DrawTexOES(GlesContext *ctx, double xs, double ys, double zs, double ws, double hs)
 {
     if (!(ws > 0) || !(hs > 0)) {
@@ -56,7 +68,9 @@ void gles_DrawTexOES(GlesContext *ctx, double xs, double ys, double zs, double w
     if (x0 >= x1 || y0 >= y1)
         return;
     if (!(ctx->debug & GLES_DEBUG_GENERIC_SPANS)) {
-        span_rect(ctx, &r, x0, y0, x1, y1);
+        DrawTexJob job = { &r, x0, y0, x1, y1 };
+        if (!raster_threaded(ctx, (x1 - x0) * (y1 - y0), drawtex_job, &job))
+            drawtex_job(ctx, &job);
         return;
     }
     /* the reference: every fragment through fragment_process */

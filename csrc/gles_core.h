@@ -46,6 +46,13 @@ const char *gles_numeric_name(void);
 GlesContext *gles_context_create(int width, int height, int color_format,
                                  int depth_bits, int stencil_bits, int profile);
 void gles_context_destroy(GlesContext *ctx);
+#define GLES_MAX_THREADS 64
+/* rasterize draws on `threads` threads (1..GLES_MAX_THREADS; the caller
+** and threads - 1 workers the context keeps), each on its own rows, so the
+** bytes are those of one thread; returns the number in use, which is 1
+** where threads are not built in or cannot be started */
+int gles_threads_set(GlesContext *ctx, int threads);
+int gles_threads(GlesContext *ctx);
 const char *gles_last_message(GlesContext *ctx);
 void *gles_color_buffer(GlesContext *ctx);     /* bottom row first */
 void *gles_depth_buffer(GlesContext *ctx);     /* uint32 per pixel */
@@ -61,7 +68,9 @@ int gles_height(GlesContext *ctx);
 ** the rasterizer on purpose (flip the fill rule's tie, drop the last pixel of
 ** every span) so that tests can show the suite catches it; 8 runs the
 ** vertex stage per vertex (the reference of the batched path); 16 runs the
-** baseline span stages where the CPU has a vector instance (simd.h) */
+** baseline span stages where the CPU has a vector instance (simd.h); 32
+** caps them at AVX2; 64 rasterizes every draw on the context's threads,
+** however few pixels it covers */
 void gles_debug_set(GlesContext *ctx, int flags);
 /* name of the span function the last triangle used (for path tests) */
 const char *gles_last_span_name(GlesContext *ctx);

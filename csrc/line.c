@@ -95,7 +95,7 @@ static void line_runs(GlesContext *ctx, TriSetup *t, int xmajor, int64_t ma, int
         /* one fragment per row */
         for (int64_t pm = p0; pm <= p1; pm++) {
             const int64_t col = LINE_MINOR_PIXEL(pm);
-            if (col >= cn0 && col < cn1)
+            if (col >= cn0 && col < cn1 && raster_owns_row(ctx, pm))
                 span(ctx, t, (int)pm, (int)col, 1);
         }
         return;
@@ -107,7 +107,7 @@ static void line_runs(GlesContext *ctx, TriSetup *t, int xmajor, int64_t ma, int
             span(ctx, t, (int)run_y, (int)run_x, (int)run_n);
             run_n = 0;
         }
-        if (row < cn0 || row >= cn1)
+        if (row < cn0 || row >= cn1 || !raster_owns_row(ctx, row))
             continue;
         if (!run_n)
             run_y = row, run_x = pm;
@@ -189,7 +189,7 @@ void raster_line(GlesContext *ctx, const Vertex *a, const Vertex *b, const Verte
             q1 = cn1 - 1;
         for (int64_t pn = q0; pn <= q1; pn++) {
             int64_t px = xmajor ? pm : pn, py = xmajor ? pn : pm;
-            if (px < clip.x0 || py < clip.y0 || px >= clip.x1 || py >= clip.y1)
+            if (px < clip.x0 || py < clip.y0 || px >= clip.x1 || py >= clip.y1 || !raster_owns_row(ctx, py))
                 continue;
             FRAGV coverage = FRAG_ONE;
             if (smooth) {

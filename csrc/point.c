@@ -118,7 +118,7 @@ void raster_point(GlesContext *ctx, const Vertex *v)
     }
     int64_t r2 = (size_sub / 2) * (size_sub / 2);  /* disc radius squared, subpixels */
     for (int64_t py = y0; py <= y1; py++)
-        for (int64_t px = x0; px <= x1; px++) {
+        for (int64_t px = x0; px <= x1 && raster_owns_row(ctx, py); px++) {
             FRAGV coverage = FRAG_ONE;
             if (disc) {
                 int inside = 0;

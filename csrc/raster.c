@@ -205,7 +205,7 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
     ** the framebuffer and the scissor box: nothing to set up without one */
     const ClipRect clip = raster_clip_rect(ctx);
     ClipRect box;
-    if (!raster_centre_box(&clip, a, b, c, &box))
+    if (!raster_centre_box(&clip, a, b, c, &box) || !raster_owns_rows(ctx, box.y0, box.y1))
         return;
     const int64_t y0 = box.y0, y1 = box.y1, cx0 = clip.x0, cx1 = clip.x1;
     const int drop_last = (ctx->debug & GLES_DEBUG_DROP_LAST_PIXEL) != 0;
@@ -264,7 +264,8 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
     SpanFunc span = t.smooth ? ctx->span : ctx->span_const;
     if (nruns >= 0) {
         for (int r = 0; r < nruns; r++)
-            span(ctx, &t, (int)runs[r][0], (int)runs[r][1], (int)(runs[r][2] - runs[r][1]));
+            if (raster_owns_row(ctx, runs[r][0]))
+                span(ctx, &t, (int)runs[r][0], (int)runs[r][1], (int)(runs[r][2] - runs[r][1]));
         return;
     }
 
@@ -291,7 +292,7 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
             step_next(&st[i]);
         if (drop_last && hi > lo)
             hi--;
-        if (lo < hi)
+        if (lo < hi && raster_owns_row(ctx, py))
             span(ctx, &t, (int)py, (int)lo, (int)(hi - lo));
     }
 }
@@ -303,3 +304,56 @@ uint32_t raster_offset_depth(const GlesContext *ctx, const TriSetup *t, uint32_t
     /* clamp after the offset (§3.5.2) */
     return (uint32_t)i64_clamp((int64_t)z + t->depth_offset, 0, ctx->depth_max);
 }
+
+/* {====================================================================
+** threads */
+
+/* worker i's copy of ctx for a draw: the state as it is, its own
+** per-primitive caches (emptied) and scratch buffers, band i */
+static void worker_prepare(const GlesContext *ctx, GlesContext *w, int index)
+{
+    void *fused = w->fused_setup, *tests = w->tests_setup;
+    TEXC *rect_s = w->rect_s;
+    memcpy(w, ctx, sizeof *w);
+    w->fused_setup = fused;
+    w->tests_setup = tests;
+    w->rect_s = rect_s;
+    w->fused_serial = w->smooth_serial = w->tests_serial = 0;
+    w->flat_cache_format = -1;
+    w->pool = NULL;
+    w->worker_ctx = NULL;
+    w->draw_prims = NULL;
+    w->threads = 1;
+    w->band_index = index;
+    w->band_count = ctx->threads;
+}
+
+typedef struct RasterJob {
+    GlesContext *ctx;
+    RasterWork work;
+    void *arg;
+} RasterJob;
+
+static void raster_job(void *arg, int index)
+{
+    const RasterJob *j = arg;
+    j->work(index ? j->ctx->worker_ctx[index - 1] : j->ctx, j->arg);
+}
+
+int raster_threaded(GlesContext *ctx, int64_t pixels, RasterWork work, void *arg)
+{
+    if (!ctx->pool || (pixels < RASTER_THREADED_PIXELS && !(ctx->debug & GLES_DEBUG_THREADS_ALWAYS))
+        || !pool_acquire(ctx->pool))
+        return 0;
+    for (int i = 1; i < ctx->threads; i++)
+        worker_prepare(ctx, ctx->worker_ctx[i - 1], i);
+    RasterJob job = { ctx, work, arg };
+    ctx->band_index = 0;
+    ctx->band_count = ctx->threads;
+    pool_run(ctx->pool, raster_job, &job, ctx->threads);
+    ctx->band_count = 1;
+    pool_release(ctx->pool);
+    return 1;
+}
+
+/* }==================================================================== */

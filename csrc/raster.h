@@ -93,6 +93,41 @@ typedef struct ClipRect {
 } ClipRect;
 ClipRect raster_clip_rect(const GlesContext *ctx);
 
+/* rows in bands of 2^RASTER_BAND_SHIFT: band k belongs to thread k mod
+** band_count, which rasterizes every primitive's fragments in it, in
+** order, so the bytes are the same for any number of threads. 16 rows
+** keep most small triangles within one thread's band and spread a
+** scene's busy rows evenly (benchmarks/README.md) */
+#define RASTER_BAND_SHIFT 4
+static inline int raster_owns_row(const GlesContext *ctx, int64_t y)
+{
+    return ctx->band_count <= 1 || (y >> RASTER_BAND_SHIFT) % ctx->band_count == ctx->band_index;
+}
+/* below this many pixels a draw is rasterized on the calling thread:
+** waking the workers and copying the context for them cost about as much
+** as that (benchmarks/README.md) */
+#define RASTER_THREADED_PIXELS 8192
+typedef void (*RasterWork)(GlesContext *ctx, void *arg);
+/* work(c, arg) on each thread of the context's pool, c the thread's
+** context (this one on the calling thread) owning its bands of rows;
+** 0 (nothing done) where the context has one thread, the pool is busy
+** with another context, or `pixels` is too few to gain */
+int raster_threaded(GlesContext *ctx, int64_t pixels, RasterWork work, void *arg);
+
+/* whether the context rasterizes any row of y0..y1 (rows >= 0) */
+static inline int raster_owns_rows(const GlesContext *ctx, int64_t y0, int64_t y1)
+{
+    if (ctx->band_count <= 1)
+        return 1;
+    const int64_t b0 = y0 >> RASTER_BAND_SHIFT, b1 = y1 >> RASTER_BAND_SHIFT;
+    if (b1 - b0 + 1 >= ctx->band_count)
+        return 1;
+    for (int64_t k = b0; k <= b1; k++)
+        if (k % ctx->band_count == ctx->band_index)
+            return 1;
+    return 0;
+}
+
 /* floor(v / GLES_SUBPIXEL_ONE) and ceil, for window coordinates in subpixels */
 static inline int64_t raster_floor_px(int64_t v)
 {

@@ -17,6 +17,7 @@
 #include <string.h>
 #include "span.h"
 #include "fragment.h"
+#include "raster.h"
 #include "texture.h"
 
 /* the edge values of the chunk's pixel at offset k */
@@ -828,13 +829,16 @@ static void rect_columns(GlesContext *ctx, RectSetup *r, int64_t x0, int64_t x1)
 
 void span_rect(GlesContext *ctx, const RectSetup *r, int64_t x0, int64_t y0, int64_t x1, int64_t y1)
 {
+    if (!raster_owns_rows(ctx, y0, y1 - 1))
+        return;
     SpanStage stages[GLES_MAX_STAGES];
     int count = compose(ctx, stages, 1);
     RectSetup rc = *r;
     rc.serial = ++ctx->prim_serial;
     rect_columns(ctx, &rc, x0, x1);
     for (int64_t y = y0; y < y1; y++)
-        run(ctx, stages, count, NULL, &rc, (int)y, (int)x0, (int)(x1 - x0));
+        if (raster_owns_row(ctx, y))
+            run(ctx, stages, count, NULL, &rc, (int)y, (int)x0, (int)(x1 - x0));
 }
 
 /* }==================================================================== */

@@ -14,6 +14,7 @@
 #include "gles_core.h"
 #include "glenums.h"
 #include "simd.h"
+#include "pool.h"
 
 /* {====================================================================
 ** limits (each at or above the spec's minimum, Tables 6.20-6.22) */
@@ -43,6 +44,7 @@
 #define GLES_DEBUG_VERTEX_REFERENCE 8  /* per-vertex reference path instead of batches */
 #define GLES_DEBUG_BASELINE_SIMD 16    /* the baseline span stages even where AVX2 runs */
 #define GLES_DEBUG_AVX2_SIMD 32        /* at most the AVX2 instance where AVX-512 runs */
+#define GLES_DEBUG_THREADS_ALWAYS 64   /* threaded draws however few pixels they cover */
 
 /* {====================================================================
 ** matrices */
@@ -242,6 +244,19 @@ struct GlesContext {
     uint8_t *stencil;
     int profile;
     uint64_t prim_serial;       /* counts primitive setups, from 1 */
+    /* threads (gles_threads_set): a draw's primitives are rasterized by
+    ** `threads` threads, each on the rows of its bands (raster_owns_row):
+    ** the caller on this context with band_index 0, worker i on
+    ** worker_ctx[i - 1], a copy of this context made for the draw with
+    ** its own per-primitive caches; band_count is 1 outside such a draw */
+    int threads;
+    WorkPool *pool;
+    GlesContext **worker_ctx;
+    int band_index, band_count;
+    /* a threaded draw's primitives, kept until its vertex work is done
+    ** (draw.c's Prim) */
+    void *draw_prims;
+    int64_t draw_prims_cap;
     /* span_rect's s by column, width + 1 per unit (RectSetup.col_s) */
     TEXC *rect_s;
     /* the fused stage's setup for the primitive of serial fused_serial (0:

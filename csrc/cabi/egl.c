@@ -966,6 +966,12 @@ static EGLint bind(Context *ctx, Surface *s)
                                         GLES_CABI_COMMON ? GLES_PROFILE_COMMON : GLES_PROFILE_COMMON_LITE);
         if (!ctx->core)
             return EGL_BAD_ALLOC;
+        /* GLES_THREADS=N: draws rasterize on N threads (one when unset) */
+        const char *threads = getenv("GLES_THREADS");
+        if (threads && *threads) {
+            const long n = strtol(threads, NULL, 10);
+            gles_threads_set(ctx->core, n < 1 ? 1 : (n > GLES_MAX_THREADS ? GLES_MAX_THREADS : (int)n));
+        }
     }
     /* s's pixels are in its previous context's core (not current anywhere,
     ** or current here and being replaced): take them back first */

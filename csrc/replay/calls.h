@@ -3,10 +3,12 @@
 ** One case per recorded core function: read its arguments from the trace,
 ** then (when run is set) call it. Included by replay.c only.
 */
-#define REPLAY_CALL_COUNT 104
-#define REPLAY_TABLE_HASH 0xE3C60A9Du
+#define REPLAY_CALL_COUNT 106
+#define REPLAY_TABLE_HASH 0xB03640F0u
 
 static const char *const replay_call_names[REPLAY_CALL_COUNT] = {
+    "gles_threads_set",
+    "gles_threads",
     "gles_memory_limit",
     "gles_debug_set",
     "gles_debug_sample",
@@ -116,19 +118,30 @@ static const char *const replay_call_names[REPLAY_CALL_COUNT] = {
 static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
 {
     switch (id) {
-    case 0: { /* gles_memory_limit */
+    case 0: { /* gles_threads_set */
+        int a0 = rd_i32(r);
+        if (r->failed || !run) break;
+        (void)gles_threads_set(rp->ctx, a0);
+        break;
+    }
+    case 1: { /* gles_threads */
+        if (r->failed || !run) break;
+        (void)gles_threads(rp->ctx);
+        break;
+    }
+    case 2: { /* gles_memory_limit */
         int64_t a0 = rd_i64(r);
         if (r->failed || !run) break;
         (void)gles_memory_limit(rp->ctx, a0);
         break;
     }
-    case 1: { /* gles_debug_set */
+    case 3: { /* gles_debug_set */
         int a0 = rd_i32(r);
         if (r->failed || !run) break;
         (void)gles_debug_set(rp->ctx, a0);
         break;
     }
-    case 2: { /* gles_debug_sample */
+    case 4: { /* gles_debug_sample */
         int a0 = rd_i32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -138,31 +151,31 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_debug_sample(rp->ctx, a0, a1, a2, a3, a4.ptr);
         break;
     }
-    case 3: { /* gles_range_set */
+    case 5: { /* gles_range_set */
         int a0 = rd_i32(r);
         if (r->failed || !run) break;
         (void)gles_range_set(rp->ctx, a0);
         break;
     }
-    case 4: { /* gles_range_last */
+    case 6: { /* gles_range_last */
         ReplayDatum a0; rd_output(rp, r, &a0, 0);
         ReplayDatum a1; rd_output(rp, r, &a1, 1);
         if (r->failed || !run) break;
         (void)gles_range_last(rp->ctx, a0.ptr, a1.ptr);
         break;
     }
-    case 5: { /* gles_range_counts */
+    case 7: { /* gles_range_counts */
         ReplayDatum a0; rd_output(rp, r, &a0, 0);
         if (r->failed || !run) break;
         (void)gles_range_counts(rp->ctx, a0.ptr);
         break;
     }
-    case 6: { /* gles_range_reset */
+    case 8: { /* gles_range_reset */
         if (r->failed || !run) break;
         (void)gles_range_reset(rp->ctx);
         break;
     }
-    case 7: { /* gles_get */
+    case 9: { /* gles_get */
         unsigned int a0 = rd_u32(r);
         ReplayDatum a1; rd_output(rp, r, &a1, 0);
         ReplayDatum a2; rd_output(rp, r, &a2, 1);
@@ -170,48 +183,48 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_get(rp->ctx, a0, a1.ptr, a2.ptr);
         break;
     }
-    case 8: { /* gles_GetError */
+    case 10: { /* gles_GetError */
         if (r->failed || !run) break;
         (void)gles_GetError(rp->ctx);
         break;
     }
-    case 9: { /* gles_IsEnabled */
+    case 11: { /* gles_IsEnabled */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_IsEnabled(rp->ctx, a0);
         break;
     }
-    case 10: { /* gles_set_error */
+    case 12: { /* gles_set_error */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_set_error(rp->ctx, a0);
         break;
     }
-    case 11: { /* gles_Enable */
+    case 13: { /* gles_Enable */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_Enable(rp->ctx, a0);
         break;
     }
-    case 12: { /* gles_Disable */
+    case 14: { /* gles_Disable */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_Disable(rp->ctx, a0);
         break;
     }
-    case 13: { /* gles_EnableClientState */
+    case 15: { /* gles_EnableClientState */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_EnableClientState(rp->ctx, a0);
         break;
     }
-    case 14: { /* gles_DisableClientState */
+    case 16: { /* gles_DisableClientState */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_DisableClientState(rp->ctx, a0);
         break;
     }
-    case 15: { /* gles_Viewport */
+    case 17: { /* gles_Viewport */
         int a0 = rd_i32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -220,7 +233,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_Viewport(rp->ctx, a0, a1, a2, a3);
         break;
     }
-    case 16: { /* gles_Scissor */
+    case 18: { /* gles_Scissor */
         int a0 = rd_i32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -229,14 +242,14 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_Scissor(rp->ctx, a0, a1, a2, a3);
         break;
     }
-    case 17: { /* gles_DepthRange */
+    case 19: { /* gles_DepthRange */
         double a0 = rd_f64(r);
         double a1 = rd_f64(r);
         if (r->failed || !run) break;
         (void)gles_DepthRange(rp->ctx, a0, a1);
         break;
     }
-    case 18: { /* gles_ClearColor */
+    case 20: { /* gles_ClearColor */
         double a0 = rd_f64(r);
         double a1 = rd_f64(r);
         double a2 = rd_f64(r);
@@ -245,19 +258,19 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_ClearColor(rp->ctx, a0, a1, a2, a3);
         break;
     }
-    case 19: { /* gles_ClearDepth */
+    case 21: { /* gles_ClearDepth */
         double a0 = rd_f64(r);
         if (r->failed || !run) break;
         (void)gles_ClearDepth(rp->ctx, a0);
         break;
     }
-    case 20: { /* gles_ClearStencil */
+    case 22: { /* gles_ClearStencil */
         int a0 = rd_i32(r);
         if (r->failed || !run) break;
         (void)gles_ClearStencil(rp->ctx, a0);
         break;
     }
-    case 21: { /* gles_ColorMask */
+    case 23: { /* gles_ColorMask */
         unsigned char a0 = rd_u8(r);
         unsigned char a1 = rd_u8(r);
         unsigned char a2 = rd_u8(r);
@@ -266,96 +279,96 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_ColorMask(rp->ctx, a0, a1, a2, a3);
         break;
     }
-    case 22: { /* gles_DepthMask */
+    case 24: { /* gles_DepthMask */
         unsigned char a0 = rd_u8(r);
         if (r->failed || !run) break;
         (void)gles_DepthMask(rp->ctx, a0);
         break;
     }
-    case 23: { /* gles_DepthFunc */
+    case 25: { /* gles_DepthFunc */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_DepthFunc(rp->ctx, a0);
         break;
     }
-    case 24: { /* gles_CullFace */
+    case 26: { /* gles_CullFace */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_CullFace(rp->ctx, a0);
         break;
     }
-    case 25: { /* gles_FrontFace */
+    case 27: { /* gles_FrontFace */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_FrontFace(rp->ctx, a0);
         break;
     }
-    case 26: { /* gles_ShadeModel */
+    case 28: { /* gles_ShadeModel */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_ShadeModel(rp->ctx, a0);
         break;
     }
-    case 27: { /* gles_Hint */
+    case 29: { /* gles_Hint */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_Hint(rp->ctx, a0, a1);
         break;
     }
-    case 28: { /* gles_PixelStorei */
+    case 30: { /* gles_PixelStorei */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         if (r->failed || !run) break;
         (void)gles_PixelStorei(rp->ctx, a0, a1);
         break;
     }
-    case 29: { /* gles_ActiveTexture */
+    case 31: { /* gles_ActiveTexture */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_ActiveTexture(rp->ctx, a0);
         break;
     }
-    case 30: { /* gles_ClientActiveTexture */
+    case 32: { /* gles_ClientActiveTexture */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_ClientActiveTexture(rp->ctx, a0);
         break;
     }
-    case 31: { /* gles_MatrixMode */
+    case 33: { /* gles_MatrixMode */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_MatrixMode(rp->ctx, a0);
         break;
     }
-    case 32: { /* gles_LoadIdentity */
+    case 34: { /* gles_LoadIdentity */
         if (r->failed || !run) break;
         (void)gles_LoadIdentity(rp->ctx);
         break;
     }
-    case 33: { /* gles_LoadMatrix */
+    case 35: { /* gles_LoadMatrix */
         double a0[16]; rd_doubles(r, a0);
         if (r->failed || !run) break;
         (void)gles_LoadMatrix(rp->ctx, a0);
         break;
     }
-    case 34: { /* gles_MultMatrix */
+    case 36: { /* gles_MultMatrix */
         double a0[16]; rd_doubles(r, a0);
         if (r->failed || !run) break;
         (void)gles_MultMatrix(rp->ctx, a0);
         break;
     }
-    case 35: { /* gles_PushMatrix */
+    case 37: { /* gles_PushMatrix */
         if (r->failed || !run) break;
         (void)gles_PushMatrix(rp->ctx);
         break;
     }
-    case 36: { /* gles_PopMatrix */
+    case 38: { /* gles_PopMatrix */
         if (r->failed || !run) break;
         (void)gles_PopMatrix(rp->ctx);
         break;
     }
-    case 37: { /* gles_Translate */
+    case 39: { /* gles_Translate */
         double a0 = rd_f64(r);
         double a1 = rd_f64(r);
         double a2 = rd_f64(r);
@@ -363,7 +376,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_Translate(rp->ctx, a0, a1, a2);
         break;
     }
-    case 38: { /* gles_Scale */
+    case 40: { /* gles_Scale */
         double a0 = rd_f64(r);
         double a1 = rd_f64(r);
         double a2 = rd_f64(r);
@@ -371,7 +384,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_Scale(rp->ctx, a0, a1, a2);
         break;
     }
-    case 39: { /* gles_Rotate */
+    case 41: { /* gles_Rotate */
         double a0 = rd_f64(r);
         double a1 = rd_f64(r);
         double a2 = rd_f64(r);
@@ -380,7 +393,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_Rotate(rp->ctx, a0, a1, a2, a3);
         break;
     }
-    case 40: { /* gles_Frustum */
+    case 42: { /* gles_Frustum */
         double a0 = rd_f64(r);
         double a1 = rd_f64(r);
         double a2 = rd_f64(r);
@@ -391,7 +404,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_Frustum(rp->ctx, a0, a1, a2, a3, a4, a5);
         break;
     }
-    case 41: { /* gles_Ortho */
+    case 43: { /* gles_Ortho */
         double a0 = rd_f64(r);
         double a1 = rd_f64(r);
         double a2 = rd_f64(r);
@@ -402,25 +415,25 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_Ortho(rp->ctx, a0, a1, a2, a3, a4, a5);
         break;
     }
-    case 42: { /* gles_ClipPlane */
+    case 44: { /* gles_ClipPlane */
         unsigned int a0 = rd_u32(r);
         double a1[16]; rd_doubles(r, a1);
         if (r->failed || !run) break;
         (void)gles_ClipPlane(rp->ctx, a0, a1);
         break;
     }
-    case 43: { /* gles_CurrentPaletteMatrixOES */
+    case 45: { /* gles_CurrentPaletteMatrixOES */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_CurrentPaletteMatrixOES(rp->ctx, a0);
         break;
     }
-    case 44: { /* gles_LoadPaletteFromModelViewMatrixOES */
+    case 46: { /* gles_LoadPaletteFromModelViewMatrixOES */
         if (r->failed || !run) break;
         (void)gles_LoadPaletteFromModelViewMatrixOES(rp->ctx);
         break;
     }
-    case 45: { /* gles_MatrixIndexPointerOES */
+    case 47: { /* gles_MatrixIndexPointerOES */
         int a0 = rd_i32(r);
         unsigned int a1 = rd_u32(r);
         int a2 = rd_i32(r);
@@ -429,7 +442,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_MatrixIndexPointerOES(rp->ctx, a0, a1, a2, a3.ptr, a3.nbytes);
         break;
     }
-    case 46: { /* gles_WeightPointerOES */
+    case 48: { /* gles_WeightPointerOES */
         int a0 = rd_i32(r);
         unsigned int a1 = rd_u32(r);
         int a2 = rd_i32(r);
@@ -438,14 +451,14 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_WeightPointerOES(rp->ctx, a0, a1, a2, a3.ptr, a3.nbytes);
         break;
     }
-    case 47: { /* gles_GetClipPlane */
+    case 49: { /* gles_GetClipPlane */
         unsigned int a0 = rd_u32(r);
         ReplayDatum a1; rd_output(rp, r, &a1, 0);
         if (r->failed || !run) break;
         (void)gles_GetClipPlane(rp->ctx, a0, a1.ptr);
         break;
     }
-    case 48: { /* gles_Light */
+    case 50: { /* gles_Light */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         double a2[16]; rd_doubles(r, a2);
@@ -454,7 +467,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_Light(rp->ctx, a0, a1, a2, a3);
         break;
     }
-    case 49: { /* gles_LightModel */
+    case 51: { /* gles_LightModel */
         unsigned int a0 = rd_u32(r);
         double a1[16]; rd_doubles(r, a1);
         int a2 = rd_i32(r);
@@ -462,7 +475,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_LightModel(rp->ctx, a0, a1, a2);
         break;
     }
-    case 50: { /* gles_Material */
+    case 52: { /* gles_Material */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         double a2[16]; rd_doubles(r, a2);
@@ -471,7 +484,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_Material(rp->ctx, a0, a1, a2, a3);
         break;
     }
-    case 51: { /* gles_GetLight */
+    case 53: { /* gles_GetLight */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         ReplayDatum a2; rd_output(rp, r, &a2, 0);
@@ -479,7 +492,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GetLight(rp->ctx, a0, a1, a2.ptr);
         break;
     }
-    case 52: { /* gles_GetMaterial */
+    case 54: { /* gles_GetMaterial */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         ReplayDatum a2; rd_output(rp, r, &a2, 0);
@@ -487,14 +500,14 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GetMaterial(rp->ctx, a0, a1, a2.ptr);
         break;
     }
-    case 53: { /* gles_AlphaFunc */
+    case 55: { /* gles_AlphaFunc */
         unsigned int a0 = rd_u32(r);
         double a1 = rd_f64(r);
         if (r->failed || !run) break;
         (void)gles_AlphaFunc(rp->ctx, a0, a1);
         break;
     }
-    case 54: { /* gles_StencilFunc */
+    case 56: { /* gles_StencilFunc */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         unsigned int a2 = rd_u32(r);
@@ -502,7 +515,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_StencilFunc(rp->ctx, a0, a1, a2);
         break;
     }
-    case 55: { /* gles_StencilOp */
+    case 57: { /* gles_StencilOp */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         unsigned int a2 = rd_u32(r);
@@ -510,20 +523,20 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_StencilOp(rp->ctx, a0, a1, a2);
         break;
     }
-    case 56: { /* gles_StencilMask */
+    case 58: { /* gles_StencilMask */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_StencilMask(rp->ctx, a0);
         break;
     }
-    case 57: { /* gles_BlendFunc */
+    case 59: { /* gles_BlendFunc */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_BlendFunc(rp->ctx, a0, a1);
         break;
     }
-    case 58: { /* gles_BlendFuncSeparateOES */
+    case 60: { /* gles_BlendFuncSeparateOES */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         unsigned int a2 = rd_u32(r);
@@ -532,33 +545,33 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_BlendFuncSeparateOES(rp->ctx, a0, a1, a2, a3);
         break;
     }
-    case 59: { /* gles_BlendEquationOES */
+    case 61: { /* gles_BlendEquationOES */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_BlendEquationOES(rp->ctx, a0);
         break;
     }
-    case 60: { /* gles_BlendEquationSeparateOES */
+    case 62: { /* gles_BlendEquationSeparateOES */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_BlendEquationSeparateOES(rp->ctx, a0, a1);
         break;
     }
-    case 61: { /* gles_LogicOp */
+    case 63: { /* gles_LogicOp */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_LogicOp(rp->ctx, a0);
         break;
     }
-    case 62: { /* gles_SampleCoverage */
+    case 64: { /* gles_SampleCoverage */
         double a0 = rd_f64(r);
         unsigned char a1 = rd_u8(r);
         if (r->failed || !run) break;
         (void)gles_SampleCoverage(rp->ctx, a0, a1);
         break;
     }
-    case 63: { /* gles_Fog */
+    case 65: { /* gles_Fog */
         unsigned int a0 = rd_u32(r);
         double a1[16]; rd_doubles(r, a1);
         int a2 = rd_i32(r);
@@ -566,7 +579,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_Fog(rp->ctx, a0, a1, a2);
         break;
     }
-    case 64: { /* gles_GenTextures */
+    case 66: { /* gles_GenTextures */
         int a0 = rd_i32(r);
         ReplayDatum a1; rd_output(rp, r, &a1, 0);
         if (a0 > 0 && (a1.ptr == NULL || (uint64_t)a0 * 4u > (uint64_t)a1.nbytes)) rd_fail(r, "n exceeds the output stored");
@@ -574,7 +587,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GenTextures(rp->ctx, a0, a1.ptr);
         break;
     }
-    case 65: { /* gles_DeleteTextures */
+    case 67: { /* gles_DeleteTextures */
         int a0 = rd_i32(r);
         const unsigned int *a1; uint32_t a1_n = rd_uints(r, &a1);
         if (a0 > 0 && (uint32_t)a0 > a1_n) rd_fail(r, "n exceeds the names stored");
@@ -582,20 +595,20 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DeleteTextures(rp->ctx, a0, a1);
         break;
     }
-    case 66: { /* gles_BindTexture */
+    case 68: { /* gles_BindTexture */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_BindTexture(rp->ctx, a0, a1);
         break;
     }
-    case 67: { /* gles_IsTexture */
+    case 69: { /* gles_IsTexture */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_IsTexture(rp->ctx, a0);
         break;
     }
-    case 68: { /* gles_TexImage2D */
+    case 70: { /* gles_TexImage2D */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -609,7 +622,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_TexImage2D(rp->ctx, a0, a1, a2, a3, a4, a5, a6, a7, a8.ptr, a8.nbytes);
         break;
     }
-    case 69: { /* gles_TexSubImage2D */
+    case 71: { /* gles_TexSubImage2D */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -623,7 +636,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_TexSubImage2D(rp->ctx, a0, a1, a2, a3, a4, a5, a6, a7, a8.ptr, a8.nbytes);
         break;
     }
-    case 70: { /* gles_CopyTexImage2D */
+    case 72: { /* gles_CopyTexImage2D */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         unsigned int a2 = rd_u32(r);
@@ -636,7 +649,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_CopyTexImage2D(rp->ctx, a0, a1, a2, a3, a4, a5, a6, a7);
         break;
     }
-    case 71: { /* gles_CopyTexSubImage2D */
+    case 73: { /* gles_CopyTexSubImage2D */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -649,7 +662,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_CopyTexSubImage2D(rp->ctx, a0, a1, a2, a3, a4, a5, a6, a7);
         break;
     }
-    case 72: { /* gles_CompressedTexImage2D */
+    case 74: { /* gles_CompressedTexImage2D */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         unsigned int a2 = rd_u32(r);
@@ -662,7 +675,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_CompressedTexImage2D(rp->ctx, a0, a1, a2, a3, a4, a5, a6, a7.ptr, a7.nbytes);
         break;
     }
-    case 73: { /* gles_CompressedTexSubImage2D */
+    case 75: { /* gles_CompressedTexSubImage2D */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -677,7 +690,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_CompressedTexSubImage2D(rp->ctx, a0, a1, a2, a3, a4, a5, a6, a7, a8.ptr);
         break;
     }
-    case 74: { /* gles_TexParameter */
+    case 76: { /* gles_TexParameter */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         double a2[16]; rd_doubles(r, a2);
@@ -686,7 +699,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_TexParameter(rp->ctx, a0, a1, a2, a3);
         break;
     }
-    case 75: { /* gles_GetTexParameter */
+    case 77: { /* gles_GetTexParameter */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         ReplayDatum a2; rd_output(rp, r, &a2, 0);
@@ -694,7 +707,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GetTexParameter(rp->ctx, a0, a1, a2.ptr);
         break;
     }
-    case 76: { /* gles_TexEnv */
+    case 78: { /* gles_TexEnv */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         double a2[16]; rd_doubles(r, a2);
@@ -703,7 +716,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_TexEnv(rp->ctx, a0, a1, a2, a3);
         break;
     }
-    case 77: { /* gles_GetTexEnv */
+    case 79: { /* gles_GetTexEnv */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         ReplayDatum a2; rd_output(rp, r, &a2, 0);
@@ -711,19 +724,19 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GetTexEnv(rp->ctx, a0, a1, a2.ptr);
         break;
     }
-    case 78: { /* gles_PointSize */
+    case 80: { /* gles_PointSize */
         double a0 = rd_f64(r);
         if (r->failed || !run) break;
         (void)gles_PointSize(rp->ctx, a0);
         break;
     }
-    case 79: { /* gles_LineWidth */
+    case 81: { /* gles_LineWidth */
         double a0 = rd_f64(r);
         if (r->failed || !run) break;
         (void)gles_LineWidth(rp->ctx, a0);
         break;
     }
-    case 80: { /* gles_PointParameter */
+    case 82: { /* gles_PointParameter */
         unsigned int a0 = rd_u32(r);
         double a1[16]; rd_doubles(r, a1);
         int a2 = rd_i32(r);
@@ -731,14 +744,14 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_PointParameter(rp->ctx, a0, a1, a2);
         break;
     }
-    case 81: { /* gles_PolygonOffset */
+    case 83: { /* gles_PolygonOffset */
         double a0 = rd_f64(r);
         double a1 = rd_f64(r);
         if (r->failed || !run) break;
         (void)gles_PolygonOffset(rp->ctx, a0, a1);
         break;
     }
-    case 82: { /* gles_DrawTexOES */
+    case 84: { /* gles_DrawTexOES */
         double a0 = rd_f64(r);
         double a1 = rd_f64(r);
         double a2 = rd_f64(r);
@@ -748,7 +761,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DrawTexOES(rp->ctx, a0, a1, a2, a3, a4);
         break;
     }
-    case 83: { /* gles_Color4 */
+    case 85: { /* gles_Color4 */
         double a0 = rd_f64(r);
         double a1 = rd_f64(r);
         double a2 = rd_f64(r);
@@ -757,7 +770,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_Color4(rp->ctx, a0, a1, a2, a3);
         break;
     }
-    case 84: { /* gles_Normal3 */
+    case 86: { /* gles_Normal3 */
         double a0 = rd_f64(r);
         double a1 = rd_f64(r);
         double a2 = rd_f64(r);
@@ -765,7 +778,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_Normal3(rp->ctx, a0, a1, a2);
         break;
     }
-    case 85: { /* gles_MultiTexCoord4 */
+    case 87: { /* gles_MultiTexCoord4 */
         unsigned int a0 = rd_u32(r);
         double a1 = rd_f64(r);
         double a2 = rd_f64(r);
@@ -775,7 +788,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_MultiTexCoord4(rp->ctx, a0, a1, a2, a3, a4);
         break;
     }
-    case 86: { /* gles_VertexPointer */
+    case 88: { /* gles_VertexPointer */
         int a0 = rd_i32(r);
         unsigned int a1 = rd_u32(r);
         int a2 = rd_i32(r);
@@ -784,7 +797,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_VertexPointer(rp->ctx, a0, a1, a2, a3.ptr, a3.nbytes);
         break;
     }
-    case 87: { /* gles_ColorPointer */
+    case 89: { /* gles_ColorPointer */
         int a0 = rd_i32(r);
         unsigned int a1 = rd_u32(r);
         int a2 = rd_i32(r);
@@ -793,7 +806,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_ColorPointer(rp->ctx, a0, a1, a2, a3.ptr, a3.nbytes);
         break;
     }
-    case 88: { /* gles_NormalPointer */
+    case 90: { /* gles_NormalPointer */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         ReplayDatum a2; rd_datum(rp, r, &a2, 1, 0x8894u, run);
@@ -801,7 +814,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_NormalPointer(rp->ctx, a0, a1, a2.ptr, a2.nbytes);
         break;
     }
-    case 89: { /* gles_TexCoordPointer */
+    case 91: { /* gles_TexCoordPointer */
         int a0 = rd_i32(r);
         unsigned int a1 = rd_u32(r);
         int a2 = rd_i32(r);
@@ -810,7 +823,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_TexCoordPointer(rp->ctx, a0, a1, a2, a3.ptr, a3.nbytes);
         break;
     }
-    case 90: { /* gles_PointSizePointerOES */
+    case 92: { /* gles_PointSizePointerOES */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         ReplayDatum a2; rd_datum(rp, r, &a2, 1, 0x8894u, run);
@@ -818,7 +831,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_PointSizePointerOES(rp->ctx, a0, a1, a2.ptr, a2.nbytes);
         break;
     }
-    case 91: { /* gles_GenBuffers */
+    case 93: { /* gles_GenBuffers */
         int a0 = rd_i32(r);
         ReplayDatum a1; rd_output(rp, r, &a1, 0);
         if (a0 > 0 && (a1.ptr == NULL || (uint64_t)a0 * 4u > (uint64_t)a1.nbytes)) rd_fail(r, "n exceeds the output stored");
@@ -826,7 +839,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GenBuffers(rp->ctx, a0, a1.ptr);
         break;
     }
-    case 92: { /* gles_DeleteBuffers */
+    case 94: { /* gles_DeleteBuffers */
         int a0 = rd_i32(r);
         const unsigned int *a1; uint32_t a1_n = rd_uints(r, &a1);
         if (a0 > 0 && (uint32_t)a0 > a1_n) rd_fail(r, "n exceeds the names stored");
@@ -834,14 +847,14 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DeleteBuffers(rp->ctx, a0, a1);
         break;
     }
-    case 93: { /* gles_BindBuffer */
+    case 95: { /* gles_BindBuffer */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_BindBuffer(rp->ctx, a0, a1);
         break;
     }
-    case 94: { /* gles_BufferData */
+    case 96: { /* gles_BufferData */
         unsigned int a0 = rd_u32(r);
         int64_t a1 = rd_i64(r);
         ReplayDatum a2; rd_datum(rp, r, &a2, 0, 0x8894u, run);
@@ -851,7 +864,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_BufferData(rp->ctx, a0, a1, a2.ptr, a3);
         break;
     }
-    case 95: { /* gles_BufferSubData */
+    case 97: { /* gles_BufferSubData */
         unsigned int a0 = rd_u32(r);
         int64_t a1 = rd_i64(r);
         int64_t a2 = rd_i64(r);
@@ -861,13 +874,13 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_BufferSubData(rp->ctx, a0, a1, a2, a3.ptr);
         break;
     }
-    case 96: { /* gles_IsBuffer */
+    case 98: { /* gles_IsBuffer */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_IsBuffer(rp->ctx, a0);
         break;
     }
-    case 97: { /* gles_GetBufferParameteriv */
+    case 99: { /* gles_GetBufferParameteriv */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         ReplayDatum a2; rd_output(rp, r, &a2, 0);
@@ -875,7 +888,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GetBufferParameteriv(rp->ctx, a0, a1, a2.ptr);
         break;
     }
-    case 98: { /* gles_DrawArrays */
+    case 100: { /* gles_DrawArrays */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -883,7 +896,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DrawArrays(rp->ctx, a0, a1, a2);
         break;
     }
-    case 99: { /* gles_DrawElements */
+    case 101: { /* gles_DrawElements */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         unsigned int a2 = rd_u32(r);
@@ -892,13 +905,13 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DrawElements(rp->ctx, a0, a1, a2, a3.ptr, a3.nbytes);
         break;
     }
-    case 100: { /* gles_Clear */
+    case 102: { /* gles_Clear */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_Clear(rp->ctx, a0);
         break;
     }
-    case 101: { /* gles_ReadPixels */
+    case 103: { /* gles_ReadPixels */
         int a0 = rd_i32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -910,12 +923,12 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_ReadPixels(rp->ctx, a0, a1, a2, a3, a4, a5, a6.ptr, a6.nbytes);
         break;
     }
-    case 102: { /* gles_Finish */
+    case 104: { /* gles_Finish */
         if (r->failed || !run) break;
         (void)gles_Finish(rp->ctx);
         break;
     }
-    case 103: { /* gles_Flush */
+    case 105: { /* gles_Flush */
         if (r->failed || !run) break;
         (void)gles_Flush(rp->ctx);
         break;

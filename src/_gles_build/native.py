@@ -98,9 +98,10 @@ def build(out: Path = OUT) -> Path:
         fresh = target.exists() and target.stat().st_mtime > newest
         if fresh and stamp.exists() and stamp.read_text() == key:
             return   # up to date (the core takes most of the build time)
-        _run([*cc, *flags, f"-DGLES_NUM_{numeric.upper()}=1", *inc, str(CSRC / "cabi" / "core_lib.c"),
-              "-o", str(target) + ".tmp", *ldflags(), f"-Wl,-soname,{core_lib_name(numeric)}",
-              "-Wl,-Bsymbolic", "-lm"])
+        # GLES_THREADS: the core's worker threads (csrc/pool.c), POSIX threads
+        _run([*cc, *flags, f"-DGLES_NUM_{numeric.upper()}=1", "-DGLES_THREADS=1", "-pthread", *inc,
+              str(CSRC / "cabi" / "core_lib.c"), "-o", str(target) + ".tmp", *ldflags(),
+              f"-Wl,-soname,{core_lib_name(numeric)}", "-Wl,-Bsymbolic", "-lm"])
         os.replace(str(target) + ".tmp", target)
         stamp.write_text(key)
 

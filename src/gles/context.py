@@ -31,6 +31,17 @@ for _base, _key in ((GLBase, "common-lite"), (GLCommon, "common")):
 COLOR_FORMATS = {"rgba8888": _LIB.GLES_COLOR_RGBA8888, "rgb565": _LIB.GLES_COLOR_RGB565}
 
 DEFAULT_MEMORY_LIMIT = 256 << 20    # bytes of texture images and buffer data per context
+MAX_THREADS = int(_LIB.GLES_MAX_THREADS)
+
+
+def default_threads() -> int:
+    """The threads a context rasterizes with by default: the CPUs this
+    process may run on (os.sched_getaffinity where it exists)."""
+    try:
+        n = len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):
+        n = os.cpu_count() or 1
+    return max(1, min(n, MAX_THREADS))
 
 VENDOR = "gles"
 # every extension and the profiles that have it: Common-Lite has all but the
@@ -68,6 +79,11 @@ class Context:
             every level) and buffer objects' data may hold together; a
             command that would pass it records GL_OUT_OF_MEMORY and changes
             nothing. Default 256 MiB. Settable later as ``ctx.memory_limit``.
+        threads: how many threads rasterize each draw (the calling one and
+            ``threads - 1`` workers the context keeps), each on its own bands
+            of rows, so every image is byte-identical to ``threads=1``'s.
+            Default: the CPUs this process may run on. Small draws stay on the
+            calling thread. Settable later as ``ctx.threads``.
 
     Contexts are independent: each has its own lock, and draws release the
     GIL, so contexts in different threads render at the same time.
@@ -75,7 +91,8 @@ class Context:
 
     def __init__(self, width: int, height: int, *, profile: str = "common", numeric: str = "fixed",
                  color: str = "rgba8888", depth: int = 24, stencil: int = 8,
-                 range_check: str | None = None, memory_limit: int | None = None) -> None:
+                 range_check: str | None = None, memory_limit: int | None = None,
+                 threads: int | None = None) -> None:
         if profile not in PROFILES:
             raise ValueError(f"profile must be one of {sorted(PROFILES)}, not {profile!r}")
         if color not in COLOR_FORMATS:
@@ -91,6 +108,7 @@ class Context:
         if memory_limit is None:
             memory_limit = DEFAULT_MEMORY_LIMIT
         memory_limit = self._check_limit(memory_limit)
+        threads = self._check_threads(default_threads() if threads is None else threads)
         width, height = int(width), int(height)
         if not (1 <= width <= 4096 and 1 <= height <= 4096):
             raise ValueError(f"width and height must be in 1..4096, not {width}x{height}")
@@ -110,6 +128,7 @@ class Context:
         self._range = RangeMonitor(range_check)
         self._lib.gles_range_set(self._ptr, _RANGE_MODE[range_check])
         self._lib.gles_memory_limit(self._ptr, memory_limit)
+        self._lib.gles_threads_set(self._ptr, threads)
         self._handle = CoreHandle(self._lib, self._ffi, self._ptr, self._lock, self._range, width, height,
                                   self._strings(), memory_limit)
         self.gl: GLBase = self._gl_class()(self._handle)
@@ -169,6 +188,27 @@ class Context:
         if not 0 <= int(limit) <= 2**62:
             raise ValueError(f"memory_limit must be in 0..2**62 bytes, not {limit}")
         return int(limit)
+
+    @staticmethod
+    def _check_threads(threads: Any) -> int:
+        if isinstance(threads, bool) or not isinstance(threads, (int, np.integer)):
+            raise TypeError(f"threads must be an int, not {type(threads).__name__}")
+        if not 1 <= int(threads) <= MAX_THREADS:
+            raise ValueError(f"threads must be in 1..{MAX_THREADS}, not {threads}")
+        return int(threads)
+
+    @property
+    def threads(self) -> int:
+        """Threads that rasterize each draw (settable; 1 where the core was
+        built without threads or cannot start them)."""
+        with self._lock:
+            return int(self._lib.gles_threads(self._ptr))
+
+    @threads.setter
+    def threads(self, threads: int) -> None:
+        threads = self._check_threads(threads)
+        with self._lock:
+            self._lib.gles_threads_set(self._ptr, threads)
 
     @property
     def memory_limit(self) -> int:
@@ -292,7 +332,8 @@ class Context:
         vertex stage per vertex, the reference of the batched path; 16 runs
         the baseline (portable) span stages where the CPU has AVX2; 32 runs
         at most the AVX2 instance where the double build would take its
-        AVX-512 one."""
+        AVX-512 one; 64 rasterizes every draw on the context's threads,
+        however few pixels it covers."""
         with self._lock:
             self._lib.gles_debug_set(self._ptr, int(flags))
 

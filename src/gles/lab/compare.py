@@ -229,7 +229,8 @@ def _open(renderer: str, width: int, height: int, color: str = "rgba8888") -> An
     check_color(color)
     if renderer in BUILDS:
         check = "warn" if renderer == "fixed" else "off"
-        return Context(width, height, numeric=renderer, range_check=check, color=color)
+        # one thread, as Mesa's figures beside it (LP_NUM_THREADS=1 below)
+        return Context(width, height, numeric=renderer, range_check=check, color=color, threads=1)
     if renderer in PEERS:
         from . import mesa
 

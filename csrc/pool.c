@@ -1,0 +1,170 @@
+/*
+** pool.c -- the process's worker threads (pool.h).
+** Owns: starting and waking the workers. A job's generation number wakes
+**       them; each runs its share once (or none, past the job's count) and
+**       the last one done wakes the caller, which ran share 0 meanwhile.
+**       The pool lives as long as the process: contexts come and go, and
+**       a program with many of them keeps one set of threads.
+*/
+#include "gles_core.h"
+#include "pool.h"
+
+#if GLES_THREADS
+#include <pthread.h>
+#include <stdatomic.h>
+
+/* a worker done with a job watches for the next one this many times
+** before it sleeps, and the caller watches for the workers' end as long:
+** a frame's draws follow each other within microseconds, and waking a
+** sleeping thread takes tens of them (benchmarks/README.md) */
+#define POOL_SPINS 20000
+
+static inline void pool_relax(void)
+{
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();
+#endif
+}
+
+typedef struct PoolWorker {
+    WorkPool *pool;
+    int index;
+    unsigned long start;        /* the generation before its first job */
+    pthread_t thread;
+} PoolWorker;
+
+struct WorkPool {
+    pthread_mutex_t lock;
+    pthread_cond_t wake, done;
+    pthread_mutex_t busy;       /* held from pool_acquire to pool_release */
+    atomic_ulong generation;    /* advances per job */
+    atomic_int running;         /* workers still on the current job */
+    int sleeping;               /* workers waiting on `wake` (under lock) */
+    PoolJob job;
+    void *arg;
+    int count;                  /* the job's shares */
+    int threads;                /* the caller and the workers started */
+    PoolWorker workers[GLES_MAX_THREADS];   /* 1..threads - 1 */
+};
+
+/* the next job's generation after `seen` */
+static unsigned long pool_next(WorkPool *pool, unsigned long seen)
+{
+    for (int i = 0; i < POOL_SPINS; i++) {
+        if (atomic_load_explicit(&pool->generation, memory_order_acquire) != seen)
+            return atomic_load_explicit(&pool->generation, memory_order_acquire);
+        pool_relax();
+    }
+    pthread_mutex_lock(&pool->lock);
+    pool->sleeping++;
+    while (atomic_load(&pool->generation) == seen)
+        pthread_cond_wait(&pool->wake, &pool->lock);
+    pool->sleeping--;
+    const unsigned long next = atomic_load(&pool->generation);
+    pthread_mutex_unlock(&pool->lock);
+    return next;
+}
+
+static void *pool_main(void *p)
+{
+    PoolWorker *w = p;
+    WorkPool *pool = w->pool;
+    unsigned long seen = w->start;
+    for (;;) {
+        seen = pool_next(pool, seen);
+        if (w->index < pool->count)
+            pool->job(pool->arg, w->index);
+        if (atomic_fetch_sub_explicit(&pool->running, 1, memory_order_acq_rel) == 1) {
+            pthread_mutex_lock(&pool->lock);
+            pthread_cond_signal(&pool->done);
+            pthread_mutex_unlock(&pool->lock);
+        }
+    }
+    return NULL;
+}
+
+static WorkPool shared_pool = { .lock = PTHREAD_MUTEX_INITIALIZER, .wake = PTHREAD_COND_INITIALIZER,
+                                .done = PTHREAD_COND_INITIALIZER, .busy = PTHREAD_MUTEX_INITIALIZER,
+                                .threads = 1 };
+
+WorkPool *pool_shared(int threads)
+{
+    WorkPool *pool = &shared_pool;
+    if (threads > GLES_MAX_THREADS)
+        threads = GLES_MAX_THREADS;
+    /* no job runs while workers join (each starts at the current generation) */
+    pthread_mutex_lock(&pool->busy);
+    while (pool->threads < threads) {
+        PoolWorker *w = &pool->workers[pool->threads];
+        w->pool = pool;
+        w->index = pool->threads;
+        w->start = atomic_load(&pool->generation);
+        if (pthread_create(&w->thread, NULL, pool_main, w))
+            break;
+        pthread_detach(w->thread);
+        pool->threads++;
+    }
+    const int have = pool->threads;
+    pthread_mutex_unlock(&pool->busy);
+    return have >= 2 ? pool : NULL;
+}
+
+int pool_threads(const WorkPool *pool) { return pool->threads; }
+
+int pool_acquire(WorkPool *pool) { return pthread_mutex_trylock(&pool->busy) == 0; }
+
+void pool_release(WorkPool *pool) { pthread_mutex_unlock(&pool->busy); }
+
+void pool_run(WorkPool *pool, PoolJob job, void *arg, int count)
+{
+    /* the job is in place before the generation that announces it (release) */
+    pool->job = job;
+    pool->arg = arg;
+    pool->count = count;
+    atomic_store_explicit(&pool->running, pool->threads - 1, memory_order_relaxed);
+    pthread_mutex_lock(&pool->lock);
+    atomic_fetch_add_explicit(&pool->generation, 1, memory_order_release);
+    if (pool->sleeping)
+        pthread_cond_broadcast(&pool->wake);
+    pthread_mutex_unlock(&pool->lock);
+    job(arg, 0);
+    for (int i = 0; i < POOL_SPINS && atomic_load_explicit(&pool->running, memory_order_acquire); i++)
+        pool_relax();
+    if (atomic_load_explicit(&pool->running, memory_order_acquire)) {
+        pthread_mutex_lock(&pool->lock);
+        while (atomic_load(&pool->running))
+            pthread_cond_wait(&pool->done, &pool->lock);
+        pthread_mutex_unlock(&pool->lock);
+    }
+}
+
+#else
+
+WorkPool *pool_shared(int threads)
+{
+    (void)threads;
+    return NULL;
+}
+
+int pool_threads(const WorkPool *pool)
+{
+    (void)pool;
+    return 1;
+}
+
+int pool_acquire(WorkPool *pool)
+{
+    (void)pool;
+    return 0;
+}
+
+void pool_release(WorkPool *pool) { (void)pool; }
+
+void pool_run(WorkPool *pool, PoolJob job, void *arg, int count)
+{
+    (void)pool;
+    (void)count;
+    job(arg, 0);
+}
+
+#endif
