@@ -196,6 +196,8 @@ void gles_context_destroy(GlesContext *ctx)
     free(ctx->verts);
     free(ctx->vert_stamp);
     free(ctx->draw_prims);
+    free(ctx->draw_pend);
+    free(ctx->draw_pendv);
     free(ctx);
 }
 

@@ -97,6 +97,7 @@ typedef struct Batch {
     ** work is done; `work` estimates their pixels */
     int deferred;
     int64_t ndeferred, work;
+    int64_t npend_all;   /* threaded: vertices waiting in ctx->draw_pend */
     /* vertices waiting for attributes, and the primitives that use them */
     int npend, nprim;
     int64_t pend[VERTEX_BATCH];
@@ -260,6 +261,86 @@ static void draw_prim(GlesContext *ctx, int64_t base, const Prim *p)
 ** threads: a draw's primitives rasterized by every thread of the pool,
 ** each on its bands of rows (raster_owns_row) */
 
+/* A threaded draw's vertex work in slices of VERTEX_BATCH, each thread a
+** contiguous share of them, all reading the draw's context (the batch
+** functions write only the vertices they are given): positions of array
+** indices first..first + n - 1, or the attributes of ctx->draw_pend[0..n) */
+typedef struct VertexJob {
+    GlesContext *ctx;
+    int64_t base, first, n;
+    int attribs;
+} VertexJob;
+
+static void vertex_slices(const VertexJob *j, int64_t s0, int64_t s1)
+{
+    GlesContext *ctx = j->ctx;
+    int64_t idx[VERTEX_BATCH];
+    for (int64_t s = s0; s < s1; s++) {
+        const int64_t at = s * VERTEX_BATCH;
+        const int n = j->n - at < VERTEX_BATCH ? (int)(j->n - at) : VERTEX_BATCH;
+        if (j->attribs) {
+            vertex_batch_attribs(ctx, (const int64_t *)ctx->draw_pend + at, (Vertex *const *)ctx->draw_pendv + at, n);
+            continue;
+        }
+        for (int i = 0; i < n; i++)
+            idx[i] = j->first + at + i;
+        vertex_batch_positions(ctx, idx, n, ctx->verts, j->base);
+    }
+}
+
+static void vertex_job(void *arg, int index)
+{
+    const VertexJob *j = arg;
+    const int64_t slices = (j->n + VERTEX_BATCH - 1) / VERTEX_BATCH, t = j->ctx->threads;
+    vertex_slices(j, slices * index / t, slices * (index + 1) / t);
+}
+
+/* below this many vertices a draw's vertex work stays on the calling thread */
+#define DRAW_THREADED_VERTICES 1024
+
+static void vertex_threaded(GlesContext *ctx, VertexJob *j)
+{
+    const int big = j->n >= DRAW_THREADED_VERTICES || (ctx->debug & GLES_DEBUG_THREADS_ALWAYS);
+    if (big && j->n > 0 && ctx->pool && pool_acquire(ctx->pool, ctx->threads)) {
+        pool_run(ctx->pool, vertex_job, j, ctx->threads);
+        pool_release(ctx->pool);
+    } else {
+        vertex_slices(j, 0, (j->n + VERTEX_BATCH - 1) / VERTEX_BATCH);
+    }
+}
+
+/* n elements of `size` bytes from src put at index len of the growable
+** array *arr of *cap elements; 0 (nothing changed) without memory */
+static int append(void **arr, int64_t *cap, int64_t len, const void *src, int64_t n, size_t size)
+{
+    if (n == 0)
+        return 1;   /* (memcpy takes no NULL, not even for nothing) */
+    if (len + n > *cap) {
+        int64_t c = *cap ? *cap : 1024;
+        while (c < len + n)
+            c *= 2;
+        void *p = realloc(*arr, (size_t)c * size);
+        if (!p)
+            return 0;
+        *arr = p;
+        *cap = c;
+    }
+    memcpy((char *)*arr + (size_t)len * size, src, (size_t)n * size);
+    return 1;
+}
+
+/* the waiting vertices appended to ctx->draw_pend; 0 where there is no
+** memory for them (the caller computes their attributes itself) */
+static int defer_pending(Batch *b)
+{
+    GlesContext *ctx = b->ctx;
+    if (!append(&ctx->draw_pend, &ctx->draw_pend_cap, b->npend_all, b->pend, b->npend, sizeof b->pend[0])
+        || !append(&ctx->draw_pendv, &ctx->draw_pendv_cap, b->npend_all, b->pendv, b->npend, sizeof b->pendv[0]))
+        return 0;
+    b->npend_all += b->npend;
+    return 1;
+}
+
 typedef struct DrawJob {
     const Prim *prims;
     int64_t n, base;
@@ -277,6 +358,9 @@ static void draw_job(GlesContext *ctx, void *arg)
 static void draw_deferred(Batch *b)
 {
     GlesContext *ctx = b->ctx;
+    VertexJob vj = { ctx, b->base, 0, b->npend_all, 1 };
+    vertex_threaded(ctx, &vj);
+    b->npend_all = 0;
     const Prim *prims = ctx->draw_prims;
     DrawJob job = { prims, b->ndeferred, b->base };
     if (!raster_threaded(ctx, b->work, draw_job, &job))
@@ -290,19 +374,9 @@ static void draw_deferred(Batch *b)
 static int defer_queue(Batch *b)
 {
     GlesContext *ctx = b->ctx;
-    const int64_t need = b->ndeferred + b->nprim;
-    if (need > ctx->draw_prims_cap) {
-        int64_t cap = ctx->draw_prims_cap ? ctx->draw_prims_cap : 4 * DRAW_QUEUE;
-        while (cap < need)
-            cap *= 2;
-        Prim *p = realloc(ctx->draw_prims, (size_t)cap * sizeof *p);
-        if (!p)
-            return 0;
-        ctx->draw_prims = p;
-        ctx->draw_prims_cap = cap;
-    }
-    memcpy((Prim *)ctx->draw_prims + b->ndeferred, b->prim, (size_t)b->nprim * sizeof b->prim[0]);
-    b->ndeferred = need;
+    if (!append(&ctx->draw_prims, &ctx->draw_prims_cap, b->ndeferred, b->prim, b->nprim, sizeof b->prim[0]))
+        return 0;
+    b->ndeferred += b->nprim;
     return 1;
 }
 
@@ -312,7 +386,7 @@ static int defer_queue(Batch *b)
 ** order (threaded: kept for draw_deferred) */
 static void flush(Batch *b)
 {
-    if (b->npend)
+    if (b->npend && !(b->deferred && defer_pending(b)))
         vertex_batch_attribs(b->ctx, b->pend, b->pendv, b->npend);
     b->npend = 0;
     if (!b->deferred || !defer_queue(b)) {
@@ -386,16 +460,15 @@ static void queue_point(Batch *b, int64_t i0)
     enqueue(b, PRIM_POINT, 1, i0, i0, i0, 0, 0);
 }
 
-/* positions of every vertex in lo..hi, in batches */
+/* positions of every vertex in lo..hi, in batches (threaded: on every
+** thread, a share each) */
 static void positions_range(Batch *b, int64_t lo, int64_t hi)
 {
-    int64_t idx[VERTEX_BATCH];
-    for (int64_t s = lo; s <= hi; s += VERTEX_BATCH) {
-        int n = hi - s + 1 < VERTEX_BATCH ? (int)(hi - s + 1) : VERTEX_BATCH;
-        for (int i = 0; i < n; i++)
-            idx[i] = s + i;
-        vertex_batch_positions(b->ctx, idx, n, b->ctx->verts, b->base);
-    }
+    VertexJob j = { b->ctx, b->base, lo, hi - lo + 1, 0 };
+    if (b->deferred)
+        vertex_threaded(b->ctx, &j);
+    else
+        vertex_slices(&j, 0, (j.n + VERTEX_BATCH - 1) / VERTEX_BATCH);
 }
 
 /* Assembly reads each vertex's clip codes and window position, long after
@@ -584,6 +657,7 @@ static void batch_init(Batch *b, GlesContext *ctx, int64_t base, int64_t last)
     b->deferred = ctx->pool != NULL && !b->reference;
     b->ndeferred = 0;
     b->work = 0;
+    b->npend_all = 0;
 }
 
 int gles_DrawArrays(GlesContext *ctx, unsigned int mode, int first, int count)

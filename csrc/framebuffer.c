@@ -19,6 +19,62 @@ static void clear_rect(const GlesContext *ctx, int *x0, int *y0, int *x1, int *y
     *y1 = (int)i64_clamp(r.y1, 0, ctx->height);
 }
 
+/* a Clear's values and rectangle: each thread clears its own rows of it */
+typedef struct ClearJob {
+    unsigned int mask;
+    int x0, y0, x1, y1;
+    FRAGV c[4];                 /* the colour (RGB565's dither) */
+    uint32_t packed, keep;      /* the colour packed, and the bits the mask keeps */
+    uint32_t z;
+    uint8_t s, wm;
+} ClearJob;
+
+static void clear_rows(GlesContext *ctx, void *arg)
+{
+    const ClearJob *j = arg;
+    const size_t w = (size_t)ctx->width;
+    const int x0 = j->x0, x1 = j->x1;
+    const uint32_t packed = j->packed, keep = j->keep;
+    for (int y = j->y0; y < j->y1; y++) {
+        if (!raster_owns_row(ctx, y))
+            continue;
+        if ((j->mask & GL_COLOR_BUFFER_BIT) && ctx->color_format == GLES_COLOR_RGB565) {
+            /* §4.2.3: Clear is dithered like fragments */
+            static const uint32_t max565[3] = { 31, 63, 31 }, shift565[3] = { 11, 5, 0 };
+            uint16_t *row = (uint16_t *)ctx->color + (size_t)y * w;
+            for (int x = x0; x < x1; x++) {
+                uint32_t v = packed;
+                if (ctx->dither) {
+                    FRAGV t = fragment_dither_threshold(x, y);
+                    v = 0;
+                    for (int i = 0; i < 3; i++)
+                        v |= frag_to_unorm(frag_clamp01(j->c[i]), max565[i], t) << shift565[i];
+                }
+                row[x] = (uint16_t)((row[x] & keep) | (v & ~keep));
+            }
+        } else if (j->mask & GL_COLOR_BUFFER_BIT) {
+            uint32_t *row = (uint32_t *)ctx->color + (size_t)y * w;
+            for (int x = x0; x < x1; x++)
+                row[x] = (row[x] & keep) | (packed & ~keep);
+        }
+        if ((j->mask & GL_DEPTH_BUFFER_BIT) && ctx->depth && ctx->depth_mask) {
+            uint32_t *row = ctx->depth + (size_t)y * w;
+            for (int x = x0; x < x1; x++)
+                row[x] = j->z;
+        }
+        if ((j->mask & GL_STENCIL_BUFFER_BIT) && ctx->stencil) {
+            /* §4.2.3: the stencil write mask applies */
+            uint8_t *row = ctx->stencil + (size_t)y * w;
+            if (j->wm == 0xFF) {
+                memset(row + x0, j->s, (size_t)(x1 - x0));
+            } else {
+                for (int x = x0; x < x1; x++)
+                    row[x] = (uint8_t)((row[x] & ~j->wm) | (j->s & j->wm));
+            }
+        }
+    }
+}
+
 int gles_Clear(GlesContext *ctx, unsigned int mask)
 {
     const unsigned int legal = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT;
@@ -26,70 +82,32 @@ int gles_Clear(GlesContext *ctx, unsigned int mask)
         ctx_error(ctx, GL_INVALID_VALUE);
         return GLES_OK;
     }
-    int x0, y0, x1, y1;
-    clear_rect(ctx, &x0, &y0, &x1, &y1);
-    if (x0 >= x1 || y0 >= y1)
+    ClearJob j = { .mask = mask };
+    clear_rect(ctx, &j.x0, &j.y0, &j.x1, &j.y1);
+    if (j.x0 >= j.x1 || j.y0 >= j.y1)
         return GLES_OK;
-    size_t w = (size_t)ctx->width;
     if (mask & GL_COLOR_BUFFER_BIT) {
-        FRAGV c[4];
         for (int i = 0; i < 4; i++)
-            c[i] = frag_from_double(ctx->clear_color[i]);
-        uint32_t packed = span_pack_color(ctx, c);
-        uint32_t keep = 0;
+            j.c[i] = frag_from_double(ctx->clear_color[i]);
+        j.packed = span_pack_color(ctx, j.c);
         if (ctx->color_format == GLES_COLOR_RGB565) {
             static const uint32_t m565[3] = { 0xF800, 0x07E0, 0x001F };
             for (int i = 0; i < 3; i++)
                 if (!ctx->color_mask[i])
-                    keep |= m565[i];
-            /* §4.2.3: Clear is dithered like fragments */
-            static const uint32_t max565[3] = { 31, 63, 31 }, shift565[3] = { 11, 5, 0 };
-            for (int y = y0; y < y1; y++) {
-                uint16_t *row = (uint16_t *)ctx->color + (size_t)y * w;
-                for (int x = x0; x < x1; x++) {
-                    uint32_t v = packed;
-                    if (ctx->dither) {
-                        FRAGV t = fragment_dither_threshold(x, y);
-                        v = 0;
-                        for (int i = 0; i < 3; i++)
-                            v |= frag_to_unorm(frag_clamp01(c[i]), max565[i], t) << shift565[i];
-                    }
-                    row[x] = (uint16_t)((row[x] & keep) | (v & ~keep));
-                }
-            }
+                    j.keep |= m565[i];
         } else {
             for (int i = 0; i < 4; i++)
                 if (!ctx->color_mask[i])
-                    keep |= 0xFFu << (8 * i);
-            for (int y = y0; y < y1; y++) {
-                uint32_t *row = (uint32_t *)ctx->color + (size_t)y * w;
-                for (int x = x0; x < x1; x++)
-                    row[x] = (row[x] & keep) | (packed & ~keep);
-            }
+                    j.keep |= 0xFFu << (8 * i);
         }
     }
-    if ((mask & GL_DEPTH_BUFFER_BIT) && ctx->depth && ctx->depth_mask) {
-        uint32_t z = (uint32_t)dbl_to_i64(ctx->clear_depth * ctx->depth_max, 0, ctx->depth_max);
-        for (int y = y0; y < y1; y++) {
-            uint32_t *row = ctx->depth + (size_t)y * w;
-            for (int x = x0; x < x1; x++)
-                row[x] = z;
-        }
-    }
-    if ((mask & GL_STENCIL_BUFFER_BIT) && ctx->stencil) {
-        /* §4.2.3: the stencil write mask applies */
-        uint8_t s = (uint8_t)(ctx->clear_stencil & 0xFF);
-        uint8_t wm = (uint8_t)(ctx->stencil_writemask & 0xFF);
-        for (int y = y0; y < y1; y++) {
-            uint8_t *row = ctx->stencil + (size_t)y * w;
-            if (wm == 0xFF) {
-                memset(row + x0, s, (size_t)(x1 - x0));
-            } else {
-                for (int x = x0; x < x1; x++)
-                    row[x] = (uint8_t)((row[x] & ~wm) | (s & wm));
-            }
-        }
-    }
+    j.z = (uint32_t)dbl_to_i64(ctx->clear_depth * ctx->depth_max, 0, ctx->depth_max);
+    j.s = (uint8_t)(ctx->clear_stencil & 0xFF);
+    j.wm = (uint8_t)(ctx->stencil_writemask & 0xFF);
+    const int64_t pixels = (int64_t)(j.x1 - j.x0) * (j.y1 - j.y0);
+    /* a whole-buffer fill is cheap per pixel: threads only for large ones */
+    if (!raster_threaded(ctx, pixels / 16, clear_rows, &j))
+        clear_rows(ctx, &j);
     return GLES_OK;
 }
 

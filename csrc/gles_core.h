@@ -69,8 +69,8 @@ int gles_height(GlesContext *ctx);
 ** every span) so that tests can show the suite catches it; 8 runs the
 ** vertex stage per vertex (the reference of the batched path); 16 runs the
 ** baseline span stages where the CPU has a vector instance (simd.h); 32
-** caps them at AVX2; 64 rasterizes every draw on the context's threads,
-** however few pixels it covers */
+** caps them at AVX2; 64 shares every draw's vertex work and rasterization
+** among the context's threads, however small the draw */
 void gles_debug_set(GlesContext *ctx, int flags);
 /* name of the span function the last triangle used (for path tests) */
 const char *gles_last_span_name(GlesContext *ctx);

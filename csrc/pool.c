@@ -87,9 +87,27 @@ static WorkPool shared_pool = { .lock = PTHREAD_MUTEX_INITIALIZER, .wake = PTHRE
                                 .done = PTHREAD_COND_INITIALIZER, .busy = PTHREAD_MUTEX_INITIALIZER,
                                 .threads = 1 };
 
+/* a child of fork() has none of the workers: its pool starts over empty
+** (contexts there work alone until they ask for threads again) */
+static void pool_after_fork(void)
+{
+    WorkPool *pool = &shared_pool;
+    pthread_mutex_init(&pool->lock, NULL);
+    pthread_mutex_init(&pool->busy, NULL);
+    pthread_cond_init(&pool->wake, NULL);
+    pthread_cond_init(&pool->done, NULL);
+    atomic_store(&pool->running, 0);
+    pool->sleeping = 0;
+    pool->threads = 1;
+}
+
+static pthread_once_t pool_once = PTHREAD_ONCE_INIT;
+static void pool_init(void) { pthread_atfork(NULL, NULL, pool_after_fork); }
+
 WorkPool *pool_shared(int threads)
 {
     WorkPool *pool = &shared_pool;
+    pthread_once(&pool_once, pool_init);
     if (threads > GLES_MAX_THREADS)
         threads = GLES_MAX_THREADS;
     /* no job runs while workers join (each starts at the current generation) */
@@ -111,7 +129,17 @@ WorkPool *pool_shared(int threads)
 
 int pool_threads(const WorkPool *pool) { return pool->threads; }
 
-int pool_acquire(WorkPool *pool) { return pthread_mutex_trylock(&pool->busy) == 0; }
+int pool_acquire(WorkPool *pool, int threads)
+{
+    if (pthread_mutex_trylock(&pool->busy) != 0)
+        return 0;
+    if (pool->threads < threads) {
+        /* fewer workers than the context was given (a child of fork()) */
+        pthread_mutex_unlock(&pool->busy);
+        return 0;
+    }
+    return 1;
+}
 
 void pool_release(WorkPool *pool) { pthread_mutex_unlock(&pool->busy); }
 
@@ -152,9 +180,10 @@ int pool_threads(const WorkPool *pool)
     return 1;
 }
 
-int pool_acquire(WorkPool *pool)
+int pool_acquire(WorkPool *pool, int threads)
 {
     (void)pool;
+    (void)threads;
     return 0;
 }
 

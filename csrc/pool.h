@@ -19,9 +19,10 @@ typedef void (*PoolJob)(void *arg, int index);
 WorkPool *pool_shared(int threads);
 /* the caller and the workers */
 int pool_threads(const WorkPool *pool);
-/* 1 when the pool is the caller's until pool_release; 0 while another
-** context's job has it (the caller then works alone) */
-int pool_acquire(WorkPool *pool);
+/* 1 when the pool, with at least `threads` threads, is the caller's until
+** pool_release; 0 while another context's job has it, or in a child of
+** fork(), which has no workers (the caller then works alone) */
+int pool_acquire(WorkPool *pool, int threads);
 void pool_release(WorkPool *pool);
 /* job(arg, i) on thread i for i in 0..count-1 (count <= pool_threads; 0
 ** on the caller), between pool_acquire and pool_release */

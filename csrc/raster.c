@@ -275,6 +275,16 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
     for (int i = 0; i < 3; i++)
         step_init(&st[i], t.ea[i], t.eb[i], t.ec[i], tie[i], y0);
     for (int64_t py = y0; py <= y1; py++) {
+        if (!raster_owns_row(ctx, py)) {
+            /* another thread's band: on to this thread's next one, whose
+            ** first row the steps start at afresh (the same values the
+            ** stepping reaches) */
+            py = raster_next_owned_row(ctx, py) - 1;
+            if (py + 1 <= y1)
+                for (int i = 0; i < 3; i++)
+                    step_init(&st[i], t.ea[i], t.eb[i], t.ec[i], tie[i], py + 1);
+            continue;
+        }
         int64_t lo = cx0, hi = cx1; /* covered run is [lo, hi) */
         for (int i = 0; i < 3; i++) {
             const EdgeStep *e = &st[i];
@@ -292,7 +302,7 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
             step_next(&st[i]);
         if (drop_last && hi > lo)
             hi--;
-        if (lo < hi && raster_owns_row(ctx, py))
+        if (lo < hi)
             span(ctx, &t, (int)py, (int)lo, (int)(hi - lo));
     }
 }
@@ -309,12 +319,17 @@ uint32_t raster_offset_depth(const GlesContext *ctx, const TriSetup *t, uint32_t
 ** threads */
 
 /* worker i's copy of ctx for a draw: the state as it is, its own
-** per-primitive caches (emptied) and scratch buffers, band i */
+** per-primitive caches (emptied) and scratch buffers, band i. The matrix
+** stacks (modelview to the palette, two thirds of the context) are left
+** out: they are vertex state, and rasterization reads none of them (in a
+** worker they hold zeros, so a read would show in tests/test_threads.py) */
 static void worker_prepare(const GlesContext *ctx, GlesContext *w, int index)
 {
     void *fused = w->fused_setup, *tests = w->tests_setup;
     TEXC *rect_s = w->rect_s;
-    memcpy(w, ctx, sizeof *w);
+    const size_t skip0 = offsetof(GlesContext, modelview), skip1 = offsetof(GlesContext, palette_stack);
+    memcpy(w, ctx, skip0);
+    memcpy((char *)w + skip1, (const char *)ctx + skip1, sizeof *w - skip1);
     w->fused_setup = fused;
     w->tests_setup = tests;
     w->rect_s = rect_s;
@@ -323,6 +338,8 @@ static void worker_prepare(const GlesContext *ctx, GlesContext *w, int index)
     w->pool = NULL;
     w->worker_ctx = NULL;
     w->draw_prims = NULL;
+    w->draw_pend = NULL;
+    w->draw_pendv = NULL;
     w->threads = 1;
     w->band_index = index;
     w->band_count = ctx->threads;
@@ -343,7 +360,7 @@ static void raster_job(void *arg, int index)
 int raster_threaded(GlesContext *ctx, int64_t pixels, RasterWork work, void *arg)
 {
     if (!ctx->pool || (pixels < RASTER_THREADED_PIXELS && !(ctx->debug & GLES_DEBUG_THREADS_ALWAYS))
-        || !pool_acquire(ctx->pool))
+        || !pool_acquire(ctx->pool, ctx->threads))
         return 0;
     for (int i = 1; i < ctx->threads; i++)
         worker_prepare(ctx, ctx->worker_ctx[i - 1], i);

@@ -114,6 +114,15 @@ typedef void (*RasterWork)(GlesContext *ctx, void *arg);
 ** with another context, or `pixels` is too few to gain */
 int raster_threaded(GlesContext *ctx, int64_t pixels, RasterWork work, void *arg);
 
+/* the first row at or after y (>= 0) that the context rasterizes */
+static inline int64_t raster_next_owned_row(const GlesContext *ctx, int64_t y)
+{
+    if (raster_owns_row(ctx, y))
+        return y;
+    const int64_t band = y >> RASTER_BAND_SHIFT;
+    const int64_t ahead = ((int64_t)ctx->band_index - band % ctx->band_count + ctx->band_count) % ctx->band_count;
+    return (band + ahead) << RASTER_BAND_SHIFT;
+}
 /* whether the context rasterizes any row of y0..y1 (rows >= 0) */
 static inline int raster_owns_rows(const GlesContext *ctx, int64_t y0, int64_t y1)
 {

@@ -44,7 +44,7 @@
 #define GLES_DEBUG_VERTEX_REFERENCE 8  /* per-vertex reference path instead of batches */
 #define GLES_DEBUG_BASELINE_SIMD 16    /* the baseline span stages even where AVX2 runs */
 #define GLES_DEBUG_AVX2_SIMD 32        /* at most the AVX2 instance where AVX-512 runs */
-#define GLES_DEBUG_THREADS_ALWAYS 64   /* threaded draws however few pixels they cover */
+#define GLES_DEBUG_THREADS_ALWAYS 64   /* threaded draws however few pixels and vertices */
 
 /* {====================================================================
 ** matrices */
@@ -254,9 +254,11 @@ struct GlesContext {
     GlesContext **worker_ctx;
     int band_index, band_count;
     /* a threaded draw's primitives, kept until its vertex work is done
-    ** (draw.c's Prim) */
-    void *draw_prims;
-    int64_t draw_prims_cap;
+    ** (draw.c's Prim), and the vertices whose attributes they need */
+    void *draw_prims;           /* Prim */
+    void *draw_pend;            /* int64_t: their array indices */
+    void *draw_pendv;           /* Vertex *: their slots */
+    int64_t draw_prims_cap, draw_pend_cap, draw_pendv_cap;
     /* span_rect's s by column, width + 1 per unit (RectSetup.col_s) */
     TEXC *rect_s;
     /* the fused stage's setup for the primitive of serial fused_serial (0:

@@ -2,16 +2,19 @@
 image are those of one thread.
 
 Each thread rasterizes every primitive of a draw on its own bands of 16 rows,
-in submission order, so no pixel sees its fragments in another order. The
-reference here is ``threads=1`` on the same build. The debug switch 64 makes
-every draw threaded, also the small ones a context keeps on its calling
-thread, so that the small images of these tests take the threaded path; the
+in submission order, so no pixel sees its fragments in another order; the
+draw's vertex work is shared in slices of vertices. The reference here is
+``threads=1`` on the same build. The debug switch 64 makes every draw
+threaded, also the small ones a context keeps on its calling thread, so that
+the small images of these tests take the threaded path; the
 images are tall enough (at least 64 rows, four bands or more) that each
 thread owns several bands and primitives cross band edges.
 """
 
 from __future__ import annotations
 
+import os
+import signal
 import threading
 from typing import Any, Callable
 
@@ -230,3 +233,56 @@ def _drawtex_scene(gl: Any, w: int, h: int) -> Callable[[], None]:
 
 def test_drawtex() -> None:
     _assert_same(_drawtex_scene, size=(72, 96))
+
+
+def test_mesa_threads() -> None:
+    """The Mesa runners take the same option (llvmpipe's LP_NUM_THREADS)."""
+    from gles import mesa
+
+    why = mesa.available("llvmpipe")
+    if why is not None:
+        pytest.skip(why)
+    scene = lambda gl, w, h: GALLERY["dot3_bump"][1](gl, w, h)  # noqa: E731
+    images = []
+    for threads in (1, 2):
+        try:
+            ctx = mesa.MesaContext(64, 64, driver="llvmpipe", threads=threads)
+        except RuntimeError as e:      # both of Mesa's displays held by other contexts
+            if "every display is in use" not in str(e):
+                raise
+            pytest.skip(str(e))
+        with ctx:
+            assert ctx.threads == threads
+            scene(ctx.gl, 64, 64)()
+            images.append(ctx.image())
+    assert np.array_equal(images[0], images[1])
+    with pytest.raises(ValueError, match="threads"):
+        mesa.MesaContext(8, 8, threads=-1)
+    with pytest.raises(TypeError, match="threads"):
+        mesa.MesaContext(8, 8, threads=1.5)  # type: ignore[arg-type]
+
+
+@pytest.mark.skipif(not hasattr(os, "fork"), reason="no fork()")
+def test_fork_child_renders() -> None:
+    """A child of fork() has none of the pool's workers: its contexts, the
+    inherited one included, render alone, and a new one starts workers."""
+    scene = lambda gl, w, h: GALLERY["ground_plane"][1](gl, w, h)  # noqa: E731
+    expect = _render(scene, 1)
+    ctx = gles.Context(80, 72, range_check="off", threads=2)
+    ctx.debug(THREADS_ALWAYS)
+    frame = scene(ctx.gl, 80, 72)
+    frame()                                     # the pool's workers are running
+    pid = os.fork()
+    if pid == 0:                                # the child: no pytest from here on
+        code = 1
+        try:
+            signal.alarm(60)                    # a deadlock ends the child
+            frame()
+            same = np.array_equal(ctx.image(), expect)
+            same = same and np.array_equal(_render(scene, 2), expect)
+            code = 0 if same else 2
+        finally:
+            os._exit(code)
+    _, status = os.waitpid(pid, 0)
+    assert os.waitstatus_to_exitcode(status) == 0
+    assert np.array_equal(ctx.image(), expect)

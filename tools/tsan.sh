@@ -21,6 +21,8 @@ tsan_lib=$(gcc -print-file-name=libtsan.so)
 python -m pip install -q --upgrade pip
 GLES_TARGET_CC=none GLES_CFLAGS="-O1 -g -fno-omit-frame-pointer -fsanitize=thread" \
     python -m pip install -q --no-cache-dir ".[test]"
-# -s: the reports go to stderr, past pytest's capture; TSan exits 66 after any
+# -s: the reports go to stderr, past pytest's capture; TSan exits 66 after
+# any. The fork test is left out: TSan cannot follow threads started in a
+# child of a multi-threaded fork() (the sanitizer build of .ci/run runs it)
 (cd "$work" && LD_PRELOAD="$tsan_lib" TSAN_OPTIONS=halt_on_error=1:exitcode=66 \
- python -m pytest -q -s -p no:cacheprovider -x "$root/tests/test_threads.py")
+ python -m pytest -q -s -p no:cacheprovider -x -k "not fork_child" "$root/tests/test_threads.py")

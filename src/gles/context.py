@@ -332,8 +332,8 @@ class Context:
         vertex stage per vertex, the reference of the batched path; 16 runs
         the baseline (portable) span stages where the CPU has AVX2; 32 runs
         at most the AVX2 instance where the double build would take its
-        AVX-512 one; 64 rasterizes every draw on the context's threads,
-        however few pixels it covers."""
+        AVX-512 one; 64 shares every draw's vertex work and rasterization
+        among the context's threads, however small the draw."""
         with self._lock:
             self._lib.gles_debug_set(self._ptr, int(flags))
 

@@ -540,8 +540,8 @@ def _fmt_psnr(p: float) -> str:
 
 def _machine() -> str:
     return (f"gles {__version__}, Python {platform.python_version()}, {platform.machine()}, "
-            f"{os.cpu_count()} CPUs, {platform.platform(terse=True)}; Mesa with LP_NUM_THREADS="
-            f"{os.environ.get('LP_NUM_THREADS', '1')}")
+            f"{os.cpu_count()} CPUs, {platform.platform(terse=True)}; gles on one thread, Mesa with "
+            f"LP_NUM_THREADS={os.environ.get('LP_NUM_THREADS', '1')}")
 
 
 def _peer_versions(peers: Sequence[str]) -> dict[str, str]:

@@ -943,6 +943,7 @@ class _Display:
         self.attribs = attribs
         self.handle: int | None = None
         self.driver: str | None = None
+        self.threads = ""       # LP_NUM_THREADS the driver was initialised with
         self.users = 0
 
 
@@ -962,10 +963,10 @@ def _libs() -> _Libs:
         return _LIBS
 
 
-def _acquire_display(libs: _Libs, driver: str) -> _Display:
+def _acquire_display(libs: _Libs, driver: str, threads: str) -> _Display:
     with _LOCK:
         for d in _DISPLAYS:
-            if d.driver == driver:
+            if d.driver == driver and d.threads == threads:
                 d.users += 1
                 return d
         # A fresh display first; else re-initialise one nobody uses.
@@ -975,20 +976,21 @@ def _acquire_display(libs: _Libs, driver: str) -> _Display:
             if d.driver is not None:
                 libs.egl.eglTerminate(d.handle)
                 d.driver = None
-            _initialise(libs, d, driver)
+            _initialise(libs, d, driver, threads)
             d.users += 1
             return d
-    raise RuntimeError(f"cannot open a Mesa display for {driver!r}: every display is "
-                       "in use by another driver; use a subprocess")
+    raise RuntimeError(f"cannot open a Mesa display for {driver!r} with {threads} threads: every "
+                       "display is in use by another driver or thread count; use a subprocess")
 
 
-def _initialise(libs: _Libs, d: _Display, driver: str) -> None:
-    # Mesa reads these when the display is initialised: the Gallium driver, and
-    # software rendering even where a GPU render node exists.
-    os.environ.setdefault("LP_NUM_THREADS", "1")
-    saved = {k: os.environ.get(k) for k in ("GALLIUM_DRIVER", "LIBGL_ALWAYS_SOFTWARE")}
+def _initialise(libs: _Libs, d: _Display, driver: str, threads: str) -> None:
+    # Mesa reads these when the display is initialised: the Gallium driver,
+    # software rendering even where a GPU render node exists, and llvmpipe's
+    # rasterizing threads.
+    saved = {k: os.environ.get(k) for k in ("GALLIUM_DRIVER", "LIBGL_ALWAYS_SOFTWARE", "LP_NUM_THREADS")}
     os.environ["GALLIUM_DRIVER"] = driver
     os.environ["LIBGL_ALWAYS_SOFTWARE"] = "1"
+    os.environ["LP_NUM_THREADS"] = threads
     try:
         handle = libs.get_platform_display(_EGL_PLATFORM_SURFACELESS_MESA, None,
                                            d.attribs)
@@ -1006,6 +1008,7 @@ def _initialise(libs: _Libs, d: _Display, driver: str) -> None:
                 os.environ[k] = v
     d.handle = handle
     d.driver = driver
+    d.threads = threads
 
 
 def _release_display(d: _Display) -> None:
@@ -1235,17 +1238,28 @@ class MesaContext(_EGLContextBase):
     """An OpenGL ES 1.1 context of Mesa (llvmpipe or softpipe) on a pbuffer.
 
     ``ctx.gl`` holds the GL commands (see the module docstring for their Python
-    conventions). The context is made current on creation.
+    conventions). The context is made current on creation. ``threads`` is
+    llvmpipe's LP_NUM_THREADS (default: the environment's, else 1), read
+    when Mesa initialises a display: contexts with another count get a
+    display of their own (two at most in a process).
     """
 
     def __init__(self, width: int, height: int, driver: str = "llvmpipe",
-                 color: str = "rgba8888", depth: int = 24, stencil: int = 8) -> None:
+                 color: str = "rgba8888", depth: int = 24, stencil: int = 8,
+                 threads: int | None = None) -> None:
         if driver not in DRIVERS:
             raise ValueError(f"driver must be one of {DRIVERS}, got {driver!r}")
         self._check_args(width, height, color)
+        if threads is None:
+            threads = int(os.environ.get("LP_NUM_THREADS", "1") or 1)
+        if isinstance(threads, bool) or not isinstance(threads, int):
+            raise TypeError(f"threads must be an int, not {type(threads).__name__}")
+        if not 0 <= threads <= 64:
+            raise ValueError(f"threads must be in 0..64 (llvmpipe's LP_NUM_THREADS), not {threads}")
         self.driver = driver
+        self.threads = threads
         libs = _libs()
-        display = _acquire_display(libs, driver)
+        display = _acquire_display(libs, driver, str(threads))
         self._display = display
         self._open(libs, display.handle, depth, stencil)
 
