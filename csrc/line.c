@@ -94,8 +94,10 @@ static void line_runs(GlesContext *ctx, TriSetup *t, int xmajor, int64_t ma, int
     if (!xmajor) {
         /* one fragment per row */
         for (int64_t pm = p0; pm <= p1; pm++) {
+            if (!raster_owns_row(ctx, pm))
+                continue;
             const int64_t col = LINE_MINOR_PIXEL(pm);
-            if (col >= cn0 && col < cn1 && raster_owns_row(ctx, pm))
+            if (col >= cn0 && col < cn1)
                 span(ctx, t, (int)pm, (int)col, 1);
         }
         return;
@@ -129,6 +131,15 @@ void raster_line(GlesContext *ctx, const Vertex *a, const Vertex *b, const Verte
     int64_t D = mb - ma, len = D < 0 ? -D : D;
     if (len == 0)
         return;
+    {
+        /* threads: nothing to set up where no row the line (with its
+        ** width, and a pixel besides) reaches is this thread's */
+        const int64_t reach = (int64_t)(ctx->line_width < LINE_WIDTH_LIMIT ? ctx->line_width : LINE_WIDTH_LIMIT) + 2;
+        const int64_t lo = i64_floor_div(a->wy < b->wy ? a->wy : b->wy, one) - reach;
+        const int64_t hi = i64_floor_div(a->wy < b->wy ? b->wy : a->wy, one) + reach;
+        if (ctx->band_count > 1 && hi >= 0 && !raster_owns_rows(ctx, lo < 0 ? 0 : lo, hi))
+            return;
+    }
     TriSetup t;
     line_setup(ctx, &t, a, b, pv, len);
     double width = ctx->line_width;
@@ -168,6 +179,8 @@ void raster_line(GlesContext *ctx, const Vertex *a, const Vertex *b, const Verte
     }
     double fx = (double)dx, fy = (double)dy, flen = sqrt(fx * fx + fy * fy);
     for (int64_t pm = p0; pm <= p1; pm++) {
+        if (!xmajor && !raster_owns_row(ctx, pm))
+            continue;                           /* (threads: another's row) */
         int64_t c = pm * one + half;            /* major coordinate of the centres */
         int64_t n = c - ma, an = n < 0 ? -n : n;
         int64_t e[3] = { len - an, an, 0 };

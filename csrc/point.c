@@ -65,7 +65,6 @@ static void point_setup(GlesContext *ctx, TriSetup *t, const Vertex *v)
 void raster_point(GlesContext *ctx, const Vertex *v)
 {
     TriSetup t;
-    point_setup(ctx, &t, v);
     const int64_t e[3] = { 1, 0, 0 };      /* all weight on the vertex */
     const int64_t one = GLES_SUBPIXEL_ONE, half = one / 2;
     NUM size = point_derived_size(ctx, v);
@@ -101,6 +100,9 @@ void raster_point(GlesContext *ctx, const Vertex *v)
     if (y0 < clip.y0) y0 = clip.y0;
     if (x1 > clip.x1 - 1) x1 = clip.x1 - 1;
     if (y1 > clip.y1 - 1) y1 = clip.y1 - 1;
+    if (y0 > y1 || !raster_owns_rows(ctx, y0, y1))
+        return;     /* (threads: no row of this one's) */
+    point_setup(ctx, &t, v);
     if (!disc && !(ctx->debug & GLES_DEBUG_GENERIC_SPANS)) {
         /* a square of fragments whose inputs are the point's: only the
         ** sprite coordinates vary, so the rows run through the span chain */
