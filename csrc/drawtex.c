@@ -25,7 +25,14 @@ typedef struct DrawTexJob {
 static void drawtex_job(GlesContext *ctx, void *arg)
 {
     const DrawTexJob *j = arg;
-    span_rect(ctx, j->r, j->x0, j->y0, j->x1, j->y1);
+    /* one primitive, so any split of its rows gives the same bytes: each
+    ** thread an even share of them, where the 16-row bands would split a
+    ** rectangle of a few bands unevenly */
+    const int n = ctx->band_count, i = ctx->band_index;
+    const int64_t h = j->y1 - j->y0;
+    ctx->band_count = 1;
+    span_rect(ctx, j->r, j->x0, j->y0 + h * i / n, j->x1, j->y0 + h * (i + 1) / n);
+    ctx->band_count = n;
 }
 
 void gles_DrawTexOES(GlesContext *ctx, double xs, double ys, double zs, double ws, double hs)
