@@ -296,6 +296,19 @@ def test_c_program_matches_python_binding(binaries: Callable[[str, str], Path], 
     assert len(np.unique(c_image.reshape(-1, 4), axis=0)) >= 8
 
 
+@pytest.mark.parametrize("name", list(PROGRAMS))
+def test_c_program_threads(binaries: Callable[[str, str], Path], tmp_path: Path, name: str) -> None:
+    """GLES_THREADS=N gives a C program's contexts N threads, and the same bytes."""
+    binary = binaries(name, "common")
+    images = []
+    for threads in ("", "2", "3"):
+        proc = _run(binary, tmp_path / f"t{threads}.raw",
+                    {"LD_LIBRARY_PATH": str(cabi.libdir("fixed", "common")), "GLES_THREADS": threads})
+        assert proc.returncode == 0, proc.stderr
+        images.append(np.fromfile(tmp_path / f"t{threads}.raw", dtype=np.uint8))
+    assert np.array_equal(images[0], images[1]) and np.array_equal(images[0], images[2])
+
+
 def _mesa_env() -> dict[str, str]:
     return {"GALLIUM_DRIVER": "llvmpipe", "LIBGL_ALWAYS_SOFTWARE": "1", "LP_NUM_THREADS": "1"}
 
