@@ -76,6 +76,26 @@ double gles_num_eval(int op, double a, double b)
     }
 }
 
+/* the per-primitive scratch a context rasterizes with (its own, or a
+** worker's copy's): 0 where some of it could not be had (what was is
+** freed by scratch_free) */
+static int scratch_alloc(GlesContext *c, int width)
+{
+    c->rect_s = calloc(((size_t)width + 1) * GLES_MAX_TEXTURE_UNITS, sizeof *c->rect_s);
+    _Static_assert(GLES_FUSED_SETUP_BYTES % 64 == 0, "aligned_alloc takes a multiple of the alignment");
+    c->fused_setup = aligned_alloc(64, GLES_FUSED_SETUP_BYTES);
+    _Static_assert(GLES_TESTS_SETUP_BYTES % 64 == 0, "aligned_alloc takes a multiple of the alignment");
+    c->tests_setup = aligned_alloc(64, GLES_TESTS_SETUP_BYTES);
+    return c->rect_s && c->fused_setup && c->tests_setup;
+}
+
+static void scratch_free(GlesContext *c)
+{
+    free(c->rect_s);
+    free(c->fused_setup);
+    free(c->tests_setup);
+}
+
 GlesContext *gles_context_create(int width, int height, int color_format,
                                  int depth_bits, int stencil_bits, int profile)
 {
@@ -105,13 +125,8 @@ GlesContext *gles_context_create(int width, int height, int color_format,
     ctx->color = calloc(npix, color_format == GLES_COLOR_RGB565 ? 2 : 4);
     ctx->depth = depth_bits ? calloc(npix, sizeof(uint32_t)) : NULL;
     ctx->stencil = stencil_bits ? calloc(npix, 1) : NULL;
-    ctx->rect_s = calloc(((size_t)width + 1) * GLES_MAX_TEXTURE_UNITS, sizeof *ctx->rect_s);
-    _Static_assert(GLES_FUSED_SETUP_BYTES % 64 == 0, "aligned_alloc takes a multiple of the alignment");
-    ctx->fused_setup = aligned_alloc(64, GLES_FUSED_SETUP_BYTES);
-    _Static_assert(GLES_TESTS_SETUP_BYTES % 64 == 0, "aligned_alloc takes a multiple of the alignment");
-    ctx->tests_setup = aligned_alloc(64, GLES_TESTS_SETUP_BYTES);
-    if (!ctx->color || (depth_bits && !ctx->depth) || (stencil_bits && !ctx->stencil) || !ctx->rect_s || !ctx->fused_setup
-        || !ctx->tests_setup) {
+    const int scratch = scratch_alloc(ctx, width);
+    if (!ctx->color || (depth_bits && !ctx->depth) || (stencil_bits && !ctx->stencil) || !scratch) {
         gles_context_destroy(ctx);
         return NULL;
     }
@@ -190,9 +205,7 @@ void gles_context_destroy(GlesContext *ctx)
     free(ctx->depth);
     free(ctx->stencil);
     gles_threads_set(ctx, 1);
-    free(ctx->rect_s);
-    free(ctx->fused_setup);
-    free(ctx->tests_setup);
+    scratch_free(ctx);
     free(ctx->verts);
     free(ctx->vert_stamp);
     free(ctx->draw_prims);
@@ -203,9 +216,7 @@ void gles_context_destroy(GlesContext *ctx)
 
 static void worker_free(GlesContext *w)
 {
-    free(w->rect_s);
-    free(w->fused_setup);
-    free(w->tests_setup);
+    scratch_free(w);
     free(w);
 }
 
@@ -216,10 +227,7 @@ static GlesContext *worker_create(const GlesContext *ctx)
     GlesContext *w = calloc(1, sizeof *w);
     if (!w)
         return NULL;
-    w->rect_s = calloc(((size_t)ctx->width + 1) * GLES_MAX_TEXTURE_UNITS, sizeof *w->rect_s);
-    w->fused_setup = aligned_alloc(64, GLES_FUSED_SETUP_BYTES);
-    w->tests_setup = aligned_alloc(64, GLES_TESTS_SETUP_BYTES);
-    if (!w->rect_s || !w->fused_setup || !w->tests_setup) {
+    if (!scratch_alloc(w, ctx->width)) {
         worker_free(w);
         return NULL;
     }

@@ -300,8 +300,7 @@ static void vertex_job(void *arg, int index)
 
 static void vertex_threaded(GlesContext *ctx, VertexJob *j)
 {
-    const int big = j->n >= DRAW_THREADED_VERTICES || (ctx->debug & GLES_DEBUG_THREADS_ALWAYS);
-    if (big && j->n > 0 && ctx->pool && pool_acquire(ctx->pool, ctx->threads)) {
+    if (raster_pool_take(ctx, j->n, DRAW_THREADED_VERTICES)) {
         pool_run(ctx->pool, vertex_job, j, ctx->threads);
         pool_release(ctx->pool);
     } else {

@@ -119,8 +119,10 @@ void raster_point(GlesContext *ctx, const Vertex *v)
         return;
     }
     int64_t r2 = (size_sub / 2) * (size_sub / 2);  /* disc radius squared, subpixels */
-    for (int64_t py = y0; py <= y1; py++)
-        for (int64_t px = x0; px <= x1 && raster_owns_row(ctx, py); px++) {
+    for (int64_t py = y0; py <= y1; py++) {
+        if (!raster_owns_row(ctx, py))
+            continue;                           /* (threads: another's row) */
+        for (int64_t px = x0; px <= x1; px++) {
             FRAGV coverage = FRAG_ONE;
             if (disc) {
                 int inside = 0;
@@ -142,4 +144,5 @@ void raster_point(GlesContext *ctx, const Vertex *v)
                 fragment_from_setup(ctx, &t, e, (int)px, (int)py, coverage, NULL, NULL, NULL);
             }
         }
+    }
 }

@@ -357,10 +357,15 @@ static void raster_job(void *arg, int index)
     j->work(index ? j->ctx->worker_ctx[index - 1] : j->ctx, j->arg);
 }
 
+int raster_pool_take(GlesContext *ctx, int64_t amount, int64_t threshold)
+{
+    return ctx->pool && amount > 0 && (amount >= threshold || (ctx->debug & GLES_DEBUG_THREADS_ALWAYS))
+        && pool_acquire(ctx->pool, ctx->threads);
+}
+
 int raster_threaded(GlesContext *ctx, int64_t pixels, RasterWork work, void *arg)
 {
-    if (!ctx->pool || (pixels < RASTER_THREADED_PIXELS && !(ctx->debug & GLES_DEBUG_THREADS_ALWAYS))
-        || !pool_acquire(ctx->pool, ctx->threads))
+    if (!raster_pool_take(ctx, pixels, RASTER_THREADED_PIXELS))
         return 0;
     for (int i = 1; i < ctx->threads; i++)
         worker_prepare(ctx, ctx->worker_ctx[i - 1], i);

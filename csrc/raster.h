@@ -108,6 +108,10 @@ static inline int raster_owns_row(const GlesContext *ctx, int64_t y)
 ** as that (benchmarks/README.md) */
 #define RASTER_THREADED_PIXELS 8192
 typedef void (*RasterWork)(GlesContext *ctx, void *arg);
+/* 1 when the context's pool is now the caller's (pool_release gives it
+** back): the context has threads, the pool is free, and `amount` of work
+** reaches `threshold` (or debug switch 64 threads everything) */
+int raster_pool_take(GlesContext *ctx, int64_t amount, int64_t threshold);
 /* work(c, arg) on each thread of the context's pool, c the thread's
 ** context (this one on the calling thread) owning its bands of rows;
 ** 0 (nothing done) where the context has one thread, the pool is busy

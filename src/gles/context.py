@@ -79,11 +79,12 @@ class Context:
             every level) and buffer objects' data may hold together; a
             command that would pass it records GL_OUT_OF_MEMORY and changes
             nothing. Default 256 MiB. Settable later as ``ctx.memory_limit``.
-        threads: how many threads rasterize each draw (the calling one and
-            ``threads - 1`` workers the context keeps), each on its own bands
-            of rows, so every image is byte-identical to ``threads=1``'s.
-            Default: the CPUs this process may run on. Small draws stay on the
-            calling thread. Settable later as ``ctx.threads``.
+        threads: how many threads share each draw's vertex work and
+            rasterization (the calling one and ``threads - 1`` workers of one
+            pool per process), each rasterizing its own bands of rows, so
+            every image is byte-identical to ``threads=1``'s. Default: the
+            CPUs this process may run on. Small draws stay on the calling
+            thread. Settable later as ``ctx.threads``.
 
     Contexts are independent: each has its own lock, and draws release the
     GIL, so contexts in different threads render at the same time.
