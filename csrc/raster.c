@@ -93,6 +93,38 @@ static void step_init(EdgeStep *e, int64_t al, int64_t eb, int64_t ec, int tie, 
     e->dr = s - e->dq * e->d;
 }
 
+/* the step over `rows` rows at once (rows * eb in range, as eb * y0 is
+** in step_init): the same (q, r) as `rows` calls of step_next */
+typedef struct EdgeJump {
+    int64_t dq, dr, dbe;
+} EdgeJump;
+
+static void jump_init(EdgeJump *j, const EdgeStep *e, int64_t rows)
+{
+    j->dbe = e->eb * rows;
+    if (e->kind == 0) {
+        j->dq = j->dr = 0;
+        return;
+    }
+    /* n steps by rows * (dq d + dr) */
+    const int64_t s = (e->dq * e->d + e->dr) * rows;
+    j->dq = i64_floor_div(s, e->d);
+    j->dr = s - j->dq * e->d;
+}
+
+static inline void step_jump(EdgeStep *e, const EdgeJump *j)
+{
+    if (e->kind == 0) {
+        e->be += j->dbe;
+        return;
+    }
+    e->q += j->dq;
+    e->r += j->dr;
+    const int64_t carry = e->r >= e->d;
+    e->q += carry;
+    e->r -= carry * e->d;
+}
+
 static inline void step_next(EdgeStep *e)
 {
     if (e->kind == 0) {
@@ -271,19 +303,28 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
 
     /* Per edge, the row's bound is sign * floor(n / d) + bias with n linear
     ** in the row: one division at the first row, then exact stepping. */
+    /* with threads, this thread's rows: from its first band in the box,
+    ** band after band, the other threads' bands between (`skip` rows)
+    ** stepped over at once */
+    int64_t py = raster_next_owned_row(ctx, y0);
+    const int64_t band_rows = (int64_t)1 << RASTER_BAND_SHIFT;
+    const int64_t skip = ctx->band_count > 1 ? (ctx->band_count - 1) * band_rows : 0;
+    int64_t band_end = skip ? (py | (band_rows - 1)) + 1 : y1 + 1;
     EdgeStep st[3];
-    for (int i = 0; i < 3; i++)
-        step_init(&st[i], t.ea[i], t.eb[i], t.ec[i], tie[i], y0);
-    for (int64_t py = y0; py <= y1; py++) {
-        if (!raster_owns_row(ctx, py)) {
-            /* another thread's band: on to this thread's next one, whose
-            ** first row the steps start at afresh (the same values the
-            ** stepping reaches) */
-            py = raster_next_owned_row(ctx, py) - 1;
-            if (py + 1 <= y1)
-                for (int i = 0; i < 3; i++)
-                    step_init(&st[i], t.ea[i], t.eb[i], t.ec[i], tie[i], py + 1);
-            continue;
+    EdgeJump jump[3];
+    for (int i = 0; i < 3; i++) {
+        step_init(&st[i], t.ea[i], t.eb[i], t.ec[i], tie[i], py);
+        if (band_end + skip <= y1)
+            jump_init(&jump[i], &st[i], skip);
+    }
+    for (; py <= y1; py++) {
+        if (py == band_end) {
+            py += skip;
+            if (py > y1)
+                break;
+            for (int i = 0; i < 3; i++)
+                step_jump(&st[i], &jump[i]);
+            band_end = py + band_rows;
         }
         int64_t lo = cx0, hi = cx1; /* covered run is [lo, hi) */
         for (int i = 0; i < 3; i++) {

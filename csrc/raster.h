@@ -101,7 +101,11 @@ ClipRect raster_clip_rect(const GlesContext *ctx);
 #define RASTER_BAND_SHIFT 4
 static inline int raster_owns_row(const GlesContext *ctx, int64_t y)
 {
-    return ctx->band_count <= 1 || (y >> RASTER_BAND_SHIFT) % ctx->band_count == ctx->band_index;
+    const int64_t count = ctx->band_count, band = y >> RASTER_BAND_SHIFT;
+    if (count <= 1)
+        return 1;
+    /* a mask for the usual counts (a division per row showed in profiles) */
+    return ((count & (count - 1)) ? band % count : (band & (count - 1))) == ctx->band_index;
 }
 /* below this many pixels a draw is rasterized on the calling thread:
 ** waking the workers and copying the context for them cost about as much
