@@ -158,10 +158,11 @@ class TestContext:
         gl.glClear(gl.GL_COLOR_BUFFER_BIT | gl.GL_DEPTH_BUFFER_BIT | gl.GL_STENCIL_BUFFER_BIT)
 
     def draw(self, mode: int, verts: Any, colors: Any = None, *, size: int = 2,
-             indices: Any = None) -> None:
+             indices: Any = None, index_type: int | None = None) -> None:
         """Draw client arrays: vertices as 16.16 GL_FIXED (values given as
         reals are converted), colours as GL_UNSIGNED_BYTE RGBA (0..255) or
-        None for the current colour."""
+        None for the current colour; `indices` as GL_UNSIGNED_SHORT, or
+        `index_type` (GL_UNSIGNED_INT: OES_element_index_uint)."""
         gl = self.gl
         v = np.round(np.asarray(verts, dtype=np.float64).reshape(-1) * 65536).astype(np.int32)
         gl.glEnableClientState(gl.GL_VERTEX_ARRAY)
@@ -175,8 +176,9 @@ class TestContext:
         if indices is None:
             gl.glDrawArrays(mode, 0, len(v) // size)
         else:
-            idx = np.asarray(indices, dtype=np.uint16)
-            gl.glDrawElements(mode, len(idx), gl.GL_UNSIGNED_SHORT, idx)
+            kind = gl.GL_UNSIGNED_SHORT if index_type is None else index_type
+            idx = np.asarray(indices, dtype=np.uint32 if kind == gl.GL_UNSIGNED_INT else np.uint16)
+            gl.glDrawElements(mode, len(idx), kind, idx)
         gl.glDisableClientState(gl.GL_COLOR_ARRAY)
 
     # {============================================================

@@ -77,6 +77,13 @@ KNOWN_DEVIATIONS: tuple[Deviation, ...] = (
     Deviation("TexPalet.errors", "mesa-", None, None,
               "Mesa: CompressedTexSubImage2D on a paletted texture gives INVALID_VALUE; §3.7.4 wants "
               "INVALID_OPERATION (docs/conformance.md)"),
+    Deviation("TexETC1.errors", "mesa-", None, None,
+              "Mesa: TexSubImage2D on an ETC1 texture gives INVALID_VALUE; OES_compressed_ETC1_RGB8_texture "
+              "wants INVALID_OPERATION (docs/conformance.md)"),
+    Deviation("TexBGRA", "mesa-", None, None,
+              "Mesa: TexImage2D takes internalformat RGBA with format BGRA_EXT; EXT_texture_format_BGRA8888 "
+              "pairs BGRA_EXT with BGRA_EXT only, and ES 1.1 (3.7.1) wants INVALID_OPERATION "
+              "(docs/conformance.md)"),
     Deviation("covgl", "mesa-", None, None,
               "Mesa: CompressedTexSubImage2D on a paletted texture gives INVALID_VALUE, not "
               "INVALID_OPERATION; §3.7.4 (docs/conformance.md)"),

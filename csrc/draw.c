@@ -520,6 +520,12 @@ static int64_t index_at(const Indices *ix, int64_t i)
         return ix->first + i;
     if (ix->type == GL_UNSIGNED_BYTE)
         return ix->p[i];
+    if (ix->type == GL_UNSIGNED_INT) {
+        /* OES_element_index_uint */
+        uint32_t v;
+        memcpy(&v, ix->p + 4 * i, 4);
+        return v;
+    }
     uint16_t v;
     memcpy(&v, ix->p + 2 * i, 2);
     return v;
@@ -693,7 +699,7 @@ int gles_DrawArrays(GlesContext *ctx, unsigned int mode, int first, int count)
 int gles_DrawElements(GlesContext *ctx, unsigned int mode, int count, unsigned int type,
                       const void *indices, int64_t nbytes)
 {
-    if (!mode_ok(mode) || (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT)) {
+    if (!mode_ok(mode) || (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT)) {
         ctx_error(ctx, GL_INVALID_ENUM);
         return GLES_OK;
     }
@@ -703,7 +709,7 @@ int gles_DrawElements(GlesContext *ctx, unsigned int mode, int count, unsigned i
     }
     if (count == 0 || !ctx->arrays[ARR_VERTEX].enabled)
         return GLES_OK;
-    int isize = type == GL_UNSIGNED_BYTE ? 1 : 2;
+    int isize = type == GL_UNSIGNED_BYTE ? 1 : (type == GL_UNSIGNED_SHORT ? 2 : 4);
     int64_t need = (int64_t)count * isize;
     const uint8_t *p;
     if (ctx->element_buffer) {

@@ -137,7 +137,8 @@ void gles_BlendFunc(GlesContext *ctx, unsigned int src, unsigned int dst)
 
 static int is_equation(unsigned int e)
 {
-    return e == GL_FUNC_ADD_OES || e == GL_FUNC_SUBTRACT_OES || e == GL_FUNC_REVERSE_SUBTRACT_OES;
+    return e == GL_FUNC_ADD_OES || e == GL_FUNC_SUBTRACT_OES || e == GL_FUNC_REVERSE_SUBTRACT_OES
+        || e == GL_MIN_EXT || e == GL_MAX_EXT;      /* EXT_blend_minmax */
 }
 
 void gles_BlendEquationSeparateOES(GlesContext *ctx, unsigned int rgb, unsigned int alpha)
@@ -239,9 +240,15 @@ void fragment_blend(const GlesContext *ctx, const FRAGV src[4], const FRAGV dst[
 {
     for (int k = 0; k < 4; k++) {
         int a = k == 3;
+        const unsigned int eq = a ? ctx->blend_eq_alpha : ctx->blend_eq_rgb;
+        /* EXT_blend_minmax: the colours themselves, no factors */
+        if (eq == GL_MIN_EXT || eq == GL_MAX_EXT) {
+            out[k] = (src[k] < dst[k]) == (eq == GL_MIN_EXT) ? src[k] : dst[k];
+            continue;
+        }
         FRAGV sf = factor(a ? ctx->blend_src_alpha : ctx->blend_src_rgb, k, src, dst);
         FRAGV df = factor(a ? ctx->blend_dst_alpha : ctx->blend_dst_rgb, k, src, dst);
-        out[k] = equation(a ? ctx->blend_eq_alpha : ctx->blend_eq_rgb, frag_mul(src[k], sf), frag_mul(dst[k], df));
+        out[k] = equation(eq, frag_mul(src[k], sf), frag_mul(dst[k], df));
     }
 }
 

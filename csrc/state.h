@@ -158,6 +158,7 @@ typedef struct Texture {
     unsigned int min_filter, mag_filter, wrap_s, wrap_t;
     int generate_mipmap;
     int crop[4];
+    int level_limit;                    /* TEXTURE_MAX_LEVEL_APPLE (APPLE_texture_max_level) */
     int paletted;                       /* specified with CompressedTexImage2D */
     /* derived by texture_complete(): */
     int complete;

@@ -19,6 +19,17 @@ static int is_base_format(unsigned int f)
     return f == GL_ALPHA || f == GL_LUMINANCE || f == GL_LUMINANCE_ALPHA || f == GL_RGB || f == GL_RGBA;
 }
 
+/* the formats TexImage2D and TexSubImage2D take: Table 3.8's and
+** EXT_texture_format_BGRA8888's BGRA_EXT, which is an RGBA texture with
+** its bytes in the other order */
+static int is_upload_format(unsigned int f) { return is_base_format(f) || f == GL_BGRA_EXT; }
+
+/* the base format (Table 3.15's row) of a level's internal format */
+static unsigned int base_format(unsigned int f)
+{
+    return f == GL_BGRA_EXT ? GL_RGBA : (f == GL_ETC1_RGB8_OES ? GL_RGB : f);
+}
+
 static void texture_defaults(Texture *t, unsigned int name)
 {
     memset(t, 0, sizeof *t);
@@ -26,6 +37,7 @@ static void texture_defaults(Texture *t, unsigned int name)
     t->min_filter = GL_NEAREST_MIPMAP_LINEAR;
     t->mag_filter = GL_LINEAR;
     t->wrap_s = t->wrap_t = GL_REPEAT;
+    t->level_limit = 1000;
 }
 
 /* bytes a level's texels hold (the memory budget counts them) */
@@ -110,7 +122,9 @@ static int needs_mipmaps(unsigned int min_filter)
 }
 
 /* §3.7.10: level 0 defined, and with a mipmapped filter every level down to
-** 1x1 defined with halved sizes and the same format */
+** 1x1 defined with halved sizes and the same format; with
+** APPLE_texture_max_level, the levels down to TEXTURE_MAX_LEVEL_APPLE when
+** that comes first, and no level past it is sampled */
 static void texture_complete(Texture *t)
 {
     const TexImage *l0 = &t->level[0];
@@ -123,12 +137,12 @@ static void texture_complete(Texture *t)
         return;
     }
     int w = l0->width, h = l0->height, i = 0;
-    while (w > 1 || h > 1) {
+    while ((w > 1 || h > 1) && i < t->level_limit) {
         w = w > 1 ? w / 2 : 1;
         h = h > 1 ? h / 2 : 1;
         i++;
         const TexImage *li = &t->level[i];
-        if (li->width != w || li->height != h || !li->texels || t->level_format[i] != t->format)
+        if (li->width != w || li->height != h || !li->texels || t->level_format[i] != t->level_format[0])
             return;
     }
     t->max_level = i;
@@ -225,7 +239,7 @@ static int pixel_bytes(unsigned int format, unsigned int type)
     switch (type) {
     case GL_UNSIGNED_BYTE:
         switch (format) {
-        case GL_RGBA: return 4;
+        case GL_RGBA: case GL_BGRA_EXT: return 4;
         case GL_RGB: return 3;
         case GL_LUMINANCE_ALPHA: return 2;
         case GL_LUMINANCE: case GL_ALPHA: return 1;
@@ -243,6 +257,7 @@ static uint32_t unpack_pixel(unsigned int format, unsigned int type, const uint8
     if (type == GL_UNSIGNED_BYTE) {
         switch (format) {
         case GL_RGBA: return pack(p[0], p[1], p[2], p[3]);
+        case GL_BGRA_EXT: return pack(p[2], p[1], p[0], p[3]);
         case GL_RGB: return pack(p[0], p[1], p[2], 255);
         case GL_LUMINANCE_ALPHA: return pack(p[0], p[0], p[0], p[1]);
         case GL_LUMINANCE: return pack(p[0], p[0], p[0], 255);
@@ -316,7 +331,7 @@ static int generate_mipmaps(GlesContext *ctx, Texture *t)
         TexImage *src = &t->level[i - 1], *dst = &t->level[i];
         if (!level_alloc(ctx, dst, nw, nh))
             return 0;
-        t->level_format[i] = t->format;
+        t->level_format[i] = t->level_format[0];
         for (int y = 0; y < nh; y++)
             for (int x = 0; x < nw; x++) {
                 int x0 = w > 1 ? 2 * x : 0, y0 = h > 1 ? 2 * y : 0;
@@ -382,14 +397,14 @@ int gles_TexImage2D(GlesContext *ctx, unsigned int target, int level, int intern
         ctx_error(ctx, GL_INVALID_VALUE);
         return GLES_OK;
     }
-    if (target != GL_TEXTURE_2D || !is_base_format(format)
+    if (target != GL_TEXTURE_2D || !is_upload_format(format)
         || (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT_5_6_5 && type != GL_UNSIGNED_SHORT_4_4_4_4
             && type != GL_UNSIGNED_SHORT_5_5_5_1)) {
         ctx_error(ctx, GL_INVALID_ENUM);
         return GLES_OK;
     }
     unsigned int err = check_image(level, width, height, border);
-    if (!err && !is_base_format((unsigned int)internalformat))
+    if (!err && !is_upload_format((unsigned int)internalformat))
         err = GL_INVALID_VALUE;
     if (!err && ((unsigned int)internalformat != format || !pixel_bytes(format, type)))
         err = GL_INVALID_OPERATION;
@@ -409,7 +424,7 @@ int gles_TexImage2D(GlesContext *ctx, unsigned int target, int level, int intern
     }
     t->level_format[level] = format;
     if (level == 0) {
-        t->format = format;
+        t->format = base_format(format);
         t->paletted = 0;
     }
     if (pixels) {
@@ -427,7 +442,7 @@ int gles_TexImage2D(GlesContext *ctx, unsigned int target, int level, int intern
 int gles_TexSubImage2D(GlesContext *ctx, unsigned int target, int level, int xoffset, int yoffset, int width,
                        int height, unsigned int format, unsigned int type, const void *pixels, int64_t nbytes)
 {
-    if (target != GL_TEXTURE_2D || !is_base_format(format)
+    if (target != GL_TEXTURE_2D || !is_upload_format(format)
         || (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT_5_6_5 && type != GL_UNSIGNED_SHORT_4_4_4_4
             && type != GL_UNSIGNED_SHORT_5_5_5_1)) {
         ctx_error(ctx, GL_INVALID_ENUM);
@@ -587,7 +602,9 @@ void gles_CopyTexSubImage2D(GlesContext *ctx, unsigned int target, int level, in
         ctx_error(ctx, GL_INVALID_VALUE);
         return;
     }
-    if (t->paletted || !copy_compatible(ctx, t->level_format[level])) {
+    /* ETC1 levels take no sub-images (OES_compressed_ETC1_RGB8_texture) */
+    if (t->paletted || t->level_format[level] == GL_ETC1_RGB8_OES
+        || !copy_compatible(ctx, base_format(t->level_format[level]))) {
         ctx_error(ctx, GL_INVALID_OPERATION);
         return;
     }
@@ -596,7 +613,7 @@ void gles_CopyTexSubImage2D(GlesContext *ctx, unsigned int target, int level, in
         return;
     }
     for (int j = 0; j < height && width; j++)
-        copy_framebuffer_row(ctx, x, (int64_t)y + j, width, t->level_format[level],
+        copy_framebuffer_row(ctx, x, (int64_t)y + j, width, base_format(t->level_format[level]),
                              li->texels + (size_t)(yoffset + j) * (size_t)li->width + (size_t)xoffset);
     if (width && height)
         image_changed(ctx, t, level);
@@ -649,9 +666,121 @@ int64_t texture_paletted_bytes(unsigned int internalformat, int levels, int widt
     return bytes;
 }
 
+/* {====================================================================
+** OES_compressed_ETC1_RGB8_texture: 4x4 blocks of 64 bits, most
+** significant byte first, in rows of blocks from the image's first row;
+** each block two half-blocks (2x4 side by side, or 4x2 one above the
+** other with the flip bit) of a base colour and an intensity table, each
+** texel the base plus one of its table's four modifiers, clamped */
+
+static const int etc1_modifiers[8][2] = {
+    { 2, 8 }, { 5, 17 }, { 9, 29 }, { 13, 42 }, { 18, 60 }, { 24, 80 }, { 33, 106 }, { 47, 183 },
+};
+
+static int64_t etc1_bytes(int width, int height)
+{
+    return (((int64_t)width + 3) / 4) * (((int64_t)height + 3) / 4) * 8;
+}
+
+static int etc1_clamp(int v) { return v < 0 ? 0 : (v > 255 ? 255 : v); }
+
+/* one block's 16 texels into out (row stride `stride`), clipped to w x h */
+static void etc1_block(const uint8_t *p, uint32_t *out, int64_t stride, int w, int h)
+{
+    const uint32_t hi = (uint32_t)p[0] << 24 | (uint32_t)p[1] << 16 | (uint32_t)p[2] << 8 | p[3];
+    const uint32_t lo = (uint32_t)p[4] << 24 | (uint32_t)p[5] << 16 | (uint32_t)p[6] << 8 | p[7];
+    int base[2][3];
+    if (hi & 2) {
+        /* differential: a 5-bit colour and a signed 3-bit offset to the
+        ** second (a sum outside 0..31 is undefined; it wraps to 5 bits) */
+        for (int c = 0; c < 3; c++) {
+            const int shift = 27 - 8 * c;
+            const int c1 = (int)(hi >> shift) & 31;
+            const int d3 = (int)(hi >> (shift - 3)) & 7, d = d3 >= 4 ? d3 - 8 : d3;
+            const int c2 = (c1 + d) & 31;
+            base[0][c] = c1 << 3 | c1 >> 2;
+            base[1][c] = c2 << 3 | c2 >> 2;
+        }
+    } else {
+        /* individual: two 4-bit colours */
+        for (int c = 0; c < 3; c++) {
+            const int c1 = (int)(hi >> (28 - 8 * c)) & 15, c2 = (int)(hi >> (24 - 8 * c)) & 15;
+            base[0][c] = c1 * 17;
+            base[1][c] = c2 * 17;
+        }
+    }
+    const int table[2] = { (int)(hi >> 5) & 7, (int)(hi >> 2) & 7 };
+    const int flip = hi & 1;
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            const int half = flip ? y >= 2 : x >= 2;
+            const int bit = x * 4 + y;                  /* texels by columns */
+            const int msb = (lo >> (bit + 16)) & 1, lsb = (lo >> bit) & 1;
+            const int m = etc1_modifiers[table[half]][lsb];
+            const int mod = msb ? -m : m;
+            out[y * stride + x] = pack((uint32_t)etc1_clamp(base[half][0] + mod),
+                                       (uint32_t)etc1_clamp(base[half][1] + mod),
+                                       (uint32_t)etc1_clamp(base[half][2] + mod), 255);
+        }
+}
+
+static void etc1_decode(const uint8_t *data, int width, int height, uint32_t *out)
+{
+    for (int by = 0; by < height; by += 4)
+        for (int bx = 0; bx < width; bx += 4, data += 8)
+            etc1_block(data, out + (int64_t)by * width + bx, width, width - bx < 4 ? width - bx : 4,
+                       height - by < 4 ? height - by : 4);
+}
+
+static void compressed_etc1(GlesContext *ctx, int level, int width, int height, int border, int image_size,
+                            const void *data, int64_t nbytes, int *status)
+{
+    *status = GLES_OK;
+    /* the extension's own rule for a border (ES 1.1's general one is
+    ** INVALID_VALUE) */
+    if (border != 0) {
+        ctx_error(ctx, GL_INVALID_OPERATION);
+        return;
+    }
+    if (check_image(level, width, height, border)) {
+        ctx_error(ctx, GL_INVALID_VALUE);
+        return;
+    }
+    const int64_t need = etc1_bytes(width, height);
+    if (image_size < 0 || image_size != need) {
+        ctx_error(ctx, GL_INVALID_VALUE);
+        return;
+    }
+    if (need && (!data || (nbytes >= 0 && nbytes < need))) {
+        *status = ctx_message(ctx, GLES_EVALUE, "CompressedTexImage2D reads %lld bytes, the data holds %lld",
+                              (long long)need, (long long)nbytes);
+        return;
+    }
+    Texture *t = active_unit(ctx)->bound;
+    TexImage *li = &t->level[level];
+    if (!image_fits(ctx, t, level, width, height) || !level_alloc(ctx, li, width, height)) {
+        ctx_error(ctx, GL_OUT_OF_MEMORY);
+        return;
+    }
+    etc1_decode(data, width, height, li->texels);
+    t->level_format[level] = GL_ETC1_RGB8_OES;
+    if (level == 0) {
+        t->format = GL_RGB;
+        t->paletted = 0;
+    }
+    image_changed(ctx, t, level);
+}
+
+/* }==================================================================== */
+
 int gles_CompressedTexImage2D(GlesContext *ctx, unsigned int target, int level, unsigned int internalformat,
                               int width, int height, int border, int image_size, const void *data, int64_t nbytes)
 {
+    if (target == GL_TEXTURE_2D && internalformat == GL_ETC1_RGB8_OES) {
+        int st;
+        compressed_etc1(ctx, level, width, height, border, image_size, data, nbytes, &st);
+        return st;
+    }
     const PaletteFormat *pf = palette_format(internalformat);
     if (target != GL_TEXTURE_2D || !pf) {
         ctx_error(ctx, GL_INVALID_ENUM);
@@ -718,12 +847,12 @@ void gles_CompressedTexSubImage2D(GlesContext *ctx, unsigned int target, int lev
                                   int width, int height, unsigned int format, int image_size, const void *data)
 {
     (void)level; (void)xoffset; (void)yoffset; (void)width; (void)height; (void)image_size; (void)data;
-    if (target != GL_TEXTURE_2D || !palette_format(format)) {
+    if (target != GL_TEXTURE_2D || (!palette_format(format) && format != GL_ETC1_RGB8_OES)) {
         ctx_error(ctx, GL_INVALID_ENUM);
         return;
     }
-    /* OES_compressed_paletted_texture: sub-images of paletted textures are
-    ** not supported */
+    /* OES_compressed_paletted_texture and OES_compressed_ETC1_RGB8_texture:
+    ** sub-images of their textures are not supported */
     ctx_error(ctx, GL_INVALID_OPERATION);
 }
 
@@ -767,6 +896,16 @@ void gles_TexParameter(GlesContext *ctx, unsigned int target, unsigned int pname
     case GL_GENERATE_MIPMAP:
         t->generate_mipmap = p[0] != 0.0;
         break;
+    case GL_TEXTURE_MAX_LEVEL_APPLE: {
+        /* an integer state: a real value rounds (§2.3.1) */
+        const int64_t level = dbl_to_i64(p[0], INT32_MIN, INT32_MAX);
+        if (level < 0) {
+            ctx_error(ctx, GL_INVALID_VALUE);
+            return;
+        }
+        t->level_limit = (int)level;
+        break;
+    }
     case GL_TEXTURE_CROP_RECT_OES:
         if (!vector) {
             ctx_error(ctx, GL_INVALID_ENUM);
@@ -796,6 +935,7 @@ int gles_GetTexParameter(GlesContext *ctx, unsigned int target, unsigned int pna
     case GL_TEXTURE_WRAP_S: out[0] = t->wrap_s; return 1;
     case GL_TEXTURE_WRAP_T: out[0] = t->wrap_t; return 1;
     case GL_GENERATE_MIPMAP: out[0] = t->generate_mipmap; return 1;
+    case GL_TEXTURE_MAX_LEVEL_APPLE: out[0] = t->level_limit; return 1;
     case GL_TEXTURE_CROP_RECT_OES:
         for (int i = 0; i < 4; i++)
             out[i] = t->crop[i];
@@ -957,12 +1097,13 @@ int texture_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)
     switch (pname) {
     case GL_MAX_TEXTURE_SIZE: out[0] = GLES_MAX_TEXTURE_SIZE; return 1;
     case GL_TEXTURE_BINDING_2D: out[0] = active_unit(ctx)->bound->name; return 1;
-    case GL_NUM_COMPRESSED_TEXTURE_FORMATS: out[0] = 10; return 1;
+    case GL_NUM_COMPRESSED_TEXTURE_FORMATS: out[0] = 11; return 1;
     case GL_COMPRESSED_TEXTURE_FORMATS:
         *kind = GLES_KIND_ENUM;
         for (int i = 0; i < 10; i++)
             out[i] = palette_formats[i].format;
-        return 10;
+        out[10] = GL_ETC1_RGB8_OES;
+        return 11;
     default: return 0;
     }
 }

@@ -255,9 +255,9 @@ ROWS = [
         lambda g, e: g.glDrawElements(G.GL_TRIANGLES, -3, G.GL_UNSIGNED_BYTE, bytes([0, 1, 2])), V),
     Row("DrawElements bad mode", "§2.6.1",
         lambda g, e: g.glDrawElements(GL_QUADS, 3, G.GL_UNSIGNED_BYTE, bytes([0, 1, 2])), E),
-    Row("DrawElements type UNSIGNED_INT", "§2.8",
-        lambda g, e: g.glDrawElements(G.GL_TRIANGLES, 3, G.GL_UNSIGNED_INT, np.arange(3, dtype=np.uint32)),
-        E),
+    # (UNSIGNED_INT is an index type: OES_element_index_uint)
+    Row("DrawElements type INT", "§2.8",
+        lambda g, e: g.glDrawElements(G.GL_TRIANGLES, 3, GL_INT, np.arange(3, dtype=np.int32)), E),
     Row("DrawElements type BYTE", "§2.8",
         lambda g, e: g.glDrawElements(G.GL_TRIANGLES, 3, G.GL_BYTE, bytes([0, 1, 2])), E),
     Row("DrawElements type SHORT, element buffer", "§2.8, §2.9.2",

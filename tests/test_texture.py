@@ -344,8 +344,9 @@ def test_limits_and_initial_state():
     assert gl.glGetIntegerv(C.GL_MAX_TEXTURE_SIZE) == 2048
     assert gl.glGetIntegerv(C.GL_ACTIVE_TEXTURE) == C.GL_TEXTURE0
     assert gl.glGetIntegerv(C.GL_CLIENT_ACTIVE_TEXTURE) == C.GL_TEXTURE0
-    assert gl.glGetIntegerv(C.GL_NUM_COMPRESSED_TEXTURE_FORMATS) == 10
-    assert sorted(gl.glGetIntegerv(C.GL_COMPRESSED_TEXTURE_FORMATS)) == list(range(0x8B90, 0x8B9A))
+    # the ten paletted formats and ETC1_RGB8_OES
+    assert gl.glGetIntegerv(C.GL_NUM_COMPRESSED_TEXTURE_FORMATS) == 11
+    assert sorted(gl.glGetIntegerv(C.GL_COMPRESSED_TEXTURE_FORMATS)) == list(range(0x8B90, 0x8B9A)) + [0x8D64]
     for u in range(4):
         gl.glActiveTexture(C.GL_TEXTURE0 + u)
         assert gl.glGetIntegerv(C.GL_ACTIVE_TEXTURE) == C.GL_TEXTURE0 + u

@@ -289,6 +289,16 @@ def _equation(name: str, a: np.ndarray, b: np.ndarray) -> np.ndarray:
             "GL_FUNC_REVERSE_SUBTRACT_OES": b - a}[name]
 
 
+def _blended(eq: str, s: np.ndarray, d: np.ndarray, fs: np.ndarray, fd: np.ndarray) -> np.ndarray:
+    """One equation of §4.1.7 on source s and destination d with factors fs, fd; EXT_blend_minmax's
+    MIN and MAX take the colours themselves, no factors."""
+    if eq == "GL_MIN_EXT":
+        return np.minimum(s, d)
+    if eq == "GL_MAX_EXT":
+        return np.maximum(s, d)
+    return _equation(eq, s * fs, d * fd)
+
+
 def _blend_case(t: TestContext, rng: np.random.Generator, funcs: Sequence[str], eqs: Sequence[str] | None,
                 where: str) -> None:
     """Random destination and source cells; blended with funcs = (src_rgb, dst_rgb, src_a, dst_a)
@@ -310,8 +320,8 @@ def _blend_case(t: TestContext, rng: np.random.Generator, funcs: Sequence[str], 
     _cells(t, src_c)
     gl.glDisable(gl.GL_BLEND)
     s = _per_pixel(t, src_c) / 255.0
-    rgb = _equation(eqs[0], s * _factor(funcs[0], s, d), d * _factor(funcs[1], s, d))
-    alpha = _equation(eqs[1], s * _factor(funcs[2], s, d), d * _factor(funcs[3], s, d))
+    rgb = _blended(eqs[0], s, d, _factor(funcs[0], s, d), _factor(funcs[1], s, d))
+    alpha = _blended(eqs[1], s, d, _factor(funcs[2], s, d), _factor(funcs[3], s, d))
     want = np.clip(np.concatenate([rgb[..., :3], alpha[..., 3:]], axis=-1), 0.0, 1.0)
     _expect_image(t, t.read(), want, where, extra=_blend_slack(t))
 
@@ -379,6 +389,30 @@ def blend_separate(t: TestContext) -> None:
         got = [gl.glGetIntegerv(getattr(gl, p)) for p in names]
         _expect_state(t, "the four blend factors", got, [getattr(gl, n) for n in funcs],
                       "OES_blend_func_separate")
+    gl.glBlendEquationSeparateOES(gl.GL_FUNC_ADD_OES, gl.GL_FUNC_ADD_OES)
+
+
+@conformance_test("Blend.minmax", section="EXT_blend_minmax", uses=("blend",), visuals=RGBA_VISUALS)
+def blend_minmax(t: TestContext) -> None:
+    """EXT_blend_minmax: MIN_EXT and MAX_EXT take the smaller and larger of source and destination
+    whatever the factors, alone and beside the other equations for RGB or alpha."""
+    _need_extension(t, "GL_EXT_blend_minmax")
+    gl = t.gl
+    t.ortho_pixels()
+    rng = np.random.default_rng(44)
+    others = ["GL_FUNC_ADD_OES"]
+    if _has_extension(t, "GL_OES_blend_subtract"):
+        others += ["GL_FUNC_SUBTRACT_OES", "GL_FUNC_REVERSE_SUBTRACT_OES"]
+    cases = [("GL_MIN_EXT", "GL_MIN_EXT"), ("GL_MAX_EXT", "GL_MAX_EXT"), ("GL_MIN_EXT", "GL_MAX_EXT"),
+             ("GL_MAX_EXT", "GL_MIN_EXT")]
+    cases += [(str(rng.choice(["GL_MIN_EXT", "GL_MAX_EXT"])), str(rng.choice(others))) for _ in range(4)]
+    cases += [(str(rng.choice(others)), str(rng.choice(["GL_MIN_EXT", "GL_MAX_EXT"]))) for _ in range(4)]
+    for eq in cases:
+        funcs = (str(rng.choice(SRC_FACTORS)), str(rng.choice(DST_FACTORS)), str(rng.choice(SRC_FACTORS)),
+                 str(rng.choice(DST_FACTORS)))
+        _blend_case(t, rng, funcs, eq, f"BlendFuncSeparateOES{funcs}, BlendEquationSeparateOES{eq}")
+        _expect_state(t, "GL_BLEND_EQUATION_RGB_OES", gl.glGetIntegerv(gl.GL_BLEND_EQUATION_RGB_OES),
+                      getattr(gl, eq[0]), "EXT_blend_minmax")
     gl.glBlendEquationSeparateOES(gl.GL_FUNC_ADD_OES, gl.GL_FUNC_ADD_OES)
 
 

@@ -965,7 +965,6 @@ def vertexorder_flat(t: TestContext) -> None:
     """Flat shading takes the colour of vertex 3i, i+2, i+2 for lists, strips, fans (Table 2.10)."""
     gl = t.gl
     t.ortho_pixels()
-    w, h = t.width, t.height
     palette = [RED, GREEN, BLUE, (255, 255, 0, 255), (0, 255, 255, 255), (255, 0, 255, 255), WHITE]
     gl.glShadeModel(gl.GL_FLAT)
     lists = [(2, 2), (20, 3), (10, 18.5), (24, 2), (44, 6), (30, 20),
@@ -995,23 +994,56 @@ def vertexorder_flat(t: TestContext) -> None:
                 arr[p], carr[p] = vs[k], colors[k]
             t.draw(mode, arr, carr, indices=order)
         t.check_gl_error(name)
-        img = t.read()
-        ntri = len(vs) // 3 if mode == gl.GL_TRIANGLES else len(vs) - 2
-        for i in range(ntri):
-            if mode == gl.GL_TRIANGLES:
-                tri = [vs[3 * i], vs[3 * i + 1], vs[3 * i + 2]]
-            elif mode == gl.GL_TRIANGLE_STRIP:
-                tri = [vs[i], vs[i + 1], vs[i + 2]]
-            else:
-                tri = [vs[0], vs[i + 1], vs[i + 2]]
-            inside, _ = coverage([np.array(tri, dtype=np.float64)], w, h, 0.5)
-            if not inside.any():
-                t.fail("test bug: triangle too thin")
-            want = colors[prov(i)]
-            wrong = inside & ~matches(t, img, want)
-            if wrong.any():
-                t.fail(f"{name}: triangle {i + 1} is not flat shaded with vertex {prov(i) + 1}'s colour "
-                       f"{want}: {first(wrong)}")
+        _expect_flat(t, name, mode, vs, colors, prov)
+    gl.glShadeModel(gl.GL_SMOOTH)
+
+
+def _expect_flat(t: TestContext, name: str, mode: int, vs: Sequence[Any], colors: Sequence[Any],
+                 prov: Any) -> None:
+    """Each triangle of the drawn `mode` over `vs` covers its pixels in the
+    colour of vertex prov(i)."""
+    gl = t.gl
+    w, h = t.width, t.height
+    img = t.read()
+    ntri = len(vs) // 3 if mode == gl.GL_TRIANGLES else len(vs) - 2
+    for i in range(ntri):
+        if mode == gl.GL_TRIANGLES:
+            tri = [vs[3 * i], vs[3 * i + 1], vs[3 * i + 2]]
+        elif mode == gl.GL_TRIANGLE_STRIP:
+            tri = [vs[i], vs[i + 1], vs[i + 2]]
+        else:
+            tri = [vs[0], vs[i + 1], vs[i + 2]]
+        inside, _ = coverage([np.array(tri, dtype=np.float64)], w, h, 0.5)
+        if not inside.any():
+            t.fail("test bug: triangle too thin")
+        want = colors[prov(i)]
+        wrong = inside & ~matches(t, img, want)
+        if wrong.any():
+            t.fail(f"{name}: triangle {i + 1} is not flat shaded with vertex {prov(i) + 1}'s colour "
+                   f"{want}: {first(wrong)}")
+
+
+@conformance_test("VertexOrder.uint", section="OES_element_index_uint", uses=("shademodel",))
+def vertexorder_uint(t: TestContext) -> None:
+    """DrawElements with UNSIGNED_INT indices past 65535 draws the triangles they name, flat
+    shaded by the provoking vertex (OES_element_index_uint, Table 2.10)."""
+    gl = t.gl
+    t.ortho_pixels()
+    gl.glShadeModel(gl.GL_FLAT)
+    palette = [RED, GREEN, BLUE, (255, 255, 0, 255), WHITE]
+    strip = [(2, 4), (6, 60), (20, 3), (24, 62), (40, 2), (44, 61.5), (58, 5), (62, 60)]
+    base = 70000                       # the vertices sit past the reach of 16-bit indices
+    order = [base + 3, base + 6, base + 0, base + 7, base + 1, base + 5, base + 2, base + 4]
+    colors = [palette[i % len(palette)] for i in range(len(strip))]
+    arr = [(-100.0, -100.0)] * (base + len(strip))
+    carr = [BLACK] * (base + len(strip))
+    for k, p in enumerate(order):
+        arr[p], carr[p] = strip[k], colors[k]
+    t.clear()
+    t.draw(gl.GL_TRIANGLE_STRIP, arr, carr, indices=order, index_type=gl.GL_UNSIGNED_INT)
+    t.check_gl_error("TRIANGLE_STRIP by DrawElements, UNSIGNED_INT")
+    _expect_flat(t, "TRIANGLE_STRIP by DrawElements, UNSIGNED_INT", gl.GL_TRIANGLE_STRIP, strip, colors,
+                 lambda i: i + 2)
     gl.glShadeModel(gl.GL_SMOOTH)
 
 

@@ -1,9 +1,10 @@
 """Texturing: images, mipmaps, wrap modes, paletted textures, environments.
 
 Categories Mip, MipLevels, MipLin, MipSelect, MultiTex, TexDecal, TexPalet,
-TextureEdgeClamp, TexCombine, CopyTex and PackedPixels (spec sections 3.6.2,
-3.7 and OES_compressed_paletted_texture, OES_texture_env_crossbar,
-OES_texture_mirrored_repeat).
+TexETC1, TexBGRA, TextureEdgeClamp, TexCombine, CopyTex and PackedPixels
+(spec sections 3.6.2, 3.7 and OES_compressed_paletted_texture,
+OES_compressed_ETC1_RGB8_texture, EXT_texture_format_BGRA8888,
+OES_texture_env_crossbar, OES_texture_mirrored_repeat).
 
 Every test uses Common-Lite commands only (x and i forms; GL_SHORT vertices,
 GL_FIXED / GL_SHORT / GL_BYTE texture coordinates), so it runs in both
@@ -27,7 +28,7 @@ from typing import Any
 
 import numpy as np
 
-from ..harness import TestContext, conformance_test
+from ..harness import TestContext, Unsupported, conformance_test
 
 ONE = 1 << 16
 VISUALS = ("rgba8888", "rgb565")
@@ -294,13 +295,14 @@ def _lambda_quad(x: int, y: int, width: int, height: int, lam: float, size: int 
     return ((0.0, 0.5), (s1, 0.5)), float(np.log2(s1 * size / width))
 
 
-def _level_rows(t: TestContext, x: int, d: int, w0: int, h0: int) -> None:
+def _level_rows(t: TestContext, x: int, d: int, w0: int, h0: int,
+                color: Sequence[int] = (255, 255, 255, 255)) -> None:
     """Level d of a w0 x h0 mipmap one texel per pixel at (x, 0): one quad per texel
     row, s across the image (lambda = d exactly), t constant at the row's centre."""
     w, h = max(w0 >> d, 1), max(h0 >> d, 1)
     for j in range(h):
         tj = (j + 0.5) / h
-        _quad(t, x, j, x + w, j + 1, [((0.0, tj), (1.0, tj))])
+        _quad(t, x, j, x + w, j + 1, [((0.0, tj), (1.0, tj))], color=color)
 
 
 MIN_FILTERS = ("NEAREST", "LINEAR", "NEAREST_MIPMAP_NEAREST", "LINEAR_MIPMAP_NEAREST",
@@ -657,6 +659,197 @@ def tex_palet_errors(t: TestContext) -> None:
     t.check_gl_error("CompressedTexImage2D")
     gl.glCompressedTexSubImage2D(gl.GL_TEXTURE_2D, 0, 0, 0, 4, 4, token, len(data), data)
     t.check_gl_error("CompressedTexSubImage2D of a paletted texture", gl.GL_INVALID_OPERATION)
+
+
+# {============================================================
+# TexETC1: OES_compressed_ETC1_RGB8_texture, decoded here from the
+# extension's tables and bit layout
+
+# table codeword -> the modifiers of pixel index values 0..3: "00" the small
+# positive, "01" the large positive, "10" the small negative, "11" the large negative
+ETC1_MODIFIERS = np.array([[2, 8, -2, -8], [5, 17, -5, -17], [9, 29, -9, -29], [13, 42, -13, -42],
+                           [18, 60, -18, -60], [24, 80, -24, -80], [33, 106, -33, -106],
+                           [47, 183, -47, -183]])
+
+
+def etc1_decode(data: bytes, w: int, h: int) -> np.ndarray:
+    """(h, w, 3) uint8 texels of a w x h ETC1 image: 64-bit blocks, most
+    significant byte first, four by four texels, in rows of blocks."""
+    bw, bh = (w + 3) // 4, (h + 3) // 4
+    out = np.zeros((bh * 4, bw * 4, 3), np.int64)
+    blocks = np.frombuffer(data, dtype=">u8").reshape(bh, bw)
+    for by in range(bh):
+        for bx in range(bw):
+            v = int(blocks[by, bx])
+
+            def bits(hi: int, lo: int, v: int = v) -> int:
+                return (v >> lo) & ((1 << (hi - lo + 1)) - 1)
+
+            if bits(33, 33):        # differential: 5-bit base, signed 3-bit offset to the second
+                base1 = [bits(63, 59), bits(55, 51), bits(47, 43)]
+                delta = [bits(58, 56), bits(50, 48), bits(42, 40)]
+                base2 = [b + (d - 8 if d >= 4 else d) for b, d in zip(base1, delta)]
+                if not all(0 <= b <= 31 for b in base2):
+                    raise ValueError("an ETC1 block whose second colour is undefined")
+                colors = [[(c << 3) | (c >> 2) for c in b] for b in (base1, base2)]
+            else:                   # individual: two 4-bit bases
+                base1 = [bits(63, 60), bits(55, 52), bits(47, 44)]
+                base2 = [bits(59, 56), bits(51, 48), bits(43, 40)]
+                colors = [[c * 17 for c in b] for b in (base1, base2)]
+            tables, flip = (bits(39, 37), bits(36, 34)), bits(32, 32)
+            for x in range(4):
+                for y in range(4):
+                    k = x * 4 + y               # texels by columns
+                    index = (bits(k + 16, k + 16) << 1) | bits(k, k)
+                    half = int(y >= 2) if flip else int(x >= 2)
+                    mod = ETC1_MODIFIERS[tables[half], index]
+                    out[by * 4 + y, bx * 4 + x] = np.clip(np.array(colors[half]) + mod, 0, 255)
+    return out[:h, :w].astype(np.uint8)
+
+
+def etc1_random(rng: np.random.Generator, w: int, h: int) -> bytes:
+    """Random blocks of both modes and both flips, none whose differential
+    second colour leaves 0..31 (undefined by the extension)."""
+    out = bytearray()
+    for _ in range(((w + 3) // 4) * ((h + 3) // 4)):
+        b = bytearray(rng.integers(0, 256, 8, dtype=np.uint8).tobytes())
+        if b[3] & 2:
+            for c in range(3):
+                d = b[c] & 7
+                if not 0 <= (b[c] >> 3) + (d - 8 if d >= 4 else d) <= 31:
+                    b[c] ^= 4       # the offset's other sign stays in range
+        out += b
+    return bytes(out)
+
+
+@conformance_test("TexETC1", section="OES_compressed_ETC1_RGB8_texture", visuals=VISUALS, size=(64, 16))
+def tex_etc1(t: TestContext) -> None:
+    """ETC1_RGB8_OES is in COMPRESSED_TEXTURE_FORMATS and decodes to the extension's texels
+    (an RGB texture): 16x4, 4x4, 2x2 and 1x1 images of random blocks shown one texel a pixel,
+    and a mipmap chain of ETC1 levels complete under NEAREST_MIPMAP_NEAREST."""
+    gl = t.gl
+    listed = {int(v) for v in np.atleast_1d(gl.glGetIntegerv(gl.GL_COMPRESSED_TEXTURE_FORMATS))}
+    if gl.GL_ETC1_RGB8_OES not in listed:
+        t.fail("GL_ETC1_RGB8_OES is not in COMPRESSED_TEXTURE_FORMATS")
+    rng = np.random.default_rng(12)
+    for w, h in ((16, 4), (4, 4), (2, 2), (1, 1)):
+        data = etc1_random(rng, w, h)
+        _prepare(t)
+        gl.glBindTexture(gl.GL_TEXTURE_2D, 4)
+        gl.glCompressedTexImage2D(gl.GL_TEXTURE_2D, 0, gl.GL_ETC1_RGB8_OES, w, h, 0, len(data), data)
+        t.check_gl_error(f"glCompressedTexImage2D(ETC1_RGB8_OES, {w}x{h})")
+        _params(t)
+        gl.glEnable(gl.GL_TEXTURE_2D)
+        _env(t, "REPLACE")
+        _level_rows(t, 0, 0, w, h)
+        rgba = np.concatenate([etc1_decode(data, w, h), np.full((h, w, 1), 255, np.uint8)], -1)
+        want = _base(_u(rgba), "RGB")
+        _check(t, t.read(), 0, 0, want, f"ETC1 {w}x{h}")
+    # levels 0..2 of a 4x4 chain, each at its lambda
+    levels = [etc1_random(rng, s, s) for s in (4, 2, 1)]
+    _prepare(t)
+    gl.glBindTexture(gl.GL_TEXTURE_2D, 5)
+    for d, (s, data) in enumerate(zip((4, 2, 1), levels)):
+        gl.glCompressedTexImage2D(gl.GL_TEXTURE_2D, d, gl.GL_ETC1_RGB8_OES, s, s, 0, len(data), data)
+    t.check_gl_error("ETC1 levels 0..2")
+    _params(t, "NEAREST_MIPMAP_NEAREST")
+    gl.glEnable(gl.GL_TEXTURE_2D)
+    _env(t, "REPLACE")
+    x = 0
+    for d in range(3):
+        _level_rows(t, x, d, 4, 4)
+        x += (4 >> d) + 2
+    img = t.read()
+    x = 0
+    for d, s in enumerate((4, 2, 1)):
+        rgb = etc1_decode(levels[d], s, s)
+        want = _base(_u(np.concatenate([rgb, np.full((s, s, 1), 255, np.uint8)], -1)), "RGB")
+        _check(t, img, x, 0, want, f"ETC1 mipmap level {d}")
+        x += s + 2
+    t.check_gl_error("TexETC1")
+
+
+@conformance_test("TexETC1.errors", section="OES_compressed_ETC1_RGB8_texture")
+def tex_etc1_errors(t: TestContext) -> None:
+    """ETC1 errors: an imageSize other than ceil(w/4) ceil(h/4) 8 is INVALID_VALUE; the
+    texture's ETC1 levels take no TexSubImage2D, CompressedTexSubImage2D (unless
+    EXT_compressed_ETC1_RGB8_sub_texture is listed) or CopyTexSubImage2D (INVALID_OPERATION)."""
+    gl = t.gl
+    data = etc1_random(np.random.default_rng(2), 4, 4)
+    gl.glBindTexture(gl.GL_TEXTURE_2D, 2)
+    gl.glCompressedTexImage2D(gl.GL_TEXTURE_2D, 0, gl.GL_ETC1_RGB8_OES, 4, 4, 0, 7, data)
+    t.check_gl_error("CompressedTexImage2D with imageSize one short", gl.GL_INVALID_VALUE)
+    gl.glCompressedTexImage2D(gl.GL_TEXTURE_2D, 0, gl.GL_ETC1_RGB8_OES, 4, 4, 0, 8, data)
+    t.check_gl_error("CompressedTexImage2D")
+    ext = gl.glGetString(gl.GL_EXTENSIONS) or b""
+    names = (ext.decode() if isinstance(ext, bytes) else ext).split()
+    if "GL_EXT_compressed_ETC1_RGB8_sub_texture" not in names:
+        # (that extension allows whole-block sub-images)
+        gl.glCompressedTexSubImage2D(gl.GL_TEXTURE_2D, 0, 0, 0, 4, 4, gl.GL_ETC1_RGB8_OES, 8, data)
+        t.check_gl_error("CompressedTexSubImage2D of an ETC1 texture", gl.GL_INVALID_OPERATION)
+    gl.glTexSubImage2D(gl.GL_TEXTURE_2D, 0, 0, 0, 1, 1, gl.GL_RGB, gl.GL_UNSIGNED_BYTE, np.zeros(4, np.uint8))
+    t.check_gl_error("TexSubImage2D of an ETC1 texture", gl.GL_INVALID_OPERATION)
+    gl.glCopyTexSubImage2D(gl.GL_TEXTURE_2D, 0, 0, 0, 0, 0, 1, 1)
+    t.check_gl_error("CopyTexSubImage2D of an ETC1 texture", gl.GL_INVALID_OPERATION)
+
+
+@conformance_test("TexBGRA", section="EXT_texture_format_BGRA8888", visuals=VISUALS, size=(64, 16))
+def tex_bgra(t: TestContext) -> None:
+    """BGRA_EXT / UNSIGNED_BYTE images are RGBA textures with the bytes swapped, by
+    TexImage2D and TexSubImage2D, under REPLACE and MODULATE."""
+    gl = t.gl
+    rng = np.random.default_rng(6)
+    rgba = rng.integers(0, 256, size=(4, 16, 4), dtype=np.uint8)
+    patch = rng.integers(0, 256, size=(2, 3, 4), dtype=np.uint8)
+    want_tex = rgba.copy()
+    want_tex[1:3, 5:8] = patch
+    for mode, frag in (("REPLACE", (255, 255, 255, 255)), ("MODULATE", (200, 100, 50, 128))):
+        _prepare(t)
+        gl.glPixelStorei(gl.GL_UNPACK_ALIGNMENT, 1)
+        gl.glBindTexture(gl.GL_TEXTURE_2D, 6)
+        bgra = np.ascontiguousarray(rgba[..., [2, 1, 0, 3]])
+        gl.glTexImage2D(gl.GL_TEXTURE_2D, 0, gl.GL_BGRA_EXT, 16, 4, 0, gl.GL_BGRA_EXT, gl.GL_UNSIGNED_BYTE,
+                        bgra)
+        gl.glTexSubImage2D(gl.GL_TEXTURE_2D, 0, 5, 1, 3, 2, gl.GL_BGRA_EXT, gl.GL_UNSIGNED_BYTE,
+                           np.ascontiguousarray(patch[..., [2, 1, 0, 3]]))
+        t.check_gl_error(f"BGRA uploads ({mode})")
+        _params(t)
+        gl.glEnable(gl.GL_TEXTURE_2D)
+        _env(t, mode)
+        _level_rows(t, 0, 0, 16, 4, color=frag)
+        cs = _u(want_tex)
+        want = _classic(mode, "RGBA", np.broadcast_to(_u(frag), cs.shape), cs)
+        _check(t, t.read(), 0, 0, want, f"BGRA texture, {mode}")
+    gl.glTexImage2D(gl.GL_TEXTURE_2D, 0, gl.GL_RGBA, 1, 1, 0, gl.GL_BGRA_EXT, gl.GL_UNSIGNED_BYTE,
+                    np.zeros(4, np.uint8))
+    t.check_gl_error("TexImage2D with internalformat RGBA, format BGRA_EXT", gl.GL_INVALID_OPERATION)
+
+
+@conformance_test("MipLevels.maxlevel", section="APPLE_texture_max_level", visuals=VISUALS, size=(16, 8))
+def mip_levels_max_level(t: TestContext) -> None:
+    """APPLE_texture_max_level: TEXTURE_MAX_LEVEL_APPLE (initially 1000) ends the levels a mipmapped
+    texture needs and samples: levels 0..2 of a 32x32 chain with the limit 2 are complete, and
+    lambda 3 or 4 shows level 2; a negative limit is INVALID_VALUE."""
+    gl = t.gl
+    ext = gl.glGetString(gl.GL_EXTENSIONS) or b""
+    if "GL_APPLE_texture_max_level" not in (ext.decode() if isinstance(ext, bytes) else ext).split():
+        raise Unsupported("GL_APPLE_texture_max_level is not in GL_EXTENSIONS")
+    _prepare(t)
+    levels = _colour_levels()[:3]
+    _texture(t, levels, minf="NEAREST_MIPMAP_NEAREST")
+    if gl.glGetTexParameteriv(gl.GL_TEXTURE_2D, gl.GL_TEXTURE_MAX_LEVEL_APPLE) != 1000:
+        t.fail("TEXTURE_MAX_LEVEL_APPLE is not initially 1000")
+    gl.glTexParameteri(gl.GL_TEXTURE_2D, gl.GL_TEXTURE_MAX_LEVEL_APPLE, -1)
+    t.check_gl_error("TEXTURE_MAX_LEVEL_APPLE -1", gl.GL_INVALID_VALUE)
+    gl.glTexParameterx(gl.GL_TEXTURE_2D, gl.GL_TEXTURE_MAX_LEVEL_APPLE, 2)
+    for x, lam in ((0, 0.0), (4, 1.0), (8, 3.0), (12, 4.0)):
+        coords, _ = _lambda_quad(x, 0, 4, 8, lam)
+        _quad(t, x, 0, x + 4, 8, [coords])
+    img = t.read()
+    for x, level in ((0, 0), (4, 1), (8, 2), (12, 2)):
+        want = np.broadcast_to(_u(_LEVEL_COLORS[level]), (8, 4, 4))
+        _check(t, img, x, 0, want, f"max level 2, level {level} at x = {x}")
+    t.check_gl_error("MipLevels.maxlevel")
 
 
 # {============================================================

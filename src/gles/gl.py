@@ -58,6 +58,12 @@ _DTYPES = {
     C.GL_FIXED: np.dtype(np.int32),
     C.GL_FLOAT: np.dtype(np.float32),
 }
+# glDrawElements' index types (GL_UNSIGNED_INT: OES_element_index_uint)
+_INDEX_DTYPES = {
+    C.GL_UNSIGNED_BYTE: np.dtype(np.uint8),
+    C.GL_UNSIGNED_SHORT: np.dtype(np.uint16),
+    C.GL_UNSIGNED_INT: np.dtype(np.uint32),
+}
 
 # the core's own numbers, read from it (every build exports the same)
 _CORE_LIB = _binding.core(_binding.NUMERICS[0]).lib
@@ -415,8 +421,10 @@ class GLBase:
         self._lib.gles_get(self._p, pname, self._d16, self._kind)
         return int(self._d16[0])
 
-    def _pointer(self, data: Pointer, gltype: int | None, binding: int, what: str) -> tuple[Any, int, Any]:
-        """(C pointer, byte length or -1, object to keep alive) for `data`."""
+    def _pointer(self, data: Pointer, gltype: int | None, binding: int, what: str,
+                 dtype: np.dtype | None = None) -> tuple[Any, int, Any]:
+        """(C pointer, byte length or -1, object to keep alive) for `data`
+        (whose elements are `dtype`, else the array type `gltype`'s)."""
         ffi = self._ffi
         if data is None:
             return ffi.NULL, 0, None
@@ -429,7 +437,7 @@ class GLBase:
             if binding == 0 or (self._bound(binding) == 0 and off != 0):
                 raise ValueError(f"{what}: an int is a byte offset and needs a bound buffer object")
             return ffi.cast("void *", off), -1, None
-        want = _DTYPES.get(gltype) if gltype is not None else None
+        want = dtype if dtype is not None else _DTYPES.get(gltype) if gltype is not None else None
         if isinstance(data, np.ndarray):
             if want is not None and data.dtype != want:
                 raise TypeError(
@@ -739,8 +747,10 @@ class GLBase:
 
     def glCompressedTexImage2D(self, target: int, level: int, internalformat: int, width: int, height: int,
                                border: int, imageSize: int, data: Pointer) -> None:
-        """OES_compressed_paletted_texture: the ten PALETTE*_OES formats; a
-        negative level gives -level + 1 mip levels in one image."""
+        """OES_compressed_paletted_texture's ten PALETTE*_OES formats, where
+        a negative level gives -level + 1 mip levels in one image, and
+        OES_compressed_ETC1_RGB8_texture's ETC1_RGB8_OES, one level of 4x4
+        blocks (imageSize = ceil(width / 4) * ceil(height / 4) * 8)."""
         # the GL rules (imageSize against the format, size and levels) come
         # first; the core raises for data shorter than it would read only after
         ptr, nbytes, keep = self._pixels(data, "glCompressedTexImage2D")
@@ -962,12 +972,13 @@ class GLBase:
             self._status(st, "glDrawArrays")
 
     def glDrawElements(self, mode: int, count: int, type: int, indices: Pointer) -> None:
-        if type not in (C.GL_UNSIGNED_BYTE, C.GL_UNSIGNED_SHORT):
+        if type not in _INDEX_DTYPES:
             # the core records INVALID_ENUM; nothing is read
             with self._lock:
                 self._lib.gles_DrawElements(self._p, mode, count, type, self._ffi.NULL, 0)
             return
-        ptr, nbytes, keep = self._pointer(indices, type, C.GL_ELEMENT_ARRAY_BUFFER_BINDING, "glDrawElements")
+        ptr, nbytes, keep = self._pointer(indices, type, C.GL_ELEMENT_ARRAY_BUFFER_BINDING, "glDrawElements",
+                                          _INDEX_DTYPES[type])
         with self._lock:
             st = self._lib.gles_DrawElements(self._p, mode, count, type, ptr, nbytes)
         del keep
