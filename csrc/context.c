@@ -635,7 +635,9 @@ int gles_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)
     case GL_DEPTH_BITS: return put1(out, kind, GLES_KIND_INT, ctx->depth_bits);
     case GL_STENCIL_BITS: return put1(out, kind, GLES_KIND_INT, ctx->stencil_bits);
     case GL_IMPLEMENTATION_COLOR_READ_FORMAT_OES:
-        return put1(out, kind, GLES_KIND_ENUM, ctx->color_format == GLES_COLOR_RGB565 ? GL_RGB : GL_RGBA);
+        /* the window's own byte order is RGBA, so the second pair (EXT_read_format_bgra's
+        ** BGRA_EXT) is the one a program cannot otherwise have */
+        return put1(out, kind, GLES_KIND_ENUM, ctx->color_format == GLES_COLOR_RGB565 ? GL_RGB : GL_BGRA_EXT);
     case GL_IMPLEMENTATION_COLOR_READ_TYPE_OES:
         return put1(out, kind, GLES_KIND_ENUM,
                     ctx->color_format == GLES_COLOR_RGB565 ? GL_UNSIGNED_SHORT_5_6_5 : GL_UNSIGNED_BYTE);

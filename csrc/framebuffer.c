@@ -121,15 +121,20 @@ int gles_ReadPixels(GlesContext *ctx, int x, int y, int width, int height,
         ctx_error(ctx, GL_INVALID_VALUE);
         return GLES_OK;
     }
-    int rgba = format == GL_RGBA && type == GL_UNSIGNED_BYTE;
+    /* the two pairs: RGBA/UNSIGNED_BYTE, and the window's implementation
+    ** pair (OES_read_format): RGB/5_6_5, or BGRA_EXT/UNSIGNED_BYTE
+    ** (EXT_read_format_bgra) */
+    const int bgra = ctx->color_format == GLES_COLOR_RGBA8888 && format == GL_BGRA_EXT && type == GL_UNSIGNED_BYTE;
+    const int rgba = (format == GL_RGBA && type == GL_UNSIGNED_BYTE) || bgra;
     int impl565 = ctx->color_format == GLES_COLOR_RGB565 && format == GL_RGB && type == GL_UNSIGNED_SHORT_5_6_5;
     if (!rgba && !impl565) {
         /* §4.3.1: a legal token pair that is not one of the two supported
         ** pairs is INVALID_OPERATION; an unknown token INVALID_ENUM */
         int fmt_known = format == GL_RGBA || format == GL_RGB || format == GL_ALPHA
-                     || format == GL_LUMINANCE || format == GL_LUMINANCE_ALPHA;
+                     || format == GL_LUMINANCE || format == GL_LUMINANCE_ALPHA || format == GL_BGRA_EXT;
         int type_known = type == GL_UNSIGNED_BYTE || type == GL_UNSIGNED_SHORT_5_6_5
-                      || type == GL_UNSIGNED_SHORT_4_4_4_4 || type == GL_UNSIGNED_SHORT_5_5_5_1;
+                      || type == GL_UNSIGNED_SHORT_4_4_4_4 || type == GL_UNSIGNED_SHORT_5_5_5_1
+                      || type == GL_UNSIGNED_SHORT_4_4_4_4_REV_EXT || type == GL_UNSIGNED_SHORT_1_5_5_5_REV_EXT;
         ctx_error(ctx, fmt_known && type_known ? GL_INVALID_OPERATION : GL_INVALID_ENUM);
         return GLES_OK;
     }
@@ -193,6 +198,12 @@ int gles_ReadPixels(GlesContext *ctx, int x, int y, int width, int height,
                 o[4 * i + 3] = 255;
             }
         }
+        if (bgra)
+            for (size_t i = 0; i < n; i++) {
+                uint8_t *o = row + 4 * (ix0 + (int64_t)i), r = o[0];
+                o[0] = o[2];
+                o[2] = r;
+            }
     }
     return GLES_OK;
 }

@@ -369,7 +369,7 @@ def test_rgb565_read_and_image(numeric):
 
 
 @pytest.mark.parametrize("color, fmt, typ", [("rgb565", G.GL_RGB, G.GL_UNSIGNED_SHORT_5_6_5),
-                                             ("rgba8888", G.GL_RGBA, G.GL_UNSIGNED_BYTE)])
+                                             ("rgba8888", G.GL_BGRA_EXT, G.GL_UNSIGNED_BYTE)])
 def test_implementation_read_format(color, fmt, typ):
     """IMPLEMENTATION_COLOR_READ_FORMAT/TYPE_OES name a pair ReadPixels accepts (OES_read_format)."""
     ctx = gles.Context(2, 2, color=color)
@@ -381,6 +381,7 @@ def test_implementation_read_format(color, fmt, typ):
     assert g.glReadPixels(0, 0, 2, 2, G.GL_RGBA, G.GL_UNSIGNED_BYTE).shape == (2, 2, 4)
     assert g.glGetError() == G.GL_NO_ERROR
     assert b"GL_OES_read_format" in g.glGetString(G.GL_EXTENSIONS).split()
+    assert b"GL_EXT_read_format_bgra" in g.glGetString(G.GL_EXTENSIONS).split()
 
 
 @pytest.mark.parametrize("align, stride", [(1, 6), (2, 6), (4, 8), (8, 8)])

@@ -1,5 +1,6 @@
 """OES_compressed_ETC1_RGB8_texture, EXT_texture_format_BGRA8888,
-OES_element_index_uint, EXT_blend_minmax and APPLE_texture_max_level.
+OES_element_index_uint, EXT_blend_minmax, APPLE_texture_max_level and
+EXT_read_format_bgra.
 
 Expected texels come from the extension specs evaluated in numpy (the
 conformance suite's ETC1 decoder, written from the spec's tables; byte
@@ -73,7 +74,8 @@ def test_extensions_listed() -> None:
     for profile in ("common", "common-lite"):
         ext = gles.Context(2, 2, profile=profile).gl.glGetString(C.GL_EXTENSIONS).decode().split()
         for name in ("GL_OES_compressed_ETC1_RGB8_texture", "GL_EXT_texture_format_BGRA8888",
-                     "GL_OES_element_index_uint", "GL_EXT_blend_minmax", "GL_APPLE_texture_max_level"):
+                     "GL_OES_element_index_uint", "GL_EXT_blend_minmax", "GL_APPLE_texture_max_level",
+                     "GL_EXT_read_format_bgra"):
             assert name in ext
 
 
@@ -500,3 +502,52 @@ def test_max_level_state_and_errors() -> None:
     # per texture object
     gl.glBindTexture(C.GL_TEXTURE_2D, 2)
     assert gl.glGetTexParameteriv(C.GL_TEXTURE_2D, C.GL_TEXTURE_MAX_LEVEL_APPLE) == 1000
+
+
+# {================================================================
+# EXT_read_format_bgra
+
+def _painted(peer: bool = False, color: str = "rgba8888"):
+    """A 6x4 window of seeded colours, one a pixel (points of size 1)."""
+    ctx = mesa.MesaContext(6, 4) if peer else gles.Context(6, 4, color=color)
+    gl = ctx.gl
+    gl.glMatrixMode(C.GL_PROJECTION)
+    gl.glOrthof(0, 6, 0, 4, -1, 1)
+    xy = np.array([(x + 0.5, y + 0.5) for y in range(4) for x in range(6)], np.float32)
+    rgba = np.random.default_rng(9).integers(0, 256, (24, 4), dtype=np.uint8)
+    gl.glEnableClientState(C.GL_VERTEX_ARRAY)
+    gl.glEnableClientState(C.GL_COLOR_ARRAY)
+    gl.glVertexPointer(2, C.GL_FLOAT, 0, xy)
+    gl.glColorPointer(4, C.GL_UNSIGNED_BYTE, 0, rgba)
+    gl.glDrawArrays(C.GL_POINTS, 0, 24)
+    return ctx, rgba.reshape(4, 6, 4)
+
+
+@pytest.mark.parametrize("peer", [False, pytest.param(True, marks=needs_mesa)])
+def test_read_bgra_is_the_rgba_read_swapped(peer: bool) -> None:
+    ctx, rgba = _painted(peer)
+    with ctx:
+        gl = ctx.gl
+        assert gl.glGetIntegerv(C.GL_IMPLEMENTATION_COLOR_READ_FORMAT_OES) == C.GL_BGRA_EXT
+        assert gl.glGetIntegerv(C.GL_IMPLEMENTATION_COLOR_READ_TYPE_OES) == C.GL_UNSIGNED_BYTE
+        got = np.asarray(gl.glReadPixels(0, 0, 6, 4, C.GL_BGRA_EXT, C.GL_UNSIGNED_BYTE))
+        assert gl.glGetError() == C.GL_NO_ERROR
+    np.testing.assert_array_equal(got, rgba[..., [2, 1, 0, 3]])
+
+
+def test_read_bgra_into_a_buffer_and_errors() -> None:
+    ctx, rgba = _painted()
+    gl = ctx.gl
+    gl.glPixelStorei(C.GL_PACK_ALIGNMENT, 8)
+    out = np.full(8 * 2 * 2, 7, np.uint8)                   # 3-pixel rows padded to 16 bytes
+    gl.glReadPixels(1, 1, 3, 2, C.GL_BGRA_EXT, C.GL_UNSIGNED_BYTE, out)
+    rows = out.reshape(2, 16)
+    np.testing.assert_array_equal(rows[:, :12].reshape(2, 3, 4), rgba[1:3, 1:4][..., [2, 1, 0, 3]])
+    # the REV types are the extension's tokens, not this window's pair
+    for typ in (C.GL_UNSIGNED_SHORT_4_4_4_4_REV_EXT, C.GL_UNSIGNED_SHORT_1_5_5_5_REV_EXT):
+        assert gl.glReadPixels(0, 0, 1, 1, C.GL_BGRA_EXT, typ) is None
+        assert gl.glGetError() == C.GL_INVALID_OPERATION
+    # an RGB565 window's pair stays RGB/5_6_5
+    ctx565, _ = _painted(color="rgb565")
+    assert ctx565.gl.glReadPixels(0, 0, 1, 1, C.GL_BGRA_EXT, C.GL_UNSIGNED_BYTE) is None
+    assert ctx565.gl.glGetError() == C.GL_INVALID_OPERATION

@@ -667,7 +667,8 @@ def test_read_pixels_implementation_format(numeric):
     np.testing.assert_array_equal(rgba[..., :3], (k * 255 + top // 2) // top)
     assert (rgba[..., 3] == 255).all()
     g = Frame(numeric)
-    assert g.gl.glGetIntegerv(C.GL_IMPLEMENTATION_COLOR_READ_FORMAT_OES) == C.GL_RGBA
+    # EXT_read_format_bgra
+    assert g.gl.glGetIntegerv(C.GL_IMPLEMENTATION_COLOR_READ_FORMAT_OES) == C.GL_BGRA_EXT
     assert g.gl.glGetIntegerv(C.GL_IMPLEMENTATION_COLOR_READ_TYPE_OES) == C.GL_UNSIGNED_BYTE
 
 
@@ -885,7 +886,7 @@ STATE_INT = (C.GL_ALPHA_TEST_FUNC, C.GL_STENCIL_FUNC, C.GL_STENCIL_REF, C.GL_STE
              C.GL_BLEND_EQUATION_RGB_OES, C.GL_BLEND_EQUATION_ALPHA_OES, C.GL_LOGIC_OP_MODE, C.GL_SCISSOR_BOX)
 STATE_FLOAT = (C.GL_ALPHA_TEST_REF, C.GL_SAMPLE_COVERAGE_VALUE, C.GL_COLOR_CLEAR_VALUE)
 
-GL_MIN_EXT = 0x8007   # desktop blend equation, not in ES 1.1
+GL_BLEND_EQUATION = 0x8009   # the state's name, no equation
 
 ERROR_CASES = {
     "AlphaFunc(bad func)": (lambda gl: gl.glAlphaFunc(C.GL_ALWAYS + 1, 0.7), C.GL_INVALID_ENUM),
@@ -902,9 +903,11 @@ ERROR_CASES = {
     "BlendFuncSeparateOES(bad alpha)": (
         lambda gl: gl.glBlendFuncSeparateOES(C.GL_ONE, C.GL_ONE, C.GL_ONE, C.GL_DST_COLOR),
         C.GL_INVALID_ENUM),
-    "BlendEquationOES(MIN)": (lambda gl: gl.glBlendEquationOES(GL_MIN_EXT), C.GL_INVALID_ENUM),
+    # (MIN_EXT and MAX_EXT are equations: EXT_blend_minmax; BLEND_EQUATION itself is not)
+    "BlendEquationOES(BLEND_EQUATION)": (
+        lambda gl: gl.glBlendEquationOES(GL_BLEND_EQUATION), C.GL_INVALID_ENUM),
     "BlendEquationSeparateOES(bad alpha)": (
-        lambda gl: gl.glBlendEquationSeparateOES(C.GL_FUNC_ADD_OES, GL_MIN_EXT), C.GL_INVALID_ENUM),
+        lambda gl: gl.glBlendEquationSeparateOES(C.GL_FUNC_ADD_OES, GL_BLEND_EQUATION), C.GL_INVALID_ENUM),
     "LogicOp(bad op)": (lambda gl: gl.glLogicOp(C.GL_SET + 1), C.GL_INVALID_ENUM),
     "Scissor(negative width)": (lambda gl: gl.glScissor(1, 2, -1, 4), C.GL_INVALID_VALUE),
     "Scissor(negative height)": (lambda gl: gl.glScissor(1, 2, 4, -4), C.GL_INVALID_VALUE),

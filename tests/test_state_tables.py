@@ -67,7 +67,7 @@ def test_pixel_depths(color: str, numeric: str) -> None:
         assert not Q.check_row(gl, True, row, row.want(env), strict=True)
     fmt = gl.glGetIntegerv(C.GL_IMPLEMENTATION_COLOR_READ_FORMAT_OES)
     typ = gl.glGetIntegerv(C.GL_IMPLEMENTATION_COLOR_READ_TYPE_OES)
-    want = (C.GL_RGB, C.GL_UNSIGNED_SHORT_5_6_5) if color == "rgb565" else (C.GL_RGBA, C.GL_UNSIGNED_BYTE)
+    want = (C.GL_RGB, C.GL_UNSIGNED_SHORT_5_6_5) if color == "rgb565" else (C.GL_BGRA_EXT, C.GL_UNSIGNED_BYTE)
     assert (fmt, typ) == want
     # enums: GetFixedv unscaled
     assert gl.glGetFixedv(C.GL_IMPLEMENTATION_COLOR_READ_TYPE_OES) == want[1]

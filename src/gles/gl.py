@@ -992,8 +992,9 @@ class GLBase:
         Returns the part of the rectangle inside the framebuffer (§4.3.1:
         pixels outside it are undefined, so they are neither read nor
         allocated): rows from max(y, 0), columns from max(x, 0); uint8
-        (h, w, 4) for GL_RGBA/GL_UNSIGNED_BYTE and uint16 (h, w) for
-        GL_RGB/GL_UNSIGNED_SHORT_5_6_5. With ``array`` (a writable buffer)
+        (h, w, 4) for GL_RGBA/GL_UNSIGNED_BYTE and, on an RGBA8888 window,
+        GL_BGRA_EXT/GL_UNSIGNED_BYTE (EXT_read_format_bgra: B, G, R, A), and
+        uint16 (h, w) for GL_RGB/GL_UNSIGNED_SHORT_5_6_5 on an RGB565 one. With ``array`` (a writable buffer)
         the whole rectangle's raw rows are written into it with
         PACK_ALIGNMENT padding instead (zeros outside the framebuffer), and
         None is returned. On a GL error nothing is written and None is
@@ -1017,7 +1018,7 @@ class GLBase:
             width = max(min(x + width, self.handle.width) - x0, 0)
             height = max(min(y + height, self.handle.height) - y0, 0)
             x, y = x0, y0
-        bpp = 4 if (format, type) == (C.GL_RGBA, C.GL_UNSIGNED_BYTE) else 2
+        bpp = 4 if type == C.GL_UNSIGNED_BYTE and format in (C.GL_RGBA, C.GL_BGRA_EXT) else 2
         align = self._bound(C.GL_PACK_ALIGNMENT)
         stride = -(-max(width, 0) * bpp // align) * align
         raw = np.zeros(max(stride * max(height, 0), 1), dtype=np.uint8)
