@@ -31,14 +31,24 @@ SIMD_TARGET_AVX512
 #endif
 #endif
 
-/* wrap a texel index into [0, n); sizes are powers of two (§3.7.1) */
+/* i mod m in [0, m): a mask for a power of two, else a division
+** (OES_texture_npot sizes) */
+static inline int64_t wrap_mod(int64_t i, int64_t m)
+{
+    if ((m & (m - 1)) == 0)
+        return i & (m - 1);
+    const int64_t r = i % m;
+    return r < 0 ? r + m : r;
+}
+
+/* wrap a texel index into [0, n) */
 static inline int wrap_index(int64_t i, int n, unsigned int mode)
 {
     switch (mode) {
     case GL_REPEAT:
-        return (int)(i & (n - 1));
+        return (int)wrap_mod(i, n);
     case GL_MIRRORED_REPEAT_OES: {
-        int64_t r = i & (2 * (int64_t)n - 1);
+        int64_t r = wrap_mod(i, 2 * (int64_t)n);
         return (int)(r < n ? r : 2 * (int64_t)n - 1 - r);
     }
     default: /* GL_CLAMP_TO_EDGE */

@@ -287,8 +287,6 @@ int64_t texture_image_bytes(const GlesContext *ctx, int width, int height, unsig
     return unpack_stride(ctx, width, bpp) * (height - 1) + (int64_t)width * bpp;
 }
 
-static int is_pot(int v) { return v > 0 && (v & (v - 1)) == 0; }
-
 static int max_level_of_size(void)
 {
     int l = 0;
@@ -378,8 +376,8 @@ static unsigned int check_image(int level, int width, int height, int border)
 {
     if (level < 0 || level > max_level_of_size())
         return GL_INVALID_VALUE;
-    if (width < 0 || height < 0 || width > GLES_MAX_TEXTURE_SIZE || height > GLES_MAX_TEXTURE_SIZE
-        || (width && !is_pot(width)) || (height && !is_pot(height)) || border != 0)
+    /* any size up to the limit: OES_texture_npot lifts §3.7.1's powers of two */
+    if (width < 0 || height < 0 || width > GLES_MAX_TEXTURE_SIZE || height > GLES_MAX_TEXTURE_SIZE || border != 0)
         return GL_INVALID_VALUE;
     return 0;
 }

@@ -398,8 +398,9 @@ ROWS = [
         2, 2, 0, G.GL_RGBA, G.GL_UNSIGNED_BYTE, bytes(16)), V),
     Row("TexImage2D border 1", "§3.7.1", lambda g, e: g.glTexImage2D(G.GL_TEXTURE_2D, 0, G.GL_RGBA, 2, 2, 1,
         G.GL_RGBA, G.GL_UNSIGNED_BYTE, bytes(16)), V),
-    Row("TexImage2D not a power of two", "§3.7.1", lambda g, e: g.glTexImage2D(G.GL_TEXTURE_2D, 0,
-        G.GL_RGBA, 3, 2, 0, G.GL_RGBA, G.GL_UNSIGNED_BYTE, bytes(24)), V),
+    # (any size up to the limit is legal: OES_texture_npot)
+    Row("TexImage2D height beyond MAX_TEXTURE_SIZE", "§3.7.1", lambda g, e: g.glTexImage2D(G.GL_TEXTURE_2D, 0,
+        G.GL_RGBA, 1, 2049, 0, G.GL_RGBA, G.GL_UNSIGNED_BYTE, None), V),
     Row("TexImage2D beyond MAX_TEXTURE_SIZE", "§3.7.1", lambda g, e: g.glTexImage2D(G.GL_TEXTURE_2D, 0,
         G.GL_RGBA, 4096, 1, 0, G.GL_RGBA, G.GL_UNSIGNED_BYTE, None), V),
     Row("TexImage2D internalformat differs", "§3.7.1", lambda g, e: g.glTexImage2D(G.GL_TEXTURE_2D, 0,

@@ -91,7 +91,7 @@ def test_etc1_reference_decodes_a_hand_block() -> None:
     assert (got[:, :2] == 9).all() and (got[:, 2:] == 72).all()
 
 
-@pytest.mark.parametrize("w,h", [(16, 16), (8, 4), (4, 8), (2, 2), (1, 1), (32, 2)])
+@pytest.mark.parametrize("w,h", [(16, 16), (8, 4), (4, 8), (2, 2), (1, 1), (32, 2), (12, 8), (6, 10), (5, 3)])
 def test_etc1_texels_are_the_specs(w: int, h: int) -> None:
     rng = np.random.default_rng(w * 100 + h)
     data = random_etc1(rng, w, h)
@@ -129,9 +129,9 @@ def test_etc1_errors_leave_the_texture() -> None:
         # imageSize not ceil(w/4) * ceil(h/4) * 8
         (lambda: gl.glCompressedTexImage2D(C.GL_TEXTURE_2D, 0, C.GL_ETC1_RGB8_OES, 8, 8, 0, 24, data),
          C.GL_INVALID_VALUE),
-        # not a power of two (ES 1.1 textures)
-        (lambda: gl.glCompressedTexImage2D(C.GL_TEXTURE_2D, 0, C.GL_ETC1_RGB8_OES, 12, 8, 0, 48,
-                                           data[:48] * 2),
+        # beyond MAX_TEXTURE_SIZE (any smaller size is legal: OES_texture_npot)
+        (lambda: gl.glCompressedTexImage2D(C.GL_TEXTURE_2D, 0, C.GL_ETC1_RGB8_OES, 4096, 4, 0, 8192,
+                                           data * 256),
          C.GL_INVALID_VALUE),
         # a negative level is the paletted formats' convention, not ETC1's
         (lambda: gl.glCompressedTexImage2D(C.GL_TEXTURE_2D, -1, C.GL_ETC1_RGB8_OES, 8, 8, 0, 32, data),
@@ -551,3 +551,78 @@ def test_read_bgra_into_a_buffer_and_errors() -> None:
     ctx565, _ = _painted(color="rgb565")
     assert ctx565.gl.glReadPixels(0, 0, 1, 1, C.GL_BGRA_EXT, C.GL_UNSIGNED_BYTE) is None
     assert ctx565.gl.glGetError() == C.GL_INVALID_OPERATION
+
+
+# {================================================================
+# the content these extensions are for: ETC1 and NPOT BGRA textures drawn
+# through 32-bit indices
+
+def _psnr(a: np.ndarray, b: np.ndarray) -> float:
+    """dB over RGB (inf when equal)."""
+    mse = np.mean((a[..., :3].astype(np.float64) - b[..., :3].astype(np.float64)) ** 2)
+    return float("inf") if mse == 0 else 10 * np.log10(255.0**2 / mse)
+
+
+def _mobile_scene(make) -> np.ndarray:
+    """A perspective grid of 12x12 cells from a 70000-vertex array (its
+    vertices past 65535, by UNSIGNED_INT indices): unit 0 a 20x12 ETC1
+    texture, LINEAR, REPEAT over 3 x 2 repeats; unit 1 a 13x7 BGRA texture,
+    LINEAR_MIPMAP_LINEAR with GENERATE_MIPMAP, MODULATE; depth test; 96x96."""
+    rng = np.random.default_rng(21)
+    etc1 = random_etc1(rng, 20, 12)
+    bgra = rng.integers(0, 256, (7, 13, 4), dtype=np.uint8)
+    n, base = 13, 70000 - 169
+    gx, gy = np.meshgrid(np.linspace(-1, 1, n), np.linspace(-1, 1, n))
+    verts = np.zeros((70000, 3), np.float32)
+    verts[base:] = np.stack([gx, gy, 0.15 * np.sin(3 * gx) * np.cos(2 * gy)], -1).reshape(-1, 3)
+    uv0 = np.zeros((70000, 2), np.float32)
+    uv0[base:] = np.stack([(gx + 1) * 1.5, (gy + 1)], -1).reshape(-1, 2)
+    uv1 = np.zeros((70000, 2), np.float32)
+    uv1[base:] = np.stack([(gx + 1) * 0.5, (gy + 1) * 0.5], -1).reshape(-1, 2)
+    cell = (np.arange(n - 1)[:, None] * n + np.arange(n - 1)[None, :]).reshape(-1)
+    idx = (np.stack([cell, cell + 1, cell + n, cell + 1, cell + n + 1, cell + n], -1).reshape(-1) + base)
+    with make() as ctx:
+        gl = ctx.gl
+        gl.glViewport(0, 0, 96, 96)
+        gl.glMatrixMode(C.GL_PROJECTION)
+        gl.glFrustumf(-0.6, 0.6, -0.6, 0.6, 1.0, 10.0)
+        gl.glMatrixMode(C.GL_MODELVIEW)
+        gl.glTranslatef(0, 0, -2.2)
+        gl.glRotatef(-55, 1, 0, 0)
+        gl.glEnable(C.GL_DEPTH_TEST)
+        gl.glClearColor(0.1, 0.2, 0.3, 1)
+        gl.glClear(C.GL_COLOR_BUFFER_BIT | C.GL_DEPTH_BUFFER_BIT)
+        gl.glPixelStorei(C.GL_UNPACK_ALIGNMENT, 1)
+        for unit in (0, 1):
+            gl.glActiveTexture(C.GL_TEXTURE0 + unit)
+            gl.glBindTexture(C.GL_TEXTURE_2D, unit + 1)
+            gl.glEnable(C.GL_TEXTURE_2D)
+        gl.glActiveTexture(C.GL_TEXTURE0)
+        gl.glCompressedTexImage2D(C.GL_TEXTURE_2D, 0, C.GL_ETC1_RGB8_OES, 20, 12, 0, len(etc1), etc1)
+        gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MIN_FILTER, C.GL_LINEAR)
+        gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_REPLACE)
+        gl.glActiveTexture(C.GL_TEXTURE1)
+        gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_GENERATE_MIPMAP, C.GL_TRUE)
+        gl.glTexImage2D(C.GL_TEXTURE_2D, 0, C.GL_BGRA_EXT, 13, 7, 0, C.GL_BGRA_EXT, C.GL_UNSIGNED_BYTE, bgra)
+        gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MIN_FILTER, C.GL_LINEAR_MIPMAP_LINEAR)
+        gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_MODULATE)
+        gl.glEnableClientState(C.GL_VERTEX_ARRAY)
+        gl.glVertexPointer(3, C.GL_FLOAT, 0, verts)
+        for unit, uv in ((0, uv0), (1, uv1)):
+            gl.glClientActiveTexture(C.GL_TEXTURE0 + unit)
+            gl.glEnableClientState(C.GL_TEXTURE_COORD_ARRAY)
+            gl.glTexCoordPointer(2, C.GL_FLOAT, 0, uv)
+        gl.glDrawElements(C.GL_TRIANGLES, len(idx), C.GL_UNSIGNED_INT, idx.astype(np.uint32))
+        assert gl.glGetError() == C.GL_NO_ERROR
+        return np.asarray(gl.glReadPixels(0, 0, 96, 96, C.GL_RGBA, C.GL_UNSIGNED_BYTE))
+
+
+@needs_mesa
+def test_mobile_scene_near_llvmpipe_and_double() -> None:
+    fixed = _mobile_scene(lambda: gles.Context(96, 96, numeric="fixed"))
+    double = _mobile_scene(lambda: gles.Context(96, 96, numeric="double"))
+    peer = _mobile_scene(lambda: mesa.MesaContext(96, 96))
+    covered = (fixed[..., :3] != fixed[-1, 0, :3]).any(axis=-1).mean()   # the top-left pixel: clear colour
+    assert 0.3 < covered < 0.9
+    assert _psnr(fixed, peer) >= 35.0              # the issue's bar against llvmpipe
+    assert _psnr(fixed, double) >= 30.0            # test_gallery's MIN_PSNR_FIXED

@@ -1,9 +1,9 @@
 """Texturing: images, mipmaps, wrap modes, paletted textures, environments.
 
 Categories Mip, MipLevels, MipLin, MipSelect, MultiTex, TexDecal, TexPalet,
-TexETC1, TexBGRA, TextureEdgeClamp, TexCombine, CopyTex and PackedPixels
-(spec sections 3.6.2, 3.7 and OES_compressed_paletted_texture,
-OES_compressed_ETC1_RGB8_texture, EXT_texture_format_BGRA8888,
+TexETC1, TexBGRA, TexNPOT, TextureEdgeClamp, TexCombine, CopyTex and
+PackedPixels (spec sections 3.6.2, 3.7 and OES_compressed_paletted_texture,
+OES_compressed_ETC1_RGB8_texture, EXT_texture_format_BGRA8888, OES_texture_npot,
 OES_texture_env_crossbar, OES_texture_mirrored_repeat).
 
 Every test uses Common-Lite commands only (x and i forms; GL_SHORT vertices,
@@ -850,6 +850,40 @@ def mip_levels_max_level(t: TestContext) -> None:
         want = np.broadcast_to(_u(_LEVEL_COLORS[level]), (8, 4, 4))
         _check(t, img, x, 0, want, f"max level 2, level {level} at x = {x}")
     t.check_gl_error("MipLevels.maxlevel")
+
+
+@conformance_test("TexNPOT", section="OES_texture_npot", visuals=VISUALS, size=(64, 64))
+def tex_npot(t: TestContext) -> None:
+    """OES_texture_npot: textures of any size (7x5, 6x3, 5x9) sample by equations 3.16-3.18 with
+    w_s and h_s for 2^n and 2^m, NEAREST and LINEAR under REPEAT, MIRRORED_REPEAT and
+    CLAMP_TO_EDGE with coordinates from -1 to 2 (half a texel a pixel); a mipmap of
+    floor-halved levels (12x10, 6x5, 3x2, 1x1) is complete and shows each level at its lambda."""
+    gl = t.gl
+    ext = gl.glGetString(gl.GL_EXTENSIONS) or b""
+    if "GL_OES_texture_npot" not in (ext.decode() if isinstance(ext, bytes) else ext).split():
+        raise Unsupported("GL_OES_texture_npot is not in GL_EXTENSIONS")
+    rng = np.random.default_rng(13)
+    c = ((-1.0, -1.0), (2.0, 2.0))
+    for w, h in ((7, 5), (6, 3), (5, 9)):
+        tex = rng.integers(0, 256, size=(h, w, 4), dtype=np.uint8)
+        for wrap in ("REPEAT", "MIRRORED_REPEAT_OES", "CLAMP_TO_EDGE"):
+            for filt in ("NEAREST", "LINEAR"):
+                _prepare(t)
+                _texture(t, [tex], minf=filt, magf=filt, wrap=wrap)
+                _quad(t, 0, 0, 6 * w, 6 * h, [c])
+                s, tt = _st(0, 0, 6 * w, 6 * h, c)
+                want = _sample(_u(tex), s, tt, filt, wrap)
+                _check(t, t.read(), 0, 0, want, f"{w}x{h} {wrap} {filt}")
+    sizes = ((12, 10), (6, 5), (3, 2), (1, 1))
+    levels = [rng.integers(0, 256, size=(hh, ww, 4), dtype=np.uint8) for ww, hh in sizes]
+    _prepare(t)
+    _texture(t, levels, minf="NEAREST_MIPMAP_NEAREST", magf="NEAREST")
+    for d in range(4):
+        _level_rows(t, 16 * d, d, 12, 10)
+    img = t.read()
+    for d in range(4):
+        _check(t, img, 16 * d, 0, _u(levels[d]), f"NPOT mipmap level {d}")
+    t.check_gl_error("TexNPOT")
 
 
 # {============================================================
