@@ -136,23 +136,31 @@ static const unsigned int array_caps[ARR_TEXCOORD0] = {
     GL_MATRIX_INDEX_ARRAY_OES, GL_WEIGHT_ARRAY_OES,
 };
 
-void array_init(GlesContext *ctx)
+/* Table 6.4's initial array state */
+static void arrays_default(const GlesContext *ctx, ArrayState arrays[ARR_COUNT])
 {
-    names_init(&ctx->buffers);
     for (int i = 0; i < ARR_COUNT; i++) {
-        ArrayState *a = &ctx->arrays[i];
+        ArrayState *a = &arrays[i];
         memset(a, 0, sizeof *a);
         a->size = 4;
         /* Table 6.4: FLOAT, or FIXED where FLOAT does not exist (Common-Lite) */
         a->type = ctx->profile == GLES_PROFILE_COMMON_LITE ? GL_FIXED : GL_FLOAT;
         a->nbytes = -1;
     }
-    ctx->arrays[ARR_NORMAL].size = 3;
-    ctx->arrays[ARR_POINT_SIZE].size = 1;
+    arrays[ARR_NORMAL].size = 3;
+    arrays[ARR_POINT_SIZE].size = 1;
     /* OES_matrix_palette: size 0, UNSIGNED_BYTE indices, FLOAT weights */
-    ctx->arrays[ARR_MATRIX_INDEX].size = 0;
-    ctx->arrays[ARR_MATRIX_INDEX].type = GL_UNSIGNED_BYTE;
-    ctx->arrays[ARR_WEIGHT].size = 0;
+    arrays[ARR_MATRIX_INDEX].size = 0;
+    arrays[ARR_MATRIX_INDEX].type = GL_UNSIGNED_BYTE;
+    arrays[ARR_WEIGHT].size = 0;
+}
+
+void array_init(GlesContext *ctx)
+{
+    names_init(&ctx->buffers);
+    names_init(&ctx->vaos);
+    ctx->vao = NULL;
+    arrays_default(ctx, ctx->arrays);
 }
 
 static void buffer_free(GlesContext *ctx, BufferObject *b)
@@ -172,6 +180,12 @@ void array_free(GlesContext *ctx)
         if (t->keys[i] != NAME_EMPTY && t->keys[i] != NAME_DELETED)
             buffer_free(ctx, t->values[i]);
     names_free(t);
+    t = &ctx->vaos;
+    for (uint32_t i = 0; i < t->capacity; i++)
+        if (t->keys[i] != NAME_EMPTY && t->keys[i] != NAME_DELETED)
+            free(t->values[i]);
+    names_free(t);
+    ctx->vao = NULL;
 }
 
 int array_index_of_cap(GlesContext *ctx, unsigned int cap)
@@ -236,6 +250,11 @@ static int set_pointer(GlesContext *ctx, int index, int size, int min_size, int 
     /* Common-Lite has no FLOAT arrays (Appendix C) */
     if (!(type_bit(type) & types) || (type == GL_FLOAT && ctx->profile == GLES_PROFILE_COMMON_LITE)) {
         ctx_error(ctx, GL_INVALID_ENUM);
+        return 0;
+    }
+    /* OES_vertex_array_object: an object holds buffer arrays only */
+    if (ctx->vao && !ctx->array_buffer && ptr) {
+        ctx_error(ctx, GL_INVALID_OPERATION);
         return 0;
     }
     ArrayState *a = &ctx->arrays[index];
@@ -341,6 +360,11 @@ int array_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)
         out[0] = ctx->arrays[idx].enabled;
         return 1;
     }
+    if (pname == GL_VERTEX_ARRAY_BINDING_OES) {
+        *kind = GLES_KIND_INT;
+        out[0] = ctx->vao ? ctx->vao->name : 0;
+        return 1;
+    }
     return 0;
 }
 
@@ -440,22 +464,111 @@ void gles_GenBuffers(GlesContext *ctx, int n, unsigned int *names)
     names_generate(&ctx->buffers, n, names);
 }
 
+/* §2.9: arrays keep the name but read nothing once the buffer is gone;
+** we detach them so a later draw reports the array as having no data */
+static void detach_buffer(ArrayState arrays[ARR_COUNT], BufferObject **element_buffer, const BufferObject *b)
+{
+    if (*element_buffer == b)
+        *element_buffer = NULL;
+    for (int i = 0; i < ARR_COUNT; i++)
+        if (arrays[i].buffer == b) {
+            arrays[i].buffer = NULL;
+            arrays[i].buffer_name = 0;
+            arrays[i].ptr = NULL;
+            arrays[i].nbytes = 0;
+        }
+}
+
 static void unbind_everywhere(GlesContext *ctx, BufferObject *b)
 {
     if (ctx->array_buffer == b)
         ctx->array_buffer = NULL;
-    if (ctx->element_buffer == b)
-        ctx->element_buffer = NULL;
-    /* §2.9: arrays keep the name but read nothing once the buffer is gone;
-    ** we detach them so a later draw reports the array as having no data */
-    for (int i = 0; i < ARR_COUNT; i++)
-        if (ctx->arrays[i].buffer == b) {
-            ctx->arrays[i].buffer = NULL;
-            ctx->arrays[i].buffer_name = 0;
-            ctx->arrays[i].ptr = NULL;
-            ctx->arrays[i].nbytes = 0;
+    detach_buffer(ctx->arrays, &ctx->element_buffer, b);
+    /* and in every vertex array object, bound or not (none may keep a
+    ** pointer to the freed buffer) */
+    detach_buffer(ctx->vao_default.arrays, &ctx->vao_default.element_buffer, b);
+    const NameTable *t = &ctx->vaos;
+    for (uint32_t i = 0; i < t->capacity; i++)
+        if (t->keys[i] != NAME_EMPTY && t->keys[i] != NAME_DELETED) {
+            VertexArrayObject *o = t->values[i];
+            detach_buffer(o->state.arrays, &o->state.element_buffer, b);
         }
 }
+
+/* {====================================================================
+** vertex array objects (OES_vertex_array_object) */
+
+void gles_GenVertexArraysOES(GlesContext *ctx, int n, unsigned int *names)
+{
+    if (n < 0) {
+        ctx_error(ctx, GL_INVALID_VALUE);
+        return;
+    }
+    /* the objects count against the memory budget, as buffer data does */
+    if (!ctx_mem_fits(ctx, (int64_t)n * (int64_t)sizeof(VertexArrayObject), 0)) {
+        ctx_error(ctx, GL_OUT_OF_MEMORY);
+        return;
+    }
+    names_generate(&ctx->vaos, n, names);
+    for (int i = 0; i < n; i++) {
+        VertexArrayObject *o = calloc(1, sizeof *o);
+        if (!o || !names_insert(&ctx->vaos, names[i], o)) {
+            free(o);
+            ctx_error(ctx, GL_OUT_OF_MEMORY);
+            return;
+        }
+        o->name = names[i];
+        arrays_default(ctx, o->state.arrays);
+        ctx->mem_used += (int64_t)sizeof *o;
+    }
+}
+
+void gles_BindVertexArrayOES(GlesContext *ctx, unsigned int name)
+{
+    VertexArrayObject *to = name ? names_lookup(&ctx->vaos, name) : NULL;
+    if (name && !to) {
+        /* not a name GenVertexArraysOES gave, or deleted since */
+        ctx_error(ctx, GL_INVALID_OPERATION);
+        return;
+    }
+    if (to)
+        to->ever_bound = 1;
+    if (to == ctx->vao)
+        return;
+    VertexArrayState *from = ctx->vao ? &ctx->vao->state : &ctx->vao_default;
+    memcpy(from->arrays, ctx->arrays, sizeof ctx->arrays);
+    from->element_buffer = ctx->element_buffer;
+    const VertexArrayState *load = to ? &to->state : &ctx->vao_default;
+    memcpy(ctx->arrays, load->arrays, sizeof ctx->arrays);
+    ctx->element_buffer = load->element_buffer;
+    ctx->vao = to;
+}
+
+void gles_DeleteVertexArraysOES(GlesContext *ctx, int n, const unsigned int *names)
+{
+    if (n < 0) {
+        ctx_error(ctx, GL_INVALID_VALUE);
+        return;
+    }
+    for (int i = 0; i < n; i++) {
+        VertexArrayObject *o = names[i] ? names_lookup(&ctx->vaos, names[i]) : NULL;
+        if (!o)
+            continue;   /* unused names are ignored */
+        if (o == ctx->vao)
+            gles_BindVertexArrayOES(ctx, 0);    /* the binding reverts to zero */
+        names_remove(&ctx->vaos, names[i]);
+        free(o);
+        ctx->mem_used -= (int64_t)sizeof *o;
+    }
+}
+
+unsigned char gles_IsVertexArrayOES(GlesContext *ctx, unsigned int name)
+{
+    const VertexArrayObject *o = name ? names_lookup(&ctx->vaos, name) : NULL;
+    return o && o->ever_bound;
+}
+
+/* }==================================================================== */
 
 void gles_DeleteBuffers(GlesContext *ctx, int n, const unsigned int *names)
 {

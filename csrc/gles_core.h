@@ -343,6 +343,11 @@ void gles_BindBuffer(GlesContext *ctx, unsigned int target, unsigned int buffer)
 int gles_BufferData(GlesContext *ctx, unsigned int target, int64_t size, const void *data, unsigned int usage);
 void gles_BufferSubData(GlesContext *ctx, unsigned int target, int64_t offset, int64_t size, const void *data);
 unsigned char gles_IsBuffer(GlesContext *ctx, unsigned int buffer);
+/* OES_vertex_array_object */
+void gles_GenVertexArraysOES(GlesContext *ctx, int n, unsigned int *names);
+void gles_DeleteVertexArraysOES(GlesContext *ctx, int n, const unsigned int *names);
+void gles_BindVertexArrayOES(GlesContext *ctx, unsigned int name);
+unsigned char gles_IsVertexArrayOES(GlesContext *ctx, unsigned int name);
 void gles_GetBufferParameteriv(GlesContext *ctx, unsigned int target, unsigned int pname, int *params);
 
 /* {====================================================================

@@ -102,6 +102,21 @@ typedef struct ArrayState {
     int range_cached;
 } ArrayState;
 
+/* OES_vertex_array_object: the vertex array state of Tables 6.4-6.5 but
+** CLIENT_ACTIVE_TEXTURE and ARRAY_BUFFER_BINDING. The bound object's state
+** lives in the context (ctx->arrays, ctx->element_buffer); an object holds
+** it while another is bound, and ctx->vao_default holds name 0's */
+typedef struct VertexArrayState {
+    ArrayState arrays[ARR_COUNT];
+    BufferObject *element_buffer;
+} VertexArrayState;
+
+typedef struct VertexArrayObject {
+    unsigned int name;
+    int ever_bound;             /* IsVertexArrayOES: named by Gen, then bound */
+    VertexArrayState state;
+} VertexArrayObject;
+
 /* {====================================================================
 ** lighting state (§2.12.1); positions and directions in eye space */
 #define GLES_MAX_LIGHTS 8
@@ -376,6 +391,9 @@ struct GlesContext {
     NameTable buffers;
     BufferObject *array_buffer, *element_buffer;
     uint32_t buffer_serial;     /* advances whenever any buffer's contents change */
+    NameTable vaos;             /* VertexArrayObject by name (OES_vertex_array_object) */
+    VertexArrayObject *vao;     /* the bound one, NULL for name 0 */
+    VertexArrayState vao_default;   /* name 0's state while another is bound */
 
     /* the memory budget of texture images and buffer data together, in
     ** bytes (gles_memory_limit): an allocation past it is OUT_OF_MEMORY */

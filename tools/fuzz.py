@@ -640,6 +640,7 @@ SPECS: dict[str, Spec] = {
     "glFrontFace": _e([C.GL_CW, C.GL_CCW]),
     "glCurrentPaletteMatrixOES": lambda g: [g.int(0, 12)],
     "glDeleteBuffers": _names,
+    "glDeleteVertexArraysOES": _names,
     "glDeleteTextures": _names,
     "glDepthFunc": _e(FUNCS),
     "glDepthMask": lambda g: [g.bool()],
@@ -671,6 +672,7 @@ SPECS: dict[str, Spec] = {
     "glOrthof": _f(6),
     "glOrthox": _x(6),
     "glGenBuffers": lambda g: [g.int(0, 3)],
+    "glGenVertexArraysOES": lambda g: [g.int(0, 3)],
     "glGenTextures": lambda g: [g.int(0, 3)],
     "glGetBooleanv": _e(GET_P),
     "glGetFixedv": _e(GET_P),
@@ -693,6 +695,8 @@ SPECS: dict[str, Spec] = {
     "glGetTexParameterxv": _e([C.GL_TEXTURE_2D], TEXP),
     "glHint": _e(HINT_T, HINT_V),
     "glIsBuffer": lambda g: [g.int(0, 6)],
+    "glIsVertexArrayOES": lambda g: [g.int(0, 6)],
+    "glBindVertexArrayOES": lambda g: [g.int(0, 6)],
     "glIsTexture": lambda g: [g.int(0, 6)],
     "glLightModelf": _scalar_param([], LM_P, "f"),
     "glLightModelx": _scalar_param([], LM_P, "x"),
@@ -1425,7 +1429,7 @@ def _guard(cc: CabiContext, name: str, args: list[Any]) -> None:
         data = args[2] if name == "glBufferData" else args[-1]
         if _is_address(data) and data:
             raise ValueError(f"harness: an int data pointer in {name}")
-    elif name in ("glGenBuffers", "glGenTextures") and args and _is_address(args[0]):
+    elif name in ("glGenBuffers", "glGenTextures", "glGenVertexArraysOES") and args and _is_address(args[0]):
         if args[0] > _MAX_NAMES:
             raise ValueError(f"harness: room for {args[0]} names")
     elif name == "glReadPixels" and len(args) >= 4:

@@ -190,6 +190,10 @@ glLoadPaletteFromModelViewMatrixOES  gles_LoadPaletteFromModelViewMatrixOES(C)
 glMatrixIndexPointerOES         gles_MatrixIndexPointerOES(C, size, type, stride, pointer, -1)
 glQueryMatrixxOES               query_matrix(C, mantissa, exponent)
 glWeightPointerOES              gles_WeightPointerOES(C, size, type, stride, pointer, -1)
+glBindVertexArrayOES            gles_BindVertexArrayOES(C, array)
+glDeleteVertexArraysOES         gles_DeleteVertexArraysOES(C, n, arrays)
+glGenVertexArraysOES            gles_GenVertexArraysOES(C, n, arrays)
+glIsVertexArrayOES              gles_IsVertexArrayOES(C, array)
 """
 
 # Pointer arguments a C caller may pass as NULL: the core gives NULL its

@@ -26,7 +26,7 @@ OUT = ROOT / "src" / "gles" / "commands.py"
 # the glext.h extensions whose commands gles implements
 EXTENSIONS = (
     "GL_OES_blend_equation_separate", "GL_OES_blend_func_separate", "GL_OES_blend_subtract",
-    "GL_OES_draw_texture", "GL_OES_matrix_palette", "GL_OES_query_matrix",
+    "GL_OES_draw_texture", "GL_OES_matrix_palette", "GL_OES_query_matrix", "GL_OES_vertex_array_object",
 )
 
 PROTO = re.compile(r"^GL_API\s+(?P<ret>[\w\s\*]+?)\s*GL_APIENTRY\s+(?P<name>gl\w+)\s*\((?P<params>[^)]*)\);")

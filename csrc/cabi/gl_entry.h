@@ -1204,6 +1204,33 @@ GL_API void GL_APIENTRY glWeightPointerOES (GLint size, GLenum type, GLsizei str
         gles_WeightPointerOES(C, size, type, stride, pointer, -1);
 }
 
+GL_API void GL_APIENTRY glBindVertexArrayOES (GLuint array)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C)
+        gles_BindVertexArrayOES(C, array);
+}
+
+GL_API void GL_APIENTRY glDeleteVertexArraysOES (GLsizei n, const GLuint *arrays)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C && arrays)
+        gles_DeleteVertexArraysOES(C, n, arrays);
+}
+
+GL_API void GL_APIENTRY glGenVertexArraysOES (GLsizei n, GLuint *arrays)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C && arrays)
+        gles_GenVertexArraysOES(C, n, arrays);
+}
+
+GL_API GLboolean GL_APIENTRY glIsVertexArrayOES (GLuint array)
+{
+    GlesContext *C = gles_cabi_current();
+    return C ? (GLboolean)(gles_IsVertexArrayOES(C, array)) : 0;
+}
+
 /* every entry point by name, for eglGetProcAddress (sorted for bsearch) */
 static const GlesProc gles_cabi_procs[] = {
     {"glActiveTexture", (GlesProcFn)glActiveTexture},
@@ -1213,6 +1240,7 @@ static const GlesProc gles_cabi_procs[] = {
     {"glAlphaFuncx", (GlesProcFn)glAlphaFuncx},
     {"glBindBuffer", (GlesProcFn)glBindBuffer},
     {"glBindTexture", (GlesProcFn)glBindTexture},
+    {"glBindVertexArrayOES", (GlesProcFn)glBindVertexArrayOES},
     {"glBlendEquationOES", (GlesProcFn)glBlendEquationOES},
     {"glBlendEquationSeparateOES", (GlesProcFn)glBlendEquationSeparateOES},
     {"glBlendFunc", (GlesProcFn)glBlendFunc},
@@ -1249,6 +1277,7 @@ static const GlesProc gles_cabi_procs[] = {
     {"glCurrentPaletteMatrixOES", (GlesProcFn)glCurrentPaletteMatrixOES},
     {"glDeleteBuffers", (GlesProcFn)glDeleteBuffers},
     {"glDeleteTextures", (GlesProcFn)glDeleteTextures},
+    {"glDeleteVertexArraysOES", (GlesProcFn)glDeleteVertexArraysOES},
     {"glDepthFunc", (GlesProcFn)glDepthFunc},
     {"glDepthMask", (GlesProcFn)glDepthMask},
 #if GLES_CABI_COMMON
@@ -1290,6 +1319,7 @@ static const GlesProc gles_cabi_procs[] = {
     {"glFrustumx", (GlesProcFn)glFrustumx},
     {"glGenBuffers", (GlesProcFn)glGenBuffers},
     {"glGenTextures", (GlesProcFn)glGenTextures},
+    {"glGenVertexArraysOES", (GlesProcFn)glGenVertexArraysOES},
     {"glGetBooleanv", (GlesProcFn)glGetBooleanv},
     {"glGetBufferParameteriv", (GlesProcFn)glGetBufferParameteriv},
 #if GLES_CABI_COMMON
@@ -1326,6 +1356,7 @@ static const GlesProc gles_cabi_procs[] = {
     {"glIsBuffer", (GlesProcFn)glIsBuffer},
     {"glIsEnabled", (GlesProcFn)glIsEnabled},
     {"glIsTexture", (GlesProcFn)glIsTexture},
+    {"glIsVertexArrayOES", (GlesProcFn)glIsVertexArrayOES},
 #if GLES_CABI_COMMON
     {"glLightModelf", (GlesProcFn)glLightModelf},
 #endif

@@ -3,8 +3,8 @@
 ** One case per recorded core function: read its arguments from the trace,
 ** then (when run is set) call it. Included by replay.c only.
 */
-#define REPLAY_CALL_COUNT 106
-#define REPLAY_TABLE_HASH 0xB03640F0u
+#define REPLAY_CALL_COUNT 110
+#define REPLAY_TABLE_HASH 0x6224B791u
 
 static const char *const replay_call_names[REPLAY_CALL_COUNT] = {
     "gles_threads_set",
@@ -106,6 +106,10 @@ static const char *const replay_call_names[REPLAY_CALL_COUNT] = {
     "gles_BufferData",
     "gles_BufferSubData",
     "gles_IsBuffer",
+    "gles_GenVertexArraysOES",
+    "gles_DeleteVertexArraysOES",
+    "gles_BindVertexArrayOES",
+    "gles_IsVertexArrayOES",
     "gles_GetBufferParameteriv",
     "gles_DrawArrays",
     "gles_DrawElements",
@@ -880,7 +884,35 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_IsBuffer(rp->ctx, a0);
         break;
     }
-    case 99: { /* gles_GetBufferParameteriv */
+    case 99: { /* gles_GenVertexArraysOES */
+        int a0 = rd_i32(r);
+        ReplayDatum a1; rd_output(rp, r, &a1, 0);
+        if (a0 > 0 && (a1.ptr == NULL || (uint64_t)a0 * 4u > (uint64_t)a1.nbytes)) rd_fail(r, "n exceeds the output stored");
+        if (r->failed || !run) break;
+        (void)gles_GenVertexArraysOES(rp->ctx, a0, a1.ptr);
+        break;
+    }
+    case 100: { /* gles_DeleteVertexArraysOES */
+        int a0 = rd_i32(r);
+        const unsigned int *a1; uint32_t a1_n = rd_uints(r, &a1);
+        if (a0 > 0 && (uint32_t)a0 > a1_n) rd_fail(r, "n exceeds the names stored");
+        if (r->failed || !run) break;
+        (void)gles_DeleteVertexArraysOES(rp->ctx, a0, a1);
+        break;
+    }
+    case 101: { /* gles_BindVertexArrayOES */
+        unsigned int a0 = rd_u32(r);
+        if (r->failed || !run) break;
+        (void)gles_BindVertexArrayOES(rp->ctx, a0);
+        break;
+    }
+    case 102: { /* gles_IsVertexArrayOES */
+        unsigned int a0 = rd_u32(r);
+        if (r->failed || !run) break;
+        (void)gles_IsVertexArrayOES(rp->ctx, a0);
+        break;
+    }
+    case 103: { /* gles_GetBufferParameteriv */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         ReplayDatum a2; rd_output(rp, r, &a2, 0);
@@ -888,7 +920,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GetBufferParameteriv(rp->ctx, a0, a1, a2.ptr);
         break;
     }
-    case 100: { /* gles_DrawArrays */
+    case 104: { /* gles_DrawArrays */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -896,7 +928,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DrawArrays(rp->ctx, a0, a1, a2);
         break;
     }
-    case 101: { /* gles_DrawElements */
+    case 105: { /* gles_DrawElements */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         unsigned int a2 = rd_u32(r);
@@ -905,13 +937,13 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DrawElements(rp->ctx, a0, a1, a2, a3.ptr, a3.nbytes);
         break;
     }
-    case 102: { /* gles_Clear */
+    case 106: { /* gles_Clear */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_Clear(rp->ctx, a0);
         break;
     }
-    case 103: { /* gles_ReadPixels */
+    case 107: { /* gles_ReadPixels */
         int a0 = rd_i32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -923,12 +955,12 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_ReadPixels(rp->ctx, a0, a1, a2, a3, a4, a5, a6.ptr, a6.nbytes);
         break;
     }
-    case 104: { /* gles_Finish */
+    case 108: { /* gles_Finish */
         if (r->failed || !run) break;
         (void)gles_Finish(rp->ctx);
         break;
     }
-    case 105: { /* gles_Flush */
+    case 109: { /* gles_Flush */
         if (r->failed || !run) break;
         (void)gles_Flush(rp->ctx);
         break;

@@ -196,4 +196,8 @@ COMMANDS: dict[str, Command] = {
     'glMatrixIndexPointerOES': Command('glMatrixIndexPointerOES', 'void', (Param('size', 'GLint', 'int'), Param('type', 'GLenum', 'enum'), Param('stride', 'GLsizei', 'sizei'), Param('pointer', 'const void*', 'data')), 'both', 'GL_OES_matrix_palette'),
     'glWeightPointerOES': Command('glWeightPointerOES', 'void', (Param('size', 'GLint', 'int'), Param('type', 'GLenum', 'enum'), Param('stride', 'GLsizei', 'sizei'), Param('pointer', 'const void*', 'data')), 'both', 'GL_OES_matrix_palette'),
     'glQueryMatrixxOES': Command('glQueryMatrixxOES', 'GLbitfield', (Param('mantissa', 'GLfixed*', 'out'), Param('exponent', 'GLint*', 'out')), 'both', 'GL_OES_query_matrix'),
+    'glBindVertexArrayOES': Command('glBindVertexArrayOES', 'void', (Param('array', 'GLuint', 'uint'),), 'both', 'GL_OES_vertex_array_object'),
+    'glDeleteVertexArraysOES': Command('glDeleteVertexArraysOES', 'void', (Param('n', 'GLsizei', 'sizei'), Param('arrays', 'const GLuint*', 'values')), 'both', 'GL_OES_vertex_array_object'),
+    'glGenVertexArraysOES': Command('glGenVertexArraysOES', 'void', (Param('n', 'GLsizei', 'sizei'), Param('arrays', 'GLuint*', 'out')), 'both', 'GL_OES_vertex_array_object'),
+    'glIsVertexArrayOES': Command('glIsVertexArrayOES', 'GLboolean', (Param('array', 'GLuint', 'uint'),), 'both', 'GL_OES_vertex_array_object'),
 }

@@ -848,8 +848,11 @@ class GLBase:
     def _set_pointer(self, key: Any, fn: Any, args: tuple, gltype: int, pointer: Pointer, what: str) -> None:
         ptr, nbytes, keep = self._pointer(pointer, gltype, C.GL_ARRAY_BUFFER_BINDING, what)
         with self._lock:
-            # a rejected call leaves the old array in use: keep holding it
-            if fn(self._p, *args, ptr, nbytes):
+            # a rejected call leaves the old array in use: keep holding it;
+            # so does a call into a vertex array object (OES_vertex_array_object),
+            # which holds buffer arrays only, while name 0's client arrays wait
+            vao = self._bound(C.GL_VERTEX_ARRAY_BINDING_OES)
+            if fn(self._p, *args, ptr, nbytes) and not vao:
                 self._keep[key] = keep
 
     def glVertexPointer(self, size: int, type: int, stride: int, pointer: Pointer) -> None:
@@ -891,6 +894,15 @@ class GLBase:
         """Delete buffer objects: ``glDeleteBuffers(names)`` (n is the
         sequence's length, as PyOpenGL) or the C form ``(n, names)``."""
         self._delete(self._lib.gles_DeleteBuffers, n, buffers, "glDeleteBuffers")
+
+    def glGenVertexArraysOES(self, n: int) -> Any:
+        """OES_vertex_array_object names: an int for n == 1, else a uint32 array."""
+        return self._gen(self._lib.gles_GenVertexArraysOES, n)
+
+    def glDeleteVertexArraysOES(self, n: Any, arrays: Any = _INFER) -> None:
+        """Delete vertex array objects: ``(names)`` or the C form ``(n, names)``;
+        deleting the bound one binds 0."""
+        self._delete(self._lib.gles_DeleteVertexArraysOES, n, arrays, "glDeleteVertexArraysOES")
 
     def _buffer_data(self, data: Pointer, what: str) -> tuple[Any, int, Any]:
         """The bytes a Buffer(Sub)Data call copies from: an array, bytes or a
