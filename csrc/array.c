@@ -638,7 +638,8 @@ int gles_BufferData(GlesContext *ctx, unsigned int target, int64_t size, const v
         ctx_error(ctx, GL_INVALID_OPERATION);
         return GLES_OK;
     }
-    /* past the memory budget (or malloc's) the buffer stays as it was */
+    /* past the memory budget (or malloc's) the buffer stays as it was
+    ** (and stays mapped if it was; new data unmaps it) */
     int64_t held = b->data ? b->size : 0;
     uint8_t *store = ctx_mem_fits(ctx, size, held) && (uint64_t)size <= SIZE_MAX ? malloc(size ? (size_t)size : 1)
                                                                                  : NULL;
@@ -656,6 +657,7 @@ int gles_BufferData(GlesContext *ctx, unsigned int target, int64_t size, const v
     b->data = store;
     b->size = size;
     b->usage = usage;
+    b->mapped = 0;
     return GLES_OK;
 }
 
@@ -675,11 +677,168 @@ void gles_BufferSubData(GlesContext *ctx, unsigned int target, int64_t offset, i
         ctx_error(ctx, GL_INVALID_VALUE);
         return;
     }
+    if (b->mapped) {
+        ctx_error(ctx, GL_INVALID_OPERATION);
+        return;
+    }
     if (size && data) {
         memcpy(b->data + offset, data, (size_t)size);
         ctx->buffer_serial++;
     }
 }
+
+/* {====================================================================
+** mapping (OES_mapbuffer, EXT_map_buffer_range) */
+
+#define MAP_BITS (GL_MAP_READ_BIT_EXT | GL_MAP_WRITE_BIT_EXT | GL_MAP_INVALIDATE_RANGE_BIT_EXT \
+                  | GL_MAP_INVALIDATE_BUFFER_BIT_EXT | GL_MAP_FLUSH_EXPLICIT_BIT_EXT | GL_MAP_UNSYNCHRONIZED_BIT_EXT)
+
+void *gles_MapBufferRangeEXT(GlesContext *ctx, unsigned int target, int64_t offset, int64_t length,
+                             unsigned int access)
+{
+    BufferObject **slot = binding_of(ctx, target);
+    if (!slot) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return NULL;
+    }
+    BufferObject *b = *slot;
+    if (!b) {
+        ctx_error(ctx, GL_INVALID_OPERATION);
+        return NULL;
+    }
+    if (offset < 0 || length < 0 || offset > b->size || length > b->size - offset || (access & ~(unsigned)MAP_BITS)) {
+        ctx_error(ctx, GL_INVALID_VALUE);
+        return NULL;
+    }
+    const unsigned int rw = access & (GL_MAP_READ_BIT_EXT | GL_MAP_WRITE_BIT_EXT);
+    if (length == 0 || b->mapped || !rw
+        || ((access & GL_MAP_READ_BIT_EXT)
+            && (access & (GL_MAP_INVALIDATE_RANGE_BIT_EXT | GL_MAP_INVALIDATE_BUFFER_BIT_EXT
+                          | GL_MAP_UNSYNCHRONIZED_BIT_EXT)))
+        || ((access & GL_MAP_FLUSH_EXPLICIT_BIT_EXT) && !(access & GL_MAP_WRITE_BIT_EXT))) {
+        ctx_error(ctx, GL_INVALID_OPERATION);
+        return NULL;
+    }
+    if (!b->data) {
+        ctx_error(ctx, GL_OUT_OF_MEMORY);
+        return NULL;
+    }
+    b->mapped = 1;
+    b->map_access = access;
+    b->map_offset = offset;
+    b->map_length = length;
+    return b->data + offset;
+}
+
+void *gles_MapBufferOES(GlesContext *ctx, unsigned int target, unsigned int access)
+{
+    BufferObject **slot = binding_of(ctx, target);
+    if (!slot || access != GL_WRITE_ONLY_OES) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return NULL;
+    }
+    BufferObject *b = *slot;
+    if (!b || b->mapped) {
+        ctx_error(ctx, GL_INVALID_OPERATION);
+        return NULL;
+    }
+    if (!b->data || b->size == 0) {
+        /* no store to map (an empty buffer maps to nothing) */
+        ctx_error(ctx, GL_OUT_OF_MEMORY);
+        return NULL;
+    }
+    b->mapped = 1;
+    b->map_access = GL_MAP_WRITE_BIT_EXT;
+    b->map_offset = 0;
+    b->map_length = b->size;
+    return b->data;
+}
+
+void gles_FlushMappedBufferRangeEXT(GlesContext *ctx, unsigned int target, int64_t offset, int64_t length)
+{
+    BufferObject **slot = binding_of(ctx, target);
+    if (!slot) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    BufferObject *b = *slot;
+    if (!b) {
+        ctx_error(ctx, GL_INVALID_OPERATION);
+        return;
+    }
+    if (offset < 0 || length < 0 || (b->mapped && (offset > b->map_length || length > b->map_length - offset))) {
+        ctx_error(ctx, GL_INVALID_VALUE);
+        return;
+    }
+    if (!b->mapped || !(b->map_access & GL_MAP_FLUSH_EXPLICIT_BIT_EXT)) {
+        ctx_error(ctx, GL_INVALID_OPERATION);
+        return;
+    }
+    ctx->buffer_serial++;       /* the range's data may have changed */
+}
+
+unsigned char gles_UnmapBufferOES(GlesContext *ctx, unsigned int target)
+{
+    BufferObject **slot = binding_of(ctx, target);
+    if (!slot) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return 0;
+    }
+    BufferObject *b = *slot;
+    if (!b || !b->mapped) {
+        ctx_error(ctx, GL_INVALID_OPERATION);
+        return 0;
+    }
+    b->mapped = 0;
+    if (b->map_access & GL_MAP_WRITE_BIT_EXT)
+        ctx->buffer_serial++;
+    return 1;       /* the store is memory: it is never lost */
+}
+
+int gles_GetBufferPointervOES(GlesContext *ctx, unsigned int target, unsigned int pname, void **out)
+{
+    BufferObject **slot = binding_of(ctx, target);
+    if (!slot || pname != GL_BUFFER_MAP_POINTER_OES) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return 0;
+    }
+    BufferObject *b = *slot;
+    if (!b) {
+        ctx_error(ctx, GL_INVALID_OPERATION);
+        return 0;
+    }
+    *out = b->mapped ? b->data + b->map_offset : NULL;
+    return 1;
+}
+
+int gles_buffer_map_write(GlesContext *ctx, unsigned int target, int64_t offset, const void *data, int64_t nbytes)
+{
+    BufferObject **slot = binding_of(ctx, target);
+    BufferObject *b = slot ? *slot : NULL;
+    if (!b || !b->mapped || !(b->map_access & GL_MAP_WRITE_BIT_EXT))
+        return ctx_message(ctx, GLES_EVALUE, "no write mapping of the buffer bound to 0x%04X", target);
+    if (nbytes < 0 || offset < b->map_offset || nbytes > b->map_length - (offset - b->map_offset)
+        || (nbytes && !data))
+        return ctx_message(ctx, GLES_EVALUE, "%lld bytes at %lld fall outside the mapped range of buffer %u",
+                           (long long)nbytes, (long long)offset, b->name);
+    if (nbytes) {
+        memcpy(b->data + offset, data, (size_t)nbytes);
+        ctx->buffer_serial++;
+    }
+    return GLES_OK;
+}
+
+int array_reads_mapped(const GlesContext *ctx, int elements)
+{
+    if (elements && ctx->element_buffer && ctx->element_buffer->mapped)
+        return 1;
+    for (int i = 0; i < ARR_COUNT; i++)
+        if (ctx->arrays[i].enabled && ctx->arrays[i].buffer && ctx->arrays[i].buffer->mapped)
+            return 1;
+    return 0;
+}
+
+/* }==================================================================== */
 
 unsigned char gles_IsBuffer(GlesContext *ctx, unsigned int buffer)
 {
@@ -694,7 +853,8 @@ void gles_GetBufferParameteriv(GlesContext *ctx, unsigned int target, unsigned i
         return;
     }
     BufferObject *b = *slot;
-    if (pname != GL_BUFFER_SIZE && pname != GL_BUFFER_USAGE) {
+    if (pname != GL_BUFFER_SIZE && pname != GL_BUFFER_USAGE && pname != GL_BUFFER_ACCESS_OES
+        && pname != GL_BUFFER_MAPPED_OES) {
         ctx_error(ctx, GL_INVALID_ENUM);
         return;
     }
@@ -702,5 +862,10 @@ void gles_GetBufferParameteriv(GlesContext *ctx, unsigned int target, unsigned i
         ctx_error(ctx, GL_INVALID_OPERATION);
         return;
     }
-    params[0] = pname == GL_BUFFER_SIZE ? (int)b->size : (int)b->usage;
+    switch (pname) {
+    case GL_BUFFER_SIZE: params[0] = (int)b->size; break;
+    case GL_BUFFER_USAGE: params[0] = (int)b->usage; break;
+    case GL_BUFFER_ACCESS_OES: params[0] = GL_WRITE_ONLY_OES; break;     /* ES 1's one access */
+    default: params[0] = b->mapped; break;
+    }
 }

@@ -15,6 +15,9 @@ int array_get(GlesContext *ctx, unsigned int pname, double *out, int *kind);
 /* GLES_OK when every enabled array holds vertex max_index, else GLES_EVALUE
 ** with a message naming the array */
 int array_check_range(GlesContext *ctx, int64_t max_index);
+/* whether a draw would read a mapped buffer: an enabled array's, or with
+** `elements` the element array buffer (INVALID_OPERATION) */
+int array_reads_mapped(const GlesContext *ctx, int elements);
 /* base address of an enabled array's data (client memory or buffer store) */
 const uint8_t *array_base(const ArrayState *a);
 /* read element `index` of array `a` into out[0..size-1] as NUM, converting

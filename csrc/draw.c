@@ -677,6 +677,10 @@ int gles_DrawArrays(GlesContext *ctx, unsigned int mode, int first, int count)
     }
     if (count == 0 || !ctx->arrays[ARR_VERTEX].enabled)
         return GLES_OK;
+    if (array_reads_mapped(ctx, 0)) {
+        ctx_error(ctx, GL_INVALID_OPERATION);   /* a mapped buffer is the client's */
+        return GLES_OK;
+    }
     int st = array_check_range(ctx, (int64_t)first + count - 1);
     if (st != GLES_OK)
         return st;
@@ -709,6 +713,10 @@ int gles_DrawElements(GlesContext *ctx, unsigned int mode, int count, unsigned i
     }
     if (count == 0 || !ctx->arrays[ARR_VERTEX].enabled)
         return GLES_OK;
+    if (array_reads_mapped(ctx, 1)) {
+        ctx_error(ctx, GL_INVALID_OPERATION);
+        return GLES_OK;
+    }
     int isize = type == GL_UNSIGNED_BYTE ? 1 : (type == GL_UNSIGNED_SHORT ? 2 : 4);
     int64_t need = (int64_t)count * isize;
     const uint8_t *p;

@@ -343,6 +343,20 @@ void gles_BindBuffer(GlesContext *ctx, unsigned int target, unsigned int buffer)
 int gles_BufferData(GlesContext *ctx, unsigned int target, int64_t size, const void *data, unsigned int usage);
 void gles_BufferSubData(GlesContext *ctx, unsigned int target, int64_t offset, int64_t size, const void *data);
 unsigned char gles_IsBuffer(GlesContext *ctx, unsigned int buffer);
+/* OES_mapbuffer and EXT_map_buffer_range: the mapping's address, NULL on
+** a GL error */
+void *gles_MapBufferOES(GlesContext *ctx, unsigned int target, unsigned int access);
+void *gles_MapBufferRangeEXT(GlesContext *ctx, unsigned int target, int64_t offset, int64_t length,
+                             unsigned int access);
+void gles_FlushMappedBufferRangeEXT(GlesContext *ctx, unsigned int target, int64_t offset, int64_t length);
+unsigned char gles_UnmapBufferOES(GlesContext *ctx, unsigned int target);
+/* BUFFER_MAP_POINTER_OES into *out (NULL when unmapped); 0 on a GL error */
+int gles_GetBufferPointervOES(GlesContext *ctx, unsigned int target, unsigned int pname, void **out);
+/* the Python layer's writes into a mapping (its numpy copy of the mapped
+** range, copied in at a flush or unmap): `offset` from the buffer's start,
+** within the mapped range of a write mapping; GLES_EVALUE otherwise, no GL
+** error (not a GL command) */
+int gles_buffer_map_write(GlesContext *ctx, unsigned int target, int64_t offset, const void *data, int64_t nbytes);
 /* OES_vertex_array_object */
 void gles_GenVertexArraysOES(GlesContext *ctx, int n, unsigned int *names);
 void gles_DeleteVertexArraysOES(GlesContext *ctx, int n, const unsigned int *names);

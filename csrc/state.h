@@ -70,6 +70,11 @@ typedef struct BufferObject {
     uint8_t *data;
     int64_t size;
     unsigned int usage;
+    /* OES_mapbuffer, EXT_map_buffer_range: the mapped range and its access
+    ** bits (MapBufferOES maps all of it, MAP_WRITE_BIT) */
+    int mapped;
+    unsigned int map_access;
+    int64_t map_offset, map_length;
 } BufferObject;
 
 /* open-addressing map from GL names to objects (buffers now, textures later) */

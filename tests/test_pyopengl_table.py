@@ -225,3 +225,17 @@ def test_row_P15_range_warning() -> None:
         g.glTranslatef(40000.0, 0, 0)
     assert [w.category for w in caught] == [gles.RangeWarning]
     assert "glTranslatef" in str(caught[0].message)
+
+
+def test_row_P16_mapped_buffer() -> None:
+    g = make().gl
+    g.glBindBuffer(C.GL_ARRAY_BUFFER, g.glGenBuffers(1))
+    g.glBufferData(C.GL_ARRAY_BUFFER, np.zeros(8, np.uint8), C.GL_STATIC_DRAW)
+    m = g.glMapBufferOES(C.GL_ARRAY_BUFFER, C.GL_WRITE_ONLY_OES)
+    assert isinstance(m, np.ndarray) and m.dtype == np.uint8 and m.shape == (8,)
+    assert g.glGetBufferPointervOES(C.GL_ARRAY_BUFFER, C.GL_BUFFER_MAP_POINTER_OES) is m
+    m[:] = 5
+    assert g.glUnmapBufferOES(C.GL_ARRAY_BUFFER) is True
+    back = g.glMapBufferRangeEXT(C.GL_ARRAY_BUFFER, 0, 8, C.GL_MAP_READ_BIT_EXT)
+    assert (back == 5).all()
+    g.glUnmapBufferOES(C.GL_ARRAY_BUFFER)

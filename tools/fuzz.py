@@ -510,6 +510,24 @@ def _draw_elements(g: Gen) -> list[Val]:
     return [g.enum(MODES), g.int(0, 24), typ, g.pointer(typ.value)]
 
 
+def _multi_draw_arrays(g: Gen) -> list[Val]:
+    k = g.r.randint(0, 3)
+    first = [g.int(0, 8).value for _ in range(k)]
+    count = [g.int(-1, 24).value for _ in range(k)]
+    n = g.int(0, k) if g.r.random() < 0.9 else g.int(-2, 6)
+    return [g.enum(MODES), Val(first, repr(first)), Val(count, repr(count)), n]
+
+
+def _multi_draw_elements(g: Gen) -> list[Val]:
+    typ = g.enum([C.GL_UNSIGNED_BYTE, C.GL_UNSIGNED_SHORT])
+    k = g.r.randint(0, 3)
+    ptrs = [g.pointer(typ.value) for _ in range(k)]
+    count = [g.int(-1, 24).value for _ in range(k)]
+    n = g.int(0, k) if g.r.random() < 0.9 else g.int(-2, 6)
+    return [g.enum(MODES), Val(count, repr(count)), typ,
+            Val([p.value for p in ptrs], "[" + ", ".join(p.text for p in ptrs) + "]"), n]
+
+
 def _array_ptr(sizes: list[int], types: list[int], with_size: bool = True) -> Spec:
     def spec(g: Gen) -> list[Val]:
         typ = g.enum(types)
@@ -653,6 +671,8 @@ SPECS: dict[str, Spec] = {
     "glEnableClientState": _e(CLIENT),
     "glDrawArrays": lambda g: [g.enum(MODES), g.int(0, 8), g.int(0, 24)],
     "glDrawElements": _draw_elements,
+    "glMultiDrawArraysEXT": _multi_draw_arrays,
+    "glMultiDrawElementsEXT": _multi_draw_elements,
     "glDrawTexfOES": _f(5),
     "glDrawTexxOES": _x(5),
     "glDrawTexiOES": lambda g: [g.int(-8, 40) for _ in range(5)],
@@ -696,6 +716,12 @@ SPECS: dict[str, Spec] = {
     "glHint": _e(HINT_T, HINT_V),
     "glIsBuffer": lambda g: [g.int(0, 6)],
     "glIsVertexArrayOES": lambda g: [g.int(0, 6)],
+    "glMapBufferOES": lambda g: [g.enum(BUF_T), g.enum([C.GL_WRITE_ONLY_OES, 0x88B8])],
+    "glUnmapBufferOES": lambda g: [g.enum(BUF_T)],
+    "glGetBufferPointervOES": lambda g: [g.enum(BUF_T),
+                                         g.enum([C.GL_BUFFER_MAP_POINTER_OES, C.GL_BUFFER_SIZE])],
+    "glMapBufferRangeEXT": lambda g: [g.enum(BUF_T), g.int(-1, 24), g.int(-1, 24), g.int(0, 0x3F)],
+    "glFlushMappedBufferRangeEXT": lambda g: [g.enum(BUF_T), g.int(-1, 12), g.int(-1, 12)],
     "glBindVertexArrayOES": lambda g: [g.int(0, 6)],
     "glIsTexture": lambda g: [g.int(0, 6)],
     "glLightModelf": _scalar_param([], LM_P, "f"),
@@ -1407,6 +1433,18 @@ def _guard(cc: CabiContext, name: str, args: list[Any]) -> None:
             hi = cc.max_index(int(args[1]), int(args[2]), args[3])
             if hi is not None:
                 cc.check_arrays(hi)
+    elif name in ("glMultiDrawArraysEXT", "glMultiDrawElementsEXT") and len(args) in (4, 5):
+        # each list as the draw it makes; C reads primcount items of each list
+        n = args[-1]
+        lists = (args[1], args[2]) if name == "glMultiDrawArraysEXT" else (args[1], args[3])
+        if _is_address(n) and n > 0:
+            if any(not isinstance(x, (list, tuple)) or len(x) < n for x in lists):
+                raise ValueError("harness: a list shorter than primcount")
+            for i in range(int(n)):
+                if name == "glMultiDrawArraysEXT":
+                    _guard(cc, "glDrawArrays", [args[0], lists[0][i], lists[1][i]])
+                else:
+                    _guard(cc, "glDrawElements", [args[0], lists[0][i], args[2], lists[1][i]])
     elif name in ("glTexImage2D", "glTexSubImage2D") and len(args) == 9:
         data, w, h, fmt, typ = (
             args[8],

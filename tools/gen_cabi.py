@@ -194,6 +194,13 @@ glBindVertexArrayOES            gles_BindVertexArrayOES(C, array)
 glDeleteVertexArraysOES         gles_DeleteVertexArraysOES(C, n, arrays)
 glGenVertexArraysOES            gles_GenVertexArraysOES(C, n, arrays)
 glIsVertexArrayOES              gles_IsVertexArrayOES(C, array)
+glMapBufferOES                  gles_MapBufferOES(C, target, access)
+glUnmapBufferOES                gles_UnmapBufferOES(C, target)
+glGetBufferPointervOES          gles_GetBufferPointervOES(C, target, pname, params)
+glMapBufferRangeEXT             gles_MapBufferRangeEXT(C, target, (int64_t)offset, (int64_t)length, access)
+glFlushMappedBufferRangeEXT     gles_FlushMappedBufferRangeEXT(C, target, (int64_t)offset, (int64_t)length)
+glMultiDrawArraysEXT            multi_draw_arrays(C, mode, first, count, primcount)
+glMultiDrawElementsEXT          multi_draw_elements(C, mode, count, type, indices, primcount)
 """
 
 # Pointer arguments a C caller may pass as NULL: the core gives NULL its

@@ -27,6 +27,7 @@ OUT = ROOT / "src" / "gles" / "commands.py"
 EXTENSIONS = (
     "GL_OES_blend_equation_separate", "GL_OES_blend_func_separate", "GL_OES_blend_subtract",
     "GL_OES_draw_texture", "GL_OES_matrix_palette", "GL_OES_query_matrix", "GL_OES_vertex_array_object",
+    "GL_OES_mapbuffer", "GL_EXT_map_buffer_range", "GL_EXT_multi_draw_arrays",
 )
 
 PROTO = re.compile(r"^GL_API\s+(?P<ret>[\w\s\*]+?)\s*GL_APIENTRY\s+(?P<name>gl\w+)\s*\((?P<params>[^)]*)\);")
@@ -52,11 +53,13 @@ SCALAR_KINDS = {
 def kind_of(ctype: str, name: str, names: list[str]) -> str:
     """The argument kind: a scalar kind, or for pointers "values" (read,
     how many by pname where there is one), "data" (untyped bytes read),
-    "out" (written) or "out_pointer" (a pointer written)."""
+    "out" (written), "out_pointer" (a pointer written) or "pointers" (a list
+    of pointers read)."""
     if "*" not in ctype:
         return SCALAR_KINDS[ctype]
     if ctype.count("*") == 2:
-        return "out_pointer"
+        # const void *const *: a list of pointers read (MultiDrawElementsEXT)
+        return "pointers" if ctype.startswith("const") else "out_pointer"
     if not ctype.startswith("const"):
         return "out"
     if "void" in ctype:

@@ -543,6 +543,11 @@ def _covgl_calls() -> list[tuple[str, Call, str]]:
         ("glGetBufferPointervOES", lambda gl, s, t: gl.glGetBufferPointervOES(
             gl.GL_ARRAY_BUFFER, gl.GL_BUFFER_MAP_POINTER_OES), ""),
         ("glUnmapBufferOES", lambda gl, s, t: gl.glUnmapBufferOES(gl.GL_ARRAY_BUFFER), ""),
+        ("glMapBufferRangeEXT", lambda gl, s, t: gl.glMapBufferRangeEXT(
+            gl.GL_ARRAY_BUFFER, 0, 4, gl.GL_MAP_WRITE_BIT_EXT | gl.GL_MAP_FLUSH_EXPLICIT_BIT_EXT), ""),
+        ("glFlushMappedBufferRangeEXT", lambda gl, s, t: (
+            gl.glFlushMappedBufferRangeEXT(gl.GL_ARRAY_BUFFER, 0, 4),
+            gl.glUnmapBufferOES(gl.GL_ARRAY_BUFFER)), ""),
         ("glDeleteBuffers", lambda gl, s, t: gl.glDeleteBuffers(1, [s["buf"]]), ""),
         # textures
         ("glActiveTexture", lambda gl, s, t: gl.glActiveTexture(gl.GL_TEXTURE0), ""),
@@ -678,6 +683,12 @@ def _covgl_calls() -> list[tuple[str, Call, str]]:
         ("glDrawArrays", lambda gl, s, t: gl.glDrawArrays(gl.GL_TRIANGLES, 0, 3), ""),
         ("glDrawElements", lambda gl, s, t: gl.glDrawElements(
             gl.GL_TRIANGLES, 3, gl.GL_UNSIGNED_SHORT, s.setdefault("i", np.array([0, 1, 2], np.uint16))), ""),
+        ("glMultiDrawArraysEXT", lambda gl, s, t: gl.glMultiDrawArraysEXT(
+            gl.GL_TRIANGLES, s.setdefault("mf", np.array([0, 0], np.int32)),
+            s.setdefault("mc", np.array([3, 3], np.int32)), 2), ""),
+        ("glMultiDrawElementsEXT", lambda gl, s, t: gl.glMultiDrawElementsEXT(
+            gl.GL_TRIANGLES, s.setdefault("mc", np.array([3, 3], np.int32)), gl.GL_UNSIGNED_SHORT,
+            [s["i"], s["i"]], 2), ""),
         # OES_draw_texture: a 1x1 rectangle (no texture enabled, so the current colour)
         ("glDrawTexsOES", lambda gl, s, t: gl.glDrawTexsOES(0, 0, 0, 1, 1), ""),
         ("glDrawTexiOES", lambda gl, s, t: gl.glDrawTexiOES(0, 0, 0, 1, 1), ""),
@@ -712,6 +723,8 @@ _EXTENSIONS = {
                                  "glCheckFramebufferStatusOES glGetFramebufferAttachmentParameterivOES "
                                  "glDeleteFramebuffersOES glDeleteRenderbuffersOES",
     "GL_OES_mapbuffer": "glMapBufferOES glGetBufferPointervOES glUnmapBufferOES",
+    "GL_EXT_map_buffer_range": "glMapBufferRangeEXT glFlushMappedBufferRangeEXT",
+    "GL_EXT_multi_draw_arrays": "glMultiDrawArraysEXT glMultiDrawElementsEXT",
     "GL_OES_matrix_palette": "glCurrentPaletteMatrixOES glLoadPaletteFromModelViewMatrixOES "
                              "glMatrixIndexPointerOES glWeightPointerOES",
     "GL_OES_query_matrix": "glQueryMatrixxOES",

@@ -177,6 +177,51 @@ static void get_clip_plane_f(GlesContext *C, GLenum plane, GLfloat *equation)
 }
 #endif
 
+/* EXT_multi_draw_arrays: the spec's loop of DrawArrays / DrawElements over
+** the lists with count > 0, up to the first draw that records a GL error or
+** is refused (an array too short), as gl.py; a negative primcount is
+** INVALID_VALUE (as the commands' GL 1.4 form). An error recorded before
+** the call stays the first. */
+static int multi_draw_failed(GlesContext *C, int status, unsigned int before)
+{
+    const unsigned int err = gles_GetError(C);
+    if (before || err)
+        gles_set_error(C, before ? before : err);
+    return err || status != GLES_OK;
+}
+
+static void multi_draw_arrays(GlesContext *C, GLenum mode, const GLint *first, const GLsizei *count,
+                              GLsizei primcount)
+{
+    if (primcount < 0) {
+        gles_set_error(C, GL_INVALID_VALUE);
+        return;
+    }
+    for (GLsizei i = 0; i < primcount; i++) {
+        if (count[i] <= 0)
+            continue;
+        const unsigned int before = gles_GetError(C);
+        if (multi_draw_failed(C, gles_DrawArrays(C, mode, first[i], count[i]), before))
+            return;
+    }
+}
+
+static void multi_draw_elements(GlesContext *C, GLenum mode, const GLsizei *count, GLenum type,
+                                const void *const *indices, GLsizei primcount)
+{
+    if (primcount < 0) {
+        gles_set_error(C, GL_INVALID_VALUE);
+        return;
+    }
+    for (GLsizei i = 0; i < primcount; i++) {
+        if (count[i] <= 0)
+            continue;
+        const unsigned int before = gles_GetError(C);
+        if (multi_draw_failed(C, gles_DrawElements(C, mode, count[i], type, indices[i], -1), before))
+            return;
+    }
+}
+
 /* OES_query_matrix: element i is mantissa[i] / 65536 * 2^exponent[i]; bit i
 ** of the result is set when element i is not finite (as gl.py) */
 static GLbitfield query_matrix(GlesContext *C, GLfixed *mantissa, GLint *exponent)

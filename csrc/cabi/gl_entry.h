@@ -1231,6 +1231,52 @@ GL_API GLboolean GL_APIENTRY glIsVertexArrayOES (GLuint array)
     return C ? (GLboolean)(gles_IsVertexArrayOES(C, array)) : 0;
 }
 
+GL_API void * GL_APIENTRY glMapBufferOES (GLenum target, GLenum access)
+{
+    GlesContext *C = gles_cabi_current();
+    return C ? (void *)(gles_MapBufferOES(C, target, access)) : 0;
+}
+
+GL_API GLboolean GL_APIENTRY glUnmapBufferOES (GLenum target)
+{
+    GlesContext *C = gles_cabi_current();
+    return C ? (GLboolean)(gles_UnmapBufferOES(C, target)) : 0;
+}
+
+GL_API void GL_APIENTRY glGetBufferPointervOES (GLenum target, GLenum pname, void **params)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C && params)
+        gles_GetBufferPointervOES(C, target, pname, params);
+}
+
+GL_API void * GL_APIENTRY glMapBufferRangeEXT (GLenum target, GLintptr offset, GLsizeiptr length, GLbitfield access)
+{
+    GlesContext *C = gles_cabi_current();
+    return C ? (void *)(gles_MapBufferRangeEXT(C, target, (int64_t)offset, (int64_t)length, access)) : 0;
+}
+
+GL_API void GL_APIENTRY glFlushMappedBufferRangeEXT (GLenum target, GLintptr offset, GLsizeiptr length)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C)
+        gles_FlushMappedBufferRangeEXT(C, target, (int64_t)offset, (int64_t)length);
+}
+
+GL_API void GL_APIENTRY glMultiDrawArraysEXT (GLenum mode, const GLint *first, const GLsizei *count, GLsizei primcount)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C && first && count)
+        multi_draw_arrays(C, mode, first, count, primcount);
+}
+
+GL_API void GL_APIENTRY glMultiDrawElementsEXT (GLenum mode, const GLsizei *count, GLenum type, const void *const*indices, GLsizei primcount)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C && count && indices)
+        multi_draw_elements(C, mode, count, type, indices, primcount);
+}
+
 /* every entry point by name, for eglGetProcAddress (sorted for bsearch) */
 static const GlesProc gles_cabi_procs[] = {
     {"glActiveTexture", (GlesProcFn)glActiveTexture},
@@ -1304,6 +1350,7 @@ static const GlesProc gles_cabi_procs[] = {
     {"glEnableClientState", (GlesProcFn)glEnableClientState},
     {"glFinish", (GlesProcFn)glFinish},
     {"glFlush", (GlesProcFn)glFlush},
+    {"glFlushMappedBufferRangeEXT", (GlesProcFn)glFlushMappedBufferRangeEXT},
 #if GLES_CABI_COMMON
     {"glFogf", (GlesProcFn)glFogf},
 #endif
@@ -1322,6 +1369,7 @@ static const GlesProc gles_cabi_procs[] = {
     {"glGenVertexArraysOES", (GlesProcFn)glGenVertexArraysOES},
     {"glGetBooleanv", (GlesProcFn)glGetBooleanv},
     {"glGetBufferParameteriv", (GlesProcFn)glGetBufferParameteriv},
+    {"glGetBufferPointervOES", (GlesProcFn)glGetBufferPointervOES},
 #if GLES_CABI_COMMON
     {"glGetClipPlanef", (GlesProcFn)glGetClipPlanef},
 #endif
@@ -1384,6 +1432,8 @@ static const GlesProc gles_cabi_procs[] = {
     {"glLoadMatrixx", (GlesProcFn)glLoadMatrixx},
     {"glLoadPaletteFromModelViewMatrixOES", (GlesProcFn)glLoadPaletteFromModelViewMatrixOES},
     {"glLogicOp", (GlesProcFn)glLogicOp},
+    {"glMapBufferOES", (GlesProcFn)glMapBufferOES},
+    {"glMapBufferRangeEXT", (GlesProcFn)glMapBufferRangeEXT},
 #if GLES_CABI_COMMON
     {"glMaterialf", (GlesProcFn)glMaterialf},
 #endif
@@ -1398,6 +1448,8 @@ static const GlesProc gles_cabi_procs[] = {
     {"glMultMatrixf", (GlesProcFn)glMultMatrixf},
 #endif
     {"glMultMatrixx", (GlesProcFn)glMultMatrixx},
+    {"glMultiDrawArraysEXT", (GlesProcFn)glMultiDrawArraysEXT},
+    {"glMultiDrawElementsEXT", (GlesProcFn)glMultiDrawElementsEXT},
 #if GLES_CABI_COMMON
     {"glMultiTexCoord4f", (GlesProcFn)glMultiTexCoord4f},
 #endif
@@ -1477,6 +1529,7 @@ static const GlesProc gles_cabi_procs[] = {
     {"glTranslatef", (GlesProcFn)glTranslatef},
 #endif
     {"glTranslatex", (GlesProcFn)glTranslatex},
+    {"glUnmapBufferOES", (GlesProcFn)glUnmapBufferOES},
     {"glVertexPointer", (GlesProcFn)glVertexPointer},
     {"glViewport", (GlesProcFn)glViewport},
     {"glWeightPointerOES", (GlesProcFn)glWeightPointerOES},

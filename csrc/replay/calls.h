@@ -3,8 +3,8 @@
 ** One case per recorded core function: read its arguments from the trace,
 ** then (when run is set) call it. Included by replay.c only.
 */
-#define REPLAY_CALL_COUNT 110
-#define REPLAY_TABLE_HASH 0x6224B791u
+#define REPLAY_CALL_COUNT 115
+#define REPLAY_TABLE_HASH 0x3E7034AFu
 
 static const char *const replay_call_names[REPLAY_CALL_COUNT] = {
     "gles_threads_set",
@@ -106,6 +106,11 @@ static const char *const replay_call_names[REPLAY_CALL_COUNT] = {
     "gles_BufferData",
     "gles_BufferSubData",
     "gles_IsBuffer",
+    "gles_MapBufferOES",
+    "gles_MapBufferRangeEXT",
+    "gles_FlushMappedBufferRangeEXT",
+    "gles_UnmapBufferOES",
+    "gles_buffer_map_write",
     "gles_GenVertexArraysOES",
     "gles_DeleteVertexArraysOES",
     "gles_BindVertexArrayOES",
@@ -884,7 +889,45 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_IsBuffer(rp->ctx, a0);
         break;
     }
-    case 99: { /* gles_GenVertexArraysOES */
+    case 99: { /* gles_MapBufferOES */
+        unsigned int a0 = rd_u32(r);
+        unsigned int a1 = rd_u32(r);
+        if (r->failed || !run) break;
+        (void)gles_MapBufferOES(rp->ctx, a0, a1);
+        break;
+    }
+    case 100: { /* gles_MapBufferRangeEXT */
+        unsigned int a0 = rd_u32(r);
+        int64_t a1 = rd_i64(r);
+        int64_t a2 = rd_i64(r);
+        unsigned int a3 = rd_u32(r);
+        if (r->failed || !run) break;
+        (void)gles_MapBufferRangeEXT(rp->ctx, a0, a1, a2, a3);
+        break;
+    }
+    case 101: { /* gles_FlushMappedBufferRangeEXT */
+        unsigned int a0 = rd_u32(r);
+        int64_t a1 = rd_i64(r);
+        int64_t a2 = rd_i64(r);
+        if (r->failed || !run) break;
+        (void)gles_FlushMappedBufferRangeEXT(rp->ctx, a0, a1, a2);
+        break;
+    }
+    case 102: { /* gles_UnmapBufferOES */
+        unsigned int a0 = rd_u32(r);
+        if (r->failed || !run) break;
+        (void)gles_UnmapBufferOES(rp->ctx, a0);
+        break;
+    }
+    case 103: { /* gles_buffer_map_write */
+        unsigned int a0 = rd_u32(r);
+        int64_t a1 = rd_i64(r);
+        ReplayDatum a2; rd_datum(rp, r, &a2, 1, 0x8894u, run);
+        if (r->failed || !run) break;
+        (void)gles_buffer_map_write(rp->ctx, a0, a1, a2.ptr, a2.nbytes);
+        break;
+    }
+    case 104: { /* gles_GenVertexArraysOES */
         int a0 = rd_i32(r);
         ReplayDatum a1; rd_output(rp, r, &a1, 0);
         if (a0 > 0 && (a1.ptr == NULL || (uint64_t)a0 * 4u > (uint64_t)a1.nbytes)) rd_fail(r, "n exceeds the output stored");
@@ -892,7 +935,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GenVertexArraysOES(rp->ctx, a0, a1.ptr);
         break;
     }
-    case 100: { /* gles_DeleteVertexArraysOES */
+    case 105: { /* gles_DeleteVertexArraysOES */
         int a0 = rd_i32(r);
         const unsigned int *a1; uint32_t a1_n = rd_uints(r, &a1);
         if (a0 > 0 && (uint32_t)a0 > a1_n) rd_fail(r, "n exceeds the names stored");
@@ -900,19 +943,19 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DeleteVertexArraysOES(rp->ctx, a0, a1);
         break;
     }
-    case 101: { /* gles_BindVertexArrayOES */
+    case 106: { /* gles_BindVertexArrayOES */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_BindVertexArrayOES(rp->ctx, a0);
         break;
     }
-    case 102: { /* gles_IsVertexArrayOES */
+    case 107: { /* gles_IsVertexArrayOES */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_IsVertexArrayOES(rp->ctx, a0);
         break;
     }
-    case 103: { /* gles_GetBufferParameteriv */
+    case 108: { /* gles_GetBufferParameteriv */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         ReplayDatum a2; rd_output(rp, r, &a2, 0);
@@ -920,7 +963,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GetBufferParameteriv(rp->ctx, a0, a1, a2.ptr);
         break;
     }
-    case 104: { /* gles_DrawArrays */
+    case 109: { /* gles_DrawArrays */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -928,7 +971,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DrawArrays(rp->ctx, a0, a1, a2);
         break;
     }
-    case 105: { /* gles_DrawElements */
+    case 110: { /* gles_DrawElements */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         unsigned int a2 = rd_u32(r);
@@ -937,13 +980,13 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DrawElements(rp->ctx, a0, a1, a2, a3.ptr, a3.nbytes);
         break;
     }
-    case 106: { /* gles_Clear */
+    case 111: { /* gles_Clear */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_Clear(rp->ctx, a0);
         break;
     }
-    case 107: { /* gles_ReadPixels */
+    case 112: { /* gles_ReadPixels */
         int a0 = rd_i32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -955,12 +998,12 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_ReadPixels(rp->ctx, a0, a1, a2, a3, a4, a5, a6.ptr, a6.nbytes);
         break;
     }
-    case 108: { /* gles_Finish */
+    case 113: { /* gles_Finish */
         if (r->failed || !run) break;
         (void)gles_Finish(rp->ctx);
         break;
     }
-    case 109: { /* gles_Flush */
+    case 114: { /* gles_Flush */
         if (r->failed || !run) break;
         (void)gles_Flush(rp->ctx);
         break;

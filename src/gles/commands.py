@@ -191,6 +191,9 @@ COMMANDS: dict[str, Command] = {
     'glDrawTexxvOES': Command('glDrawTexxvOES', 'void', (Param('coords', 'const GLfixed*', 'values'),), 'both', 'GL_OES_draw_texture'),
     'glDrawTexfOES': Command('glDrawTexfOES', 'void', (Param('x', 'GLfloat', 'float'), Param('y', 'GLfloat', 'float'), Param('z', 'GLfloat', 'float'), Param('width', 'GLfloat', 'float'), Param('height', 'GLfloat', 'float')), 'common', 'GL_OES_draw_texture'),
     'glDrawTexfvOES': Command('glDrawTexfvOES', 'void', (Param('coords', 'const GLfloat*', 'values'),), 'common', 'GL_OES_draw_texture'),
+    'glMapBufferOES': Command('glMapBufferOES', 'void *', (Param('target', 'GLenum', 'enum'), Param('access', 'GLenum', 'enum')), 'both', 'GL_OES_mapbuffer'),
+    'glUnmapBufferOES': Command('glUnmapBufferOES', 'GLboolean', (Param('target', 'GLenum', 'enum'),), 'both', 'GL_OES_mapbuffer'),
+    'glGetBufferPointervOES': Command('glGetBufferPointervOES', 'void', (Param('target', 'GLenum', 'enum'), Param('pname', 'GLenum', 'enum'), Param('params', 'void**', 'out_pointer')), 'both', 'GL_OES_mapbuffer'),
     'glCurrentPaletteMatrixOES': Command('glCurrentPaletteMatrixOES', 'void', (Param('matrixpaletteindex', 'GLuint', 'uint'),), 'both', 'GL_OES_matrix_palette'),
     'glLoadPaletteFromModelViewMatrixOES': Command('glLoadPaletteFromModelViewMatrixOES', 'void', (), 'both', 'GL_OES_matrix_palette'),
     'glMatrixIndexPointerOES': Command('glMatrixIndexPointerOES', 'void', (Param('size', 'GLint', 'int'), Param('type', 'GLenum', 'enum'), Param('stride', 'GLsizei', 'sizei'), Param('pointer', 'const void*', 'data')), 'both', 'GL_OES_matrix_palette'),
@@ -200,4 +203,8 @@ COMMANDS: dict[str, Command] = {
     'glDeleteVertexArraysOES': Command('glDeleteVertexArraysOES', 'void', (Param('n', 'GLsizei', 'sizei'), Param('arrays', 'const GLuint*', 'values')), 'both', 'GL_OES_vertex_array_object'),
     'glGenVertexArraysOES': Command('glGenVertexArraysOES', 'void', (Param('n', 'GLsizei', 'sizei'), Param('arrays', 'GLuint*', 'out')), 'both', 'GL_OES_vertex_array_object'),
     'glIsVertexArrayOES': Command('glIsVertexArrayOES', 'GLboolean', (Param('array', 'GLuint', 'uint'),), 'both', 'GL_OES_vertex_array_object'),
+    'glMapBufferRangeEXT': Command('glMapBufferRangeEXT', 'void *', (Param('target', 'GLenum', 'enum'), Param('offset', 'GLintptr', 'intptr'), Param('length', 'GLsizeiptr', 'sizeiptr'), Param('access', 'GLbitfield', 'bitfield')), 'both', 'GL_EXT_map_buffer_range'),
+    'glFlushMappedBufferRangeEXT': Command('glFlushMappedBufferRangeEXT', 'void', (Param('target', 'GLenum', 'enum'), Param('offset', 'GLintptr', 'intptr'), Param('length', 'GLsizeiptr', 'sizeiptr')), 'both', 'GL_EXT_map_buffer_range'),
+    'glMultiDrawArraysEXT': Command('glMultiDrawArraysEXT', 'void', (Param('mode', 'GLenum', 'enum'), Param('first', 'const GLint*', 'values'), Param('count', 'const GLsizei*', 'values'), Param('primcount', 'GLsizei', 'sizei')), 'both', 'GL_EXT_multi_draw_arrays'),
+    'glMultiDrawElementsEXT': Command('glMultiDrawElementsEXT', 'void', (Param('mode', 'GLenum', 'enum'), Param('count', 'const GLsizei*', 'values'), Param('type', 'GLenum', 'enum'), Param('indices', 'const void* const*', 'pointers'), Param('primcount', 'GLsizei', 'sizei')), 'both', 'GL_EXT_multi_draw_arrays'),
 }

@@ -38,7 +38,7 @@ import operator
 import sys
 import threading
 from collections.abc import Sequence
-from typing import Any, Union
+from typing import Any, NamedTuple, Union
 
 import numpy as np
 
@@ -58,6 +58,18 @@ _DTYPES = {
     C.GL_FIXED: np.dtype(np.int32),
     C.GL_FLOAT: np.dtype(np.float32),
 }
+# a target's binding query (buffer objects)
+_BUFFER_BINDINGS = {C.GL_ARRAY_BUFFER: C.GL_ARRAY_BUFFER_BINDING,
+                    C.GL_ELEMENT_ARRAY_BUFFER: C.GL_ELEMENT_ARRAY_BUFFER_BINDING}
+
+
+class _Mapping(NamedTuple):
+    """A mapped range as Python holds it: its copy, where it starts, its access bits."""
+    array: np.ndarray
+    offset: int
+    access: int
+
+
 # glDrawElements' index types (GL_UNSIGNED_INT: OES_element_index_uint)
 _INDEX_DTYPES = {
     C.GL_UNSIGNED_BYTE: np.dtype(np.uint8),
@@ -411,6 +423,8 @@ class GLBase:
         self._p = handle.ptr
         self._lock: threading.Lock = handle.lock
         self._keep: dict[Any, Any] = {}
+        # buffer name -> its mapping's numpy copy (OES_mapbuffer, EXT_map_buffer_range)
+        self._maps: dict[int, _Mapping] = {}
         self._d16 = self._ffi.new("double[16]")
         self._kind = self._ffi.new("int *")
 
@@ -904,6 +918,100 @@ class GLBase:
         deleting the bound one binds 0."""
         self._delete(self._lib.gles_DeleteVertexArraysOES, n, arrays, "glDeleteVertexArraysOES")
 
+    # {================================================================
+    # mapped buffers (OES_mapbuffer, EXT_map_buffer_range)
+    #
+    # A mapping reaches Python as a numpy copy of the mapped bytes, written
+    # into the buffer at glUnmapBufferOES (or, with MAP_FLUSH_EXPLICIT_BIT,
+    # range by range at glFlushMappedBufferRangeEXT): an array kept past the
+    # unmap, or past a glBufferData or glDeleteBuffers that ends the mapping,
+    # is ordinary memory, never the freed store. The copies go through the
+    # core, so traces hold them.
+
+    def _map_copy(self, target: int, ptr: Any, offset: int, length: int, access: int) -> np.ndarray | None:
+        if ptr == self._ffi.NULL:
+            return None
+        copy = np.frombuffer(self._ffi.buffer(ptr, length), dtype=np.uint8).copy()
+        name = self._bound(_BUFFER_BINDINGS[target])
+        self._maps[name] = _Mapping(copy, offset, access)
+        return copy
+
+    def _map_write(self, target: int, m: _Mapping, start: int, stop: int) -> None:
+        """Bytes start..stop of the mapping's copy into the buffer."""
+        part = np.ascontiguousarray(m.array[start:stop])
+        st = self._lib.gles_buffer_map_write(self._p, target, m.offset + start, self._ffi.from_buffer(part),
+                                             part.nbytes)
+        self._status(st)
+
+    def _mapped(self, target: int) -> _Mapping | None:
+        """The live mapping of the buffer bound to target, if Python made it."""
+        name = self._bound(_BUFFER_BINDINGS[target])
+        out = self._ffi.new("int[1]")
+        self._lib.gles_GetBufferParameteriv(self._p, target, C.GL_BUFFER_MAPPED_OES, out)
+        return self._maps.get(name) if out[0] else None
+
+    def glMapBufferOES(self, target: int, access: int) -> np.ndarray | None:
+        """OES_mapbuffer: map the buffer bound to target (access
+        GL_WRITE_ONLY_OES). Returns a writable uint8 array of its bytes, which
+        glUnmapBufferOES writes into the buffer; None on a GL error."""
+        target, access = _index(target), _index(access)
+        with self._lock:
+            ptr = self._lib.gles_MapBufferOES(self._p, target, access)
+            size = self._bound_buffer_size(target) if ptr != self._ffi.NULL else 0
+            return self._map_copy(target, ptr, 0, size or 0, C.GL_MAP_WRITE_BIT_EXT)
+
+    def glMapBufferRangeEXT(self, target: int, offset: int, length: int, access: int) -> np.ndarray | None:
+        """EXT_map_buffer_range: map `length` bytes from `offset` with the
+        MAP_*_BIT_EXT `access`. Returns a uint8 array of those bytes (their
+        current values, also where the range is invalidated), written back
+        at glUnmapBufferOES when MAP_WRITE_BIT_EXT is set, or by
+        glFlushMappedBufferRangeEXT with MAP_FLUSH_EXPLICIT_BIT_EXT; None on
+        a GL error."""
+        target, offset, length, access = _index(target), _index(offset), _index(length), _index(access)
+        with self._lock:
+            ptr = self._lib.gles_MapBufferRangeEXT(self._p, target, offset, length, access)
+            return self._map_copy(target, ptr, offset, length, access)
+
+    def glFlushMappedBufferRangeEXT(self, target: int, offset: int, length: int) -> None:
+        """EXT_map_buffer_range: write bytes offset..offset + length of the
+        mapping (from its start) into the buffer."""
+        target, offset, length = _index(target), _index(offset), _index(length)
+        with self._lock:
+            before = self._lib.gles_GetError(self._p)
+            self._lib.gles_FlushMappedBufferRangeEXT(self._p, target, offset, length)
+            err = self._lib.gles_GetError(self._p)
+            if before or err:
+                self._lib.gles_set_error(self._p, before or err)
+            m = None if err else self._mapped(target)
+            if m is not None:
+                self._map_write(target, m, offset, offset + length)
+
+    def glUnmapBufferOES(self, target: int) -> bool:
+        """OES_mapbuffer: end the mapping, its array's bytes written into the
+        buffer (all of them for a write mapping without
+        MAP_FLUSH_EXPLICIT_BIT_EXT); False on a GL error."""
+        target = _index(target)
+        with self._lock:
+            if target in _BUFFER_BINDINGS:
+                m = self._mapped(target)
+                if m is not None and m.access & C.GL_MAP_WRITE_BIT_EXT \
+                        and not m.access & C.GL_MAP_FLUSH_EXPLICIT_BIT_EXT:
+                    self._map_write(target, m, 0, m.array.nbytes)
+                self._maps.pop(self._bound(_BUFFER_BINDINGS[target]), None)
+            return bool(self._lib.gles_UnmapBufferOES(self._p, target))
+
+    def glGetBufferPointervOES(self, target: int, pname: int) -> np.ndarray | None:
+        """OES_mapbuffer: BUFFER_MAP_POINTER_OES as the mapping's array (the
+        one glMapBuffer* returned), None when the buffer is not mapped."""
+        target, pname = _index(target), _index(pname)
+        out = self._ffi.new("void *[1]")
+        with self._lock:
+            ok = self._lib.gles_GetBufferPointervOES(self._p, target, pname, out)
+            if not ok or out[0] == self._ffi.NULL:
+                return None
+            m = self._mapped(target)
+            return None if m is None else m.array
+
     def _buffer_data(self, data: Pointer, what: str) -> tuple[Any, int, Any]:
         """The bytes a Buffer(Sub)Data call copies from: an array, bytes or a
         sequence, never an int (no command reads from an address)."""
@@ -996,6 +1104,58 @@ class GLBase:
         del keep
         if st:
             self._status(st, "glDrawElements")
+
+    def _multi_lists(self, primcount: Any, what: str, **lists: Any) -> tuple[int, dict[str, list[Any]]]:
+        """primcount and the first primcount items of each list (ValueError
+        when one is shorter); a negative primcount records INVALID_VALUE."""
+        n = _glint(primcount, "primcount")
+        out = {}
+        for name, seq in lists.items():
+            items = list(seq) if n > 0 else []
+            if len(items) < n:
+                raise ValueError(f"{what}: {name} holds {len(items)} items, primcount is {n}")
+            out[name] = items[:n]
+        if n < 0:
+            with self._lock:
+                self._lib.gles_set_error(self._p, C.GL_INVALID_VALUE)
+        return n, out
+
+    def _draw_each(self, draws: list[tuple[Any, ...]], draw: Any) -> None:
+        """draw(*args) for each args of `draws` until one records a GL error
+        or raises: one call never does both (the C ABI stops likewise). An
+        error recorded before the call stays the first."""
+        with self._lock:
+            before = self._lib.gles_GetError(self._p)
+        new = 0
+        try:
+            for args in draws:
+                draw(*args)
+                with self._lock:
+                    new = self._lib.gles_GetError(self._p)
+                if new:
+                    break
+        finally:
+            if before or new:
+                with self._lock:
+                    self._lib.gles_set_error(self._p, before or new)
+
+    def glMultiDrawArraysEXT(self, mode: int, first: Any, count: Any, primcount: Any) -> None:
+        """EXT_multi_draw_arrays: glDrawArrays(mode, first[i], count[i]) for
+        each i < primcount with count[i] > 0 (the extension's loop), up to the
+        first draw that records a GL error or raises."""
+        _, lists = self._multi_lists(primcount, "glMultiDrawArraysEXT", first=first, count=count)
+        pairs = [(_glint(f, "first"), _glint(c, "count")) for f, c in zip(lists["first"], lists["count"])]
+        self._draw_each([(mode, f, c) for f, c in pairs if c > 0], self.glDrawArrays)
+
+    def glMultiDrawElementsEXT(self, mode: int, count: Any, type: int, indices: Any, primcount: Any) -> None:
+        """EXT_multi_draw_arrays: glDrawElements(mode, count[i], type,
+        indices[i]) for each i < primcount with count[i] > 0; indices[i] is
+        an index array, or a byte offset while an element array buffer is
+        bound. Stops as glMultiDrawArraysEXT does."""
+        _, lists = self._multi_lists(primcount, "glMultiDrawElementsEXT", count=count, indices=indices)
+        counts = [_glint(c, "count") for c in lists["count"]]
+        self._draw_each([(mode, c, type, ix) for c, ix in zip(counts, lists["indices"]) if c > 0],
+                        self.glDrawElements)
 
     def glReadPixels(self, x: int, y: int, width: int, height: int, format: int, type: int,
                      array: Any = None) -> Any:
