@@ -74,7 +74,7 @@ void gles_DrawTexOES(GlesContext *ctx, double xs, double ys, double zs, double w
     if (y1 > clip.y1) y1 = clip.y1;
     if (x0 >= x1 || y0 >= y1)
         return;
-    if (!(ctx->debug & GLES_DEBUG_GENERIC_SPANS)) {
+    if (!ctx_generic_spans(ctx)) {
         DrawTexJob job = { &r, x0, y0, x1, y1 };
         if (!raster_threaded(ctx, (x1 - x0) * (y1 - y0), drawtex_job, &job))
             drawtex_job(ctx, &job);

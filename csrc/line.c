@@ -171,7 +171,7 @@ void raster_line(GlesContext *ctx, const Vertex *a, const Vertex *b, const Verte
     /* (window coordinates below 2^40 subpixels: the edge values' constants
     ** stay far inside int64) */
     const int64_t lim = (int64_t)1 << 40;
-    if (!smooth && w == 1 && ((xmajor && D > 0) || !raster_needs_lod(ctx)) && !(ctx->debug & GLES_DEBUG_GENERIC_SPANS)
+    if (!smooth && w == 1 && ((xmajor && D > 0) || !raster_needs_lod(ctx)) && !ctx_generic_spans(ctx)
         && ma > -lim && ma < lim && mb > -lim && mb < lim && na > -lim && na < lim && nb > -lim && nb < lim) {
         if (p0 <= p1)
             line_runs(ctx, &t, xmajor, ma, na, nb, D, len, p0, p1, cn0, cn1);

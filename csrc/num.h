@@ -1180,6 +1180,8 @@ static inline LODV lod_log2(TEXC rho)
     return fx_log2((int32_t)r);
 }
 static inline LODV lod_from_ratio(int n, int d) { return ((int64_t)n << 30) / d; }
+/* a real level-of-detail offset (|v| <= 2^20) in 0.30 */
+static inline LODV lod_from_double(double v) { return dbl_to_i64(v * 1073741824.0, -((int64_t)1 << 50), (int64_t)1 << 50); }
 static inline int64_t lod_ifloor(LODV l) { return l >> 30; }
 static inline FRAGV lod_frac(LODV l) { return l & (((int64_t)1 << 30) - 1); }
 #else
@@ -1358,6 +1360,7 @@ static inline LODV lod_log2(TEXC rho)
 static inline LODV lod_log2(TEXC rho) { return rho > 0 ? (NUM)log2((double)rho) : (NUM)-1e30; }
 #endif
 static inline LODV lod_from_ratio(int n, int d) { return (NUM)n / (NUM)d; }
+static inline LODV lod_from_double(double v) { return (NUM)v; }
 static inline int64_t lod_ifloor(LODV l) { return dbl_to_i64(floor((double)l), -((int64_t)1 << 40), (int64_t)1 << 40); }
 static inline FRAGV lod_frac(LODV l) { return l - NUM_FLOOR(l); }
 #endif

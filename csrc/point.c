@@ -103,7 +103,7 @@ void raster_point(GlesContext *ctx, const Vertex *v)
     if (y0 > y1 || !raster_owns_rows(ctx, y0, y1))
         return;     /* (threads: no row of this one's) */
     point_setup(ctx, &t, v);
-    if (!disc && !(ctx->debug & GLES_DEBUG_GENERIC_SPANS)) {
+    if (!disc && !ctx_generic_spans(ctx)) {
         /* a square of fragments whose inputs are the point's: only the
         ** sprite coordinates vary, so the rows run through the span chain */
         if (x0 > x1 || y0 > y1)

@@ -222,7 +222,7 @@ static const char *const fused_names[2][3][2] = { FUSED_SPANS(FUSED_NAME) };
 static int stencil_only_state(const GlesContext *ctx)
 {
     return span_no_color(ctx) && !ctx->alpha_test && !(ctx->depth_test && ctx->depth) && ctx->stencil_test
-        && ctx->stencil && !(ctx->debug & GLES_DEBUG_GENERIC_SPANS);
+        && ctx->stencil && !ctx_generic_spans(ctx);
 }
 
 /* the value each stored value becomes (fragment_tests' op with no depth
@@ -252,7 +252,7 @@ static void span_stencil_only(GlesContext *ctx, const TriSetup *t, int y, int x0
 static int simple_but_texture(const GlesContext *ctx, int bk)
 {
     return ctx->color_format == GLES_COLOR_RGBA8888 && ctx->color_mask[0] && ctx->color_mask[1]
-        && ctx->color_mask[2] && ctx->color_mask[3] && !(ctx->debug & GLES_DEBUG_GENERIC_SPANS)
+        && ctx->color_mask[2] && ctx->color_mask[3] && !ctx_generic_spans(ctx)
         && !ctx->alpha_test && !(ctx->stencil_test && ctx->stencil) && !ctx->fog && !ctx->color_logic_op
         && !ctx->polygon_offset_fill && bk >= 0;
 }
@@ -273,7 +273,7 @@ void span_choose(GlesContext *ctx)
         ctx->span = table[depth][bk][smooth];
         ctx->span_const = table[depth][bk][0];
         ctx->span_name = fused_names[depth][bk][smooth];
-    } else if (ctx->debug & GLES_DEBUG_GENERIC_SPANS) {
+    } else if (ctx_generic_spans(ctx)) {
         ctx->span = ctx->span_const = span_generic;
         ctx->span_name = "generic";
     } else if (stencil_only_state(ctx)) {

@@ -194,6 +194,7 @@ typedef struct TexUnit {
     unsigned int combine_rgb, combine_alpha;
     unsigned int src_rgb[3], src_alpha[3], op_rgb[3], op_alpha[3];
     double rgb_scale, alpha_scale;
+    double lod_bias;                    /* TEXTURE_LOD_BIAS_EXT (EXT_texture_lod_bias), as specified */
     int coord_replace;                  /* OES_point_sprite */
 } TexUnit;
 
@@ -467,6 +468,19 @@ struct GlesContext {
 #define DIRTY_ALL 0xffffffffu
 
 /* set the first error only, as the spec says */
+/* whether the draws take the generic span path: the debug switch, or a
+** sampling unit with a level-of-detail bias (EXT_texture_lod_bias: the
+** vector samplers and fused stages compute lambda without one) */
+static inline int ctx_generic_spans(const GlesContext *ctx)
+{
+    if (ctx->debug & GLES_DEBUG_GENERIC_SPANS)
+        return 1;
+    for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
+        if (ctx->units[u].enabled && ctx->units[u].lod_bias != 0.0)
+            return 1;
+    return 0;
+}
+
 static inline void ctx_error(GlesContext *ctx, unsigned int err)
 {
     if (ctx->error == GL_NO_ERROR)

@@ -137,7 +137,8 @@ static inline unsigned int lod_min_filter(unsigned int minf)
                                                                                                         : GL_LINEAR;
 }
 
-SAMPLE_INLINE LodChoice lod_choose(const Texture *t, const TexCoord *c, const TexCoord *dx, const TexCoord *dy)
+SAMPLE_INLINE LodChoice lod_choose(const Texture *t, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
+                                   LODV bias)
 {
     LodChoice ch = { 0, 0, t->mag_filter, 0 };
     /* rho in texel units of level 0: the largest of the four derivatives;
@@ -152,7 +153,8 @@ SAMPLE_INLINE LodChoice lod_choose(const Texture *t, const TexCoord *c, const Te
     if (d2 > rho) rho = d2;
     if (d3 > rho) rho = d3;
     if (d4 > rho) rho = d4;
-    LODV lambda = lod_log2(rho);
+    /* EXT_texture_lod_bias: the unit's bias, before every clamp */
+    LODV lambda = lod_log2(rho) + bias;
     unsigned int minf = t->min_filter;
     if (lambda <= lod_cshift(t))
         return ch;
@@ -191,13 +193,13 @@ static inline void lod_mix(FRAGV f, const FRAGV t1[4], const FRAGV t2[4], FRAGV 
 }
 
 SAMPLE_INLINE void sample_w(const Texture *t, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
-                            FRAGV out[4], const FRAGV *unorm, unsigned int ws, unsigned int wt, int simd)
+                            FRAGV out[4], const FRAGV *unorm, unsigned int ws, unsigned int wt, int simd, LODV bias)
 {
     if (!dx || !dy) {
         sample_level(t, 0, t->mag_filter, c->s, c->t, out, unorm, ws, wt, simd);
         return;
     }
-    const LodChoice ch = lod_choose(t, c, dx, dy);
+    const LodChoice ch = lod_choose(t, c, dx, dy, bias);
     if (!ch.two) {
         sample_level(t, ch.level, ch.filter, c->s, c->t, out, unorm, ws, wt, simd);
         return;
@@ -208,10 +210,15 @@ SAMPLE_INLINE void sample_w(const Texture *t, const TexCoord *c, const TexCoord 
     lod_mix(ch.frac, t1, t2, out);
 }
 
-void texture_sample(const Texture *t, const TexCoord *c, const TexCoord *dx, const TexCoord *dy, FRAGV out[4],
-                    const FRAGV *unorm)
+void texture_sample(const Texture *t, double lod_bias, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
+                    FRAGV out[4], const FRAGV *unorm)
 {
-    sample_w(t, c, dx, dy, out, unorm, t->wrap_s, t->wrap_t, 0);
+    /* EXT_texture_lod_bias: clamped to MAX_TEXTURE_LOD_BIAS_EXT */
+    const double b = lod_bias != lod_bias ? 0.0
+                   : (lod_bias < -TEXTURE_MAX_LOD_BIAS ? -TEXTURE_MAX_LOD_BIAS
+                   : (lod_bias > TEXTURE_MAX_LOD_BIAS ? TEXTURE_MAX_LOD_BIAS : lod_bias));
+    const LODV bias = lod_from_double(b);
+    sample_w(t, c, dx, dy, out, unorm, t->wrap_s, t->wrap_t, 0, bias);
 }
 
 /* {====================================================================
@@ -229,7 +236,7 @@ void texture_sample(const Texture *t, const TexCoord *c, const TexCoord *dx, con
                 sample_level(t, 0, FILTER, c[j].s, c[j].t, out + (size_t)j * stride, unorm, ws, wt, SIMD); \
         } else if (!(SIMD && lod_blocks(SIMD, t, n, c, dx, dy, out, stride, unorm, ws, wt))) {              \
             for (int j = 0; j < n; j++)                                                                    \
-                sample_w(t, &c[j], &dx[j], &dy[j], out + (size_t)j * stride, unorm, ws, wt, SIMD);         \
+                sample_w(t, &c[j], &dx[j], &dy[j], out + (size_t)j * stride, unorm, ws, wt, SIMD, 0);      \
         }                                                                                                  \
     }
 
@@ -521,7 +528,7 @@ static int lod_block(int simd, const Texture *t, int n, const TexCoord *c, const
     for (; j + 4 <= n; j += 4)
         if (!lod_choose4_f(&p, c + j, dx + j, dy + j, key + 1 + j, frac + j))
             for (int i = j; i < j + 4; i++) {
-                const LodChoice ch = lod_choose(t, &c[i], &dx[i], &dy[i]);
+                const LodChoice ch = lod_choose(t, &c[i], &dx[i], &dy[i], 0);
                 key[1 + i] = lod_key(ch.level, ch.two, ch.filter);
                 frac[i] = ch.frac;
             }
@@ -537,7 +544,7 @@ static int lod_block(int simd, const Texture *t, int n, const TexCoord *c, const
 #endif
 #endif
     for (; j < n; j++) {
-        const LodChoice ch = lod_choose(t, &c[j], &dx[j], &dy[j]);
+        const LodChoice ch = lod_choose(t, &c[j], &dx[j], &dy[j], 0);
         key[1 + j] = lod_key(ch.level, ch.two, ch.filter);
         frac[j] = ch.frac;
     }

@@ -977,6 +977,16 @@ void gles_TexEnv(GlesContext *ctx, unsigned int target, unsigned int pname, cons
         tu->coord_replace = p[0] != 0.0;
         return;
     }
+    if (target == GL_TEXTURE_FILTER_CONTROL_EXT) {
+        /* EXT_texture_lod_bias: kept as given, clamped where used */
+        if (pname != GL_TEXTURE_LOD_BIAS_EXT) {
+            ctx_error(ctx, GL_INVALID_ENUM);
+            return;
+        }
+        tu->lod_bias = p[0];
+        ctx->dirty |= DIRTY_SPAN | DIRTY_TEXTURE;
+        return;
+    }
     if (target != GL_TEXTURE_ENV) {
         ctx_error(ctx, GL_INVALID_ENUM);
         return;
@@ -1063,6 +1073,10 @@ int gles_GetTexEnv(GlesContext *ctx, unsigned int target, unsigned int pname, do
         out[0] = tu->coord_replace;
         return 1;
     }
+    if (target == GL_TEXTURE_FILTER_CONTROL_EXT && pname == GL_TEXTURE_LOD_BIAS_EXT) {
+        out[0] = tu->lod_bias;
+        return 1;
+    }
     if (target != GL_TEXTURE_ENV) {
         ctx_error(ctx, GL_INVALID_ENUM);
         return 0;
@@ -1094,6 +1108,7 @@ int texture_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)
     *kind = GLES_KIND_INT;
     switch (pname) {
     case GL_MAX_TEXTURE_SIZE: out[0] = GLES_MAX_TEXTURE_SIZE; return 1;
+    case GL_MAX_TEXTURE_LOD_BIAS_EXT: *kind = GLES_KIND_FLOAT; out[0] = TEXTURE_MAX_LOD_BIAS; return 1;
     case GL_TEXTURE_BINDING_2D: out[0] = active_unit(ctx)->bound->name; return 1;
     case GL_NUM_COMPRESSED_TEXTURE_FORMATS: out[0] = 11; return 1;
     case GL_COMPRESSED_TEXTURE_FORMATS:

@@ -23,8 +23,10 @@ struct TexCoord {
 ** filter needs a level of detail, at its right and upper neighbours
 ** (dx, dy may be NULL otherwise); out is RGBA in FRAGV; unorm is the
 ** context's table of c / 255 */
-void texture_sample(const Texture *tex, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
+void texture_sample(const Texture *tex, double lod_bias, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
                     FRAGV out[4], const FRAGV *unorm);
+/* EXT_texture_lod_bias: MAX_TEXTURE_LOD_BIAS_EXT, the largest |bias| used */
+#define TEXTURE_MAX_LOD_BIAS 16.0
 /* texture_sample for n fragments, with the texture's filter and wrap
 ** modes fixed: fragment j's coordinates c[j] (and dx[j], dy[j] when the
 ** filter needs a level of detail), its texel at out + j * stride */

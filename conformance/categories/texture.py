@@ -452,6 +452,37 @@ def mip_select(t: TestContext) -> None:
     t.check_gl_error("MipSelect")
 
 
+@conformance_test("MipSelect.bias", section="EXT_texture_lod_bias", visuals=VISUALS, size=(64, 64))
+def mip_select_bias(t: TestContext) -> None:
+    """EXT_texture_lod_bias: lambda' = log2(rho) + bias, the bias clamped to
+    MAX_TEXTURE_LOD_BIAS_EXT: quads at lambda 1.3 and 2.7 under biases from -3 to +3
+    (and beyond the maximum) select ceil(lambda' + 1/2) - 1 with NEAREST_MIPMAP_NEAREST."""
+    gl = t.gl
+    ext = gl.glGetString(gl.GL_EXTENSIONS) or b""
+    if "GL_EXT_texture_lod_bias" not in (ext.decode() if isinstance(ext, bytes) else ext).split():
+        raise Unsupported("GL_EXT_texture_lod_bias is not in GL_EXTENSIONS")
+    top = float(np.atleast_1d(gl.glGetFixedv(gl.GL_MAX_TEXTURE_LOD_BIAS_EXT))[0]) / ONE
+    levels = _colour_levels()
+    _prepare(t)
+    _texture(t, levels, minf="NEAREST_MIPMAP_NEAREST", magf="NEAREST")
+    cases = [(lam, bias) for lam in (1.3, 2.7) for bias in (-3.0, -1.5, -0.5, 0.5, 1.0, 2.25, 3.0, 100.0)]
+    for k, (lam, bias) in enumerate(cases):
+        x, y = 8 * (k % 8), 8 * (k // 8)
+        gl.glTexEnvx(gl.GL_TEXTURE_FILTER_CONTROL_EXT, gl.GL_TEXTURE_LOD_BIAS_EXT, _fx(bias))
+        coords, exact = _lambda_quad(x, y, 8, 8, lam)
+        _quad(t, x, y, x + 8, y + 8, [coords])
+        cases[k] = (exact, bias)
+    img = t.read()
+    for k, (lam, bias) in enumerate(cases):
+        x, y = 8 * (k % 8), 8 * (k // 8)
+        lb = lam + max(-top, min(top, bias))
+        d = 0 if lb <= 0.5 else min(int(np.ceil(lb + 0.5)) - 1, 5)
+        _check(t, img, x, y, np.broadcast_to(_u(_LEVEL_COLORS[d]), (8, 8, 4)),
+               f"lambda {lam:.3f}, bias {bias}: level {d}")
+    gl.glTexEnvx(gl.GL_TEXTURE_FILTER_CONTROL_EXT, gl.GL_TEXTURE_LOD_BIAS_EXT, 0)
+    t.check_gl_error("MipSelect.bias")
+
+
 @conformance_test("MipSelect.magswitch", section="3.7.8", visuals=VISUALS, size=(64, 16))
 def mip_select_switch(t: TestContext) -> None:
     """The switch-over point c (§3.7.8): with MAG LINEAR and NEAREST_MIPMAP_LINEAR,

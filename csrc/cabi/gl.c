@@ -509,7 +509,11 @@ static int tex_parameter_count(GLenum pname) { return pname == GL_TEXTURE_CROP_R
 
 static int tex_env_count(GLenum pname) { return pname == GL_TEXTURE_ENV_COLOR ? 4 : 1; }
 
-static int tex_real(GLenum pname) { return pname == GL_TEXTURE_ENV_COLOR || pname == GL_RGB_SCALE || pname == GL_ALPHA_SCALE; }
+static int tex_real(GLenum pname)
+{
+    return pname == GL_TEXTURE_ENV_COLOR || pname == GL_RGB_SCALE || pname == GL_ALPHA_SCALE
+        || pname == GL_TEXTURE_LOD_BIAS_EXT;
+}
 
 static void tex_values_x(GLenum pname, const GLfixed *p, int n, double out[4])
 {
