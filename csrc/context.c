@@ -15,6 +15,7 @@
 #include "light.h"
 #include "fragment.h"
 #include "texture.h"
+#include "fbo.h"
 
 static int cap_index(unsigned int cap);
 
@@ -39,11 +40,12 @@ void ctx_set_clamped_color(double *d, NUM *n, const double *rgba)
         n[i] = num_from_double(c);
     }
 }
-void *gles_color_buffer(GlesContext *ctx) { return ctx->color; }
-void *gles_depth_buffer(GlesContext *ctx) { return ctx->depth; }
-void *gles_stencil_buffer(GlesContext *ctx) { return ctx->stencil; }
-int gles_width(GlesContext *ctx) { return ctx->width; }
-int gles_height(GlesContext *ctx) { return ctx->height; }
+/* the window's buffers, whichever framebuffer is bound */
+void *gles_color_buffer(GlesContext *ctx) { return fbo_window(ctx)->color; }
+void *gles_depth_buffer(GlesContext *ctx) { return fbo_window(ctx)->depth; }
+void *gles_stencil_buffer(GlesContext *ctx) { return fbo_window(ctx)->stencil; }
+int gles_width(GlesContext *ctx) { return fbo_window(ctx)->width; }
+int gles_height(GlesContext *ctx) { return fbo_window(ctx)->height; }
 const char *gles_last_span_name(GlesContext *ctx) { return ctx->span_name ? ctx->span_name : ""; }
 const char *gles_simd_name(GlesContext *ctx) { return simd_name(ctx_simd(ctx)); }
 
@@ -81,6 +83,10 @@ double gles_num_eval(int op, double a, double b)
 ** freed by scratch_free) */
 static int scratch_alloc(GlesContext *c, int width)
 {
+    /* a row of the widest buffer drawn into: the window, or a framebuffer
+    ** object's (OES_framebuffer_object), up to MAX_RENDERBUFFER_SIZE */
+    if (width < GLES_MAX_TEXTURE_SIZE)
+        width = GLES_MAX_TEXTURE_SIZE;
     c->rect_s = calloc(((size_t)width + 1) * GLES_MAX_TEXTURE_UNITS, sizeof *c->rect_s);
     _Static_assert(GLES_FUSED_SETUP_BYTES % 64 == 0, "aligned_alloc takes a multiple of the alignment");
     c->fused_setup = aligned_alloc(64, GLES_FUSED_SETUP_BYTES);
@@ -118,6 +124,8 @@ GlesContext *gles_context_create(int width, int height, int color_format,
     ctx->depth_bits = depth_bits;
     ctx->stencil_bits = stencil_bits;
     ctx->depth_max = depth_bits ? (uint32_t)((1ull << depth_bits) - 1) : 0;
+    ctx->color_alpha = color_format == GLES_COLOR_RGBA8888;
+    ctx->color_mask_alpha = 1;
     ctx->profile = profile;
     ctx->threads = ctx->band_count = 1;
     ctx->simd = simd_detect();
@@ -184,6 +192,7 @@ GlesContext *gles_context_create(int width, int height, int color_format,
     ctx->point_attenuation[0] = 1.0;
     ctx->n_point_attenuation[0] = NUM_ONE;
     array_init(ctx);
+    fbo_init(ctx);
     ctx->dirty = DIRTY_ALL;
     return ctx;
 }
@@ -199,6 +208,7 @@ void gles_context_destroy(GlesContext *ctx)
 {
     if (!ctx)
         return;
+    fbo_free(ctx);          /* first: the window's buffers back in the context */
     array_free(ctx);
     texture_free(ctx);
     free(ctx->color);
@@ -429,7 +439,8 @@ void gles_ColorMask(GlesContext *ctx, unsigned char r, unsigned char g, unsigned
     ctx->color_mask[0] = r != 0;
     ctx->color_mask[1] = g != 0;
     ctx->color_mask[2] = b != 0;
-    ctx->color_mask[3] = a != 0;
+    ctx->color_mask_alpha = a != 0;
+    ctx->color_mask[3] = fbo_alpha_written(ctx, a != 0);
     ctx->dirty |= DIRTY_SPAN;
 }
 
@@ -594,6 +605,22 @@ static int put_float_bits(double *out, int *kind, const double *m)
     return 16;
 }
 
+/* the bound framebuffer's buffers for a query about them, recording no
+** error when it is incomplete (then the values are the window's) */
+static void quiet_sync(GlesContext *ctx)
+{
+    const unsigned int err = ctx->error;
+    fbo_sync(ctx);
+    ctx->error = err;
+}
+
+void gles_draw_size(GlesContext *ctx, int *wh)
+{
+    quiet_sync(ctx);
+    wh[0] = ctx->width;
+    wh[1] = ctx->height;
+}
+
 int gles_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)
 {
     double v[16];
@@ -628,13 +655,15 @@ int gles_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)
         return put(out, kind, GLES_KIND_INT, 2, v);
     case GL_SUBPIXEL_BITS: return put1(out, kind, GLES_KIND_INT, GLES_SUBPIXEL_BITS);
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: {
-        static const int bits8888[4] = { 8, 8, 8, 8 }, bits565[4] = { 5, 6, 5, 0 };
-        const int *b = ctx->color_format == GLES_COLOR_RGB565 ? bits565 : bits8888;
+        static const int bits8888[4] = { 8, 8, 8, 8 }, bits888[4] = { 8, 8, 8, 0 }, bits565[4] = { 5, 6, 5, 0 };
+        quiet_sync(ctx);
+        const int *b = ctx->color_format == GLES_COLOR_RGB565 ? bits565 : (ctx->color_alpha ? bits8888 : bits888);
         return put1(out, kind, GLES_KIND_INT, b[pname - GL_RED_BITS]);
     }
-    case GL_DEPTH_BITS: return put1(out, kind, GLES_KIND_INT, ctx->depth_bits);
-    case GL_STENCIL_BITS: return put1(out, kind, GLES_KIND_INT, ctx->stencil_bits);
+    case GL_DEPTH_BITS: quiet_sync(ctx); return put1(out, kind, GLES_KIND_INT, ctx->depth_bits);
+    case GL_STENCIL_BITS: quiet_sync(ctx); return put1(out, kind, GLES_KIND_INT, ctx->stencil_bits);
     case GL_IMPLEMENTATION_COLOR_READ_FORMAT_OES:
+        quiet_sync(ctx);
         /* the window's own byte order is RGBA, so the second pair (EXT_read_format_bgra's
         ** BGRA_EXT) is the one a program cannot otherwise have */
         return put1(out, kind, GLES_KIND_ENUM, ctx->color_format == GLES_COLOR_RGB565 ? GL_RGB : GL_BGRA_EXT);
@@ -678,8 +707,9 @@ int gles_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)
     case GL_DEPTH_CLEAR_VALUE: return put1(out, kind, GLES_KIND_NORM, ctx->clear_depth);
     case GL_STENCIL_CLEAR_VALUE: return put1(out, kind, GLES_KIND_INT, ctx->clear_stencil);
     case GL_COLOR_WRITEMASK:
-        for (int i = 0; i < 4; i++)
+        for (int i = 0; i < 3; i++)
             v[i] = ctx->color_mask[i];
+        v[3] = ctx->color_mask_alpha;
         return put(out, kind, GLES_KIND_BOOL, 4, v);
     case GL_DEPTH_WRITEMASK: return put1(out, kind, GLES_KIND_BOOL, ctx->depth_mask);
     case GL_DEPTH_FUNC: return put1(out, kind, GLES_KIND_ENUM, ctx->depth_func);
@@ -706,7 +736,7 @@ int gles_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)
         break;
     }
     int n = array_get(ctx, pname, out, kind);
-    if (n > 0)
+    if (n > 0 || (n = fbo_get(ctx, pname, out, kind)) > 0)
         return n;
     if ((n = fragment_get(ctx, pname, out, kind)) > 0 || (n = fog_get(ctx, pname, out, kind)) > 0
         || (n = texture_get(ctx, pname, out, kind)) > 0)

@@ -25,4 +25,5 @@
 #include "range.c"
 #include "draw.c"
 #include "framebuffer.c"
+#include "fbo.c"
 #include "pool.c"

@@ -31,6 +31,7 @@
 #include "point.h"
 #include "line.h"
 #include "range.h"
+#include "fbo.h"
 
 /* stamps: a vertex whose stamp is base has its position, base + 1 also its
 ** attributes; base advances by 2 per draw */
@@ -681,6 +682,8 @@ int gles_DrawArrays(GlesContext *ctx, unsigned int mode, int first, int count)
         ctx_error(ctx, GL_INVALID_OPERATION);   /* a mapped buffer is the client's */
         return GLES_OK;
     }
+    if (!fbo_sync(ctx))
+        return GLES_OK;
     int st = array_check_range(ctx, (int64_t)first + count - 1);
     if (st != GLES_OK)
         return st;
@@ -717,6 +720,8 @@ int gles_DrawElements(GlesContext *ctx, unsigned int mode, int count, unsigned i
         ctx_error(ctx, GL_INVALID_OPERATION);
         return GLES_OK;
     }
+    if (!fbo_sync(ctx))
+        return GLES_OK;
     int isize = type == GL_UNSIGNED_BYTE ? 1 : (type == GL_UNSIGNED_SHORT ? 2 : 4);
     int64_t need = (int64_t)count * isize;
     const uint8_t *p;

@@ -15,6 +15,7 @@
 #include "raster.h"
 #include "texture.h"
 #include "fragment.h"
+#include "fbo.h"
 
 /* the rectangle's rows through the span chain, on each thread its own */
 typedef struct DrawTexJob {
@@ -41,6 +42,8 @@ void gles_DrawTexOES(GlesContext *ctx, double xs, double ys, double zs, double w
         ctx_error(ctx, GL_INVALID_VALUE);
         return;
     }
+    if (!fbo_sync(ctx))
+        return;
     draw_validate(ctx);
     RectSetup r;
     FragIn *in = &r.in;

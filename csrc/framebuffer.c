@@ -8,6 +8,7 @@
 #include "state.h"
 #include "raster.h"
 #include "fragment.h"
+#include "fbo.h"
 
 /* the clear rectangle: the framebuffer, cut by the scissor box when enabled */
 static void clear_rect(const GlesContext *ctx, int *x0, int *y0, int *x1, int *y1)
@@ -82,6 +83,8 @@ int gles_Clear(GlesContext *ctx, unsigned int mask)
         ctx_error(ctx, GL_INVALID_VALUE);
         return GLES_OK;
     }
+    if (!fbo_sync(ctx))
+        return GLES_OK;
     ClearJob j = { .mask = mask };
     clear_rect(ctx, &j.x0, &j.y0, &j.x1, &j.y1);
     if (j.x0 >= j.x1 || j.y0 >= j.y1)
@@ -121,6 +124,8 @@ int gles_ReadPixels(GlesContext *ctx, int x, int y, int width, int height,
         ctx_error(ctx, GL_INVALID_VALUE);
         return GLES_OK;
     }
+    if (!fbo_sync(ctx))
+        return GLES_OK;
     /* the two pairs: RGBA/UNSIGNED_BYTE, and the window's implementation
     ** pair (OES_read_format): RGB/5_6_5, or BGRA_EXT/UNSIGNED_BYTE
     ** (EXT_read_format_bgra) */

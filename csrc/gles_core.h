@@ -357,6 +357,30 @@ int gles_GetBufferPointervOES(GlesContext *ctx, unsigned int target, unsigned in
 ** within the mapped range of a write mapping; GLES_EVALUE otherwise, no GL
 ** error (not a GL command) */
 int gles_buffer_map_write(GlesContext *ctx, unsigned int target, int64_t offset, const void *data, int64_t nbytes);
+/* the size of the framebuffer drawn into and read (the window's, or the
+** bound framebuffer object's when it is complete) */
+void gles_draw_size(GlesContext *ctx, int *wh);
+/* OES_framebuffer_object (fbo.c) */
+void gles_GenFramebuffersOES(GlesContext *ctx, int n, unsigned int *names);
+void gles_GenRenderbuffersOES(GlesContext *ctx, int n, unsigned int *names);
+void gles_BindFramebufferOES(GlesContext *ctx, unsigned int target, unsigned int name);
+void gles_BindRenderbufferOES(GlesContext *ctx, unsigned int target, unsigned int name);
+void gles_DeleteFramebuffersOES(GlesContext *ctx, int n, const unsigned int *names);
+void gles_DeleteRenderbuffersOES(GlesContext *ctx, int n, const unsigned int *names);
+unsigned char gles_IsFramebufferOES(GlesContext *ctx, unsigned int name);
+unsigned char gles_IsRenderbufferOES(GlesContext *ctx, unsigned int name);
+void gles_RenderbufferStorageOES(GlesContext *ctx, unsigned int target, unsigned int internalformat, int width,
+                                 int height);
+void gles_FramebufferTexture2DOES(GlesContext *ctx, unsigned int target, unsigned int attachment,
+                                  unsigned int textarget, unsigned int texture, int level);
+void gles_FramebufferRenderbufferOES(GlesContext *ctx, unsigned int target, unsigned int attachment,
+                                     unsigned int renderbuffertarget, unsigned int renderbuffer);
+unsigned int gles_CheckFramebufferStatusOES(GlesContext *ctx, unsigned int target);
+/* one value into params[0]; 0 on a GL error */
+int gles_GetFramebufferAttachmentParameterivOES(GlesContext *ctx, unsigned int target, unsigned int attachment,
+                                                 unsigned int pname, int *params);
+int gles_GetRenderbufferParameterivOES(GlesContext *ctx, unsigned int target, unsigned int pname, int *params);
+void gles_GenerateMipmapOES(GlesContext *ctx, unsigned int target);
 /* OES_vertex_array_object */
 void gles_GenVertexArraysOES(GlesContext *ctx, int n, unsigned int *names);
 void gles_DeleteVertexArraysOES(GlesContext *ctx, int n, const unsigned int *names);

@@ -27,6 +27,7 @@
 */
 #include <string.h>
 #include "raster.h"
+#include "fbo.h"
 
 int64_t raster_area2(const Vertex *a, const Vertex *b, const Vertex *c)
 {
@@ -398,10 +399,22 @@ static void raster_job(void *arg, int index)
     j->work(index ? j->ctx->worker_ctx[index - 1] : j->ctx, j->arg);
 }
 
+/* a draw sampling the texture it draws into (a framebuffer object's):
+** undefined results, but threads would race on the texels (C11's data
+** race), so it stays on one */
+static int samples_own_target(const GlesContext *ctx)
+{
+    const Texture *t = fbo_color_texture(ctx);
+    for (int u = 0; t && u < GLES_MAX_TEXTURE_UNITS; u++)
+        if (ctx->units[u].enabled && ctx->units[u].bound == t)
+            return 1;
+    return 0;
+}
+
 int raster_pool_take(GlesContext *ctx, int64_t amount, int64_t threshold)
 {
     return ctx->pool && amount > 0 && (amount >= threshold || (ctx->debug & GLES_DEBUG_THREADS_ALWAYS))
-        && pool_acquire(ctx->pool, ctx->threads);
+        && !samples_own_target(ctx) && pool_acquire(ctx->pool, ctx->threads);
 }
 
 int raster_threaded(GlesContext *ctx, int64_t pixels, RasterWork work, void *arg)

@@ -185,6 +185,46 @@ typedef struct Texture {
     int max_level;                      /* q: the last level sampled */
 } Texture;
 
+/* OES_framebuffer_object: a renderbuffer's image (one of color, depth or
+** stencil storage, or depth and stencil for DEPTH24_STENCIL8_OES) */
+typedef struct Renderbuffer {
+    unsigned int name;
+    unsigned int format;        /* sized internal format; 0 before RenderbufferStorageOES */
+    int width, height;
+    void *color;                /* uint32 RGBA8888 or uint16 RGB565, as the window's */
+    uint32_t *depth;
+    uint8_t *stencil;
+    int64_t bytes;              /* charged to the memory budget */
+} Renderbuffer;
+
+/* an attachment point: type GL_NONE_OES, GL_TEXTURE or GL_RENDERBUFFER_OES */
+typedef struct FboAttachment {
+    unsigned int type, name;
+    Texture *tex;
+    int level;
+    Renderbuffer *rb;
+} FboAttachment;
+
+enum { FBO_COLOR, FBO_DEPTH, FBO_STENCIL, FBO_POINTS };
+
+typedef struct Framebuffer {
+    unsigned int name;
+    FboAttachment at[FBO_POINTS];
+} Framebuffer;
+
+/* the buffers commands draw into and read: the window's, or a complete
+** framebuffer object's (fbo_sync) */
+typedef struct DrawBuffers {
+    int width, height;
+    int color_format;           /* GLES_COLOR_* */
+    int color_alpha;            /* the color buffer keeps alpha (not RGB565, RGB8, an RGB texture) */
+    int depth_bits, stencil_bits;
+    uint32_t depth_max;
+    void *color;
+    uint32_t *depth;
+    uint8_t *stencil;
+} DrawBuffers;
+
 typedef struct TexUnit {
     int enabled;                        /* TEXTURE_2D */
     Texture *bound;                     /* never NULL: name 0 is ctx->default_texture */
@@ -257,6 +297,8 @@ typedef struct SmoothStep {
 
 struct GlesContext {
     /* framebuffer */
+    /* the buffers drawn into and read (the window's unless a framebuffer
+    ** object is bound: fbo.c swaps them, as DrawBuffers) */
     int width, height;
     int color_format;           /* GLES_COLOR_* */
     int depth_bits, stencil_bits;
@@ -264,6 +306,12 @@ struct GlesContext {
     void *color;                /* uint32 RGBA8888 (R in the low byte) or uint16 565 */
     uint32_t *depth;
     uint8_t *stencil;
+    int color_alpha;            /* the color buffer keeps alpha */
+    DrawBuffers window;         /* the window's, while an object is bound */
+    NameTable framebuffers, renderbuffers;
+    Framebuffer *fbo;           /* bound, NULL for the window */
+    Renderbuffer *rbo;          /* bound renderbuffer */
+    int color_mask_alpha;       /* ColorMask's alpha; color_mask[3] also needs color_alpha */
     int profile;
     uint64_t prim_serial;       /* counts primitive setups, from 1 */
     /* threads (gles_threads_set): a draw's primitives are rasterized by

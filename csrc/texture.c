@@ -13,6 +13,7 @@
 #include "state.h"
 #include "array.h"
 #include "texture.h"
+#include "fbo.h"
 
 static int is_base_format(unsigned int f)
 {
@@ -191,6 +192,7 @@ void gles_DeleteTextures(GlesContext *ctx, int n, const unsigned int *names)
         for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
             if (ctx->units[u].bound == t)
                 ctx->units[u].bound = &ctx->default_texture;
+        fbo_texture_deleted(ctx, t);
         texture_release(ctx, t);
         free(t);
     }
@@ -535,7 +537,7 @@ static void copy_framebuffer_row(const GlesContext *ctx, int64_t x, int64_t y, i
 ** ALPHA, LUMINANCE_ALPHA and RGBA) */
 static int copy_compatible(const GlesContext *ctx, unsigned int format)
 {
-    int has_alpha = ctx->color_format == GLES_COLOR_RGBA8888;
+    int has_alpha = ctx->color_format == GLES_COLOR_RGBA8888 && ctx->color_alpha;
     return has_alpha || !(format == GL_ALPHA || format == GL_LUMINANCE_ALPHA || format == GL_RGBA);
 }
 
@@ -546,6 +548,8 @@ void gles_CopyTexImage2D(GlesContext *ctx, unsigned int target, int level, unsig
         ctx_error(ctx, GL_INVALID_ENUM);
         return;
     }
+    if (!fbo_sync(ctx))
+        return;
     unsigned int err = check_image(level, width, height, border);
     if (!err && !is_base_format(internalformat))
         err = GL_INVALID_VALUE;
@@ -590,6 +594,8 @@ void gles_CopyTexSubImage2D(GlesContext *ctx, unsigned int target, int level, in
         ctx_error(ctx, GL_INVALID_ENUM);
         return;
     }
+    if (!fbo_sync(ctx))
+        return;
     if (level < 0 || level > max_level_of_size() || width < 0 || height < 0) {
         ctx_error(ctx, GL_INVALID_VALUE);
         return;
@@ -610,11 +616,49 @@ void gles_CopyTexSubImage2D(GlesContext *ctx, unsigned int target, int level, in
         ctx_error(ctx, GL_OUT_OF_MEMORY);
         return;
     }
-    for (int j = 0; j < height && width; j++)
+    /* from the level itself (a framebuffer object drawing into it: the
+    ** result is undefined, §4.4.3 of EXT_framebuffer_object, but the rows
+    ** may overlap): through a copy */
+    const int self = ctx->color == (void *)li->texels;
+    uint32_t *from = self && width && height ? malloc((size_t)width * (size_t)height * sizeof *from) : NULL;
+    if (self && width && height && !from) {
+        ctx_error(ctx, GL_OUT_OF_MEMORY);
+        return;
+    }
+    for (int j = 0; j < height && width; j++) {
+        uint32_t *dst = li->texels + (size_t)(yoffset + j) * (size_t)li->width + (size_t)xoffset;
         copy_framebuffer_row(ctx, x, (int64_t)y + j, width, base_format(t->level_format[level]),
-                             li->texels + (size_t)(yoffset + j) * (size_t)li->width + (size_t)xoffset);
+                             from ? from + (size_t)j * (size_t)width : dst);
+    }
+    for (int j = 0; from && j < height; j++)
+        memcpy(li->texels + (size_t)(yoffset + j) * (size_t)li->width + (size_t)xoffset,
+               from + (size_t)j * (size_t)width, (size_t)width * sizeof *from);
+    free(from);
     if (width && height)
         image_changed(ctx, t, level);
+}
+
+/* OES_framebuffer_object: the levels below level 0, as GENERATE_MIPMAP
+** makes them */
+void gles_GenerateMipmapOES(GlesContext *ctx, unsigned int target)
+{
+    if (target != GL_TEXTURE_2D) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    Texture *t = active_unit(ctx)->bound;
+    const TexImage *l0 = &t->level[0];
+    if (!l0->texels || l0->width <= 0 || l0->height <= 0 || t->paletted || t->level_format[0] == GL_ETC1_RGB8_OES) {
+        ctx_error(ctx, GL_INVALID_OPERATION);
+        return;
+    }
+    if (!ctx_mem_fits(ctx, chain_bytes(l0->width, l0->height), levels_bytes(t, 1, GLES_MAX_TEXTURE_LEVELS))
+        || !generate_mipmaps(ctx, t)) {
+        ctx_error(ctx, GL_OUT_OF_MEMORY);
+        return;
+    }
+    texture_complete(t);
+    ctx->dirty |= DIRTY_TEXTURE;
 }
 
 /* OES_compressed_paletted_texture: 16 or 256 palette entries, then 4- or

@@ -66,6 +66,7 @@ ERRORS = {
     C.GL_STACK_OVERFLOW,
     C.GL_STACK_UNDERFLOW,
     C.GL_OUT_OF_MEMORY,
+    C.GL_INVALID_FRAMEBUFFER_OPERATION_OES,     # OES_framebuffer_object
 }
 ALL_ENUMS = sorted({int(getattr(C, n)) for n in C.__all__ if n.startswith("GL_")})
 _NAME_OF: dict[int, str] = {}
@@ -368,6 +369,18 @@ TEXP_V = [
     1,
     0,
 ]
+FB_T = [C.GL_FRAMEBUFFER_OES, C.GL_RENDERBUFFER_OES]
+RB_T = [C.GL_RENDERBUFFER_OES, C.GL_FRAMEBUFFER_OES]
+FB_ATTACH = [C.GL_COLOR_ATTACHMENT0_OES, C.GL_DEPTH_ATTACHMENT_OES, C.GL_STENCIL_ATTACHMENT_OES,
+             C.GL_TEXTURE_2D]
+RB_FORMATS = [C.GL_RGBA8_OES, C.GL_RGB8_OES, C.GL_RGB565_OES, C.GL_RGBA4_OES, C.GL_RGB5_A1_OES,
+              C.GL_DEPTH_COMPONENT16_OES, C.GL_DEPTH_COMPONENT24_OES, C.GL_STENCIL_INDEX8_OES,
+              C.GL_DEPTH24_STENCIL8_OES, C.GL_RGBA]
+FB_P = [C.GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE_OES, C.GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME_OES,
+        C.GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL_OES, C.GL_RENDERBUFFER_WIDTH_OES]
+RB_P = [C.GL_RENDERBUFFER_WIDTH_OES, C.GL_RENDERBUFFER_HEIGHT_OES, C.GL_RENDERBUFFER_INTERNAL_FORMAT_OES,
+        C.GL_RENDERBUFFER_RED_SIZE_OES, C.GL_RENDERBUFFER_ALPHA_SIZE_OES, C.GL_RENDERBUFFER_DEPTH_SIZE_OES,
+        C.GL_RENDERBUFFER_STENCIL_SIZE_OES, C.GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE_OES]
 ENV_T = [C.GL_TEXTURE_ENV, C.GL_POINT_SPRITE_OES, C.GL_TEXTURE_FILTER_CONTROL_EXT]
 ENV_P = [
     C.GL_TEXTURE_ENV_MODE,
@@ -717,6 +730,23 @@ SPECS: dict[str, Spec] = {
     "glHint": _e(HINT_T, HINT_V),
     "glIsBuffer": lambda g: [g.int(0, 6)],
     "glIsVertexArrayOES": lambda g: [g.int(0, 6)],
+    "glGenFramebuffersOES": lambda g: [g.int(0, 3)],
+    "glGenRenderbuffersOES": lambda g: [g.int(0, 3)],
+    "glDeleteFramebuffersOES": _names,
+    "glDeleteRenderbuffersOES": _names,
+    "glBindFramebufferOES": lambda g: [g.enum(FB_T), g.int(0, 4)],
+    "glBindRenderbufferOES": lambda g: [g.enum(RB_T), g.int(0, 4)],
+    "glIsFramebufferOES": lambda g: [g.int(0, 6)],
+    "glIsRenderbufferOES": lambda g: [g.int(0, 6)],
+    "glRenderbufferStorageOES": lambda g: [g.enum(RB_T), g.enum(RB_FORMATS), g.int(-1, 40),
+                                           g.int(-1, 40)],
+    "glFramebufferTexture2DOES": lambda g: [g.enum(FB_T), g.enum(FB_ATTACH),
+                                            g.enum([C.GL_TEXTURE_2D, 0x8515]), g.int(0, 4), g.int(-1, 3)],
+    "glFramebufferRenderbufferOES": lambda g: [g.enum(FB_T), g.enum(FB_ATTACH), g.enum(RB_T), g.int(0, 4)],
+    "glCheckFramebufferStatusOES": lambda g: [g.enum(FB_T)],
+    "glGetFramebufferAttachmentParameterivOES": lambda g: [g.enum(FB_T), g.enum(FB_ATTACH), g.enum(FB_P)],
+    "glGetRenderbufferParameterivOES": lambda g: [g.enum(RB_T), g.enum(RB_P)],
+    "glGenerateMipmapOES": lambda g: [g.enum([C.GL_TEXTURE_2D, C.GL_TEXTURE])],
     "glMapBufferOES": lambda g: [g.enum(BUF_T), g.enum([C.GL_WRITE_ONLY_OES, 0x88B8])],
     "glUnmapBufferOES": lambda g: [g.enum(BUF_T)],
     "glGetBufferPointervOES": lambda g: [g.enum(BUF_T),
@@ -1444,8 +1474,14 @@ def _guard(cc: CabiContext, name: str, args: list[Any]) -> None:
             for i in range(int(n)):
                 if name == "glMultiDrawArraysEXT":
                     _guard(cc, "glDrawArrays", [args[0], lists[0][i], lists[1][i]])
-                else:
-                    _guard(cc, "glDrawElements", [args[0], lists[0][i], args[2], lists[1][i]])
+                    continue
+                count, indices = lists[0][i], lists[1][i]
+                # the one wrapper check glDrawElements has and a list of pointers has not
+                isize = {C.GL_UNSIGNED_BYTE: 1, C.GL_UNSIGNED_SHORT: 2}.get(args[2], 0)
+                if isinstance(indices, np.ndarray) and _is_address(count) and count > 0 \
+                        and indices.nbytes < int(count) * isize:
+                    raise ValueError("harness: an index array shorter than its count")
+                _guard(cc, "glDrawElements", [args[0], count, args[2], indices])
     elif name in ("glTexImage2D", "glTexSubImage2D") and len(args) == 9:
         data, w, h, fmt, typ = (
             args[8],
@@ -1468,7 +1504,8 @@ def _guard(cc: CabiContext, name: str, args: list[Any]) -> None:
         data = args[2] if name == "glBufferData" else args[-1]
         if _is_address(data) and data:
             raise ValueError(f"harness: an int data pointer in {name}")
-    elif name in ("glGenBuffers", "glGenTextures", "glGenVertexArraysOES") and args and _is_address(args[0]):
+    elif name in ("glGenBuffers", "glGenTextures", "glGenVertexArraysOES", "glGenFramebuffersOES",
+                  "glGenRenderbuffersOES") and args and _is_address(args[0]):
         if args[0] > _MAX_NAMES:
             raise ValueError(f"harness: room for {args[0]} names")
     elif name == "glReadPixels" and len(args) >= 4:

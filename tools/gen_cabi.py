@@ -201,6 +201,21 @@ glMapBufferRangeEXT             gles_MapBufferRangeEXT(C, target, (int64_t)offse
 glFlushMappedBufferRangeEXT     gles_FlushMappedBufferRangeEXT(C, target, (int64_t)offset, (int64_t)length)
 glMultiDrawArraysEXT            multi_draw_arrays(C, mode, first, count, primcount)
 glMultiDrawElementsEXT          multi_draw_elements(C, mode, count, type, indices, primcount)
+glGenFramebuffersOES            gles_GenFramebuffersOES(C, n, framebuffers)
+glGenRenderbuffersOES           gles_GenRenderbuffersOES(C, n, renderbuffers)
+glBindFramebufferOES            gles_BindFramebufferOES(C, target, framebuffer)
+glBindRenderbufferOES           gles_BindRenderbufferOES(C, target, renderbuffer)
+glDeleteFramebuffersOES         gles_DeleteFramebuffersOES(C, n, framebuffers)
+glDeleteRenderbuffersOES        gles_DeleteRenderbuffersOES(C, n, renderbuffers)
+glIsFramebufferOES              gles_IsFramebufferOES(C, framebuffer)
+glIsRenderbufferOES             gles_IsRenderbufferOES(C, renderbuffer)
+glRenderbufferStorageOES        gles_RenderbufferStorageOES(C, target, internalformat, width, height)
+glFramebufferTexture2DOES       gles_FramebufferTexture2DOES(C, target, attachment, textarget, texture, level)
+glFramebufferRenderbufferOES    gles_FramebufferRenderbufferOES(C, target, attachment, renderbuffertarget, renderbuffer)
+glCheckFramebufferStatusOES     gles_CheckFramebufferStatusOES(C, target)
+glGetFramebufferAttachmentParameterivOES  gles_GetFramebufferAttachmentParameterivOES(C, target, attachment, pname, params)
+glGetRenderbufferParameterivOES  gles_GetRenderbufferParameterivOES(C, target, pname, params)
+glGenerateMipmapOES             gles_GenerateMipmapOES(C, target)
 """
 
 # Pointer arguments a C caller may pass as NULL: the core gives NULL its

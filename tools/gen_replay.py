@@ -40,7 +40,7 @@ SKIP = {
     "gles_context_create", "gles_context_destroy", "gles_last_message", "gles_color_buffer",
     "gles_depth_buffer", "gles_stencil_buffer", "gles_memory_used", "gles_width", "gles_height",
     "gles_last_span_name", "gles_simd_name", "gles_GetPointer", "texture_image_bytes",
-    "gles_GetBufferPointervOES",
+    "gles_GetBufferPointervOES", "gles_draw_size",
 }
 
 SCALARS = {"int": "i", "unsigned int": "u", "unsigned char": "b", "double": "d", "int64_t": "l"}

@@ -1277,6 +1277,108 @@ GL_API void GL_APIENTRY glMultiDrawElementsEXT (GLenum mode, const GLsizei *coun
         multi_draw_elements(C, mode, count, type, indices, primcount);
 }
 
+GL_API void GL_APIENTRY glGenFramebuffersOES (GLsizei n, GLuint *framebuffers)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C && framebuffers)
+        gles_GenFramebuffersOES(C, n, framebuffers);
+}
+
+GL_API void GL_APIENTRY glGenRenderbuffersOES (GLsizei n, GLuint *renderbuffers)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C && renderbuffers)
+        gles_GenRenderbuffersOES(C, n, renderbuffers);
+}
+
+GL_API void GL_APIENTRY glBindFramebufferOES (GLenum target, GLuint framebuffer)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C)
+        gles_BindFramebufferOES(C, target, framebuffer);
+}
+
+GL_API void GL_APIENTRY glBindRenderbufferOES (GLenum target, GLuint renderbuffer)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C)
+        gles_BindRenderbufferOES(C, target, renderbuffer);
+}
+
+GL_API void GL_APIENTRY glDeleteFramebuffersOES (GLsizei n, const GLuint *framebuffers)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C && framebuffers)
+        gles_DeleteFramebuffersOES(C, n, framebuffers);
+}
+
+GL_API void GL_APIENTRY glDeleteRenderbuffersOES (GLsizei n, const GLuint *renderbuffers)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C && renderbuffers)
+        gles_DeleteRenderbuffersOES(C, n, renderbuffers);
+}
+
+GL_API GLboolean GL_APIENTRY glIsFramebufferOES (GLuint framebuffer)
+{
+    GlesContext *C = gles_cabi_current();
+    return C ? (GLboolean)(gles_IsFramebufferOES(C, framebuffer)) : 0;
+}
+
+GL_API GLboolean GL_APIENTRY glIsRenderbufferOES (GLuint renderbuffer)
+{
+    GlesContext *C = gles_cabi_current();
+    return C ? (GLboolean)(gles_IsRenderbufferOES(C, renderbuffer)) : 0;
+}
+
+GL_API void GL_APIENTRY glRenderbufferStorageOES (GLenum target, GLenum internalformat, GLsizei width, GLsizei height)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C)
+        gles_RenderbufferStorageOES(C, target, internalformat, width, height);
+}
+
+GL_API void GL_APIENTRY glFramebufferTexture2DOES (GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C)
+        gles_FramebufferTexture2DOES(C, target, attachment, textarget, texture, level);
+}
+
+GL_API void GL_APIENTRY glFramebufferRenderbufferOES (GLenum target, GLenum attachment, GLenum renderbuffertarget, GLuint renderbuffer)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C)
+        gles_FramebufferRenderbufferOES(C, target, attachment, renderbuffertarget, renderbuffer);
+}
+
+GL_API GLenum GL_APIENTRY glCheckFramebufferStatusOES (GLenum target)
+{
+    GlesContext *C = gles_cabi_current();
+    return C ? (GLenum)(gles_CheckFramebufferStatusOES(C, target)) : 0;
+}
+
+GL_API void GL_APIENTRY glGetFramebufferAttachmentParameterivOES (GLenum target, GLenum attachment, GLenum pname, GLint *params)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C && params)
+        gles_GetFramebufferAttachmentParameterivOES(C, target, attachment, pname, params);
+}
+
+GL_API void GL_APIENTRY glGetRenderbufferParameterivOES (GLenum target, GLenum pname, GLint *params)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C && params)
+        gles_GetRenderbufferParameterivOES(C, target, pname, params);
+}
+
+GL_API void GL_APIENTRY glGenerateMipmapOES (GLenum target)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C)
+        gles_GenerateMipmapOES(C, target);
+}
+
 /* every entry point by name, for eglGetProcAddress (sorted for bsearch) */
 static const GlesProc gles_cabi_procs[] = {
     {"glActiveTexture", (GlesProcFn)glActiveTexture},
@@ -1285,6 +1387,8 @@ static const GlesProc gles_cabi_procs[] = {
 #endif
     {"glAlphaFuncx", (GlesProcFn)glAlphaFuncx},
     {"glBindBuffer", (GlesProcFn)glBindBuffer},
+    {"glBindFramebufferOES", (GlesProcFn)glBindFramebufferOES},
+    {"glBindRenderbufferOES", (GlesProcFn)glBindRenderbufferOES},
     {"glBindTexture", (GlesProcFn)glBindTexture},
     {"glBindVertexArrayOES", (GlesProcFn)glBindVertexArrayOES},
     {"glBlendEquationOES", (GlesProcFn)glBlendEquationOES},
@@ -1293,6 +1397,7 @@ static const GlesProc gles_cabi_procs[] = {
     {"glBlendFuncSeparateOES", (GlesProcFn)glBlendFuncSeparateOES},
     {"glBufferData", (GlesProcFn)glBufferData},
     {"glBufferSubData", (GlesProcFn)glBufferSubData},
+    {"glCheckFramebufferStatusOES", (GlesProcFn)glCheckFramebufferStatusOES},
     {"glClear", (GlesProcFn)glClear},
 #if GLES_CABI_COMMON
     {"glClearColor", (GlesProcFn)glClearColor},
@@ -1322,6 +1427,8 @@ static const GlesProc gles_cabi_procs[] = {
     {"glCullFace", (GlesProcFn)glCullFace},
     {"glCurrentPaletteMatrixOES", (GlesProcFn)glCurrentPaletteMatrixOES},
     {"glDeleteBuffers", (GlesProcFn)glDeleteBuffers},
+    {"glDeleteFramebuffersOES", (GlesProcFn)glDeleteFramebuffersOES},
+    {"glDeleteRenderbuffersOES", (GlesProcFn)glDeleteRenderbuffersOES},
     {"glDeleteTextures", (GlesProcFn)glDeleteTextures},
     {"glDeleteVertexArraysOES", (GlesProcFn)glDeleteVertexArraysOES},
     {"glDepthFunc", (GlesProcFn)glDepthFunc},
@@ -1359,14 +1466,19 @@ static const GlesProc gles_cabi_procs[] = {
 #endif
     {"glFogx", (GlesProcFn)glFogx},
     {"glFogxv", (GlesProcFn)glFogxv},
+    {"glFramebufferRenderbufferOES", (GlesProcFn)glFramebufferRenderbufferOES},
+    {"glFramebufferTexture2DOES", (GlesProcFn)glFramebufferTexture2DOES},
     {"glFrontFace", (GlesProcFn)glFrontFace},
 #if GLES_CABI_COMMON
     {"glFrustumf", (GlesProcFn)glFrustumf},
 #endif
     {"glFrustumx", (GlesProcFn)glFrustumx},
     {"glGenBuffers", (GlesProcFn)glGenBuffers},
+    {"glGenFramebuffersOES", (GlesProcFn)glGenFramebuffersOES},
+    {"glGenRenderbuffersOES", (GlesProcFn)glGenRenderbuffersOES},
     {"glGenTextures", (GlesProcFn)glGenTextures},
     {"glGenVertexArraysOES", (GlesProcFn)glGenVertexArraysOES},
+    {"glGenerateMipmapOES", (GlesProcFn)glGenerateMipmapOES},
     {"glGetBooleanv", (GlesProcFn)glGetBooleanv},
     {"glGetBufferParameteriv", (GlesProcFn)glGetBufferParameteriv},
     {"glGetBufferPointervOES", (GlesProcFn)glGetBufferPointervOES},
@@ -1379,6 +1491,7 @@ static const GlesProc gles_cabi_procs[] = {
 #if GLES_CABI_COMMON
     {"glGetFloatv", (GlesProcFn)glGetFloatv},
 #endif
+    {"glGetFramebufferAttachmentParameterivOES", (GlesProcFn)glGetFramebufferAttachmentParameterivOES},
     {"glGetIntegerv", (GlesProcFn)glGetIntegerv},
 #if GLES_CABI_COMMON
     {"glGetLightfv", (GlesProcFn)glGetLightfv},
@@ -1389,6 +1502,7 @@ static const GlesProc gles_cabi_procs[] = {
 #endif
     {"glGetMaterialxv", (GlesProcFn)glGetMaterialxv},
     {"glGetPointerv", (GlesProcFn)glGetPointerv},
+    {"glGetRenderbufferParameterivOES", (GlesProcFn)glGetRenderbufferParameterivOES},
     {"glGetString", (GlesProcFn)glGetString},
 #if GLES_CABI_COMMON
     {"glGetTexEnvfv", (GlesProcFn)glGetTexEnvfv},
@@ -1403,6 +1517,8 @@ static const GlesProc gles_cabi_procs[] = {
     {"glHint", (GlesProcFn)glHint},
     {"glIsBuffer", (GlesProcFn)glIsBuffer},
     {"glIsEnabled", (GlesProcFn)glIsEnabled},
+    {"glIsFramebufferOES", (GlesProcFn)glIsFramebufferOES},
+    {"glIsRenderbufferOES", (GlesProcFn)glIsRenderbufferOES},
     {"glIsTexture", (GlesProcFn)glIsTexture},
     {"glIsVertexArrayOES", (GlesProcFn)glIsVertexArrayOES},
 #if GLES_CABI_COMMON
@@ -1485,6 +1601,7 @@ static const GlesProc gles_cabi_procs[] = {
     {"glPushMatrix", (GlesProcFn)glPushMatrix},
     {"glQueryMatrixxOES", (GlesProcFn)glQueryMatrixxOES},
     {"glReadPixels", (GlesProcFn)glReadPixels},
+    {"glRenderbufferStorageOES", (GlesProcFn)glRenderbufferStorageOES},
 #if GLES_CABI_COMMON
     {"glRotatef", (GlesProcFn)glRotatef},
 #endif

@@ -3,8 +3,8 @@
 ** One case per recorded core function: read its arguments from the trace,
 ** then (when run is set) call it. Included by replay.c only.
 */
-#define REPLAY_CALL_COUNT 115
-#define REPLAY_TABLE_HASH 0x3E7034AFu
+#define REPLAY_CALL_COUNT 130
+#define REPLAY_TABLE_HASH 0xC5018CA2u
 
 static const char *const replay_call_names[REPLAY_CALL_COUNT] = {
     "gles_threads_set",
@@ -111,6 +111,21 @@ static const char *const replay_call_names[REPLAY_CALL_COUNT] = {
     "gles_FlushMappedBufferRangeEXT",
     "gles_UnmapBufferOES",
     "gles_buffer_map_write",
+    "gles_GenFramebuffersOES",
+    "gles_GenRenderbuffersOES",
+    "gles_BindFramebufferOES",
+    "gles_BindRenderbufferOES",
+    "gles_DeleteFramebuffersOES",
+    "gles_DeleteRenderbuffersOES",
+    "gles_IsFramebufferOES",
+    "gles_IsRenderbufferOES",
+    "gles_RenderbufferStorageOES",
+    "gles_FramebufferTexture2DOES",
+    "gles_FramebufferRenderbufferOES",
+    "gles_CheckFramebufferStatusOES",
+    "gles_GetFramebufferAttachmentParameterivOES",
+    "gles_GetRenderbufferParameterivOES",
+    "gles_GenerateMipmapOES",
     "gles_GenVertexArraysOES",
     "gles_DeleteVertexArraysOES",
     "gles_BindVertexArrayOES",
@@ -927,7 +942,122 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_buffer_map_write(rp->ctx, a0, a1, a2.ptr, a2.nbytes);
         break;
     }
-    case 104: { /* gles_GenVertexArraysOES */
+    case 104: { /* gles_GenFramebuffersOES */
+        int a0 = rd_i32(r);
+        ReplayDatum a1; rd_output(rp, r, &a1, 0);
+        if (a0 > 0 && (a1.ptr == NULL || (uint64_t)a0 * 4u > (uint64_t)a1.nbytes)) rd_fail(r, "n exceeds the output stored");
+        if (r->failed || !run) break;
+        (void)gles_GenFramebuffersOES(rp->ctx, a0, a1.ptr);
+        break;
+    }
+    case 105: { /* gles_GenRenderbuffersOES */
+        int a0 = rd_i32(r);
+        ReplayDatum a1; rd_output(rp, r, &a1, 0);
+        if (a0 > 0 && (a1.ptr == NULL || (uint64_t)a0 * 4u > (uint64_t)a1.nbytes)) rd_fail(r, "n exceeds the output stored");
+        if (r->failed || !run) break;
+        (void)gles_GenRenderbuffersOES(rp->ctx, a0, a1.ptr);
+        break;
+    }
+    case 106: { /* gles_BindFramebufferOES */
+        unsigned int a0 = rd_u32(r);
+        unsigned int a1 = rd_u32(r);
+        if (r->failed || !run) break;
+        (void)gles_BindFramebufferOES(rp->ctx, a0, a1);
+        break;
+    }
+    case 107: { /* gles_BindRenderbufferOES */
+        unsigned int a0 = rd_u32(r);
+        unsigned int a1 = rd_u32(r);
+        if (r->failed || !run) break;
+        (void)gles_BindRenderbufferOES(rp->ctx, a0, a1);
+        break;
+    }
+    case 108: { /* gles_DeleteFramebuffersOES */
+        int a0 = rd_i32(r);
+        const unsigned int *a1; uint32_t a1_n = rd_uints(r, &a1);
+        if (a0 > 0 && (uint32_t)a0 > a1_n) rd_fail(r, "n exceeds the names stored");
+        if (r->failed || !run) break;
+        (void)gles_DeleteFramebuffersOES(rp->ctx, a0, a1);
+        break;
+    }
+    case 109: { /* gles_DeleteRenderbuffersOES */
+        int a0 = rd_i32(r);
+        const unsigned int *a1; uint32_t a1_n = rd_uints(r, &a1);
+        if (a0 > 0 && (uint32_t)a0 > a1_n) rd_fail(r, "n exceeds the names stored");
+        if (r->failed || !run) break;
+        (void)gles_DeleteRenderbuffersOES(rp->ctx, a0, a1);
+        break;
+    }
+    case 110: { /* gles_IsFramebufferOES */
+        unsigned int a0 = rd_u32(r);
+        if (r->failed || !run) break;
+        (void)gles_IsFramebufferOES(rp->ctx, a0);
+        break;
+    }
+    case 111: { /* gles_IsRenderbufferOES */
+        unsigned int a0 = rd_u32(r);
+        if (r->failed || !run) break;
+        (void)gles_IsRenderbufferOES(rp->ctx, a0);
+        break;
+    }
+    case 112: { /* gles_RenderbufferStorageOES */
+        unsigned int a0 = rd_u32(r);
+        unsigned int a1 = rd_u32(r);
+        int a2 = rd_i32(r);
+        int a3 = rd_i32(r);
+        if (r->failed || !run) break;
+        (void)gles_RenderbufferStorageOES(rp->ctx, a0, a1, a2, a3);
+        break;
+    }
+    case 113: { /* gles_FramebufferTexture2DOES */
+        unsigned int a0 = rd_u32(r);
+        unsigned int a1 = rd_u32(r);
+        unsigned int a2 = rd_u32(r);
+        unsigned int a3 = rd_u32(r);
+        int a4 = rd_i32(r);
+        if (r->failed || !run) break;
+        (void)gles_FramebufferTexture2DOES(rp->ctx, a0, a1, a2, a3, a4);
+        break;
+    }
+    case 114: { /* gles_FramebufferRenderbufferOES */
+        unsigned int a0 = rd_u32(r);
+        unsigned int a1 = rd_u32(r);
+        unsigned int a2 = rd_u32(r);
+        unsigned int a3 = rd_u32(r);
+        if (r->failed || !run) break;
+        (void)gles_FramebufferRenderbufferOES(rp->ctx, a0, a1, a2, a3);
+        break;
+    }
+    case 115: { /* gles_CheckFramebufferStatusOES */
+        unsigned int a0 = rd_u32(r);
+        if (r->failed || !run) break;
+        (void)gles_CheckFramebufferStatusOES(rp->ctx, a0);
+        break;
+    }
+    case 116: { /* gles_GetFramebufferAttachmentParameterivOES */
+        unsigned int a0 = rd_u32(r);
+        unsigned int a1 = rd_u32(r);
+        unsigned int a2 = rd_u32(r);
+        ReplayDatum a3; rd_output(rp, r, &a3, 0);
+        if (r->failed || !run) break;
+        (void)gles_GetFramebufferAttachmentParameterivOES(rp->ctx, a0, a1, a2, a3.ptr);
+        break;
+    }
+    case 117: { /* gles_GetRenderbufferParameterivOES */
+        unsigned int a0 = rd_u32(r);
+        unsigned int a1 = rd_u32(r);
+        ReplayDatum a2; rd_output(rp, r, &a2, 0);
+        if (r->failed || !run) break;
+        (void)gles_GetRenderbufferParameterivOES(rp->ctx, a0, a1, a2.ptr);
+        break;
+    }
+    case 118: { /* gles_GenerateMipmapOES */
+        unsigned int a0 = rd_u32(r);
+        if (r->failed || !run) break;
+        (void)gles_GenerateMipmapOES(rp->ctx, a0);
+        break;
+    }
+    case 119: { /* gles_GenVertexArraysOES */
         int a0 = rd_i32(r);
         ReplayDatum a1; rd_output(rp, r, &a1, 0);
         if (a0 > 0 && (a1.ptr == NULL || (uint64_t)a0 * 4u > (uint64_t)a1.nbytes)) rd_fail(r, "n exceeds the output stored");
@@ -935,7 +1065,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GenVertexArraysOES(rp->ctx, a0, a1.ptr);
         break;
     }
-    case 105: { /* gles_DeleteVertexArraysOES */
+    case 120: { /* gles_DeleteVertexArraysOES */
         int a0 = rd_i32(r);
         const unsigned int *a1; uint32_t a1_n = rd_uints(r, &a1);
         if (a0 > 0 && (uint32_t)a0 > a1_n) rd_fail(r, "n exceeds the names stored");
@@ -943,19 +1073,19 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DeleteVertexArraysOES(rp->ctx, a0, a1);
         break;
     }
-    case 106: { /* gles_BindVertexArrayOES */
+    case 121: { /* gles_BindVertexArrayOES */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_BindVertexArrayOES(rp->ctx, a0);
         break;
     }
-    case 107: { /* gles_IsVertexArrayOES */
+    case 122: { /* gles_IsVertexArrayOES */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_IsVertexArrayOES(rp->ctx, a0);
         break;
     }
-    case 108: { /* gles_GetBufferParameteriv */
+    case 123: { /* gles_GetBufferParameteriv */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         ReplayDatum a2; rd_output(rp, r, &a2, 0);
@@ -963,7 +1093,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GetBufferParameteriv(rp->ctx, a0, a1, a2.ptr);
         break;
     }
-    case 109: { /* gles_DrawArrays */
+    case 124: { /* gles_DrawArrays */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -971,7 +1101,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DrawArrays(rp->ctx, a0, a1, a2);
         break;
     }
-    case 110: { /* gles_DrawElements */
+    case 125: { /* gles_DrawElements */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         unsigned int a2 = rd_u32(r);
@@ -980,13 +1110,13 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DrawElements(rp->ctx, a0, a1, a2, a3.ptr, a3.nbytes);
         break;
     }
-    case 111: { /* gles_Clear */
+    case 126: { /* gles_Clear */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_Clear(rp->ctx, a0);
         break;
     }
-    case 112: { /* gles_ReadPixels */
+    case 127: { /* gles_ReadPixels */
         int a0 = rd_i32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -998,12 +1128,12 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_ReadPixels(rp->ctx, a0, a1, a2, a3, a4, a5, a6.ptr, a6.nbytes);
         break;
     }
-    case 113: { /* gles_Finish */
+    case 128: { /* gles_Finish */
         if (r->failed || !run) break;
         (void)gles_Finish(rp->ctx);
         break;
     }
-    case 114: { /* gles_Flush */
+    case 129: { /* gles_Flush */
         if (r->failed || !run) break;
         (void)gles_Flush(rp->ctx);
         break;

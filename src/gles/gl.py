@@ -919,6 +919,49 @@ class GLBase:
         self._delete(self._lib.gles_DeleteVertexArraysOES, n, arrays, "glDeleteVertexArraysOES")
 
     # {================================================================
+    # framebuffer objects (OES_framebuffer_object)
+
+    def glGenFramebuffersOES(self, n: int) -> Any:
+        """Framebuffer object names: an int for n == 1, else a uint32 array."""
+        return self._gen(self._lib.gles_GenFramebuffersOES, n)
+
+    def glDeleteFramebuffersOES(self, n: Any, framebuffers: Any = _INFER) -> None:
+        """Delete framebuffer objects: ``(names)`` or ``(n, names)``;
+        deleting the bound one binds the window again."""
+        self._delete(self._lib.gles_DeleteFramebuffersOES, n, framebuffers, "glDeleteFramebuffersOES")
+
+    def glGenRenderbuffersOES(self, n: int) -> Any:
+        """Renderbuffer object names: an int for n == 1, else a uint32 array."""
+        return self._gen(self._lib.gles_GenRenderbuffersOES, n)
+
+    def glDeleteRenderbuffersOES(self, n: Any, renderbuffers: Any = _INFER) -> None:
+        """Delete renderbuffer objects (detached from every framebuffer object)."""
+        self._delete(self._lib.gles_DeleteRenderbuffersOES, n, renderbuffers, "glDeleteRenderbuffersOES")
+
+    def glCheckFramebufferStatusOES(self, target: int) -> int:
+        """FRAMEBUFFER_COMPLETE_OES or why the bound framebuffer object is
+        not (0 on a GL error)."""
+        with self._lock:
+            return int(self._lib.gles_CheckFramebufferStatusOES(self._p, _index(target)))
+
+    def glGetRenderbufferParameterivOES(self, target: int, pname: int) -> int | None:
+        """One value of the bound renderbuffer (RENDERBUFFER_WIDTH_OES, ...); None on a GL error."""
+        out = self._ffi.new("int[1]")
+        with self._lock:
+            ok = self._lib.gles_GetRenderbufferParameterivOES(self._p, _index(target), _index(pname), out)
+        return int(out[0]) if ok else None
+
+    def glGetFramebufferAttachmentParameterivOES(self, target: int, attachment: int,
+                                                  pname: int) -> int | None:
+        """One value of an attachment point of the bound framebuffer object
+        (FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE_OES, ...); None on a GL error."""
+        out = self._ffi.new("int[1]")
+        args = (_index(target), _index(attachment), _index(pname))
+        with self._lock:
+            ok = self._lib.gles_GetFramebufferAttachmentParameterivOES(self._p, *args, out)
+        return int(out[0]) if ok else None
+
+    # {================================================================
     # mapped buffers (OES_mapbuffer, EXT_map_buffer_range)
     #
     # A mapping reaches Python as a numpy copy of the mapped bytes, written
@@ -1184,11 +1227,15 @@ class GLBase:
             self._status(st)
             return None
         if width >= 0 and height >= 0:
-            # clip to the framebuffer; a negative size goes on unchanged so
-            # that the core records INVALID_VALUE
+            # clip to the framebuffer read (the window, or a framebuffer
+            # object's); a negative size goes on unchanged so that the core
+            # records INVALID_VALUE
+            size = self._ffi.new("int[2]")
+            with self._lock:
+                self._lib.gles_draw_size(self._p, size)
             x0, y0 = max(x, 0), max(y, 0)
-            width = max(min(x + width, self.handle.width) - x0, 0)
-            height = max(min(y + height, self.handle.height) - y0, 0)
+            width = max(min(x + width, size[0]) - x0, 0)
+            height = max(min(y + height, size[1]) - y0, 0)
             x, y = x0, y0
         bpp = 4 if type == C.GL_UNSIGNED_BYTE and format in (C.GL_RGBA, C.GL_BGRA_EXT) else 2
         align = self._bound(C.GL_PACK_ALIGNMENT)
