@@ -597,6 +597,20 @@ static BufferObject **binding_of(GlesContext *ctx, unsigned int target)
     return NULL;
 }
 
+/* the buffer bound to target, or NULL with the GL error recorded: an
+** unknown target INVALID_ENUM, buffer 0 INVALID_OPERATION */
+static BufferObject *bound_buffer(GlesContext *ctx, unsigned int target)
+{
+    BufferObject **slot = binding_of(ctx, target);
+    if (!slot) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return NULL;
+    }
+    if (!*slot)
+        ctx_error(ctx, GL_INVALID_OPERATION);
+    return *slot;
+}
+
 void gles_BindBuffer(GlesContext *ctx, unsigned int target, unsigned int buffer)
 {
     BufferObject **slot = binding_of(ctx, target);
@@ -663,16 +677,9 @@ int gles_BufferData(GlesContext *ctx, unsigned int target, int64_t size, const v
 
 void gles_BufferSubData(GlesContext *ctx, unsigned int target, int64_t offset, int64_t size, const void *data)
 {
-    BufferObject **slot = binding_of(ctx, target);
-    if (!slot) {
-        ctx_error(ctx, GL_INVALID_ENUM);
+    BufferObject *b = bound_buffer(ctx, target);
+    if (!b)
         return;
-    }
-    BufferObject *b = *slot;
-    if (!b) {
-        ctx_error(ctx, GL_INVALID_OPERATION);
-        return;
-    }
     if (offset < 0 || size < 0 || offset > b->size || size > b->size - offset) {
         ctx_error(ctx, GL_INVALID_VALUE);
         return;
@@ -696,16 +703,9 @@ void gles_BufferSubData(GlesContext *ctx, unsigned int target, int64_t offset, i
 void *gles_MapBufferRangeEXT(GlesContext *ctx, unsigned int target, int64_t offset, int64_t length,
                              unsigned int access)
 {
-    BufferObject **slot = binding_of(ctx, target);
-    if (!slot) {
-        ctx_error(ctx, GL_INVALID_ENUM);
+    BufferObject *b = bound_buffer(ctx, target);
+    if (!b)
         return NULL;
-    }
-    BufferObject *b = *slot;
-    if (!b) {
-        ctx_error(ctx, GL_INVALID_OPERATION);
-        return NULL;
-    }
     if (offset < 0 || length < 0 || offset > b->size || length > b->size - offset || (access & ~(unsigned)MAP_BITS)) {
         ctx_error(ctx, GL_INVALID_VALUE);
         return NULL;
@@ -756,16 +756,9 @@ void *gles_MapBufferOES(GlesContext *ctx, unsigned int target, unsigned int acce
 
 void gles_FlushMappedBufferRangeEXT(GlesContext *ctx, unsigned int target, int64_t offset, int64_t length)
 {
-    BufferObject **slot = binding_of(ctx, target);
-    if (!slot) {
-        ctx_error(ctx, GL_INVALID_ENUM);
+    BufferObject *b = bound_buffer(ctx, target);
+    if (!b)
         return;
-    }
-    BufferObject *b = *slot;
-    if (!b) {
-        ctx_error(ctx, GL_INVALID_OPERATION);
-        return;
-    }
     if (offset < 0 || length < 0 || (b->mapped && (offset > b->map_length || length > b->map_length - offset))) {
         ctx_error(ctx, GL_INVALID_VALUE);
         return;
@@ -779,13 +772,10 @@ void gles_FlushMappedBufferRangeEXT(GlesContext *ctx, unsigned int target, int64
 
 unsigned char gles_UnmapBufferOES(GlesContext *ctx, unsigned int target)
 {
-    BufferObject **slot = binding_of(ctx, target);
-    if (!slot) {
-        ctx_error(ctx, GL_INVALID_ENUM);
+    BufferObject *b = bound_buffer(ctx, target);
+    if (!b)
         return 0;
-    }
-    BufferObject *b = *slot;
-    if (!b || !b->mapped) {
+    if (!b->mapped) {
         ctx_error(ctx, GL_INVALID_OPERATION);
         return 0;
     }

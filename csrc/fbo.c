@@ -11,6 +11,7 @@
 **       a texture or renderbuffer call has since replaced: nothing reads
 **       them before the next fbo_sync.
 */
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 #include "state.h"
@@ -270,22 +271,42 @@ void fbo_free(GlesContext *ctx)
     ctx->rbo = NULL;
 }
 
+static void gen_names(GlesContext *ctx, NameTable *t, int n, unsigned int *names)
+{
+    if (n < 0)
+        ctx_error(ctx, GL_INVALID_VALUE);
+    else
+        names_generate(t, n, names);
+}
+
 void gles_GenFramebuffersOES(GlesContext *ctx, int n, unsigned int *names)
 {
-    if (n < 0) {
-        ctx_error(ctx, GL_INVALID_VALUE);
-        return;
-    }
-    names_generate(&ctx->framebuffers, n, names);
+    gen_names(ctx, &ctx->framebuffers, n, names);
 }
 
 void gles_GenRenderbuffersOES(GlesContext *ctx, int n, unsigned int *names)
 {
-    if (n < 0) {
-        ctx_error(ctx, GL_INVALID_VALUE);
-        return;
+    gen_names(ctx, &ctx->renderbuffers, n, names);
+}
+
+/* the object a Bind names: an unused name becomes one (zeroed, its name in
+** its first field, as Framebuffer and Renderbuffer have it); NULL with
+** OUT_OF_MEMORY recorded */
+static void *bound_object(GlesContext *ctx, NameTable *t, unsigned int name, size_t size)
+{
+    void *o = names_lookup(t, name);
+    if (o)
+        return o;
+    o = calloc(1, size);
+    if (!o || !names_insert(t, name, o)) {
+        free(o);
+        ctx_error(ctx, GL_OUT_OF_MEMORY);
+        return NULL;
     }
-    names_generate(&ctx->renderbuffers, n, names);
+    _Static_assert(offsetof(Framebuffer, name) == 0 && offsetof(Renderbuffer, name) == 0,
+                   "the name is an object's first field");
+    *(unsigned int *)o = name;
+    return o;
 }
 
 void gles_BindFramebufferOES(GlesContext *ctx, unsigned int target, unsigned int name)
@@ -294,20 +315,9 @@ void gles_BindFramebufferOES(GlesContext *ctx, unsigned int target, unsigned int
         ctx_error(ctx, GL_INVALID_ENUM);
         return;
     }
-    Framebuffer *fb = NULL;
-    if (name) {
-        /* an unused name becomes an object when bound */
-        fb = names_lookup(&ctx->framebuffers, name);
-        if (!fb) {
-            fb = calloc(1, sizeof *fb);
-            if (!fb || !names_insert(&ctx->framebuffers, name, fb)) {
-                free(fb);
-                ctx_error(ctx, GL_OUT_OF_MEMORY);
-                return;
-            }
-            fb->name = name;
-        }
-    }
+    Framebuffer *fb = name ? bound_object(ctx, &ctx->framebuffers, name, sizeof *fb) : NULL;
+    if (name && !fb)
+        return;
     bind_framebuffer(ctx, fb);
 }
 
@@ -317,19 +327,9 @@ void gles_BindRenderbufferOES(GlesContext *ctx, unsigned int target, unsigned in
         ctx_error(ctx, GL_INVALID_ENUM);
         return;
     }
-    Renderbuffer *rb = NULL;
-    if (name) {
-        rb = names_lookup(&ctx->renderbuffers, name);
-        if (!rb) {
-            rb = calloc(1, sizeof *rb);
-            if (!rb || !names_insert(&ctx->renderbuffers, name, rb)) {
-                free(rb);
-                ctx_error(ctx, GL_OUT_OF_MEMORY);
-                return;
-            }
-            rb->name = name;
-        }
-    }
+    Renderbuffer *rb = name ? bound_object(ctx, &ctx->renderbuffers, name, sizeof *rb) : NULL;
+    if (name && !rb)
+        return;
     ctx->rbo = rb;
 }
 
@@ -578,6 +578,30 @@ int gles_GetRenderbufferParameterivOES(GlesContext *ctx, unsigned int target, un
     }
     params[0] = v;
     return 1;
+}
+
+/* EXT_discard_framebuffer: the contents may become undefined; gles keeps
+** them (one of the allowed outcomes), after the extension's checks */
+void gles_DiscardFramebufferEXT(GlesContext *ctx, unsigned int target, int n, const unsigned int *attachments)
+{
+    if (target != GL_FRAMEBUFFER_OES) {
+        ctx_error(ctx, GL_INVALID_ENUM);
+        return;
+    }
+    if (n < 0) {
+        ctx_error(ctx, GL_INVALID_VALUE);
+        return;
+    }
+    for (int i = 0; i < n; i++) {
+        const unsigned int a = attachments[i];
+        const int ok = ctx->fbo ? (a == GL_COLOR_ATTACHMENT0_OES || a == GL_DEPTH_ATTACHMENT_OES
+                                   || a == GL_STENCIL_ATTACHMENT_OES)
+                                : (a == GL_COLOR_EXT || a == GL_DEPTH_EXT || a == GL_STENCIL_EXT);
+        if (!ok) {
+            ctx_error(ctx, GL_INVALID_ENUM);
+            return;
+        }
+    }
 }
 
 int fbo_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)

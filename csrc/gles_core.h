@@ -381,6 +381,8 @@ int gles_GetFramebufferAttachmentParameterivOES(GlesContext *ctx, unsigned int t
                                                  unsigned int pname, int *params);
 int gles_GetRenderbufferParameterivOES(GlesContext *ctx, unsigned int target, unsigned int pname, int *params);
 void gles_GenerateMipmapOES(GlesContext *ctx, unsigned int target);
+/* EXT_discard_framebuffer */
+void gles_DiscardFramebufferEXT(GlesContext *ctx, unsigned int target, int n, const unsigned int *attachments);
 /* OES_vertex_array_object */
 void gles_GenVertexArraysOES(GlesContext *ctx, int n, unsigned int *names);
 void gles_DeleteVertexArraysOES(GlesContext *ctx, int n, const unsigned int *names);

@@ -394,5 +394,29 @@ def test_generate_mipmap_is_generate_mipmap() -> None:
 def test_extensions_listed() -> None:
     ext = gles.Context(2, 2).gl.glGetString(C.GL_EXTENSIONS).split()
     for name in (b"GL_OES_framebuffer_object", b"GL_OES_rgb8_rgba8", b"GL_OES_depth24", b"GL_OES_stencil8",
-                 b"GL_OES_packed_depth_stencil", b"GL_OES_fbo_render_mipmap"):
+                 b"GL_OES_packed_depth_stencil", b"GL_OES_fbo_render_mipmap", b"GL_EXT_discard_framebuffer"):
         assert name in ext
+
+
+def test_discard_framebuffer() -> None:
+    """EXT_discard_framebuffer: a hint (gles keeps the contents) with the extension's errors."""
+    ctx = gles.Context(4, 4)
+    gl = ctx.gl
+    gl.glClearColor(0, 1, 0, 1)
+    gl.glClear(C.GL_COLOR_BUFFER_BIT)
+    gl.glDiscardFramebufferEXT(FB, [C.GL_COLOR_EXT, C.GL_DEPTH_EXT, C.GL_STENCIL_EXT])
+    assert gl.glGetError() == C.GL_NO_ERROR
+    assert (np.asarray(ctx.image()) == [0, 255, 0, 255]).all()
+    gl.glDiscardFramebufferEXT(FB, 1, [COLOR])                   # an object's token, the window bound
+    assert gl.glGetError() == C.GL_INVALID_ENUM
+    _framebuffer(gl)
+    gl.glDiscardFramebufferEXT(FB, 2, [COLOR, DEPTH])
+    assert gl.glGetError() == C.GL_NO_ERROR
+    gl.glDiscardFramebufferEXT(FB, 1, [C.GL_COLOR_EXT])
+    assert gl.glGetError() == C.GL_INVALID_ENUM
+    gl.glDiscardFramebufferEXT(RB, 0, [])
+    assert gl.glGetError() == C.GL_INVALID_ENUM
+    gl.glDiscardFramebufferEXT(FB, -1, [])
+    assert gl.glGetError() == C.GL_INVALID_VALUE
+    with pytest.raises(ValueError):
+        gl.glDiscardFramebufferEXT(FB, 3, [COLOR])

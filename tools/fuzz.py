@@ -524,6 +524,15 @@ def _draw_elements(g: Gen) -> list[Val]:
     return [g.enum(MODES), g.int(0, 24), typ, g.pointer(typ.value)]
 
 
+def _discard(g: Gen) -> list[Val]:
+    k = g.r.randint(0, 3)
+    pool = [C.GL_COLOR_EXT, C.GL_DEPTH_EXT, C.GL_STENCIL_EXT, C.GL_COLOR_ATTACHMENT0_OES,
+            C.GL_DEPTH_ATTACHMENT_OES, C.GL_TEXTURE_2D]
+    att = [g.r.choice(pool) for _ in range(k)]
+    n = g.int(0, k) if g.r.random() < 0.9 else g.int(-2, k)
+    return [g.enum(FB_T), n, Val(att, repr(att))]
+
+
 def _multi_draw_arrays(g: Gen) -> list[Val]:
     k = g.r.randint(0, 3)
     first = [g.int(0, 8).value for _ in range(k)]
@@ -747,6 +756,7 @@ SPECS: dict[str, Spec] = {
     "glGetFramebufferAttachmentParameterivOES": lambda g: [g.enum(FB_T), g.enum(FB_ATTACH), g.enum(FB_P)],
     "glGetRenderbufferParameterivOES": lambda g: [g.enum(RB_T), g.enum(RB_P)],
     "glGenerateMipmapOES": lambda g: [g.enum([C.GL_TEXTURE_2D, C.GL_TEXTURE])],
+    "glDiscardFramebufferEXT": _discard,
     "glMapBufferOES": lambda g: [g.enum(BUF_T), g.enum([C.GL_WRITE_ONLY_OES, 0x88B8])],
     "glUnmapBufferOES": lambda g: [g.enum(BUF_T)],
     "glGetBufferPointervOES": lambda g: [g.enum(BUF_T),

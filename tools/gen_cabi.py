@@ -216,6 +216,7 @@ glCheckFramebufferStatusOES     gles_CheckFramebufferStatusOES(C, target)
 glGetFramebufferAttachmentParameterivOES  gles_GetFramebufferAttachmentParameterivOES(C, target, attachment, pname, params)
 glGetRenderbufferParameterivOES  gles_GetRenderbufferParameterivOES(C, target, pname, params)
 glGenerateMipmapOES             gles_GenerateMipmapOES(C, target)
+glDiscardFramebufferEXT         gles_DiscardFramebufferEXT(C, target, numAttachments, attachments)
 """
 
 # Pointer arguments a C caller may pass as NULL: the core gives NULL its

@@ -28,6 +28,7 @@ EXTENSIONS = (
     "GL_OES_blend_equation_separate", "GL_OES_blend_func_separate", "GL_OES_blend_subtract",
     "GL_OES_draw_texture", "GL_OES_matrix_palette", "GL_OES_query_matrix", "GL_OES_vertex_array_object",
     "GL_OES_mapbuffer", "GL_EXT_map_buffer_range", "GL_EXT_multi_draw_arrays", "GL_OES_framebuffer_object",
+    "GL_EXT_discard_framebuffer",
 )
 
 PROTO = re.compile(r"^GL_API\s+(?P<ret>[\w\s\*]+?)\s*GL_APIENTRY\s+(?P<name>gl\w+)\s*\((?P<params>[^)]*)\);")

@@ -638,6 +638,8 @@ def _covgl_calls() -> list[tuple[str, Call, str]]:
             gl.GL_FRAMEBUFFER_OES, gl.GL_COLOR_ATTACHMENT0_OES, gl.GL_RENDERBUFFER_OES, s["rb"]), ""),
         ("glCheckFramebufferStatusOES", lambda gl, s, t: gl.glCheckFramebufferStatusOES(
             gl.GL_FRAMEBUFFER_OES), ""),
+        ("glDiscardFramebufferEXT", lambda gl, s, t: gl.glDiscardFramebufferEXT(
+            gl.GL_FRAMEBUFFER_OES, 1, np.array([gl.GL_COLOR_ATTACHMENT0_OES], np.uint32)), ""),
         ("glGetFramebufferAttachmentParameterivOES",
          lambda gl, s, t: gl.glGetFramebufferAttachmentParameterivOES(
              gl.GL_FRAMEBUFFER_OES, gl.GL_COLOR_ATTACHMENT0_OES,
@@ -725,6 +727,7 @@ _EXTENSIONS = {
     "GL_OES_mapbuffer": "glMapBufferOES glGetBufferPointervOES glUnmapBufferOES",
     "GL_EXT_map_buffer_range": "glMapBufferRangeEXT glFlushMappedBufferRangeEXT",
     "GL_EXT_multi_draw_arrays": "glMultiDrawArraysEXT glMultiDrawElementsEXT",
+    "GL_EXT_discard_framebuffer": "glDiscardFramebufferEXT",
     "GL_OES_matrix_palette": "glCurrentPaletteMatrixOES glLoadPaletteFromModelViewMatrixOES "
                              "glMatrixIndexPointerOES glWeightPointerOES",
     "GL_OES_query_matrix": "glQueryMatrixxOES",

@@ -182,44 +182,56 @@ static void get_clip_plane_f(GlesContext *C, GLenum plane, GLfloat *equation)
 ** is refused (an array too short), as gl.py; a negative primcount is
 ** INVALID_VALUE (as the commands' GL 1.4 form). An error recorded before
 ** the call stays the first. */
-static int multi_draw_failed(GlesContext *C, int status, unsigned int before)
+/* draw list i of a multi-draw; GLES_OK or the core's refusal */
+typedef int (*MultiDraw)(GlesContext *C, GLenum mode, GLsizei i, const void *lists);
+
+typedef struct MultiArrays { const GLint *first; const GLsizei *count; } MultiArrays;
+typedef struct MultiElements { const GLsizei *count; GLenum type; const void *const *indices; } MultiElements;
+
+static int multi_arrays_draw(GlesContext *C, GLenum mode, GLsizei i, const void *lists)
 {
-    const unsigned int err = gles_GetError(C);
-    if (before || err)
-        gles_set_error(C, before ? before : err);
-    return err || status != GLES_OK;
+    const MultiArrays *m = lists;
+    return gles_DrawArrays(C, mode, m->first[i], m->count[i]);
+}
+
+static int multi_elements_draw(GlesContext *C, GLenum mode, GLsizei i, const void *lists)
+{
+    const MultiElements *m = lists;
+    return gles_DrawElements(C, mode, m->count[i], m->type, m->indices[i], -1);
+}
+
+static void multi_draw(GlesContext *C, GLenum mode, const GLsizei *count, GLsizei primcount, MultiDraw draw,
+                       const void *lists)
+{
+    if (primcount < 0) {
+        gles_set_error(C, GL_INVALID_VALUE);
+        return;
+    }
+    for (GLsizei i = 0; i < primcount; i++) {
+        if (count[i] <= 0)
+            continue;
+        const unsigned int before = gles_GetError(C);
+        const int status = draw(C, mode, i, lists);
+        const unsigned int err = gles_GetError(C);
+        if (before || err)
+            gles_set_error(C, before ? before : err);
+        if (err || status != GLES_OK)
+            return;
+    }
 }
 
 static void multi_draw_arrays(GlesContext *C, GLenum mode, const GLint *first, const GLsizei *count,
                               GLsizei primcount)
 {
-    if (primcount < 0) {
-        gles_set_error(C, GL_INVALID_VALUE);
-        return;
-    }
-    for (GLsizei i = 0; i < primcount; i++) {
-        if (count[i] <= 0)
-            continue;
-        const unsigned int before = gles_GetError(C);
-        if (multi_draw_failed(C, gles_DrawArrays(C, mode, first[i], count[i]), before))
-            return;
-    }
+    const MultiArrays m = { first, count };
+    multi_draw(C, mode, count, primcount, multi_arrays_draw, &m);
 }
 
 static void multi_draw_elements(GlesContext *C, GLenum mode, const GLsizei *count, GLenum type,
                                 const void *const *indices, GLsizei primcount)
 {
-    if (primcount < 0) {
-        gles_set_error(C, GL_INVALID_VALUE);
-        return;
-    }
-    for (GLsizei i = 0; i < primcount; i++) {
-        if (count[i] <= 0)
-            continue;
-        const unsigned int before = gles_GetError(C);
-        if (multi_draw_failed(C, gles_DrawElements(C, mode, count[i], type, indices[i], -1), before))
-            return;
-    }
+    const MultiElements m = { count, type, indices };
+    multi_draw(C, mode, count, primcount, multi_elements_draw, &m);
 }
 
 /* OES_query_matrix: element i is mantissa[i] / 65536 * 2^exponent[i]; bit i

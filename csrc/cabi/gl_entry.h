@@ -1379,6 +1379,13 @@ GL_API void GL_APIENTRY glGenerateMipmapOES (GLenum target)
         gles_GenerateMipmapOES(C, target);
 }
 
+GL_API void GL_APIENTRY glDiscardFramebufferEXT (GLenum target, GLsizei numAttachments, const GLenum *attachments)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C && attachments)
+        gles_DiscardFramebufferEXT(C, target, numAttachments, attachments);
+}
+
 /* every entry point by name, for eglGetProcAddress (sorted for bsearch) */
 static const GlesProc gles_cabi_procs[] = {
     {"glActiveTexture", (GlesProcFn)glActiveTexture},
@@ -1439,6 +1446,7 @@ static const GlesProc gles_cabi_procs[] = {
     {"glDepthRangex", (GlesProcFn)glDepthRangex},
     {"glDisable", (GlesProcFn)glDisable},
     {"glDisableClientState", (GlesProcFn)glDisableClientState},
+    {"glDiscardFramebufferEXT", (GlesProcFn)glDiscardFramebufferEXT},
     {"glDrawArrays", (GlesProcFn)glDrawArrays},
     {"glDrawElements", (GlesProcFn)glDrawElements},
 #if GLES_CABI_COMMON

@@ -3,8 +3,8 @@
 ** One case per recorded core function: read its arguments from the trace,
 ** then (when run is set) call it. Included by replay.c only.
 */
-#define REPLAY_CALL_COUNT 130
-#define REPLAY_TABLE_HASH 0xC5018CA2u
+#define REPLAY_CALL_COUNT 131
+#define REPLAY_TABLE_HASH 0x36D28DA2u
 
 static const char *const replay_call_names[REPLAY_CALL_COUNT] = {
     "gles_threads_set",
@@ -126,6 +126,7 @@ static const char *const replay_call_names[REPLAY_CALL_COUNT] = {
     "gles_GetFramebufferAttachmentParameterivOES",
     "gles_GetRenderbufferParameterivOES",
     "gles_GenerateMipmapOES",
+    "gles_DiscardFramebufferEXT",
     "gles_GenVertexArraysOES",
     "gles_DeleteVertexArraysOES",
     "gles_BindVertexArrayOES",
@@ -1057,7 +1058,16 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GenerateMipmapOES(rp->ctx, a0);
         break;
     }
-    case 119: { /* gles_GenVertexArraysOES */
+    case 119: { /* gles_DiscardFramebufferEXT */
+        unsigned int a0 = rd_u32(r);
+        int a1 = rd_i32(r);
+        const unsigned int *a2; uint32_t a2_n = rd_uints(r, &a2);
+        if (a1 > 0 && (uint32_t)a1 > a2_n) rd_fail(r, "n exceeds the names stored");
+        if (r->failed || !run) break;
+        (void)gles_DiscardFramebufferEXT(rp->ctx, a0, a1, a2);
+        break;
+    }
+    case 120: { /* gles_GenVertexArraysOES */
         int a0 = rd_i32(r);
         ReplayDatum a1; rd_output(rp, r, &a1, 0);
         if (a0 > 0 && (a1.ptr == NULL || (uint64_t)a0 * 4u > (uint64_t)a1.nbytes)) rd_fail(r, "n exceeds the output stored");
@@ -1065,7 +1075,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GenVertexArraysOES(rp->ctx, a0, a1.ptr);
         break;
     }
-    case 120: { /* gles_DeleteVertexArraysOES */
+    case 121: { /* gles_DeleteVertexArraysOES */
         int a0 = rd_i32(r);
         const unsigned int *a1; uint32_t a1_n = rd_uints(r, &a1);
         if (a0 > 0 && (uint32_t)a0 > a1_n) rd_fail(r, "n exceeds the names stored");
@@ -1073,19 +1083,19 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DeleteVertexArraysOES(rp->ctx, a0, a1);
         break;
     }
-    case 121: { /* gles_BindVertexArrayOES */
+    case 122: { /* gles_BindVertexArrayOES */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_BindVertexArrayOES(rp->ctx, a0);
         break;
     }
-    case 122: { /* gles_IsVertexArrayOES */
+    case 123: { /* gles_IsVertexArrayOES */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_IsVertexArrayOES(rp->ctx, a0);
         break;
     }
-    case 123: { /* gles_GetBufferParameteriv */
+    case 124: { /* gles_GetBufferParameteriv */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         ReplayDatum a2; rd_output(rp, r, &a2, 0);
@@ -1093,7 +1103,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GetBufferParameteriv(rp->ctx, a0, a1, a2.ptr);
         break;
     }
-    case 124: { /* gles_DrawArrays */
+    case 125: { /* gles_DrawArrays */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -1101,7 +1111,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DrawArrays(rp->ctx, a0, a1, a2);
         break;
     }
-    case 125: { /* gles_DrawElements */
+    case 126: { /* gles_DrawElements */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         unsigned int a2 = rd_u32(r);
@@ -1110,13 +1120,13 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DrawElements(rp->ctx, a0, a1, a2, a3.ptr, a3.nbytes);
         break;
     }
-    case 126: { /* gles_Clear */
+    case 127: { /* gles_Clear */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_Clear(rp->ctx, a0);
         break;
     }
-    case 127: { /* gles_ReadPixels */
+    case 128: { /* gles_ReadPixels */
         int a0 = rd_i32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -1128,12 +1138,12 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_ReadPixels(rp->ctx, a0, a1, a2, a3, a4, a5, a6.ptr, a6.nbytes);
         break;
     }
-    case 128: { /* gles_Finish */
+    case 129: { /* gles_Finish */
         if (r->failed || !run) break;
         (void)gles_Finish(rp->ctx);
         break;
     }
-    case 129: { /* gles_Flush */
+    case 130: { /* gles_Flush */
         if (r->failed || !run) break;
         (void)gles_Flush(rp->ctx);
         break;

@@ -218,6 +218,7 @@ COMMANDS: dict[str, Command] = {
     'glDeleteVertexArraysOES': Command('glDeleteVertexArraysOES', 'void', (Param('n', 'GLsizei', 'sizei'), Param('arrays', 'const GLuint*', 'values')), 'both', 'GL_OES_vertex_array_object'),
     'glGenVertexArraysOES': Command('glGenVertexArraysOES', 'void', (Param('n', 'GLsizei', 'sizei'), Param('arrays', 'GLuint*', 'out')), 'both', 'GL_OES_vertex_array_object'),
     'glIsVertexArrayOES': Command('glIsVertexArrayOES', 'GLboolean', (Param('array', 'GLuint', 'uint'),), 'both', 'GL_OES_vertex_array_object'),
+    'glDiscardFramebufferEXT': Command('glDiscardFramebufferEXT', 'void', (Param('target', 'GLenum', 'enum'), Param('numAttachments', 'GLsizei', 'sizei'), Param('attachments', 'const GLenum*', 'values')), 'both', 'GL_EXT_discard_framebuffer'),
     'glMapBufferRangeEXT': Command('glMapBufferRangeEXT', 'void *', (Param('target', 'GLenum', 'enum'), Param('offset', 'GLintptr', 'intptr'), Param('length', 'GLsizeiptr', 'sizeiptr'), Param('access', 'GLbitfield', 'bitfield')), 'both', 'GL_EXT_map_buffer_range'),
     'glFlushMappedBufferRangeEXT': Command('glFlushMappedBufferRangeEXT', 'void', (Param('target', 'GLenum', 'enum'), Param('offset', 'GLintptr', 'intptr'), Param('length', 'GLsizeiptr', 'sizeiptr')), 'both', 'GL_EXT_map_buffer_range'),
     'glMultiDrawArraysEXT': Command('glMultiDrawArraysEXT', 'void', (Param('mode', 'GLenum', 'enum'), Param('first', 'const GLint*', 'values'), Param('count', 'const GLsizei*', 'values'), Param('primcount', 'GLsizei', 'sizei')), 'both', 'GL_EXT_multi_draw_arrays'),

@@ -938,6 +938,21 @@ class GLBase:
         """Delete renderbuffer objects (detached from every framebuffer object)."""
         self._delete(self._lib.gles_DeleteRenderbuffersOES, n, renderbuffers, "glDeleteRenderbuffersOES")
 
+    def glDiscardFramebufferEXT(self, target: int, numAttachments: Any, attachments: Any = _INFER) -> None:
+        """EXT_discard_framebuffer: ``(target, attachments)`` or the C form
+        ``(target, n, attachments)``; a hint (gles keeps the contents)."""
+        if attachments is _INFER:
+            attachments, numAttachments = numAttachments, None
+        vals = _values(attachments, 0, "glDiscardFramebufferEXT", np.int64)
+        n = len(vals) if numAttachments is None else _glint(numAttachments, "numAttachments")
+        if n > len(vals):
+            raise ValueError(f"glDiscardFramebufferEXT: numAttachments is {n}, attachments holds {len(vals)}")
+        if n > 0 and (vals[:n].min() < 0 or vals[:n].max() > 0xFFFFFFFF):
+            raise ValueError("glDiscardFramebufferEXT: an attachment does not fit GLenum")
+        buf = self._ffi.new("unsigned int[]", [int(v) for v in vals[:max(n, 0)]] or [0])
+        with self._lock:
+            self._lib.gles_DiscardFramebufferEXT(self._p, _index(target), n, buf)
+
     def glCheckFramebufferStatusOES(self, target: int) -> int:
         """FRAMEBUFFER_COMPLETE_OES or why the bound framebuffer object is
         not (0 on a GL error)."""
