@@ -84,6 +84,9 @@ KNOWN_DEVIATIONS: tuple[Deviation, ...] = (
               "Mesa: TexImage2D takes internalformat RGBA with format BGRA_EXT; EXT_texture_format_BGRA8888 "
               "pairs BGRA_EXT with BGRA_EXT only, and ES 1.1 (3.7.1) wants INVALID_OPERATION "
               "(docs/conformance.md)"),
+    Deviation("TexAniso.state", "mesa-", None, None,
+              "Mesa: GetTexParameterxv of TEXTURE_MAX_ANISOTROPY_EXT records INVALID_ENUM and gives 0; the "
+              "x forms query every texture parameter (docs/conformance.md)"),
     Deviation("covgl", "mesa-", None, None,
               "Mesa: CompressedTexSubImage2D on a paletted texture gives INVALID_VALUE, not "
               "INVALID_OPERATION; §3.7.4 (docs/conformance.md)"),

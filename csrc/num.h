@@ -1139,6 +1139,17 @@ static inline TEXC texc_floor(TEXC s) { return (s >> 32) * TEXC_ONE; }
 static inline int64_t texc_ifloor(TEXC s) { return s >> 32; }
 static inline TEXC texc_abs(TEXC a) { return a < 0 ? -a : a; }
 static inline TEXC texc_clamp(TEXC a, TEXC lim) { return a < -lim ? -lim : (a > lim ? lim : a); }
+/* anisotropic footprints: ceil(a / b) of positives below 2^62, a / n,
+** a * num / den rounded (|a| <= 2^51, |num| <= 2^10) */
+static inline int64_t texc_ceil_ratio(TEXC a, TEXC b) { return (a + b - 1) / b; }
+static inline TEXC texc_div_int(TEXC a, int n) { return a / n; }
+static inline TEXC texc_mul_ratio(TEXC a, int num, int den)
+{
+    const int64_t p = a * num;
+    return p >= 0 ? (p + den / 2) / den : -((-p + den / 2) / den);
+}
+/* n >= 1 summed colours (each in [0, 1]) averaged, rounded */
+static inline FRAGV frag_div_int(FRAGV sum, int n) { return (sum + n / 2) / n; }
 /* n / d for integers (|n| < 2^31, d > 0) */
 static inline TEXC texc_ratio(int64_t n, int64_t d) { return d ? (n * TEXC_ONE) / d : 0; }
 static inline TEXC texc_from_double(double v) { return dbl_to_i64(v * 4294967296.0, -((int64_t)1 << 62), (int64_t)1 << 62); }
@@ -1200,6 +1211,14 @@ static inline TEXC texc_floor(TEXC s) { return NUM_FLOOR(s); }
 static inline int64_t texc_ifloor(TEXC s) { return dbl_to_i64(floor((double)s), -((int64_t)1 << 40), (int64_t)1 << 40); }
 static inline TEXC texc_abs(TEXC a) { return a < 0 ? -a : a; }
 static inline TEXC texc_clamp(TEXC a, TEXC lim) { return a < -lim ? -lim : (a > lim ? lim : a); }
+static inline int64_t texc_ceil_ratio(TEXC a, TEXC b)
+{
+    const double r = ceil((double)a / (double)b);
+    return r > 1e9 ? (int64_t)1e9 : (int64_t)r;
+}
+static inline TEXC texc_div_int(TEXC a, int n) { return a / (NUM)n; }
+static inline TEXC texc_mul_ratio(TEXC a, int num, int den) { return a * (NUM)num / (NUM)den; }
+static inline FRAGV frag_div_int(FRAGV sum, int n) { return sum / (NUM)n; }
 static inline TEXC texc_ratio(int64_t n, int64_t d) { return d ? (NUM)n / (NUM)d : 0; }
 static inline TEXC texc_from_double(double v) { return (NUM)v; }
 static inline TEXC texc_scale(TEXC a, int n) { return a * (NUM)n; }

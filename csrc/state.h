@@ -179,6 +179,7 @@ typedef struct Texture {
     int generate_mipmap;
     int crop[4];
     int level_limit;                    /* TEXTURE_MAX_LEVEL_APPLE (APPLE_texture_max_level) */
+    double max_aniso;                   /* TEXTURE_MAX_ANISOTROPY_EXT (EXT_texture_filter_anisotropic) */
     int paletted;                       /* specified with CompressedTexImage2D */
     /* derived by texture_complete(): */
     int complete;
@@ -517,14 +518,15 @@ struct GlesContext {
 
 /* set the first error only, as the spec says */
 /* whether the draws take the generic span path: the debug switch, or a
-** sampling unit with a level-of-detail bias (EXT_texture_lod_bias: the
-** vector samplers and fused stages compute lambda without one) */
+** sampling unit with a level-of-detail bias (EXT_texture_lod_bias) or an
+** anisotropic texture (EXT_texture_filter_anisotropic): the vector
+** samplers and fused stages compute an isotropic, unbiased lambda */
 static inline int ctx_generic_spans(const GlesContext *ctx)
 {
     if (ctx->debug & GLES_DEBUG_GENERIC_SPANS)
         return 1;
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
-        if (ctx->units[u].enabled && ctx->units[u].lod_bias != 0.0)
+        if (ctx->units[u].enabled && (ctx->units[u].lod_bias != 0.0 || ctx->units[u].bound->max_aniso > 1.0))
             return 1;
     return 0;
 }

@@ -137,10 +137,11 @@ static inline unsigned int lod_min_filter(unsigned int minf)
                                                                                                         : GL_LINEAR;
 }
 
+SAMPLE_INLINE LodChoice lod_select(const Texture *t, LODV lambda);
+
 SAMPLE_INLINE LodChoice lod_choose(const Texture *t, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
                                    LODV bias)
 {
-    LodChoice ch = { 0, 0, t->mag_filter, 0 };
     /* rho in texel units of level 0: the largest of the four derivatives;
     ** coordinates are first limited to +-2^18 so that differences scaled
     ** by the size stay in range even where q -> 0 saturated them */
@@ -154,7 +155,13 @@ SAMPLE_INLINE LodChoice lod_choose(const Texture *t, const TexCoord *c, const Te
     if (d3 > rho) rho = d3;
     if (d4 > rho) rho = d4;
     /* EXT_texture_lod_bias: the unit's bias, before every clamp */
-    LODV lambda = lod_log2(rho) + bias;
+    return lod_select(t, lod_log2(rho) + bias);
+}
+
+/* §3.7.7-3.7.8's choice for one lambda */
+SAMPLE_INLINE LodChoice lod_select(const Texture *t, LODV lambda)
+{
+    LodChoice ch = { 0, 0, t->mag_filter, 0 };
     unsigned int minf = t->min_filter;
     if (lambda <= lod_cshift(t))
         return ch;
@@ -192,6 +199,63 @@ static inline void lod_mix(FRAGV f, const FRAGV t1[4], const FRAGV t2[4], FRAGV 
         out[k] = t1[k] + frag_mul(f, t2[k] - t1[k]);
 }
 
+/* one sample at (s, t) by a level-of-detail choice */
+SAMPLE_INLINE void sample_at(const Texture *t, LodChoice ch, TEXC s, TEXC tc, FRAGV out[4], const FRAGV *unorm,
+                             unsigned int ws, unsigned int wt, int simd)
+{
+    if (!ch.two) {
+        sample_level(t, ch.level, ch.filter, s, tc, out, unorm, ws, wt, simd);
+        return;
+    }
+    FRAGV t1[4], t2[4];
+    sample_level(t, ch.level, ch.filter, s, tc, t1, unorm, ws, wt, simd);
+    sample_level(t, ch.level + 1, ch.filter, s, tc, t2, unorm, ws, wt, simd);
+    lod_mix(ch.frac, t1, t2, out);
+}
+
+/* EXT_texture_filter_anisotropic, the extension's own scheme: Fx and Fy
+** the larger of |du|, |dv| along x and along y (its allowed
+** approximation of Px, Py), N = min(ceil(Fmax / Fmin), maxAniso) samples
+** at lambda = log2(Fmax / N) spread evenly along the major axis (at
+** i / (N + 1) - 1/2 of its step, i = 1..N), averaged */
+static void sample_aniso(const Texture *t, const TexCoord *c, const TexCoord *dx, const TexCoord *dy, FRAGV out[4],
+                         const FRAGV *unorm, unsigned int ws, unsigned int wt, int simd, LODV bias)
+{
+    const int w = t->level[0].width, h = t->level[0].height;
+    const TEXC lim = texc_scale(TEXC_ONE, 1 << 18);
+    const TEXC cs = texc_clamp(c->s, lim), ct = texc_clamp(c->t, lim);
+    const TEXC xs = texc_clamp(dx->s, lim) - cs, xt = texc_clamp(dx->t, lim) - ct;
+    const TEXC ys = texc_clamp(dy->s, lim) - cs, yt = texc_clamp(dy->t, lim) - ct;
+    TEXC fx = texc_abs(texc_scale(xs, w)), fy = texc_abs(texc_scale(ys, w));
+    const TEXC fxt = texc_abs(texc_scale(xt, h)), fyt = texc_abs(texc_scale(yt, h));
+    if (fxt > fx) fx = fxt;
+    if (fyt > fy) fy = fyt;
+    const int major_x = fx > fy;
+    const TEXC fmax = major_x ? fx : fy, fmin = major_x ? fy : fx;
+    const int top = (int)(t->max_aniso < TEXTURE_MAX_ANISOTROPY ? t->max_aniso : TEXTURE_MAX_ANISOTROPY);
+    int n = top;
+    if (fmin > 0) {
+        const int64_t ratio = texc_ceil_ratio(fmax, fmin);
+        n = ratio < top ? (int)ratio : top;
+    }
+    if (n < 1)
+        n = 1;
+    const LodChoice ch = lod_select(t, lod_log2(texc_div_int(fmax, n)) + bias);
+    const TEXC ds = major_x ? xs : ys, dt = major_x ? xt : yt;
+    FRAGV sum[4] = { 0, 0, 0, 0 };
+    for (int i = 1; i <= n; i++) {
+        /* the step's (2i - n - 1) / (2 (n + 1)) */
+        const TEXC ss = cs + texc_mul_ratio(ds, 2 * i - n - 1, 2 * (n + 1));
+        const TEXC tt = ct + texc_mul_ratio(dt, 2 * i - n - 1, 2 * (n + 1));
+        FRAGV one[4];
+        sample_at(t, ch, ss, tt, one, unorm, ws, wt, simd);
+        for (int k = 0; k < 4; k++)
+            sum[k] += one[k];
+    }
+    for (int k = 0; k < 4; k++)
+        out[k] = frag_div_int(sum[k], n);
+}
+
 SAMPLE_INLINE void sample_w(const Texture *t, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
                             FRAGV out[4], const FRAGV *unorm, unsigned int ws, unsigned int wt, int simd, LODV bias)
 {
@@ -199,15 +263,11 @@ SAMPLE_INLINE void sample_w(const Texture *t, const TexCoord *c, const TexCoord 
         sample_level(t, 0, t->mag_filter, c->s, c->t, out, unorm, ws, wt, simd);
         return;
     }
-    const LodChoice ch = lod_choose(t, c, dx, dy, bias);
-    if (!ch.two) {
-        sample_level(t, ch.level, ch.filter, c->s, c->t, out, unorm, ws, wt, simd);
+    if (t->max_aniso > 1.0) {
+        sample_aniso(t, c, dx, dy, out, unorm, ws, wt, simd, bias);
         return;
     }
-    FRAGV t1[4], t2[4];
-    sample_level(t, ch.level, ch.filter, c->s, c->t, t1, unorm, ws, wt, simd);
-    sample_level(t, ch.level + 1, ch.filter, c->s, c->t, t2, unorm, ws, wt, simd);
-    lod_mix(ch.frac, t1, t2, out);
+    sample_at(t, lod_choose(t, c, dx, dy, bias), c->s, c->t, out, unorm, ws, wt, simd);
 }
 
 void texture_sample(const Texture *t, double lod_bias, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,

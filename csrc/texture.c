@@ -39,6 +39,7 @@ static void texture_defaults(Texture *t, unsigned int name)
     t->mag_filter = GL_LINEAR;
     t->wrap_s = t->wrap_t = GL_REPEAT;
     t->level_limit = 1000;
+    t->max_aniso = 1.0;
 }
 
 /* bytes a level's texels hold (the memory budget counts them) */
@@ -938,6 +939,16 @@ void gles_TexParameter(GlesContext *ctx, unsigned int target, unsigned int pname
     case GL_GENERATE_MIPMAP:
         t->generate_mipmap = p[0] != 0.0;
         break;
+    case GL_TEXTURE_MAX_ANISOTROPY_EXT:
+        /* EXT_texture_filter_anisotropic: any real >= 1 (kept as given,
+        ** MAX_TEXTURE_MAX_ANISOTROPY_EXT bounds what is used) */
+        if (!(p[0] >= 1.0)) {
+            ctx_error(ctx, GL_INVALID_VALUE);
+            return;
+        }
+        t->max_aniso = p[0];
+        ctx->dirty |= DIRTY_SPAN;
+        break;
     case GL_TEXTURE_MAX_LEVEL_APPLE: {
         /* an integer state: a real value rounds (§2.3.1) */
         const int64_t level = dbl_to_i64(p[0], INT32_MIN, INT32_MAX);
@@ -978,6 +989,7 @@ int gles_GetTexParameter(GlesContext *ctx, unsigned int target, unsigned int pna
     case GL_TEXTURE_WRAP_T: out[0] = t->wrap_t; return 1;
     case GL_GENERATE_MIPMAP: out[0] = t->generate_mipmap; return 1;
     case GL_TEXTURE_MAX_LEVEL_APPLE: out[0] = t->level_limit; return 1;
+    case GL_TEXTURE_MAX_ANISOTROPY_EXT: out[0] = t->max_aniso; return 1;
     case GL_TEXTURE_CROP_RECT_OES:
         for (int i = 0; i < 4; i++)
             out[i] = t->crop[i];
@@ -1153,6 +1165,7 @@ int texture_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)
     switch (pname) {
     case GL_MAX_TEXTURE_SIZE: out[0] = GLES_MAX_TEXTURE_SIZE; return 1;
     case GL_MAX_TEXTURE_LOD_BIAS_EXT: *kind = GLES_KIND_FLOAT; out[0] = TEXTURE_MAX_LOD_BIAS; return 1;
+    case GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT: *kind = GLES_KIND_FLOAT; out[0] = TEXTURE_MAX_ANISOTROPY; return 1;
     case GL_TEXTURE_BINDING_2D: out[0] = active_unit(ctx)->bound->name; return 1;
     case GL_NUM_COMPRESSED_TEXTURE_FORMATS: out[0] = 11; return 1;
     case GL_COMPRESSED_TEXTURE_FORMATS:
@@ -1168,5 +1181,6 @@ int texture_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)
 /* does sampling this texture need the neighbours' coordinates */
 int texture_needs_lod(const Texture *tex)
 {
-    return needs_mipmaps(tex->min_filter) || tex->min_filter != tex->mag_filter;
+    /* (an anisotropic footprint needs the derivatives whatever the filters) */
+    return needs_mipmaps(tex->min_filter) || tex->min_filter != tex->mag_filter || tex->max_aniso > 1.0;
 }

@@ -27,6 +27,8 @@ void texture_sample(const Texture *tex, double lod_bias, const TexCoord *c, cons
                     FRAGV out[4], const FRAGV *unorm);
 /* EXT_texture_lod_bias: MAX_TEXTURE_LOD_BIAS_EXT, the largest |bias| used */
 #define TEXTURE_MAX_LOD_BIAS 16.0
+/* EXT_texture_filter_anisotropic: MAX_TEXTURE_MAX_ANISOTROPY_EXT */
+#define TEXTURE_MAX_ANISOTROPY 16.0
 /* texture_sample for n fragments, with the texture's filter and wrap
 ** modes fixed: fragment j's coordinates c[j] (and dx[j], dy[j] when the
 ** filter needs a level of detail), its texel at out + j * stride */

@@ -151,6 +151,8 @@ def test_every_checked_command_reports(name: str) -> None:
         "glFogfv": (C.GL_FOG_COLOR, [4e4, 0, 0, 1]),
         "glTexEnvf": (C.GL_TEXTURE_ENV, C.GL_RGB_SCALE, 4e4),
         "glTexEnvfv": (C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_COLOR, [4e4, 0, 0, 1]),
+        "glTexParameterf": (C.GL_TEXTURE_2D, C.GL_TEXTURE_MAX_ANISOTROPY_EXT, 4e4),
+        "glTexParameterfv": (C.GL_TEXTURE_2D, C.GL_TEXTURE_MAX_ANISOTROPY_EXT, [4e4]),
         "glPointParameterf": (C.GL_POINT_SIZE_MAX, 4e4),
         "glPointParameterfv": (C.GL_POINT_DISTANCE_ATTENUATION, [4e4, 0, 0]),
     }

@@ -483,6 +483,34 @@ def mip_select_bias(t: TestContext) -> None:
     t.check_gl_error("MipSelect.bias")
 
 
+@conformance_test("TexAniso.state", section="EXT_texture_filter_anisotropic")
+def tex_aniso_state(t: TestContext) -> None:
+    """EXT_texture_filter_anisotropic's state: MAX_TEXTURE_MAX_ANISOTROPY_EXT at least 2, a
+    texture's TEXTURE_MAX_ANISOTROPY_EXT initially 1 and settable to any value >= 1, a value
+    below 1 INVALID_VALUE with the value kept. (The filtering scheme itself is the
+    implementation's choice.)"""
+    gl = t.gl
+    ext = gl.glGetString(gl.GL_EXTENSIONS) or b""
+    if "GL_EXT_texture_filter_anisotropic" not in (ext.decode() if isinstance(ext, bytes) else ext).split():
+        raise Unsupported("GL_EXT_texture_filter_anisotropic is not in GL_EXTENSIONS")
+    top = float(np.atleast_1d(gl.glGetFixedv(gl.GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT))[0]) / ONE
+    if top < 2.0:
+        t.fail(f"MAX_TEXTURE_MAX_ANISOTROPY_EXT is {top}, below 2")
+    gl.glBindTexture(gl.GL_TEXTURE_2D, 7)
+    get = lambda: float(np.atleast_1d(gl.glGetTexParameterxv(  # noqa: E731
+        gl.GL_TEXTURE_2D, gl.GL_TEXTURE_MAX_ANISOTROPY_EXT))[0]) / ONE
+    if get() != 1.0:
+        t.fail(f"TEXTURE_MAX_ANISOTROPY_EXT starts at {get()}, not 1")
+    gl.glTexParameterx(gl.GL_TEXTURE_2D, gl.GL_TEXTURE_MAX_ANISOTROPY_EXT, 2 * ONE)
+    t.check_gl_error("TEXTURE_MAX_ANISOTROPY_EXT 2")
+    gl.glTexParameterx(gl.GL_TEXTURE_2D, gl.GL_TEXTURE_MAX_ANISOTROPY_EXT, ONE // 2)
+    t.check_gl_error("TEXTURE_MAX_ANISOTROPY_EXT 0.5", gl.GL_INVALID_VALUE)
+    if get() != 2.0:
+        t.fail(f"TEXTURE_MAX_ANISOTROPY_EXT reads {get()} after 2 and a refused 0.5")
+    gl.glDeleteTextures(1, [7])
+    t.check_gl_error("TexAniso.state")
+
+
 @conformance_test("MipSelect.magswitch", section="3.7.8", visuals=VISUALS, size=(64, 16))
 def mip_select_switch(t: TestContext) -> None:
     """The switch-over point c (§3.7.8): with MAG LINEAR and NEAREST_MIPMAP_LINEAR,

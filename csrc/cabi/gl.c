@@ -524,7 +524,7 @@ static int tex_env_count(GLenum pname) { return pname == GL_TEXTURE_ENV_COLOR ? 
 static int tex_real(GLenum pname)
 {
     return pname == GL_TEXTURE_ENV_COLOR || pname == GL_RGB_SCALE || pname == GL_ALPHA_SCALE
-        || pname == GL_TEXTURE_LOD_BIAS_EXT;
+        || pname == GL_TEXTURE_LOD_BIAS_EXT || pname == GL_TEXTURE_MAX_ANISOTROPY_EXT;
 }
 
 static void tex_values_x(GLenum pname, const GLfixed *p, int n, double out[4])

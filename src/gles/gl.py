@@ -98,7 +98,8 @@ _PIXEL_DTYPES = {
 
 # texture parameters whose values are reals (x forms scale them by 2^16,
 # i forms map them like colours); every other one is an enum or an integer
-_TEX_REAL = {C.GL_TEXTURE_ENV_COLOR, C.GL_RGB_SCALE, C.GL_ALPHA_SCALE, C.GL_TEXTURE_LOD_BIAS_EXT}
+_TEX_REAL = {C.GL_TEXTURE_ENV_COLOR, C.GL_RGB_SCALE, C.GL_ALPHA_SCALE, C.GL_TEXTURE_LOD_BIAS_EXT,
+             C.GL_TEXTURE_MAX_ANISOTROPY_EXT}
 _TEX_COUNT = {C.GL_TEXTURE_ENV_COLOR: 4, C.GL_TEXTURE_CROP_RECT_OES: 4}
 
 # how many values each lighting pname takes (others take one)

@@ -273,6 +273,14 @@ def _by_pname(table: dict[int, int], pname_at: int, default: int = 1,
     return count
 
 
+def _tex_parameter_count(args: tuple) -> int:
+    try:
+        pname = int(args[1])
+    except (TypeError, ValueError, OverflowError, IndexError):
+        return 0
+    return 1 if pname == C.GL_TEXTURE_MAX_ANISOTROPY_EXT else 0   # the rest are enums and integers
+
+
 def _tex_env_count(args: tuple) -> int:
     try:
         pname = int(args[1])
@@ -306,11 +314,13 @@ _VECTOR_REALS: dict[str, tuple[int, Callable[[tuple], int]]] = {
     "glMaterialf": (2, _all_of(1)), "glMaterialfv": (2, _by_pname(_PARAM_COUNT, 1)),
     "glFogf": (1, _by_pname({}, 0, 1, _FOG_ENUM)), "glFogfv": (1, _by_pname(_PARAM_COUNT, 0, 1, _FOG_ENUM)),
     "glTexEnvf": (2, _tex_env_count), "glTexEnvfv": (2, _tex_env_count),
+    "glTexParameterf": (2, _tex_parameter_count), "glTexParameterfv": (2, _tex_parameter_count),
     "glPointParameterf": (1, _all_of(1)), "glPointParameterfv": (1, _by_pname(_PARAM_COUNT, 0)),
 }
 
-# glTexParameterf/fv carry only enums, integers and booleans in ES 1.1: nothing to check
-UNCHECKED_FLOAT_COMMANDS = ("glTexParameterf", "glTexParameterfv")
+# every float command is checked (glTexParameterf/fv for its one real,
+# EXT_texture_filter_anisotropic's TEXTURE_MAX_ANISOTROPY_EXT)
+UNCHECKED_FLOAT_COMMANDS: tuple[str, ...] = ()
 CHECKED_COMMANDS = sorted(set(_SCALAR_REALS) | set(_VECTOR_REALS))
 
 
