@@ -191,6 +191,16 @@ class TestContext:
     def fail(self, msg: str) -> None:
         raise Failure(msg)
 
+    def has_extension(self, name: str) -> bool:
+        """Whether GL_EXTENSIONS names `name` (a whole word of the list)."""
+        ext = self.gl.glGetString(self.gl.GL_EXTENSIONS) or b""
+        return name in (ext.decode() if isinstance(ext, bytes) else ext).split()
+
+    def need_extension(self, name: str) -> None:
+        """Raise Unsupported (the test is skipped) unless GL_EXTENSIONS names `name`."""
+        if not self.has_extension(name):
+            raise Unsupported(f"{name} is not in GL_EXTENSIONS")
+
     def check_gl_error(self, where: str, expected: int = 0) -> None:
         err = self.gl.glGetError()
         if err != expected:

@@ -17,6 +17,7 @@
 #include "state.h"
 #include "array.h"
 #include "fbo.h"
+#include "texture.h"
 
 /* {====================================================================
 ** the buffers */
@@ -117,7 +118,7 @@ static unsigned int fbo_status(const Framebuffer *fb, DrawBuffers *d)
         ** paletted nor ETC1 (their levels are decoded copies) */
         const TexImage *li = attached_image(c);
         const unsigned int lf = li ? c->tex->level_format[c->level] : 0;
-        const unsigned int base = lf == GL_BGRA_EXT ? GL_RGBA : lf;
+        const unsigned int base = texture_base_format(lf);
         if (!li || c->tex->paletted || lf == GL_ETC1_RGB8_OES || (base != GL_RGB && base != GL_RGBA))
             return GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT_OES;
         FBO_SIZE(li->width, li->height);

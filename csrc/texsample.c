@@ -139,21 +139,43 @@ static inline unsigned int lod_min_filter(unsigned int minf)
 
 SAMPLE_INLINE LodChoice lod_select(const Texture *t, LODV lambda);
 
+/* a fragment's footprint: (xs, xt) and (ys, yt) the coordinate steps to
+** its x and y neighbours, and their magnitudes in texel units of level 0;
+** coordinates are first limited to +-2^18 so that differences scaled by
+** the size stay in range even where q -> 0 saturated them */
+typedef struct Footprint {
+    TEXC cs, ct, xs, xt, ys, yt;
+    TEXC xs_texels, ys_texels, xt_texels, yt_texels;
+} Footprint;
+
+SAMPLE_INLINE Footprint footprint(const Texture *t, const TexCoord *c, const TexCoord *dx, const TexCoord *dy)
+{
+    const int w = t->level[0].width, h = t->level[0].height;
+    const TEXC lim = texc_scale(TEXC_ONE, 1 << 18);
+    Footprint f;
+    f.cs = texc_clamp(c->s, lim);
+    f.ct = texc_clamp(c->t, lim);
+    f.xs = texc_clamp(dx->s, lim) - f.cs;
+    f.xt = texc_clamp(dx->t, lim) - f.ct;
+    f.ys = texc_clamp(dy->s, lim) - f.cs;
+    f.yt = texc_clamp(dy->t, lim) - f.ct;
+    f.xs_texels = texc_abs(texc_scale(f.xs, w));
+    f.ys_texels = texc_abs(texc_scale(f.ys, w));
+    f.xt_texels = texc_abs(texc_scale(f.xt, h));
+    f.yt_texels = texc_abs(texc_scale(f.yt, h));
+    return f;
+}
+
 SAMPLE_INLINE LodChoice lod_choose(const Texture *t, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
                                    LODV bias)
 {
-    /* rho in texel units of level 0: the largest of the four derivatives;
-    ** coordinates are first limited to +-2^18 so that differences scaled
-    ** by the size stay in range even where q -> 0 saturated them */
-    int w = t->level[0].width, h = t->level[0].height;
-    const TEXC lim = texc_scale(TEXC_ONE, 1 << 18);
-    const TEXC cs = texc_clamp(c->s, lim), ct = texc_clamp(c->t, lim);
-    TEXC d1 = texc_abs(texc_scale(texc_clamp(dx->s, lim) - cs, w)), d2 = texc_abs(texc_scale(texc_clamp(dy->s, lim) - cs, w));
-    TEXC d3 = texc_abs(texc_scale(texc_clamp(dx->t, lim) - ct, h)), d4 = texc_abs(texc_scale(texc_clamp(dy->t, lim) - ct, h));
-    TEXC rho = d1;
-    if (d2 > rho) rho = d2;
-    if (d3 > rho) rho = d3;
-    if (d4 > rho) rho = d4;
+    /* rho: the largest of the four magnitudes, in this order (lod_choose4_f
+    ** forms it in the same order, so a NaN takes the same branches) */
+    const Footprint f = footprint(t, c, dx, dy);
+    TEXC rho = f.xs_texels;
+    if (f.ys_texels > rho) rho = f.ys_texels;
+    if (f.xt_texels > rho) rho = f.xt_texels;
+    if (f.yt_texels > rho) rho = f.yt_texels;
     /* EXT_texture_lod_bias: the unit's bias, before every clamp */
     return lod_select(t, lod_log2(rho) + bias);
 }
@@ -221,15 +243,10 @@ SAMPLE_INLINE void sample_at(const Texture *t, LodChoice ch, TEXC s, TEXC tc, FR
 static void sample_aniso(const Texture *t, const TexCoord *c, const TexCoord *dx, const TexCoord *dy, FRAGV out[4],
                          const FRAGV *unorm, unsigned int ws, unsigned int wt, int simd, LODV bias)
 {
-    const int w = t->level[0].width, h = t->level[0].height;
-    const TEXC lim = texc_scale(TEXC_ONE, 1 << 18);
-    const TEXC cs = texc_clamp(c->s, lim), ct = texc_clamp(c->t, lim);
-    const TEXC xs = texc_clamp(dx->s, lim) - cs, xt = texc_clamp(dx->t, lim) - ct;
-    const TEXC ys = texc_clamp(dy->s, lim) - cs, yt = texc_clamp(dy->t, lim) - ct;
-    TEXC fx = texc_abs(texc_scale(xs, w)), fy = texc_abs(texc_scale(ys, w));
-    const TEXC fxt = texc_abs(texc_scale(xt, h)), fyt = texc_abs(texc_scale(yt, h));
-    if (fxt > fx) fx = fxt;
-    if (fyt > fy) fy = fyt;
+    const Footprint f = footprint(t, c, dx, dy);
+    TEXC fx = f.xs_texels, fy = f.ys_texels;
+    if (f.xt_texels > fx) fx = f.xt_texels;
+    if (f.yt_texels > fy) fy = f.yt_texels;
     const int major_x = fx > fy;
     const TEXC fmax = major_x ? fx : fy, fmin = major_x ? fy : fx;
     const int top = (int)(t->max_aniso < TEXTURE_MAX_ANISOTROPY ? t->max_aniso : TEXTURE_MAX_ANISOTROPY);
@@ -241,12 +258,12 @@ static void sample_aniso(const Texture *t, const TexCoord *c, const TexCoord *dx
     if (n < 1)
         n = 1;
     const LodChoice ch = lod_select(t, lod_log2(texc_div_int(fmax, n)) + bias);
-    const TEXC ds = major_x ? xs : ys, dt = major_x ? xt : yt;
+    const TEXC ds = major_x ? f.xs : f.ys, dt = major_x ? f.xt : f.yt;
     FRAGV sum[4] = { 0, 0, 0, 0 };
     for (int i = 1; i <= n; i++) {
         /* the step's (2i - n - 1) / (2 (n + 1)) */
-        const TEXC ss = cs + texc_mul_ratio(ds, 2 * i - n - 1, 2 * (n + 1));
-        const TEXC tt = ct + texc_mul_ratio(dt, 2 * i - n - 1, 2 * (n + 1));
+        const TEXC ss = f.cs + texc_mul_ratio(ds, 2 * i - n - 1, 2 * (n + 1));
+        const TEXC tt = f.ct + texc_mul_ratio(dt, 2 * i - n - 1, 2 * (n + 1));
         FRAGV one[4];
         sample_at(t, ch, ss, tt, one, unorm, ws, wt, simd);
         for (int k = 0; k < 4; k++)

@@ -25,8 +25,7 @@ static int is_base_format(unsigned int f)
 ** its bytes in the other order */
 static int is_upload_format(unsigned int f) { return is_base_format(f) || f == GL_BGRA_EXT; }
 
-/* the base format (Table 3.15's row) of a level's internal format */
-static unsigned int base_format(unsigned int f)
+unsigned int texture_base_format(unsigned int f)
 {
     return f == GL_BGRA_EXT ? GL_RGBA : (f == GL_ETC1_RGB8_OES ? GL_RGB : f);
 }
@@ -425,7 +424,7 @@ int gles_TexImage2D(GlesContext *ctx, unsigned int target, int level, int intern
     }
     t->level_format[level] = format;
     if (level == 0) {
-        t->format = base_format(format);
+        t->format = texture_base_format(format);
         t->paletted = 0;
     }
     if (pixels) {
@@ -609,7 +608,7 @@ void gles_CopyTexSubImage2D(GlesContext *ctx, unsigned int target, int level, in
     }
     /* ETC1 levels take no sub-images (OES_compressed_ETC1_RGB8_texture) */
     if (t->paletted || t->level_format[level] == GL_ETC1_RGB8_OES
-        || !copy_compatible(ctx, base_format(t->level_format[level]))) {
+        || !copy_compatible(ctx, texture_base_format(t->level_format[level]))) {
         ctx_error(ctx, GL_INVALID_OPERATION);
         return;
     }
@@ -628,7 +627,7 @@ void gles_CopyTexSubImage2D(GlesContext *ctx, unsigned int target, int level, in
     }
     for (int j = 0; j < height && width; j++) {
         uint32_t *dst = li->texels + (size_t)(yoffset + j) * (size_t)li->width + (size_t)xoffset;
-        copy_framebuffer_row(ctx, x, (int64_t)y + j, width, base_format(t->level_format[level]),
+        copy_framebuffer_row(ctx, x, (int64_t)y + j, width, texture_base_format(t->level_format[level]),
                              from ? from + (size_t)j * (size_t)width : dst);
     }
     for (int j = 0; from && j < height; j++)

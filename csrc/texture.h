@@ -13,6 +13,8 @@ int texture_get(GlesContext *ctx, unsigned int pname, double *out, int *kind);
 const Texture *texture_active(const GlesContext *ctx, int unit);
 /* derived per-draw texture state: enabled units and their samplers */
 void texture_validate(GlesContext *ctx);
+/* the base format (Table 3.15's row) of a level's internal format */
+unsigned int texture_base_format(unsigned int internal_format);
 
 /* texture coordinates of a pixel: s, t after the division by q */
 struct TexCoord {

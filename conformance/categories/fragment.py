@@ -26,7 +26,7 @@ from typing import Any
 
 import numpy as np
 
-from ..harness import TestContext, Unsupported, conformance_test
+from ..harness import TestContext, conformance_test
 
 ONE = 1 << 16
 RGBA_VISUALS = ("rgba8888", "rgb565")
@@ -132,16 +132,6 @@ def _expect_state(t: TestContext, what: str, got: Any, want: Any, section: str) 
     got_l, want_l = np.atleast_1d(np.asarray(got)).tolist(), np.atleast_1d(np.asarray(want)).tolist()
     if got_l != want_l:
         t.fail(f"{what} is {got_l}, expected {want_l} (§{section})")
-
-
-def _has_extension(t: TestContext, name: str) -> bool:
-    ext = (t.gl.glGetString(t.gl.GL_EXTENSIONS) or b"").decode()
-    return name in (ext.decode() if isinstance(ext, bytes) else ext).split()
-
-
-def _need_extension(t: TestContext, name: str) -> None:
-    if not _has_extension(t, name):
-        raise Unsupported(f"{name} is not in GL_EXTENSIONS")
 
 
 def _stencil_values(t: TestContext, candidates: Sequence[int]) -> np.ndarray:
@@ -342,7 +332,7 @@ def blend(t: TestContext) -> None:
 @conformance_test("Blend.subtract", section="4.1.7", uses=("blend",), visuals=RGBA_VISUALS)
 def blend_subtract(t: TestContext) -> None:
     """OES_blend_subtract: FUNC_SUBTRACT and FUNC_REVERSE_SUBTRACT (clamped at 0) with several factors."""
-    _need_extension(t, "GL_OES_blend_subtract")
+    t.need_extension("GL_OES_blend_subtract")
     gl = t.gl
     t.ortho_pixels()
     rng = np.random.default_rng(42)
@@ -371,13 +361,13 @@ def blend_subtract(t: TestContext) -> None:
 def blend_separate(t: TestContext) -> None:
     """OES_blend_func_separate and OES_blend_equation_separate: RGB and alpha blend with their
     own factors and equations."""
-    _need_extension(t, "GL_OES_blend_func_separate")
-    _need_extension(t, "GL_OES_blend_equation_separate")
+    t.need_extension("GL_OES_blend_func_separate")
+    t.need_extension("GL_OES_blend_equation_separate")
     gl = t.gl
     t.ortho_pixels()
     rng = np.random.default_rng(43)
     eqs = ("GL_FUNC_ADD_OES", "GL_FUNC_SUBTRACT_OES", "GL_FUNC_REVERSE_SUBTRACT_OES")
-    if not _has_extension(t, "GL_OES_blend_subtract"):
+    if not t.has_extension("GL_OES_blend_subtract"):
         eqs = eqs[:1]
     for _ in range(24):
         funcs = (str(rng.choice(SRC_FACTORS)), str(rng.choice(DST_FACTORS)), str(rng.choice(SRC_FACTORS)),
@@ -396,12 +386,12 @@ def blend_separate(t: TestContext) -> None:
 def blend_minmax(t: TestContext) -> None:
     """EXT_blend_minmax: MIN_EXT and MAX_EXT take the smaller and larger of source and destination
     whatever the factors, alone and beside the other equations for RGB or alpha."""
-    _need_extension(t, "GL_EXT_blend_minmax")
+    t.need_extension("GL_EXT_blend_minmax")
     gl = t.gl
     t.ortho_pixels()
     rng = np.random.default_rng(44)
     others = ["GL_FUNC_ADD_OES"]
-    if _has_extension(t, "GL_OES_blend_subtract"):
+    if t.has_extension("GL_OES_blend_subtract"):
         others += ["GL_FUNC_SUBTRACT_OES", "GL_FUNC_REVERSE_SUBTRACT_OES"]
     cases = [("GL_MIN_EXT", "GL_MIN_EXT"), ("GL_MAX_EXT", "GL_MAX_EXT"), ("GL_MIN_EXT", "GL_MAX_EXT"),
              ("GL_MAX_EXT", "GL_MIN_EXT")]
@@ -692,7 +682,7 @@ def sp_op(t: TestContext) -> None:
     t.ortho_pixels()
     w, h = t.width, t.height
     ops = ["GL_KEEP", "GL_ZERO", "GL_REPLACE", "GL_INCR", "GL_DECR", "GL_INVERT"]
-    if _has_extension(t, "GL_OES_stencil_wrap"):
+    if t.has_extension("GL_OES_stencil_wrap"):
         ops += ["GL_INCR_WRAP_OES", "GL_DECR_WRAP_OES"]
     ref = 0x42
     near = _region(t, 0, h // 2, w, h)

@@ -29,12 +29,6 @@ ONE = 1 << 16
 WHITE = (255, 255, 255, 255)
 
 
-def _need_extension(t: TestContext, name: str) -> None:
-    ext = (t.gl.glGetString(t.gl.GL_EXTENSIONS) or b"").decode()
-    if name not in (ext.decode() if isinstance(ext, bytes) else ext).split():
-        raise Unsupported(f"{name} is not in GL_EXTENSIONS")
-
-
 def _size_range(t: TestContext, pname: str) -> float:
     gl = t.gl
     r = gl.glGetFixedv(getattr(gl, pname))
@@ -138,7 +132,7 @@ def point_antialias(t: TestContext) -> None:
 def point_size_array(t: TestContext) -> None:
     """Per-vertex sizes from a FIXED size array give each point its footprint (OES_point_size_array)."""
     gl = t.gl
-    _need_extension(t, "GL_OES_point_size_array")
+    t.need_extension("GL_OES_point_size_array")
     t.ortho_pixels()
     top = _size_range(t, "GL_ALIASED_POINT_SIZE_RANGE")
     pts = [(16.5, 16.5), (48.25, 16.75), (96.5, 20.5), (20.5, 70.5), (70.5, 80.5), (100.0, 100.0)]
@@ -169,7 +163,7 @@ TEX = 64
 def point_sprite(t: TestContext) -> None:
     """Sprites cover the size x size square; COORD_REPLACE gives s, t by position (OES_point_sprite)."""
     gl = t.gl
-    _need_extension(t, "GL_OES_point_sprite")
+    t.need_extension("GL_OES_point_sprite")
     t.ortho_pixels()
     i, j = np.meshgrid(np.arange(TEX), np.arange(TEX))
     img = np.stack([i * 4, j * 4, np.zeros_like(i), np.full_like(i, 255)], axis=-1).astype(np.uint8)
@@ -371,7 +365,7 @@ def line_antialias(t: TestContext) -> None:
 def draw_tex(t: TestContext) -> None:
     """DrawTex maps the crop rectangle onto the window: 1:1, stretched, flipped (OES_draw_texture)."""
     gl = t.gl
-    _need_extension(t, "GL_OES_draw_texture")
+    t.need_extension("GL_OES_draw_texture")
     n = 8
     i, j = np.meshgrid(np.arange(n), np.arange(n))
     tex = np.stack([i * 32, j * 32, 255 - 16 * (i + j), np.full_like(i, 255)], axis=-1).astype(np.uint8)

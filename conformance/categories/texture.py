@@ -28,7 +28,7 @@ from typing import Any
 
 import numpy as np
 
-from ..harness import TestContext, Unsupported, conformance_test
+from ..harness import TestContext, conformance_test
 
 ONE = 1 << 16
 VISUALS = ("rgba8888", "rgb565")
@@ -458,9 +458,7 @@ def mip_select_bias(t: TestContext) -> None:
     MAX_TEXTURE_LOD_BIAS_EXT: quads at lambda 1.3 and 2.7 under biases from -3 to +3
     (and beyond the maximum) select ceil(lambda' + 1/2) - 1 with NEAREST_MIPMAP_NEAREST."""
     gl = t.gl
-    ext = gl.glGetString(gl.GL_EXTENSIONS) or b""
-    if "GL_EXT_texture_lod_bias" not in (ext.decode() if isinstance(ext, bytes) else ext).split():
-        raise Unsupported("GL_EXT_texture_lod_bias is not in GL_EXTENSIONS")
+    t.need_extension("GL_EXT_texture_lod_bias")
     top = float(np.atleast_1d(gl.glGetFixedv(gl.GL_MAX_TEXTURE_LOD_BIAS_EXT))[0]) / ONE
     levels = _colour_levels()
     _prepare(t)
@@ -490,9 +488,7 @@ def tex_aniso_state(t: TestContext) -> None:
     below 1 INVALID_VALUE with the value kept. (The filtering scheme itself is the
     implementation's choice.)"""
     gl = t.gl
-    ext = gl.glGetString(gl.GL_EXTENSIONS) or b""
-    if "GL_EXT_texture_filter_anisotropic" not in (ext.decode() if isinstance(ext, bytes) else ext).split():
-        raise Unsupported("GL_EXT_texture_filter_anisotropic is not in GL_EXTENSIONS")
+    t.need_extension("GL_EXT_texture_filter_anisotropic")
     top = float(np.atleast_1d(gl.glGetFixedv(gl.GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT))[0]) / ONE
     if top < 2.0:
         t.fail(f"MAX_TEXTURE_MAX_ANISOTROPY_EXT is {top}, below 2")
@@ -840,9 +836,7 @@ def tex_etc1_errors(t: TestContext) -> None:
     t.check_gl_error("CompressedTexImage2D with imageSize one short", gl.GL_INVALID_VALUE)
     gl.glCompressedTexImage2D(gl.GL_TEXTURE_2D, 0, gl.GL_ETC1_RGB8_OES, 4, 4, 0, 8, data)
     t.check_gl_error("CompressedTexImage2D")
-    ext = gl.glGetString(gl.GL_EXTENSIONS) or b""
-    names = (ext.decode() if isinstance(ext, bytes) else ext).split()
-    if "GL_EXT_compressed_ETC1_RGB8_sub_texture" not in names:
+    if not t.has_extension("GL_EXT_compressed_ETC1_RGB8_sub_texture"):
         # (that extension allows whole-block sub-images)
         gl.glCompressedTexSubImage2D(gl.GL_TEXTURE_2D, 0, 0, 0, 4, 4, gl.GL_ETC1_RGB8_OES, 8, data)
         t.check_gl_error("CompressedTexSubImage2D of an ETC1 texture", gl.GL_INVALID_OPERATION)
@@ -890,9 +884,7 @@ def mip_levels_max_level(t: TestContext) -> None:
     texture needs and samples: levels 0..2 of a 32x32 chain with the limit 2 are complete, and
     lambda 3 or 4 shows level 2; a negative limit is INVALID_VALUE."""
     gl = t.gl
-    ext = gl.glGetString(gl.GL_EXTENSIONS) or b""
-    if "GL_APPLE_texture_max_level" not in (ext.decode() if isinstance(ext, bytes) else ext).split():
-        raise Unsupported("GL_APPLE_texture_max_level is not in GL_EXTENSIONS")
+    t.need_extension("GL_APPLE_texture_max_level")
     _prepare(t)
     levels = _colour_levels()[:3]
     _texture(t, levels, minf="NEAREST_MIPMAP_NEAREST")
@@ -917,10 +909,7 @@ def tex_npot(t: TestContext) -> None:
     w_s and h_s for 2^n and 2^m, NEAREST and LINEAR under REPEAT, MIRRORED_REPEAT and
     CLAMP_TO_EDGE with coordinates from -1 to 2 (half a texel a pixel); a mipmap of
     floor-halved levels (12x10, 6x5, 3x2, 1x1) is complete and shows each level at its lambda."""
-    gl = t.gl
-    ext = gl.glGetString(gl.GL_EXTENSIONS) or b""
-    if "GL_OES_texture_npot" not in (ext.decode() if isinstance(ext, bytes) else ext).split():
-        raise Unsupported("GL_OES_texture_npot is not in GL_EXTENSIONS")
+    t.need_extension("GL_OES_texture_npot")
     rng = np.random.default_rng(13)
     c = ((-1.0, -1.0), (2.0, 2.0))
     for w, h in ((7, 5), (6, 3), (5, 9)):
@@ -990,10 +979,7 @@ def texture_edge_clamp(t: TestContext) -> None:
 def texture_mirror(t: TestContext) -> None:
     """OES_texture_mirrored_repeat: s - floor(s) on even integer parts, 1 - that on odd
     ones, then clamped like CLAMP_TO_EDGE, with NEAREST and LINEAR."""
-    from ..harness import Unsupported
-
-    if "GL_OES_texture_mirrored_repeat" not in (t.gl.glGetString(t.gl.GL_EXTENSIONS) or b"").decode():
-        raise Unsupported("GL_OES_texture_mirrored_repeat is not in GL_EXTENSIONS")
+    t.need_extension("GL_OES_texture_mirrored_repeat")
     rng = np.random.default_rng(7)
     tex = rng.integers(0, 256, size=(4, 8, 4), dtype=np.uint8)
     c = ((-2.1875, -1.0625), (2.3125, 1.9375))     # no pixel centre on a texel edge
@@ -1123,10 +1109,7 @@ def tex_combine(t: TestContext) -> None:
 @conformance_test("TexCombine.crossbar", section="3.7.12", visuals=VISUALS)
 def tex_combine_crossbar(t: TestContext) -> None:
     """OES_texture_env_crossbar: TEXTURE0 and TEXTURE1 as sources of either unit."""
-    from ..harness import Unsupported
-
-    if "GL_OES_texture_env_crossbar" not in (t.gl.glGetString(t.gl.GL_EXTENSIONS) or b"").decode():
-        raise Unsupported("GL_OES_texture_env_crossbar is not in GL_EXTENSIONS")
+    t.need_extension("GL_OES_texture_env_crossbar")
     _run_combine(t, _combine_configs(True), "TexCombine.crossbar")
 
 
