@@ -182,7 +182,10 @@ GlesContext *gles_context_create(int width, int height, int color_format,
     light_init(ctx);
     fragment_init(ctx);
     fog_init(ctx);
-    texture_init(ctx);
+    if (!texture_init(ctx)) {
+        gles_context_destroy(ctx);
+        return NULL;
+    }
     /* Tables 6.x: point and line state */
     ctx->point_size = ctx->line_width = 1.0;
     ctx->n_point_size = NUM_ONE;
@@ -326,10 +329,20 @@ static void set_enable(GlesContext *ctx, unsigned int cap, int on)
         ctx->dirty |= DIRTY_LIGHT;
         return;
     }
-    if (cap == GL_TEXTURE_2D) {
-        /* per texture unit (§3.7.15) */
-        ctx->units[ctx->active_texture - GL_TEXTURE0].enabled = on;
-        ctx->dirty |= DIRTY_TEXTURE;
+    if (cap == GL_TEXTURE_2D || cap == GL_TEXTURE_CUBE_MAP_OES) {
+        /* per texture unit (§3.7.15); the sampled target by the cube map
+        ** extension's precedence */
+        TexUnit *tu = &ctx->units[ctx->active_texture - GL_TEXTURE0];
+        *(cap == GL_TEXTURE_2D ? &tu->enabled_2d : &tu->enabled_cube) = on;
+        texture_unit_update(tu);
+        ctx->dirty |= DIRTY_TEXTURE | DIRTY_SPAN;
+        return;
+    }
+    if (cap == GL_TEXTURE_GEN_STR_OES) {
+        /* per texture unit; the vertex stage may now need eye coordinates
+        ** and the normal matrix */
+        ctx->units[ctx->active_texture - GL_TEXTURE0].texgen = on;
+        ctx->dirty |= DIRTY_TEXTURE | DIRTY_CLIP | DIRTY_LIGHT;
         return;
     }
     int i = cap_index(cap);
@@ -376,7 +389,11 @@ unsigned char gles_IsEnabled(GlesContext *ctx, unsigned int cap)
     if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + GLES_MAX_LIGHTS)
         return (unsigned char)ctx->light_enabled[cap - GL_LIGHT0];
     if (cap == GL_TEXTURE_2D)
-        return (unsigned char)ctx->units[ctx->active_texture - GL_TEXTURE0].enabled;
+        return (unsigned char)ctx->units[ctx->active_texture - GL_TEXTURE0].enabled_2d;
+    if (cap == GL_TEXTURE_CUBE_MAP_OES)
+        return (unsigned char)ctx->units[ctx->active_texture - GL_TEXTURE0].enabled_cube;
+    if (cap == GL_TEXTURE_GEN_STR_OES)
+        return (unsigned char)ctx->units[ctx->active_texture - GL_TEXTURE0].texgen;
     int i = cap_index(cap);
     if (i >= 0)
         return (ctx->enable_bits >> i) & 1;
@@ -742,7 +759,8 @@ int gles_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)
         || (n = texture_get(ctx, pname, out, kind)) > 0)
         return n;
     /* an enable queried through Get*v answers like IsEnabled */
-    if (cap_index(pname) >= 0 || pname == GL_TEXTURE_2D || (pname >= GL_CLIP_PLANE0 && pname < GL_CLIP_PLANE0 + GLES_MAX_CLIP_PLANES)
+    if (cap_index(pname) >= 0 || pname == GL_TEXTURE_2D || pname == GL_TEXTURE_CUBE_MAP_OES
+        || pname == GL_TEXTURE_GEN_STR_OES || (pname >= GL_CLIP_PLANE0 && pname < GL_CLIP_PLANE0 + GLES_MAX_CLIP_PLANES)
         || (pname >= GL_LIGHT0 && pname < GL_LIGHT0 + 8))
         return put1(out, kind, GLES_KIND_BOOL, gles_IsEnabled(ctx, pname));
     ctx_error(ctx, GL_INVALID_ENUM);

@@ -16,6 +16,8 @@
 #include "fog.c"
 #include "texture.c"
 #include "texsample.c"
+#include "texcube.c"
+#include "texgen.c"
 #include "texenv.c"
 #include "span.c"
 #include "span_chain.c"

@@ -6,7 +6,7 @@
 ** TEXTURE_CROP_RECT_OES linearly onto the rectangle:
 **     s = (Ucr + (X - Xs) Wcr / Ws) / Wt,  t = (Vcr + (Y - Ys) Hcr / Hs) / Ht
 ** (the texture matrix, clip planes and lighting do not apply; fog sees
-** distance 0). The level of detail is constant over the rectangle. The
+** distance 0; a unit sampling a cube map takes the direction (s, t, 0)). The level of detail is constant over the rectangle. The
 ** coordinates are formed in double from the real arguments and rounded once.
 ** Rows run through the span chain (span_chain.c); the per-fragment path
 ** stays as its reference (ctx.debug(1)).
@@ -14,6 +14,7 @@
 #include "state.h"
 #include "raster.h"
 #include "texture.h"
+#include "texcube.h"
 #include "fragment.h"
 #include "fbo.h"
 
@@ -87,8 +88,16 @@ void gles_DrawTexOES(GlesContext *ctx, double xs, double ys, double zs, double w
     for (int64_t py = y0; py < y1; py++)
         for (int64_t px = x0; px < x1; px++) {
             for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
-                if (ctx->tex_units_on & (1u << u))
+                if (ctx->tex_units_on & (1u << u)) {
                     rect_linear_coords(&r, u, px, py, &in->tc[u], &in->tdx[u], &in->tdy[u]);
+                    if (ctx->cube_units & (1u << u)) {
+                        /* a cube map: the direction (s, t, 0) */
+                        const TEXC c[3] = { in->tc[u].s, in->tc[u].t, 0 };
+                        const TEXC cx[3] = { in->tdx[u].s, in->tdx[u].t, 0 };
+                        const TEXC cy[3] = { in->tdy[u].s, in->tdy[u].t, 0 };
+                        texcube_coords(c, cx, cy, &in->tc[u], &in->tdx[u], &in->tdy[u], &in->face[u]);
+                    }
+                }
             fragment_process(ctx, (int)px, (int)py, in);
         }
 }

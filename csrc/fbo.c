@@ -452,7 +452,9 @@ static int attachment_enum_ok(unsigned int target, unsigned int attachment)
 void gles_FramebufferTexture2DOES(GlesContext *ctx, unsigned int target, unsigned int attachment,
                                   unsigned int textarget, unsigned int texture, int level)
 {
-    if (!attachment_enum_ok(target, attachment) || (texture && textarget != GL_TEXTURE_2D)) {
+    const int face_target = textarget >= GL_TEXTURE_CUBE_MAP_POSITIVE_X_OES
+                            && textarget <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z_OES;
+    if (!attachment_enum_ok(target, attachment) || (texture && textarget != GL_TEXTURE_2D && !face_target)) {
         ctx_error(ctx, GL_INVALID_ENUM);
         return;
     }
@@ -461,10 +463,13 @@ void gles_FramebufferTexture2DOES(GlesContext *ctx, unsigned int target, unsigne
         return;
     }
     Texture *t = texture ? names_lookup(&ctx->textures, texture) : NULL;
-    if (texture && !t) {
+    /* a 2D texture for TEXTURE_2D, a cube map for a face target (OES_texture_cube_map), whose face is attached */
+    if (texture && (!t || t->target != (face_target ? GL_TEXTURE_CUBE_MAP_OES : GL_TEXTURE_2D))) {
         ctx_error(ctx, GL_INVALID_OPERATION);
         return;
     }
+    if (t && face_target)
+        t = t->face[textarget - GL_TEXTURE_CUBE_MAP_POSITIVE_X_OES];
     /* any level: OES_fbo_render_mipmap */
     if (texture && (level < 0 || level >= GLES_MAX_TEXTURE_LEVELS)) {
         ctx_error(ctx, GL_INVALID_VALUE);
@@ -542,6 +547,11 @@ int gles_GetFramebufferAttachmentParameterivOES(GlesContext *ctx, unsigned int t
         if (a->type != GL_TEXTURE)
             break;
         params[0] = a->level;
+        return 1;
+    case GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE_OES:
+        if (a->type != GL_TEXTURE)
+            break;
+        params[0] = a->tex->cube ? (int)a->tex->target : 0;
         return 1;
     default: break;
     }

@@ -279,6 +279,8 @@ void fragment_process(GlesContext *ctx, int x, int y, const FragIn *in)
         for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
             if (units & (1u << u)) {
                 const Texture *tex = ctx->units[u].bound;
+                if (ctx->cube_units & (1u << u))
+                    tex = tex->face[in->face[u]];
                 const double bias = ctx->units[u].lod_bias;
                 if (texture_needs_lod(tex))
                     texture_sample(tex, bias, &in->tc[u], &in->tdx[u], &in->tdy[u], ct[u], ctx->texel_unorm8);

@@ -15,6 +15,7 @@ typedef struct FragIn {
     TexCoord tc[GLES_MAX_TEXTURE_UNITS];    /* per enabled unit */
     TexCoord tdx[GLES_MAX_TEXTURE_UNITS];   /* one pixel right and up (along the */
     TexCoord tdy[GLES_MAX_TEXTURE_UNITS];   /* tangent), read when the filter needs LOD */
+    uint8_t face[GLES_MAX_TEXTURE_UNITS];   /* a cube map unit's face (texcube.c) */
     FRAGV fog;                              /* fog factor f */
     FRAGV coverage;                         /* antialiasing coverage, FRAG_ONE if none */
     uint32_t z;                             /* window depth (with the depth test on) */

@@ -305,6 +305,10 @@ void gles_TexParameter(GlesContext *ctx, unsigned int target, unsigned int pname
 int gles_GetTexParameter(GlesContext *ctx, unsigned int target, unsigned int pname, double *out);
 void gles_TexEnv(GlesContext *ctx, unsigned int target, unsigned int pname, const double *params, int vector);
 int gles_GetTexEnv(GlesContext *ctx, unsigned int target, unsigned int pname, double *out);
+/* OES_texture_cube_map: TexGen*OES (coord TEXTURE_GEN_STR_OES, pname
+** TEXTURE_GEN_MODE_OES) and GetTexGen*OES, params as TexEnv's */
+void gles_TexGen(GlesContext *ctx, unsigned int coord, unsigned int pname, const double *params, int vector);
+int gles_GetTexGen(GlesContext *ctx, unsigned int coord, unsigned int pname, double *out);
 /* bytes a TexImage2D with these arguments reads (UNPACK_ALIGNMENT applied),
 ** and the size of a paletted image of `levels` levels (-1: not paletted) */
 int64_t texture_image_bytes(const GlesContext *ctx, int width, int height, unsigned int format, unsigned int type);

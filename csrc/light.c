@@ -16,6 +16,7 @@
 #include "state.h"
 #include "matrix.h"
 #include "light.h"
+#include "texgen.h"
 #include "vertex_avx2.h"
 
 static void set4(double *d, NUM *n, const double *v, int count)
@@ -354,12 +355,13 @@ void light_validate(GlesContext *ctx)
         if (ctx->light_enabled[i])
             ctx->active_lights |= 1u << i;
     ctx->two_sided = ctx->lighting && ctx->light_model_two_side;
-    if (!ctx->lighting)
+    /* the normal matrices serve lighting and texture coordinate generation */
+    if (!ctx->lighting && !texgen_any(ctx))
         return;
     /* the lights and the material: light positions are in eye space
     ** already, so a new modelview leaves these alone (turning lighting on
     ** marks DIRTY_LIGHT) */
-    if (ctx->dirty & DIRTY_LIGHT) {
+    if (ctx->lighting && (ctx->dirty & DIRTY_LIGHT)) {
         update_lights(ctx);
         prepare_lights(ctx);
     }

@@ -1137,6 +1137,8 @@ static inline TEXC texc_div(TEXC s, TEXC q)
 
 static inline TEXC texc_floor(TEXC s) { return (s >> 32) * TEXC_ONE; }
 static inline int64_t texc_ifloor(TEXC s) { return s >> 32; }
+/* (a + 1) / 2, the cube map face coordinate of a in [-1, 1] (|a| <= 2^62) */
+static inline TEXC texc_unit_half(TEXC a) { return (a + TEXC_ONE) / 2; }
 static inline TEXC texc_abs(TEXC a) { return a < 0 ? -a : a; }
 static inline TEXC texc_clamp(TEXC a, TEXC lim) { return a < -lim ? -lim : (a > lim ? lim : a); }
 /* anisotropic footprints: ceil(a / b) of positives below 2^62, a / n,
@@ -1208,6 +1210,7 @@ static inline TEXC texc_lerp3(NUM a0, NUM a1, NUM a2, WGT w0, WGT w1, WGT w2)
 }
 static inline TEXC texc_div(TEXC s, TEXC q) { return q == 0 ? (s > 0 ? (NUM)1e30 : (s < 0 ? (NUM)-1e30 : 0)) : s / q; }
 static inline TEXC texc_floor(TEXC s) { return NUM_FLOOR(s); }
+static inline TEXC texc_unit_half(TEXC a) { return (a + 1) * (NUM)0.5; }
 static inline int64_t texc_ifloor(TEXC s) { return dbl_to_i64(floor((double)s), -((int64_t)1 << 40), (int64_t)1 << 40); }
 static inline TEXC texc_abs(TEXC a) { return a < 0 ? -a : a; }
 static inline TEXC texc_clamp(TEXC a, TEXC lim) { return a < -lim ? -lim : (a > lim ? lim : a); }

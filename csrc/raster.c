@@ -406,7 +406,7 @@ static int samples_own_target(const GlesContext *ctx)
 {
     const Texture *t = fbo_color_texture(ctx);
     for (int u = 0; t && u < GLES_MAX_TEXTURE_UNITS; u++)
-        if (ctx->units[u].enabled && ctx->units[u].bound == t)
+        if (ctx->units[u].enabled && (ctx->units[u].bound == t || ctx->units[u].bound == t->cube))
             return 1;
     return 0;
 }

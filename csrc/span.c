@@ -13,6 +13,7 @@
 #include "span.h"
 #include "fragment.h"
 #include "texture.h"
+#include "texcube.h"
 
 uint32_t span_pack_color(const GlesContext *ctx, const FRAGV *c)
 {
@@ -24,6 +25,19 @@ uint32_t span_pack_color(const GlesContext *ctx, const FRAGV *c)
              | fragment_channel(f[2], 5, 0, 0);
     return fragment_channel(f[0], 8, 0, 0) | (fragment_channel(f[1], 8, 0, 0) << 8)
          | (fragment_channel(f[2], 8, 0, 0) << 16) | (fragment_channel(f[3], 8, 0, 0) << 24);
+}
+
+/* a cube map unit's direction (s, t, r) at perspective weights p, q left
+** out (texcube.c); a point sprite's s and t where COORD_REPLACE is on */
+static void span_cube_str(const TriSetup *t, int u, const WGT p[3], const TexCoord *sprite, TEXC str[3])
+{
+    const NUM *a = t->v[0]->tex[u], *b = t->v[1]->tex[u], *c = t->v[2]->tex[u];
+    for (int k = 0; k < 3; k++)
+        str[k] = texc_lerp3(a[k], b[k], c[k], p[0], p[1], p[2]);
+    if (sprite) {
+        str[0] = sprite->s;
+        str[1] = sprite->t;
+    }
 }
 
 /* The fragment at (x, y) of a primitive described by a TriSetup, with edge
@@ -47,6 +61,18 @@ void fragment_inputs(const GlesContext *ctx, const TriSetup *t, const int64_t e[
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++) {
         if (!(units & (1u << u)))
             continue;
+        if (ctx->cube_units & (1u << u)) {
+            const int replace = sprite && ctx->units[u].coord_replace, lod = texture_needs_lod(ctx->units[u].bound);
+            TEXC c[3], cx[3], cy[3];
+            span_cube_str(t, u, p, replace ? sprite : NULL, c);
+            if (lod) {
+                span_cube_str(t, u, px, replace ? sprite_dx : NULL, cx);
+                span_cube_str(t, u, py, replace ? sprite_dy : NULL, cy);
+            }
+            texcube_coords(c, lod ? cx : NULL, lod ? cy : NULL, &out->tc[u], &out->tdx[u], &out->tdy[u],
+                           &out->face[u]);
+            continue;
+        }
         if (sprite && ctx->units[u].coord_replace) {
             out->tc[u] = *sprite;
             out->tdx[u] = *sprite_dx;

@@ -181,6 +181,14 @@ typedef struct Texture {
     int level_limit;                    /* TEXTURE_MAX_LEVEL_APPLE (APPLE_texture_max_level) */
     double max_aniso;                   /* TEXTURE_MAX_ANISOTROPY_EXT (EXT_texture_filter_anisotropic) */
     int paletted;                       /* specified with CompressedTexImage2D */
+    /* OES_texture_cube_map: the target a name is bound to for life (0 until
+    ** first bound); a cube map keeps its six faces' images in face[i] (in
+    ** the order POSITIVE_X, NEGATIVE_X, ..., NEGATIVE_Z), each a Texture
+    ** whose parameters are copies of the cube map's (texture_update); a
+    ** face points back at its cube map */
+    unsigned int target;
+    struct Texture *face[6];
+    struct Texture *cube;
     /* derived by texture_complete(): */
     int complete;
     int max_level;                      /* q: the last level sampled */
@@ -227,8 +235,15 @@ typedef struct DrawBuffers {
 } DrawBuffers;
 
 typedef struct TexUnit {
-    int enabled;                        /* TEXTURE_2D */
-    Texture *bound;                     /* never NULL: name 0 is ctx->default_texture */
+    int enabled_2d, enabled_cube;       /* TEXTURE_2D, TEXTURE_CUBE_MAP_OES */
+    Texture *bound_2d;                  /* never NULL: name 0 is ctx->default_texture */
+    Texture *bound_cube;                /* never NULL: name 0 is ctx->default_cube */
+    /* derived (texture_unit_update): either target enabled, and the texture
+    ** sampled by the precedence of §3.8.10 (the cube map's when enabled) */
+    int enabled;
+    Texture *bound;
+    int texgen;                         /* TEXTURE_GEN_STR_OES */
+    unsigned int texgen_mode;           /* TEXTURE_GEN_MODE_OES */
     unsigned int env_mode;
     double env_color[4];
     NUM n_env_color[4];
@@ -437,7 +452,10 @@ struct GlesContext {
     /* textures */
     TexUnit units[GLES_MAX_TEXTURE_UNITS];
     Texture default_texture;
+    Texture default_cube;               /* name 0 of TEXTURE_CUBE_MAP_OES */
     NameTable textures;
+    unsigned int cube_units;            /* derived: bit per sampling unit whose texture is a cube map */
+    unsigned int texgen_units;          /* derived: bit per sampling unit with TEXTURE_GEN_STR_OES */
     unsigned int tex_units_on;          /* derived: bit per unit that samples */
     FRAGV texel_unorm8[256];            /* c / 255 */
 
@@ -467,7 +485,7 @@ struct GlesContext {
     NUM mvp[16];                /* projection * modelview */
     int mvp_kind;
     int mvp_stale;              /* a matrix changed since mvp was formed */
-    int need_eye;               /* user clip planes or lighting need eye coordinates */
+    int need_eye;               /* user clip planes, lighting, fog or texgen need eye coordinates */
     NUM normal_matrix[9];       /* inverse transpose of the modelview's 3x3, row-major */
     NUM rescale;                /* RESCALE_NORMAL factor */
     NUM palette_normal[GLES_MAX_PALETTE_MATRICES][9];  /* the same per palette matrix */
@@ -520,13 +538,15 @@ struct GlesContext {
 /* whether the draws take the generic span path: the debug switch, or a
 ** sampling unit with a level-of-detail bias (EXT_texture_lod_bias) or an
 ** anisotropic texture (EXT_texture_filter_anisotropic): the vector
-** samplers and fused stages compute an isotropic, unbiased lambda */
+** samplers and fused stages compute an isotropic, unbiased lambda; or a
+** unit sampling a cube map (texcube.c: the face is chosen per fragment) */
 static inline int ctx_generic_spans(const GlesContext *ctx)
 {
     if (ctx->debug & GLES_DEBUG_GENERIC_SPANS)
         return 1;
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
-        if (ctx->units[u].enabled && (ctx->units[u].lod_bias != 0.0 || ctx->units[u].bound->max_aniso > 1.0))
+        if (ctx->units[u].enabled && (ctx->units[u].lod_bias != 0.0 || ctx->units[u].bound->max_aniso > 1.0
+                                      || ctx->units[u].enabled_cube))
             return 1;
     return 0;
 }

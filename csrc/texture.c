@@ -3,7 +3,9 @@
 ** OES_compressed_paletted_texture, OES_texture_mirrored_repeat,
 ** OES_texture_env_crossbar).
 ** Owns: Gen/Bind/Delete/IsTexture, TexImage2D and friends, TexParameter,
-**       TexEnv, mipmap completeness, GENERATE_MIPMAP.
+**       TexEnv, mipmap completeness, GENERATE_MIPMAP; OES_texture_cube_map's
+**       cube map objects (six faces, each a Texture of its own images with
+**       the cube map's parameters) and their cube completeness.
 ** Storage: every level is expanded to RGBA8888 at specification time; the
 **       base format decides which components the environment uses.
 ** Sampling is texsample.c; the environment's arithmetic is texenv.c.
@@ -77,16 +79,53 @@ static void texture_release(GlesContext *ctx, Texture *t)
         free(t->level[i].texels);
         t->level[i].texels = NULL;
     }
+    if (t->face[0]) {
+        for (int f = 0; f < 6; f++)
+            texture_release(ctx, t->face[f]);
+        free(t->face[0]);      /* the six are one block */
+        memset(t->face, 0, sizeof t->face);
+    }
 }
 
-void texture_init(GlesContext *ctx)
+/* make t (a name's first binding) a texture of `target` for life: a cube
+** map gets its six faces; 0 when there is no memory for them */
+static int texture_make(Texture *t, unsigned int target)
+{
+    t->target = target;
+    if (target != GL_TEXTURE_CUBE_MAP_OES)
+        return 1;
+    Texture *faces = malloc(6 * sizeof *faces);
+    if (!faces)
+        return 0;
+    for (int f = 0; f < 6; f++) {
+        texture_defaults(&faces[f], t->name);
+        faces[f].target = GL_TEXTURE_CUBE_MAP_POSITIVE_X_OES + (unsigned int)f;
+        faces[f].cube = t;
+        t->face[f] = &faces[f];
+    }
+    return 1;
+}
+
+void texture_unit_update(TexUnit *tu)
+{
+    tu->enabled = tu->enabled_2d || tu->enabled_cube;
+    /* §3.8.10: with both enabled, cube map texturing is used */
+    tu->bound = tu->enabled_cube ? tu->bound_cube : tu->bound_2d;
+}
+
+int texture_init(GlesContext *ctx)
 {
     names_init(&ctx->textures);
     texture_defaults(&ctx->default_texture, 0);
+    texture_make(&ctx->default_texture, GL_TEXTURE_2D);
+    texture_defaults(&ctx->default_cube, 0);
+    const int faces = texture_make(&ctx->default_cube, GL_TEXTURE_CUBE_MAP_OES);
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++) {
         TexUnit *tu = &ctx->units[u];
         memset(tu, 0, sizeof *tu);
-        tu->bound = &ctx->default_texture;
+        tu->bound_2d = tu->bound = &ctx->default_texture;
+        tu->bound_cube = &ctx->default_cube;
+        tu->texgen_mode = GL_REFLECTION_MAP_OES;
         tu->env_mode = GL_MODULATE;
         tu->combine_rgb = tu->combine_alpha = GL_MODULATE;
         tu->src_rgb[0] = tu->src_alpha[0] = GL_TEXTURE;
@@ -99,6 +138,7 @@ void texture_init(GlesContext *ctx)
     }
     for (uint32_t c = 0; c < 256; c++)
         ctx->texel_unorm8[c] = frag_from_unorm(c, 255);
+    return faces;
 }
 
 void texture_free(GlesContext *ctx)
@@ -113,6 +153,7 @@ void texture_free(GlesContext *ctx)
     }
     names_free(nt);
     texture_release(ctx, &ctx->default_texture);
+    texture_release(ctx, &ctx->default_cube);
 }
 
 static TexUnit *active_unit(GlesContext *ctx) { return &ctx->units[ctx->active_texture - GL_TEXTURE0]; }
@@ -150,6 +191,49 @@ static void texture_complete(Texture *t)
     t->complete = 1;
 }
 
+/* after a change to t's images or parameters: its completeness; for a cube
+** map (or one of its faces) the cube map's parameters copied into the
+** faces, each face's mipmap completeness, and the cube map's: complete
+** when every face is (with a mipmapped filter, "mipmap cube complete") and
+** the six level-0 images are square, of one size and one internal format
+** (§3.8.1, §3.8.5 of the extension). The cube map's level 0 holds the
+** faces' size (no texels), which DrawTex's crop rectangle reads */
+static void texture_update(Texture *t)
+{
+    if (t->cube)
+        t = t->cube;
+    if (!t->face[0]) {
+        texture_complete(t);
+        return;
+    }
+    for (int f = 0; f < 6; f++) {
+        Texture *fc = t->face[f];
+        fc->min_filter = t->min_filter;
+        fc->mag_filter = t->mag_filter;
+        fc->wrap_s = t->wrap_s;
+        fc->wrap_t = t->wrap_t;
+        fc->generate_mipmap = t->generate_mipmap;
+        fc->level_limit = t->level_limit;
+        fc->max_aniso = t->max_aniso;
+        texture_complete(fc);
+    }
+    const Texture *f0 = t->face[0];
+    const int size = f0->level[0].width;
+    t->format = f0->format;
+    t->level[0].width = size;
+    t->level[0].height = f0->level[0].height;
+    t->complete = 0;
+    t->max_level = 0;
+    for (int f = 0; f < 6; f++) {
+        const Texture *fc = t->face[f];
+        if (!fc->complete || fc->level[0].width != size || fc->level[0].height != size
+            || fc->level_format[0] != f0->level_format[0])
+            return;
+    }
+    t->max_level = f0->max_level;
+    t->complete = 1;
+}
+
 const Texture *texture_active(const GlesContext *ctx, int unit)
 {
     const TexUnit *tu = &ctx->units[unit];
@@ -158,11 +242,38 @@ const Texture *texture_active(const GlesContext *ctx, int unit)
 
 void texture_validate(GlesContext *ctx)
 {
-    ctx->tex_units_on = 0;
+    ctx->tex_units_on = ctx->cube_units = ctx->texgen_units = 0;
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
-        if (texture_active(ctx, u))
+        if (texture_active(ctx, u)) {
             ctx->tex_units_on |= 1u << u;
+            ctx->cube_units |= (unsigned)(ctx->units[u].enabled_cube != 0) << u;
+            ctx->texgen_units |= (unsigned)(ctx->units[u].texgen != 0) << u;
+        }
 }
+
+/* the texture TexImage2D and its kin address on the active unit: the 2D
+** binding's for TEXTURE_2D, a face of the cube map binding's for a face
+** target; NULL for any other target (INVALID_ENUM) */
+static Texture *image_target(GlesContext *ctx, unsigned int target)
+{
+    TexUnit *tu = &ctx->units[ctx->active_texture - GL_TEXTURE0];
+    if (target == GL_TEXTURE_2D)
+        return tu->bound_2d;
+    if (target >= GL_TEXTURE_CUBE_MAP_POSITIVE_X_OES && target <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z_OES)
+        return tu->bound_cube->face[target - GL_TEXTURE_CUBE_MAP_POSITIVE_X_OES];
+    return NULL;
+}
+
+/* the texture TexParameter and its kin address: TEXTURE_2D's or
+** TEXTURE_CUBE_MAP_OES's binding on the active unit, else NULL */
+static Texture *param_target(GlesContext *ctx, unsigned int target)
+{
+    TexUnit *tu = &ctx->units[ctx->active_texture - GL_TEXTURE0];
+    return target == GL_TEXTURE_2D ? tu->bound_2d : (target == GL_TEXTURE_CUBE_MAP_OES ? tu->bound_cube : NULL);
+}
+
+/* a cube map face's images are square (the extension's INVALID_VALUE) */
+static int face_not_square(const Texture *t, int width, int height) { return t->cube && width != height; }
 
 /* {====================================================================
 ** objects */
@@ -189,10 +300,17 @@ void gles_DeleteTextures(GlesContext *ctx, int n, const unsigned int *names)
         if (!t)
             continue;
         /* §3.7.13: a deleted bound texture reverts the binding to 0 */
-        for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
-            if (ctx->units[u].bound == t)
-                ctx->units[u].bound = &ctx->default_texture;
+        for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++) {
+            TexUnit *tu = &ctx->units[u];
+            if (tu->bound_2d == t)
+                tu->bound_2d = &ctx->default_texture;
+            if (tu->bound_cube == t)
+                tu->bound_cube = &ctx->default_cube;
+            texture_unit_update(tu);
+        }
         fbo_texture_deleted(ctx, t);
+        for (int f = 0; f < 6 && t->face[f]; f++)
+            fbo_texture_deleted(ctx, t->face[f]);
         texture_release(ctx, t);
         free(t);
     }
@@ -201,24 +319,38 @@ void gles_DeleteTextures(GlesContext *ctx, int n, const unsigned int *names)
 
 void gles_BindTexture(GlesContext *ctx, unsigned int target, unsigned int name)
 {
-    if (target != GL_TEXTURE_2D) {
+    if (target != GL_TEXTURE_2D && target != GL_TEXTURE_CUBE_MAP_OES) {
         ctx_error(ctx, GL_INVALID_ENUM);
         return;
     }
-    Texture *t = &ctx->default_texture;
+    Texture *t = target == GL_TEXTURE_2D ? &ctx->default_texture : &ctx->default_cube;
     if (name != 0) {
         t = names_lookup(&ctx->textures, name);
         if (!t) {
             t = malloc(sizeof *t);
-            if (!t || !names_insert(&ctx->textures, name, t)) {
+            if (t)
+                texture_defaults(t, name);
+            if (!t || !texture_make(t, target) || !names_insert(&ctx->textures, name, t)) {
+                if (t)
+                    texture_release(ctx, t);
                 free(t);
                 ctx_error(ctx, GL_OUT_OF_MEMORY);
                 return;
             }
-            texture_defaults(t, name);
         }
     }
-    active_unit(ctx)->bound = t;
+    /* a name stays a texture of the target it was first bound to (§3.8.8
+    ** of the extension) */
+    if (t->target != target) {
+        ctx_error(ctx, GL_INVALID_OPERATION);
+        return;
+    }
+    TexUnit *tu = active_unit(ctx);
+    if (target == GL_TEXTURE_2D)
+        tu->bound_2d = t;
+    else
+        tu->bound_cube = t;
+    texture_unit_update(tu);
     ctx->dirty |= DIRTY_TEXTURE;
 }
 
@@ -357,7 +489,7 @@ static void image_changed(GlesContext *ctx, Texture *t, int level)
 {
     if (level == 0 && t->generate_mipmap && !generate_mipmaps(ctx, t))
         ctx_error(ctx, GL_OUT_OF_MEMORY);
-    texture_complete(t);
+    texture_update(t);
     ctx->dirty |= DIRTY_TEXTURE;
 }
 
@@ -393,17 +525,20 @@ int gles_TexImage2D(GlesContext *ctx, unsigned int target, int level, int intern
     ** (§3.7.1), whatever format and type say (as piglit's paletted API
     ** test expects of ES; the extension's INVALID_OPERATION is for the
     ** sub-image commands) */
-    if (target == GL_TEXTURE_2D && is_palette_format((unsigned int)internalformat)) {
+    Texture *t = image_target(ctx, target);
+    if (t && is_palette_format((unsigned int)internalformat)) {
         ctx_error(ctx, GL_INVALID_VALUE);
         return GLES_OK;
     }
-    if (target != GL_TEXTURE_2D || !is_upload_format(format)
+    if (!t || !is_upload_format(format)
         || (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT_5_6_5 && type != GL_UNSIGNED_SHORT_4_4_4_4
             && type != GL_UNSIGNED_SHORT_5_5_5_1)) {
         ctx_error(ctx, GL_INVALID_ENUM);
         return GLES_OK;
     }
     unsigned int err = check_image(level, width, height, border);
+    if (!err && face_not_square(t, width, height))
+        err = GL_INVALID_VALUE;
     if (!err && !is_upload_format((unsigned int)internalformat))
         err = GL_INVALID_VALUE;
     if (!err && ((unsigned int)internalformat != format || !pixel_bytes(format, type)))
@@ -416,7 +551,6 @@ int gles_TexImage2D(GlesContext *ctx, unsigned int target, int level, int intern
     if (pixels && nbytes >= 0 && need > nbytes)
         return ctx_message(ctx, GLES_EVALUE, "TexImage2D reads %lld bytes, the pixel data holds %lld",
                            (long long)need, (long long)nbytes);
-    Texture *t = active_unit(ctx)->bound;
     TexImage *li = &t->level[level];
     if (!image_fits(ctx, t, level, width, height) || !level_alloc(ctx, li, width, height)) {
         ctx_error(ctx, GL_OUT_OF_MEMORY);
@@ -442,13 +576,13 @@ int gles_TexImage2D(GlesContext *ctx, unsigned int target, int level, int intern
 int gles_TexSubImage2D(GlesContext *ctx, unsigned int target, int level, int xoffset, int yoffset, int width,
                        int height, unsigned int format, unsigned int type, const void *pixels, int64_t nbytes)
 {
-    if (target != GL_TEXTURE_2D || !is_upload_format(format)
+    Texture *t = image_target(ctx, target);
+    if (!t || !is_upload_format(format)
         || (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT_5_6_5 && type != GL_UNSIGNED_SHORT_4_4_4_4
             && type != GL_UNSIGNED_SHORT_5_5_5_1)) {
         ctx_error(ctx, GL_INVALID_ENUM);
         return GLES_OK;
     }
-    Texture *t = active_unit(ctx)->bound;
     if (level < 0 || level > max_level_of_size() || width < 0 || height < 0) {
         ctx_error(ctx, GL_INVALID_VALUE);
         return GLES_OK;
@@ -544,14 +678,15 @@ static int copy_compatible(const GlesContext *ctx, unsigned int format)
 void gles_CopyTexImage2D(GlesContext *ctx, unsigned int target, int level, unsigned int internalformat, int x, int y,
                          int width, int height, int border)
 {
-    if (target != GL_TEXTURE_2D) {
+    Texture *t = image_target(ctx, target);
+    if (!t) {
         ctx_error(ctx, GL_INVALID_ENUM);
         return;
     }
     if (!fbo_sync(ctx))
         return;
     unsigned int err = check_image(level, width, height, border);
-    if (!err && !is_base_format(internalformat))
+    if (!err && (face_not_square(t, width, height) || !is_base_format(internalformat)))
         err = GL_INVALID_VALUE;
     if (!err && !copy_compatible(ctx, internalformat))
         err = GL_INVALID_OPERATION;
@@ -559,7 +694,6 @@ void gles_CopyTexImage2D(GlesContext *ctx, unsigned int target, int level, unsig
         ctx_error(ctx, err);
         return;
     }
-    Texture *t = active_unit(ctx)->bound;
     TexImage *li = &t->level[level];
     size_t count = (size_t)width * (size_t)height;
     if (!image_fits(ctx, t, level, width, height)) {
@@ -590,7 +724,8 @@ void gles_CopyTexImage2D(GlesContext *ctx, unsigned int target, int level, unsig
 void gles_CopyTexSubImage2D(GlesContext *ctx, unsigned int target, int level, int xoffset, int yoffset, int x, int y,
                             int width, int height)
 {
-    if (target != GL_TEXTURE_2D) {
+    Texture *t = image_target(ctx, target);
+    if (!t) {
         ctx_error(ctx, GL_INVALID_ENUM);
         return;
     }
@@ -600,7 +735,6 @@ void gles_CopyTexSubImage2D(GlesContext *ctx, unsigned int target, int level, in
         ctx_error(ctx, GL_INVALID_VALUE);
         return;
     }
-    Texture *t = active_unit(ctx)->bound;
     TexImage *li = &t->level[level];
     if (xoffset < 0 || yoffset < 0 || (int64_t)xoffset + width > li->width || (int64_t)yoffset + height > li->height) {
         ctx_error(ctx, GL_INVALID_VALUE);
@@ -642,22 +776,38 @@ void gles_CopyTexSubImage2D(GlesContext *ctx, unsigned int target, int level, in
 ** makes them */
 void gles_GenerateMipmapOES(GlesContext *ctx, unsigned int target)
 {
-    if (target != GL_TEXTURE_2D) {
+    Texture *t = param_target(ctx, target);
+    if (!t) {
         ctx_error(ctx, GL_INVALID_ENUM);
         return;
     }
-    Texture *t = active_unit(ctx)->bound;
-    const TexImage *l0 = &t->level[0];
-    if (!l0->texels || l0->width <= 0 || l0->height <= 0 || t->paletted || t->level_format[0] == GL_ETC1_RGB8_OES) {
-        ctx_error(ctx, GL_INVALID_OPERATION);
-        return;
+    /* a cube map: each face's, when the six level-0 images are "cube
+    ** complete" (EXT_framebuffer_object: INVALID_OPERATION otherwise) */
+    const int faces = t->face[0] ? 6 : 1;
+    Texture *const *each = t->face[0] ? t->face : &t;
+    int64_t add = 0, release = 0;
+    for (int f = 0; f < faces; f++) {
+        const Texture *e = each[f];
+        const TexImage *l0 = &e->level[0], *first = &each[0]->level[0];
+        if (!l0->texels || l0->width <= 0 || l0->height <= 0 || e->paletted || e->level_format[0] == GL_ETC1_RGB8_OES
+            || (faces == 6 && (l0->width != l0->height || l0->width != first->width
+                               || e->level_format[0] != each[0]->level_format[0]))) {
+            ctx_error(ctx, GL_INVALID_OPERATION);
+            return;
+        }
+        add += chain_bytes(l0->width, l0->height);
+        release += levels_bytes(e, 1, GLES_MAX_TEXTURE_LEVELS);
     }
-    if (!ctx_mem_fits(ctx, chain_bytes(l0->width, l0->height), levels_bytes(t, 1, GLES_MAX_TEXTURE_LEVELS))
-        || !generate_mipmaps(ctx, t)) {
+    if (!ctx_mem_fits(ctx, add, release)) {
         ctx_error(ctx, GL_OUT_OF_MEMORY);
         return;
     }
-    texture_complete(t);
+    for (int f = 0; f < faces; f++)
+        if (!generate_mipmaps(ctx, each[f])) {
+            ctx_error(ctx, GL_OUT_OF_MEMORY);
+            break;
+        }
+    texture_update(t);
     ctx->dirty |= DIRTY_TEXTURE;
 }
 
@@ -774,8 +924,8 @@ static void etc1_decode(const uint8_t *data, int width, int height, uint32_t *ou
                        height - by < 4 ? height - by : 4);
 }
 
-static void compressed_etc1(GlesContext *ctx, int level, int width, int height, int border, int image_size,
-                            const void *data, int64_t nbytes, int *status)
+static void compressed_etc1(GlesContext *ctx, Texture *t, int level, int width, int height, int border,
+                            int image_size, const void *data, int64_t nbytes, int *status)
 {
     *status = GLES_OK;
     /* the extension's own rule for a border (ES 1.1's general one is
@@ -784,7 +934,7 @@ static void compressed_etc1(GlesContext *ctx, int level, int width, int height, 
         ctx_error(ctx, GL_INVALID_OPERATION);
         return;
     }
-    if (check_image(level, width, height, border)) {
+    if (check_image(level, width, height, border) || face_not_square(t, width, height)) {
         ctx_error(ctx, GL_INVALID_VALUE);
         return;
     }
@@ -798,7 +948,6 @@ static void compressed_etc1(GlesContext *ctx, int level, int width, int height, 
                               (long long)need, (long long)nbytes);
         return;
     }
-    Texture *t = active_unit(ctx)->bound;
     TexImage *li = &t->level[level];
     if (!image_fits(ctx, t, level, width, height) || !level_alloc(ctx, li, width, height)) {
         ctx_error(ctx, GL_OUT_OF_MEMORY);
@@ -818,17 +967,19 @@ static void compressed_etc1(GlesContext *ctx, int level, int width, int height, 
 int gles_CompressedTexImage2D(GlesContext *ctx, unsigned int target, int level, unsigned int internalformat,
                               int width, int height, int border, int image_size, const void *data, int64_t nbytes)
 {
-    if (target == GL_TEXTURE_2D && internalformat == GL_ETC1_RGB8_OES) {
+    Texture *t = image_target(ctx, target);
+    if (t && internalformat == GL_ETC1_RGB8_OES) {
         int st;
-        compressed_etc1(ctx, level, width, height, border, image_size, data, nbytes, &st);
+        compressed_etc1(ctx, t, level, width, height, border, image_size, data, nbytes, &st);
         return st;
     }
     const PaletteFormat *pf = palette_format(internalformat);
-    if (target != GL_TEXTURE_2D || !pf) {
+    if (!t || !pf) {
         ctx_error(ctx, GL_INVALID_ENUM);
         return GLES_OK;
     }
-    if (level > 0 || level < -max_level_of_size() || check_image(0, width, height, border)) {
+    if (level > 0 || level < -max_level_of_size() || check_image(0, width, height, border)
+        || face_not_square(t, width, height)) {
         ctx_error(ctx, GL_INVALID_VALUE);
         return GLES_OK;
     }
@@ -841,7 +992,6 @@ int gles_CompressedTexImage2D(GlesContext *ctx, unsigned int target, int level, 
     if (!data || (nbytes >= 0 && nbytes < need))
         return ctx_message(ctx, GLES_EVALUE, "CompressedTexImage2D reads %lld bytes, the data holds %lld",
                            (long long)need, (long long)nbytes);
-    Texture *t = active_unit(ctx)->bound;
     int64_t add = 0, release = levels_bytes(t, 0, levels);
     for (int l = 0, w = width, h = height; l < levels; l++) {
         add += (int64_t)w * h * (int64_t)sizeof(uint32_t);
@@ -889,7 +1039,7 @@ void gles_CompressedTexSubImage2D(GlesContext *ctx, unsigned int target, int lev
                                   int width, int height, unsigned int format, int image_size, const void *data)
 {
     (void)level; (void)xoffset; (void)yoffset; (void)width; (void)height; (void)image_size; (void)data;
-    if (target != GL_TEXTURE_2D || (!palette_format(format) && format != GL_ETC1_RGB8_OES)) {
+    if (!image_target(ctx, target) || (!palette_format(format) && format != GL_ETC1_RGB8_OES)) {
         ctx_error(ctx, GL_INVALID_ENUM);
         return;
     }
@@ -903,11 +1053,12 @@ void gles_CompressedTexSubImage2D(GlesContext *ctx, unsigned int target, int lev
 
 void gles_TexParameter(GlesContext *ctx, unsigned int target, unsigned int pname, const double *p, int vector)
 {
-    if (target != GL_TEXTURE_2D) {
+    /* a cube map's parameters apply to the cube map as a whole */
+    Texture *t = param_target(ctx, target);
+    if (!t) {
         ctx_error(ctx, GL_INVALID_ENUM);
         return;
     }
-    Texture *t = active_unit(ctx)->bound;
     unsigned int v = (unsigned int)dbl_to_i64(p[0], 0, UINT32_MAX);
     switch (pname) {
     case GL_TEXTURE_MIN_FILTER:
@@ -970,17 +1121,17 @@ void gles_TexParameter(GlesContext *ctx, unsigned int target, unsigned int pname
         ctx_error(ctx, GL_INVALID_ENUM);
         return;
     }
-    texture_complete(t);
+    texture_update(t);
     ctx->dirty |= DIRTY_TEXTURE;
 }
 
 int gles_GetTexParameter(GlesContext *ctx, unsigned int target, unsigned int pname, double *out)
 {
-    if (target != GL_TEXTURE_2D) {
+    const Texture *t = param_target(ctx, target);
+    if (!t) {
         ctx_error(ctx, GL_INVALID_ENUM);
         return 0;
     }
-    const Texture *t = active_unit(ctx)->bound;
     switch (pname) {
     case GL_TEXTURE_MIN_FILTER: out[0] = t->min_filter; return 1;
     case GL_TEXTURE_MAG_FILTER: out[0] = t->mag_filter; return 1;
@@ -1165,7 +1316,9 @@ int texture_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)
     case GL_MAX_TEXTURE_SIZE: out[0] = GLES_MAX_TEXTURE_SIZE; return 1;
     case GL_MAX_TEXTURE_LOD_BIAS_EXT: *kind = GLES_KIND_FLOAT; out[0] = TEXTURE_MAX_LOD_BIAS; return 1;
     case GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT: *kind = GLES_KIND_FLOAT; out[0] = TEXTURE_MAX_ANISOTROPY; return 1;
-    case GL_TEXTURE_BINDING_2D: out[0] = active_unit(ctx)->bound->name; return 1;
+    case GL_TEXTURE_BINDING_2D: out[0] = active_unit(ctx)->bound_2d->name; return 1;
+    case GL_TEXTURE_BINDING_CUBE_MAP_OES: out[0] = active_unit(ctx)->bound_cube->name; return 1;
+    case GL_MAX_CUBE_MAP_TEXTURE_SIZE_OES: out[0] = GLES_MAX_TEXTURE_SIZE; return 1;
     case GL_NUM_COMPRESSED_TEXTURE_FORMATS: out[0] = 11; return 1;
     case GL_COMPRESSED_TEXTURE_FORMATS:
         *kind = GLES_KIND_ENUM;

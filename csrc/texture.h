@@ -6,7 +6,10 @@
 
 #include "state.h"
 
-void texture_init(GlesContext *ctx);
+/* 0 without memory for the default cube map's faces */
+int texture_init(GlesContext *ctx);
+/* a unit's derived `enabled` and `bound` from its enables and bindings */
+void texture_unit_update(TexUnit *tu);
 void texture_free(GlesContext *ctx);
 int texture_get(GlesContext *ctx, unsigned int pname, double *out, int *kind);
 /* the unit's bound texture when it is enabled and complete, else NULL */

@@ -15,6 +15,7 @@
 #include "light.h"
 #include "fragment.h"
 #include "texture.h"
+#include "texgen.h"
 
 void vertex_validate(GlesContext *ctx)
 {
@@ -24,7 +25,7 @@ void vertex_validate(GlesContext *ctx)
         unsigned int mask = CLIP_LEFT | CLIP_RIGHT | CLIP_BOTTOM | CLIP_TOP | CLIP_NEAR | CLIP_FAR | CLIP_W;
         const NUM *pa = ctx->n_point_attenuation;
         int point_distance = pa[0] != NUM_ONE || pa[1] != NUM_ZERO || pa[2] != NUM_ZERO;
-        ctx->need_eye = ctx->lighting || ctx->matrix_palette || ctx->fog || point_distance;
+        ctx->need_eye = ctx->lighting || ctx->matrix_palette || ctx->fog || point_distance || texgen_needs_eye(ctx);
         for (int i = 0; i < GLES_MAX_CLIP_PLANES; i++)
             if (ctx->clip_plane_enabled[i]) {
                 mask |= CLIP_USER0 << i;
@@ -216,6 +217,9 @@ void vertex_attribs(GlesContext *ctx, int64_t index, Vertex *v)
     }
     if (ctx->fog)
         v->fog = fog_vertex_value(ctx, v->eye);
+    NUM nf[3];      /* the eye-space normal texture coordinate generation reads */
+    if (ctx->texgen_units)
+        texgen_eye_normal(ctx, index, nf);
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++) {
         if (!(ctx->tex_units_on & (1u << u)))
             continue;
@@ -225,6 +229,8 @@ void vertex_attribs(GlesContext *ctx, int64_t index, Vertex *v)
             array_fetch(ta, array_base(ta), index, 0, tc);
         else
             memcpy(tc, ctx->cur_tex_n[u], sizeof tc);
+        if (ctx->texgen_units & (1u << u))
+            texgen_coords(ctx->units[u].texgen_mode, v->eye, nf, tc);
         const Matrix *tm = ctx->texture[u].top;
         matrix_xform4(tm->n, tm->kind, tc, v->tex[u]);
     }

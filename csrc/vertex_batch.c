@@ -21,6 +21,7 @@
 #include "fragment.h"
 #include "vertex_avx2.h"
 #include "range.h"
+#include "texgen.h"
 
 typedef NUM VbRows[4][VERTEX_BATCH];
 
@@ -345,17 +346,26 @@ void vertex_batch_attribs(GlesContext *ctx, const int64_t *index, Vertex *const 
     if (ctx->fog)
         for (int i = 0; i < n; i++)
             out[i]->fog = fog_vertex_value(ctx, out[i]->eye);
+    /* the eye-space normals texture coordinate generation reads (vertex.c's
+    ** per-vertex functions: the same bits) */
+    NUM nf[VERTEX_BATCH][3];
+    if (ctx->texgen_units)
+        for (int i = 0; i < n; i++)
+            texgen_eye_normal(ctx, index[i], nf[i]);
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++) {
         if (!(ctx->tex_units_on & (1u << u)))
             continue;
         const ArrayState *ta = &ctx->arrays[ARR_TEXCOORD0 + u];
         const Matrix *tm = ctx->texture[u].top;
+        const int gen = (ctx->texgen_units >> u) & 1;
         for (int i = 0; i < n; i++) {
             NUM tc[4] = { NUM_ZERO, NUM_ZERO, NUM_ZERO, NUM_ONE };
             if (ta->enabled)
                 array_fetch(ta, array_base(ta), index[i], 0, tc);
             else
                 memcpy(tc, ctx->cur_tex_n[u], sizeof tc);
+            if (gen)
+                texgen_coords(ctx->units[u].texgen_mode, out[i]->eye, nf[i], tc);
             matrix_xform4(tm->n, tm->kind, tc, out[i]->tex[u]);
         }
     }

@@ -513,7 +513,8 @@ def test_common_lite_has_no_float_commands():
     # commands (glDrawTexfOES) are Common-only too
     core = {n for n in gl.FLOAT_COMMANDS if not n.endswith("OES")}
     assert core == {"gl" + n for n in FLOAT_ONLY}
-    assert {n for n in gl.FLOAT_COMMANDS if n.endswith("OES")} == {"glDrawTexfOES", "glDrawTexfvOES"}
+    assert {n for n in gl.FLOAT_COMMANDS if n.endswith("OES")} == {
+        "glDrawTexfOES", "glDrawTexfvOES", "glTexGenfOES", "glTexGenfvOES", "glGetTexGenfvOES"}
 
 
 def test_module_forwarder_on_common_lite():

@@ -278,7 +278,17 @@ CAPS = [
     C.GL_TEXTURE_2D,
     C.GL_CLIP_PLANE0,
     C.GL_MATRIX_PALETTE_OES,
+    C.GL_TEXTURE_CUBE_MAP_OES,
+    C.GL_TEXTURE_GEN_STR_OES,
 ]
+# TexImage2D's targets: TEXTURE_2D and OES_texture_cube_map's faces
+IMAGE_T = [C.GL_TEXTURE_2D, C.GL_TEXTURE_CUBE_MAP_POSITIVE_X_OES, C.GL_TEXTURE_CUBE_MAP_NEGATIVE_Z_OES,
+           C.GL_TEXTURE_CUBE_MAP_OES]
+# BindTexture's and TexParameter's
+TEX_T = [C.GL_TEXTURE_2D, C.GL_TEXTURE_CUBE_MAP_OES]
+GEN_C = [C.GL_TEXTURE_GEN_STR_OES, C.GL_TEXTURE_2D]
+GEN_P = [C.GL_TEXTURE_GEN_MODE_OES, C.GL_TEXTURE_MIN_FILTER]
+GEN_V = [C.GL_NORMAL_MAP_OES, C.GL_REFLECTION_MAP_OES, 0x2402]
 CLIENT = [
     C.GL_VERTEX_ARRAY,
     C.GL_NORMAL_ARRAY,
@@ -474,7 +484,7 @@ def _tex_image(g: Gen) -> list[Val]:
         else 64
     )
     return [
-        g.enum([C.GL_TEXTURE_2D]),
+        g.enum(IMAGE_T),
         g.int(0, 11),
         fmt,
         w,
@@ -494,7 +504,7 @@ def _tex_sub(g: Gen) -> list[Val]:
         else 64
     )
     return [
-        g.enum([C.GL_TEXTURE_2D]),
+        g.enum(IMAGE_T),
         g.int(0, 4),
         g.int(0, 8),
         g.int(0, 8),
@@ -510,7 +520,7 @@ def _compressed(g: Gen) -> list[Val]:
     level = g.int(-5, 0)
     n = g.r.choice([0, 16, 48, 176, 300, 1024, 2048])
     return [
-        g.enum([C.GL_TEXTURE_2D]),
+        g.enum(IMAGE_T),
         level,
         g.enum(PALETTE),
         g.size(),
@@ -619,7 +629,7 @@ SPECS: dict[str, Spec] = {
     "glAlphaFunc": lambda g: [g.enum(FUNCS), g.float()],
     "glAlphaFuncx": lambda g: [g.enum(FUNCS), g.fixed()],
     "glBindBuffer": lambda g: [g.enum(BUF_T), g.int(0, 6)],
-    "glBindTexture": lambda g: [g.enum([C.GL_TEXTURE_2D]), g.int(0, 6)],
+    "glBindTexture": lambda g: [g.enum(TEX_T), g.int(0, 6)],
     "glBlendEquationOES": _e([C.GL_FUNC_ADD_OES, C.GL_FUNC_SUBTRACT_OES, C.GL_FUNC_REVERSE_SUBTRACT_OES]),
     "glBlendEquationSeparateOES": _e(
         [C.GL_FUNC_ADD_OES, C.GL_FUNC_SUBTRACT_OES], [C.GL_FUNC_ADD_OES, C.GL_FUNC_REVERSE_SUBTRACT_OES]
@@ -735,9 +745,9 @@ SPECS: dict[str, Spec] = {
     "glGetTexEnvfv": _e(ENV_T, ENV_P),
     "glGetTexEnviv": _e(ENV_T, ENV_P),
     "glGetTexEnvxv": _e(ENV_T, ENV_P),
-    "glGetTexParameterfv": _e([C.GL_TEXTURE_2D], TEXP),
-    "glGetTexParameteriv": _e([C.GL_TEXTURE_2D], TEXP),
-    "glGetTexParameterxv": _e([C.GL_TEXTURE_2D], TEXP),
+    "glGetTexParameterfv": _e(TEX_T, TEXP),
+    "glGetTexParameteriv": _e(TEX_T, TEXP),
+    "glGetTexParameterxv": _e(TEX_T, TEXP),
     "glHint": _e(HINT_T, HINT_V),
     "glIsBuffer": lambda g: [g.int(0, 6)],
     "glIsVertexArrayOES": lambda g: [g.int(0, 6)],
@@ -757,7 +767,7 @@ SPECS: dict[str, Spec] = {
     "glCheckFramebufferStatusOES": lambda g: [g.enum(FB_T)],
     "glGetFramebufferAttachmentParameterivOES": lambda g: [g.enum(FB_T), g.enum(FB_ATTACH), g.enum(FB_P)],
     "glGetRenderbufferParameterivOES": lambda g: [g.enum(RB_T), g.enum(RB_P)],
-    "glGenerateMipmapOES": lambda g: [g.enum([C.GL_TEXTURE_2D, C.GL_TEXTURE])],
+    "glGenerateMipmapOES": lambda g: [g.enum([C.GL_TEXTURE_2D, C.GL_TEXTURE_CUBE_MAP_OES, C.GL_TEXTURE])],
     "glDiscardFramebufferEXT": _discard,
     "glMapBufferOES": lambda g: [g.enum(BUF_T), g.enum([C.GL_WRITE_ONLY_OES, 0x88B8])],
     "glUnmapBufferOES": lambda g: [g.enum(BUF_T)],
@@ -834,12 +844,21 @@ SPECS: dict[str, Spec] = {
     "glTexEnvxv": _scalar_param(ENV_T, ENV_P, "x", 4, ENV_V),
     "glTexImage2D": _tex_image,
     "glTexSubImage2D": _tex_sub,
-    "glTexParameterf": _scalar_param([C.GL_TEXTURE_2D], TEXP, "f", values=TEXP_V),
-    "glTexParameteri": _scalar_param([C.GL_TEXTURE_2D], TEXP, "i", values=TEXP_V),
-    "glTexParameterx": _scalar_param([C.GL_TEXTURE_2D], TEXP, "x", values=TEXP_V),
-    "glTexParameterfv": _scalar_param([C.GL_TEXTURE_2D], TEXP, "f", 4, TEXP_V),
-    "glTexParameteriv": _scalar_param([C.GL_TEXTURE_2D], TEXP, "i", 4, TEXP_V),
-    "glTexParameterxv": _scalar_param([C.GL_TEXTURE_2D], TEXP, "x", 4, TEXP_V),
+    "glTexParameterf": _scalar_param(TEX_T, TEXP, "f", values=TEXP_V),
+    "glTexParameteri": _scalar_param(TEX_T, TEXP, "i", values=TEXP_V),
+    "glTexParameterx": _scalar_param(TEX_T, TEXP, "x", values=TEXP_V),
+    "glTexParameterfv": _scalar_param(TEX_T, TEXP, "f", 4, TEXP_V),
+    "glTexGenfOES": _scalar_param(GEN_C, GEN_P, "f", values=GEN_V),
+    "glTexGenfvOES": _scalar_param(GEN_C, GEN_P, "f", 1, GEN_V),
+    "glGetTexGenfvOES": _e(GEN_C, GEN_P),
+    "glTexParameteriv": _scalar_param(TEX_T, TEXP, "i", 4, TEXP_V),
+    "glTexGeniOES": _scalar_param(GEN_C, GEN_P, "i", values=GEN_V),
+    "glTexGenivOES": _scalar_param(GEN_C, GEN_P, "i", 1, GEN_V),
+    "glGetTexGenivOES": _e(GEN_C, GEN_P),
+    "glTexParameterxv": _scalar_param(TEX_T, TEXP, "x", 4, TEXP_V),
+    "glTexGenxOES": _scalar_param(GEN_C, GEN_P, "x", values=GEN_V),
+    "glTexGenxvOES": _scalar_param(GEN_C, GEN_P, "x", 1, GEN_V),
+    "glGetTexGenxvOES": _e(GEN_C, GEN_P),
 }
 # commands drawn more often: they make the state the others act on
 WEIGHTS = {
@@ -1039,8 +1058,10 @@ def snapshot(view: CoreView) -> tuple:
             s.append(view.lm("gles_GetMaterial", face, p))
     for p in ENV_P[:-1]:
         s.append(view.lm("gles_GetTexEnv", C.GL_TEXTURE_ENV, p))
-    for p in TEXP:
-        s.append(view.lm("gles_GetTexParameter", C.GL_TEXTURE_2D, p))
+    for t in TEX_T:
+        for p in TEXP:
+            s.append(view.lm("gles_GetTexParameter", t, p))
+    s.append(view.lm("gles_GetTexGen", C.GL_TEXTURE_GEN_STR_OES, C.GL_TEXTURE_GEN_MODE_OES))
     eq = view.ffi.new("double[4]")
     view.lib.gles_GetClipPlane(view.p, C.GL_CLIP_PLANE0, eq)
     s.append(tuple(eq))
@@ -1093,6 +1114,7 @@ SNAP_GET = [
     C.GL_LOGIC_OP_MODE,
     C.GL_FOG_MODE,
     C.GL_TEXTURE_BINDING_2D,
+    C.GL_TEXTURE_BINDING_CUBE_MAP_OES,
     C.GL_MODELVIEW_MATRIX,
     C.GL_PROJECTION_MATRIX,
     C.GL_TEXTURE_MATRIX,
@@ -1440,8 +1462,11 @@ _VECTOR_COUNTS = {
     "PointParameter": {C.GL_POINT_DISTANCE_ATTENUATION: 3},
     "TexParameter": {C.GL_TEXTURE_CROP_RECT_OES: 4},
     "TexEnv": {C.GL_TEXTURE_ENV_COLOR: 4},
+    "TexGen": {},
 }
-_VECTOR_COMMAND = re.compile(r"gl(LightModel|Light|Material|Fog|PointParameter|TexParameter|TexEnv)[fix]v$")
+_VECTOR_COMMAND = re.compile(
+    r"gl(LightModel|Light|Material|Fog|PointParameter|TexParameter|TexEnv|TexGen)[fix]v(OES)?$"
+)
 
 
 def _values(obj: Any) -> int | None:

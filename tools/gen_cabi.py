@@ -217,6 +217,15 @@ glGetFramebufferAttachmentParameterivOES  gles_GetFramebufferAttachmentParameter
 glGetRenderbufferParameterivOES  gles_GetRenderbufferParameterivOES(C, target, pname, params)
 glGenerateMipmapOES             gles_GenerateMipmapOES(C, target)
 glDiscardFramebufferEXT         gles_DiscardFramebufferEXT(C, target, numAttachments, attachments)
+glTexGenfOES               F    tex_gen_f(C, coord, pname, param)
+glTexGenfvOES              F    tex_gen_fv(C, coord, pname, params)
+glTexGeniOES                    tex_gen_i(C, coord, pname, param)
+glTexGenivOES                   tex_gen_iv(C, coord, pname, params)
+glTexGenxOES                    tex_gen_x(C, coord, pname, param)
+glTexGenxvOES                   tex_gen_xv(C, coord, pname, params)
+glGetTexGenfvOES           F    get_tex_gen_f(C, coord, pname, params)
+glGetTexGenivOES                get_tex_gen_i(C, coord, pname, params)
+glGetTexGenxvOES                get_tex_gen_x(C, coord, pname, params)
 """
 
 # Pointer arguments a C caller may pass as NULL: the core gives NULL its

@@ -28,8 +28,14 @@ EXTENSIONS = (
     "GL_OES_blend_equation_separate", "GL_OES_blend_func_separate", "GL_OES_blend_subtract",
     "GL_OES_draw_texture", "GL_OES_matrix_palette", "GL_OES_query_matrix", "GL_OES_vertex_array_object",
     "GL_OES_mapbuffer", "GL_EXT_map_buffer_range", "GL_EXT_multi_draw_arrays", "GL_OES_framebuffer_object",
-    "GL_EXT_discard_framebuffer",
+    "GL_EXT_discard_framebuffer", "GL_OES_texture_cube_map",
 )
+
+# commands a header lists under another extension's block than the one
+# gles implements them for: OES_texture_cube_map's fixed-point forms sit in
+# glext.h's OES_fixed_point block
+BORROWED = {"glTexGenxOES": "GL_OES_texture_cube_map", "glTexGenxvOES": "GL_OES_texture_cube_map",
+            "glGetTexGenxvOES": "GL_OES_texture_cube_map"}
 
 PROTO = re.compile(r"^GL_API\s+(?P<ret>[\w\s\*]+?)\s*GL_APIENTRY\s+(?P<name>gl\w+)\s*\((?P<params>[^)]*)\);")
 EXT_OPEN = re.compile(r"^#ifndef\s+(GL_[A-Z]+_\w+)\s*$")
@@ -83,7 +89,7 @@ def parse(path: Path, wanted: tuple[str, ...] | None) -> list[Row]:
         m = PROTO.match(line.strip())
         if not m:
             continue
-        if wanted is not None and ext not in wanted:
+        if wanted is not None and ext not in wanted and m.group("name") not in BORROWED:
             continue
         params = []
         text = m.group("params").strip()
@@ -95,7 +101,7 @@ def parse(path: Path, wanted: tuple[str, ...] | None) -> list[Row]:
                 pname = RENAMES.get(m.group("name"), {}).get(pm.group("name"), pm.group("name"))
                 params.append((pname, ctype.replace("* *", "**")))
         out.append((m.group("name"), " ".join(m.group("ret").split()), params,
-                    None if wanted is None else ext))
+                    None if wanted is None else BORROWED.get(m.group("name"), ext)))
     return out
 
 

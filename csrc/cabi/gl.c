@@ -521,6 +521,9 @@ static int tex_parameter_count(GLenum pname) { return pname == GL_TEXTURE_CROP_R
 
 static int tex_env_count(GLenum pname) { return pname == GL_TEXTURE_ENV_COLOR ? 4 : 1; }
 
+/* TexGen*vOES reads one value (TEXTURE_GEN_MODE_OES, an enum) */
+static int tex_gen_count(GLenum pname) { (void)pname; return 1; }
+
 static int tex_real(GLenum pname)
 {
     return pname == GL_TEXTURE_ENV_COLOR || pname == GL_RGB_SCALE || pname == GL_ALPHA_SCALE
@@ -551,6 +554,7 @@ static void tex_values_i(GLenum pname, const GLint *p, int n, double out[4])
 
 TEX_SETTERS(tex_parameter, gles_TexParameter, tex_parameter_count)
 TEX_SETTERS(tex_env, gles_TexEnv, tex_env_count)
+TEX_SETTERS(tex_gen, gles_TexGen, tex_gen_count)
 
 #define TEX_GETTERS(Name, core) \
     static void Name##_i(GlesContext *C, GLenum target, GLenum pname, GLint *params) \
@@ -570,6 +574,7 @@ TEX_SETTERS(tex_env, gles_TexEnv, tex_env_count)
 
 TEX_GETTERS(get_tex_parameter, gles_GetTexParameter)
 TEX_GETTERS(get_tex_env, gles_GetTexEnv)
+TEX_GETTERS(get_tex_gen, gles_GetTexGen)
 
 #if GLES_CABI_COMMON
 #define TEX_FLOAT(Name, core, getcore, getname, count) \
@@ -592,6 +597,7 @@ TEX_GETTERS(get_tex_env, gles_GetTexEnv)
 
 TEX_FLOAT(tex_parameter, gles_TexParameter, gles_GetTexParameter, get_tex_parameter, tex_parameter_count)
 TEX_FLOAT(tex_env, gles_TexEnv, gles_GetTexEnv, get_tex_env, tex_env_count)
+TEX_FLOAT(tex_gen, gles_TexGen, gles_GetTexGen, get_tex_gen, tex_gen_count)
 #endif
 
 /* {====================================================================

@@ -1386,6 +1386,75 @@ GL_API void GL_APIENTRY glDiscardFramebufferEXT (GLenum target, GLsizei numAttac
         gles_DiscardFramebufferEXT(C, target, numAttachments, attachments);
 }
 
+#if GLES_CABI_COMMON
+GL_API void GL_APIENTRY glTexGenfOES (GLenum coord, GLenum pname, GLfloat param)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C)
+        tex_gen_f(C, coord, pname, param);
+}
+#endif
+
+#if GLES_CABI_COMMON
+GL_API void GL_APIENTRY glTexGenfvOES (GLenum coord, GLenum pname, const GLfloat *params)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C && params)
+        tex_gen_fv(C, coord, pname, params);
+}
+#endif
+
+GL_API void GL_APIENTRY glTexGeniOES (GLenum coord, GLenum pname, GLint param)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C)
+        tex_gen_i(C, coord, pname, param);
+}
+
+GL_API void GL_APIENTRY glTexGenivOES (GLenum coord, GLenum pname, const GLint *params)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C && params)
+        tex_gen_iv(C, coord, pname, params);
+}
+
+GL_API void GL_APIENTRY glTexGenxOES (GLenum coord, GLenum pname, GLfixed param)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C)
+        tex_gen_x(C, coord, pname, param);
+}
+
+GL_API void GL_APIENTRY glTexGenxvOES (GLenum coord, GLenum pname, const GLfixed *params)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C && params)
+        tex_gen_xv(C, coord, pname, params);
+}
+
+#if GLES_CABI_COMMON
+GL_API void GL_APIENTRY glGetTexGenfvOES (GLenum coord, GLenum pname, GLfloat *params)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C && params)
+        get_tex_gen_f(C, coord, pname, params);
+}
+#endif
+
+GL_API void GL_APIENTRY glGetTexGenivOES (GLenum coord, GLenum pname, GLint *params)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C && params)
+        get_tex_gen_i(C, coord, pname, params);
+}
+
+GL_API void GL_APIENTRY glGetTexGenxvOES (GLenum coord, GLenum pname, GLfixed *params)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C && params)
+        get_tex_gen_x(C, coord, pname, params);
+}
+
 /* every entry point by name, for eglGetProcAddress (sorted for bsearch) */
 static const GlesProc gles_cabi_procs[] = {
     {"glActiveTexture", (GlesProcFn)glActiveTexture},
@@ -1518,6 +1587,11 @@ static const GlesProc gles_cabi_procs[] = {
     {"glGetTexEnviv", (GlesProcFn)glGetTexEnviv},
     {"glGetTexEnvxv", (GlesProcFn)glGetTexEnvxv},
 #if GLES_CABI_COMMON
+    {"glGetTexGenfvOES", (GlesProcFn)glGetTexGenfvOES},
+#endif
+    {"glGetTexGenivOES", (GlesProcFn)glGetTexGenivOES},
+    {"glGetTexGenxvOES", (GlesProcFn)glGetTexGenxvOES},
+#if GLES_CABI_COMMON
     {"glGetTexParameterfv", (GlesProcFn)glGetTexParameterfv},
 #endif
     {"glGetTexParameteriv", (GlesProcFn)glGetTexParameteriv},
@@ -1638,6 +1712,16 @@ static const GlesProc gles_cabi_procs[] = {
     {"glTexEnviv", (GlesProcFn)glTexEnviv},
     {"glTexEnvx", (GlesProcFn)glTexEnvx},
     {"glTexEnvxv", (GlesProcFn)glTexEnvxv},
+#if GLES_CABI_COMMON
+    {"glTexGenfOES", (GlesProcFn)glTexGenfOES},
+#endif
+#if GLES_CABI_COMMON
+    {"glTexGenfvOES", (GlesProcFn)glTexGenfvOES},
+#endif
+    {"glTexGeniOES", (GlesProcFn)glTexGeniOES},
+    {"glTexGenivOES", (GlesProcFn)glTexGenivOES},
+    {"glTexGenxOES", (GlesProcFn)glTexGenxOES},
+    {"glTexGenxvOES", (GlesProcFn)glTexGenxvOES},
     {"glTexImage2D", (GlesProcFn)glTexImage2D},
 #if GLES_CABI_COMMON
     {"glTexParameterf", (GlesProcFn)glTexParameterf},

@@ -3,8 +3,8 @@
 ** One case per recorded core function: read its arguments from the trace,
 ** then (when run is set) call it. Included by replay.c only.
 */
-#define REPLAY_CALL_COUNT 131
-#define REPLAY_TABLE_HASH 0x36D28DA2u
+#define REPLAY_CALL_COUNT 133
+#define REPLAY_TABLE_HASH 0x4881A9D4u
 
 static const char *const replay_call_names[REPLAY_CALL_COUNT] = {
     "gles_threads_set",
@@ -87,6 +87,8 @@ static const char *const replay_call_names[REPLAY_CALL_COUNT] = {
     "gles_GetTexParameter",
     "gles_TexEnv",
     "gles_GetTexEnv",
+    "gles_TexGen",
+    "gles_GetTexGen",
     "gles_PointSize",
     "gles_LineWidth",
     "gles_PointParameter",
@@ -749,19 +751,36 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GetTexEnv(rp->ctx, a0, a1, a2.ptr);
         break;
     }
-    case 80: { /* gles_PointSize */
+    case 80: { /* gles_TexGen */
+        unsigned int a0 = rd_u32(r);
+        unsigned int a1 = rd_u32(r);
+        double a2[16]; rd_doubles(r, a2);
+        int a3 = rd_i32(r);
+        if (r->failed || !run) break;
+        (void)gles_TexGen(rp->ctx, a0, a1, a2, a3);
+        break;
+    }
+    case 81: { /* gles_GetTexGen */
+        unsigned int a0 = rd_u32(r);
+        unsigned int a1 = rd_u32(r);
+        ReplayDatum a2; rd_output(rp, r, &a2, 0);
+        if (r->failed || !run) break;
+        (void)gles_GetTexGen(rp->ctx, a0, a1, a2.ptr);
+        break;
+    }
+    case 82: { /* gles_PointSize */
         double a0 = rd_f64(r);
         if (r->failed || !run) break;
         (void)gles_PointSize(rp->ctx, a0);
         break;
     }
-    case 81: { /* gles_LineWidth */
+    case 83: { /* gles_LineWidth */
         double a0 = rd_f64(r);
         if (r->failed || !run) break;
         (void)gles_LineWidth(rp->ctx, a0);
         break;
     }
-    case 82: { /* gles_PointParameter */
+    case 84: { /* gles_PointParameter */
         unsigned int a0 = rd_u32(r);
         double a1[16]; rd_doubles(r, a1);
         int a2 = rd_i32(r);
@@ -769,14 +788,14 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_PointParameter(rp->ctx, a0, a1, a2);
         break;
     }
-    case 83: { /* gles_PolygonOffset */
+    case 85: { /* gles_PolygonOffset */
         double a0 = rd_f64(r);
         double a1 = rd_f64(r);
         if (r->failed || !run) break;
         (void)gles_PolygonOffset(rp->ctx, a0, a1);
         break;
     }
-    case 84: { /* gles_DrawTexOES */
+    case 86: { /* gles_DrawTexOES */
         double a0 = rd_f64(r);
         double a1 = rd_f64(r);
         double a2 = rd_f64(r);
@@ -786,7 +805,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DrawTexOES(rp->ctx, a0, a1, a2, a3, a4);
         break;
     }
-    case 85: { /* gles_Color4 */
+    case 87: { /* gles_Color4 */
         double a0 = rd_f64(r);
         double a1 = rd_f64(r);
         double a2 = rd_f64(r);
@@ -795,7 +814,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_Color4(rp->ctx, a0, a1, a2, a3);
         break;
     }
-    case 86: { /* gles_Normal3 */
+    case 88: { /* gles_Normal3 */
         double a0 = rd_f64(r);
         double a1 = rd_f64(r);
         double a2 = rd_f64(r);
@@ -803,7 +822,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_Normal3(rp->ctx, a0, a1, a2);
         break;
     }
-    case 87: { /* gles_MultiTexCoord4 */
+    case 89: { /* gles_MultiTexCoord4 */
         unsigned int a0 = rd_u32(r);
         double a1 = rd_f64(r);
         double a2 = rd_f64(r);
@@ -813,7 +832,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_MultiTexCoord4(rp->ctx, a0, a1, a2, a3, a4);
         break;
     }
-    case 88: { /* gles_VertexPointer */
+    case 90: { /* gles_VertexPointer */
         int a0 = rd_i32(r);
         unsigned int a1 = rd_u32(r);
         int a2 = rd_i32(r);
@@ -822,7 +841,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_VertexPointer(rp->ctx, a0, a1, a2, a3.ptr, a3.nbytes);
         break;
     }
-    case 89: { /* gles_ColorPointer */
+    case 91: { /* gles_ColorPointer */
         int a0 = rd_i32(r);
         unsigned int a1 = rd_u32(r);
         int a2 = rd_i32(r);
@@ -831,7 +850,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_ColorPointer(rp->ctx, a0, a1, a2, a3.ptr, a3.nbytes);
         break;
     }
-    case 90: { /* gles_NormalPointer */
+    case 92: { /* gles_NormalPointer */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         ReplayDatum a2; rd_datum(rp, r, &a2, 1, 0x8894u, run);
@@ -839,7 +858,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_NormalPointer(rp->ctx, a0, a1, a2.ptr, a2.nbytes);
         break;
     }
-    case 91: { /* gles_TexCoordPointer */
+    case 93: { /* gles_TexCoordPointer */
         int a0 = rd_i32(r);
         unsigned int a1 = rd_u32(r);
         int a2 = rd_i32(r);
@@ -848,7 +867,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_TexCoordPointer(rp->ctx, a0, a1, a2, a3.ptr, a3.nbytes);
         break;
     }
-    case 92: { /* gles_PointSizePointerOES */
+    case 94: { /* gles_PointSizePointerOES */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         ReplayDatum a2; rd_datum(rp, r, &a2, 1, 0x8894u, run);
@@ -856,7 +875,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_PointSizePointerOES(rp->ctx, a0, a1, a2.ptr, a2.nbytes);
         break;
     }
-    case 93: { /* gles_GenBuffers */
+    case 95: { /* gles_GenBuffers */
         int a0 = rd_i32(r);
         ReplayDatum a1; rd_output(rp, r, &a1, 0);
         if (a0 > 0 && (a1.ptr == NULL || (uint64_t)a0 * 4u > (uint64_t)a1.nbytes)) rd_fail(r, "n exceeds the output stored");
@@ -864,7 +883,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GenBuffers(rp->ctx, a0, a1.ptr);
         break;
     }
-    case 94: { /* gles_DeleteBuffers */
+    case 96: { /* gles_DeleteBuffers */
         int a0 = rd_i32(r);
         const unsigned int *a1; uint32_t a1_n = rd_uints(r, &a1);
         if (a0 > 0 && (uint32_t)a0 > a1_n) rd_fail(r, "n exceeds the names stored");
@@ -872,14 +891,14 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DeleteBuffers(rp->ctx, a0, a1);
         break;
     }
-    case 95: { /* gles_BindBuffer */
+    case 97: { /* gles_BindBuffer */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_BindBuffer(rp->ctx, a0, a1);
         break;
     }
-    case 96: { /* gles_BufferData */
+    case 98: { /* gles_BufferData */
         unsigned int a0 = rd_u32(r);
         int64_t a1 = rd_i64(r);
         ReplayDatum a2; rd_datum(rp, r, &a2, 0, 0x8894u, run);
@@ -889,7 +908,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_BufferData(rp->ctx, a0, a1, a2.ptr, a3);
         break;
     }
-    case 97: { /* gles_BufferSubData */
+    case 99: { /* gles_BufferSubData */
         unsigned int a0 = rd_u32(r);
         int64_t a1 = rd_i64(r);
         int64_t a2 = rd_i64(r);
@@ -899,20 +918,20 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_BufferSubData(rp->ctx, a0, a1, a2, a3.ptr);
         break;
     }
-    case 98: { /* gles_IsBuffer */
+    case 100: { /* gles_IsBuffer */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_IsBuffer(rp->ctx, a0);
         break;
     }
-    case 99: { /* gles_MapBufferOES */
+    case 101: { /* gles_MapBufferOES */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_MapBufferOES(rp->ctx, a0, a1);
         break;
     }
-    case 100: { /* gles_MapBufferRangeEXT */
+    case 102: { /* gles_MapBufferRangeEXT */
         unsigned int a0 = rd_u32(r);
         int64_t a1 = rd_i64(r);
         int64_t a2 = rd_i64(r);
@@ -921,7 +940,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_MapBufferRangeEXT(rp->ctx, a0, a1, a2, a3);
         break;
     }
-    case 101: { /* gles_FlushMappedBufferRangeEXT */
+    case 103: { /* gles_FlushMappedBufferRangeEXT */
         unsigned int a0 = rd_u32(r);
         int64_t a1 = rd_i64(r);
         int64_t a2 = rd_i64(r);
@@ -929,13 +948,13 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_FlushMappedBufferRangeEXT(rp->ctx, a0, a1, a2);
         break;
     }
-    case 102: { /* gles_UnmapBufferOES */
+    case 104: { /* gles_UnmapBufferOES */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_UnmapBufferOES(rp->ctx, a0);
         break;
     }
-    case 103: { /* gles_buffer_map_write */
+    case 105: { /* gles_buffer_map_write */
         unsigned int a0 = rd_u32(r);
         int64_t a1 = rd_i64(r);
         ReplayDatum a2; rd_datum(rp, r, &a2, 1, 0x8894u, run);
@@ -943,7 +962,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_buffer_map_write(rp->ctx, a0, a1, a2.ptr, a2.nbytes);
         break;
     }
-    case 104: { /* gles_GenFramebuffersOES */
+    case 106: { /* gles_GenFramebuffersOES */
         int a0 = rd_i32(r);
         ReplayDatum a1; rd_output(rp, r, &a1, 0);
         if (a0 > 0 && (a1.ptr == NULL || (uint64_t)a0 * 4u > (uint64_t)a1.nbytes)) rd_fail(r, "n exceeds the output stored");
@@ -951,7 +970,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GenFramebuffersOES(rp->ctx, a0, a1.ptr);
         break;
     }
-    case 105: { /* gles_GenRenderbuffersOES */
+    case 107: { /* gles_GenRenderbuffersOES */
         int a0 = rd_i32(r);
         ReplayDatum a1; rd_output(rp, r, &a1, 0);
         if (a0 > 0 && (a1.ptr == NULL || (uint64_t)a0 * 4u > (uint64_t)a1.nbytes)) rd_fail(r, "n exceeds the output stored");
@@ -959,21 +978,21 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GenRenderbuffersOES(rp->ctx, a0, a1.ptr);
         break;
     }
-    case 106: { /* gles_BindFramebufferOES */
+    case 108: { /* gles_BindFramebufferOES */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_BindFramebufferOES(rp->ctx, a0, a1);
         break;
     }
-    case 107: { /* gles_BindRenderbufferOES */
+    case 109: { /* gles_BindRenderbufferOES */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_BindRenderbufferOES(rp->ctx, a0, a1);
         break;
     }
-    case 108: { /* gles_DeleteFramebuffersOES */
+    case 110: { /* gles_DeleteFramebuffersOES */
         int a0 = rd_i32(r);
         const unsigned int *a1; uint32_t a1_n = rd_uints(r, &a1);
         if (a0 > 0 && (uint32_t)a0 > a1_n) rd_fail(r, "n exceeds the names stored");
@@ -981,7 +1000,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DeleteFramebuffersOES(rp->ctx, a0, a1);
         break;
     }
-    case 109: { /* gles_DeleteRenderbuffersOES */
+    case 111: { /* gles_DeleteRenderbuffersOES */
         int a0 = rd_i32(r);
         const unsigned int *a1; uint32_t a1_n = rd_uints(r, &a1);
         if (a0 > 0 && (uint32_t)a0 > a1_n) rd_fail(r, "n exceeds the names stored");
@@ -989,19 +1008,19 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DeleteRenderbuffersOES(rp->ctx, a0, a1);
         break;
     }
-    case 110: { /* gles_IsFramebufferOES */
+    case 112: { /* gles_IsFramebufferOES */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_IsFramebufferOES(rp->ctx, a0);
         break;
     }
-    case 111: { /* gles_IsRenderbufferOES */
+    case 113: { /* gles_IsRenderbufferOES */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_IsRenderbufferOES(rp->ctx, a0);
         break;
     }
-    case 112: { /* gles_RenderbufferStorageOES */
+    case 114: { /* gles_RenderbufferStorageOES */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         int a2 = rd_i32(r);
@@ -1010,7 +1029,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_RenderbufferStorageOES(rp->ctx, a0, a1, a2, a3);
         break;
     }
-    case 113: { /* gles_FramebufferTexture2DOES */
+    case 115: { /* gles_FramebufferTexture2DOES */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         unsigned int a2 = rd_u32(r);
@@ -1020,7 +1039,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_FramebufferTexture2DOES(rp->ctx, a0, a1, a2, a3, a4);
         break;
     }
-    case 114: { /* gles_FramebufferRenderbufferOES */
+    case 116: { /* gles_FramebufferRenderbufferOES */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         unsigned int a2 = rd_u32(r);
@@ -1029,13 +1048,13 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_FramebufferRenderbufferOES(rp->ctx, a0, a1, a2, a3);
         break;
     }
-    case 115: { /* gles_CheckFramebufferStatusOES */
+    case 117: { /* gles_CheckFramebufferStatusOES */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_CheckFramebufferStatusOES(rp->ctx, a0);
         break;
     }
-    case 116: { /* gles_GetFramebufferAttachmentParameterivOES */
+    case 118: { /* gles_GetFramebufferAttachmentParameterivOES */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         unsigned int a2 = rd_u32(r);
@@ -1044,7 +1063,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GetFramebufferAttachmentParameterivOES(rp->ctx, a0, a1, a2, a3.ptr);
         break;
     }
-    case 117: { /* gles_GetRenderbufferParameterivOES */
+    case 119: { /* gles_GetRenderbufferParameterivOES */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         ReplayDatum a2; rd_output(rp, r, &a2, 0);
@@ -1052,13 +1071,13 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GetRenderbufferParameterivOES(rp->ctx, a0, a1, a2.ptr);
         break;
     }
-    case 118: { /* gles_GenerateMipmapOES */
+    case 120: { /* gles_GenerateMipmapOES */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_GenerateMipmapOES(rp->ctx, a0);
         break;
     }
-    case 119: { /* gles_DiscardFramebufferEXT */
+    case 121: { /* gles_DiscardFramebufferEXT */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         const unsigned int *a2; uint32_t a2_n = rd_uints(r, &a2);
@@ -1067,7 +1086,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DiscardFramebufferEXT(rp->ctx, a0, a1, a2);
         break;
     }
-    case 120: { /* gles_GenVertexArraysOES */
+    case 122: { /* gles_GenVertexArraysOES */
         int a0 = rd_i32(r);
         ReplayDatum a1; rd_output(rp, r, &a1, 0);
         if (a0 > 0 && (a1.ptr == NULL || (uint64_t)a0 * 4u > (uint64_t)a1.nbytes)) rd_fail(r, "n exceeds the output stored");
@@ -1075,7 +1094,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GenVertexArraysOES(rp->ctx, a0, a1.ptr);
         break;
     }
-    case 121: { /* gles_DeleteVertexArraysOES */
+    case 123: { /* gles_DeleteVertexArraysOES */
         int a0 = rd_i32(r);
         const unsigned int *a1; uint32_t a1_n = rd_uints(r, &a1);
         if (a0 > 0 && (uint32_t)a0 > a1_n) rd_fail(r, "n exceeds the names stored");
@@ -1083,19 +1102,19 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DeleteVertexArraysOES(rp->ctx, a0, a1);
         break;
     }
-    case 122: { /* gles_BindVertexArrayOES */
+    case 124: { /* gles_BindVertexArrayOES */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_BindVertexArrayOES(rp->ctx, a0);
         break;
     }
-    case 123: { /* gles_IsVertexArrayOES */
+    case 125: { /* gles_IsVertexArrayOES */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_IsVertexArrayOES(rp->ctx, a0);
         break;
     }
-    case 124: { /* gles_GetBufferParameteriv */
+    case 126: { /* gles_GetBufferParameteriv */
         unsigned int a0 = rd_u32(r);
         unsigned int a1 = rd_u32(r);
         ReplayDatum a2; rd_output(rp, r, &a2, 0);
@@ -1103,7 +1122,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GetBufferParameteriv(rp->ctx, a0, a1, a2.ptr);
         break;
     }
-    case 125: { /* gles_DrawArrays */
+    case 127: { /* gles_DrawArrays */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -1111,7 +1130,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DrawArrays(rp->ctx, a0, a1, a2);
         break;
     }
-    case 126: { /* gles_DrawElements */
+    case 128: { /* gles_DrawElements */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         unsigned int a2 = rd_u32(r);
@@ -1120,13 +1139,13 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DrawElements(rp->ctx, a0, a1, a2, a3.ptr, a3.nbytes);
         break;
     }
-    case 127: { /* gles_Clear */
+    case 129: { /* gles_Clear */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_Clear(rp->ctx, a0);
         break;
     }
-    case 128: { /* gles_ReadPixels */
+    case 130: { /* gles_ReadPixels */
         int a0 = rd_i32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -1138,12 +1157,12 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_ReadPixels(rp->ctx, a0, a1, a2, a3, a4, a5, a6.ptr, a6.nbytes);
         break;
     }
-    case 129: { /* gles_Finish */
+    case 131: { /* gles_Finish */
         if (r->failed || !run) break;
         (void)gles_Finish(rp->ctx);
         break;
     }
-    case 130: { /* gles_Flush */
+    case 132: { /* gles_Flush */
         if (r->failed || !run) break;
         (void)gles_Flush(rp->ctx);
         break;

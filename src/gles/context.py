@@ -61,6 +61,7 @@ EXTENSION_PROFILES = {
     "GL_OES_framebuffer_object": "both", "GL_OES_rgb8_rgba8": "both", "GL_OES_depth24": "both",
     "GL_OES_stencil8": "both", "GL_OES_packed_depth_stencil": "both", "GL_OES_fbo_render_mipmap": "both",
     "GL_EXT_discard_framebuffer": "both", "GL_EXT_texture_filter_anisotropic": "both",
+    "GL_OES_texture_cube_map": "both",
 }
 EXTENSIONS = {profile: [e for e, where in EXTENSION_PROFILES.items() if where in ("both", profile)]
               for profile in ("common", "common-lite")}

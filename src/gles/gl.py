@@ -828,6 +828,14 @@ class GLBase:
     def glGetTexEnvxv(self, target: int, pname: int) -> Any:
         return self._tex_get(self._lib.gles_GetTexEnv, target, pname, "x")
 
+    def glGetTexGenivOES(self, coord: int, pname: int) -> Any:
+        """TEXTURE_GEN_MODE_OES of the active unit's TEXTURE_GEN_STR_OES (OES_texture_cube_map)."""
+        return self._tex_get(self._lib.gles_GetTexGen, coord, pname, "i")
+
+    def glGetTexGenxvOES(self, coord: int, pname: int) -> Any:
+        """The same; the mode is an enum, unscaled (§6.1.2)."""
+        return self._tex_get(self._lib.gles_GetTexGen, coord, pname, "x")
+
     # {================================================================
     # points, lines and polygon offset (§3.3-3.5)
 
@@ -1294,6 +1302,9 @@ class GLCommon(GLBase):
     def glGetTexEnvfv(self, target: int, pname: int) -> Any:
         return self._tex_get(self._lib.gles_GetTexEnv, target, pname, "f")
 
+    def glGetTexGenfvOES(self, coord: int, pname: int) -> Any:
+        return self._tex_get(self._lib.gles_GetTexGen, coord, pname, "f")
+
     def glDrawTexfOES(self, x: float, y: float, z: float, width: float, height: float) -> None:
         self._draw_tex([_real(v) for v in (x, y, z, width, height)])
 
@@ -1385,14 +1396,22 @@ _PLAIN_KINDS = frozenset({"enum", "int", "sizei", "uint", "bitfield", "bool", "f
 # the pname commands (glLightxv, glTexEnvi, ...): how each family's values
 # read, by the core function they call
 _PNAME_FAMILIES = {"Light": "lighting", "LightModel": "lighting", "Material": "lighting",
-                   "PointParameter": "lighting", "Fog": "fog", "TexParameter": "tex", "TexEnv": "tex"}
+                   "PointParameter": "lighting", "Fog": "fog", "TexParameter": "tex", "TexEnv": "tex",
+                   "TexGen": "tex"}
+
+
+def _unsuffixed(name: str) -> str:
+    """A command's name without gl and an extension's OES suffix
+    (glTexGenfvOES: TexGenfv); the core entry and the forms read the rest."""
+    stem = name[2:]
+    return stem[:-3] if stem.endswith("OES") and stem[:-3].rstrip("v")[-1:] in ("x", "f", "i") else stem
 
 
 def _pname_form(cmd: Command) -> tuple[str, str, bool] | None:
     """(family, form, vector) of a pname command that sets state, else None."""
     if cmd.name.startswith("glGet") or not any(p.name == "pname" for p in cmd.params):
         return None
-    stem = cmd.name[2:]
+    stem = _unsuffixed(cmd.name)
     vector = stem.endswith("v")
     stem = stem[:-1] if vector else stem
     family = _PNAME_FAMILIES.get(stem[:-1])
@@ -1401,7 +1420,7 @@ def _pname_form(cmd: Command) -> tuple[str, str, bool] | None:
 
 def _pname_source(cmd: Command, family: str, form: str, vector: bool) -> str:
     *lead, value = [p.name for p in cmd.params]
-    core = "gles_" + cmd.name[2:].rstrip("v")[:-1]
+    core = "gles_" + _unsuffixed(cmd.name).rstrip("v")[:-1]
     return (f"def {cmd.name}(self, {', '.join(lead + [value])}):\n"
             f"    buf = self._pname_values({family!r}, pname, {value}, {form!r}, {vector}, {cmd.name!r})\n"
             f"    with self._lock:\n"

@@ -319,8 +319,11 @@ _VECTOR_REALS: dict[str, tuple[int, Callable[[tuple], int]]] = {
 }
 
 # every float command is checked (glTexParameterf/fv for its one real,
-# EXT_texture_filter_anisotropic's TEXTURE_MAX_ANISOTROPY_EXT)
-UNCHECKED_FLOAT_COMMANDS: tuple[str, ...] = ()
+# EXT_texture_filter_anisotropic's TEXTURE_MAX_ANISOTROPY_EXT) but
+# OES_texture_cube_map's glTexGenfOES/fvOES, whose one pname takes an enum
+# given as a number (NORMAL_MAP_OES is 34065, past 16.16's range but no
+# real: unscaled, as glTexEnvf's modes and glFogf's FOG_MODE)
+UNCHECKED_FLOAT_COMMANDS: tuple[str, ...] = ("glTexGenfOES", "glTexGenfvOES")
 CHECKED_COMMANDS = sorted(set(_SCALAR_REALS) | set(_VECTOR_REALS))
 
 
