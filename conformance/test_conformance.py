@@ -103,6 +103,12 @@ KNOWN_DEVIATIONS: tuple[Deviation, ...] = (
               "softpipe: sprite footprint off by one pixel; OES_point_sprite (docs/conformance.md)"),
     Deviation("LineRaster", "mesa-softpipe", None, None,
               "softpipe: a column's fragment one row off the line; §3.4.1 (docs/conformance.md)"),
+    Deviation("TexCube.errors", "mesa-", None, None,
+              "Mesa: with TEXTURE_CUBE_MAP_OES and TEXTURE_2D enabled and the cube map incomplete, the "
+              "2D texture is sampled; OES_texture_cube_map wants texturing disabled (docs/conformance.md)"),
+    Deviation("TexGen.normal", "mesa-", None, None,
+              "Mesa: TEXTURE_GEN_MODE_OES NORMAL_MAP_OES generates the reflection vector, not the eye-space "
+              "normal; OES_texture_cube_map 2.11.4 (docs/conformance.md)"),
     Deviation("AmbLight.errors", "mesa-", None, None,
               "Mesa: scalar glLight/glLightModel accept vector pnames; §2.12.2 wants INVALID_ENUM "
               "(docs/conformance.md, Mesa results)"),

@@ -664,3 +664,79 @@ def test_render_to_a_face() -> None:
         gl.glBindFramebufferOES(C.GL_FRAMEBUFFER_OES, fb)
         assert gl.glGetFramebufferAttachmentParameterivOES(
             *att, C.GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE_OES) == C.GL_NONE_OES
+
+
+# {====================================================================
+# level of detail on a face: linear face coordinates, exact derivatives
+
+LOD_N = 64                                   # face size
+LOD_COLOURS = np.array([[40 * k, 255 - 40 * k, (97 * k) % 256, 255] for k in range(7)], np.uint8)
+
+
+def _lod_draw(numeric: str, minf: int, face: int, s0: float, s1: float) -> np.ndarray:
+    """A 16x4 window whose columns run the face coordinate s' from s0 to s1
+    (t' from 0.4 to 0.45 up the rows) on `face` (+x or -y), each level of
+    each face one solid colour."""
+    w, h = 16, 4
+    with gles.Context(w, h, numeric=numeric) as ctx:
+        gl = ctx.gl
+        gl.glBindTexture(CUBE, 1)
+        for f in range(6):
+            n, lv = LOD_N, 0
+            while n >= 1:
+                img = np.broadcast_to(LOD_COLOURS[lv], (n, n, 4)).copy()
+                gl.glTexImage2D(FACES[f], lv, C.GL_RGBA, n, n, 0, C.GL_RGBA, C.GL_UNSIGNED_BYTE, img)
+                n, lv = n // 2, lv + 1
+        gl.glTexParameteri(CUBE, C.GL_TEXTURE_MIN_FILTER, minf)
+        gl.glTexParameteri(CUBE, C.GL_TEXTURE_MAG_FILTER, C.GL_LINEAR)
+        gl.glEnable(CUBE)
+        gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_REPLACE)
+        gl.glMatrixMode(C.GL_PROJECTION)
+        gl.glOrthof(0, w, 0, h, -1, 1)
+        corners = [(0, 0, s0, 0.4), (w, 0, s1, 0.4), (0, h, s0, 0.45), (w, h, s1, 0.45)]
+        pos, tex = [], []
+        for x, y, s, t in corners:
+            sc, tc = 2 * s - 1, 2 * t - 1
+            # invert the table for +x (sc = -rz, tc = -ry) or -y (sc = rx, tc = -rz), |ma| = 1
+            tex.append([1, -tc, -sc] if face == 0 else [sc, -1, -tc])
+            pos.append([x, y])
+        gl.glEnableClientState(C.GL_VERTEX_ARRAY)
+        gl.glEnableClientState(C.GL_TEXTURE_COORD_ARRAY)
+        gl.glVertexPointer(2, C.GL_FLOAT, 0, np.array(pos, np.float32))
+        gl.glTexCoordPointer(3, C.GL_FLOAT, 0, np.array(tex, np.float32))
+        gl.glDrawArrays(C.GL_TRIANGLE_STRIP, 0, 4)
+        assert gl.glGetError() == C.GL_NO_ERROR
+        return np.asarray(gl.glReadPixels(0, 0, w, h, C.GL_RGBA, C.GL_UNSIGNED_BYTE)).astype(float)
+
+
+@pytest.mark.parametrize("numeric", NUMERICS)
+@pytest.mark.parametrize("minf", [C.GL_NEAREST, C.GL_LINEAR, C.GL_NEAREST_MIPMAP_NEAREST,
+                                  C.GL_LINEAR_MIPMAP_NEAREST, C.GL_NEAREST_MIPMAP_LINEAR,
+                                  C.GL_LINEAR_MIPMAP_LINEAR])
+@pytest.mark.parametrize("face, s0, s1", [(0, 0.05, 0.75), (3, 0.1, 0.95)])
+def test_level_of_detail_on_a_face(numeric: str, minf: int, face: int, s0: float, s1: float) -> None:
+    """§3.7.7 with rho = |ds'/dx| * size (the largest derivative here)."""
+    got = _lod_draw(numeric, minf, face, s0, s1)
+    lam = np.log2(LOD_N * (s1 - s0) / 16)
+    cols = LOD_COLOURS.astype(float)
+    if minf in (C.GL_NEAREST, C.GL_LINEAR):
+        want = cols[0]
+    elif minf in (C.GL_NEAREST_MIPMAP_NEAREST, C.GL_LINEAR_MIPMAP_NEAREST):
+        want = cols[int(np.ceil(lam + 0.5)) - 1]
+    else:
+        d, f = int(np.floor(lam)), lam - np.floor(lam)
+        want = (1 - f) * cols[d] + f * cols[d + 1]
+    assert np.abs(got - want).max() <= 2.0
+
+
+@pytest.mark.parametrize("numeric", NUMERICS)
+def test_batches_match_the_per_vertex_reference(numeric: str) -> None:
+    """Texture coordinate generation in the vertex batches gives the per-vertex path's bits."""
+    def make(debug: int):
+        def m(w: int, h: int) -> gles.Context:
+            ctx = gles.Context(w, h, numeric=numeric)
+            ctx.debug(debug)
+            return ctx
+        return m
+    for lit in (False, True):
+        np.testing.assert_array_equal(_sphere_scene(make(8), 64, lit), _sphere_scene(make(0), 64, lit))

@@ -1,10 +1,11 @@
 """Texturing: images, mipmaps, wrap modes, paletted textures, environments.
 
 Categories Mip, MipLevels, MipLin, MipSelect, MultiTex, TexDecal, TexPalet,
-TexETC1, TexBGRA, TexNPOT, TextureEdgeClamp, TexCombine, CopyTex and
-PackedPixels (spec sections 3.6.2, 3.7 and OES_compressed_paletted_texture,
-OES_compressed_ETC1_RGB8_texture, EXT_texture_format_BGRA8888, OES_texture_npot,
-OES_texture_env_crossbar, OES_texture_mirrored_repeat).
+TexETC1, TexBGRA, TexNPOT, TextureEdgeClamp, TexCombine, CopyTex,
+PackedPixels, TexCube and TexGen (spec sections 3.6.2, 3.7 and
+OES_compressed_paletted_texture, OES_compressed_ETC1_RGB8_texture,
+EXT_texture_format_BGRA8888, OES_texture_npot, OES_texture_env_crossbar,
+OES_texture_mirrored_repeat, OES_texture_cube_map).
 
 Every test uses Common-Lite commands only (x and i forms; GL_SHORT vertices,
 GL_FIXED / GL_SHORT / GL_BYTE texture coordinates), so it runs in both
@@ -1261,3 +1262,184 @@ def packed_pixels(t: TestContext) -> None:
         gl.glDisable(gl.GL_TEXTURE_2D)
     gl.glPixelStorei(gl.GL_UNPACK_ALIGNMENT, 4)
     t.check_gl_error("PackedPixels")
+
+
+# {============================================================
+# TexCube, TexGen (OES_texture_cube_map)
+
+_FACE_COLORS = np.array([(255, 0, 0, 255), (0, 255, 0, 255), (0, 0, 255, 255), (255, 255, 0, 255),
+                         (255, 0, 255, 255), (0, 255, 255, 255)], dtype=np.uint8)
+# a direction into each face (+x, -x, +y, -y, +z, -z), off every diagonal
+_FACE_DIRS = ((1.0, 0.25, -0.375), (-1.0, -0.25, 0.375), (0.25, 1.0, 0.375), (-0.375, -1.0, 0.25),
+              (0.375, -0.25, 1.0), (-0.25, 0.375, -1.0))
+
+
+def _cube(t: TestContext, faces: Sequence[np.ndarray], name: int = 9) -> None:
+    """Cube map `name` with one RGBA image per face (NEAREST, CLAMP_TO_EDGE), enabled, REPLACE."""
+    gl = t.gl
+    gl.glBindTexture(gl.GL_TEXTURE_CUBE_MAP_OES, name)
+    gl.glPixelStorei(gl.GL_UNPACK_ALIGNMENT, 1)
+    for f, img in enumerate(faces):
+        h, w = img.shape[:2]
+        gl.glTexImage2D(gl.GL_TEXTURE_CUBE_MAP_POSITIVE_X_OES + f, 0, gl.GL_RGBA, w, h, 0, gl.GL_RGBA,
+                        gl.GL_UNSIGNED_BYTE, np.ascontiguousarray(img))
+    for p, v in ((gl.GL_TEXTURE_MIN_FILTER, gl.GL_NEAREST), (gl.GL_TEXTURE_MAG_FILTER, gl.GL_NEAREST),
+                 (gl.GL_TEXTURE_WRAP_S, gl.GL_CLAMP_TO_EDGE), (gl.GL_TEXTURE_WRAP_T, gl.GL_CLAMP_TO_EDGE)):
+        gl.glTexParameteri(gl.GL_TEXTURE_CUBE_MAP_OES, p, v)
+    gl.glEnable(gl.GL_TEXTURE_CUBE_MAP_OES)
+    _env(t, "REPLACE")
+
+
+def _solid_faces(size: int = 4) -> list[np.ndarray]:
+    return [np.broadcast_to(c, (size, size, 4)).copy() for c in _FACE_COLORS]
+
+
+@conformance_test("TexCube", section="OES_texture_cube_map", visuals=VISUALS, size=(48, 32))
+def tex_cube(t: TestContext) -> None:
+    """Face selection by the major axis of (s, t, r) (the extension's table): a quad per face with
+    a constant direction into it takes that face's colour, also with TEXTURE_2D enabled (the cube
+    map wins) and with the coordinates and q = 2 doubled (a positive q only scales the direction;
+    whether a negative one flips it is left open: the extension lets q be ignored, and dividing by
+    it is the other reading); within a face, s = (sc/|ma| + 1)/2 and
+    t = (tc/|ma| + 1)/2 pick the quadrant of a 2x2 image on +z and on -x."""
+    gl = t.gl
+    t.need_extension("GL_OES_texture_cube_map")
+    _prepare(t)
+    _texture(t, [np.full((2, 2, 4), 128, np.uint8)])            # a 2D texture, enabled too
+    _cube(t, _solid_faces())
+    for f, d in enumerate(_FACE_DIRS):
+        q = 1.0 if f % 2 == 0 else 2.0
+        gl.glMultiTexCoord4x(gl.GL_TEXTURE0, *[_fx(v * q) for v in d], _fx(q))
+        _quad(t, 8 * f, 0, 8 * f + 8, 8, [None])
+    # quadrants: texel (i, j) of a 2x2 face
+    quad_img = np.array([[(255, 0, 0, 255), (0, 255, 0, 255)], [(0, 0, 255, 255), (255, 255, 255, 255)]],
+                        dtype=np.uint8)                       # [row j][column i]
+    faces = _solid_faces(2)
+    faces[1] = faces[4] = quad_img
+    _cube(t, faces, name=10)
+    # +z: sc = rx, tc = -ry; -x: sc = rz, tc = -ry (|ma| = 1): (s, t) in {0.25, 0.75}
+    cases = [(4, (0.5, 0.5, 1.0), (1, 0)), (4, (-0.5, -0.5, 1.0), (0, 1)), (4, (0.5, -0.5, 1.0), (1, 1)),
+             (1, (-1.0, 0.5, -0.5), (0, 0)), (1, (-1.0, -0.5, 0.5), (1, 1)), (1, (-1.0, 0.5, 0.5), (1, 0))]
+    for k, (_, d, _) in enumerate(cases):
+        gl.glMultiTexCoord4x(gl.GL_TEXTURE0, *[_fx(v) for v in d], ONE)
+        _quad(t, 8 * k, 16, 8 * k + 8, 24, [None])
+    img = t.read()
+    for f in range(6):
+        _check(t, img, 8 * f, 0, np.broadcast_to(_u(_FACE_COLORS[f]), (8, 8, 4)), f"face {f}")
+    for k, (_, d, (i, j)) in enumerate(cases):
+        _check(t, img, 8 * k, 16, np.broadcast_to(_u(quad_img[j, i]), (8, 8, 4)), f"direction {d}")
+    gl.glDisable(gl.GL_TEXTURE_CUBE_MAP_OES)
+    gl.glDisable(gl.GL_TEXTURE_2D)
+    gl.glDeleteTextures(2, [9, 10])
+    t.check_gl_error("TexCube")
+
+
+@conformance_test("TexCube.errors", section="OES_texture_cube_map")
+def tex_cube_errors(t: TestContext) -> None:
+    """The extension's errors and state: faces must be square (INVALID_VALUE from TexImage2D and
+    CopyTexImage2D), the cube target names no image and a face no parameters (INVALID_ENUM), a
+    name stays a texture of its first target (INVALID_OPERATION), TEXTURE_BINDING_CUBE_MAP_OES,
+    MAX_CUBE_MAP_TEXTURE_SIZE_OES >= 16, the enables per unit; an incomplete cube map (faces of
+    different sizes) disables texturing even with TEXTURE_2D enabled."""
+    gl = t.gl
+    t.need_extension("GL_OES_texture_cube_map")
+    cube, px = gl.GL_TEXTURE_CUBE_MAP_OES, gl.GL_TEXTURE_CUBE_MAP_POSITIVE_X_OES
+    if int(np.atleast_1d(gl.glGetIntegerv(gl.GL_MAX_CUBE_MAP_TEXTURE_SIZE_OES))[0]) < 16:
+        t.fail("MAX_CUBE_MAP_TEXTURE_SIZE_OES below 16")
+    gl.glBindTexture(cube, 11)
+    if int(np.atleast_1d(gl.glGetIntegerv(gl.GL_TEXTURE_BINDING_CUBE_MAP_OES))[0]) != 11:
+        t.fail("TEXTURE_BINDING_CUBE_MAP_OES is not the bound name")
+    img = np.zeros((4, 8, 4), np.uint8)
+    gl.glPixelStorei(gl.GL_UNPACK_ALIGNMENT, 1)
+    gl.glTexImage2D(px + 2, 0, gl.GL_RGBA, 8, 4, 0, gl.GL_RGBA, gl.GL_UNSIGNED_BYTE, img)
+    t.check_gl_error("TexImage2D of a 8x4 face", gl.GL_INVALID_VALUE)
+    gl.glCopyTexImage2D(px, 0, gl.GL_RGB, 0, 0, 4, 2, 0)
+    t.check_gl_error("CopyTexImage2D of a 4x2 face", gl.GL_INVALID_VALUE)
+    gl.glTexImage2D(cube, 0, gl.GL_RGBA, 4, 4, 0, gl.GL_RGBA, gl.GL_UNSIGNED_BYTE, img)
+    t.check_gl_error("TexImage2D on TEXTURE_CUBE_MAP_OES", gl.GL_INVALID_ENUM)
+    gl.glTexParameteri(px, gl.GL_TEXTURE_MIN_FILTER, gl.GL_NEAREST)
+    t.check_gl_error("TexParameteri on a face", gl.GL_INVALID_ENUM)
+    gl.glBindTexture(gl.GL_TEXTURE_2D, 11)
+    t.check_gl_error("BindTexture(TEXTURE_2D) of a cube map", gl.GL_INVALID_OPERATION)
+    gl.glBindTexture(gl.GL_TEXTURE_2D, 12)
+    gl.glBindTexture(cube, 12)
+    t.check_gl_error("BindTexture(TEXTURE_CUBE_MAP_OES) of a 2D texture", gl.GL_INVALID_OPERATION)
+    gl.glBindTexture(gl.GL_TEXTURE_2D, 0)
+    gl.glActiveTexture(gl.GL_TEXTURE1)
+    gl.glEnable(cube)
+    on1 = bool(gl.glIsEnabled(cube))
+    gl.glActiveTexture(gl.GL_TEXTURE0)
+    if not on1 or gl.glIsEnabled(cube):
+        t.fail("TEXTURE_CUBE_MAP_OES is not enabled per unit")
+    gl.glActiveTexture(gl.GL_TEXTURE1)
+    gl.glDisable(cube)
+    gl.glActiveTexture(gl.GL_TEXTURE0)
+    # incomplete: one face 2x2, the others 4x4; with TEXTURE_2D also on, no texturing at all
+    t.ortho_pixels()
+    t.clear((0, 0, 0, 0))
+    faces = _solid_faces()
+    faces[3] = faces[3][:2, :2].copy()
+    _texture(t, [np.full((2, 2, 4), 200, np.uint8)])
+    _cube(t, faces, name=11)
+    gl.glMultiTexCoord4x(gl.GL_TEXTURE0, ONE, 0, 0, ONE)
+    _quad(t, 0, 0, 8, 8, [None], color=(10, 20, 30, 40))
+    _check(t, t.read(), 0, 0, np.broadcast_to(_u((10, 20, 30, 40)), (8, 8, 4)), "incomplete cube map")
+    gl.glDisable(cube)
+    gl.glDisable(gl.GL_TEXTURE_2D)
+    gl.glDeleteTextures(2, [11, 12])
+    t.check_gl_error("TexCube.errors")
+
+
+def _texgen_quads(t: TestContext, mode: str, normals: Sequence[tuple[float, float, float]]) -> np.ndarray:
+    """A quad per normal through TEXTURE_GEN_STR_OES `mode` into the six-colour cube map, the eye
+    at the origin looking down -z at quads 50 units away (projection [-w/2, w/2] x [-h/2, h/2])."""
+    gl = t.gl
+    w, h = t.width, t.height
+    gl.glViewport(0, 0, w, h)
+    gl.glMatrixMode(gl.GL_PROJECTION)
+    gl.glLoadIdentity()
+    gl.glOrthox(-(w << 15), w << 15, -(h << 15), h << 15, ONE, 100 * ONE)
+    gl.glMatrixMode(gl.GL_MODELVIEW)
+    gl.glLoadIdentity()
+    t.clear((0, 0, 0, 0))
+    _cube(t, _solid_faces())
+    gl.glTexGeniOES(gl.GL_TEXTURE_GEN_STR_OES, gl.GL_TEXTURE_GEN_MODE_OES, getattr(gl, "GL_" + mode))
+    gl.glEnable(gl.GL_TEXTURE_GEN_STR_OES)
+    gl.glDisableClientState(gl.GL_TEXTURE_COORD_ARRAY)
+    for k, n in enumerate(normals):
+        gl.glNormal3x(*[_fx(v) for v in n])
+        x0 = 8 * k - w / 2
+        t.draw(gl.GL_TRIANGLE_STRIP, [x0, -4, -50, x0 + 8, -4, -50, x0, 4, -50, x0 + 8, 4, -50], size=3)
+    gl.glDisable(gl.GL_TEXTURE_GEN_STR_OES)
+    gl.glDisable(gl.GL_TEXTURE_CUBE_MAP_OES)
+    gl.glDeleteTextures(1, [9])
+    return t.read()
+
+
+@conformance_test("TexGen.normal", section="OES_texture_cube_map 2.11.4", visuals=VISUALS, size=(48, 8))
+def tex_gen_normal(t: TestContext) -> None:
+    """NORMAL_MAP_OES: (s, t, r) is the eye-space normal, so a quad with a normal into each face
+    takes that face's colour; TEXTURE_GEN_MODE_OES starts as REFLECTION_MAP_OES."""
+    gl = t.gl
+    t.need_extension("GL_OES_texture_cube_map")
+    mode = (gl.GL_TEXTURE_GEN_STR_OES, gl.GL_TEXTURE_GEN_MODE_OES)
+    if int(np.atleast_1d(gl.glGetTexGenivOES(*mode))[0]) != gl.GL_REFLECTION_MAP_OES:
+        t.fail("TEXTURE_GEN_MODE_OES does not start as REFLECTION_MAP_OES")
+    gl.glTexGeniOES(*mode, 0x2402)                             # SPHERE_MAP: not in ES
+    t.check_gl_error("TexGeniOES SPHERE_MAP", gl.GL_INVALID_ENUM)
+    img = _texgen_quads(t, "NORMAL_MAP_OES", [tuple(v / np.linalg.norm(v)) for v in np.array(_FACE_DIRS)])
+    for f in range(6):
+        _check(t, img, 8 * f, 0, np.broadcast_to(_u(_FACE_COLORS[f]), (8, 8, 4)), f"normal into face {f}")
+    t.check_gl_error("TexGen.normal")
+
+
+@conformance_test("TexGen.reflection", section="OES_texture_cube_map 2.11.4", visuals=VISUALS, size=(32, 8))
+def tex_gen_reflection(t: TestContext) -> None:
+    """REFLECTION_MAP_OES: r = u - 2 n (n . u), u the unit vector from the eye to the vertex. Quads
+    50 units ahead (u close to -z): normal (0, 0, 1) reflects into +z, (0.6, 0, 0.8) into +x,
+    (0, -0.6, 0.8) into -y, (1, 0, 0) (n . u small) leaves u: -z."""
+    t.need_extension("GL_OES_texture_cube_map")
+    img = _texgen_quads(t, "REFLECTION_MAP_OES", [(0, 0, 1), (0.6, 0, 0.8), (0, -0.6, 0.8), (1, 0, 0)])
+    for k, f in enumerate((4, 0, 3, 5)):
+        _check(t, img, 8 * k, 0, np.broadcast_to(_u(_FACE_COLORS[f]), (8, 8, 4)), f"quad {k}: face {f}")
+    t.check_gl_error("TexGen.reflection")
