@@ -335,39 +335,44 @@ def _env_images(size: int = 32) -> list[np.ndarray]:
 
 
 def _sphere_scene(make, size: int = 128, lit: bool = False) -> np.ndarray:
-    pos, nrm, idx = _sphere()
     with make(size, size) as ctx:
         gl = ctx.gl
-        _load_cube(gl, _env_images(), mipmaps=True)
-        gl.glTexParameteri(CUBE, C.GL_TEXTURE_MIN_FILTER, C.GL_LINEAR_MIPMAP_LINEAR)
-        gl.glTexParameteri(CUBE, C.GL_TEXTURE_MAG_FILTER, C.GL_LINEAR)
-        gl.glTexParameteri(CUBE, C.GL_TEXTURE_WRAP_S, C.GL_CLAMP_TO_EDGE)
-        gl.glTexParameteri(CUBE, C.GL_TEXTURE_WRAP_T, C.GL_CLAMP_TO_EDGE)
-        gl.glEnable(CUBE)
-        gl.glTexGeniOES(C.GL_TEXTURE_GEN_STR_OES, C.GL_TEXTURE_GEN_MODE_OES, C.GL_REFLECTION_MAP_OES)
-        gl.glEnable(C.GL_TEXTURE_GEN_STR_OES)
-        gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_MODULATE if lit else C.GL_REPLACE)
-        if lit:
-            gl.glEnable(C.GL_LIGHTING)
-            gl.glEnable(C.GL_LIGHT0)
-            gl.glLightfv(C.GL_LIGHT0, C.GL_POSITION, np.array([1, 1, 1, 0], np.float32))
-        gl.glEnable(C.GL_DEPTH_TEST)
-        gl.glClearColor(0.1, 0.1, 0.1, 1)
-        gl.glClear(C.GL_COLOR_BUFFER_BIT | C.GL_DEPTH_BUFFER_BIT)
-        gl.glMatrixMode(C.GL_PROJECTION)
-        gl.glFrustumf(-0.6, 0.6, -0.6, 0.6, 1.5, 10)
-        gl.glMatrixMode(C.GL_TEXTURE)
-        gl.glRotatef(25, 0, 1, 0)
-        gl.glMatrixMode(C.GL_MODELVIEW)
-        gl.glTranslatef(0, 0, -3.2)
-        gl.glRotatef(30, 1, 0.3, 0)
-        gl.glEnableClientState(C.GL_VERTEX_ARRAY)
-        gl.glEnableClientState(C.GL_NORMAL_ARRAY)
-        gl.glVertexPointer(3, C.GL_FLOAT, 0, pos)
-        gl.glNormalPointer(C.GL_FLOAT, 0, nrm)
-        gl.glDrawElements(C.GL_TRIANGLES, len(idx), C.GL_UNSIGNED_SHORT, idx)
-        assert gl.glGetError() == C.GL_NO_ERROR
+        _sphere_draw(gl, lit)
         return np.asarray(gl.glReadPixels(0, 0, size, size, C.GL_RGBA, C.GL_UNSIGNED_BYTE))
+
+
+def _sphere_draw(gl, lit: bool) -> None:
+    """The sphere with REFLECTION_MAP_OES into the six-colour mipmapped cube map."""
+    pos, nrm, idx = _sphere()
+    _load_cube(gl, _env_images(), mipmaps=True)
+    gl.glTexParameteri(CUBE, C.GL_TEXTURE_MIN_FILTER, C.GL_LINEAR_MIPMAP_LINEAR)
+    gl.glTexParameteri(CUBE, C.GL_TEXTURE_MAG_FILTER, C.GL_LINEAR)
+    gl.glTexParameteri(CUBE, C.GL_TEXTURE_WRAP_S, C.GL_CLAMP_TO_EDGE)
+    gl.glTexParameteri(CUBE, C.GL_TEXTURE_WRAP_T, C.GL_CLAMP_TO_EDGE)
+    gl.glEnable(CUBE)
+    gl.glTexGeniOES(C.GL_TEXTURE_GEN_STR_OES, C.GL_TEXTURE_GEN_MODE_OES, C.GL_REFLECTION_MAP_OES)
+    gl.glEnable(C.GL_TEXTURE_GEN_STR_OES)
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_MODULATE if lit else C.GL_REPLACE)
+    if lit:
+        gl.glEnable(C.GL_LIGHTING)
+        gl.glEnable(C.GL_LIGHT0)
+        gl.glLightfv(C.GL_LIGHT0, C.GL_POSITION, np.array([1, 1, 1, 0], np.float32))
+    gl.glEnable(C.GL_DEPTH_TEST)
+    gl.glClearColor(0.1, 0.1, 0.1, 1)
+    gl.glClear(C.GL_COLOR_BUFFER_BIT | C.GL_DEPTH_BUFFER_BIT)
+    gl.glMatrixMode(C.GL_PROJECTION)
+    gl.glFrustumf(-0.6, 0.6, -0.6, 0.6, 1.5, 10)
+    gl.glMatrixMode(C.GL_TEXTURE)
+    gl.glRotatef(25, 0, 1, 0)
+    gl.glMatrixMode(C.GL_MODELVIEW)
+    gl.glTranslatef(0, 0, -3.2)
+    gl.glRotatef(30, 1, 0.3, 0)
+    gl.glEnableClientState(C.GL_VERTEX_ARRAY)
+    gl.glEnableClientState(C.GL_NORMAL_ARRAY)
+    gl.glVertexPointer(3, C.GL_FLOAT, 0, pos)
+    gl.glNormalPointer(C.GL_FLOAT, 0, nrm)
+    gl.glDrawElements(C.GL_TRIANGLES, len(idx), C.GL_UNSIGNED_SHORT, idx)
+    assert gl.glGetError() == C.GL_NO_ERROR
 
 
 def _psnr(a: np.ndarray, b: np.ndarray) -> float:
@@ -740,3 +745,42 @@ def test_batches_match_the_per_vertex_reference(numeric: str) -> None:
         return m
     for lit in (False, True):
         np.testing.assert_array_equal(_sphere_scene(make(8), 64, lit), _sphere_scene(make(0), 64, lit))
+
+
+@pytest.mark.parametrize("numeric", NUMERICS)
+def test_trace_replays_byte_identical(numeric: str) -> None:
+    from gles import trace as T
+
+    t = gles.trace(lambda gl, w, h: _sphere_draw(gl, True), 64, 64, numeric=numeric)
+    np.testing.assert_array_equal(t.image[::-1], _sphere_scene(_gles(numeric), 64, True))
+    assert T.replay(t, raw=True) == t.color_buffer
+
+
+@pytest.mark.parametrize("numeric", NUMERICS)
+def test_extreme_directions_draw_without_harm(numeric: str) -> None:
+    """Zero, huge, infinite and NaN directions, and a triangle whose corners point into
+    opposite faces, through every min filter: defined pixels, no error."""
+    bad = [[0, 0, 0], [1e30, -1e30, 3], [np.inf, 1, 1], [np.nan, 1, 2], [1, -1, 1], [-1, 1, -1],
+           [3e4, 3e4, -3e4], [1e-9, 0, -1e-9], [0, 1e-30, 0]]
+    with gles.Context(16, 16, numeric=numeric, range_check="off") as ctx:
+        gl = ctx.gl
+        _load_cube(gl, _env_images(8), mipmaps=True)
+        gl.glEnable(CUBE)
+        gl.glEnableClientState(C.GL_VERTEX_ARRAY)
+        gl.glEnableClientState(C.GL_TEXTURE_COORD_ARRAY)
+        rng = np.random.default_rng(3)
+        for minf in (C.GL_NEAREST, C.GL_LINEAR, C.GL_NEAREST_MIPMAP_NEAREST, C.GL_LINEAR_MIPMAP_NEAREST,
+                     C.GL_NEAREST_MIPMAP_LINEAR, C.GL_LINEAR_MIPMAP_LINEAR):
+            gl.glTexParameteri(CUBE, C.GL_TEXTURE_MIN_FILTER, minf)
+            for wrap in (C.GL_REPEAT, C.GL_MIRRORED_REPEAT_OES):
+                gl.glTexParameteri(CUBE, C.GL_TEXTURE_WRAP_S, wrap)
+                tc = np.array([bad[i] + [1.0] for i in rng.integers(0, len(bad), 6)], np.float32)
+                tc[:, 3] = rng.choice([1.0, -1.0, 0.0], 6)
+                gl.glTexCoordPointer(4, C.GL_FLOAT, 0, tc)
+                gl.glVertexPointer(2, C.GL_FLOAT, 0, rng.uniform(-1.5, 1.5, (6, 2)).astype(np.float32))
+                gl.glDrawArrays(C.GL_TRIANGLES, 0, 6)
+                gl.glDrawArrays(C.GL_LINES, 0, 6)
+                gl.glDrawArrays(C.GL_POINTS, 0, 6)
+        gl.glTexParameteriv(CUBE, C.GL_TEXTURE_CROP_RECT_OES, [0, 0, 8, 8])
+        gl.glDrawTexiOES(0, 0, 0, 16, 16)
+        assert gl.glGetError() == C.GL_NO_ERROR
