@@ -784,3 +784,41 @@ def test_extreme_directions_draw_without_harm(numeric: str) -> None:
         gl.glTexParameteriv(CUBE, C.GL_TEXTURE_CROP_RECT_OES, [0, 0, 8, 8])
         gl.glDrawTexiOES(0, 0, 0, 16, 16)
         assert gl.glGetError() == C.GL_NO_ERROR
+
+
+@pytest.mark.parametrize("numeric", NUMERICS)
+def test_compressed_faces(numeric: str) -> None:
+    """ETC1 faces (each one block of base colour (15, 0, 0) x 17, table 0, every texel's
+    modifier +2: (255, 2, 2)) and PALETTE4_RGB8 faces (index 0 into each face's palette
+    colour) make complete cube maps; ETC1 faces beside an RGB one do not (one internal
+    format for all six)."""
+    etc1 = bytes([0xF0, 0x00, 0x00, 0x00, 0, 0, 0, 0])
+
+    def etc1_faces(mixed: bool):
+        def setup(gl) -> None:
+            gl.glBindTexture(CUBE, 1)
+            gl.glTexParameteri(CUBE, C.GL_TEXTURE_MIN_FILTER, C.GL_NEAREST)
+            gl.glTexParameteri(CUBE, C.GL_TEXTURE_MAG_FILTER, C.GL_NEAREST)
+            for f in FACES:
+                gl.glCompressedTexImage2D(f, 0, C.GL_ETC1_RGB8_OES, 4, 4, 0, 8, etc1)
+            if mixed:
+                gl.glTexImage2D(FACES[5], 0, C.GL_RGB, 4, 4, 0, C.GL_RGB, C.GL_UNSIGNED_BYTE, bytes(48))
+            gl.glEnable(CUBE)
+        return setup
+
+    def paletted(gl) -> None:
+        gl.glBindTexture(CUBE, 1)
+        gl.glTexParameteri(CUBE, C.GL_TEXTURE_MIN_FILTER, C.GL_NEAREST)
+        gl.glTexParameteri(CUBE, C.GL_TEXTURE_MAG_FILTER, C.GL_NEAREST)
+        for f in range(6):
+            palette = np.zeros((16, 3), np.uint8)
+            palette[0] = FACE_RGB[f]
+            data = palette.tobytes() + bytes(8)
+            gl.glCompressedTexImage2D(FACES[f], 0, C.GL_PALETTE4_RGB8_OES, 4, 4, 0, len(data), data)
+        gl.glEnable(CUBE)
+
+    make = _gles(numeric)
+    # RGB textures: REPLACE keeps the fragment's alpha (0.5)
+    assert list(_cube_colour(make, etc1_faces(False))) == [255, 2, 2, 128]
+    assert list(_cube_colour(make, etc1_faces(True))) == [128, 128, 128, 128]
+    assert list(_cube_colour(make, paletted)) == list(FACE_RGB[0]) + [128]
