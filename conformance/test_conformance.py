@@ -106,6 +106,9 @@ KNOWN_DEVIATIONS: tuple[Deviation, ...] = (
     Deviation("TexCube.errors", "mesa-", None, None,
               "Mesa: with TEXTURE_CUBE_MAP_OES and TEXTURE_2D enabled and the cube map incomplete, the "
               "2D texture is sampled; OES_texture_cube_map wants texturing disabled (docs/conformance.md)"),
+    Deviation("TexCube.wrap", "mesa-llvmpipe", None, None,
+              "llvmpipe: cube map faces are sampled as CLAMP_TO_EDGE whatever the wrap modes; "
+              "ARB_texture_cube_map applies every wrap mode per face (docs/conformance.md)"),
     Deviation("TexGen.normal", "mesa-", None, None,
               "Mesa: TEXTURE_GEN_MODE_OES NORMAL_MAP_OES generates the reflection vector, not the eye-space "
               "normal; OES_texture_cube_map 2.11.4 (docs/conformance.md)"),

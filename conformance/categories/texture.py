@@ -1443,3 +1443,35 @@ def tex_gen_reflection(t: TestContext) -> None:
     for k, f in enumerate((4, 0, 3, 5)):
         _check(t, img, 8 * k, 0, np.broadcast_to(_u(_FACE_COLORS[f]), (8, 8, 4)), f"quad {k}: face {f}")
     t.check_gl_error("TexGen.reflection")
+
+
+@conformance_test("TexCube.wrap", section="OES_texture_cube_map 3.8.10", visuals=("rgba8888",), size=(16, 8))
+def tex_cube_wrap(t: TestContext) -> None:
+    """A face is sampled by §3.7.7 with the cube map's own wrap modes (ARB_texture_cube_map's
+    resolution: every wrap mode applies, CLAMP_TO_EDGE being the one suited to cube maps): on
+    +x, (1, 0, 0.8) gives s = 0.1 on a 2x2 face of a red and a blue column, so LINEAR takes
+    0.7 red + 0.3 blue under REPEAT (i0 = -1 wraps to the blue column) and red under
+    CLAMP_TO_EDGE."""
+    gl = t.gl
+    t.need_extension("GL_OES_texture_cube_map")
+    _prepare(t)
+    red, blue = np.array((255, 0, 0, 255)), np.array((0, 0, 255, 255))
+    faces = _solid_faces(2)
+    faces[0] = np.array([[red, blue], [red, blue]], dtype=np.uint8)
+    for k, wrap in enumerate(("REPEAT", "CLAMP_TO_EDGE")):
+        _cube(t, faces, name=12 + k)
+        for p in (gl.GL_TEXTURE_MIN_FILTER, gl.GL_TEXTURE_MAG_FILTER):
+            gl.glTexParameteri(gl.GL_TEXTURE_CUBE_MAP_OES, p, gl.GL_LINEAR)
+        for p in (gl.GL_TEXTURE_WRAP_S, gl.GL_TEXTURE_WRAP_T):
+            gl.glTexParameteri(gl.GL_TEXTURE_CUBE_MAP_OES, p, getattr(gl, "GL_" + wrap))
+        gl.glMultiTexCoord4x(gl.GL_TEXTURE0, ONE, 0, _fx(0.8), ONE)
+        _quad(t, 8 * k, 0, 8 * k + 8, 8, [None])
+    img = t.read()
+    s = _q16(0.8) / 2                          # |sc/ma| as the 16.16 coordinate gives it
+    a = (1 - s) * 2 - 0.5 - np.floor((1 - s) * 2 - 0.5)
+    mixed = (1 - a) * _u(blue) + a * _u(red)   # texels -1 (wrapped: blue) and 0 (red)
+    _check(t, img, 0, 0, np.broadcast_to(mixed, (8, 8, 4)), "REPEAT")
+    _check(t, img, 8, 0, np.broadcast_to(_u(red), (8, 8, 4)), "CLAMP_TO_EDGE")
+    gl.glDisable(gl.GL_TEXTURE_CUBE_MAP_OES)
+    gl.glDeleteTextures(2, [12, 13])
+    t.check_gl_error("TexCube.wrap")
