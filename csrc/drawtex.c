@@ -6,8 +6,9 @@
 ** TEXTURE_CROP_RECT_OES linearly onto the rectangle:
 **     s = (Ucr + (X - Xs) Wcr / Ws) / Wt,  t = (Vcr + (Y - Ys) Hcr / Hs) / Ht
 ** (the texture matrix, clip planes and lighting do not apply; fog sees
-** distance 0; a unit sampling a cube map takes the direction (s, t, 0)). The level of detail is constant over the rectangle. The
-** coordinates are formed in double from the real arguments and rounded once.
+** distance 0; a unit sampling a cube map takes the direction (s, t, 0)).
+** The level of detail is constant over the rectangle. The coordinates are
+** formed in double from the real arguments and rounded once.
 ** Rows run through the span chain (span_chain.c); the per-fragment path
 ** stays as its reference (ctx.debug(1)).
 */
