@@ -560,3 +560,23 @@ def test_egl_configs() -> None:
         assert egl.eglMakeCurrent(ctypes.c_void_p(dpy), None, None, None)
         egl.eglDestroySurface(ctypes.c_void_p(dpy), ctypes.c_void_p(surf))
         egl.eglDestroyContext(ctypes.c_void_p(dpy), ctypes.c_void_p(ctx))
+
+
+# {============================================================
+# the lab's comparisons
+
+@pytest.mark.parametrize("color", FORMATS)
+def test_compare_renders_the_builds_and_skips_peers_without_the_format(color: str) -> None:
+    """gles.compare draws every build into the format; Mesa, with no such window, is a
+    skipped peer with its reason, not an RGBA8888 render under the format's name."""
+    from gles import compare as cmp
+
+    def scene(gl: Any, w: int, h: int) -> None:
+        gl.glClearColor(0.3, 0.6, 0.9, 0.5)
+        gl.glClear(C.GL_COLOR_BUFFER_BIT)
+
+    r = cmp.compare(scene, 8, 8, builds=("fixed",), peers=("mesa-llvmpipe",), runs=1, color=color)
+    assert r.renders["mesa-llvmpipe"].skipped == f"Mesa has no {color.upper()} window"
+    img = r.renders["fixed"].image
+    levels = {(c * 255 + m // 2) // m for m in top(color) for c in range(m + 1)}
+    assert set(np.unique(img).tolist()) <= levels
