@@ -255,7 +255,7 @@ def _peer_missing(renderer: str, color: str = "rgba8888") -> str | None:
         return None
     from . import mesa
 
-    if color not in mesa.COLOR_FORMATS:
+    if color not in mesa.MESA_COLOR_FORMATS:
         return f"Mesa has no {color.upper()} window"
     return mesa.available(renderer[5:])
 
