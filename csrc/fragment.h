@@ -194,6 +194,15 @@ static inline void fragment_write_setup(const GlesContext *ctx, FragWrite *w)
     ** allows it on each); RGBA8888's rounding is exact, never dithered */
     w->dither = ctx->dither && w->is16;
     w->blend = ctx->blend && !ctx->color_logic_op;
+    w->keep = 0;
+    w->layout = NULL;
+    if (!w->is16) {
+        /* (the RGBA8888 writers call this per chunk: nothing more for them) */
+        for (int i = 0; i < 4; i++)
+            if (!ctx->color_mask[i])
+                w->keep |= 0xFFu << (8 * i);
+        return;
+    }
     w->keep = color_mask_keep(ctx->color_format, ctx->color_mask);
     w->layout = color_layout16(ctx->color_format);
     for (int i = 0; i < 4; i++)

@@ -42,16 +42,30 @@ static void clear_rows(GlesContext *ctx, void *arg)
         if ((j->mask & GL_COLOR_BUFFER_BIT) && ctx->color_format != GLES_COLOR_RGBA8888) {
             /* §4.2.3: Clear is dithered like fragments (every channel, as
             ** fragment_write dithers), the masks apply */
-            const ColorLayout *l = color_layout16(ctx->color_format);
+            /* the threshold depends on x & 3 in a row: four words */
+            uint32_t v[4] = { packed, packed, packed, packed };
+            if (ctx->dither)
+                for (int i = 0; i < 4; i++)
+                    v[i] = fragment_pack16(color_layout16(ctx->color_format), j->c, 1,
+                                           fragment_dither_threshold(i, y));
             uint16_t *row = (uint16_t *)ctx->color + (size_t)y * w;
-            for (int x = x0; x < x1; x++) {
-                const uint32_t v = ctx->dither ? fragment_pack16(l, j->c, 1, fragment_dither_threshold(x, y)) : packed;
-                row[x] = (uint16_t)((row[x] & keep) | (v & ~keep));
+            if (!keep) {
+                for (int x = x0; x < x1; x++)
+                    row[x] = (uint16_t)v[x & 3];
+            } else {
+                for (int x = x0; x < x1; x++)
+                    row[x] = (uint16_t)((row[x] & keep) | (v[x & 3] & ~keep));
             }
         } else if (j->mask & GL_COLOR_BUFFER_BIT) {
             uint32_t *row = (uint32_t *)ctx->color + (size_t)y * w;
-            for (int x = x0; x < x1; x++)
-                row[x] = (row[x] & keep) | (packed & ~keep);
+            /* every channel written: a fill, no read of what is there */
+            if (!keep) {
+                for (int x = x0; x < x1; x++)
+                    row[x] = packed;
+            } else {
+                for (int x = x0; x < x1; x++)
+                    row[x] = (row[x] & keep) | (packed & ~keep);
+            }
         }
         if ((j->mask & GL_DEPTH_BUFFER_BIT) && ctx->depth && ctx->depth_mask) {
             uint32_t *row = ctx->depth + (size_t)y * w;

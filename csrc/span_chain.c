@@ -53,12 +53,13 @@ static inline void dither_row(const SpanBuf *b, int dither, FRAGV t_row[4])
         t_row[x] = dither ? fragment_dither_threshold(x, b->y) : FRAG_ONE / 2;
 }
 
-/* the colour buffer at the chunk's first pixel (RGBA8888 or 16-bit words) */
-static inline void *chunk_color(const GlesContext *ctx, const SpanBuf *b)
+/* the colour buffer at the chunk's first pixel: 16-bit words where `is16`
+** (the caller's test of the format, which it has made already), else
+** RGBA8888 ones */
+static inline void *chunk_color(const GlesContext *ctx, const SpanBuf *b, int is16)
 {
     const size_t at = (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
-    return ctx->color_format != GLES_COLOR_RGBA8888 ? (void *)((uint16_t *)ctx->color + at)
-                                                    : (void *)((uint32_t *)ctx->color + at);
+    return is16 ? (void *)((uint16_t *)ctx->color + at) : (void *)((uint32_t *)ctx->color + at);
 }
 
 static inline uint32_t pack565(const FRAGV v[3], int dither, FRAGV t_d)

@@ -452,7 +452,7 @@ struct GlesContext {
     int sample_coverage_invert;
 
     FRAGV unorm8[256];         /* d / 255 as FRAGV: blending reads these */
-    FRAGV unorm5[32], unorm6[64], unorm4[16], unorm1[2];
+    FRAGV unorm5[32], unorm6[64];
 
     /* points, lines and polygon offset (§3.3-3.5) */
     double point_size, line_width, point_size_min, point_size_max, point_fade_threshold;
@@ -571,6 +571,10 @@ struct GlesContext {
     uint32_t *vert_stamp;
     int64_t verts_capacity;
     uint32_t draw_stamp;
+
+    /* d / 15 and d / 1 as FRAGV, the 4- and 1-bit channels' reads (after
+    ** the fields the span stages read most, whose offsets they keep) */
+    FRAGV unorm4[16], unorm1[2];
 };
 
 /* dirty bits */
