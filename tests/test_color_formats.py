@@ -482,8 +482,10 @@ EGL_SURFACE_TYPE, EGL_PBUFFER_BIT = 0x3033, 0x0001
 
 
 def _egl() -> tuple[Any, Any, int]:
-    gl = ctypes.CDLL(str(cabi.library("GLESv1_CM", "fixed", "common")), mode=ctypes.RTLD_GLOBAL)
-    egl = ctypes.CDLL(str(cabi.library("EGL", "fixed", "common")), mode=ctypes.RTLD_GLOBAL)
+    # local: a global load would put this build's core symbols before the
+    # ones other libraries of the process (other builds' libEGL) bind to
+    gl = ctypes.CDLL(str(cabi.library("GLESv1_CM", "fixed", "common")))
+    egl = ctypes.CDLL(str(cabi.library("EGL", "fixed", "common")))
     egl.eglGetDisplay.restype = ctypes.c_void_p
     egl.eglGetDisplay.argtypes = [ctypes.c_void_p]
     for name in ("eglInitialize", "eglChooseConfig", "eglGetConfigAttrib", "eglCreatePbufferSurface",
@@ -560,6 +562,7 @@ def test_egl_configs() -> None:
         assert egl.eglMakeCurrent(ctypes.c_void_p(dpy), None, None, None)
         egl.eglDestroySurface(ctypes.c_void_p(dpy), ctypes.c_void_p(surf))
         egl.eglDestroyContext(ctypes.c_void_p(dpy), ctypes.c_void_p(ctx))
+    egl.eglTerminate(ctypes.c_void_p(dpy))
 
 
 # {============================================================
