@@ -32,7 +32,7 @@ from typing import Any, Protocol
 
 import numpy as np
 
-from .harness import VISUALS, Visual
+from .harness import VISUALS, Unsupported, Visual
 
 PROFILES = ("common", "common-lite")
 
@@ -151,6 +151,8 @@ class MesaBackend:
         self.name = f"mesa-{driver}"
         self.profile = profile
         self.width, self.height = width, height
+        if visual.color not in mesa.MESA_COLOR_FORMATS:
+            raise Unsupported(f"Mesa's EGL has no {visual.color.upper()} config")
         self.context = mesa.MesaContext(width, height, driver=driver, color=visual.color,
                                         depth=visual.depth, stencil=visual.stencil)
         cfg = self.context.config

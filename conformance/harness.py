@@ -34,14 +34,15 @@ class Unsupported(Exception):
 class Visual:
     """The framebuffer a test runs on, as the Khronos harness chooses them."""
 
-    color: str = "rgba8888"   # or "rgb565"
+    color: str = "rgba8888"   # or "rgb565", "rgba4444", "rgba5551"
     depth: int = 24
     stencil: int = 8
 
     @property
     def bits(self) -> tuple[int, int, int, int]:
         """Bits of red, green, blue, alpha."""
-        return (5, 6, 5, 0) if self.color == "rgb565" else (8, 8, 8, 8)
+        return {"rgb565": (5, 6, 5, 0), "rgba4444": (4, 4, 4, 4), "rgba5551": (5, 5, 5, 1)}.get(
+            self.color, (8, 8, 8, 8))
 
     def color_tolerance(self) -> np.ndarray:
         """Per-channel tolerance 1/(2^bits - 1) + 2^-13 (alpha of a buffer
@@ -60,6 +61,8 @@ VISUALS = {
     "rgba8888": Visual("rgba8888", 24, 8),
     "rgba8888-d16": Visual("rgba8888", 16, 8),
     "rgb565": Visual("rgb565", 16, 8),
+    "rgba4444": Visual("rgba4444", 16, 8),
+    "rgba5551": Visual("rgba5551", 16, 8),
 }
 
 

@@ -149,6 +149,9 @@ def run_job(job: Job, *, debug_flags: int = 0) -> Result:
     w, h = test.size
     try:
         backend = job.backend.make(job.profile, job.visual, width=w, height=h, debug_flags=debug_flags)
+    except Unsupported as exc:
+        res.status, res.message = "skip", f"unsupported: {exc}"
+        return res
     except Exception as exc:
         res.status, res.message = "error", f"could not create the context: {type(exc).__name__}: {exc}"
         return res

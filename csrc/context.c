@@ -107,7 +107,8 @@ GlesContext *gles_context_create(int width, int height, int color_format,
 {
     if (width < 1 || height < 1 || width > GLES_MAX_FRAMEBUFFER_DIM || height > GLES_MAX_FRAMEBUFFER_DIM)
         return NULL;
-    if (color_format != GLES_COLOR_RGBA8888 && color_format != GLES_COLOR_RGB565)
+    if (color_format != GLES_COLOR_RGBA8888 && color_format != GLES_COLOR_RGB565
+        && color_format != GLES_COLOR_RGBA4444 && color_format != GLES_COLOR_RGBA5551)
         return NULL;
     if (depth_bits != 0 && depth_bits != 16 && depth_bits != 24)
         return NULL;
@@ -124,13 +125,13 @@ GlesContext *gles_context_create(int width, int height, int color_format,
     ctx->depth_bits = depth_bits;
     ctx->stencil_bits = stencil_bits;
     ctx->depth_max = depth_bits ? (uint32_t)((1ull << depth_bits) - 1) : 0;
-    ctx->color_alpha = color_format == GLES_COLOR_RGBA8888;
+    ctx->color_alpha = color_format != GLES_COLOR_RGB565;
     ctx->color_mask_alpha = 1;
     ctx->profile = profile;
     ctx->threads = ctx->band_count = 1;
     ctx->simd = simd_detect();
     ctx->chain_coords_unit = ctx->chain_coords_tx_unit = ctx->chain_lod_unit = -1;
-    ctx->color = calloc(npix, color_format == GLES_COLOR_RGB565 ? 2 : 4);
+    ctx->color = calloc(npix, (size_t)color_bytes(color_format));
     ctx->depth = depth_bits ? calloc(npix, sizeof(uint32_t)) : NULL;
     ctx->stencil = stencil_bits ? calloc(npix, 1) : NULL;
     const int scratch = scratch_alloc(ctx, width);
@@ -672,21 +673,20 @@ int gles_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)
         return put(out, kind, GLES_KIND_INT, 2, v);
     case GL_SUBPIXEL_BITS: return put1(out, kind, GLES_KIND_INT, GLES_SUBPIXEL_BITS);
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: {
-        static const int bits8888[4] = { 8, 8, 8, 8 }, bits888[4] = { 8, 8, 8, 0 }, bits565[4] = { 5, 6, 5, 0 };
         quiet_sync(ctx);
-        const int *b = ctx->color_format == GLES_COLOR_RGB565 ? bits565 : (ctx->color_alpha ? bits8888 : bits888);
-        return put1(out, kind, GLES_KIND_INT, b[pname - GL_RED_BITS]);
+        const int i = (int)(pname - GL_RED_BITS);
+        /* an RGBA8888 buffer that keeps no alpha (RGB8, an RGB texture) has none */
+        return put1(out, kind, GLES_KIND_INT, i == 3 && !ctx->color_alpha ? 0 : color_channel_bits(ctx->color_format, i));
     }
     case GL_DEPTH_BITS: quiet_sync(ctx); return put1(out, kind, GLES_KIND_INT, ctx->depth_bits);
     case GL_STENCIL_BITS: quiet_sync(ctx); return put1(out, kind, GLES_KIND_INT, ctx->stencil_bits);
     case GL_IMPLEMENTATION_COLOR_READ_FORMAT_OES:
+    case GL_IMPLEMENTATION_COLOR_READ_TYPE_OES: {
         quiet_sync(ctx);
-        /* the window's own byte order is RGBA, so the second pair (EXT_read_format_bgra's
-        ** BGRA_EXT) is the one a program cannot otherwise have */
-        return put1(out, kind, GLES_KIND_ENUM, ctx->color_format == GLES_COLOR_RGB565 ? GL_RGB : GL_BGRA_EXT);
-    case GL_IMPLEMENTATION_COLOR_READ_TYPE_OES:
-        return put1(out, kind, GLES_KIND_ENUM,
-                    ctx->color_format == GLES_COLOR_RGB565 ? GL_UNSIGNED_SHORT_5_6_5 : GL_UNSIGNED_BYTE);
+        unsigned int f, t;
+        color_read_pair(ctx->color_format, &f, &t);
+        return put1(out, kind, GLES_KIND_ENUM, pname == GL_IMPLEMENTATION_COLOR_READ_FORMAT_OES ? f : t);
+    }
 
     /* transformation */
     case GL_MATRIX_MODE: return put1(out, kind, GLES_KIND_ENUM, ctx->matrix_mode);

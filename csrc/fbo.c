@@ -75,6 +75,17 @@ static int rb_depth_format(unsigned int f)
 }
 static int rb_stencil_format(unsigned int f) { return f == GL_STENCIL_INDEX8_OES || f == GL_DEPTH24_STENCIL8_OES; }
 
+/* the colour buffer format (GLES_COLOR_*) a colour renderbuffer stores */
+static int rb_color_layout(unsigned int f)
+{
+    switch (f) {
+    case GL_RGB565_OES: return GLES_COLOR_RGB565;
+    case GL_RGBA4_OES: return GLES_COLOR_RGBA4444;
+    case GL_RGB5_A1_OES: return GLES_COLOR_RGBA5551;
+    default: return GLES_COLOR_RGBA8888;    /* RGBA8, RGB8 */
+    }
+}
+
 /* RED, GREEN, BLUE, ALPHA, DEPTH, STENCIL sizes of a renderbuffer format */
 static void rb_sizes(unsigned int f, int out[6])
 {
@@ -130,11 +141,9 @@ static unsigned int fbo_status(const Framebuffer *fb, DrawBuffers *d)
         if (!rb || !rb_color_format(rb->format) || rb->width <= 0 || rb->height <= 0)
             return GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT_OES;
         FBO_SIZE(rb->width, rb->height);
-        /* 4- and 5-bit channels are not a color buffer the core writes */
-        unsupported |= rb->format == GL_RGBA4_OES || rb->format == GL_RGB5_A1_OES;
         d->color = rb->color;
-        d->color_format = rb->format == GL_RGB565_OES ? GLES_COLOR_RGB565 : GLES_COLOR_RGBA8888;
-        d->color_alpha = rb->format == GL_RGBA8_OES;
+        d->color_format = rb_color_layout(rb->format);
+        d->color_alpha = rb->format != GL_RGB8_OES && rb->format != GL_RGB565_OES;
     } else {
         unsupported = 1;    /* every draw writes a color buffer */
     }
@@ -400,16 +409,16 @@ void gles_RenderbufferStorageOES(GlesContext *ctx, unsigned int target, unsigned
     int sizes[6];
     rb_sizes(internalformat, sizes);
     const size_t n = (size_t)width * (size_t)height;
-    const int color_bytes = rb_color_format(internalformat) ? (internalformat == GL_RGB565_OES ? 2 : 4) : 0;
-    const int64_t bytes = (int64_t)n * (color_bytes + (sizes[4] ? 4 : 0) + (sizes[5] ? 1 : 0));
+    const int pixel_bytes = rb_color_format(internalformat) ? color_bytes(rb_color_layout(internalformat)) : 0;
+    const int64_t bytes = (int64_t)n * (pixel_bytes + (sizes[4] ? 4 : 0) + (sizes[5] ? 1 : 0));
     if (!ctx_mem_fits(ctx, bytes, rb->bytes)) {
         ctx_error(ctx, GL_OUT_OF_MEMORY);
         return;
     }
-    void *color = color_bytes && n ? calloc(n, (size_t)color_bytes) : NULL;
+    void *color = pixel_bytes && n ? calloc(n, (size_t)pixel_bytes) : NULL;
     uint32_t *depth = sizes[4] && n ? calloc(n, sizeof *depth) : NULL;
     uint8_t *stencil = sizes[5] && n ? calloc(n, 1) : NULL;
-    if ((color_bytes && n && !color) || (sizes[4] && n && !depth) || (sizes[5] && n && !stencil)) {
+    if ((pixel_bytes && n && !color) || (sizes[4] && n && !depth) || (sizes[5] && n && !stencil)) {
         free(color);
         free(depth);
         free(stencil);

@@ -31,6 +31,10 @@ void fragment_init(GlesContext *ctx)
         ctx->unorm5[d] = frag_from_unorm(d, 31);
     for (uint32_t d = 0; d < 64; d++)
         ctx->unorm6[d] = frag_from_unorm(d, 63);
+    for (uint32_t d = 0; d < 16; d++)
+        ctx->unorm4[d] = frag_from_unorm(d, 15);
+    for (uint32_t d = 0; d < 2; d++)
+        ctx->unorm1[d] = frag_from_unorm(d, 1);
 }
 
 static int is_func(unsigned int f) { return f >= GL_NEVER && f <= GL_ALWAYS; }

@@ -170,20 +170,44 @@ static inline __attribute__((always_inline)) int fragment_tests(const FragTests 
 
 /* what the write needs of the state, found once per span */
 typedef struct FragWrite {
-    int is565, dither, blend;
+    int is16, dither, blend;    /* is16: a 16-bit format (layout) */
     uint32_t keep;              /* framebuffer bits the colour mask protects */
+    const ColorLayout *layout;
+    const FRAGV *unorm[4];      /* a 16-bit format's stored channel c as c / (2^bits - 1) */
 } FragWrite;
+
+/* ctx's table of c / (2^bits - 1) for a channel of `bits` (4, 5, 6 or 1) */
+static inline const FRAGV *fragment_unorm_table(const GlesContext *ctx, int bits)
+{
+    switch (bits) {
+    case 1: return ctx->unorm1;
+    case 4: return ctx->unorm4;
+    case 5: return ctx->unorm5;
+    case 6: return ctx->unorm6;
+    default: return ctx->unorm8;
+    }
+}
 
 static inline void fragment_write_setup(const GlesContext *ctx, FragWrite *w)
 {
-    static const uint32_t m565[3] = { 0xF800, 0x07E0, 0x001F };
-    w->is565 = ctx->color_format == GLES_COLOR_RGB565;
-    w->dither = ctx->dither && w->is565;
+    w->is16 = ctx->color_format != GLES_COLOR_RGBA8888;
+    /* every channel of a 16-bit format is dithered, alpha too (§4.1.7
+    ** allows it on each); RGBA8888's rounding is exact, never dithered */
+    w->dither = ctx->dither && w->is16;
     w->blend = ctx->blend && !ctx->color_logic_op;
     w->keep = 0;
-    for (int i = 0; i < (w->is565 ? 3 : 4); i++)
-        if (!ctx->color_mask[i])
-            w->keep |= w->is565 ? m565[i] : 0xFFu << (8 * i);
+    w->layout = NULL;
+    if (!w->is16) {
+        /* (the RGBA8888 writers call this per chunk: nothing more for them) */
+        for (int i = 0; i < 4; i++)
+            if (!ctx->color_mask[i])
+                w->keep |= 0xFFu << (8 * i);
+        return;
+    }
+    w->keep = color_mask_keep(ctx->color_format, ctx->color_mask);
+    w->layout = color_layout16(ctx->color_format);
+    for (int i = 0; i < 4; i++)
+        w->unorm[i] = fragment_unorm_table(ctx, w->layout->bits[i]);
 }
 
 /* blending, dither, logic op and masks, then the framebuffer write of the
@@ -217,39 +241,55 @@ static inline uint32_t fragment_logic_op(unsigned int op, uint32_t s, uint32_t d
     FRAGMENT_LOGIC_OP_BODY(op, s, d)
 }
 
+/* a 16-bit format's stored channels as FRAGV (1 for one it lacks) */
+static inline void fragment_unpack16(const FragWrite *w, uint32_t d, FRAGV dst[4])
+{
+    const ColorLayout *l = w->layout;
+    for (int i = 0; i < 4; i++)
+        dst[i] = l->bits[i] ? w->unorm[i][(d >> l->shift[i]) & ((1u << l->bits[i]) - 1)] : FRAG_ONE;
+}
+
+/* a colour's channels into a 16-bit format's word (§2.12.8's conversion,
+** or the dither threshold t_d's choice, per channel) */
+static inline uint32_t fragment_pack16(const ColorLayout *l, const FRAGV c[4], int dither, FRAGV t_d)
+{
+    uint32_t packed = 0;
+    for (int i = 0; i < 4; i++)
+        if (l->bits[i])
+            packed |= fragment_channel(c[i], l->bits[i], dither, t_d) << l->shift[i];
+    return packed;
+}
+
 static inline void fragment_write(GlesContext *ctx, const FragWrite *w, int x, int y, size_t at, const FRAGV c[4])
 {
-    static const uint32_t max565[4] = { 31, 63, 31, 0 }, shift565[4] = { 11, 5, 0, 0 };
-    static const int bits565[3] = { 5, 6, 5 };
-    const int is565 = w->is565;
-    uint32_t dpacked = is565 ? ((uint16_t *)ctx->color)[at] : ((uint32_t *)ctx->color)[at];
+    const int is16 = w->is16;
+    uint32_t dpacked = is16 ? ((uint16_t *)ctx->color)[at] : ((uint32_t *)ctx->color)[at];
     FRAGV t_d = w->dither ? fragment_dither_threshold(x, y) : FRAG_ONE / 2;
     FRAGV out[4];
     if (w->blend) {
         FRAGV src[4], dst[4];
-        for (int i = 0; i < 4; i++) {
+        for (int i = 0; i < 4; i++)
             src[i] = frag_clamp01(c[i]);
-            if (is565)
-                dst[i] = i == 3 ? FRAG_ONE : (i == 1 ? ctx->unorm6 : ctx->unorm5)[(dpacked >> shift565[i]) & max565[i]];
-            else
+        if (is16)
+            fragment_unpack16(w, dpacked, dst);
+        else
+            for (int i = 0; i < 4; i++)
                 dst[i] = ctx->unorm8[(dpacked >> (8 * i)) & 0xFFu];
-        }
         fragment_blend(ctx, src, dst, out);
     } else {
         for (int i = 0; i < 4; i++)
             out[i] = c[i];
     }
     uint32_t packed = 0;
-    for (int i = 0; i < (is565 ? 3 : 4); i++) {
-        if (is565)
-            packed |= fragment_channel(out[i], bits565[i], w->dither, t_d) << shift565[i];
-        else
+    if (is16)
+        packed = fragment_pack16(w->layout, out, w->dither, t_d);
+    else
+        for (int i = 0; i < 4; i++)
             packed |= fragment_channel(out[i], 8, 0, t_d) << (8u * (uint32_t)i);
-    }
     if (ctx->color_logic_op)
-        packed = fragment_logic_op(ctx->logic_op, packed, dpacked) & (is565 ? 0xFFFFu : 0xFFFFFFFFu);
+        packed = fragment_logic_op(ctx->logic_op, packed, dpacked) & (is16 ? 0xFFFFu : 0xFFFFFFFFu);
     packed = (dpacked & w->keep) | (packed & ~w->keep);
-    if (is565)
+    if (is16)
         ((uint16_t *)ctx->color)[at] = (uint16_t)packed;
     else
         ((uint32_t *)ctx->color)[at] = packed;

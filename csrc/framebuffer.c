@@ -24,7 +24,7 @@ static void clear_rect(const GlesContext *ctx, int *x0, int *y0, int *x1, int *y
 typedef struct ClearJob {
     unsigned int mask;
     int x0, y0, x1, y1;
-    FRAGV c[4];                 /* the colour (RGB565's dither) */
+    FRAGV c[4];                 /* the colour (a 16-bit format's dither) */
     uint32_t packed, keep;      /* the colour packed, and the bits the mask keeps */
     uint32_t z;
     uint8_t s, wm;
@@ -39,24 +39,33 @@ static void clear_rows(GlesContext *ctx, void *arg)
     for (int y = j->y0; y < j->y1; y++) {
         if (!raster_owns_row(ctx, y))
             continue;
-        if ((j->mask & GL_COLOR_BUFFER_BIT) && ctx->color_format == GLES_COLOR_RGB565) {
-            /* §4.2.3: Clear is dithered like fragments */
-            static const uint32_t max565[3] = { 31, 63, 31 }, shift565[3] = { 11, 5, 0 };
+        if ((j->mask & GL_COLOR_BUFFER_BIT) && ctx->color_format != GLES_COLOR_RGBA8888) {
+            /* §4.2.3: Clear is dithered like fragments (every channel, as
+            ** fragment_write dithers), the masks apply */
+            /* the threshold depends on x & 3 in a row: four words */
+            uint32_t v[4] = { packed, packed, packed, packed };
+            if (ctx->dither)
+                for (int i = 0; i < 4; i++)
+                    v[i] = fragment_pack16(color_layout16(ctx->color_format), j->c, 1,
+                                           fragment_dither_threshold(i, y));
             uint16_t *row = (uint16_t *)ctx->color + (size_t)y * w;
-            for (int x = x0; x < x1; x++) {
-                uint32_t v = packed;
-                if (ctx->dither) {
-                    FRAGV t = fragment_dither_threshold(x, y);
-                    v = 0;
-                    for (int i = 0; i < 3; i++)
-                        v |= frag_to_unorm(frag_clamp01(j->c[i]), max565[i], t) << shift565[i];
-                }
-                row[x] = (uint16_t)((row[x] & keep) | (v & ~keep));
+            if (!keep) {
+                for (int x = x0; x < x1; x++)
+                    row[x] = (uint16_t)v[x & 3];
+            } else {
+                for (int x = x0; x < x1; x++)
+                    row[x] = (uint16_t)((row[x] & keep) | (v[x & 3] & ~keep));
             }
         } else if (j->mask & GL_COLOR_BUFFER_BIT) {
             uint32_t *row = (uint32_t *)ctx->color + (size_t)y * w;
-            for (int x = x0; x < x1; x++)
-                row[x] = (row[x] & keep) | (packed & ~keep);
+            /* every channel written: a fill, no read of what is there */
+            if (!keep) {
+                for (int x = x0; x < x1; x++)
+                    row[x] = packed;
+            } else {
+                for (int x = x0; x < x1; x++)
+                    row[x] = (row[x] & keep) | (packed & ~keep);
+            }
         }
         if ((j->mask & GL_DEPTH_BUFFER_BIT) && ctx->depth && ctx->depth_mask) {
             uint32_t *row = ctx->depth + (size_t)y * w;
@@ -91,18 +100,9 @@ int gles_Clear(GlesContext *ctx, unsigned int mask)
         return GLES_OK;
     if (mask & GL_COLOR_BUFFER_BIT) {
         for (int i = 0; i < 4; i++)
-            j.c[i] = frag_from_double(ctx->clear_color[i]);
+            j.c[i] = frag_clamp01(frag_from_double(ctx->clear_color[i]));
         j.packed = span_pack_color(ctx, j.c);
-        if (ctx->color_format == GLES_COLOR_RGB565) {
-            static const uint32_t m565[3] = { 0xF800, 0x07E0, 0x001F };
-            for (int i = 0; i < 3; i++)
-                if (!ctx->color_mask[i])
-                    j.keep |= m565[i];
-        } else {
-            for (int i = 0; i < 4; i++)
-                if (!ctx->color_mask[i])
-                    j.keep |= 0xFFu << (8 * i);
-        }
+        j.keep = color_mask_keep(ctx->color_format, ctx->color_mask);
     }
     j.z = (uint32_t)dbl_to_i64(ctx->clear_depth * ctx->depth_max, 0, ctx->depth_max);
     j.s = (uint8_t)(ctx->clear_stencil & 0xFF);
@@ -114,9 +114,6 @@ int gles_Clear(GlesContext *ctx, unsigned int mask)
     return GLES_OK;
 }
 
-/* expand a 5- or 6-bit channel to 8 bits exactly as c * 255 / max rounds */
-static uint8_t expand(uint32_t c, uint32_t max) { return (uint8_t)((c * 255 + max / 2) / max); }
-
 int gles_ReadPixels(GlesContext *ctx, int x, int y, int width, int height,
                     unsigned int format, unsigned int type, void *out, int64_t nbytes)
 {
@@ -126,13 +123,15 @@ int gles_ReadPixels(GlesContext *ctx, int x, int y, int width, int height,
     }
     if (!fbo_sync(ctx))
         return GLES_OK;
-    /* the two pairs: RGBA/UNSIGNED_BYTE, and the window's implementation
-    ** pair (OES_read_format): RGB/5_6_5, or BGRA_EXT/UNSIGNED_BYTE
-    ** (EXT_read_format_bgra) */
+    /* the two pairs: RGBA/UNSIGNED_BYTE, and the buffer's implementation
+    ** pair (OES_read_format): its own packed type (RGB/5_6_5, RGBA/4_4_4_4,
+    ** RGBA/5_5_5_1), or BGRA_EXT/UNSIGNED_BYTE (EXT_read_format_bgra) */
     const int bgra = ctx->color_format == GLES_COLOR_RGBA8888 && format == GL_BGRA_EXT && type == GL_UNSIGNED_BYTE;
     const int rgba = (format == GL_RGBA && type == GL_UNSIGNED_BYTE) || bgra;
-    int impl565 = ctx->color_format == GLES_COLOR_RGB565 && format == GL_RGB && type == GL_UNSIGNED_SHORT_5_6_5;
-    if (!rgba && !impl565) {
+    unsigned int own_format = 0, own_type = 0;
+    color_read_pair(ctx->color_format, &own_format, &own_type);
+    const int packed16 = ctx->color_format != GLES_COLOR_RGBA8888 && format == own_format && type == own_type;
+    if (!rgba && !packed16) {
         /* §4.3.1: a legal token pair that is not one of the two supported
         ** pairs is INVALID_OPERATION; an unknown token INVALID_ENUM */
         int fmt_known = format == GL_RGBA || format == GL_RGB || format == GL_ALPHA
@@ -158,11 +157,14 @@ int gles_ReadPixels(GlesContext *ctx, int x, int y, int width, int height,
     /* row by row: the part inside the window is a block conversion (a
     ** copy for the buffer's own format); pixels outside the window are
     ** undefined (§4.3.1), we give 0 */
-    uint8_t x5[32], x6[64];
-    for (uint32_t c = 0; c < 32; c++)
-        x5[c] = expand(c, 31);
-    for (uint32_t c = 0; c < 64; c++)
-        x6[c] = expand(c, 63);
+    /* a 16-bit format's channels to 8 bits, c * 255 / max rounded */
+    const ColorLayout *l = color_layout16(ctx->color_format);
+    uint8_t x8[4][64];
+    for (int i = 0; i < 4; i++)
+        for (uint32_t c = 0; c < 64; c++)
+            x8[i][c] = (uint8_t)color_channel8(l, i, (c & ((1u << l->bits[i]) - 1)) << l->shift[i]);
+    const uint32_t max[4] = { (1u << l->bits[0]) - 1, (1u << l->bits[1]) - 1, (1u << l->bits[2]) - 1,
+                              (1u << l->bits[3]) - 1 };
     int64_t ix0 = x < 0 ? -(int64_t)x : 0;                              /* first i inside */
     int64_t ix1 = (int64_t)ctx->width - x;                              /* past the last */
     if (ix1 > width)
@@ -196,11 +198,9 @@ int gles_ReadPixels(GlesContext *ctx, int x, int y, int width, int height,
             const uint16_t *src = (const uint16_t *)ctx->color + at;
             uint8_t *o = row + 4 * ix0;
             for (size_t i = 0; i < n; i++) {
-                uint16_t v = src[i];
-                o[4 * i] = x5[v >> 11];
-                o[4 * i + 1] = x6[(v >> 5) & 63];
-                o[4 * i + 2] = x5[v & 31];
-                o[4 * i + 3] = 255;
+                const uint32_t v = src[i];
+                for (int c = 0; c < 4; c++)
+                    o[4 * i + (size_t)c] = x8[c][(v >> l->shift[c]) & max[c]];
             }
         }
         if (bgra)

@@ -24,8 +24,10 @@ typedef struct GlesContext GlesContext;
 #define GLES_RANGE 1     /* the draw broke the overflow rule (gles_range_last) */
 
 /* framebuffer colour formats */
-#define GLES_COLOR_RGBA8888 0
-#define GLES_COLOR_RGB565 1
+#define GLES_COLOR_RGBA8888 0  /* uint32, R in the low byte */
+#define GLES_COLOR_RGB565 1    /* uint16 as GL's packed types: R in the high bits */
+#define GLES_COLOR_RGBA4444 2  /* uint16: R 15-12, G 11-8, B 7-4, A 3-0 */
+#define GLES_COLOR_RGBA5551 3  /* uint16: R 15-11, G 10-6, B 5-1, A 0 */
 
 /* profiles */
 #define GLES_PROFILE_COMMON 0

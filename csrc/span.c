@@ -20,9 +20,8 @@ uint32_t span_pack_color(const GlesContext *ctx, const FRAGV *c)
     FRAGV f[4];
     for (int i = 0; i < 4; i++)
         f[i] = frag_clamp01(c[i]);
-    if (ctx->color_format == GLES_COLOR_RGB565)
-        return (fragment_channel(f[0], 5, 0, 0) << 11) | (fragment_channel(f[1], 6, 0, 0) << 5)
-             | fragment_channel(f[2], 5, 0, 0);
+    if (ctx->color_format != GLES_COLOR_RGBA8888)
+        return fragment_pack16(color_layout16(ctx->color_format), f, 0, 0);
     return fragment_channel(f[0], 8, 0, 0) | (fragment_channel(f[1], 8, 0, 0) << 8)
          | (fragment_channel(f[2], 8, 0, 0) << 16) | (fragment_channel(f[3], 8, 0, 0) << 24);
 }

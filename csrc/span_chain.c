@@ -53,12 +53,13 @@ static inline void dither_row(const SpanBuf *b, int dither, FRAGV t_row[4])
         t_row[x] = dither ? fragment_dither_threshold(x, b->y) : FRAG_ONE / 2;
 }
 
-/* the colour buffer at the chunk's first pixel (RGBA8888 or RGB565 words) */
-static inline void *chunk_color(const GlesContext *ctx, const SpanBuf *b)
+/* the colour buffer at the chunk's first pixel: 16-bit words where `is16`
+** (the caller's test of the format, which it has made already), else
+** RGBA8888 ones */
+static inline void *chunk_color(const GlesContext *ctx, const SpanBuf *b, int is16)
 {
     const size_t at = (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
-    return ctx->color_format == GLES_COLOR_RGB565 ? (void *)((uint16_t *)ctx->color + at)
-                                                  : (void *)((uint32_t *)ctx->color + at);
+    return is16 ? (void *)((uint16_t *)ctx->color + at) : (void *)((uint32_t *)ctx->color + at);
 }
 
 static inline uint32_t pack565(const FRAGV v[3], int dither, FRAGV t_d)
@@ -774,7 +775,7 @@ static void run(GlesContext *ctx, const SpanStage *stages, int count, const TriS
     stencil_cull_setup(ctx, y, &cull);
     if (n > 0) {
         const size_t at = (size_t)y * (size_t)ctx->width + (size_t)x0;
-        const size_t bpp = ctx->color_format == GLES_COLOR_RGB565 ? 2 : 4;
+        const size_t bpp = (size_t)color_bytes(ctx->color_format);
         prefetch_bytes((const char *)ctx->color + at * bpp, (size_t)n * bpp);
         if (ctx->depth_test && ctx->depth)
             prefetch_bytes(ctx->depth + at, (size_t)n * 4);

@@ -1553,7 +1553,7 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
         avx2_modwrite_dither(m, ctx->dither, t_row);
     }
     avx2_modwrite_dispatch(m, a, src, rgb565, n, b->n, b->k, b->x0, (const WGT (*)[3])b->p, b->ct[0][u], stride,
-                           b->tc, chunk_color(ctx, b), ctx->unorm5, ctx->unorm6);
+                           b->tc, chunk_color(ctx, b, rgb565), ctx->unorm5, ctx->unorm6);
     m->dot3 = NULL;     /* d3 ends here */
 }
 
@@ -1619,7 +1619,7 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
         f8_modwrite_dither(m, ctx->dither, t_row);
     }
     f8_modwrite_dispatch(m, src, rgb565, n, b->n, b->k, (const WGT (*)[3])b->p, b->ct[0][u], stride, b->tc, b->x0,
-                         chunk_color(ctx, b));
+                         chunk_color(ctx, b, rgb565));
 }
 
 static void STAGE(stage_modulate_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)

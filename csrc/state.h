@@ -194,13 +194,78 @@ typedef struct Texture {
     int max_level;                      /* q: the last level sampled */
 } Texture;
 
+/* a 16-bit colour buffer's channels, R, G, B, A, as GL's packed types
+** (red in the high bits): each one's width and lowest bit in the word, 0
+** bits for none (RGB565's alpha) */
+typedef struct ColorLayout {
+    int bits[4], shift[4];
+} ColorLayout;
+
+static inline const ColorLayout *color_layout16(int format)
+{
+    static const ColorLayout rgb565 = { { 5, 6, 5, 0 }, { 11, 5, 0, 0 } };
+    static const ColorLayout rgba4444 = { { 4, 4, 4, 4 }, { 12, 8, 4, 0 } };
+    static const ColorLayout rgba5551 = { { 5, 5, 5, 1 }, { 11, 6, 1, 0 } };
+    return format == GLES_COLOR_RGBA4444 ? &rgba4444 : format == GLES_COLOR_RGBA5551 ? &rgba5551 : &rgb565;
+}
+
+/* bytes of a pixel of a colour format (GLES_COLOR_*) */
+static inline int color_bytes(int format) { return format == GLES_COLOR_RGBA8888 ? 4 : 2; }
+
+/* the bits of channel i (0..3) of a colour format */
+static inline int color_channel_bits(int format, int i)
+{
+    return format == GLES_COLOR_RGBA8888 ? 8 : color_layout16(format)->bits[i];
+}
+
+/* the packed word's bits of the channels whose colour mask is off: those
+** a write keeps as stored */
+static inline uint32_t color_mask_keep(int format, const unsigned char mask[4])
+{
+    uint32_t keep = 0;
+    for (int i = 0; i < 4; i++) {
+        if (mask[i])
+            continue;
+        if (format == GLES_COLOR_RGBA8888) {
+            keep |= 0xFFu << (8 * i);
+        } else {
+            const ColorLayout *l = color_layout16(format);
+            keep |= ((1u << l->bits[i]) - 1) << l->shift[i];
+        }
+    }
+    return keep;
+}
+
+/* channel i of a 16-bit word expanded to 8 bits, c * 255 / (2^bits - 1)
+** rounded (255 where the format has none) */
+static inline uint32_t color_channel8(const ColorLayout *l, int i, uint32_t word)
+{
+    if (!l->bits[i])
+        return 255;
+    const uint32_t max = (1u << l->bits[i]) - 1;
+    return (((word >> l->shift[i]) & max) * 255 + max / 2) / max;
+}
+
+/* a colour format's implementation read pair (OES_read_format): its own
+** packed type, or for RGBA8888, whose byte order is RGBA already, the pair
+** a program cannot otherwise have (EXT_read_format_bgra's BGRA_EXT) */
+static inline void color_read_pair(int format, unsigned int *gl_format, unsigned int *gl_type)
+{
+    switch (format) {
+    case GLES_COLOR_RGB565: *gl_format = GL_RGB, *gl_type = GL_UNSIGNED_SHORT_5_6_5; break;
+    case GLES_COLOR_RGBA4444: *gl_format = GL_RGBA, *gl_type = GL_UNSIGNED_SHORT_4_4_4_4; break;
+    case GLES_COLOR_RGBA5551: *gl_format = GL_RGBA, *gl_type = GL_UNSIGNED_SHORT_5_5_5_1; break;
+    default: *gl_format = GL_BGRA_EXT, *gl_type = GL_UNSIGNED_BYTE; break;
+    }
+}
+
 /* OES_framebuffer_object: a renderbuffer's image (one of color, depth or
 ** stencil storage, or depth and stencil for DEPTH24_STENCIL8_OES) */
 typedef struct Renderbuffer {
     unsigned int name;
     unsigned int format;        /* sized internal format; 0 before RenderbufferStorageOES */
     int width, height;
-    void *color;                /* uint32 RGBA8888 or uint16 RGB565, as the window's */
+    void *color;                /* uint32 RGBA8888 or uint16 RGB565, RGBA4444, RGBA5551, as the window's */
     uint32_t *depth;
     uint8_t *stencil;
     int64_t bytes;              /* charged to the memory budget */
@@ -319,7 +384,7 @@ struct GlesContext {
     int color_format;           /* GLES_COLOR_* */
     int depth_bits, stencil_bits;
     uint32_t depth_max;         /* 2^depth_bits - 1 */
-    void *color;                /* uint32 RGBA8888 (R in the low byte) or uint16 565 */
+    void *color;                /* uint32 RGBA8888 (R in the low byte) or a uint16 format */
     uint32_t *depth;
     uint8_t *stencil;
     int color_alpha;            /* the color buffer keeps alpha */
@@ -524,6 +589,10 @@ struct GlesContext {
     uint32_t *vert_stamp;
     int64_t verts_capacity;
     uint32_t draw_stamp;
+
+    /* d / 15 and d / 1 as FRAGV, the 4- and 1-bit channels' reads (after
+    ** the fields the span stages read most, whose offsets they keep) */
+    FRAGV unorm4[16], unorm1[2];
 };
 
 /* dirty bits */

@@ -650,11 +650,16 @@ static void copy_framebuffer_row(const GlesContext *ctx, int64_t x, int64_t y, i
     for (int64_t i = 0; i < lo; i++)
         dst[i] = outside;
     const size_t at = hi > lo ? (size_t)y * (size_t)ctx->width + (size_t)(x + lo) : 0;
-    if (hi > lo && ctx->color_format == GLES_COLOR_RGB565) {
+    if (hi > lo && ctx->color_format != GLES_COLOR_RGBA8888) {
+        /* a 16-bit format's channels to 8 bits as texels of 4_4_4_4,
+        ** 5_5_5_1 and 5_6_5 are (c * 255 / max rounded) */
+        const ColorLayout *l = color_layout16(ctx->color_format);
         const uint16_t *src = (const uint16_t *)ctx->color + at;
         for (int64_t i = lo; i < hi; i++) {
-            uint16_t v = src[i - lo];
-            dst[i] = as_base_format(pack(x5(v >> 11), x6((v >> 5) & 63), x5(v & 31), 255), format);
+            const uint32_t v = src[i - lo];
+            dst[i] = as_base_format(pack(color_channel8(l, 0, v), color_channel8(l, 1, v), color_channel8(l, 2, v),
+                                         color_channel8(l, 3, v)),
+                                    format);
         }
     } else if (hi > lo && format == GL_RGBA) {
         memcpy(dst + lo, (const uint32_t *)ctx->color + at, (size_t)(hi - lo) * sizeof *dst);
@@ -671,7 +676,7 @@ static void copy_framebuffer_row(const GlesContext *ctx, int64_t x, int64_t y, i
 ** ALPHA, LUMINANCE_ALPHA and RGBA) */
 static int copy_compatible(const GlesContext *ctx, unsigned int format)
 {
-    int has_alpha = ctx->color_format == GLES_COLOR_RGBA8888 && ctx->color_alpha;
+    int has_alpha = ctx->color_alpha;
     return has_alpha || !(format == GL_ALPHA || format == GL_LUMINANCE_ALPHA || format == GL_RGBA);
 }
 

@@ -89,7 +89,7 @@ def test_context_rejects_bad_arguments(kwargs):
 
 @pytest.mark.parametrize("numeric", BUILDS)
 @pytest.mark.parametrize("profile", ["common", "common-lite"])
-@pytest.mark.parametrize("color", ["rgba8888", "rgb565"])
+@pytest.mark.parametrize("color", ["rgba8888", "rgb565", "rgba4444", "rgba5551"])
 def test_every_combination_constructs(numeric, profile, color):
     """Every profile x build x colour format makes a working context; the largest size too."""
     ctx = gles.Context(3, 2, numeric=numeric, profile=profile, color=color, depth=0, stencil=0)

@@ -90,11 +90,14 @@ def _depth_stencil_scene(gl, w: int, h: int) -> None:
 @pytest.mark.parametrize("color, depth, stencil", [
     (C.GL_RGBA8_OES, C.GL_DEPTH_COMPONENT24_OES, C.GL_STENCIL_INDEX8_OES),
     (C.GL_RGB565_OES, C.GL_DEPTH_COMPONENT16_OES, C.GL_STENCIL_INDEX8_OES),
+    (C.GL_RGBA4_OES, C.GL_DEPTH_COMPONENT16_OES, C.GL_STENCIL_INDEX8_OES),
+    (C.GL_RGB5_A1_OES, C.GL_DEPTH24_STENCIL8_OES, C.GL_DEPTH24_STENCIL8_OES),
     (C.GL_RGBA8_OES, C.GL_DEPTH24_STENCIL8_OES, C.GL_DEPTH24_STENCIL8_OES),
 ])
 def test_renderbuffers_draw_as_a_window_does(numeric: str, color: int, depth: int, stencil: int) -> None:
     w, h = 40, 24
-    window_format = "rgb565" if color == C.GL_RGB565_OES else "rgba8888"
+    window_format = {C.GL_RGB565_OES: "rgb565", C.GL_RGBA4_OES: "rgba4444",
+                     C.GL_RGB5_A1_OES: "rgba5551"}.get(color, "rgba8888")
     depth_bits = 16 if depth == C.GL_DEPTH_COMPONENT16_OES else 24
     with gles.Context(w, h, numeric=numeric, color=window_format, depth=depth_bits, stencil=8) as win:
         _depth_stencil_scene(win.gl, w, h)
@@ -218,9 +221,11 @@ def test_completeness() -> None:
     assert status() == C.GL_FRAMEBUFFER_INCOMPLETE_DIMENSIONS_OES
     gl.glFramebufferRenderbufferOES(FB, DEPTH, RB, 0)
     assert status() == C.GL_FRAMEBUFFER_COMPLETE_OES
-    # the formats gles cannot draw into: 4- and 5-bit channels, no color buffer
-    gl.glFramebufferRenderbufferOES(FB, COLOR, RB, _renderbuffer(gl, C.GL_RGBA4_OES, 8, 8))
-    assert status() == C.GL_FRAMEBUFFER_UNSUPPORTED_OES
+    # 4- and 5-bit channels are colour buffers gles draws into
+    for fmt in (C.GL_RGBA4_OES, C.GL_RGB5_A1_OES):
+        gl.glFramebufferRenderbufferOES(FB, COLOR, RB, _renderbuffer(gl, fmt, 8, 8))
+        assert status() == C.GL_FRAMEBUFFER_COMPLETE_OES
+    # an object without a color buffer is one gles cannot draw into
     gl.glFramebufferRenderbufferOES(FB, COLOR, RB, 0)
     gl.glFramebufferRenderbufferOES(FB, DEPTH, RB, _renderbuffer(gl, C.GL_DEPTH_COMPONENT16_OES, 8, 8))
     assert status() == C.GL_FRAMEBUFFER_UNSUPPORTED_OES

@@ -46,6 +46,29 @@ FUNCS: dict[str, Callable[[Any, Any], Any]] = {
 # between distinct exact values
 FLOOR_SLACK = 1e-4
 
+# the 16-bit colour buffers' channels as GL's packed types: (bits, lowest bit)
+# of R, G, B (and A) in the word, red in the high bits
+LAYOUTS = {"rgb565": ((5, 11), (6, 5), (5, 0)),
+           "rgba4444": ((4, 12), (4, 8), (4, 4), (4, 0)),
+           "rgba5551": ((5, 11), (5, 6), (5, 1), (1, 0))}
+FORMATS16 = tuple(LAYOUTS)
+
+
+def bits_of(color: str) -> np.ndarray:
+    """The channel widths of a 16-bit format (3 for RGB565, else 4)."""
+    return np.array([b for b, _ in LAYOUTS[color]])
+
+
+def split16(raw: np.ndarray, color: str) -> np.ndarray:
+    """A 16-bit buffer's words as their channels (..., 3 or 4) of integers."""
+    raw = np.asarray(raw).astype(np.int64)
+    return np.stack([(raw >> shift) & ((1 << bits) - 1) for bits, shift in LAYOUTS[color]], axis=-1)
+
+
+def channel_masks(color: str) -> list[int]:
+    """The word's bits of each channel of a 16-bit format."""
+    return [((1 << bits) - 1) << shift for bits, shift in LAYOUTS[color]]
+
 
 # {============================================================
 # drawing helpers
@@ -469,35 +492,36 @@ def test_src_alpha_saturate(numeric):
 
 
 @pytest.mark.parametrize("numeric", BUILDS)
-def test_blend_on_rgb565(numeric):
-    """RGB565 (dither off): destination k/(2^b - 1), Ad = 1 (no alpha bits, §4.1.7), and the
-    result truncated to the channel's bits (§4.1.8) as floor(v 2^b)."""
+@pytest.mark.parametrize("color", FORMATS16)
+def test_blend_on_16bit_formats(numeric, color):
+    """RGB565, RGBA4444, RGBA5551 (dither off): destination k/(2^b - 1), Ad = 1 where there are
+    no alpha bits (§4.1.7), and the result truncated to the channel's bits (§4.1.8) as
+    floor(v 2^b)."""
     rng = np.random.default_rng(7)
-    f = Frame(numeric, color="rgb565")
+    f = Frame(numeric, color=color)
     gl = f.gl
-    bits = np.array([5, 6, 5])
+    bits = bits_of(color)
+    nch = len(bits)
     for sf, df in [("SRC_ALPHA", "ONE_MINUS_SRC_ALPHA"), ("ONE", "ONE"), ("DST_COLOR", "ZERO"),
                    ("ONE_MINUS_DST_ALPHA", "DST_ALPHA"), ("SRC_ALPHA_SATURATE", "ONE"),
-                   ("ZERO", "SRC_COLOR")]:
+                   ("ZERO", "SRC_COLOR"), ("DST_ALPHA", "ONE_MINUS_SRC_COLOR")]:
         gl.glDisable(C.GL_BLEND)
         f.paint(rng.integers(0, 256, (H, W, 4)))
-        raw = f.ctx.color_buffer().astype(np.int64)
-        dk = np.stack([raw >> 11, (raw >> 5) & 63, raw & 31], axis=-1)
-        d = np.concatenate([dk / ((1 << bits) - 1), np.ones((H, W, 1))], axis=-1)
+        dk = split16(f.ctx.color_buffer(), color)
+        d = np.concatenate([dk / ((1 << bits) - 1), np.ones((H, W, 4 - nch))], axis=-1)
         src = rng.integers(0, 256, (H, W, 4))
         gl.glEnable(C.GL_BLEND)
         gl.glBlendFunc(getattr(C, "GL_" + sf), getattr(C, "GL_" + df))
         f.paint(src)
         s = src / 255.0
-        v = np.clip(s * blend_factor(sf, s, d) + d * blend_factor(df, s, d), 0, 1)[..., :3]
-        raw = f.ctx.color_buffer().astype(np.int64)
-        got = np.stack([raw >> 11, (raw >> 5) & 63, raw & 31], axis=-1)
+        v = np.clip(s * blend_factor(sf, s, d) + d * blend_factor(df, s, d), 0, 1)[..., :nch]
+        got = split16(f.ctx.color_buffer(), color)
         e = v * (1 << bits)
         want = np.minimum(np.floor(e), (1 << bits) - 1)
         near = np.abs(e - np.round(e)) < FLOOR_SLACK
         either = np.minimum(np.round(e), (1 << bits) - 1)
         ok = (got == want) | (near & ((got == either) | (got == either - 1)))
-        assert ok.all(), f"{numeric} 565 BlendFunc({sf}, {df}): {int((~ok).sum())} channels differ"
+        assert ok.all(), f"{numeric} {color} BlendFunc({sf}, {df}): {int((~ok).sum())} channels differ"
 
 
 @pytest.mark.parametrize("numeric", BUILDS)
@@ -528,29 +552,24 @@ def test_modulation_all_65536_pairs(numeric):
 # {============================================================
 # dither (§4.1.8) and framebuffer conversion (§2.12.8)
 
-BITS565 = np.array([5, 6, 5])
-
-
-def split565(raw: np.ndarray) -> np.ndarray:
-    raw = raw.astype(np.int64)
-    return np.stack([raw >> 11, (raw >> 5) & 63, raw & 31], axis=-1)
-
-
 @pytest.mark.parametrize("numeric", BUILDS)
-def test_undithered_565_keeps_the_high_bits(numeric):
-    """Dither off: an unlit ubyte colour c is stored as its high bits (c >> 3, c >> 2), and
+@pytest.mark.parametrize("color", FORMATS16)
+def test_undithered_16bit_keeps_the_high_bits(numeric, color):
+    """Dither off: an unlit ubyte colour c is stored as its high bits (c >> (8 - b)), and
     any other value v as floor(v 2^b) clamped (§2.12.8, §4.1.8), for drawing and Clear."""
-    f = Frame(numeric, 16, 16, color="rgb565")
+    f = Frame(numeric, 16, 16, color=color)
     gl = f.gl
+    bits = bits_of(color)
     c = np.arange(256).reshape(16, 16)
-    f.paint(np.stack([c, c, 255 - c, c], axis=-1))
-    got = split565(f.ctx.color_buffer())
-    np.testing.assert_array_equal(got, np.stack([c >> 3, c >> 2, (255 - c) >> 3], axis=-1))
+    cols = np.stack([c, c, 255 - c, (c * 7) & 255], axis=-1)
+    f.paint(cols)
+    got = split16(f.ctx.color_buffer(), color)
+    np.testing.assert_array_equal(got, cols[..., :len(bits)] >> (8 - bits))
     for v in (0.0, 0.3, 0.5, 0.77, 31 / 32, 1.0):
-        gl.glClearColor(v, v, v, 1.0)
+        gl.glClearColor(v, v, v, 1 - v)
         gl.glClear(C.GL_COLOR_BUFFER_BIT)
-        want = np.minimum(np.floor(v * (1 << BITS565)), (1 << BITS565) - 1)
-        assert (split565(f.ctx.color_buffer()) == want).all(), f"Clear({v}) with dither off"
+        want = np.minimum(np.floor(np.array([v, v, v, 1 - v])[:len(bits)] * (1 << bits)), (1 << bits) - 1)
+        assert (split16(f.ctx.color_buffer(), color) == want).all(), f"Clear({v}) with dither off"
 
 
 def dither_checks(on: np.ndarray, off: np.ndarray, exact: np.ndarray, slack: float, what: str,
@@ -573,58 +592,65 @@ def dither_checks(on: np.ndarray, off: np.ndarray, exact: np.ndarray, slack: flo
 
 
 @pytest.mark.parametrize("numeric", BUILDS)
-def test_dither_on_565(numeric):
-    """Dither on (the initial state): uniform 4x4 blocks of random colours, and smooth ramps."""
+@pytest.mark.parametrize("color", FORMATS16)
+def test_dither_on_16bit(numeric, color):
+    """Dither on (the initial state): uniform 4x4 blocks of random colours, and smooth ramps;
+    every channel the format has, alpha too (§4.1.7 allows it on each)."""
     rng = np.random.default_rng(3)
-    f = Frame(numeric, color="rgb565")
+    f = Frame(numeric, color=color)
     gl = f.gl
+    bits = bits_of(color)
+    nch = len(bits)
     slack = FLOOR_SLACK
     block = rng.integers(0, 256, (H // 4, W // 4, 4))
     cols = np.repeat(np.repeat(block, 4, axis=0), 4, axis=1)
-    exact = cols[..., :3] / 255.0 * ((1 << BITS565) - 1)
+    exact = cols[..., :nch] / 255.0 * ((1 << bits) - 1)
     f.paint(cols)
-    off = split565(f.ctx.color_buffer())
+    off = split16(f.ctx.color_buffer(), color)
     gl.glEnable(C.GL_DITHER)
     f.paint(cols)
-    on = split565(f.ctx.color_buffer())
-    dither_checks(on, off, exact, slack, f"{numeric} flat blocks")
+    on = split16(f.ctx.color_buffer(), color)
+    dither_checks(on, off, exact, slack, f"{numeric} {color} flat blocks")
     assert (on != off).any(), "dither on changed nothing"
     # a smooth ramp: red 0 -> 1 along x, green along y (exact interpolation at pixel centres)
     gl.glShadeModel(C.GL_SMOOTH)
     v = np.array([[0, 0], [W, 0], [W, H], [0, H]], dtype=np.float32)
-    col = np.array([[0, 0, 255, 255], [255, 0, 255, 255], [255, 255, 0, 255], [0, 255, 0, 255]], np.uint8)
+    col = np.array([[0, 0, 255, 0], [255, 0, 255, 255], [255, 255, 0, 255], [0, 255, 0, 0]], np.uint8)
     gl.glVertexPointer(2, C.GL_FLOAT, 0, v)
     gl.glEnableClientState(C.GL_COLOR_ARRAY)
     gl.glColorPointer(4, C.GL_UNSIGNED_BYTE, 0, col)
     ys, xs = np.mgrid[0:H, 0:W] + 0.5
     u, t = xs / W, ys / H
-    exact = np.stack([u * 31, t * 63, (1 - t) * 31], axis=-1)   # linear on both triangles
+    exact = np.stack([u, t, 1 - t, u], axis=-1)[..., :nch] * ((1 << bits) - 1)   # linear on both triangles
     gl.glDisable(C.GL_DITHER)
     gl.glDrawArrays(C.GL_TRIANGLE_FAN, 0, 4)
-    off = split565(f.ctx.color_buffer())
+    off = split16(f.ctx.color_buffer(), color)
     gl.glEnable(C.GL_DITHER)
     gl.glDrawArrays(C.GL_TRIANGLE_FAN, 0, 4)
-    on = split565(f.ctx.color_buffer())
-    dither_checks(on, off, exact, slack, f"{numeric} ramp", blocks=False)
+    on = split16(f.ctx.color_buffer(), color)
+    dither_checks(on, off, exact, slack, f"{numeric} {color} ramp", blocks=False)
 
 
 @pytest.mark.parametrize("numeric", BUILDS)
-def test_clear_dithers_on_565(numeric):
+@pytest.mark.parametrize("color", FORMATS16)
+def test_clear_dithers_on_16bit(numeric, color):
     """Clear is dithered (§4.2.3) like fragments; with dither off it is uniform."""
-    f = Frame(numeric, color="rgb565")
+    f = Frame(numeric, color=color)
     gl = f.gl
-    for rgb in ((0.3, 0.52, 0.9), (0.05, 0.95, 0.5), (1 / 3, 2 / 3, 0.1)):
-        exact = np.broadcast_to(np.array(rgb) * ((1 << BITS565) - 1), (H, W, 3))
+    bits = bits_of(color)
+    for rgba in ((0.3, 0.52, 0.9, 0.41), (0.05, 0.95, 0.5, 0.6), (1 / 3, 2 / 3, 0.1, 0.45)):
+        exact = np.broadcast_to(np.array(rgba[:len(bits)]) * ((1 << bits) - 1), (H, W, len(bits)))
         gl.glDisable(C.GL_DITHER)
-        gl.glClearColor(*rgb, 1.0)
+        gl.glClearColor(*rgba)
         gl.glClear(C.GL_COLOR_BUFFER_BIT)
-        off = split565(f.ctx.color_buffer())
+        off = split16(f.ctx.color_buffer(), color)
         assert (off == off[0, 0]).all()
         gl.glEnable(C.GL_DITHER)
         gl.glClear(C.GL_COLOR_BUFFER_BIT)
-        on = split565(f.ctx.color_buffer())
-        dither_checks(on, off, exact, FLOOR_SLACK, f"{numeric} Clear{rgb}")
-        assert len(np.unique(on[..., 0])) == 2, "a clear value between two shades is dithered"
+        on = split16(f.ctx.color_buffer(), color)
+        dither_checks(on, off, exact, FLOOR_SLACK, f"{numeric} {color} Clear{rgba}")
+        if abs(exact[0, 0, 0] - round(exact[0, 0, 0])) > FLOOR_SLACK:
+            assert len(np.unique(on[..., 0])) == 2, "a clear value between two shades is dithered"
 
 
 @pytest.mark.parametrize("numeric", BUILDS)
@@ -648,24 +674,38 @@ def test_rgba8888_is_not_dithered(numeric):
     assert images[1][0, 0].tolist() == [79, 158, 237, 33]     # 0.31, 0.62, 0.93, 0.13 x 255 rounded
 
 
+READ_PAIRS = {"rgb565": (C.GL_RGB, C.GL_UNSIGNED_SHORT_5_6_5),
+              "rgba4444": (C.GL_RGBA, C.GL_UNSIGNED_SHORT_4_4_4_4),
+              "rgba5551": (C.GL_RGBA, C.GL_UNSIGNED_SHORT_5_5_5_1)}
+
+
 @pytest.mark.parametrize("numeric", BUILDS)
-def test_read_pixels_implementation_format(numeric):
-    """OES_read_format: RGB/UNSIGNED_SHORT_5_6_5 on RGB565 returns the stored (dithered) values;
-    RGBA/UNSIGNED_BYTE expands them; RGBA8888 names RGBA/UNSIGNED_BYTE."""
-    f = Frame(numeric, color="rgb565")
+@pytest.mark.parametrize("color", FORMATS16)
+def test_read_pixels_implementation_format(numeric, color):
+    """OES_read_format: the buffer's own packed pair (RGB/5_6_5, RGBA/4_4_4_4, RGBA/5_5_5_1)
+    returns the stored (dithered) values; RGBA/UNSIGNED_BYTE expands them; RGBA8888 names
+    BGRA_EXT/UNSIGNED_BYTE."""
+    f = Frame(numeric, color=color)
     gl = f.gl
     gl.glEnable(C.GL_DITHER)
-    gl.glClearColor(0.3, 0.6, 0.2, 1.0)
+    gl.glClearColor(0.3, 0.6, 0.2, 0.7)
     gl.glClear(C.GL_COLOR_BUFFER_BIT)
-    assert gl.glGetIntegerv(C.GL_IMPLEMENTATION_COLOR_READ_FORMAT_OES) == C.GL_RGB
-    assert gl.glGetIntegerv(C.GL_IMPLEMENTATION_COLOR_READ_TYPE_OES) == C.GL_UNSIGNED_SHORT_5_6_5
-    raw = gl.glReadPixels(0, 0, W, H, C.GL_RGB, C.GL_UNSIGNED_SHORT_5_6_5)
+    fmt, typ = READ_PAIRS[color]
+    assert gl.glGetIntegerv(C.GL_IMPLEMENTATION_COLOR_READ_FORMAT_OES) == fmt
+    assert gl.glGetIntegerv(C.GL_IMPLEMENTATION_COLOR_READ_TYPE_OES) == typ
+    raw = gl.glReadPixels(0, 0, W, H, fmt, typ)
     np.testing.assert_array_equal(raw, f.ctx.color_buffer())
     rgba = gl.glReadPixels(0, 0, W, H, C.GL_RGBA, C.GL_UNSIGNED_BYTE).astype(np.int64)
-    k = split565(raw)
-    top = (1 << BITS565) - 1
-    np.testing.assert_array_equal(rgba[..., :3], (k * 255 + top // 2) // top)
-    assert (rgba[..., 3] == 255).all()
+    k = split16(raw, color)
+    top = (1 << bits_of(color)) - 1
+    np.testing.assert_array_equal(rgba[..., :len(top)], (k * 255 + top // 2) // top)
+    if len(top) == 3:
+        assert (rgba[..., 3] == 255).all()
+    # another format's pair is INVALID_OPERATION and writes nothing
+    for other, (ofmt, otyp) in READ_PAIRS.items():
+        if other != color:
+            gl.glReadPixels(0, 0, 1, 1, ofmt, otyp)
+            assert gl.glGetError() == C.GL_INVALID_OPERATION
     g = Frame(numeric)
     # EXT_read_format_bgra
     assert g.gl.glGetIntegerv(C.GL_IMPLEMENTATION_COLOR_READ_FORMAT_OES) == C.GL_BGRA_EXT
@@ -686,14 +726,14 @@ LOGIC_OPS: dict[str, Callable[[np.ndarray, np.ndarray], np.ndarray]] = {
 
 
 @pytest.mark.parametrize("numeric", BUILDS)
-@pytest.mark.parametrize("color", ["rgba8888", "rgb565"])
+@pytest.mark.parametrize("color", ["rgba8888", *FORMATS16])
 def test_logic_op_all_16(numeric, color):
     """Table 4.2 on the stored bits of both formats; enabled, it replaces blending."""
     rng = np.random.default_rng(8)
     f = Frame(numeric, color=color)
     probe = Frame(numeric, color=color)
     gl = f.gl
-    full = 0xFFFF if color == "rgb565" else 0xFF
+    full = 0xFF if color == "rgba8888" else 0xFFFF
     for k, (name, fn) in enumerate(LOGIC_OPS.items()):
         src = rng.integers(0, 256, (H, W, 4))
         dst = rng.integers(0, 256, (H, W, 4))
@@ -748,22 +788,47 @@ def test_color_mask_with_blending_and_logic_op(numeric):
 
 
 @pytest.mark.parametrize("numeric", BUILDS)
-def test_color_mask_rgb565(numeric):
-    """On RGB565 the red, green and blue masks protect their 5/6/5 bits."""
-    f = Frame(numeric, color="rgb565")
+@pytest.mark.parametrize("color", FORMATS16)
+def test_color_mask_16bit(numeric, color):
+    """On a 16-bit format each channel's mask protects its bits, in drawing and Clear,
+    and blending and the logic op leave masked channels as stored."""
+    rng = np.random.default_rng(10)
+    f = Frame(numeric, color=color)
     gl = f.gl
-    for bits in range(8):
-        mask = [bool(bits >> i & 1) for i in range(3)] + [True]
+    masks = channel_masks(color)
+    nch = len(masks)
+    for bits in range(1 << nch):
+        mask = [bool(bits >> i & 1) for i in range(nch)] + [True] * (4 - nch)
+        kept = sum(m for m, on in zip(masks, mask) if not on)
         gl.glColorMask(True, True, True, True)
         gl.glClearColor(0, 0, 0, 0)
         gl.glClear(C.GL_COLOR_BUFFER_BIT)
         gl.glColorMask(*mask)
         f.paint((255, 255, 255, 255))
-        want = sum(m for m, on in zip((0xF800, 0x07E0, 0x001F), mask) if on)
-        assert (f.ctx.color_buffer() == want).all()
+        assert (f.ctx.color_buffer() == 0xFFFF & ~kept & sum(masks)).all()
         gl.glClearColor(0, 0, 0, 0)
         gl.glClear(C.GL_COLOR_BUFFER_BIT)
         assert (f.ctx.color_buffer() == 0).all()
+        for logic in (False, True):
+            gl.glColorMask(True, True, True, True)
+            gl.glDisable(C.GL_BLEND)
+            gl.glDisable(C.GL_COLOR_LOGIC_OP)
+            f.paint(rng.integers(0, 256, (H, W, 4)))
+            before = f.ctx.color_buffer().astype(np.int64)
+            gl.glColorMask(*mask)
+            if logic:
+                gl.glEnable(C.GL_COLOR_LOGIC_OP)
+                gl.glLogicOp(C.GL_INVERT)
+            else:
+                gl.glEnable(C.GL_BLEND)
+                gl.glBlendFunc(C.GL_ONE_MINUS_DST_COLOR, C.GL_ZERO)
+            f.paint((0, 0, 0, 0))
+            after = f.ctx.color_buffer().astype(np.int64)
+            np.testing.assert_array_equal(after & kept, before & kept)
+            if logic:
+                np.testing.assert_array_equal(after & ~kept & 0xFFFF, ~before & ~kept & sum(masks) & 0xFFFF)
+        gl.glDisable(C.GL_BLEND)
+        gl.glDisable(C.GL_COLOR_LOGIC_OP)
 
 
 @pytest.mark.parametrize("depth_bits", [16, 24])

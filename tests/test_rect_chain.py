@@ -39,7 +39,7 @@ unit = st.fixed_dictionaries({
 
 STATE_FIELDS = {
     "numeric": st.sampled_from(BUILDS),
-    "color": st.sampled_from(["rgba8888", "rgb565"]),
+    "color": st.sampled_from(["rgba8888", "rgb565", "rgba4444", "rgba5551"]),
     "units": st.lists(unit, min_size=0, max_size=2),
     "rect": st.tuples(st.floats(-10, 30), st.floats(-10, 25), st.floats(-0.5, 1.5),
                       st.floats(0.5, 45), st.floats(0.5, 40)),

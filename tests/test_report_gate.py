@@ -266,26 +266,28 @@ def test_report_json_matches_the_comparisons(scene_file: Path, tmp_path: Path, m
     assert data["scenes"][0]["verdict"]["status"] == "pass"
 
 
-def test_rgb565_renders_every_build_in_rgb565(scene_file: Path, tmp_path: Path, monkeypatch: Any) -> None:
+@pytest.mark.parametrize("color", ["rgb565", "rgba4444", "rgba5551"])
+def test_16bit_reports_render_every_build_in_their_format(scene_file: Path, tmp_path: Path, monkeypatch: Any,
+                                                          color: str) -> None:
     monkeypatch.setenv("GLES_TARGET", "off")
-    assert _run(tmp_path, str(scene_file), "--color", "rgb565") == 0
+    assert _run(tmp_path, str(scene_file), "--color", color) == 0
     data = json.loads((tmp_path / "report.json").read_text())
-    assert data["color"] == "rgb565"
+    assert data["color"] == color
     ns = _module(scene_file)
     for name in ("flat", "far"):
-        ref = _image(ns[name], "double", "rgb565")
-        assert not np.array_equal(ref, _image(ns[name], "double"))     # 565 shows
+        ref = _image(ns[name], "double", color)
+        assert not np.array_equal(ref, _image(ns[name], "double"))     # the format shows
         for build in ("fixed", "float", "double"):
-            want = _image(ns[name], build, "rgb565")
+            want = _image(ns[name], build, color)
             got = _read_png(tmp_path / "img" / f"{name}_{build}.png")
             assert np.array_equal(got, want), (name, build)
-            psnr, share = _psnr_share(want, ref)          # against double in RGB565 too
+            psnr, share = _psnr_share(want, ref)          # against double in that format too
             m = next(s for s in data["scenes"] if s["name"] == name)["renders"][build]["metrics"]
             assert m["identical"] == math.isinf(psnr)
             if not math.isinf(psnr):
                 assert m["psnr_db"] == pytest.approx(psnr, rel=1e-9)
             assert m["share_over_1lsb"] == pytest.approx(share)
-    assert "RGB565 framebuffer" in (tmp_path / "report.md").read_text()
+    assert f"{color.upper()} framebuffer" in (tmp_path / "report.md").read_text()
 
 
 def _entry(name: str) -> report.Entry:

@@ -23,7 +23,7 @@ W = H = 32
 
 # state changes that leave a blend out of the specialised spans
 BREAKERS = ("separate", "subtract", "logic_op", "color_mask", "alpha_test", "fog", "stencil", "rgb565",
-            "other_func")
+            "rgba4444", "rgba5551", "other_func")
 
 states = st.fixed_dictionaries({
     "numeric": st.sampled_from(BUILDS),
@@ -33,7 +33,7 @@ states = st.fixed_dictionaries({
     "depth_test": st.booleans(),
     "depth_func": st.sampled_from(["LESS", "LESS", "LESS", "LEQUAL", "ALWAYS", "GREATER"]),
     "depth_mask": st.sampled_from([True, True, True, False]),
-    "breaker": st.sampled_from((None,) * 9 + BREAKERS),
+    "breaker": st.sampled_from((None,) * 11 + BREAKERS),
     "persp": st.booleans(),
     "seed": st.integers(0, 2**32 - 1),
 })
@@ -56,7 +56,7 @@ def render(s: dict, generic: bool):
     rng = np.random.default_rng(s["seed"])
     verts, cols = random_triangles(rng, s["persp"], 10, W)
     brk = s["breaker"]
-    color = "rgb565" if brk == "rgb565" else "rgba8888"
+    color = brk if brk in ("rgb565", "rgba4444", "rgba5551") else "rgba8888"
     ctx = make_ctx(s["numeric"], W, H, color=color, depth=s["depth_bits"])
     gl = ctx.gl
     if generic:

@@ -311,7 +311,7 @@ def scenes(draw: Any, textured: bool = False, steps: bool = False) -> dict:
             changes[key] = new
     scene = {
         "numeric": draw(st.sampled_from(BUILDS)),
-        "color": draw(st.sampled_from(("rgba8888", "rgb565"))),
+        "color": draw(st.sampled_from(("rgba8888", "rgb565", "rgba4444", "rgba5551"))),
         "depth_bits": draw(st.sampled_from((0, 16, 24))),
         "stencil_bits": draw(st.sampled_from((0, 8))),
         "size": draw(SIZES),
@@ -958,6 +958,30 @@ def case_rgb565_dither_blend(numeric: str, seed: int) -> dict:
     return make_scene(numeric, seed, s, color="rgb565", depth_bits=16)
 
 
+def case_rgba4444_dither_blend(numeric: str, seed: int) -> dict:
+    """RGBA4444 with dither (alpha too) and ONE_MINUS_DST_ALPHA blending over a MODULATE
+    texture, so the stored 4-bit alpha is read back."""
+    s = base_state()
+    s["dither"] = True
+    s["blend"] = {"on": True, "func": (C.GL_ONE_MINUS_DST_ALPHA, C.GL_DST_ALPHA), "separate": None,
+                  "equation": None}
+    s["tex0"] = tex(seed, mip="generate", min=C.GL_LINEAR_MIPMAP_NEAREST)
+    s["env0"] = {**OFF_ENV, "mode": C.GL_MODULATE}
+    s["depth"] = {"on": True, "func": C.GL_LESS, "mask": True, "range": None}
+    return make_scene(numeric, seed, s, color="rgba4444", depth_bits=16)
+
+
+def case_rgba5551_logic_op(numeric: str, seed: int) -> dict:
+    """RGBA5551 with dither and an XOR logic op on the stored bits, then blending."""
+    s = base_state()
+    s["dither"] = True
+    s["logic"] = {"on": True, "op": C.GL_XOR}
+    s["blend"] = {"on": True, "func": (C.GL_SRC_ALPHA, C.GL_ONE_MINUS_SRC_ALPHA), "separate": None,
+                  "equation": None}
+    return make_scene(numeric, seed, s, changes={"logic": {"on": False, "op": C.GL_XOR}}, color="rgba5551",
+                      triangles=10)
+
+
 def case_four_unit_crossbar(numeric: str, seed: int) -> dict:
     """Four COMBINE units reading each other's textures, two of them mipmapped, non-identity
     texture matrices."""
@@ -1067,7 +1091,8 @@ CASES = {f.__name__[5:]: f for f in (case_dot3_modulate_fog, case_alpha_additive
                                      case_rgb565_dither_blend, case_four_unit_crossbar,
                                      case_offset_stencil_wrap, case_wide_alpha_test,
                                      case_mipmap_after_stencil, case_modulate_alpha_test_blend,
-                                     case_modulate_rgb565)}
+                                     case_modulate_rgb565, case_rgba4444_dither_blend,
+                                     case_rgba5551_logic_op)}
 
 
 @pytest.mark.parametrize("numeric", BUILDS)
@@ -1098,7 +1123,9 @@ def start_states() -> dict[str, tuple[dict, dict]]:
            "env1": {**OFF_ENV, "mode": C.GL_ADD}, "blend": alpha["blend"]}
     return {"plain": (plain, {}), "alpha_blend": (alpha, {}), "add_blend": (add, {}),
             "textured": (textured, {}), "two_units": (two, {}),
-            "rgb565": ({**plain, "dither": True}, {"color": "rgb565"})}
+            "rgb565": ({**plain, "dither": True}, {"color": "rgb565"}),
+            "rgba4444": ({**alpha, "dither": True}, {"color": "rgba4444"}),
+            "rgba5551": ({**alpha, "dither": True}, {"color": "rgba5551"})}
 
 
 # each: one or more commands, a draw after each

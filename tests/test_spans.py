@@ -26,7 +26,7 @@ DEPTH_FUNCS = ("NEVER", "LESS", "EQUAL", "LEQUAL", "GREATER", "NOTEQUAL", "GEQUA
 
 states = st.fixed_dictionaries({
     "numeric": st.sampled_from(BUILDS),
-    "color": st.sampled_from(["rgba8888", "rgb565"]),
+    "color": st.sampled_from(["rgba8888", "rgb565", "rgba4444", "rgba5551"]),
     "depth_bits": st.sampled_from([0, 16, 24]),
     "smooth": st.booleans(),
     "depth_test": st.booleans(),
@@ -123,7 +123,7 @@ def test_paths_change_with_state():
             "color_mask": (True, True, True, True), "persp": False, "seed": 1}
     assert render(base, False)[2] == "smooth_zless"
     for change in ({"depth_func": "LEQUAL"}, {"depth_mask": False}, {"color_mask": (True, False, True, True)},
-                   {"color": "rgb565"}):
+                   {"color": "rgb565"}, {"color": "rgba4444"}, {"color": "rgba5551"}):
         s = {**base, **change}
         assert render(s, False)[2] == "chain", change
         check_state(s)

@@ -122,11 +122,13 @@ def test_buffers_offsets_and_changed_arrays(numeric: str) -> None:
     assert T.replay(t, raw=True) == t.color_buffer
 
 
-def test_rgb565_and_file_round_trip(tmp_path: Any) -> None:
+@pytest.mark.parametrize("color", ["rgb565", "rgba4444", "rgba5551"])
+def test_16bit_formats_and_file_round_trip(tmp_path: Any, color: str) -> None:
     scene = GALLERY["dot3_bump"][1]
     path = tmp_path / "dot3.glestrace"
-    t = gles.trace(scene, W, H, numeric="fixed", color="rgb565", path=path)
-    np.testing.assert_array_equal(t.image, plain_run(scene, "fixed", color="rgb565"))
+    t = gles.trace(scene, W, H, numeric="fixed", color=color, path=path)
+    assert T.read_header(path.read_bytes()).color == color
+    np.testing.assert_array_equal(t.image, plain_run(scene, "fixed", color=color))
     assert len(t.color_buffer) == W * H * 2
     assert T.replay(path, raw=True) == t.color_buffer
     np.testing.assert_array_equal(T.replay(path), t.image)

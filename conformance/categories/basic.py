@@ -20,7 +20,7 @@ from gles import gl as _gles_gl
 from ..harness import TestContext, conformance_test
 
 ONE = 1 << 16
-RGBA_VISUALS = ("rgba8888", "rgb565")
+RGBA_VISUALS = ("rgba8888", "rgb565", "rgba4444", "rgba5551")
 DEPTH_VISUALS = ("rgba8888", "rgba8888-d16")
 
 

@@ -1,19 +1,23 @@
 """Framebuffer objects: OES_framebuffer_object (EXT_framebuffer_object §4.4
 as the OES extension restricts it).
 
-Categories FBO.texture, FBO.renderbuffer, FBO.status and FBO.errors. Every
+Categories FBO.texture, FBO.renderbuffer, FBO.renderbuffer16, FBO.status
+and FBO.errors. Every
 test uses Common-Lite commands, draws flat axis-aligned quads whose edges lie
 on pixel boundaries in colours every visual and buffer format holds exactly
 (channels 0 or 1), and compares the framebuffer object's pixels with the
 quads; only the formats OES_framebuffer_object requires are used
-(RGB565_OES, DEPTH_COMPONENT16_OES, and RGB/RGBA textures).
+(RGBA4_OES, RGB5_A1_OES, RGB565_OES, DEPTH_COMPONENT16_OES, and RGB/RGBA
+textures). The extension lets an implementation call any combination
+FRAMEBUFFER_UNSUPPORTED_OES: a test of such a combination is skipped, never
+failed.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from ..harness import TestContext, conformance_test
+from ..harness import TestContext, Unsupported, conformance_test
 
 ONE = 1 << 16
 RED, GREEN, BLUE, WHITE = (255, 0, 0, 255), (0, 255, 0, 255), (0, 0, 255, 255), (255, 255, 255, 255)
@@ -148,6 +152,51 @@ def fbo_renderbuffer(t: TestContext) -> None:
     gl.glDeleteFramebuffersOES(1, [fb])
     gl.glDeleteRenderbuffersOES(2, [c, z])
     t.check_gl_error("FBO.renderbuffer")
+
+
+@conformance_test("FBO.renderbuffer16", section="OES_framebuffer_object", uses=("depth",), size=(32, 32))
+def fbo_renderbuffer16(t: TestContext) -> None:
+    """RGBA4_OES and RGB5_A1_OES colour renderbuffers with DEPTH_COMPONENT16_OES: complete (or
+    UNSUPPORTED, which the extension allows), the depth-tested scene exactly, alpha bits
+    present, and blending that reads the stored alpha (DST_ALPHA of a cleared 0 or 1)."""
+    t.need_extension("GL_OES_framebuffer_object")
+    gl = t.gl
+    w, h = t.width, t.height
+    t.clear((0, 0, 0, 0))          # (the window's final image is compared across path levels)
+    unsupported = []
+    for name, fmt in (("RGBA4", gl.GL_RGBA4_OES), ("RGB5_A1", gl.GL_RGB5_A1_OES)):
+        fb = _object(t)
+        c = _renderbuffer(t, fmt, w, h)
+        z = _renderbuffer(t, gl.GL_DEPTH_COMPONENT16_OES, w, h)
+        _attach(t, gl.GL_COLOR_ATTACHMENT0_OES, c)
+        _attach(t, gl.GL_DEPTH_ATTACHMENT_OES, z)
+        status = gl.glCheckFramebufferStatusOES(gl.GL_FRAMEBUFFER_OES)
+        if status == gl.GL_FRAMEBUFFER_UNSUPPORTED_OES:
+            unsupported.append(name)
+        elif status != gl.GL_FRAMEBUFFER_COMPLETE_OES:
+            t.fail(f"{name} + DEPTH_COMPONENT16 renderbuffers: status 0x{status:04X}")
+        else:
+            if int(np.atleast_1d(gl.glGetIntegerv(gl.GL_ALPHA_BITS))[0]) < 1:
+                t.fail(f"ALPHA_BITS of an {name} object is 0")
+            _expect(t, _draw_scene(t, depth=True), f"{name} + DEPTH16 object")
+            # the right half's alpha 0 where nothing was drawn, then ONE_MINUS_DST_ALPHA, DST_ALPHA
+            # of white: white over the cleared right-bottom quarter, the drawn colours elsewhere
+            t.clear((0, 0, 0, 0))
+            _quad(t, 0, 0, w // 2, h, RED)
+            gl.glEnable(gl.GL_BLEND)
+            gl.glBlendFunc(gl.GL_ONE_MINUS_DST_ALPHA, gl.GL_DST_ALPHA)
+            _quad(t, 0, 0, w, h // 2, WHITE)
+            gl.glDisable(gl.GL_BLEND)
+            want = np.zeros((h, w, 4), np.uint8)
+            want[:, : w // 2] = RED
+            want[: h // 2, w // 2:] = WHITE
+            _expect(t, want, f"{name} object, DST_ALPHA blending")
+        gl.glBindFramebufferOES(gl.GL_FRAMEBUFFER_OES, 0)
+        gl.glDeleteFramebuffersOES(1, [fb])
+        gl.glDeleteRenderbuffersOES(2, [c, z])
+    t.check_gl_error("FBO.renderbuffer16")
+    if len(unsupported) == 2:
+        raise Unsupported("RGBA4_OES and RGB5_A1_OES objects are FRAMEBUFFER_UNSUPPORTED_OES here")
 
 
 @conformance_test("FBO.status", section="OES_framebuffer_object", size=(16, 16))

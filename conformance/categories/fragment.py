@@ -29,8 +29,8 @@ import numpy as np
 from ..harness import TestContext, conformance_test
 
 ONE = 1 << 16
-RGBA_VISUALS = ("rgba8888", "rgb565")
-ALL_VISUALS = ("rgba8888", "rgba8888-d16", "rgb565")
+RGBA_VISUALS = ("rgba8888", "rgb565", "rgba4444", "rgba5551")
+ALL_VISUALS = ("rgba8888", "rgba8888-d16", "rgb565", "rgba4444", "rgba5551")
 
 FUNCS: dict[str, Callable[[Any, Any], Any]] = {
     "GL_NEVER": lambda a, b: np.zeros(np.broadcast(a, b).shape, dtype=bool),

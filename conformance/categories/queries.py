@@ -1232,7 +1232,7 @@ def _unpack(fmt: int, typ: int, px: np.ndarray, h: int, w: int) -> np.ndarray:
     raise Unsupported(f"no unpacking rule for format 0x{fmt:04X} type 0x{typ:04X}")
 
 
-@conformance_test("ReadFormat", section="4.3.1", visuals=("rgba8888", "rgb565"))
+@conformance_test("ReadFormat", section="4.3.1", visuals=("rgba8888", "rgb565", "rgba4444", "rgba5551"))
 def read_format(t: TestContext) -> None:
     """OES_read_format: the implementation's pair reads the same pixels as RGBA/UNSIGNED_BYTE."""
     gl = t.gl

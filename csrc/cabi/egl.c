@@ -3,8 +3,11 @@
 ** build and profile; GLES_CABI_COMMON as in gl.c).
 **
 ** One display (eglGetDisplay(EGL_DEFAULT_DISPLAY), or the surfaceless
-** platform through eglGetPlatformDisplay(EXT)); twelve configs, RGBA8888 and
-** RGB565 by depth 0/16/24 by stencil 0/8, all pbuffer-only and OpenGL ES 1;
+** platform through eglGetPlatformDisplay(EXT)); twenty-four configs,
+** RGBA8888, RGB565, RGBA4444 and RGBA5551 by depth 0/16/24 by stencil 0/8,
+** all pbuffer-only and OpenGL ES 1 (the 16-bit RGBA ones last, IDs 13-24,
+** so that eglChooseConfig's sort, whose ties go to the lower ID, still puts
+** first what it put first with twelve);
 ** pbuffer surfaces; OpenGL ES 1 contexts; a current context per thread.
 ** There is no window system: window and pixmap surfaces give
 ** EGL_BAD_NATIVE_WINDOW / EGL_BAD_NATIVE_PIXMAP.
@@ -50,7 +53,7 @@ typedef struct {
     int color_format;      /* GLES_COLOR_* */
 } Config;
 
-#define NCONFIGS 12
+#define NCONFIGS 24
 static const Config configs[NCONFIGS] = {
     {1, 8, 8, 8, 8, 0, 0, GLES_COLOR_RGBA8888},  {2, 8, 8, 8, 8, 0, 8, GLES_COLOR_RGBA8888},
     {3, 8, 8, 8, 8, 16, 0, GLES_COLOR_RGBA8888}, {4, 8, 8, 8, 8, 16, 8, GLES_COLOR_RGBA8888},
@@ -58,6 +61,12 @@ static const Config configs[NCONFIGS] = {
     {7, 5, 6, 5, 0, 0, 0, GLES_COLOR_RGB565},    {8, 5, 6, 5, 0, 0, 8, GLES_COLOR_RGB565},
     {9, 5, 6, 5, 0, 16, 0, GLES_COLOR_RGB565},   {10, 5, 6, 5, 0, 16, 8, GLES_COLOR_RGB565},
     {11, 5, 6, 5, 0, 24, 0, GLES_COLOR_RGB565},  {12, 5, 6, 5, 0, 24, 8, GLES_COLOR_RGB565},
+    {13, 4, 4, 4, 4, 0, 0, GLES_COLOR_RGBA4444}, {14, 4, 4, 4, 4, 0, 8, GLES_COLOR_RGBA4444},
+    {15, 4, 4, 4, 4, 16, 0, GLES_COLOR_RGBA4444}, {16, 4, 4, 4, 4, 16, 8, GLES_COLOR_RGBA4444},
+    {17, 4, 4, 4, 4, 24, 0, GLES_COLOR_RGBA4444}, {18, 4, 4, 4, 4, 24, 8, GLES_COLOR_RGBA4444},
+    {19, 5, 5, 5, 1, 0, 0, GLES_COLOR_RGBA5551}, {20, 5, 5, 5, 1, 0, 8, GLES_COLOR_RGBA5551},
+    {21, 5, 5, 5, 1, 16, 0, GLES_COLOR_RGBA5551}, {22, 5, 5, 5, 1, 16, 8, GLES_COLOR_RGBA5551},
+    {23, 5, 5, 5, 1, 24, 0, GLES_COLOR_RGBA5551}, {24, 5, 5, 5, 1, 24, 8, GLES_COLOR_RGBA5551},
 };
 
 typedef struct Context Context;
@@ -173,7 +182,7 @@ static Context *check_context(EGLDisplay dpy, EGLContext context)
 static size_t pixel_bytes(GlesContext *core, const Config *cfg, size_t part[3])
 {
     size_t n = (size_t)gles_width(core) * (size_t)gles_height(core);
-    part[0] = n * (cfg->color_format == GLES_COLOR_RGB565 ? 2 : 4);
+    part[0] = n * (cfg->color_format == GLES_COLOR_RGBA8888 ? 4 : 2);
     part[1] = cfg->depth ? n * 4 : 0;
     part[2] = cfg->stencil ? n : 0;
     return part[0] + part[1] + part[2];

@@ -251,7 +251,7 @@ static int read_header(Replay *rp, Reader *r)
                   (unsigned)h->table_hash, (unsigned)REPLAY_TABLE_HASH);
         return -1;
     }
-    if (h->width < 1 || h->width > 4096 || h->height < 1 || h->height > 4096 || h->color > 1 ||
+    if (h->width < 1 || h->width > 4096 || h->height < 1 || h->height > 4096 || h->color > GLES_COLOR_RGBA5551 ||
         (h->depth != 0 && h->depth != 16 && h->depth != 24) || (h->stencil != 0 && h->stencil != 8) ||
         h->profile > 1 || h->numeric > 2 || h->range_mode > 2 || h->memory_limit < 0) {
         set_error(rp, "invalid context configuration in the trace header");
@@ -396,7 +396,7 @@ int replay_run(Replay *rp, const uint8_t *data, size_t size)
 
 size_t replay_color_bytes(const Replay *rp)
 {
-    int bpp = rp->header.color == GLES_COLOR_RGB565 ? 2 : 4;
+    int bpp = rp->header.color == GLES_COLOR_RGBA8888 ? 4 : 2;
     return (size_t)rp->header.width * (size_t)rp->header.height * (size_t)bpp;
 }
 

@@ -5,7 +5,7 @@
 **
 ** plays the trace on the core it is linked with and writes the final colour
 ** buffer, raw (bottom row first, 4 bytes a pixel for RGBA8888, 2 for
-** RGB565), to OUT ("-": standard output). Exit status 0, 1 for a bad trace
+** RGB565, RGBA4444 and RGBA5551), to OUT ("-": standard output). Exit status 0, 1 for a bad trace
 ** (the reason on standard error), 2 for a usage or I/O error.
 **
 ** Built for an ARM target (__arm__), the frame's begin and end also make a

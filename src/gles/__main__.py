@@ -215,8 +215,9 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--scenes", "--only", dest="only", type=_names, default=None, metavar="NAMES,FILE.py",
                    help="comma-separated gallery or hard-case scene names and/or scene files (*.py); "
                    "default: the gallery and the hard cases")
-    p.add_argument("--color", default="rgba8888", choices=["rgba8888", "rgb565"],
-                   help="framebuffer of every renderer, the double reference included (default rgba8888)")
+    p.add_argument("--color", default="rgba8888", choices=list(cmp.COLOR_FORMATS),
+                   help="framebuffer of every renderer, the double reference included (default rgba8888; "
+                   "Mesa has no RGBA4444 or RGBA5551 window, so its peers are skipped there)")
     p.add_argument("--min-psnr", type=_psnr, default=None, metavar="DB",
                    help="a scene falls short when a build's PSNR against double is below DB")
     p.add_argument("--max-over-1lsb", type=_share, default=None, metavar="FRACTION",
@@ -247,7 +248,7 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("-o", "--output", required=True, help="trace file to write (.glestrace)")
     p.add_argument("--function", default=None, help="the scene function's name (default: scene)")
     p.add_argument("--numeric", default="fixed", choices=list(cmp.BUILDS))
-    p.add_argument("--color", default="rgba8888", choices=["rgba8888", "rgb565"])
+    p.add_argument("--color", default="rgba8888", choices=list(cmp.COLOR_FORMATS))
     p.add_argument("--size", type=_size, default=_size("256x256"), help="WxH (default 256x256)")
     p.set_defaults(run=_cmd_trace)
 

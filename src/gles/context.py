@@ -28,7 +28,36 @@ for _base, _key in ((GLBase, "common-lite"), (GLCommon, "common")):
         _GL_CLASSES[(_key, _ranged, False)] = _cls
         _GL_CLASSES[(_key, _ranged, True)] = _checked_class(_cls)
 
-COLOR_FORMATS = {"rgba8888": _LIB.GLES_COLOR_RGBA8888, "rgb565": _LIB.GLES_COLOR_RGB565}
+COLOR_FORMATS = {"rgba8888": _LIB.GLES_COLOR_RGBA8888, "rgb565": _LIB.GLES_COLOR_RGB565,
+                 "rgba4444": _LIB.GLES_COLOR_RGBA4444, "rgba5551": _LIB.GLES_COLOR_RGBA5551}
+
+# the 16-bit formats' channels R, G, B, A as (bits, lowest bit) in the word,
+# as GL's packed types (red in the high bits); (0, 0) for none
+COLOR_LAYOUTS: dict[str, tuple[tuple[int, int], ...]] = {
+    "rgb565": ((5, 11), (6, 5), (5, 0), (0, 0)),
+    "rgba4444": ((4, 12), (4, 8), (4, 4), (4, 0)),
+    "rgba5551": ((5, 11), (5, 6), (5, 1), (1, 0)),
+}
+
+
+def expand_color(raw: np.ndarray, color: str) -> np.ndarray:
+    """A 16-bit colour buffer's words (uint16, any shape) as uint8 RGBA
+    (shape + (4,)): each channel c of m bits becomes c * 255 / (2^m - 1)
+    rounded, a missing alpha 255; an RGBA8888 buffer (uint8 (..., 4)) is
+    returned as it is."""
+    if color == "rgba8888":
+        return raw
+    if color not in COLOR_LAYOUTS:
+        raise ValueError(f"color must be one of {sorted(COLOR_FORMATS)}, not {color!r}")
+    words = np.asarray(raw).astype(np.uint32)
+    out = np.empty(words.shape + (4,), dtype=np.uint8)
+    for i, (bits, shift) in enumerate(COLOR_LAYOUTS[color]):
+        if not bits:
+            out[..., i] = 255
+            continue
+        top = (1 << bits) - 1
+        out[..., i] = (((words >> shift) & top) * 255 + top // 2) // top
+    return out
 
 DEFAULT_MEMORY_LIMIT = 256 << 20    # bytes of texture images and buffer data per context
 MAX_THREADS = int(_LIB.GLES_MAX_THREADS)
@@ -76,7 +105,10 @@ class Context:
             (fixed commands only; FLOAT arrays are rejected).
         numeric: the core's arithmetic: "fixed" (16.16, the product),
             "float" or "double" (the accuracy reference).
-        color: "rgba8888" or "rgb565".
+        color: the colour buffer: "rgba8888" (uint32 words, red in the low
+            byte), "rgb565", "rgba4444" or "rgba5551" (uint16 words laid
+            out as GL's packed types of those names, red in the high bits;
+            DITHER, on by default, dithers every channel of these three).
         depth: depth buffer bits, 0, 16 or 24.
         stencil: stencil buffer bits, 0 or 8.
         range_check: what to do with reals 16.16 cannot hold and with draws
@@ -269,9 +301,9 @@ class Context:
 
     def color_buffer(self) -> np.ndarray:
         """The colour buffer as stored, bottom row first: uint8 (h, w, 4) for
-        RGBA8888 or uint16 (h, w) for RGB565. A copy."""
+        RGBA8888 or uint16 (h, w) for RGB565, RGBA4444 and RGBA5551. A copy."""
         with self._lock:
-            if self.color == "rgb565":
+            if self.color != "rgba8888":
                 buf = self._ffi.buffer(self._lib.gles_color_buffer(self._ptr), self.width * self.height * 2)
                 return np.frombuffer(buf, dtype=np.uint16).reshape(self.height, self.width).copy()
             buf = self._ffi.buffer(self._lib.gles_color_buffer(self._ptr), self.width * self.height * 4)
@@ -296,21 +328,10 @@ class Context:
     def image(self) -> np.ndarray:
         """The colour buffer as uint8 RGBA (h, w, 4), top row first.
 
-        RGB565 channels are expanded to 8 bits (c * 255 / max, rounded) and
-        alpha is 255.
+        The channels of a 16-bit buffer are expanded to 8 bits (c * 255 /
+        max, rounded); RGB565's alpha is 255.
         """
-        raw = self.color_buffer()
-        if self.color == "rgb565":
-            r = (raw >> 11).astype(np.uint32)
-            g = ((raw >> 5) & 63).astype(np.uint32)
-            b = (raw & 31).astype(np.uint32)
-            out = np.empty(raw.shape + (4,), dtype=np.uint8)
-            out[..., 0] = (r * 255 + 15) // 31
-            out[..., 1] = (g * 255 + 31) // 63
-            out[..., 2] = (b * 255 + 15) // 31
-            out[..., 3] = 255
-            raw = out
-        return raw[::-1].copy()
+        return expand_color(self.color_buffer(), self.color)[::-1].copy()
 
     def save(self, file: str | os.PathLike[str] | BinaryIO) -> None:
         """Write the colour buffer as PNG (top row first) to a path or to a

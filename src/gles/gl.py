@@ -1233,7 +1233,9 @@ class GLBase:
         allocated): rows from max(y, 0), columns from max(x, 0); uint8
         (h, w, 4) for GL_RGBA/GL_UNSIGNED_BYTE and, on an RGBA8888 window,
         GL_BGRA_EXT/GL_UNSIGNED_BYTE (EXT_read_format_bgra: B, G, R, A), and
-        uint16 (h, w) for GL_RGB/GL_UNSIGNED_SHORT_5_6_5 on an RGB565 one. With ``array`` (a writable buffer)
+        uint16 (h, w) for a 16-bit buffer's own pair (GL_RGB/GL_UNSIGNED_SHORT_5_6_5 on
+        RGB565, GL_RGBA/GL_UNSIGNED_SHORT_4_4_4_4 on RGBA4444, GL_RGBA/GL_UNSIGNED_SHORT_5_5_5_1
+        on RGBA5551). With ``array`` (a writable buffer)
         the whole rectangle's raw rows are written into it with
         PACK_ALIGNMENT padding instead (zeros outside the framebuffer), and
         None is returned. On a GL error nothing is written and None is

@@ -56,6 +56,7 @@ import numpy as np
 from . import __version__
 from ._png import write_png
 from .compare import BUILDS, PEERS, Comparison, Render, check_color, compare_scenes
+from .context import COLOR_LAYOUTS
 
 # one colour per renderer, for the plots and the legend
 COLORS = {"fixed": "#d62728", "float": "#1f77b4", "double": "#2ca02c",
@@ -513,22 +514,24 @@ def colorbar_svg(width: int = 420) -> str:
 # the color buffer format
 
 def _check_color(comp: Comparison, color: str) -> None:
-    """Every image of an RGB565 report comes from a 5-6-5 buffer: a build's
-    holds only the 32 red and blue and 64 green levels gles expands to, a
-    peer's at most that many distinct levels (Mesa expands by its own rule).
-    Anything else would be an RGBA8888 render under the wrong name."""
-    if color != "rgb565":
+    """Every image of a 16-bit report (RGB565, RGBA4444, RGBA5551) comes from
+    a buffer of that format: a build's holds only the 2^m levels per channel
+    gles expands to, a peer's at most that many distinct levels (Mesa expands
+    by its own rule). Anything else would be an RGBA8888 render under the
+    wrong name."""
+    if color not in COLOR_LAYOUTS:
         return
-    bits = (5, 6, 5)
+    bits = [b for b, _ in COLOR_LAYOUTS[color] if b]
     levels = [{(c * 255 + m // 2) // m for c in range(m + 1)} for m in ((1 << b) - 1 for b in bits)]
     for r in comp.renders.values():
         if r.image is None:
             continue
-        for ch in range(3):
+        for ch in range(len(bits)):
             seen = set(np.unique(r.image[..., ch]).tolist())
             ok = seen <= levels[ch] if r.renderer in BUILDS else len(seen) <= 1 << bits[ch]
             if not ok:
-                raise RuntimeError(f"{comp.scene} on {r.renderer}: the image is not from an RGB565 buffer")
+                raise RuntimeError(f"{comp.scene} on {r.renderer}: the image is not from an "
+                                   f"{color.upper()} buffer")
 
 
 # {====================================================================
@@ -733,9 +736,9 @@ def _intro(w: int, h: int, runs: int, color: str, rendered_s: float, target_s: f
            + (" with an RGBA8888 buffer" if color != "rgba8888" else "") + "; fixed / float below 1: "
            "fixed point runs fewer instructions there."
            if target_missing is None else f"Target columns: {target_missing}.")
-    dither = (" gles dithers an RGB565 buffer (GL_DITHER is on by default) and Mesa's llvmpipe and "
-              "softpipe do not, so a peer's error includes gles's dither pattern."
-              if color == "rgb565" else "")
+    dither = (f" gles dithers an {color.upper()} buffer (GL_DITHER is on by default) and Mesa's llvmpipe "
+              "and softpipe do not, so a peer's error includes gles's dither pattern."
+              if color != "rgba8888" else "")
     return (f"{w}x{h} pixels, {color.upper()} framebuffer, error against the double build (rendered "
             f"the same way) over R, G and B.{dither} Times are host timings: the median of {runs} frames "
             f"per renderer on this machine ({_machine()}), not the target's. {tgt} "

@@ -51,13 +51,13 @@ from typing import Any, Callable, Union
 import numpy as np
 
 from ._trace_table import CALLS, TABLE_HASH
-from .context import Context
+from .context import Context, expand_color
 
 MAGIC = b"GLESTRC\x1a"
 VERSION = 1
 HEADER_SIZE = 40
 NUMERICS = ("fixed", "float", "double")
-COLORS = ("rgba8888", "rgb565")
+COLORS = ("rgba8888", "rgb565", "rgba4444", "rgba5551")    # GLES_COLOR_* order
 PROFILES = ("common", "common-lite")
 RANGE_MODES = {"off": 0, "warn": 1, "raise": 1, "clamp": 1}
 
@@ -300,7 +300,7 @@ def read_header(data: bytes) -> TraceInfo:
         raise ValueError(f"trace format version {version}, this gles reads version {VERSION}")
     if table != TABLE_HASH:
         raise ValueError(f"trace call table 0x{table:08X}, this gles has 0x{TABLE_HASH:08X}")
-    if color > 1 or profile > 1 or numeric > 2 or not (1 <= w <= 4096 and 1 <= h <= 4096):
+    if color >= len(COLORS) or profile > 1 or numeric > 2 or not (1 <= w <= 4096 and 1 <= h <= 4096):
         raise ValueError("invalid context configuration in the trace header")
     return TraceInfo(w, h, COLORS[color], depth, stencil, PROFILES[profile], NUMERICS[numeric])
 
@@ -317,13 +317,9 @@ def replayer(numeric: str = "fixed") -> Path:
 
 def raw_to_image(raw: bytes, info: TraceInfo) -> np.ndarray:
     """A replayed colour buffer (as stored) as uint8 RGBA, top row first (Context.image())."""
-    if info.color == "rgb565":
-        px = np.frombuffer(raw, dtype="<u2").reshape(info.height, info.width).astype(np.uint32)
-        out = np.empty(px.shape + (4,), dtype=np.uint8)
-        out[..., 0] = ((px >> 11) * 255 + 15) // 31
-        out[..., 1] = (((px >> 5) & 63) * 255 + 31) // 63
-        out[..., 2] = ((px & 31) * 255 + 15) // 31
-        out[..., 3] = 255
+    if info.color != "rgba8888":
+        px = np.frombuffer(raw, dtype="<u2").reshape(info.height, info.width)
+        out = expand_color(px, info.color)
     else:
         out = np.frombuffer(raw, dtype=np.uint8).reshape(info.height, info.width, 4)
     return out[::-1].copy()

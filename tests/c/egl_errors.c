@@ -57,7 +57,7 @@ int main(void)
 
     /* configs */
     EXPECT_ERROR(eglGetConfigs(dpy, NULL, 0, NULL), EGL_FALSE, EGL_BAD_PARAMETER);
-    EXPECT(eglGetConfigs(dpy, NULL, 0, &n) && n == 12, "twelve configs");
+    EXPECT(eglGetConfigs(dpy, NULL, 0, &n) && n == 24, "twenty-four configs");
     const EGLint bad_attr[] = {0x7777, 1, EGL_NONE};
     EGLConfig config;
     EXPECT_ERROR(eglChooseConfig(dpy, bad_attr, &config, 1, &n), EGL_FALSE, EGL_BAD_ATTRIBUTE);

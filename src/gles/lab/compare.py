@@ -216,7 +216,7 @@ def heatmap(image: np.ndarray, reference: np.ndarray) -> np.ndarray:
 # {====================================================================
 # rendering
 
-COLOR_FORMATS = ("rgba8888", "rgb565")
+COLOR_FORMATS = ("rgba8888", "rgb565", "rgba4444", "rgba5551")
 
 
 def check_color(color: str) -> None:
@@ -246,21 +246,25 @@ def _close(ctx: Any) -> None:
         close()
 
 
-def _peer_missing(renderer: str) -> str | None:
+def _peer_missing(renderer: str, color: str = "rgba8888") -> str | None:
     """Why a known peer cannot run here (None when it can, or for anything
-    else: an unknown name is an error, not a skipped peer)."""
+    else: an unknown name is an error, not a skipped peer): Mesa missing, or
+    no window of the `color` format (its EGL has no RGBA4444 or RGBA5551
+    config)."""
     if renderer not in PEERS:
         return None
     from . import mesa
 
+    if color not in mesa.MESA_COLOR_FORMATS:
+        return f"Mesa has no {color.upper()} window"
     return mesa.available(renderer[5:])
 
 
 def render(scene: Scene, renderer: str, width: int, height: int, runs: int = 5,
            color: str = "rgba8888") -> Render:
-    """Render `scene` on one renderer into a `color` framebuffer ("rgba8888"
-    or "rgb565"), timing `runs` frames."""
-    why = _peer_missing(renderer)
+    """Render `scene` on one renderer into a `color` framebuffer (one of
+    :data:`COLOR_FORMATS`), timing `runs` frames."""
+    why = _peer_missing(renderer, color)
     if why is not None:
         return Render(renderer, None, skipped=why)
     out = Render(renderer, None)
@@ -440,7 +444,7 @@ def compare(scene: Scene, width: int, height: int, builds: Sequence[str] = BUILD
     """Render `scene` on each build and peer and measure each against `reference`.
 
     Every renderer, the reference included, draws into a `color`
-    framebuffer ("rgba8888" or "rgb565"), so each error is measured against
+    framebuffer (one of :data:`COLOR_FORMATS`), so each error is measured against
     the reference rendered the same way.
 
     The reference is rendered even when it is not among `builds` (it is not

@@ -69,10 +69,14 @@ import numpy as np
 from gles import constants as C
 from gles.commands import COMMANDS
 
-__all__ = ["DRIVERS", "COLOR_FORMATS", "LibraryContext", "MesaContext", "available"]
+__all__ = ["DRIVERS", "COLOR_FORMATS", "MESA_COLOR_FORMATS", "LibraryContext", "MesaContext", "available"]
 
 DRIVERS = ("llvmpipe", "softpipe")
-COLOR_FORMATS = {"rgba8888": (8, 8, 8, 8), "rgb565": (5, 6, 5, 0)}
+COLOR_FORMATS = {"rgba8888": (8, 8, 8, 8), "rgb565": (5, 6, 5, 0), "rgba4444": (4, 4, 4, 4),
+                 "rgba5551": (5, 5, 5, 1)}
+# the formats Mesa's EGL (llvmpipe, softpipe) has pbuffer configs of; its
+# framebuffer objects take RGBA4_OES and RGB5_A1_OES renderbuffers
+MESA_COLOR_FORMATS = ("rgba8888", "rgb565")
 
 _EGL_LIB = "libEGL.so.1"
 _GLES_LIB = "libGLESv1_CM.so.1"
@@ -1056,6 +1060,9 @@ def _choose_config(libs: _Libs, display: int, rgba: tuple[int, int, int, int],
         if best is None or key < best[0]:
             best = (key, cfg, sizes)
     assert best is not None
+    if best[0][1]:
+        raise RuntimeError(f"no EGL config for OpenGL ES 1 with RGBA {r}{g}{b}{a} (the closest has "
+                           f"{best[2]['red']}{best[2]['green']}{best[2]['blue']}{best[2]['alpha']})")
     return best[1], best[2]
 
 
@@ -1250,6 +1257,9 @@ class MesaContext(_EGLContextBase):
         if driver not in DRIVERS:
             raise ValueError(f"driver must be one of {DRIVERS}, got {driver!r}")
         self._check_args(width, height, color)
+        if color not in MESA_COLOR_FORMATS:
+            raise ValueError(f"Mesa's EGL has no {color.upper()} config: color must be one of "
+                             f"{MESA_COLOR_FORMATS}, got {color!r}")
         if threads is None:
             threads = int(os.environ.get("LP_NUM_THREADS", "1") or 1)
         if isinstance(threads, bool) or not isinstance(threads, int):
