@@ -103,6 +103,16 @@ KNOWN_DEVIATIONS: tuple[Deviation, ...] = (
               "softpipe: sprite footprint off by one pixel; OES_point_sprite (docs/conformance.md)"),
     Deviation("LineRaster", "mesa-softpipe", None, None,
               "softpipe: a column's fragment one row off the line; §3.4.1 (docs/conformance.md)"),
+    Deviation("Debug.insert", "mesa-", None, None,
+              "Mesa: DebugMessageInsertKHR takes the PUSH_GROUP and POP_GROUP types, and records errors "
+              "while DEBUG_OUTPUT is off; KHR_debug 5.5.5 and New Tokens (docs/conformance.md)"),
+    Deviation("Debug.labellength", "mesa-", None, None,
+              "Mesa: ObjectLabelKHR with a label of MAX_LABEL_LENGTH characters records INVALID_VALUE "
+              "and still sets the label; 2.5: a command that records an error has no effect "
+              "(docs/conformance.md)"),
+    Deviation("Debug.vaolabel", "mesa-", None, None,
+              "Mesa: OES_vertex_array_object has no ES 1 dispatch, so no vertex array object exists to "
+              "label (docs/conformance.md, OES_vertex_array_object)"),
     Deviation("AmbLight.errors", "mesa-", None, None,
               "Mesa: scalar glLight/glLightModel accept vector pnames; §2.12.2 wants INVALID_ENUM "
               "(docs/conformance.md, Mesa results)"),

@@ -26,4 +26,5 @@
 #include "draw.c"
 #include "framebuffer.c"
 #include "fbo.c"
+#include "debug.c"
 #include "pool.c"
