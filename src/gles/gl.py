@@ -487,6 +487,7 @@ class GLBase:
         self._d16 = self._ffi.new("double[16]")
         self._kind = self._ffi.new("int *")
         self._debug_out: Any = None     # gles_debug_take's outputs, made at the first message
+        self._debug_wrapped = False     # the commands deliver debug messages (_debug_route)
 
     # {================================================================
     # helpers
@@ -647,20 +648,24 @@ class GLBase:
         """While DEBUG_OUTPUT_KHR is on and a Python callback is set, every
         command of this command set delivers the messages it raised
         (instance attributes over the class's methods); otherwise the
-        methods are the class's own, at no cost per command."""
+        methods are the class's own, at no cost per command. (The instance
+        dict is touched only to add or remove those attributes: reading
+        ``vars(self)`` would make CPython keep the attributes in a dict and
+        look every one up there, which a command pays for.)"""
         handle = self.handle
         with self._lock:
             self._lib.gles_debug_queue_set(self._p, handle.debug_callback is not None)
             output = bool(self._lib.gles_IsEnabled(self._p, C.GL_DEBUG_OUTPUT_KHR))
         on = handle.debug_callback is not None and output
+        if on == self._debug_wrapped:
+            return
         names = [n for n in dir(type(self)) if n.startswith("gl") and n != "glGetError"]
-        if on:
-            for n in names:
-                if n not in vars(self):
-                    setattr(self, n, _delivering(self, n, getattr(type(self), n)))
-        else:
-            for n in names:
-                vars(self).pop(n, None)
+        for n in names:
+            if on:
+                setattr(self, n, _delivering(self, n, getattr(type(self), n)))
+            else:
+                delattr(self, n)
+        self._debug_wrapped = on
 
     def _debug_deliver(self) -> None:
         """Hand the messages waiting in the core's queue to the callback,
