@@ -112,6 +112,16 @@ KNOWN_DEVIATIONS: tuple[Deviation, ...] = (
     Deviation("TexGen.normal", "mesa-", None, None,
               "Mesa: TEXTURE_GEN_MODE_OES NORMAL_MAP_OES generates the reflection vector, not the eye-space "
               "normal; OES_texture_cube_map 2.11.4 (docs/conformance.md)"),
+    Deviation("Debug.insert", "mesa-", None, None,
+              "Mesa: DebugMessageInsertKHR takes the PUSH_GROUP and POP_GROUP types, and records errors "
+              "while DEBUG_OUTPUT is off; KHR_debug 5.5.5 and New Tokens (docs/conformance.md)"),
+    Deviation("Debug.labellength", "mesa-", None, None,
+              "Mesa: ObjectLabelKHR with a label of MAX_LABEL_LENGTH characters records INVALID_VALUE "
+              "and still sets the label; 2.5: a command that records an error has no effect "
+              "(docs/conformance.md)"),
+    Deviation("Debug.vaolabel", "mesa-", None, None,
+              "Mesa: OES_vertex_array_object has no ES 1 dispatch, so no vertex array object exists to "
+              "label (docs/conformance.md, OES_vertex_array_object)"),
     Deviation("AmbLight.errors", "mesa-", None, None,
               "Mesa: scalar glLight/glLightModel accept vector pnames; §2.12.2 wants INVALID_ENUM "
               "(docs/conformance.md, Mesa results)"),

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "array.h"
+#include "debug.h"
 
 /* {====================================================================
 ** name table: open addressing, linear probing */
@@ -324,6 +325,9 @@ static ArrayState *array_of_pointer_pname(GlesContext *ctx, unsigned int pname)
 
 uintptr_t gles_GetPointer(GlesContext *ctx, unsigned int pname)
 {
+    uintptr_t debug_ptr;
+    if (debug_pointer(ctx, pname, &debug_ptr))
+        return debug_ptr;       /* KHR_debug's callback and its parameter */
     ArrayState *a = array_of_pointer_pname(ctx, pname);
     if (!a) {
         ctx_error(ctx, GL_INVALID_ENUM);
@@ -557,6 +561,7 @@ void gles_DeleteVertexArraysOES(GlesContext *ctx, int n, const unsigned int *nam
         if (o == ctx->vao)
             gles_BindVertexArrayOES(ctx, 0);    /* the binding reverts to zero */
         names_remove(&ctx->vaos, names[i]);
+        debug_object_deleted(ctx, DEBUG_NS_VERTEX_ARRAY, names[i]);
         free(o);
         ctx->mem_used -= (int64_t)sizeof *o;
     }
@@ -581,6 +586,7 @@ void gles_DeleteBuffers(GlesContext *ctx, int n, const unsigned int *names)
             continue;
         BufferObject *b = names_remove(&ctx->buffers, names[i]);
         if (b) {
+            debug_object_deleted(ctx, DEBUG_NS_BUFFER, names[i]);
             ctx->buffer_serial++;
             unbind_everywhere(ctx, b);
             buffer_free(ctx, b);

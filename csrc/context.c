@@ -16,6 +16,7 @@
 #include "fragment.h"
 #include "texture.h"
 #include "fbo.h"
+#include "debug.h"
 
 static int cap_index(unsigned int cap);
 
@@ -55,7 +56,9 @@ void gles_debug_set(GlesContext *ctx, int flags)
     ctx->dirty |= DIRTY_SPAN;
 }
 
-void gles_set_error(GlesContext *ctx, unsigned int err) { ctx_error(ctx, err); }
+/* errors the binding finds itself (e.g. glGen* past the memory budget): no
+** core function to name in the debug message */
+void gles_set_error(GlesContext *ctx, unsigned int err) { ctx_error_at(ctx, err, NULL, NULL); }
 
 double gles_num_eval(int op, double a, double b)
 {
@@ -135,7 +138,8 @@ GlesContext *gles_context_create(int width, int height, int color_format,
     ctx->depth = depth_bits ? calloc(npix, sizeof(uint32_t)) : NULL;
     ctx->stencil = stencil_bits ? calloc(npix, 1) : NULL;
     const int scratch = scratch_alloc(ctx, width);
-    if (!ctx->color || (depth_bits && !ctx->depth) || (stencil_bits && !ctx->stencil) || !scratch) {
+    if (!ctx->color || (depth_bits && !ctx->depth) || (stencil_bits && !ctx->stencil) || !scratch
+        || !debug_init(ctx)) {
         gles_context_destroy(ctx);
         return NULL;
     }
@@ -215,6 +219,7 @@ void gles_context_destroy(GlesContext *ctx)
     fbo_free(ctx);          /* first: the window's buffers back in the context */
     array_free(ctx);
     texture_free(ctx);
+    debug_free(ctx);
     free(ctx->color);
     free(ctx->depth);
     free(ctx->stencil);
@@ -320,6 +325,8 @@ static int cap_index(unsigned int cap)
 
 static void set_enable(GlesContext *ctx, unsigned int cap, int on)
 {
+    if (debug_set_enable(ctx, cap, on))
+        return;
     if (cap >= GL_CLIP_PLANE0 && cap < GL_CLIP_PLANE0 + GLES_MAX_CLIP_PLANES) {
         ctx->clip_plane_enabled[cap - GL_CLIP_PLANE0] = on;
         ctx->dirty |= DIRTY_CLIP;
@@ -385,6 +392,9 @@ void gles_Disable(GlesContext *ctx, unsigned int cap) { set_enable(ctx, cap, 0);
 
 unsigned char gles_IsEnabled(GlesContext *ctx, unsigned int cap)
 {
+    unsigned char debug_on;
+    if (debug_is_enabled(ctx, cap, &debug_on))
+        return debug_on;
     if (cap >= GL_CLIP_PLANE0 && cap < GL_CLIP_PLANE0 + GLES_MAX_CLIP_PLANES)
         return (unsigned char)ctx->clip_plane_enabled[cap - GL_CLIP_PLANE0];
     if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + GLES_MAX_LIGHTS)
@@ -756,7 +766,7 @@ int gles_get(GlesContext *ctx, unsigned int pname, double *out, int *kind)
     if (n > 0 || (n = fbo_get(ctx, pname, out, kind)) > 0)
         return n;
     if ((n = fragment_get(ctx, pname, out, kind)) > 0 || (n = fog_get(ctx, pname, out, kind)) > 0
-        || (n = texture_get(ctx, pname, out, kind)) > 0)
+        || (n = texture_get(ctx, pname, out, kind)) > 0 || (n = debug_get(ctx, pname, out, kind)) > 0)
         return n;
     /* an enable queried through Get*v answers like IsEnabled */
     if (cap_index(pname) >= 0 || pname == GL_TEXTURE_2D || pname == GL_TEXTURE_CUBE_MAP_OES

@@ -28,4 +28,5 @@
 #include "draw.c"
 #include "framebuffer.c"
 #include "fbo.c"
+#include "debug.c"
 #include "pool.c"

@@ -18,6 +18,7 @@
 #include "array.h"
 #include "fbo.h"
 #include "texture.h"
+#include "debug.h"
 
 /* {====================================================================
 ** the buffers */
@@ -353,6 +354,7 @@ void gles_DeleteFramebuffersOES(GlesContext *ctx, int n, const unsigned int *nam
         Framebuffer *fb = names[i] ? names_remove(&ctx->framebuffers, names[i]) : NULL;
         if (!fb)
             continue;
+        debug_object_deleted(ctx, DEBUG_NS_FRAMEBUFFER, names[i]);
         if (fb == ctx->fbo)
             bind_framebuffer(ctx, NULL);    /* the binding reverts to the window */
         free(fb);
@@ -369,6 +371,7 @@ void gles_DeleteRenderbuffersOES(GlesContext *ctx, int n, const unsigned int *na
         Renderbuffer *rb = names[i] ? names_remove(&ctx->renderbuffers, names[i]) : NULL;
         if (!rb)
             continue;
+        debug_object_deleted(ctx, DEBUG_NS_RENDERBUFFER, names[i]);
         if (rb == ctx->rbo)
             ctx->rbo = NULL;
         /* detached from every framebuffer object (see fbo_texture_deleted);

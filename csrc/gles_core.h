@@ -397,6 +397,47 @@ unsigned char gles_IsVertexArrayOES(GlesContext *ctx, unsigned int name);
 void gles_GetBufferParameteriv(GlesContext *ctx, unsigned int target, unsigned int pname, int *params);
 
 /* {====================================================================
+** KHR_debug (debug.c). String arguments arrive as `const void *` with the
+** bytes readable there (nbytes, -1 unknown) and return a status like the
+** client arrays' (GLES_EVALUE when a length reaches past the data, or no
+** terminator lies within it). ES 1.1 has no sync objects, so the Ptr label
+** commands take no pointer: none could name one (INVALID_VALUE). */
+#define GLES_DEBUG_MAX_MESSAGE_LENGTH 1024   /* MAX_DEBUG_MESSAGE_LENGTH_KHR */
+#define GLES_DEBUG_MAX_LABEL_LENGTH 256      /* MAX_LABEL_LENGTH_KHR */
+typedef void (*GlesDebugProc)(unsigned int source, unsigned int type, unsigned int id, unsigned int severity,
+                              int length, const char *message, const void *user_param);
+/* a debug context (on) starts with DEBUG_OUTPUT_KHR enabled: set it so */
+void gles_debug_context_set(GlesContext *ctx, int on);
+void gles_DebugMessageControlKHR(GlesContext *ctx, unsigned int source, unsigned int type, unsigned int severity,
+                                 int n, const unsigned int *ids, unsigned char enabled);
+int gles_DebugMessageInsertKHR(GlesContext *ctx, unsigned int source, unsigned int type, unsigned int id,
+                               unsigned int severity, int length, const void *buf, int64_t nbytes);
+/* the application's callback (C ABI), called on the calling thread */
+void gles_DebugMessageCallbackKHR(GlesContext *ctx, GlesDebugProc callback, const void *user_param);
+unsigned int gles_GetDebugMessageLogKHR(GlesContext *ctx, unsigned int count, int buf_size, unsigned int *sources,
+                                        unsigned int *types, unsigned int *ids, unsigned int *severities,
+                                        int *lengths, char *message_log);
+int gles_PushDebugGroupKHR(GlesContext *ctx, unsigned int source, unsigned int id, int length, const void *message,
+                           int64_t nbytes);
+void gles_PopDebugGroupKHR(GlesContext *ctx);
+int gles_ObjectLabelKHR(GlesContext *ctx, unsigned int identifier, unsigned int name, int length, const void *label,
+                        int64_t nbytes);
+/* 1 with the label written, 0 on a GL error */
+int gles_GetObjectLabelKHR(GlesContext *ctx, unsigned int identifier, unsigned int name, int buf_size, int *length,
+                           char *label);
+int gles_ObjectPtrLabelKHR(GlesContext *ctx, int length, const void *label, int64_t nbytes);
+int gles_GetObjectPtrLabelKHR(GlesContext *ctx, int buf_size, int *length, char *label);
+/* the Python binding's callback: with on, the messages a callback would
+** receive wait in a queue (up to 4096) instead, which gles_debug_take
+** empties as GetDebugMessageLogKHR empties the log, with no GL error;
+** gles_debug_queued is the next one's length, terminator included (0: none) */
+void gles_debug_queue_set(GlesContext *ctx, int on);
+int gles_debug_queued(GlesContext *ctx);
+unsigned int gles_debug_take(GlesContext *ctx, unsigned int count, int buf_size, unsigned int *sources,
+                             unsigned int *types, unsigned int *ids, unsigned int *severities, int *lengths,
+                             char *message_log);
+
+/* {====================================================================
 ** drawing and pixels */
 int gles_DrawArrays(GlesContext *ctx, unsigned int mode, int first, int count);
 int gles_DrawElements(GlesContext *ctx, unsigned int mode, int count, unsigned int type,

@@ -432,6 +432,10 @@ struct GlesContext {
 
     unsigned int error;
     char message[256];
+    /* KHR_debug (debug.c): DEBUG_OUTPUT_KHR, read wherever an error is
+    ** recorded, and the rest of its state */
+    int debug_output;
+    struct DebugState *dbg;
 
     /* enables */
     int cull_enabled, depth_test, scissor_test;
@@ -603,7 +607,6 @@ struct GlesContext {
 #define DIRTY_TEXTURE 16u
 #define DIRTY_ALL 0xffffffffu
 
-/* set the first error only, as the spec says */
 /* whether the draws take the generic span path: the debug switch, or a
 ** sampling unit with a level-of-detail bias (EXT_texture_lod_bias) or an
 ** anisotropic texture (EXT_texture_filter_anisotropic): the vector
@@ -620,11 +623,21 @@ static inline int ctx_generic_spans(const GlesContext *ctx)
     return 0;
 }
 
-static inline void ctx_error(GlesContext *ctx, unsigned int err)
+/* KHR_debug's message of an error (debug.c): `where` the core function
+** that records it, `why` the reason where the site gives one */
+void debug_error(GlesContext *ctx, unsigned int err, const char *where, const char *why);
+
+/* record an error: the first only stays for GetError, as the spec says;
+** each raises a debug message while DEBUG_OUTPUT_KHR is on */
+static inline void ctx_error_at(GlesContext *ctx, unsigned int err, const char *where, const char *why)
 {
     if (ctx->error == GL_NO_ERROR)
         ctx->error = err;
+    if (ctx->debug_output)
+        debug_error(ctx, err, where, why);
 }
+#define ctx_error(ctx, err) ctx_error_at((ctx), (err), __func__, NULL)
+#define ctx_error_why(ctx, err, why) ctx_error_at((ctx), (err), __func__, (why))
 
 /* the instance of the span stages to run: the CPU's best, unless a
 ** debug switch asks for the baseline or at most AVX2 */

@@ -16,6 +16,7 @@
 #include "array.h"
 #include "texture.h"
 #include "fbo.h"
+#include "debug.h"
 
 static int is_base_format(unsigned int f)
 {
@@ -299,6 +300,7 @@ void gles_DeleteTextures(GlesContext *ctx, int n, const unsigned int *names)
         Texture *t = names_remove(&ctx->textures, names[i]);
         if (!t)
             continue;
+        debug_object_deleted(ctx, DEBUG_NS_TEXTURE, names[i]);
         /* §3.7.13: a deleted bound texture reverts the binding to 0 */
         for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++) {
             TexUnit *tu = &ctx->units[u];

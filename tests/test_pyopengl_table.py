@@ -239,3 +239,34 @@ def test_row_P16_mapped_buffer() -> None:
     back = g.glMapBufferRangeEXT(C.GL_ARRAY_BUFFER, 0, 8, C.GL_MAP_READ_BIT_EXT)
     assert (back == 5).all()
     g.glUnmapBufferOES(C.GL_ARRAY_BUFFER)
+
+
+def test_row_P17_debug_callback() -> None:
+    import gles.debug
+
+    ctx = make()
+    g = ctx.gl
+    assert g.glGetPointerv(C.GL_DEBUG_CALLBACK_FUNCTION_KHR) is gles.debug.log_message
+    seen: list = []
+    param = {"any": "object"}
+    g.glDebugMessageCallbackKHR(lambda *a: seen.append(a), param)
+    g.glEnable(C.GL_DEBUG_OUTPUT_KHR)
+    g.glDebugMessageInsertKHR(C.GL_DEBUG_SOURCE_APPLICATION_KHR, C.GL_DEBUG_TYPE_MARKER_KHR, 5,
+                              C.GL_DEBUG_SEVERITY_NOTIFICATION_KHR, -1, "hello")
+    assert seen == [(C.GL_DEBUG_SOURCE_APPLICATION_KHR, C.GL_DEBUG_TYPE_MARKER_KHR, 5,
+                     C.GL_DEBUG_SEVERITY_NOTIFICATION_KHR, 5, b"hello", param)]
+    assert g.glGetPointerv(C.GL_DEBUG_CALLBACK_USER_PARAM_KHR) is param
+
+    def fails(*a):
+        raise RuntimeError("in the callback")
+
+    g.glDebugMessageCallbackKHR(fails, None)
+    with pytest.raises(RuntimeError):
+        g.glEnable(0x1234)
+    g.glDebugMessageCallbackKHR(None, None)
+    g.glEnable(0x1234)
+    assert g.glGetIntegerv(C.GL_DEBUG_LOGGED_MESSAGES_KHR) == 1
+    tex = g.glGenTextures(1)
+    g.glBindTexture(C.GL_TEXTURE_2D, tex)
+    g.glObjectLabelKHR(C.GL_TEXTURE, tex, -1, "albedo")
+    assert g.glGetObjectLabelKHR(C.GL_TEXTURE, tex, 64) == b"albedo"

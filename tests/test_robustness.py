@@ -520,7 +520,7 @@ before, calls = state(), 0
 for name, (ret, args, params) in sorted(gen_cabi.prototypes().items()):
     fn = ctx._raw.get(name)
     types = args.split(",")
-    checked = [p for p, t in zip(params, types) if "*" in t and gen_cabi.NULL_OK.get(name) != p]
+    checked = [p for p, t in zip(params, types) if "*" in t and p not in gen_cabi.null_ok(name)]
     if fn is None or not checked:
         continue
     fn(*[None if "*" in t else value(name, p) for p, t in zip(params, types)])

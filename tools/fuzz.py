@@ -34,6 +34,7 @@ a minimal one that fails the same way and printed as a few lines of Python.
 from __future__ import annotations
 
 import argparse
+import logging
 import math
 import os
 import pickle
@@ -57,6 +58,10 @@ ROOT = Path(__file__).resolve().parent.parent
 import gles  # noqa: E402
 from gles import constants as C  # noqa: E402
 from gles.errors import GLError  # noqa: E402
+
+# a sequence may turn debug output on with the default callback, which logs:
+# the handler keeps those records off stderr
+logging.getLogger("gles.debug").addHandler(logging.NullHandler())
 
 ERRORS = {
     C.GL_NO_ERROR,
@@ -280,6 +285,8 @@ CAPS = [
     C.GL_MATRIX_PALETTE_OES,
     C.GL_TEXTURE_CUBE_MAP_OES,
     C.GL_TEXTURE_GEN_STR_OES,
+    C.GL_DEBUG_OUTPUT_KHR,
+    C.GL_DEBUG_OUTPUT_SYNCHRONOUS_KHR,
 ]
 # TexImage2D's targets: TEXTURE_2D and OES_texture_cube_map's faces
 IMAGE_T = [C.GL_TEXTURE_2D, C.GL_TEXTURE_CUBE_MAP_POSITIVE_X_OES, C.GL_TEXTURE_CUBE_MAP_NEGATIVE_Z_OES,
@@ -584,6 +591,76 @@ def _read_pixels(g: Gen) -> list[Val]:
     return args
 
 
+# KHR_debug
+DEBUG_SOURCES = [C.GL_DEBUG_SOURCE_APPLICATION_KHR, C.GL_DEBUG_SOURCE_THIRD_PARTY_KHR,
+                 C.GL_DEBUG_SOURCE_API_KHR, C.GL_DONT_CARE]
+DEBUG_TYPES = [C.GL_DEBUG_TYPE_ERROR_KHR, C.GL_DEBUG_TYPE_MARKER_KHR, C.GL_DEBUG_TYPE_OTHER_KHR,
+               C.GL_DEBUG_TYPE_PUSH_GROUP_KHR, C.GL_DONT_CARE]
+DEBUG_SEVERITIES = [C.GL_DEBUG_SEVERITY_HIGH_KHR, C.GL_DEBUG_SEVERITY_LOW_KHR,
+                    C.GL_DEBUG_SEVERITY_NOTIFICATION_KHR, C.GL_DONT_CARE]
+LABEL_IDS = [C.GL_TEXTURE, C.GL_BUFFER_KHR, C.GL_FRAMEBUFFER_OES, C.GL_RENDERBUFFER_OES,
+             C.GL_VERTEX_ARRAY_KHR, C.GL_SHADER_KHR, C.GL_PROGRAM_PIPELINE_KHR]
+DEBUG_POINTER_P = [C.GL_DEBUG_CALLBACK_FUNCTION_KHR, C.GL_DEBUG_CALLBACK_USER_PARAM_KHR]
+DEBUG_MESSAGES: list[Any] = []
+
+
+def debug_record(source: int, type: int, id: int, severity: int, length: int, message: bytes,
+                 user_param: Any) -> None:
+    """A debug callback the sequences set: keeps the last messages."""
+    DEBUG_MESSAGES.append((source, type, id, severity, message))
+    del DEBUG_MESSAGES[:-16]
+
+
+def _pick(g: Gen, options: list[Any]) -> Val:
+    v = g.r.choice(options)
+    return Val(v, repr(v))
+
+
+def _debug_text(g: Gen) -> Val:
+    r = g.r.random()
+    if r < 0.6:
+        v: Any = g.r.choice(["", "label", "group \u00e9", "a\x00b"])
+        return Val(v, repr(v))
+    if r < 0.7:
+        v = g.r.choice([b"bytes", b"", b"\xff\xfe"])
+        return Val(v, repr(v))
+    if r < 0.9:
+        n = g.r.choice([255, 256, 1023, 1024, 2000])
+        return Val("x" * n, f"'x' * {n}")
+    v = g.r.choice([None, 7, 1.5, ["a"]])
+    return Val(v, repr(v))
+
+
+def _debug_length(g: Gen) -> Val:
+    return g.int(-2, 12) if g.r.random() < 0.85 else g.int(250, 1030)
+
+
+def _debug_control(g: Gen) -> list[Val]:
+    k = g.r.randint(0, 3)
+    ids = [g.int(0, 8).value for _ in range(k)]
+    n = g.int(0, k) if g.r.random() < 0.9 else g.int(-2, 6)
+    return [g.enum(DEBUG_SOURCES), g.enum(DEBUG_TYPES), g.enum(DEBUG_SEVERITIES), n,
+            Val(ids, repr(ids)) if k or g.r.random() < 0.5 else Val(None, "None"), g.bool()]
+
+
+def _debug_callback(g: Gen) -> list[Val]:
+    cb = g.r.choice([Val(None, "None"), Val(debug_record, "fuzz.debug_record"), Val("no", "'no'")])
+    return [cb, _pick(g, [None, 0, "user"])]
+
+
+def _debug_log(g: Gen) -> list[Val]:
+    count = g.int(0, 4)
+    out = []
+    for dt in (np.uint32, np.uint32, np.uint32, np.uint32, np.int32):
+        n = g.r.choice([None, 0, 2, 4, 8])
+        text = f"np.zeros({n}, np.{np.dtype(dt)})"
+        out.append(Val(None, "None") if n is None else Val(np.zeros(n, dt), text))
+    size = g.int(-1, 200)
+    n = g.r.choice([None, 0, 64, 256])
+    log = Val(None, "None") if n is None else Val(bytearray(n), f"bytearray({n})")
+    return [count, size, *out, log]
+
+
 def _names(g: Gen) -> list[Val]:
     k = g.r.randint(0, 4)
     names = [g.int(0, 8).value for _ in range(k)]
@@ -740,7 +817,19 @@ SPECS: dict[str, Spec] = {
     "glGetLightxv": _e(LIGHTS, LIGHT_P),
     "glGetMaterialfv": _e(FACES, MAT_P),
     "glGetMaterialxv": _e(FACES, MAT_P),
-    "glGetPointerv": _e(POINTER_P),
+    "glGetPointerv": _e(POINTER_P + DEBUG_POINTER_P),
+    "glGetPointervKHR": _e(POINTER_P + DEBUG_POINTER_P),
+    "glDebugMessageControlKHR": _debug_control,
+    "glDebugMessageInsertKHR": lambda g: [g.enum(DEBUG_SOURCES), g.enum(DEBUG_TYPES), g.int(0, 8),
+                                          g.enum(DEBUG_SEVERITIES), _debug_length(g), _debug_text(g)],
+    "glDebugMessageCallbackKHR": _debug_callback,
+    "glGetDebugMessageLogKHR": _debug_log,
+    "glPushDebugGroupKHR": lambda g: [g.enum(DEBUG_SOURCES), g.int(0, 8), _debug_length(g), _debug_text(g)],
+    "glPopDebugGroupKHR": lambda g: [],
+    "glObjectLabelKHR": lambda g: [g.enum(LABEL_IDS), g.int(0, 6), _debug_length(g), _debug_text(g)],
+    "glGetObjectLabelKHR": lambda g: [g.enum(LABEL_IDS), g.int(0, 6), g.int(-1, 300)],
+    "glObjectPtrLabelKHR": lambda g: [_pick(g, [None, 0, 4096]), _debug_length(g), _debug_text(g)],
+    "glGetObjectPtrLabelKHR": lambda g: [_pick(g, [None, 0, 4096]), g.int(-1, 64)],
     "glGetString": _e([C.GL_VENDOR, C.GL_RENDERER, C.GL_VERSION, C.GL_EXTENSIONS]),
     "glGetTexEnvfv": _e(ENV_T, ENV_P),
     "glGetTexEnviv": _e(ENV_T, ENV_P),
@@ -1269,11 +1358,16 @@ def _c_params(name: str) -> list[str]:
     if not _C_PARAMS:
         from gles import cabi
 
-        for header in ("gl.h", "glext.h"):
-            text = (cabi.include_dir() / "GLES" / header).read_text()
-            for m in re.finditer(r"GL_API \w[\w\s*]*?GL_APIENTRY (\w+) \(([^)]*)\);", text):
+        texts = [(cabi.include_dir() / "GLES" / header).read_text() for header in ("gl.h", "glext.h")]
+        gl2ext = (cabi.include_dir() / "GLES2" / "gl2ext.h").read_text()
+        start = gl2ext.index("#ifndef GL_KHR_debug\n")
+        texts.append(gl2ext[start:gl2ext.index("#endif /* GL_KHR_debug */", start)])
+        for text in texts:
+            for m in re.finditer(r"GL_API(?:CALL)? \w[\w\s*]*?GL_APIENTRY (\w+) \(([^)]*)\);", text):
                 params = [q.strip() for q in m.group(2).split(",") if q.strip() not in ("", "void")]
-                _C_PARAMS[m.group(1)] = ["*" if "*" in q else q.split()[-2] for q in params]
+                # a callback is a pointer C may pass as NULL
+                _C_PARAMS[m.group(1)] = ["*" if "*" in q or "GLDEBUGPROCKHR" in q else q.split()[-2]
+                                         for q in params]
     return _C_PARAMS.get(name, [])
 
 
@@ -1480,6 +1574,12 @@ def _values(obj: Any) -> int | None:
     return 1 if isinstance(obj, float) else None
 
 
+# the KHR_debug commands whose last two arguments are (length, string), with
+# the GL limit of the string's length
+_DEBUG_STRINGS = {"glDebugMessageInsertKHR": 1024, "glPushDebugGroupKHR": 1024, "glObjectLabelKHR": 256,
+                  "glObjectPtrLabelKHR": 256}
+
+
 def _guard(cc: CabiContext, name: str, args: list[Any]) -> None:
     """Refuse (ValueError) a call whose pointers a correct C program would not pass."""
     v = cc.view
@@ -1537,6 +1637,21 @@ def _guard(cc: CabiContext, name: str, args: list[Any]) -> None:
             raw = _client_bytes(data, np.uint8)
             if raw is None or need > len(raw):
                 raise ValueError(f"harness: the image reads {need} bytes of shorter data")
+    elif name in _DEBUG_STRINGS and len(args) >= 2:
+        # a length >= 0 below the GL limit makes C read that many characters
+        length, text, limit = args[-2], args[-1], _DEBUG_STRINGS[name]
+        if isinstance(text, (str, bytes)) and _is_address(length) and 0 <= length < limit:
+            if length > len(text.encode("utf-8") if isinstance(text, str) else text):
+                raise ValueError(f"harness: {name} reads {length} characters of a shorter string")
+    elif name == "glGetDebugMessageLogKHR" and len(args) == 8:
+        count, size = args[0], args[1]
+        for a in args[2:7]:
+            if a is not None and _is_address(count) and (not isinstance(a, np.ndarray) or a.size < count):
+                raise ValueError("harness: an output array shorter than count")
+        log = args[7]
+        if log is not None and _is_address(size) and size > 0 and (
+                not isinstance(log, (bytearray, np.ndarray)) or len(log) < size):
+            raise ValueError("harness: messageLog shorter than bufSize")
     elif name in ("glCompressedTexImage2D", "glCompressedTexSubImage2D", "glBufferData", "glBufferSubData"):
         data = args[2] if name == "glBufferData" else args[-1]
         if _is_address(data) and data:

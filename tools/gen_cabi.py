@@ -226,13 +226,25 @@ glTexGenxvOES                   tex_gen_xv(C, coord, pname, params)
 glGetTexGenfvOES           F    get_tex_gen_f(C, coord, pname, params)
 glGetTexGenivOES                get_tex_gen_i(C, coord, pname, params)
 glGetTexGenxvOES                get_tex_gen_x(C, coord, pname, params)
+glDebugMessageControlKHR        gles_DebugMessageControlKHR(C, source, type, severity, count, ids, B(enabled))
+glDebugMessageInsertKHR         gles_DebugMessageInsertKHR(C, source, type, id, severity, length, buf, -1)
+glDebugMessageCallbackKHR       gles_DebugMessageCallbackKHR(C, (GlesDebugProc)callback, userParam)
+glGetDebugMessageLogKHR         gles_GetDebugMessageLogKHR(C, count, bufSize, sources, types, ids, severities, lengths, messageLog)
+glPushDebugGroupKHR             gles_PushDebugGroupKHR(C, source, id, length, message, -1)
+glPopDebugGroupKHR              gles_PopDebugGroupKHR(C)
+glObjectLabelKHR                gles_ObjectLabelKHR(C, identifier, name, length, label, -1)
+glGetObjectLabelKHR             gles_GetObjectLabelKHR(C, identifier, name, bufSize, length, label)
+glObjectPtrLabelKHR             object_ptr_label(C, ptr, length, label)
+glGetObjectPtrLabelKHR          get_object_ptr_label(C, ptr, bufSize, length, label)
+glGetPointervKHR                get_pointerv(C, pname, params)
 """
 
 # Pointer arguments a C caller may pass as NULL: the core gives NULL its
 # meaning (no data yet, or offset 0 in a buffer object). Any other pointer
 # argument is checked: with it NULL the entry point does nothing, since NULL
-# is the one bad pointer C can recognise.
-NULL_OK = {
+# is the one bad pointer C can recognise. KHR_debug gives NULL a meaning
+# for most of its pointers (no IDs, no callback, no label, outputs not wanted).
+NULL_OK: dict[str, str | tuple[str, ...]] = {
     "glBufferData": "data",
     "glBufferSubData": "data",
     "glTexImage2D": "pixels",
@@ -247,16 +259,35 @@ NULL_OK = {
     "glVertexPointer": "pointer",
     "glMatrixIndexPointerOES": "pointer",
     "glWeightPointerOES": "pointer",
+    "glDebugMessageControlKHR": ("ids",),
+    "glDebugMessageCallbackKHR": ("callback", "userParam"),
+    "glGetDebugMessageLogKHR": ("sources", "types", "ids", "severities", "lengths", "messageLog"),
+    "glObjectLabelKHR": ("label",),
+    "glGetObjectLabelKHR": ("length", "label"),
+    "glObjectPtrLabelKHR": ("ptr", "label"),
+    "glGetObjectPtrLabelKHR": ("ptr", "length", "label"),
 }
 
-_PROTO_RE = re.compile(r"^GL_API\s+(?P<ret>[^\n]*?)\s*GL_APIENTRY\s+(?P<name>gl\w+)\s*\((?P<args>[^)]*)\);", re.M)
+
+def null_ok(name: str) -> tuple[str, ...]:
+    """The pointer arguments of command `name` that may be NULL."""
+    v = NULL_OK.get(name, ())
+    return (v,) if isinstance(v, str) else v
+
+_PROTO_RE = re.compile(r"^GL_API(?:CALL)?\s+(?P<ret>[^\n]*?)\s*GL_APIENTRY\s+(?P<name>gl\w+)\s*\((?P<args>[^)]*)\);", re.M)
 
 
 def prototypes() -> dict[str, tuple[str, str, list[str]]]:
-    """name -> (return type, argument list text, argument names) from gl.h and glext.h."""
+    """name -> (return type, argument list text, argument names) from gl.h and
+    glext.h, and KHR_debug's from GLES2/gl2ext.h (the ES 1 glext.h names the
+    extension only; gl.c declares its GLDEBUGPROCKHR)."""
     out: dict[str, tuple[str, str, list[str]]] = {}
-    for header in ("gl.h", "glext.h"):
-        for m in _PROTO_RE.finditer((KHRONOS / header).read_text()):
+    texts = [(KHRONOS / header).read_text() for header in ("gl.h", "glext.h")]
+    gl2ext = (KHRONOS.parent / "GLES2" / "gl2ext.h").read_text()
+    start = gl2ext.index("#ifndef GL_KHR_debug\n")
+    texts.append(gl2ext[start:gl2ext.index("#endif /* GL_KHR_debug */", start)])
+    for text in texts:
+        for m in _PROTO_RE.finditer(text):
             args = m.group("args").strip()
             names = [] if args == "void" else [re.findall(r"\w+", a)[-1] for a in args.split(",")]
             out.setdefault(m.group("name"), (m.group("ret"), args, names))
@@ -294,6 +325,7 @@ def generate() -> str:
     if unknown:
         raise SystemExit(f"no Khronos prototype for: {', '.join(unknown)}")
     es11 = {m.group("name") for m in _PROTO_RE.finditer((KHRONOS / "gl.h").read_text())}
+    declared = es11 | {m.group("name") for m in _PROTO_RE.finditer((KHRONOS / "glext.h").read_text())}
     uncovered = sorted(es11 - names)
     if uncovered:
         raise SystemExit(f"GLES/gl.h commands without a table entry: {', '.join(uncovered)}")
@@ -306,12 +338,16 @@ def generate() -> str:
         ret, args, params = protos[name]
         # every name the call uses is an argument of the command (or C, X, B)
         for arg in re.findall(r"\b[A-Za-z_]\w*\b", re.sub(r"\w+\s*\(", "", body)):
-            if arg not in params and arg not in {"C", "X", "B", "int64_t", "INT64_MAX"}:
+            if arg not in params and arg not in {"C", "X", "B", "int64_t", "INT64_MAX", "GlesDebugProc"}:
                 raise SystemExit(f"{name}: {arg!r} is not one of its arguments {params}")
-        pointers = [p for p, a in zip(params, args.split(",")) if "*" in a and NULL_OK.get(name) != p]
+        pointers = [p for p, a in zip(params, args.split(","))
+                    if ("*" in a or "GLDEBUGPROCKHR" in a) and p not in null_ok(name)]
         ready = " && ".join(["C"] + pointers)
         if common_only:
             lines.append("#if GLES_CABI_COMMON")
+        if name not in declared:
+            # no declaration in the ES 1 headers (KHR_debug): exported here
+            lines.append("#pragma GCC visibility push(default)")
         lines.append(f"GL_API {ret} GL_APIENTRY {name} ({args})")
         lines.append("{")
         lines.append("    GlesContext *C = gles_cabi_current();")
@@ -321,6 +357,8 @@ def generate() -> str:
         else:
             lines.append(f"    return {ready} ? ({ret})({body}) : 0;")
         lines.append("}")
+        if name not in declared:
+            lines.append("#pragma GCC visibility pop")
         if common_only:
             lines.append("#endif")
         lines.append("")

@@ -41,6 +41,9 @@ SKIP = {
     "gles_depth_buffer", "gles_stencil_buffer", "gles_memory_used", "gles_width", "gles_height",
     "gles_last_span_name", "gles_simd_name", "gles_GetPointer", "texture_image_bytes",
     "gles_GetBufferPointervOES", "gles_draw_size",
+    # a function address, which a trace cannot carry: a replay has no
+    # callback, so its messages go to the log (or the queue, if recorded on)
+    "gles_DebugMessageCallbackKHR",
 }
 
 SCALARS = {"int": "i", "unsigned int": "u", "unsigned char": "b", "double": "d", "int64_t": "l"}
@@ -125,6 +128,19 @@ def _case(cid: int, name: str, args: list[tuple[str, str]]) -> str:
             lines.append(f"        if (a{names.index('n')} > 0 && (a{k}.ptr == NULL || "
                          f"(uint64_t)a{names.index('n')} * 4u > (uint64_t)a{k}.nbytes)) "
                          f"rd_fail(r, \"n exceeds the output stored\");")
+        # outputs of `count` entries (GetDebugMessageLogKHR's arrays) and of
+        # buf_size bytes (its message log, GetObjectLabelKHR's label), and a
+        # single int written through `length`
+        if code == "O" and "count" in names and pname in ("sources", "types", "ids", "severities", "lengths"):
+            lines.append(f"        if (a{k}.ptr != NULL && (uint64_t)a{names.index('count')} * 4u > "
+                         f"(uint64_t)a{k}.nbytes) rd_fail(r, \"count exceeds the output stored\");")
+        if code == "O" and "buf_size" in names and pname in ("message_log", "label"):
+            lines.append(f"        if (a{k}.ptr != NULL && a{names.index('buf_size')} > 0 && "
+                         f"(uint64_t)a{names.index('buf_size')} > (uint64_t)a{k}.nbytes) "
+                         f"rd_fail(r, \"buf_size exceeds the output stored\");")
+        if code == "O" and pname == "length":
+            lines.append(f"        if (a{k}.ptr != NULL && a{k}.nbytes < 4) "
+                         f"rd_fail(r, \"length output too small\");")
         if code == "V" and not (k + 1 < len(args) and args[k + 1][0] == "N"):
             size = next((s for s in ("size", "image_size") if s in names), None)
             if size is None:
@@ -132,6 +148,8 @@ def _case(cid: int, name: str, args: list[tuple[str, str]]) -> str:
             lines.append(f"        if (a{k}.ptr != NULL && (a{names.index(size)} < 0 || "
                          f"(uint64_t)a{names.index(size)} > (uint64_t)a{k}.nbytes)) "
                          f"rd_fail(r, \"{size} exceeds the data stored\");")
+    if outs > 8:
+        raise SystemExit(f"{name}: more outputs than REPLAY_OUTPUT_SLOTS (csrc/replay/replay.h)")
     lines.append("        if (r->failed || !run) break;")
     lines.append(f"        (void){name}({', '.join(call_args)});")
     lines.append("        break;")

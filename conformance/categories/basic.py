@@ -700,6 +700,26 @@ def _covgl_calls() -> list[tuple[str, Call, str]]:
         ("glDrawTexivOES", lambda gl, s, t: gl.glDrawTexivOES(np.array([0, 0, 0, 1, 1], np.int32)), ""),
         ("glDrawTexxvOES", lambda gl, s, t: gl.glDrawTexxvOES(np.array([0, 0, 0, ONE, ONE], np.int32)), ""),
         ("glDrawTexfvOES", lambda gl, s, t: gl.glDrawTexfvOES(np.array([0, 0, 0, 1, 1], np.float32)), ""),
+        # KHR_debug (its ES form); no sync objects exist, so the Ptr labels are INVALID_VALUE
+        ("glDebugMessageCallbackKHR", lambda gl, s, t: gl.glDebugMessageCallbackKHR(None, None), ""),
+        ("glDebugMessageControlKHR", lambda gl, s, t: gl.glDebugMessageControlKHR(
+            gl.GL_DONT_CARE, gl.GL_DONT_CARE, gl.GL_DONT_CARE, 0, None, True), ""),
+        ("glDebugMessageInsertKHR", lambda gl, s, t: gl.glDebugMessageInsertKHR(
+            gl.GL_DEBUG_SOURCE_APPLICATION_KHR, gl.GL_DEBUG_TYPE_MARKER_KHR, 1,
+            gl.GL_DEBUG_SEVERITY_NOTIFICATION_KHR, -1, "covgl"), ""),
+        ("glPushDebugGroupKHR", lambda gl, s, t: gl.glPushDebugGroupKHR(
+            gl.GL_DEBUG_SOURCE_APPLICATION_KHR, 1, -1, "covgl"), ""),
+        ("glPopDebugGroupKHR", lambda gl, s, t: gl.glPopDebugGroupKHR(), ""),
+        ("glGetDebugMessageLogKHR", lambda gl, s, t: gl.glGetDebugMessageLogKHR(
+            4, 0, None, None, None, None, None, None), ""),
+        ("glObjectLabelKHR", lambda gl, s, t: (gl.glBindTexture(gl.GL_TEXTURE_2D, 9),
+                                               gl.glObjectLabelKHR(gl.GL_TEXTURE, 9, -1, "covgl")), ""),
+        ("glGetObjectLabelKHR", lambda gl, s, t: gl.glGetObjectLabelKHR(gl.GL_TEXTURE, 9, 16), ""),
+        ("glObjectPtrLabelKHR", lambda gl, s, t: gl.glObjectPtrLabelKHR(None, -1, "covgl"),
+         "GL_INVALID_VALUE"),
+        ("glGetObjectPtrLabelKHR", lambda gl, s, t: gl.glGetObjectPtrLabelKHR(None, 16),
+         "GL_INVALID_VALUE"),
+        ("glGetPointervKHR", lambda gl, s, t: gl.glGetPointervKHR(gl.GL_DEBUG_CALLBACK_FUNCTION_KHR), ""),
         ("glFlush", lambda gl, s, t: gl.glFlush(), ""),
         ("glFinish", lambda gl, s, t: gl.glFinish(), ""),
         ("glReadPixels", lambda gl, s, t: gl.glReadPixels(0, 0, 4, 4, gl.GL_RGBA, gl.GL_UNSIGNED_BYTE), ""),
@@ -728,6 +748,9 @@ _EXTENSIONS = {
     "GL_EXT_map_buffer_range": "glMapBufferRangeEXT glFlushMappedBufferRangeEXT",
     "GL_EXT_multi_draw_arrays": "glMultiDrawArraysEXT glMultiDrawElementsEXT",
     "GL_EXT_discard_framebuffer": "glDiscardFramebufferEXT",
+    "GL_KHR_debug": "glDebugMessageControlKHR glDebugMessageInsertKHR glDebugMessageCallbackKHR "
+                    "glGetDebugMessageLogKHR glPushDebugGroupKHR glPopDebugGroupKHR glObjectLabelKHR "
+                    "glGetObjectLabelKHR glObjectPtrLabelKHR glGetObjectPtrLabelKHR glGetPointervKHR",
     "GL_OES_matrix_palette": "glCurrentPaletteMatrixOES glLoadPaletteFromModelViewMatrixOES "
                              "glMatrixIndexPointerOES glWeightPointerOES",
     "GL_OES_query_matrix": "glQueryMatrixxOES",

@@ -87,6 +87,7 @@ struct Context {
     GlesContext *core;     /* created at the first eglMakeCurrent */
     Surface *surface;      /* the surface its core renders */
     int current, destroyed;
+    int debug;             /* EGL_CONTEXT_OPENGL_DEBUG_BIT_KHR: a KHR_debug debug context */
 };
 
 typedef struct {
@@ -342,7 +343,7 @@ EGLAPI EGLBoolean EGLAPIENTRY eglTerminate(EGLDisplay dpy)
 
 #define CLIENT_EXTENSIONS "EGL_EXT_client_extensions EGL_EXT_platform_base EGL_KHR_client_get_all_proc_addresses " \
                           "EGL_MESA_platform_surfaceless"
-#define DISPLAY_EXTENSIONS "EGL_KHR_get_all_proc_addresses"
+#define DISPLAY_EXTENSIONS "EGL_KHR_create_context EGL_KHR_get_all_proc_addresses"
 
 EGLAPI const char *EGLAPIENTRY eglQueryString(EGLDisplay dpy, EGLint name)
 {
@@ -881,13 +882,25 @@ EGLAPI EGLContext EGLAPIENTRY eglCreateContext(EGLDisplay dpy, EGLConfig config,
         fail(EGL_BAD_MATCH);
         return EGL_NO_CONTEXT;
     }
-    EGLint version = 1;
+    EGLint version = 1, minor = 0, flags = 0;
     for (const EGLint *a = attrib_list; a && a[0] != EGL_NONE; a += 2) {
-        if (a[0] != EGL_CONTEXT_CLIENT_VERSION) {
+        /* EGL_KHR_create_context: EGL_CONTEXT_MAJOR_VERSION_KHR is
+        ** EGL_CONTEXT_CLIENT_VERSION; of the flags an OpenGL ES context
+        ** takes only the debug bit (the others are OpenGL's) */
+        if (a[0] == EGL_CONTEXT_CLIENT_VERSION)
+            version = a[1];
+        else if (a[0] == EGL_CONTEXT_MINOR_VERSION_KHR)
+            minor = a[1];
+        else if (a[0] == EGL_CONTEXT_FLAGS_KHR)
+            flags = a[1];
+        else {
             fail(EGL_BAD_ATTRIBUTE);
             return EGL_NO_CONTEXT;
         }
-        version = a[1];
+    }
+    if ((flags & ~EGL_CONTEXT_OPENGL_DEBUG_BIT_KHR) || minor < 0 || (version == 1 && minor > 1)) {
+        fail(EGL_BAD_ATTRIBUTE);       /* no OpenGL ES 1.2 exists; OpenGL-only flags */
+        return EGL_NO_CONTEXT;
     }
     if (version == 2 || version == 3) {
         /* EGL: a config whose EGL_RENDERABLE_TYPE lacks the ES2 (ES3) bit
@@ -905,6 +918,7 @@ EGLAPI EGLContext EGLAPIENTRY eglCreateContext(EGLDisplay dpy, EGLConfig config,
         return EGL_NO_CONTEXT;
     }
     ctx->config = c;
+    ctx->debug = (flags & EGL_CONTEXT_OPENGL_DEBUG_BIT_KHR) != 0;
     pthread_mutex_lock(&lock);
     ctx->next = display.contexts;
     display.contexts = ctx;
@@ -975,6 +989,7 @@ static EGLint bind(Context *ctx, Surface *s)
                                         GLES_CABI_COMMON ? GLES_PROFILE_COMMON : GLES_PROFILE_COMMON_LITE);
         if (!ctx->core)
             return EGL_BAD_ALLOC;
+        gles_debug_context_set(ctx->core, ctx->debug);
         /* GLES_THREADS=N: draws rasterize on N threads (one when unset) */
         const char *threads = getenv("GLES_THREADS");
         if (threads && *threads) {

@@ -28,6 +28,11 @@
 #include <GLES/gl.h>
 #include <GLES/glext.h>
 #pragma GCC visibility pop
+/* KHR_debug's types as GLES2/gl2ext.h declares them: the ES 1 glext.h names
+** the extension only (its entry points, in gl_entry.h, are exported there) */
+typedef char GLchar;
+typedef void (GL_APIENTRY *GLDEBUGPROCKHR)(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
+                                          const GLchar *message, const void *userParam);
 
 #include "cabi/cabi.h"
 #include "cabi/gl_strings.h"
@@ -124,6 +129,20 @@ static void get_pointerv(GlesContext *C, GLenum pname, void **params)
     uintptr_t p = gles_GetPointer(C, pname);
     if (!error_after(C, before))
         *params = (void *)p;
+}
+
+/* KHR_debug: ES 1.1 has no sync objects, so no ptr names one and the core
+** takes none (INVALID_VALUE) */
+static void object_ptr_label(GlesContext *C, const void *ptr, GLsizei length, const GLchar *label)
+{
+    (void)ptr;
+    gles_ObjectPtrLabelKHR(C, length, label, -1);
+}
+
+static void get_object_ptr_label(GlesContext *C, const void *ptr, GLsizei bufSize, GLsizei *length, GLchar *label)
+{
+    (void)ptr;
+    gles_GetObjectPtrLabelKHR(C, bufSize, length, label);
 }
 
 static const GLubyte *get_string(GlesContext *C, GLenum name)

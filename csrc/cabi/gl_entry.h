@@ -1455,6 +1455,104 @@ GL_API void GL_APIENTRY glGetTexGenxvOES (GLenum coord, GLenum pname, GLfixed *p
         get_tex_gen_x(C, coord, pname, params);
 }
 
+#pragma GCC visibility push(default)
+GL_API void GL_APIENTRY glDebugMessageControlKHR (GLenum source, GLenum type, GLenum severity, GLsizei count, const GLuint *ids, GLboolean enabled)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C)
+        gles_DebugMessageControlKHR(C, source, type, severity, count, ids, B(enabled));
+}
+#pragma GCC visibility pop
+
+#pragma GCC visibility push(default)
+GL_API void GL_APIENTRY glDebugMessageInsertKHR (GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length, const GLchar *buf)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C && buf)
+        gles_DebugMessageInsertKHR(C, source, type, id, severity, length, buf, -1);
+}
+#pragma GCC visibility pop
+
+#pragma GCC visibility push(default)
+GL_API void GL_APIENTRY glDebugMessageCallbackKHR (GLDEBUGPROCKHR callback, const void *userParam)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C)
+        gles_DebugMessageCallbackKHR(C, (GlesDebugProc)callback, userParam);
+}
+#pragma GCC visibility pop
+
+#pragma GCC visibility push(default)
+GL_API GLuint GL_APIENTRY glGetDebugMessageLogKHR (GLuint count, GLsizei bufSize, GLenum *sources, GLenum *types, GLuint *ids, GLenum *severities, GLsizei *lengths, GLchar *messageLog)
+{
+    GlesContext *C = gles_cabi_current();
+    return C ? (GLuint)(gles_GetDebugMessageLogKHR(C, count, bufSize, sources, types, ids, severities, lengths, messageLog)) : 0;
+}
+#pragma GCC visibility pop
+
+#pragma GCC visibility push(default)
+GL_API void GL_APIENTRY glPushDebugGroupKHR (GLenum source, GLuint id, GLsizei length, const GLchar *message)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C && message)
+        gles_PushDebugGroupKHR(C, source, id, length, message, -1);
+}
+#pragma GCC visibility pop
+
+#pragma GCC visibility push(default)
+GL_API void GL_APIENTRY glPopDebugGroupKHR (void)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C)
+        gles_PopDebugGroupKHR(C);
+}
+#pragma GCC visibility pop
+
+#pragma GCC visibility push(default)
+GL_API void GL_APIENTRY glObjectLabelKHR (GLenum identifier, GLuint name, GLsizei length, const GLchar *label)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C)
+        gles_ObjectLabelKHR(C, identifier, name, length, label, -1);
+}
+#pragma GCC visibility pop
+
+#pragma GCC visibility push(default)
+GL_API void GL_APIENTRY glGetObjectLabelKHR (GLenum identifier, GLuint name, GLsizei bufSize, GLsizei *length, GLchar *label)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C)
+        gles_GetObjectLabelKHR(C, identifier, name, bufSize, length, label);
+}
+#pragma GCC visibility pop
+
+#pragma GCC visibility push(default)
+GL_API void GL_APIENTRY glObjectPtrLabelKHR (const void *ptr, GLsizei length, const GLchar *label)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C)
+        object_ptr_label(C, ptr, length, label);
+}
+#pragma GCC visibility pop
+
+#pragma GCC visibility push(default)
+GL_API void GL_APIENTRY glGetObjectPtrLabelKHR (const void *ptr, GLsizei bufSize, GLsizei *length, GLchar *label)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C)
+        get_object_ptr_label(C, ptr, bufSize, length, label);
+}
+#pragma GCC visibility pop
+
+#pragma GCC visibility push(default)
+GL_API void GL_APIENTRY glGetPointervKHR (GLenum pname, void **params)
+{
+    GlesContext *C = gles_cabi_current();
+    if (C && params)
+        get_pointerv(C, pname, params);
+}
+#pragma GCC visibility pop
+
 /* every entry point by name, for eglGetProcAddress (sorted for bsearch) */
 static const GlesProc gles_cabi_procs[] = {
     {"glActiveTexture", (GlesProcFn)glActiveTexture},
@@ -1502,6 +1600,9 @@ static const GlesProc gles_cabi_procs[] = {
     {"glCopyTexSubImage2D", (GlesProcFn)glCopyTexSubImage2D},
     {"glCullFace", (GlesProcFn)glCullFace},
     {"glCurrentPaletteMatrixOES", (GlesProcFn)glCurrentPaletteMatrixOES},
+    {"glDebugMessageCallbackKHR", (GlesProcFn)glDebugMessageCallbackKHR},
+    {"glDebugMessageControlKHR", (GlesProcFn)glDebugMessageControlKHR},
+    {"glDebugMessageInsertKHR", (GlesProcFn)glDebugMessageInsertKHR},
     {"glDeleteBuffers", (GlesProcFn)glDeleteBuffers},
     {"glDeleteFramebuffersOES", (GlesProcFn)glDeleteFramebuffersOES},
     {"glDeleteRenderbuffersOES", (GlesProcFn)glDeleteRenderbuffersOES},
@@ -1563,6 +1664,7 @@ static const GlesProc gles_cabi_procs[] = {
     {"glGetClipPlanef", (GlesProcFn)glGetClipPlanef},
 #endif
     {"glGetClipPlanex", (GlesProcFn)glGetClipPlanex},
+    {"glGetDebugMessageLogKHR", (GlesProcFn)glGetDebugMessageLogKHR},
     {"glGetError", (GlesProcFn)glGetError},
     {"glGetFixedv", (GlesProcFn)glGetFixedv},
 #if GLES_CABI_COMMON
@@ -1578,7 +1680,10 @@ static const GlesProc gles_cabi_procs[] = {
     {"glGetMaterialfv", (GlesProcFn)glGetMaterialfv},
 #endif
     {"glGetMaterialxv", (GlesProcFn)glGetMaterialxv},
+    {"glGetObjectLabelKHR", (GlesProcFn)glGetObjectLabelKHR},
+    {"glGetObjectPtrLabelKHR", (GlesProcFn)glGetObjectPtrLabelKHR},
     {"glGetPointerv", (GlesProcFn)glGetPointerv},
+    {"glGetPointervKHR", (GlesProcFn)glGetPointervKHR},
     {"glGetRenderbufferParameterivOES", (GlesProcFn)glGetRenderbufferParameterivOES},
     {"glGetString", (GlesProcFn)glGetString},
 #if GLES_CABI_COMMON
@@ -1657,6 +1762,8 @@ static const GlesProc gles_cabi_procs[] = {
 #endif
     {"glNormal3x", (GlesProcFn)glNormal3x},
     {"glNormalPointer", (GlesProcFn)glNormalPointer},
+    {"glObjectLabelKHR", (GlesProcFn)glObjectLabelKHR},
+    {"glObjectPtrLabelKHR", (GlesProcFn)glObjectPtrLabelKHR},
 #if GLES_CABI_COMMON
     {"glOrthof", (GlesProcFn)glOrthof},
 #endif
@@ -1679,7 +1786,9 @@ static const GlesProc gles_cabi_procs[] = {
     {"glPolygonOffset", (GlesProcFn)glPolygonOffset},
 #endif
     {"glPolygonOffsetx", (GlesProcFn)glPolygonOffsetx},
+    {"glPopDebugGroupKHR", (GlesProcFn)glPopDebugGroupKHR},
     {"glPopMatrix", (GlesProcFn)glPopMatrix},
+    {"glPushDebugGroupKHR", (GlesProcFn)glPushDebugGroupKHR},
     {"glPushMatrix", (GlesProcFn)glPushMatrix},
     {"glQueryMatrixxOES", (GlesProcFn)glQueryMatrixxOES},
     {"glReadPixels", (GlesProcFn)glReadPixels},

@@ -3,8 +3,8 @@
 ** One case per recorded core function: read its arguments from the trace,
 ** then (when run is set) call it. Included by replay.c only.
 */
-#define REPLAY_CALL_COUNT 133
-#define REPLAY_TABLE_HASH 0x4881A9D4u
+#define REPLAY_CALL_COUNT 146
+#define REPLAY_TABLE_HASH 0xA2128B58u
 
 static const char *const replay_call_names[REPLAY_CALL_COUNT] = {
     "gles_threads_set",
@@ -134,6 +134,19 @@ static const char *const replay_call_names[REPLAY_CALL_COUNT] = {
     "gles_BindVertexArrayOES",
     "gles_IsVertexArrayOES",
     "gles_GetBufferParameteriv",
+    "gles_debug_context_set",
+    "gles_DebugMessageControlKHR",
+    "gles_DebugMessageInsertKHR",
+    "gles_GetDebugMessageLogKHR",
+    "gles_PushDebugGroupKHR",
+    "gles_PopDebugGroupKHR",
+    "gles_ObjectLabelKHR",
+    "gles_GetObjectLabelKHR",
+    "gles_ObjectPtrLabelKHR",
+    "gles_GetObjectPtrLabelKHR",
+    "gles_debug_queue_set",
+    "gles_debug_queued",
+    "gles_debug_take",
     "gles_DrawArrays",
     "gles_DrawElements",
     "gles_Clear",
@@ -1122,7 +1135,137 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_GetBufferParameteriv(rp->ctx, a0, a1, a2.ptr);
         break;
     }
-    case 127: { /* gles_DrawArrays */
+    case 127: { /* gles_debug_context_set */
+        int a0 = rd_i32(r);
+        if (r->failed || !run) break;
+        (void)gles_debug_context_set(rp->ctx, a0);
+        break;
+    }
+    case 128: { /* gles_DebugMessageControlKHR */
+        unsigned int a0 = rd_u32(r);
+        unsigned int a1 = rd_u32(r);
+        unsigned int a2 = rd_u32(r);
+        int a3 = rd_i32(r);
+        const unsigned int *a4; uint32_t a4_n = rd_uints(r, &a4);
+        unsigned char a5 = rd_u8(r);
+        if (a3 > 0 && (uint32_t)a3 > a4_n) rd_fail(r, "n exceeds the names stored");
+        if (r->failed || !run) break;
+        (void)gles_DebugMessageControlKHR(rp->ctx, a0, a1, a2, a3, a4, a5);
+        break;
+    }
+    case 129: { /* gles_DebugMessageInsertKHR */
+        unsigned int a0 = rd_u32(r);
+        unsigned int a1 = rd_u32(r);
+        unsigned int a2 = rd_u32(r);
+        unsigned int a3 = rd_u32(r);
+        int a4 = rd_i32(r);
+        ReplayDatum a5; rd_datum(rp, r, &a5, 1, 0x8894u, run);
+        if (r->failed || !run) break;
+        (void)gles_DebugMessageInsertKHR(rp->ctx, a0, a1, a2, a3, a4, a5.ptr, a5.nbytes);
+        break;
+    }
+    case 130: { /* gles_GetDebugMessageLogKHR */
+        unsigned int a0 = rd_u32(r);
+        int a1 = rd_i32(r);
+        ReplayDatum a2; rd_output(rp, r, &a2, 0);
+        ReplayDatum a3; rd_output(rp, r, &a3, 1);
+        ReplayDatum a4; rd_output(rp, r, &a4, 2);
+        ReplayDatum a5; rd_output(rp, r, &a5, 3);
+        ReplayDatum a6; rd_output(rp, r, &a6, 4);
+        ReplayDatum a7; rd_output(rp, r, &a7, 5);
+        if (a2.ptr != NULL && (uint64_t)a0 * 4u > (uint64_t)a2.nbytes) rd_fail(r, "count exceeds the output stored");
+        if (a3.ptr != NULL && (uint64_t)a0 * 4u > (uint64_t)a3.nbytes) rd_fail(r, "count exceeds the output stored");
+        if (a4.ptr != NULL && (uint64_t)a0 * 4u > (uint64_t)a4.nbytes) rd_fail(r, "count exceeds the output stored");
+        if (a5.ptr != NULL && (uint64_t)a0 * 4u > (uint64_t)a5.nbytes) rd_fail(r, "count exceeds the output stored");
+        if (a6.ptr != NULL && (uint64_t)a0 * 4u > (uint64_t)a6.nbytes) rd_fail(r, "count exceeds the output stored");
+        if (a7.ptr != NULL && a1 > 0 && (uint64_t)a1 > (uint64_t)a7.nbytes) rd_fail(r, "buf_size exceeds the output stored");
+        if (r->failed || !run) break;
+        (void)gles_GetDebugMessageLogKHR(rp->ctx, a0, a1, a2.ptr, a3.ptr, a4.ptr, a5.ptr, a6.ptr, a7.ptr);
+        break;
+    }
+    case 131: { /* gles_PushDebugGroupKHR */
+        unsigned int a0 = rd_u32(r);
+        unsigned int a1 = rd_u32(r);
+        int a2 = rd_i32(r);
+        ReplayDatum a3; rd_datum(rp, r, &a3, 1, 0x8894u, run);
+        if (r->failed || !run) break;
+        (void)gles_PushDebugGroupKHR(rp->ctx, a0, a1, a2, a3.ptr, a3.nbytes);
+        break;
+    }
+    case 132: { /* gles_PopDebugGroupKHR */
+        if (r->failed || !run) break;
+        (void)gles_PopDebugGroupKHR(rp->ctx);
+        break;
+    }
+    case 133: { /* gles_ObjectLabelKHR */
+        unsigned int a0 = rd_u32(r);
+        unsigned int a1 = rd_u32(r);
+        int a2 = rd_i32(r);
+        ReplayDatum a3; rd_datum(rp, r, &a3, 1, 0x8894u, run);
+        if (r->failed || !run) break;
+        (void)gles_ObjectLabelKHR(rp->ctx, a0, a1, a2, a3.ptr, a3.nbytes);
+        break;
+    }
+    case 134: { /* gles_GetObjectLabelKHR */
+        unsigned int a0 = rd_u32(r);
+        unsigned int a1 = rd_u32(r);
+        int a2 = rd_i32(r);
+        ReplayDatum a3; rd_output(rp, r, &a3, 0);
+        ReplayDatum a4; rd_output(rp, r, &a4, 1);
+        if (a3.ptr != NULL && a3.nbytes < 4) rd_fail(r, "length output too small");
+        if (a4.ptr != NULL && a2 > 0 && (uint64_t)a2 > (uint64_t)a4.nbytes) rd_fail(r, "buf_size exceeds the output stored");
+        if (r->failed || !run) break;
+        (void)gles_GetObjectLabelKHR(rp->ctx, a0, a1, a2, a3.ptr, a4.ptr);
+        break;
+    }
+    case 135: { /* gles_ObjectPtrLabelKHR */
+        int a0 = rd_i32(r);
+        ReplayDatum a1; rd_datum(rp, r, &a1, 1, 0x8894u, run);
+        if (r->failed || !run) break;
+        (void)gles_ObjectPtrLabelKHR(rp->ctx, a0, a1.ptr, a1.nbytes);
+        break;
+    }
+    case 136: { /* gles_GetObjectPtrLabelKHR */
+        int a0 = rd_i32(r);
+        ReplayDatum a1; rd_output(rp, r, &a1, 0);
+        ReplayDatum a2; rd_output(rp, r, &a2, 1);
+        if (a1.ptr != NULL && a1.nbytes < 4) rd_fail(r, "length output too small");
+        if (a2.ptr != NULL && a0 > 0 && (uint64_t)a0 > (uint64_t)a2.nbytes) rd_fail(r, "buf_size exceeds the output stored");
+        if (r->failed || !run) break;
+        (void)gles_GetObjectPtrLabelKHR(rp->ctx, a0, a1.ptr, a2.ptr);
+        break;
+    }
+    case 137: { /* gles_debug_queue_set */
+        int a0 = rd_i32(r);
+        if (r->failed || !run) break;
+        (void)gles_debug_queue_set(rp->ctx, a0);
+        break;
+    }
+    case 138: { /* gles_debug_queued */
+        if (r->failed || !run) break;
+        (void)gles_debug_queued(rp->ctx);
+        break;
+    }
+    case 139: { /* gles_debug_take */
+        unsigned int a0 = rd_u32(r);
+        int a1 = rd_i32(r);
+        ReplayDatum a2; rd_output(rp, r, &a2, 0);
+        ReplayDatum a3; rd_output(rp, r, &a3, 1);
+        ReplayDatum a4; rd_output(rp, r, &a4, 2);
+        ReplayDatum a5; rd_output(rp, r, &a5, 3);
+        ReplayDatum a6; rd_output(rp, r, &a6, 4);
+        ReplayDatum a7; rd_output(rp, r, &a7, 5);
+        if (a2.ptr != NULL && (uint64_t)a0 * 4u > (uint64_t)a2.nbytes) rd_fail(r, "count exceeds the output stored");
+        if (a3.ptr != NULL && (uint64_t)a0 * 4u > (uint64_t)a3.nbytes) rd_fail(r, "count exceeds the output stored");
+        if (a4.ptr != NULL && (uint64_t)a0 * 4u > (uint64_t)a4.nbytes) rd_fail(r, "count exceeds the output stored");
+        if (a5.ptr != NULL && (uint64_t)a0 * 4u > (uint64_t)a5.nbytes) rd_fail(r, "count exceeds the output stored");
+        if (a6.ptr != NULL && (uint64_t)a0 * 4u > (uint64_t)a6.nbytes) rd_fail(r, "count exceeds the output stored");
+        if (a7.ptr != NULL && a1 > 0 && (uint64_t)a1 > (uint64_t)a7.nbytes) rd_fail(r, "buf_size exceeds the output stored");
+        if (r->failed || !run) break;
+        (void)gles_debug_take(rp->ctx, a0, a1, a2.ptr, a3.ptr, a4.ptr, a5.ptr, a6.ptr, a7.ptr);
+        break;
+    }
+    case 140: { /* gles_DrawArrays */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -1130,7 +1273,7 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DrawArrays(rp->ctx, a0, a1, a2);
         break;
     }
-    case 128: { /* gles_DrawElements */
+    case 141: { /* gles_DrawElements */
         unsigned int a0 = rd_u32(r);
         int a1 = rd_i32(r);
         unsigned int a2 = rd_u32(r);
@@ -1139,13 +1282,13 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_DrawElements(rp->ctx, a0, a1, a2, a3.ptr, a3.nbytes);
         break;
     }
-    case 129: { /* gles_Clear */
+    case 142: { /* gles_Clear */
         unsigned int a0 = rd_u32(r);
         if (r->failed || !run) break;
         (void)gles_Clear(rp->ctx, a0);
         break;
     }
-    case 130: { /* gles_ReadPixels */
+    case 143: { /* gles_ReadPixels */
         int a0 = rd_i32(r);
         int a1 = rd_i32(r);
         int a2 = rd_i32(r);
@@ -1157,12 +1300,12 @@ static void replay_call(Replay *rp, Reader *r, unsigned id, int run)
         (void)gles_ReadPixels(rp->ctx, a0, a1, a2, a3, a4, a5, a6.ptr, a6.nbytes);
         break;
     }
-    case 131: { /* gles_Finish */
+    case 144: { /* gles_Finish */
         if (r->failed || !run) break;
         (void)gles_Finish(rp->ctx);
         break;
     }
-    case 132: { /* gles_Flush */
+    case 145: { /* gles_Flush */
         if (r->failed || !run) break;
         (void)gles_Flush(rp->ctx);
         break;

@@ -409,7 +409,7 @@ void replay_free(Replay *rp)
     free(rp->regions);
     rp->regions = NULL;
     rp->region_cap = 0;
-    for (int i = 0; i < 4; i++) {
+    for (int i = 0; i < REPLAY_OUTPUT_SLOTS; i++) {
         free(rp->scratch[i]);
         rp->scratch[i] = NULL;
         rp->scratch_size[i] = 0;

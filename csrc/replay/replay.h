@@ -22,6 +22,9 @@
 #define REPLAY_MARK_BEGIN 1
 #define REPLAY_MARK_END 2
 
+/* output buffers of one call at most (GetDebugMessageLogKHR has six) */
+#define REPLAY_OUTPUT_SLOTS 8
+
 typedef struct ReplayHeader {
     uint32_t table_hash;
     int width, height, color, depth, stencil, profile;
@@ -46,8 +49,8 @@ typedef struct Replay {
     ReplayRegion *regions;
     uint32_t region_count, region_cap;
     uint64_t region_bytes;
-    void *scratch[4];
-    uint64_t scratch_size[4];
+    void *scratch[REPLAY_OUTPUT_SLOTS];
+    uint64_t scratch_size[REPLAY_OUTPUT_SLOTS];
     char error[256];
 } Replay;
 

@@ -90,7 +90,7 @@ EXTENSION_PROFILES = {
     "GL_OES_framebuffer_object": "both", "GL_OES_rgb8_rgba8": "both", "GL_OES_depth24": "both",
     "GL_OES_stencil8": "both", "GL_OES_packed_depth_stencil": "both", "GL_OES_fbo_render_mipmap": "both",
     "GL_EXT_discard_framebuffer": "both", "GL_EXT_texture_filter_anisotropic": "both",
-    "GL_OES_texture_cube_map": "both",
+    "GL_OES_texture_cube_map": "both", "GL_KHR_debug": "both",
 }
 EXTENSIONS = {profile: [e for e, where in EXTENSION_PROFILES.items() if where in ("both", profile)]
               for profile in ("common", "common-lite")}
@@ -125,6 +125,11 @@ class Context:
             every image is byte-identical to ``threads=1``'s. Default: the
             CPUs this process may run on. Small draws stay on the calling
             thread. Settable later as ``ctx.threads``.
+        debug: a debug context (KHR_debug): DEBUG_OUTPUT_KHR starts enabled,
+            so every GL error and debug message reaches the debug callback
+            (by default the "gles.debug" logger; see :mod:`gles.debug` and
+            ``ctx.debug_callback``). Default False: debug output starts off
+            (``glEnable(GL_DEBUG_OUTPUT_KHR)`` turns it on).
 
     Contexts are independent: each has its own lock, and draws release the
     GIL, so contexts in different threads render at the same time.
@@ -133,7 +138,7 @@ class Context:
     def __init__(self, width: int, height: int, *, profile: str = "common", numeric: str = "fixed",
                  color: str = "rgba8888", depth: int = 24, stencil: int = 8,
                  range_check: str | None = None, memory_limit: int | None = None,
-                 threads: int | None = None) -> None:
+                 threads: int | None = None, debug: bool = False) -> None:
         if profile not in PROFILES:
             raise ValueError(f"profile must be one of {sorted(PROFILES)}, not {profile!r}")
         if color not in COLOR_FORMATS:
@@ -170,9 +175,12 @@ class Context:
         self._lib.gles_range_set(self._ptr, _RANGE_MODE[range_check])
         self._lib.gles_memory_limit(self._ptr, memory_limit)
         self._lib.gles_threads_set(self._ptr, threads)
+        self.debug_context = bool(debug)
+        self._lib.gles_debug_context_set(self._ptr, self.debug_context)
         self._handle = CoreHandle(self._lib, self._ffi, self._ptr, self._lock, self._range, width, height,
                                   self._strings(), memory_limit)
         self.gl: GLBase = self._gl_class()(self._handle)
+        self.gl._debug_route()
 
     def __repr__(self) -> str:
         return (f"<gles.Context {self.width}x{self.height} {self.profile} {self.numeric} "
@@ -191,6 +199,7 @@ class Context:
         keep = self.gl._keep
         self.gl = cls(self._handle)
         self.gl._keep = keep          # arrays the core still points at
+        self.gl._debug_route()
         if was_current:
             _set_current(self.gl)
 
@@ -281,6 +290,19 @@ class Context:
     def check_errors(self, on: bool) -> None:
         self._check_errors = bool(on)
         self._rebind_gl()
+
+    @property
+    def debug_callback(self) -> Any:
+        """The KHR_debug callback: a callable taking (source, type, id,
+        severity, length, message, user_param), message as bytes; by default
+        gles.debug.log_message (the "gles.debug" logger); None keeps messages
+        in the log for glGetDebugMessageLogKHR. Settable; the same state as
+        ``glDebugMessageCallbackKHR``, whose user_param it keeps."""
+        return self._handle.debug_callback
+
+    @debug_callback.setter
+    def debug_callback(self, callback: Any) -> None:
+        self.gl.glDebugMessageCallbackKHR(callback, self._handle.debug_user_param)
 
     def make_current(self) -> Context:
         """Make this the calling thread's current context (for ``gles.gl``)."""

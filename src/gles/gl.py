@@ -46,6 +46,7 @@ from . import _binding
 from . import constants as C
 from .commands import COMMANDS, Command, Param
 from .constants import *  # noqa: F403  (the GL_* names are part of this module's API)
+from .debug import log_message
 from .errors import GLError
 
 Pointer = Union[np.ndarray, bytes, bytearray, memoryview, Sequence, int, None]
@@ -79,12 +80,15 @@ _INDEX_DTYPES = {
 
 # the core's own numbers, read from it (every build exports the same)
 _CORE_LIB = _binding.core(_binding.NUMERICS[0]).lib
+_FFI = _binding.core(_binding.NUMERICS[0]).ffi
 # what gles_get says a state value is: enums are returned unscaled by
 # GetFixedv, normalized values map to the whole int range
 _KIND_ENUM, _KIND_NORM = _CORE_LIB.GLES_KIND_ENUM, _CORE_LIB.GLES_KIND_NORM
 _STATUS_MEMORY, _STATUS_RANGE = _CORE_LIB.GLES_EMEMORY, _CORE_LIB.GLES_RANGE
 _RANGE_ARRAYS = _CORE_LIB.GLES_RANGE_ARRAYS
 _FIX = 1.0 / 65536.0
+# KHR_debug's limits: MAX_DEBUG_MESSAGE_LENGTH_KHR and MAX_LABEL_LENGTH_KHR
+_DEBUG_TEXT, _DEBUG_LABEL = _CORE_LIB.GLES_DEBUG_MAX_MESSAGE_LENGTH, _CORE_LIB.GLES_DEBUG_MAX_LABEL_LENGTH
 
 
 
@@ -254,6 +258,56 @@ def _names(n: Any, names: Any, what: str) -> Any:
     return head
 
 
+def _string(value: Any, length: Any, what: str) -> tuple[Any, int]:
+    """A KHR_debug string argument as (C chars, bytes the core may read):
+    str (UTF-8) or bytes-like; with length >= 0 the core reads that many
+    characters and no further than the data (a longer length is
+    ValueError, unless the GL rule on the length decides first), with
+    length < 0 up to the terminator added here."""
+    if isinstance(value, str):
+        data = value.encode("utf-8")
+    elif isinstance(value, (bytes, bytearray, memoryview)):
+        data = bytes(value)
+    else:
+        raise TypeError(f"{what} must be str or bytes, not {type(value).__name__}")
+    length = _glint(length, "length")
+    return _FFI.new("char[]", data), (len(data) if length >= 0 else len(data) + 1)
+
+
+def _out_array(a: Any, dtype: Any, count: int, what: str) -> np.ndarray | None:
+    """An output array for count values of dtype (None: not wanted): a
+    writable, contiguous numpy array of that dtype (a bytearray for bytes)."""
+    if a is None:
+        return None
+    if isinstance(a, bytearray) and dtype is np.uint8:
+        a = np.frombuffer(a, dtype=np.uint8)
+    if not isinstance(a, np.ndarray):
+        raise TypeError(f"{what} must be a numpy array of {np.dtype(dtype)} or None, not {type(a).__name__}")
+    if a.dtype != np.dtype(dtype):
+        raise TypeError(f"{what}: array dtype {a.dtype} is not {np.dtype(dtype)}")
+    if not (a.flags.c_contiguous and a.flags.writeable):
+        raise ValueError(f"{what}: the array must be contiguous and writable")
+    if a.size < count:
+        raise ValueError(f"{what}: {a.size} elements, fewer than the {count} asked for")
+    return a
+
+
+def _delivering(gl: Any, name: str, method: Any) -> Any:
+    """gl's command `name` followed by the delivery of the debug messages it
+    raised (also when it raised an exception itself)."""
+    bound = method.__get__(gl)
+
+    def command(*args: Any, **kwargs: Any) -> Any:
+        try:
+            return bound(*args, **kwargs)
+        finally:
+            gl._debug_deliver()
+
+    command.__name__ = name
+    command.__doc__ = method.__doc__
+    return command
+
+
 def _converted(data: Any, dtype: np.dtype, what: str) -> np.ndarray:
     """A sequence (or one number) as a contiguous array of dtype: TypeError
     for what is not numbers, ValueError for a value the dtype cannot hold."""
@@ -400,7 +454,8 @@ class CoreHandle:
     framebuffer size, the GetString answers and the memory budget (which the
     context updates)."""
 
-    __slots__ = ("lib", "ffi", "ptr", "lock", "range", "width", "height", "strings", "memory_limit")
+    __slots__ = ("lib", "ffi", "ptr", "lock", "range", "width", "height", "strings", "memory_limit",
+                 "debug_callback", "debug_user_param")
 
     def __init__(self, lib: Any, ffi: Any, ptr: Any, lock: threading.Lock, range_monitor: Any,
                  width: int, height: int, strings: dict[int, str], memory_limit: int) -> None:
@@ -412,6 +467,9 @@ class CoreHandle:
         self.width, self.height = width, height
         self.strings = strings
         self.memory_limit = memory_limit
+        # KHR_debug: the Python callback (gles.debug) and its user_param
+        self.debug_callback: Any = log_message
+        self.debug_user_param: Any = None
 
 
 class GLBase:
@@ -428,6 +486,8 @@ class GLBase:
         self._maps: dict[int, _Mapping] = {}
         self._d16 = self._ffi.new("double[16]")
         self._kind = self._ffi.new("int *")
+        self._debug_out: Any = None     # gles_debug_take's outputs, made at the first message
+        self._debug_wrapped = False     # the commands deliver debug messages (_debug_route)
 
     # {================================================================
     # helpers
@@ -553,10 +613,188 @@ class GLBase:
             return None
         return text.encode("ascii")
 
-    def glGetPointerv(self, pname: int) -> int:
-        """The pointer (as an address) or buffer offset last given for an array."""
+    def glGetPointerv(self, pname: int) -> Any:
+        """The pointer (as an address) or buffer offset last given for an
+        array; for KHR_debug's DEBUG_CALLBACK_FUNCTION_KHR and
+        DEBUG_CALLBACK_USER_PARAM_KHR the Python callback and its user_param."""
+        pname = _index(pname)
+        if pname == C.GL_DEBUG_CALLBACK_FUNCTION_KHR:
+            return self.handle.debug_callback
+        if pname == C.GL_DEBUG_CALLBACK_USER_PARAM_KHR:
+            return self.handle.debug_user_param
         with self._lock:
-            return int(self._lib.gles_GetPointer(self._p, _index(pname)))
+            return int(self._lib.gles_GetPointer(self._p, pname))
+
+    def glGetPointervKHR(self, pname: int) -> Any:
+        """KHR_debug's GetPointerv: glGetPointerv under its ES name."""
+        return self.glGetPointerv(pname)
+
+    def glEnable(self, cap: int) -> None:
+        with self._lock:
+            self._lib.gles_Enable(self._p, cap)
+        if cap == C.GL_DEBUG_OUTPUT_KHR:
+            self._debug_route()
+
+    def glDisable(self, cap: int) -> None:
+        with self._lock:
+            self._lib.gles_Disable(self._p, cap)
+        if cap == C.GL_DEBUG_OUTPUT_KHR:
+            self._debug_route()
+
+    # {================================================================
+    # KHR_debug (gles.debug describes the Python callback)
+
+    def _debug_route(self) -> None:
+        """While DEBUG_OUTPUT_KHR is on and a Python callback is set, every
+        command of this command set delivers the messages it raised
+        (instance attributes over the class's methods); otherwise the
+        methods are the class's own, at no cost per command. (The instance
+        dict is touched only to add or remove those attributes: reading
+        ``vars(self)`` would make CPython keep the attributes in a dict and
+        look every one up there, which a command pays for.)"""
+        handle = self.handle
+        with self._lock:
+            self._lib.gles_debug_queue_set(self._p, handle.debug_callback is not None)
+            output = bool(self._lib.gles_IsEnabled(self._p, C.GL_DEBUG_OUTPUT_KHR))
+        on = handle.debug_callback is not None and output
+        if on == self._debug_wrapped:
+            return
+        names = [n for n in dir(type(self)) if n.startswith("gl") and n != "glGetError"]
+        for n in names:
+            if on:
+                setattr(self, n, _delivering(self, n, getattr(type(self), n)))
+            else:
+                delattr(self, n)
+        self._debug_wrapped = on
+
+    def _debug_deliver(self) -> None:
+        """Hand the messages waiting in the core's queue to the callback,
+        outside the lock; the first exception a call raises is re-raised
+        after the last message."""
+        lib, p, ffi = self._lib, self._p, self._ffi
+        taken = []
+        out = self._debug_out
+        if out is None:
+            out = (ffi.new("unsigned int[4]"), ffi.new("int[1]"), ffi.new("char[]", _DEBUG_TEXT))
+            self._debug_out = out
+        meta, length, text = out
+        with self._lock:
+            while lib.gles_debug_queued(p):
+                if not lib.gles_debug_take(p, 1, _DEBUG_TEXT, meta, meta + 1, meta + 2, meta + 3, length,
+                                           text):
+                    break
+                taken.append((int(meta[0]), int(meta[1]), int(meta[2]), int(meta[3]),
+                              ffi.buffer(text, max(int(length[0]) - 1, 0))[:]))
+        callback, user_param = self.handle.debug_callback, self.handle.debug_user_param
+        if callback is None:
+            return
+        raised: BaseException | None = None
+        for source, type_, id_, severity, message in taken:
+            try:
+                callback(source, type_, id_, severity, len(message), message, user_param)
+            except Exception as e:      # noqa: BLE001 -- re-raised below, after every message
+                if raised is None:
+                    raised = e
+                else:
+                    raised.add_note(f"the debug callback also raised {e!r}")
+        if raised is not None:
+            raise raised
+
+    def glDebugMessageCallbackKHR(self, callback: Any, userParam: Any = None) -> None:
+        """The debug callback: a callable (see gles.debug), or None to keep
+        messages in the log. userParam is any object, passed back as it is."""
+        if callback is not None and not callable(callback):
+            raise TypeError(f"glDebugMessageCallbackKHR: callback must be callable or None, "
+                            f"not {type(callback).__name__}")
+        self.handle.debug_callback = callback
+        self.handle.debug_user_param = userParam
+        self._debug_route()
+
+    def glDebugMessageControlKHR(self, source: int, type: int, severity: int, count: int, ids: Any,
+                                 enabled: Any) -> None:
+        count = _glint(count, "count")
+        buf = self._ffi.NULL
+        if count > 0:
+            if ids is None:
+                raise ValueError(f"glDebugMessageControlKHR: count is {count} but ids is None")
+            arr = _names(count, ids, "glDebugMessageControlKHR: ids").astype(np.uint32)
+            buf = self._ffi.from_buffer("unsigned int[]", arr)
+        with self._lock:
+            self._lib.gles_DebugMessageControlKHR(self._p, source, type, severity, count, buf, bool(enabled))
+
+    def glDebugMessageInsertKHR(self, source: int, type: int, id: int, severity: int, length: int,
+                                buf: Any) -> None:
+        """buf is str (UTF-8) or bytes; length < 0 reads it to its end."""
+        data, nbytes = _string(buf, length, "glDebugMessageInsertKHR: buf")
+        with self._lock:
+            st = self._lib.gles_DebugMessageInsertKHR(self._p, source, type, id, severity, length, data,
+                                                      nbytes)
+        self._status(st)
+
+    def glPushDebugGroupKHR(self, source: int, id: int, length: int, message: Any) -> None:
+        data, nbytes = _string(message, length, "glPushDebugGroupKHR: message")
+        with self._lock:
+            st = self._lib.gles_PushDebugGroupKHR(self._p, source, id, length, data, nbytes)
+        self._status(st)
+
+    def glGetDebugMessageLogKHR(self, count: int, bufSize: int, sources: Any = None, types: Any = None,
+                                ids: Any = None, severities: Any = None, lengths: Any = None,
+                                messageLog: Any = None) -> int:
+        """Fetch up to count messages from the log into the arrays given (C's
+        form: numpy uint32 arrays for sources, types, ids and severities,
+        int32 for lengths, a bytearray or uint8 array of at least bufSize
+        bytes for messageLog; None discards). Returns the number fetched."""
+        count = _index(count)
+        if not 0 <= count <= 2**32 - 1:
+            raise ValueError(f"glGetDebugMessageLogKHR: count={count} does not fit GLuint")
+        bufSize = _glint(bufSize, "bufSize")
+        outs = [_out_array(a, np.uint32, count, f"glGetDebugMessageLogKHR: {n}")
+                for a, n in ((sources, "sources"), (types, "types"), (ids, "ids"),
+                             (severities, "severities"))]
+        outs.append(_out_array(lengths, np.int32, count, "glGetDebugMessageLogKHR: lengths"))
+        log = _out_array(messageLog, np.uint8, max(bufSize, 0), "glGetDebugMessageLogKHR: messageLog")
+        ffi = self._ffi
+        kinds = ["unsigned int[]"] * 4 + ["int[]", "char[]"]
+        ptrs = [ffi.NULL if a is None else ffi.from_buffer(k, a) for a, k in zip([*outs, log], kinds)]
+        with self._lock:
+            return int(self._lib.gles_GetDebugMessageLogKHR(self._p, count, bufSize, *ptrs))
+
+    def glObjectLabelKHR(self, identifier: int, name: int, length: int, label: Any) -> None:
+        """label is str (UTF-8), bytes, or None to remove the label."""
+        data, nbytes = (self._ffi.NULL, 0) if label is None else _string(label, length,
+                                                                             "glObjectLabelKHR: label")
+        with self._lock:
+            st = self._lib.gles_ObjectLabelKHR(self._p, identifier, name, length, data, nbytes)
+        self._status(st)
+
+    def glGetObjectLabelKHR(self, identifier: int, name: int, bufSize: int) -> bytes:
+        """The object's label as bytes, at most bufSize - 1 of them (b"" on a GL error)."""
+        return self._get_label(bufSize, lambda size, length, out: self._lib.gles_GetObjectLabelKHR(
+            self._p, identifier, name, size, length, out))
+
+    def glObjectPtrLabelKHR(self, ptr: Any, length: int, label: Any) -> None:
+        """ES 1.1 has no sync objects, so no ptr names one: INVALID_VALUE.
+        ptr may be any object; it is never used as an address."""
+        data, nbytes = (self._ffi.NULL, 0) if label is None else _string(label, length,
+                                                                             "glObjectPtrLabelKHR: label")
+        with self._lock:
+            st = self._lib.gles_ObjectPtrLabelKHR(self._p, length, data, nbytes)
+        self._status(st)
+
+    def glGetObjectPtrLabelKHR(self, ptr: Any, bufSize: int) -> bytes:
+        """INVALID_VALUE (no sync objects in ES 1.1); returns b""."""
+        return self._get_label(bufSize, lambda size, length, out: self._lib.gles_GetObjectPtrLabelKHR(
+            self._p, size, length, out))
+
+    def _get_label(self, bufSize: Any, call: Any) -> bytes:
+        size = _glint(bufSize, "bufSize")
+        # a label is shorter than MAX_LABEL_LENGTH_KHR: no larger buffer is needed
+        room = min(size, _DEBUG_LABEL) if size > 0 else size
+        length = self._ffi.new("int[1]")
+        out = self._ffi.new("char[]", max(room, 1))
+        with self._lock:
+            ok = call(room, length, out)
+        return self._ffi.buffer(out, int(length[0]))[:] if ok else b""
 
     def glGetClipPlanex(self, plane: int) -> np.ndarray:
         eq = self._ffi.new("double[4]")

@@ -32,8 +32,9 @@ static void harness_die(const char *what)
 }
 
 /* a context on an RGBA8888 pbuffer with exactly these depth and stencil sizes
-** where the implementation has them (else the first larger one) */
-static void harness_begin(EGLint depth, EGLint stencil)
+** where the implementation has them (else the first larger one), created
+** with these EGL_CONTEXT_FLAGS_KHR (EGL_KHR_create_context) when not 0 */
+static void harness_begin_flags(EGLint depth, EGLint stencil, EGLint flags)
 {
     PFNEGLGETPLATFORMDISPLAYEXTPROC get_display =
         (PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
@@ -76,12 +77,18 @@ static void harness_begin(EGLint depth, EGLint stencil)
         harness_die("eglCreatePbufferSurface");
     if (!eglBindAPI(EGL_OPENGL_ES_API))
         harness_die("eglBindAPI");
-    const EGLint version[] = {EGL_CONTEXT_CLIENT_VERSION, 1, EGL_NONE};
+    const EGLint version[] = {EGL_CONTEXT_CLIENT_VERSION, 1, flags ? EGL_CONTEXT_FLAGS_KHR : EGL_NONE, flags,
+                              EGL_NONE};
     harness_ctx = eglCreateContext(harness_dpy, config, EGL_NO_CONTEXT, version);
     if (harness_ctx == EGL_NO_CONTEXT)
         harness_die("eglCreateContext");
     if (!eglMakeCurrent(harness_dpy, harness_surface, harness_surface, harness_ctx))
         harness_die("eglMakeCurrent");
+}
+
+static inline void harness_begin(EGLint depth, EGLint stencil)
+{
+    harness_begin_flags(depth, stencil, 0);
 }
 
 /* read the pixels back into argv[1], then tear everything down */

@@ -119,6 +119,21 @@ _EGL_ERRORS = {
 # adds it is picked up), copied from the Khronos header so that the peer needs
 # only the runtime libraries.
 _PROTOTYPES = "\n".join(cmd.prototype() for cmd in COMMANDS.values() if cmd.extension is None) + """
+/* GL_KHR_debug */
+void glDebugMessageControlKHR(GLenum source, GLenum type, GLenum severity, GLsizei count, const GLuint *ids,
+    GLboolean enabled);
+void glDebugMessageInsertKHR(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
+    const GLchar *buf);
+void glDebugMessageCallbackKHR(GLDEBUGPROCKHR callback, const void *userParam);
+GLuint glGetDebugMessageLogKHR(GLuint count, GLsizei bufSize, GLenum *sources, GLenum *types, GLuint *ids,
+    GLenum *severities, GLsizei *lengths, GLchar *messageLog);
+void glPushDebugGroupKHR(GLenum source, GLuint id, GLsizei length, const GLchar *message);
+void glPopDebugGroupKHR(void);
+void glObjectLabelKHR(GLenum identifier, GLuint name, GLsizei length, const GLchar *label);
+void glGetObjectLabelKHR(GLenum identifier, GLuint name, GLsizei bufSize, GLsizei *length, GLchar *label);
+void glObjectPtrLabelKHR(const void *ptr, GLsizei length, const GLchar *label);
+void glGetObjectPtrLabelKHR(const void *ptr, GLsizei bufSize, GLsizei *length, GLchar *label);
+void glGetPointervKHR(GLenum pname, void **params);
 /* GL_OES_EGL_image */
 void glEGLImageTargetTexture2DOES(GLenum target, GLeglImageOES image);
 void glEGLImageTargetRenderbufferStorageOES(GLenum target, GLeglImageOES image);
@@ -262,7 +277,7 @@ _SCALAR_CTYPES: dict[str, Any] = {
     "GLubyte": ctypes.c_ubyte, "GLboolean": ctypes.c_ubyte,
     "GLfloat": ctypes.c_float, "GLclampf": ctypes.c_float,
     "GLintptr": ctypes.c_ssize_t, "GLsizeiptr": ctypes.c_ssize_t,
-    "GLeglImageOES": ctypes.c_void_p,
+    "GLeglImageOES": ctypes.c_void_p, "GLDEBUGPROCKHR": ctypes.c_void_p,
 }
 
 # Element dtype of a typed pointer parameter (``const GLfloat *params``).
@@ -629,10 +644,40 @@ def _nbytes(data: Any, what: str) -> int:
                     f"not {type(data).__name__}")
 
 
+def _chars(obj: Any) -> tuple[Any, Any]:
+    """A GLchar string argument: str (UTF-8), bytes, or None (NULL)."""
+    if obj is None:
+        return None, None
+    if not isinstance(obj, (str, bytes, bytearray, memoryview)):
+        raise TypeError(f"a string must be str or bytes, not {type(obj).__name__}")
+    data = obj.encode("utf-8") if isinstance(obj, str) else bytes(obj)
+    buf = ctypes.create_string_buffer(data)
+    return ctypes.addressof(buf), buf
+
+
+_DEBUGPROC = ctypes.CFUNCTYPE(None, ctypes.c_uint, ctypes.c_uint, ctypes.c_uint, ctypes.c_uint, ctypes.c_int,
+                              ctypes.c_void_p, ctypes.c_void_p)
+
+
+def _debug_thunk(callback: Any, user_param: Any) -> Any:
+    """A GLDEBUGPROCKHR calling a Python callable (None: NULL)."""
+    if callback is None:
+        return None
+    if not callable(callback):
+        raise TypeError("glDebugMessageCallbackKHR: callback must be callable or None, "
+                        f"not {type(callback).__name__}")
+
+    def thunk(source: int, type_: int, id_: int, severity: int, length: int, message: int, _up: int) -> None:
+        callback(source, type_, id_, severity, length, ctypes.string_at(message, length), user_param)
+
+    return _DEBUGPROC(thunk)
+
+
 _GEN_GLOBALS: dict[str, Any] = {
     "_INFER": _INFER, "_count": _count, "_nbytes": _nbytes, "_MATRIX_PNAMES": _MATRIX_PNAMES,
     "np": np, "ctypes": ctypes, "_addr": _addr, "_vec": _vec, "_data": _data,
     "_raw": _raw, "_check_image": _check_image, "_check_indices": _check_indices,
+    "_chars": _chars, "_debug_thunk": _debug_thunk,
     "_cnt": _COUNTS.get,
     "_READ_LAYOUTS": _READ_LAYOUTS, "_TEXTURE0": int(C.GL_TEXTURE0),
     "_PACK_ALIGNMENT": int(C.GL_PACK_ALIGNMENT),
@@ -656,7 +701,7 @@ def _vector_count(p: _Param, names: list[str]) -> str:
         return "5"
     if p.name in ("params", "param") and "pname" in names:
         return "_cnt(pname, 1)"
-    for size_name in ("n", "primcount", "numAttachments"):
+    for size_name in ("n", "primcount", "numAttachments", "count"):
         if size_name in names:
             return size_name
     return "None"
@@ -715,6 +760,28 @@ def _source(proto: _Proto) -> str:
             "        if align != 1:\n"
             "            _ctx._raw['glPixelStorei'](_PACK_ALIGNMENT, align)\n")
         ret = "return None if layout is None else out"
+    elif name == "glDebugMessageCallbackKHR":
+        # a Python callable, called as gles calls it (message as bytes);
+        # ctypes keeps the thunk alive in _ctx._keep
+        body.append("        thunk = _debug_thunk(callback, userParam)\n"
+                    "        _ctx._keep['glDebugMessageCallbackKHR'] = thunk\n"
+                    "        _fn(ctypes.cast(thunk, ctypes.c_void_p) if thunk is not None else None, None)\n")
+        ret = "return None"
+    elif name == "glGetDebugMessageLogKHR":
+        sig = ["count", "bufSize", "sources=None", "types=None", "ids=None", "severities=None",
+               "lengths=None", "messageLog=None"]
+        body.append("        arrays = [a if a is None or isinstance(a, np.ndarray) "
+                    "else np.frombuffer(a, np.uint8)\n"
+                    "                  for a in (sources, types, ids, severities, lengths, messageLog)]\n"
+                    "        ptrs = [None if a is None else _addr(a) for a in arrays]\n")
+        ret = "return int(_fn(count, bufSize, *ptrs))"
+    elif name in ("glGetObjectLabelKHR", "glGetObjectPtrLabelKHR"):
+        sig = names[:-2]
+        first = "ptr" if name == "glGetObjectPtrLabelKHR" else "identifier, name"
+        body.append("        length = ctypes.c_int(0)\n"
+                    "        out = ctypes.create_string_buffer(max(min(bufSize, 4096), 1))\n"
+                    f"        _fn({first}, min(bufSize, 4096), ctypes.byref(length), out)\n")
+        ret = "return out.raw[:max(length.value, 0)]"
     elif name == "glQueryMatrixxOES":
         sig = []
         body.append("        mantissa = np.zeros(16, np.int32)\n"
@@ -784,7 +851,14 @@ def _source(proto: _Proto) -> str:
             if not p.const:
                 raise ValueError(f"no wrapper rule for output pointer in {name}")
             n = p.name
-            if p.base == "void" and "type" in names:
+            if p.base == "GLchar":
+                body.append(f"        {n}_a, {n}_k = _chars({n})\n")
+            elif name == "glDebugMessageControlKHR":
+                body.append("        ids_a, ids_k = (None, None) if ids is None else "
+                            "_vec(ids, _DT_GLuint, count)\n")
+            elif p.base == "void" and name == "glObjectPtrLabelKHR":
+                body.append(f"        {n}_a = {n}\n")
+            elif p.base == "void" and "type" in names:
                 body.append(f"        {n}_a, {n}_k = _data({n}, type)\n")
             elif p.base == "void":
                 size = "size" if "size" in names else (
