@@ -15,6 +15,7 @@
 ** Output is synchronous always: every message is raised by the command
 ** that causes it on the calling thread (worker threads record no errors).
 */
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -235,18 +236,27 @@ static uint64_t debug_rule_key(int s, int t, unsigned int id)
     return (uint64_t)(s * DEBUG_TYPES + t) << 32 | id;
 }
 
-/* the index of the first rule with a key >= key */
-static int debug_rule_find(const MessageGroup *g, uint64_t key)
+/* the index of the first of `count` items (each `stride` bytes, a uint64_t
+** key first, ascending) whose key is >= key: the rules and the labels */
+_Static_assert(offsetof(MessageRule, key) == 0 && offsetof(ObjectLabel, key) == 0, "keys lead their items");
+static int debug_lower_bound(const void *items, size_t stride, int count, uint64_t key)
 {
-    int lo = 0, hi = g->rule_count;
+    int lo = 0, hi = count;
     while (lo < hi) {
         int mid = lo + (hi - lo) / 2;
-        if (g->rules[mid].key < key)
+        uint64_t k;
+        memcpy(&k, (const char *)items + (size_t)mid * stride, sizeof k);
+        if (k < key)
             lo = mid + 1;
         else
             hi = mid;
     }
     return lo;
+}
+
+static int debug_rule_find(const MessageGroup *g, uint64_t key)
+{
+    return debug_lower_bound(g->rules, sizeof *g->rules, g->rule_count, key);
 }
 
 static int debug_enabled(const MessageGroup *g, int s, int t, unsigned int id, int severity_bit)
@@ -527,6 +537,18 @@ static int64_t debug_checked_length(GlesContext *ctx, const char *where, const c
     return n;
 }
 
+/* the length of a message's text (DebugMessageInsert's buf, PushDebugGroup's
+** message), which may not be NULL: as debug_checked_length */
+static int64_t debug_message_length(GlesContext *ctx, const char *where, const char *what, int length,
+                                    const void *text, int64_t nbytes)
+{
+    if (!text) {
+        ctx_error_at(ctx, GL_INVALID_VALUE, where, "the message is NULL");
+        return -1;
+    }
+    return debug_checked_length(ctx, where, what, length, text, nbytes, DEBUG_MAX_MESSAGE_LENGTH);
+}
+
 int gles_DebugMessageInsertKHR(GlesContext *ctx, unsigned int source, unsigned int type, unsigned int id,
                                unsigned int severity, int length, const void *buf, int64_t nbytes)
 {
@@ -542,11 +564,7 @@ int gles_DebugMessageInsertKHR(GlesContext *ctx, unsigned int source, unsigned i
                                             "but the group types, severity one of Table 5.5");
         return GLES_OK;
     }
-    if (!buf) {
-        ctx_error_why(ctx, GL_INVALID_VALUE, "buf is NULL");
-        return GLES_OK;
-    }
-    int64_t n = debug_checked_length(ctx, __func__, "buf", length, buf, nbytes, DEBUG_MAX_MESSAGE_LENGTH);
+    int64_t n = debug_message_length(ctx, __func__, "buf", length, buf, nbytes);
     if (n < 0)
         return n == -2 ? GLES_EVALUE : GLES_OK;
     debug_emit(ctx, source, type, id, severity, buf, (int)n);
@@ -634,11 +652,7 @@ int gles_PushDebugGroupKHR(GlesContext *ctx, unsigned int source, unsigned int i
         ctx_error_why(ctx, GL_INVALID_ENUM, "source must be APPLICATION or THIRD_PARTY");
         return GLES_OK;
     }
-    if (!message) {
-        ctx_error_why(ctx, GL_INVALID_VALUE, "message is NULL");
-        return GLES_OK;
-    }
-    int64_t n = debug_checked_length(ctx, __func__, "message", length, message, nbytes, DEBUG_MAX_MESSAGE_LENGTH);
+    int64_t n = debug_message_length(ctx, __func__, "message", length, message, nbytes);
     if (n < 0)
         return n == -2 ? GLES_EVALUE : GLES_OK;
     if (d->depth == DEBUG_MAX_GROUP_STACK_DEPTH) {
@@ -735,15 +749,7 @@ static int debug_label_target(GlesContext *ctx, const char *where, unsigned int 
 
 static int debug_label_find(const DebugState *d, uint64_t key)
 {
-    int lo = 0, hi = d->label_count;
-    while (lo < hi) {
-        int mid = lo + (hi - lo) / 2;
-        if (d->labels[mid].key < key)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo;
+    return debug_lower_bound(d->labels, sizeof *d->labels, d->label_count, key);
 }
 
 static void debug_label_remove(DebugState *d, int i)

@@ -447,21 +447,9 @@ static void light_side(const GlesContext *ctx, const NUM n[3], const NUM v[3], c
     out[3] = num_clamp01(dif_cm[3]); /* alpha is the diffuse material's */
 }
 
-void light_vertex(const GlesContext *ctx, const NUM eye[4], const NUM normal[3], int eye_normal,
-                  const NUM color[4], NUM front[4], NUM back[4])
+void light_vertex(const GlesContext *ctx, const NUM eye[4], const NUM n[3], const NUM color[4], NUM front[4],
+                  NUM back[4])
 {
-    NUM n[3];
-    if (eye_normal) {
-        memcpy(n, normal, sizeof n);
-    } else {
-        for (int r = 0; r < 3; r++)
-            n[r] = num_dot(ctx->normal_matrix + r * 3, 1, normal, 1, 3);
-        if (ctx->rescale_normal)
-            for (int r = 0; r < 3; r++)
-                n[r] = num_mul(n[r], ctx->rescale);
-    }
-    if (ctx->normalize)
-        num_normalize3(n);
     NUM v[3];
     if (eye[3] == NUM_ONE || eye[3] == NUM_ZERO) {
         v[0] = eye[0]; v[1] = eye[1]; v[2] = eye[2];

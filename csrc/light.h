@@ -11,10 +11,10 @@ void light_init(GlesContext *ctx);
 void light_validate(GlesContext *ctx);
 /* COLOR_MATERIAL: copy the current colour into ambient and diffuse */
 void light_track_color(GlesContext *ctx);
-/* lit colours of a vertex; `normal` is in object space, or already in eye
-** space when `eye_normal` (matrix palette); `back` may be NULL */
-void light_vertex(const GlesContext *ctx, const NUM eye[4], const NUM normal[3], int eye_normal,
-                  const NUM color[4], NUM front[4], NUM back[4]);
+/* lit colours of a vertex at eye position `eye` with the eye-space normal
+** n (vertex_eye_normal); `back` may be NULL */
+void light_vertex(const GlesContext *ctx, const NUM eye[4], const NUM n[3], const NUM color[4], NUM front[4],
+                  NUM back[4]);
 
 /* {====================================================================
 ** the lighting equation for a batch of vertices, in structure-of-arrays

@@ -31,27 +31,6 @@ int texgen_needs_eye(const GlesContext *ctx)
     return 0;
 }
 
-void texgen_eye_normal(const GlesContext *ctx, int64_t index, NUM nf[3])
-{
-    const ArrayState *na = &ctx->arrays[ARR_NORMAL];
-    NUM normal[3];
-    if (na->enabled)
-        array_fetch(na, array_base(na), index, 1, normal);
-    else
-        memcpy(normal, ctx->cur_normal_n, sizeof normal);
-    if (ctx->matrix_palette) {
-        vertex_palette_normal(ctx, index, normal, nf);
-    } else {
-        for (int r = 0; r < 3; r++)
-            nf[r] = num_dot(ctx->normal_matrix + r * 3, 1, normal, 1, 3);
-        if (ctx->rescale_normal)
-            for (int r = 0; r < 3; r++)
-                nf[r] = num_mul(nf[r], ctx->rescale);
-    }
-    if (ctx->normalize)
-        num_normalize3(nf);
-}
-
 void texgen_coords(unsigned int mode, const NUM eye[4], const NUM nf[3], NUM tc[4])
 {
     if (mode == GL_NORMAL_MAP_OES) {

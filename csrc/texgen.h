@@ -12,11 +12,8 @@
 ** needs eye coordinates); from the API state, whatever the unit samples */
 int texgen_any(const GlesContext *ctx);
 int texgen_needs_eye(const GlesContext *ctx);
-/* the eye-space normal nf of array element `index` (§2.11.3, as lighting
-** forms it: the normal matrix or the palette's, RESCALE_NORMAL, NORMALIZE) */
-void texgen_eye_normal(const GlesContext *ctx, int64_t index, NUM nf[3]);
 /* a unit's generated s, t, r into tc[0..2] from the vertex's eye position
-** and eye normal (tc[3], q, is left as the vertex gave it) */
+** and eye normal nf (vertex_eye_normal; tc[3], q, is left as the vertex gave it) */
 void texgen_coords(unsigned int mode, const NUM eye[4], const NUM nf[3], NUM tc[4]);
 
 #endif

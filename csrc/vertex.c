@@ -148,6 +148,31 @@ void vertex_palette_normal(const GlesContext *ctx, int64_t index, const NUM n[3]
     memcpy(out, acc, sizeof acc);
 }
 
+/* the eye-space normal of array element `index` that lighting and texture
+** coordinate generation read (§2.11.3): the object normal (its array or
+** the current one) by the normal matrix, or the palette's; RESCALE_NORMAL;
+** NORMALIZE */
+void vertex_eye_normal(const GlesContext *ctx, int64_t index, NUM n[3])
+{
+    const ArrayState *na = &ctx->arrays[ARR_NORMAL];
+    NUM normal[3];
+    if (na->enabled)
+        array_fetch(na, array_base(na), index, 1, normal);
+    else
+        memcpy(normal, ctx->cur_normal_n, sizeof normal);
+    if (ctx->matrix_palette) {
+        vertex_palette_normal(ctx, index, normal, n);
+    } else {
+        for (int r = 0; r < 3; r++)
+            n[r] = num_dot(ctx->normal_matrix + r * 3, 1, normal, 1, 3);
+        if (ctx->rescale_normal)
+            for (int r = 0; r < 3; r++)
+                n[r] = num_mul(n[r], ctx->rescale);
+    }
+    if (ctx->normalize)
+        num_normalize3(n);
+}
+
 void vertex_position(GlesContext *ctx, int64_t index, Vertex *v)
 {
     const ArrayState *a = &ctx->arrays[ARR_VERTEX];
@@ -189,22 +214,13 @@ void vertex_attribs(GlesContext *ctx, int64_t index, Vertex *v)
         for (int i = 0; i < 4; i++)
             exact[i] = frag_from_double(ctx->cur_color[i]);
     }
+    NUM nf[3];      /* the eye-space normal lighting and texture coordinate generation read */
+    if (ctx->lighting || ctx->texgen_units)
+        vertex_eye_normal(ctx, index, nf);
     if (ctx->lighting) {
-        const ArrayState *na = &ctx->arrays[ARR_NORMAL];
-        NUM normal[3];
-        if (na->enabled)
-            array_fetch(na, array_base(na), index, 1, normal);
-        else
-            memcpy(normal, ctx->cur_normal_n, sizeof normal);
         NUM front[4], back[4];
         NUM *pb = ctx->two_sided ? back : NULL;
-        if (ctx->matrix_palette) {
-            NUM eye_n[3];
-            vertex_palette_normal(ctx, index, normal, eye_n);
-            light_vertex(ctx, v->eye, eye_n, 1, color, front, pb);
-        } else {
-            light_vertex(ctx, v->eye, normal, 0, color, front, pb);
-        }
+        light_vertex(ctx, v->eye, nf, color, front, pb);
         for (int i = 0; i < 4; i++) {
             v->color[i] = frag_from_num(front[i]);
             if (pb)
@@ -217,9 +233,6 @@ void vertex_attribs(GlesContext *ctx, int64_t index, Vertex *v)
     }
     if (ctx->fog)
         v->fog = fog_vertex_value(ctx, v->eye);
-    NUM nf[3];      /* the eye-space normal texture coordinate generation reads */
-    if (ctx->texgen_units)
-        texgen_eye_normal(ctx, index, nf);
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++) {
         if (!(ctx->tex_units_on & (1u << u)))
             continue;

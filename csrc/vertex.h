@@ -38,5 +38,8 @@ unsigned int vertex_clipcode(const GlesContext *ctx, const Vertex *v);
 ** `index`, and its eye-space normal sum_i w_i n Inv(Mu_i) */
 void vertex_palette_eye(const GlesContext *ctx, int64_t index, const NUM obj[4], NUM eye[4]);
 void vertex_palette_normal(const GlesContext *ctx, int64_t index, const NUM n[3], NUM out[3]);
+/* the eye-space normal lighting and texgen read (normal matrix or palette,
+** RESCALE_NORMAL, NORMALIZE) */
+void vertex_eye_normal(const GlesContext *ctx, int64_t index, NUM n[3]);
 
 #endif

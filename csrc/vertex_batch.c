@@ -249,7 +249,7 @@ void vertex_batch_positions(GlesContext *ctx, const int64_t *index, int n, Verte
 }
 
 /* the lit colours of the batch: normals to eye space, rescaled and
-** normalised as light_vertex does, then light_batch */
+** normalised as vertex_eye_normal does, then light_batch */
 static void light_lanes(GlesContext *ctx, const int64_t *index, Vertex *const *out, int n, LightBatch *lb)
 {
     static const NUM zero[4] = { NUM_ZERO, NUM_ZERO, NUM_ZERO, NUM_ZERO };
@@ -351,7 +351,7 @@ void vertex_batch_attribs(GlesContext *ctx, const int64_t *index, Vertex *const 
     NUM nf[VERTEX_BATCH][3];
     if (ctx->texgen_units)
         for (int i = 0; i < n; i++)
-            texgen_eye_normal(ctx, index[i], nf[i]);
+            vertex_eye_normal(ctx, index[i], nf[i]);
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++) {
         if (!(ctx->tex_units_on & (1u << u)))
             continue;

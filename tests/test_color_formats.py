@@ -383,12 +383,7 @@ def _mesa_scene(gl: Any, fmt: int, w: int, h: int) -> np.ndarray:
     gl.glRenderbufferStorageOES(RB, fmt, w, h)
     gl.glFramebufferRenderbufferOES(FB, COLOR, RB, rb)
     assert gl.glCheckFramebufferStatusOES(FB) == C.GL_FRAMEBUFFER_COMPLETE_OES
-    gl.glViewport(0, 0, w, h)
-    gl.glMatrixMode(C.GL_PROJECTION)
-    gl.glLoadIdentity()
-    gl.glOrthof(0, w, 0, h, -1, 1)
-    gl.glMatrixMode(C.GL_MODELVIEW)
-    gl.glLoadIdentity()
+    set_ortho(gl, w, h)
     gl.glDisable(C.GL_DITHER)
     gl.glClearColor(0.1, 0.3, 0.7, 0.6)
     gl.glClear(C.GL_COLOR_BUFFER_BIT)
