@@ -570,6 +570,14 @@ int gles_TexImage2D(GlesContext *ctx, unsigned int target, int level, int intern
             for (int x = 0; x < width; x++)
                 li->texels[(size_t)y * width + x] =
                     unpack_pixel(format, type, (const uint8_t *)pixels + y * stride + (int64_t)x * bpp);
+    } else if (format == GL_RGB || format == GL_LUMINANCE) {
+        /* no data: undefined contents, which we make zero bytes' texels;
+        ** for a format without alpha that is alpha 1, what a framebuffer
+        ** object drawing into it must read as its destination alpha */
+        static const uint8_t zero[4];
+        const uint32_t texel = unpack_pixel(format, type, zero);
+        for (size_t i = 0; i < (size_t)width * (size_t)height; i++)
+            li->texels[i] = texel;
     }
     image_changed(ctx, t, level);
     return GLES_OK;

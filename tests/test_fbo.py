@@ -304,14 +304,16 @@ def test_queries_and_errors() -> None:
 
 def test_rgb_targets_keep_no_alpha() -> None:
     """An RGB texture (or RGB8 renderbuffer) as the color buffer: ALPHA_BITS 0,
-    alpha never written, DST_ALPHA reads 1."""
-    for attach in ("texture", "rgb8"):
+    alpha never written, DST_ALPHA reads 1, ReadPixels' A is 1 (§4.3.1), also for
+    a texture specified without data."""
+    for attach in ("texture", "texture without data", "rgb8"):
         ctx = gles.Context(4, 4)
         gl = ctx.gl
         _framebuffer(gl)
-        if attach == "texture":
-            t = _texture(gl, 4, 4, C.GL_RGB, np.zeros(48, np.uint8))
+        if attach.startswith("texture"):
+            t = _texture(gl, 4, 4, C.GL_RGB, None if attach.endswith("data") else np.zeros(48, np.uint8))
             gl.glFramebufferTexture2DOES(FB, COLOR, C.GL_TEXTURE_2D, t, 0)
+            assert (_read(gl, 4, 4)[..., 3] == 255).all()
         else:
             gl.glFramebufferRenderbufferOES(FB, COLOR, RB, _renderbuffer(gl, C.GL_RGB8_OES, 4, 4))
         assert gl.glGetIntegerv(C.GL_ALPHA_BITS) == 0 and gl.glGetIntegerv(C.GL_RED_BITS) == 8
