@@ -250,6 +250,9 @@ static GlesContext *worker_create(const GlesContext *ctx)
         worker_free(w);
         return NULL;
     }
+    /* the tail's fixed tables, once (state.h) */
+    const size_t tail = offsetof(GlesContext, unorm8), tables_end = offsetof(GlesContext, flat_table);
+    memcpy((char *)w + tail, (const char *)ctx + tail, tables_end - tail);
     return w;
 }
 

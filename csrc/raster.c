@@ -369,9 +369,10 @@ static void worker_prepare(const GlesContext *ctx, GlesContext *w, int index)
 {
     void *fused = w->fused_setup, *tests = w->tests_setup;
     TEXC *rect_s = w->rect_s;
-    const size_t skip0 = offsetof(GlesContext, modelview), skip1 = offsetof(GlesContext, palette_stack);
+    const size_t skip0 = offsetof(GlesContext, modelview), skip1 = offsetof(GlesContext, current_palette),
+                 tail = offsetof(GlesContext, unorm8);
     memcpy(w, ctx, skip0);
-    memcpy((char *)w + skip1, (const char *)ctx + skip1, sizeof *w - skip1);
+    memcpy((char *)w + skip1, (const char *)ctx + skip1, tail - skip1);
     w->fused_setup = fused;
     w->tests_setup = tests;
     w->rect_s = rect_s;

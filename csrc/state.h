@@ -426,9 +426,6 @@ struct GlesContext {
     ** of serial tests_serial (0: none), GLES_TESTS_SETUP_BYTES, 64-byte aligned */
     uint64_t tests_serial;
     void *tests_setup;
-    /* a flat colour's blend as a table per destination byte (span.c's
-    ** span_flat_table) */
-    FlatTable flat_table;
 
     unsigned int error;
     char message[256];
@@ -470,8 +467,6 @@ struct GlesContext {
     double sample_coverage_value;
     int sample_coverage_invert;
 
-    FRAGV unorm8[256];         /* d / 255 as FRAGV: blending reads these */
-    FRAGV unorm5[32], unorm6[64];
 
     /* points, lines and polygon offset (§3.3-3.5) */
     double point_size, line_width, point_size_min, point_size_max, point_fade_threshold;
@@ -526,7 +521,6 @@ struct GlesContext {
     unsigned int cube_units;            /* derived: bit per sampling unit whose texture is a cube map */
     unsigned int texgen_units;          /* derived: bit per sampling unit with TEXTURE_GEN_STR_OES */
     unsigned int tex_units_on;          /* derived: bit per unit that samples */
-    FRAGV texel_unorm8[256];            /* c / 255 */
 
     /* arrays */
     ArrayState arrays[ARR_COUNT];
@@ -594,9 +588,17 @@ struct GlesContext {
     int64_t verts_capacity;
     uint32_t draw_stamp;
 
-    /* d / 15 and d / 1 as FRAGV, the 4- and 1-bit channels' reads (after
-    ** the fields the span stages read most, whose offsets they keep) */
-    FRAGV unorm4[16], unorm1[2];
+    /* {== the tail, which a worker's copy does not take per draw (raster.c's
+    ** worker_prepare): tables fixed when the context is made (a worker
+    ** takes them once, context.c's worker_create), and the flat colour's
+    ** blend, a per-primitive cache each thread fills for itself. Kept after
+    ** the fields the span stages read most, whose offsets they keep */
+    FRAGV unorm8[256];          /* d / 255 as FRAGV: blending reads these */
+    FRAGV unorm5[32], unorm6[64], unorm4[16], unorm1[2];   /* d / (2^bits - 1): 16-bit formats' channels */
+    FRAGV texel_unorm8[256];    /* c / 255 */
+    /* a flat colour's blend as a table per destination byte (span.c's
+    ** span_flat_table) */
+    FlatTable flat_table;
 };
 
 /* dirty bits */
