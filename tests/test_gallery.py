@@ -54,12 +54,15 @@ MESA_OFF8 = {
     "light_map": 0.001,                 # [0]
     "detail_texture": 0.002,            # [0.02%]: LOD of the x16 detail on the sloping terrain
     "env_map_dual_paraboloid": 0.001,   # [0.02%]: silhouette pixels where q -> 0; no mipmaps
+    "env_map_cube": 0.014,              # [1.20%]: LOD where the reflection squeezes the cube map
+                                        # (the floor's checker in the hole and under the rim, the
+                                        # pilasters near the silhouette); 0 with the mipmaps removed
     "projective_spotlight": 0.002,      # [0.09%]: LOD of the projected slide on the boxes
     "stencil_reflection": 0.005,        # [0.30%]: the torus's saturated highlight (clamping)
     "alpha_sprites": 0.001,             # [0]: screen-aligned sprites, so both LODs agree
 }
 
-MIN_PSNR_FIXED = 30.0       # dB, fixed against double over RGB (measured 49-86 dB at 96x96)
+MIN_PSNR_FIXED = 30.0       # dB, fixed against double over RGB (measured 44-86 dB at 96x96)
 MIN_COVERAGE = 0.3          # share of pixels not the clear colour (measured 0.41-1.0)
 MIN_COLOURS = 100           # distinct RGB values (measured 619-5625)
 
@@ -108,7 +111,7 @@ def off_share(a: np.ndarray, b: np.ndarray, tol: int = 8) -> float:
 
 def test_registry() -> None:
     assert NAMES == ["lit_mesh", "ground_plane", "dot3_bump", "light_map", "detail_texture",
-                     "env_map_dual_paraboloid", "projective_spotlight", "stencil_reflection",
+                     "env_map_dual_paraboloid", "env_map_cube", "projective_spotlight", "stencil_reflection",
                      "alpha_sprites"]
     for title, fn in GALLERY.values():
         assert title and "\n" not in title and callable(fn)

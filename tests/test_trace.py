@@ -25,7 +25,8 @@ from gles import trace as T
 from gles.gallery import GALLERY
 
 W, H = 64, 48
-SCENES = ("lit_mesh", "dot3_bump", "env_map_dual_paraboloid", "stencil_reflection", "alpha_sprites")
+SCENES = ("lit_mesh", "dot3_bump", "env_map_dual_paraboloid", "env_map_cube", "stencil_reflection",
+          "alpha_sprites")
 
 
 def plain_run(scene: Any, numeric: str, w: int = W, h: int = H, color: str = "rgba8888") -> np.ndarray:

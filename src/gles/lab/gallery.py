@@ -3,10 +3,10 @@
 Each scene shows one classic way of using the ES 1.1 fixed-function
 pipeline (lighting, mipmapped ground planes with fog, DOT3 bump mapping,
 light maps, detail textures, environment mapping through the texture
-matrix, projective textures, stencil reflections, blended sprites). The
-scenes are written in the conventions :mod:`gles` and its Mesa peer
-(:mod:`gles.mesa`) share, so one function renders on both and the images
-can be compared.
+matrix and through a cube map, projective textures, stencil reflections,
+blended sprites). The scenes are written in the conventions :mod:`gles`
+and its Mesa peer (:mod:`gles.mesa`) share, so one function renders on both
+and the images can be compared.
 
 The protocol
 ------------
@@ -51,7 +51,8 @@ from gles import constants as C
 
 __all__ = ["GALLERY", "Frame", "Scene",
            "lit_mesh", "ground_plane", "dot3_bump", "light_map", "detail_texture",
-           "env_map_dual_paraboloid", "projective_spotlight", "stencil_reflection", "alpha_sprites"]
+           "env_map_dual_paraboloid", "env_map_cube", "projective_spotlight", "stencil_reflection",
+           "alpha_sprites"]
 
 Frame = Callable[[], None]
 Scene = Callable[[Any, int, int], Frame]
@@ -778,7 +779,98 @@ def env_map_dual_paraboloid(gl: Any, w: int, h: int) -> Frame:
 
 
 # {================================================================
-# 7. projective_spotlight
+# 7. env_map_cube
+
+# the direction (x, y, z) of texel (sc, tc) in [-1, 1]^2 of each face (+x, -x, +y, -y, +z, -z),
+# the inverse of OES_texture_cube_map's table (sc = -rz, tc = -ry on +x, and so on)
+_CUBE_FACES = (
+    lambda sc, tc: (np.ones_like(sc), -tc, -sc), lambda sc, tc: (-np.ones_like(sc), -tc, sc),
+    lambda sc, tc: (sc, np.ones_like(sc), tc), lambda sc, tc: (sc, -np.ones_like(sc), -tc),
+    lambda sc, tc: (sc, -tc, np.ones_like(sc)), lambda sc, tc: (-sc, -tc, -np.ones_like(sc)),
+)
+
+
+def _courtyard(d: np.ndarray) -> np.ndarray:
+    """The colour (0..255 RGB) seen along directions d (..., 3) from the middle of a cube
+    courtyard of half-size 1, y up: a sky gradient above the walls, a checkered floor, and
+    four walls of their own colours with pilasters and a dark plinth, up to height 0.3."""
+    x, y, z = d[..., 0], d[..., 1], d[..., 2]
+    side = np.maximum(np.abs(x), np.abs(z))
+    height = y / np.maximum(side, 1e-6)                          # where d meets a wall
+    along = np.where(np.abs(x) >= np.abs(z), z, x) / np.maximum(side, 1e-6)
+    up = np.clip(y / np.linalg.norm(d, axis=-1), 0.0, 1.0)[..., None]
+    horizon, zenith = np.array([235.0, 225.0, 205.0]), np.array([35.0, 80.0, 185.0])
+    sky = horizon + (zenith - horizon) * np.sqrt(up)
+    # the floor: a checker of 6 x 6 squares on y = -1
+    down = np.maximum(-y, 1e-6)
+    checker = (np.floor(3 * x / down) + np.floor(3 * z / down)) % 2
+    floor = np.where(checker[..., None] == 1, [60.0, 62.0, 70.0], [200.0, 195.0, 180.0])
+    # the walls: +x terracotta, -x sage, +z ochre, -z slate blue
+    colours = np.array([[190.0, 85.0, 55.0], [110.0, 160.0, 105.0],
+                        [215.0, 170.0, 70.0], [80.0, 100.0, 160.0]])
+    which = np.where(np.abs(x) >= np.abs(z), np.where(x >= 0, 0, 1), np.where(z >= 0, 2, 3))
+    wall = colours[which]
+    pilaster = np.abs(((along + 1) * 2) % 1.0 - 0.5) < 0.06     # four bays per wall
+    wall = np.where(pilaster[..., None], 0.5 * wall + 110.0, wall)
+    wall = np.where((height < -0.75)[..., None], 0.35 * wall, wall)
+    out = np.where((height > 0.3)[..., None], sky, wall)
+    return np.clip(np.where((-y >= side)[..., None], floor, out), 0, 255)
+
+
+def _cube_texture(gl: Any, size: int) -> int:
+    """The courtyard as a cube map on the active unit, each face's mipmap chain built in
+    numpy (trilinear, CLAMP_TO_EDGE)."""
+    cube = C.GL_TEXTURE_CUBE_MAP_OES
+    name = int(gl.glGenTextures(1))
+    gl.glBindTexture(cube, name)
+    gl.glPixelStorei(C.GL_UNPACK_ALIGNMENT, 1)
+    t, s = ((np.mgrid[0:size, 0:size] + 0.5) / size) * 2 - 1      # row 0 = t near 0
+    for face, direction in enumerate(_CUBE_FACES):
+        img = _courtyard(np.stack(direction(s, t), axis=-1))
+        for level, texels in enumerate(_mipmaps(img)):
+            n = texels.shape[0]
+            gl.glTexImage2D(C.GL_TEXTURE_CUBE_MAP_POSITIVE_X_OES + face, level, C.GL_RGB, n, n, 0,
+                            C.GL_RGB, C.GL_UNSIGNED_BYTE, texels)
+    gl.glTexParameteri(cube, C.GL_TEXTURE_MIN_FILTER, C.GL_LINEAR_MIPMAP_LINEAR)
+    gl.glTexParameteri(cube, C.GL_TEXTURE_MAG_FILTER, C.GL_LINEAR)
+    gl.glTexParameteri(cube, C.GL_TEXTURE_WRAP_S, C.GL_CLAMP_TO_EDGE)
+    gl.glTexParameteri(cube, C.GL_TEXTURE_WRAP_T, C.GL_CLAMP_TO_EDGE)
+    return name
+
+
+def env_map_cube(gl: Any, w: int, h: int) -> Frame:
+    """A chrome torus reflecting a courtyard through a mipmapped cube map, the reflection
+    vectors generated in eye space (REFLECTION_MAP_OES)."""
+    _begin(gl, (0.1, 0.1, 0.12, 1.0))
+    gl.glEnable(C.GL_DEPTH_TEST)
+    gl.glDepthFunc(C.GL_LESS)
+    gl.glEnable(C.GL_CULL_FACE)
+    verts, normals, idx = _torus(1.0, 0.45, 96, 48)
+    _cube_texture(gl, 64)
+    gl.glEnable(C.GL_TEXTURE_CUBE_MAP_OES)
+    # r = u - 2 (n . u) n from the eye-space position and normal: the environment is fixed
+    # in eye space, the camera at its middle looking down -z
+    gl.glTexGeniOES(C.GL_TEXTURE_GEN_STR_OES, C.GL_TEXTURE_GEN_MODE_OES, C.GL_REFLECTION_MAP_OES)
+    gl.glEnable(C.GL_TEXTURE_GEN_STR_OES)
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_MODULATE)
+    gl.glColor4f(0.92, 0.95, 1.0, 1.0)                          # a slightly cool chrome
+    gl.glEnableClientState(C.GL_NORMAL_ARRAY)
+    _perspective(gl, w, h, 40.0, 1.0, 10.0)
+    gl.glTranslatef(0.0, 0.0, -4.6)
+    gl.glRotatef(-58.0, 1.0, 0.0, 0.0)
+    gl.glRotatef(-25.0, 0.0, 1.0, 0.0)
+
+    def frame() -> None:
+        gl.glClear(C.GL_COLOR_BUFFER_BIT | C.GL_DEPTH_BUFFER_BIT)
+        gl.glVertexPointer(3, C.GL_FLOAT, 0, verts)
+        gl.glNormalPointer(C.GL_FLOAT, 0, normals)
+        gl.glDrawElements(C.GL_TRIANGLES, len(idx), C.GL_UNSIGNED_SHORT, idx)
+
+    return frame
+
+
+# {================================================================
+# 8. projective_spotlight
 
 def _gobo(size: int) -> np.ndarray:
     """A spotlight's slide, RGB: a warm disc with a soft edge, crossed by window bars,
@@ -885,7 +977,7 @@ def projective_spotlight(gl: Any, w: int, h: int) -> Frame:
 
 
 # {================================================================
-# 8. stencil_reflection
+# 9. stencil_reflection
 
 def _marble_tiles(size: int, seed: int) -> np.ndarray:
     """Polished floor tiles, RGB: a 4x4 checker of dark and light marble with veins."""
@@ -996,7 +1088,7 @@ def stencil_reflection(gl: Any, w: int, h: int) -> Frame:
 
 
 # {================================================================
-# 9. alpha_sprites
+# 10. alpha_sprites
 
 def alpha_sprites(gl: Any, w: int, h: int) -> Frame:
     """Smoke and embers over a camp fire: 300 camera-facing textured quads, sorted back to
@@ -1108,6 +1200,9 @@ GALLERY: dict[str, tuple[str, Scene]] = {
     "env_map_dual_paraboloid": (
         "Dual-paraboloid environment map: reflection vectors projected by the texture matrix",
         env_map_dual_paraboloid),
+    "env_map_cube": (
+        "Cube environment map: REFLECTION_MAP_OES texture coordinates, six mipmapped faces",
+        env_map_cube),
     "projective_spotlight": (
         "Projective spotlight: bias x light frustum x light view in the texture matrix",
         projective_spotlight),
