@@ -1565,7 +1565,8 @@ def _checked_class(base: type) -> type:
     def wrap(name: str, fn: Any) -> Any:
         def command(self: GLBase, *args: Any, **kwargs: Any) -> Any:
             result = fn(self, *args, **kwargs)
-            err = self._lib.gles_GetError(self._p)
+            with self._lock:    # the core is not to be entered by two threads at once
+                err = self._lib.gles_GetError(self._p)
             if err:
                 raise GLError(err, name, args)
             return result
