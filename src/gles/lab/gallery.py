@@ -146,6 +146,18 @@ def _perspective(gl: Any, w: int, h: int, fovy: float, near: float, far: float) 
     gl.glLoadIdentity()
 
 
+def _mesh_frame(gl: Any, verts: np.ndarray, normals: np.ndarray, idx: np.ndarray) -> Frame:
+    """A frame that clears colour and depth and draws the indexed triangles with their normals."""
+
+    def frame() -> None:
+        gl.glClear(C.GL_COLOR_BUFFER_BIT | C.GL_DEPTH_BUFFER_BIT)
+        gl.glVertexPointer(3, C.GL_FLOAT, 0, verts)
+        gl.glNormalPointer(C.GL_FLOAT, 0, normals)
+        gl.glDrawElements(C.GL_TRIANGLES, len(idx), C.GL_UNSIGNED_SHORT, idx)
+
+    return frame
+
+
 def _combine_rgb(gl: Any, func: int, src0: int, src1: int) -> None:
     """The active unit's environment: COMBINE with COMBINE_RGB = func of the
     colours (SRC_COLOR) of src0 and src1; alpha is left as it is."""
@@ -337,14 +349,7 @@ def lit_mesh(gl: Any, w: int, h: int) -> Frame:
     gl.glRotatef(-58.0, 1.0, 0.0, 0.0)
     gl.glRotatef(20.0, 0.0, 1.0, 0.0)
     gl.glEnableClientState(C.GL_NORMAL_ARRAY)
-
-    def frame() -> None:
-        gl.glClear(C.GL_COLOR_BUFFER_BIT | C.GL_DEPTH_BUFFER_BIT)
-        gl.glVertexPointer(3, C.GL_FLOAT, 0, verts)
-        gl.glNormalPointer(C.GL_FLOAT, 0, normals)
-        gl.glDrawElements(C.GL_TRIANGLES, len(idx), C.GL_UNSIGNED_SHORT, idx)
-
-    return frame
+    return _mesh_frame(gl, verts, normals, idx)
 
 
 # {================================================================
@@ -859,14 +864,7 @@ def env_map_cube(gl: Any, w: int, h: int) -> Frame:
     gl.glTranslatef(0.0, 0.0, -4.6)
     gl.glRotatef(-58.0, 1.0, 0.0, 0.0)
     gl.glRotatef(-25.0, 0.0, 1.0, 0.0)
-
-    def frame() -> None:
-        gl.glClear(C.GL_COLOR_BUFFER_BIT | C.GL_DEPTH_BUFFER_BIT)
-        gl.glVertexPointer(3, C.GL_FLOAT, 0, verts)
-        gl.glNormalPointer(C.GL_FLOAT, 0, normals)
-        gl.glDrawElements(C.GL_TRIANGLES, len(idx), C.GL_UNSIGNED_SHORT, idx)
-
-    return frame
+    return _mesh_frame(gl, verts, normals, idx)
 
 
 # {================================================================
