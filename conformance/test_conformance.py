@@ -93,6 +93,10 @@ KNOWN_DEVIATIONS: tuple[Deviation, ...] = (
     Deviation("Gets", "mesa-", None, None,
               "Mesa: GetFixedv scales enums, GetIntegerv maps matrix elements like colours; §6.1.2 "
               "(docs/conformance.md)"),
+    Deviation("Gets.extensions", "mesa-", None, None,
+              "Mesa: glTexGenxOES(TEXTURE_GEN_STR_OES, TEXTURE_GEN_MODE_OES, NORMAL_MAP_OES or "
+              "REFLECTION_MAP_OES) records INVALID_ENUM and leaves the mode; OES_texture_cube_map 2.11.4 "
+              "and its table 6.14 (docs/conformance.md)"),
     Deviation("MatrixGetTest", "mesa-", None, None,
               "Mesa: OES_matrix_get (*_FLOAT_AS_INT_BITS_OES) missing; Appendix C (docs/conformance.md)"),
     Deviation("PointRaster", "mesa-softpipe", None, None,

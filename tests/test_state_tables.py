@@ -8,7 +8,9 @@ only) GetFloatv with the section 6.1.2 conversions, exact to the unit
 Table 4.4's formula). Then set/get round trips with x forms (both profiles) and
 f forms (Common), IsEnabled of every enable, and the per-command state
 (GetLight, GetMaterial, GetTexParameter, GetTexEnv, GetClipPlane, GetPointerv,
-GetString, GetBufferParameteriv).
+GetString, GetBufferParameteriv). The rows of OES_texture_cube_map's and
+KHR_debug's New State (all in gles's GL_EXTENSIONS) are among them, with the
+cube map's per-unit state and GetTexGen*OES.
 """
 
 from __future__ import annotations
@@ -29,9 +31,17 @@ def _ctx(numeric: str, profile: str, color: str = "rgba8888") -> gles.Context:
     return gles.Context(W, H, numeric=numeric, profile=profile, color=color)
 
 
+BITS = {"rgba8888": (8, 8, 8, 8), "rgb565": (5, 6, 5, 0), "rgba4444": (4, 4, 4, 4), "rgba5551": (5, 5, 5, 1)}
+READ_PAIRS = {
+    "rgba8888": (C.GL_BGRA_EXT, C.GL_UNSIGNED_BYTE),
+    "rgb565": (C.GL_RGB, C.GL_UNSIGNED_SHORT_5_6_5),
+    "rgba4444": (C.GL_RGBA, C.GL_UNSIGNED_SHORT_4_4_4_4),
+    "rgba5551": (C.GL_RGBA, C.GL_UNSIGNED_SHORT_5_5_5_1),
+}
+
+
 def _env(profile: str, color: str = "rgba8888") -> Q.Env:
-    bits = (5, 6, 5, 0) if color == "rgb565" else (8, 8, 8, 8)
-    return Q.Env(W, H, bits, 24, 8, profile == "common-lite")
+    return Q.Env(W, H, BITS[color], 24, 8, profile == "common-lite")
 
 
 @pytest.fixture(params=BUILDS)
@@ -57,7 +67,7 @@ def test_initial_value(row: Q.StateValue, numeric: str, profile: str) -> None:
     assert not problems, "\n".join(problems)
 
 
-@pytest.mark.parametrize("color", ("rgba8888", "rgb565"))
+@pytest.mark.parametrize("color", tuple(BITS))
 def test_pixel_depths(color: str, numeric: str) -> None:
     """Table 6.23 follows the visual; OES_read_format names its native pair."""
     gl = _ctx(numeric, "common", color).gl
@@ -67,7 +77,7 @@ def test_pixel_depths(color: str, numeric: str) -> None:
         assert not Q.check_row(gl, True, row, row.want(env), strict=True)
     fmt = gl.glGetIntegerv(C.GL_IMPLEMENTATION_COLOR_READ_FORMAT_OES)
     typ = gl.glGetIntegerv(C.GL_IMPLEMENTATION_COLOR_READ_TYPE_OES)
-    want = (C.GL_RGB, C.GL_UNSIGNED_SHORT_5_6_5) if color == "rgb565" else (C.GL_BGRA_EXT, C.GL_UNSIGNED_BYTE)
+    want = READ_PAIRS[color]
     assert (fmt, typ) == want
     # enums: GetFixedv unscaled
     assert gl.glGetFixedv(C.GL_IMPLEMENTATION_COLOR_READ_TYPE_OES) == want[1]
@@ -79,7 +89,7 @@ def test_point_size_max_and_ranges(numeric: str, profile: str) -> None:
     assert not Q.initial_problems(gl, profile == "common", _env(profile), strict=True)
 
 
-@pytest.mark.parametrize("setter", sorted(Q.SETTERS))
+@pytest.mark.parametrize("setter", sorted(Q.SETTERS) + sorted(Q.EXT_SETTERS))
 @pytest.mark.parametrize("form", ("x", "f"))
 def test_round_trip(setter: str, form: str, numeric: str, profile: str) -> None:
     """Every settable value returns what was set, in every Get of the profile."""
@@ -112,7 +122,22 @@ def test_float_state_is_exact_float32(numeric: str) -> None:
 def test_enables(numeric: str, profile: str) -> None:
     """IsEnabled, GetBooleanv and GetIntegerv follow Enable/Disable for every enable."""
     gl = _ctx(numeric, profile).gl
-    problems = Q.enable_problems(gl)
+    problems = Q.enable_problems(gl) + Q.enable_problems(gl, Q.EXT_ENABLES)
+    assert not problems, "\n".join(problems)
+
+
+def test_extension_state(numeric: str, profile: str) -> None:
+    """OES_texture_cube_map and KHR_debug New State: initial values, enables, the cube
+    map's per-unit state and TEXTURE_GEN_MODE_OES in every GetTexGen form, round trips."""
+    gl = _ctx(numeric, profile).gl
+    assert {Q.CUBE_EXT, Q.DEBUG_EXT} <= Q.extensions(gl)
+    problems = Q.ext_problems(gl, profile == "common", _env(profile), strict=True)
+    assert not problems, "\n".join(problems)
+
+
+def test_cube_map_state_is_per_unit(numeric: str, profile: str) -> None:
+    gl = _ctx(numeric, profile).gl
+    problems = Q.cube_map_unit_problems(gl, profile == "common", strict=True)
     assert not problems, "\n".join(problems)
 
 

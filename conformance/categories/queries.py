@@ -1,12 +1,18 @@
 """Queries: state tables, OES_matrix_get, OES_query_matrix, OES_read_format.
 
-Categories Gets, MatrixGetTest, MatrixQuery and ReadFormat (spec sections
-6.1, 6.2 with Tables 6.3-6.24, 2.10.2 and 4.3.1).
+Categories Gets, Gets.extensions, MatrixGetTest, MatrixQuery and ReadFormat
+(spec sections 6.1, 6.2 with Tables 6.3-6.24, 2.10.2 and 4.3.1).
 
 :data:`STATE` is the ES 1.1.12 state tables as data: one row per value with
 its table, its kind (how Get converts it, section 6.1.2) and its initial
 value (or minimum, for the implementation-dependent ones). ``tests/
 test_state_tables.py`` drives the same rows through every gles build.
+
+Rows with ``ext`` set come from an extension's New State tables
+(OES_texture_cube_map, KHR_debug); they are checked only when GL_EXTENSIONS
+names the extension, by Gets.extensions rather than Gets, so that an
+implementation's difference in them shows apart from the core tables'.
+The table of such a row is the extension's own (its numbering).
 
 Conversion rules checked (section 6.1.2): GetBooleanv is FALSE iff zero;
 GetIntegerv rounds to nearest, except colours, normals, DepthRange and the
@@ -68,6 +74,7 @@ class StateValue:
     initial: Any  # tuple of reals/enums, or callable(Env) -> tuple
     minimum: bool = False  # implementation dependent: initial is a lower bound
     enable: bool = False  # also an IsEnabled / EnableClientState capability
+    ext: str | None = None  # checked only when GL_EXTENSIONS names this extension
 
     @property
     def pname(self) -> int:
@@ -83,6 +90,9 @@ def ARRAY_TYPE0(e: Env) -> tuple:  # noqa: N802  (a table value)
 
 
 I4 = (1.0, 0, 0, 0, 0, 1.0, 0, 0, 0, 0, 1.0, 0, 0, 0, 0, 1.0)
+
+CUBE_EXT = "GL_OES_texture_cube_map"
+DEBUG_EXT = "GL_KHR_debug"
 
 
 def _rows() -> list[StateValue]:
@@ -235,12 +245,33 @@ def _rows() -> list[StateValue]:
         S("GL_ALPHA_BITS", "int", "6.23", lambda e: (e.bits[3],)),
         S("GL_DEPTH_BITS", "int", "6.23", lambda e: (e.depth,)),
         S("GL_STENCIL_BITS", "int", "6.23", lambda e: (e.stencil,)),
+        # OES_texture_cube_map New State: its table 6.12 (per texture unit), table 6.14
+        # (TEXTURE_GEN_STR_OES, per unit; TEXTURE_GEN_MODE_OES: TEXGEN_STATE) and New
+        # Implementation Dependent State, table 6.24 (a minimum)
+        S("GL_TEXTURE_CUBE_MAP_OES", "bool", "6.12 OES_texture_cube_map", (0,), enable=True, ext=CUBE_EXT),
+        S("GL_TEXTURE_BINDING_CUBE_MAP_OES", "int", "6.12 OES_texture_cube_map", (0,), ext=CUBE_EXT),
+        S("GL_TEXTURE_GEN_STR_OES", "bool", "6.14 OES_texture_cube_map", (0,), enable=True, ext=CUBE_EXT),
+        S("GL_MAX_CUBE_MAP_TEXTURE_SIZE_OES", "int", "6.24 OES_texture_cube_map", (16,), minimum=True,
+          ext=CUBE_EXT),
+        # KHR_debug New State: Debug Output State (DEBUG_OUTPUT is FALSE but in a debug context)
+        # and New Implementation Dependent State, table 6.56 (minimums)
+        S("GL_DEBUG_OUTPUT_KHR", "bool", "6.55 KHR_debug", (0,), enable=True, ext=DEBUG_EXT),
+        S("GL_DEBUG_OUTPUT_SYNCHRONOUS_KHR", "bool", "6.55 KHR_debug", (0,), enable=True, ext=DEBUG_EXT),
+        S("GL_DEBUG_LOGGED_MESSAGES_KHR", "int", "6.55 KHR_debug", (0,), ext=DEBUG_EXT),
+        S("GL_DEBUG_NEXT_LOGGED_MESSAGE_LENGTH_KHR", "int", "6.55 KHR_debug", (0,), ext=DEBUG_EXT),
+        S("GL_DEBUG_GROUP_STACK_DEPTH_KHR", "int", "6.55 KHR_debug", (1,), ext=DEBUG_EXT),
+        S("GL_MAX_DEBUG_MESSAGE_LENGTH_KHR", "int", "6.56 KHR_debug", (1,), minimum=True, ext=DEBUG_EXT),
+        S("GL_MAX_DEBUG_LOGGED_MESSAGES_KHR", "int", "6.56 KHR_debug", (1,), minimum=True, ext=DEBUG_EXT),
+        S("GL_MAX_DEBUG_GROUP_STACK_DEPTH_KHR", "int", "6.56 KHR_debug", (64,), minimum=True, ext=DEBUG_EXT),
+        S("GL_MAX_LABEL_LENGTH_KHR", "int", "6.56 KHR_debug", (256,), minimum=True, ext=DEBUG_EXT),
     ]
     return rows
 
 
 STATE: list[StateValue] = _rows()
 BY_NAME: dict[str, StateValue] = {s.name: s for s in STATE}
+CORE_STATE: list[StateValue] = [s for s in STATE if s.ext is None]
+EXT_STATE: list[StateValue] = [s for s in STATE if s.ext is not None]
 
 # The ten OES_compressed_paletted_texture formats (Table 6.22 COMPRESSED_TEXTURE_FORMATS)
 PALETTE_FORMATS = tuple(
@@ -315,6 +346,9 @@ TEXENV_STATE = (
     ("GL_RGB_SCALE", "float", (1.0,)),
     ("GL_ALPHA_SCALE", "float", (1.0,)),
 )
+
+# OES_texture_cube_map table 6.14 (per unit; GetTexGen*OES of TEXTURE_GEN_STR_OES): (name, kind, initial)
+TEXGEN_STATE = (("GL_TEXTURE_GEN_MODE_OES", "enum", (C.GL_REFLECTION_MAP_OES,)),)
 
 
 # {============================================================
@@ -409,6 +443,12 @@ def check_row(
         if why:
             problems.append(f"{row.name} (Table {row.table}) Get{g}v: {why}")
     return problems
+
+
+def extensions(gl: Any) -> set[str]:
+    """The names GL_EXTENSIONS lists."""
+    ext = gl.glGetString(C.GL_EXTENSIONS) or b""
+    return set((ext.decode() if isinstance(ext, bytes) else ext).split())
 
 
 def env_of(t: TestContext) -> Env:
@@ -732,6 +772,50 @@ def set_hints(gl: Any, form: str) -> dict:
     return out
 
 
+def set_cube_map(gl: Any, form: str) -> dict:
+    """OES_texture_cube_map: a cube map bound, cube mapping and texgen on, on unit 1."""
+    tex = gl.glGenTextures(1)
+    gl.glActiveTexture(C.GL_TEXTURE1)
+    gl.glBindTexture(C.GL_TEXTURE_CUBE_MAP_OES, tex)
+    gl.glEnable(C.GL_TEXTURE_CUBE_MAP_OES)
+    gl.glEnable(C.GL_TEXTURE_GEN_STR_OES)
+    return {
+        "GL_TEXTURE_BINDING_CUBE_MAP_OES": (int(tex),),
+        "GL_TEXTURE_CUBE_MAP_OES": (1,),
+        "GL_TEXTURE_GEN_STR_OES": (1,),
+    }
+
+
+DEBUG_TEXT = "state"  # a marker message: NEXT_LOGGED_MESSAGE_LENGTH counts its null terminator
+
+
+def set_debug(gl: Any, form: str) -> dict:
+    """KHR_debug: output on, a marker inserted into the emptied log, a group pushed
+    (its push message is logged too when the log holds two messages)."""
+    gl.glDebugMessageCallbackKHR(None, None)  # messages go to the log (5.5.3)
+    gl.glGetDebugMessageLogKHR(1 << 16, 0, None, None, None, None, None, None)  # empty it
+    depth = int(gl.glGetIntegerv(C.GL_DEBUG_GROUP_STACK_DEPTH_KHR))
+    room = int(gl.glGetIntegerv(C.GL_MAX_DEBUG_LOGGED_MESSAGES_KHR))
+    gl.glEnable(C.GL_DEBUG_OUTPUT_KHR)
+    gl.glEnable(C.GL_DEBUG_OUTPUT_SYNCHRONOUS_KHR)
+    gl.glDebugMessageInsertKHR(
+        C.GL_DEBUG_SOURCE_APPLICATION_KHR,
+        C.GL_DEBUG_TYPE_MARKER_KHR,
+        1,
+        C.GL_DEBUG_SEVERITY_NOTIFICATION_KHR,
+        -1,
+        DEBUG_TEXT,
+    )
+    gl.glPushDebugGroupKHR(C.GL_DEBUG_SOURCE_APPLICATION_KHR, 2, -1, "group")
+    return {
+        "GL_DEBUG_OUTPUT_KHR": (1,),
+        "GL_DEBUG_OUTPUT_SYNCHRONOUS_KHR": (1,),
+        "GL_DEBUG_LOGGED_MESSAGES_KHR": (min(2, room),),
+        "GL_DEBUG_NEXT_LOGGED_MESSAGE_LENGTH_KHR": (len(DEBUG_TEXT) + 1,),
+        "GL_DEBUG_GROUP_STACK_DEPTH_KHR": (depth + 1,),
+    }
+
+
 SETTERS: dict[str, Callable[[Any, str], dict]] = {
     "current": set_current,
     "arrays": set_arrays,
@@ -746,7 +830,14 @@ SETTERS: dict[str, Callable[[Any, str], dict]] = {
     "hints": set_hints,
 }
 
-ENABLES = [s for s in STATE if s.enable]
+# setters of extension state: (extension, setter)
+EXT_SETTERS: dict[str, tuple[str, Callable[[Any, str], dict]]] = {
+    "cube_map": (CUBE_EXT, set_cube_map),
+    "debug": (DEBUG_EXT, set_debug),
+}
+
+ENABLES = [s for s in CORE_STATE if s.enable]
+EXT_ENABLES = [s for s in EXT_STATE if s.enable]
 CLIENT_STATES = {
     "GL_VERTEX_ARRAY",
     "GL_NORMAL_ARRAY",
@@ -1040,9 +1131,9 @@ def misc_problems(gl: Any, common: bool, *, exact_version: str | None) -> list[s
 
 
 def initial_problems(gl: Any, common: bool, env: Env, *, strict: bool) -> list[str]:
-    """Every row of STATE at its initial value, plus IsEnabled of the enables."""
+    """Every row of CORE_STATE at its initial value, plus IsEnabled of the enables."""
     problems = []
-    for row in STATE:
+    for row in CORE_STATE:
         problems += check_row(gl, common, row, row.want(env), strict=strict, minimum=row.minimum)
         if row.enable:
             on = gl.glIsEnabled(row.pname)
@@ -1068,10 +1159,11 @@ def initial_problems(gl: Any, common: bool, env: Env, *, strict: bool) -> list[s
     return problems
 
 
-def enable_problems(gl: Any) -> list[str]:
-    """Each enable: on -> IsEnabled/GetBooleanv/GetIntegerv say so; off again."""
+def enable_problems(gl: Any, rows: list[StateValue] | None = None) -> list[str]:
+    """Each enable (of `rows`, else of the core tables): on -> IsEnabled/GetBooleanv/
+    GetIntegerv say so; off again."""
     problems = []
-    for row in ENABLES:
+    for row in ENABLES if rows is None else rows:
         for on in (True, False):
             toggle(gl, row.name, on)
             got = (gl.glIsEnabled(row.pname), gl.glGetBooleanv(row.pname), gl.glGetIntegerv(row.pname))
@@ -1081,6 +1173,8 @@ def enable_problems(gl: Any) -> list[str]:
                     f"{row.name} (Table {row.table}) {'enabled' if on else 'disabled'}: IsEnabled, "
                     f"GetBooleanv, GetIntegerv = {got}, error 0x{err:04X}"
                 )
+    if rows is not None:
+        return problems
     # TEXTURE_2D is per unit (Table 6.13)
     gl.glActiveTexture(C.GL_TEXTURE1)
     gl.glEnable(C.GL_TEXTURE_2D)
@@ -1096,7 +1190,8 @@ def enable_problems(gl: Any) -> list[str]:
 
 
 def round_trip_problems(gl: Any, common: bool, setter: str, form: str, *, strict: bool) -> list[str]:
-    want = SETTERS[setter](gl, form)
+    """Set the state of `setter` (of SETTERS or EXT_SETTERS) and read it back."""
+    want = SETTERS[setter](gl, form) if setter in SETTERS else EXT_SETTERS[setter][1](gl, form)
     err = gl.glGetError()
     problems = [f"setting {setter} ({form} forms): GL error 0x{err:04X}"] if err else []
     for name, vals in want.items():
@@ -1106,13 +1201,106 @@ def round_trip_problems(gl: Any, common: bool, setter: str, form: str, *, strict
     return problems
 
 
+def _texgen_problems(gl: Any, common: bool, want: int, what: str, *, strict: bool) -> list[str]:
+    """TEXTURE_GEN_MODE_OES of the active unit through GetTexGen{i,x(,f)}vOES."""
+    problems = []
+    for g in ["i", "x"] + (["f"] if common else []):
+        for name, kind, _ in TEXGEN_STATE:
+            got = getattr(gl, f"glGetTexGen{g}vOES")(C.GL_TEXTURE_GEN_STR_OES, getattr(C, name))
+            why = check_values(kind, g, got, (want,), strict=strict)
+            if why:
+                problems.append(f"GetTexGen{g}vOES({name}) {what} (OES_texture_cube_map table 6.14): {why}")
+    return problems
+
+
+def cube_map_unit_problems(gl: Any, common: bool, *, strict: bool) -> list[str]:
+    """OES_texture_cube_map's per-unit state: TEXTURE_GEN_MODE_OES initially
+    REFLECTION_MAP_OES on each unit; TEXTURE_CUBE_MAP_OES, TEXTURE_GEN_STR_OES,
+    TEXTURE_BINDING_CUBE_MAP_OES and the mode set on unit 1 (the mode by each TexGen
+    form in turn) show on unit 1 in every Get and leave unit 0 at its initial values."""
+    problems = []
+    refl, normal = C.GL_REFLECTION_MAP_OES, C.GL_NORMAL_MAP_OES
+    for unit in (0, 1):
+        gl.glActiveTexture(C.GL_TEXTURE0 + unit)
+        problems += _texgen_problems(gl, common, refl, f"initially, unit {unit}", strict=strict)
+    tex = int(gl.glGenTextures(1))
+    gl.glActiveTexture(C.GL_TEXTURE1)
+    gl.glBindTexture(C.GL_TEXTURE_CUBE_MAP_OES, tex)
+    gl.glEnable(C.GL_TEXTURE_CUBE_MAP_OES)
+    gl.glEnable(C.GL_TEXTURE_GEN_STR_OES)
+    mode = (C.GL_TEXTURE_GEN_STR_OES, C.GL_TEXTURE_GEN_MODE_OES)
+    setters = [("i", gl.glTexGeniOES, int), ("x", gl.glTexGenxOES, int)]
+    if common:
+        setters.append(("f", gl.glTexGenfOES, float))
+    for form, fn, conv in setters:
+        for m in (normal, refl, normal):
+            gl.glActiveTexture(C.GL_TEXTURE1)
+            fn(*mode, conv(m))
+            err = gl.glGetError()
+            if err:
+                problems.append(
+                    f"TexGen{form}OES(TEXTURE_GEN_STR_OES, TEXTURE_GEN_MODE_OES, 0x{m:04X}) on unit 1: "
+                    f"GL error 0x{err:04X}"
+                )
+            problems += _texgen_problems(gl, common, m, f"after TexGen{form}OES on unit 1", strict=strict)
+            gl.glActiveTexture(C.GL_TEXTURE0)
+            problems += _texgen_problems(gl, common, refl, f"of unit 0 after TexGen{form}OES on unit 1",
+                                         strict=strict)
+    for unit, want in ((0, (0, 0, 0)), (1, (1, 1, tex))):
+        gl.glActiveTexture(C.GL_TEXTURE0 + unit)
+        for name, v in zip(
+            ("GL_TEXTURE_CUBE_MAP_OES", "GL_TEXTURE_GEN_STR_OES", "GL_TEXTURE_BINDING_CUBE_MAP_OES"), want
+        ):
+            row = BY_NAME[name]
+            found = check_row(gl, common, row, (v,), strict=strict)
+            problems += [f"unit {unit}, unit 1 set: {p}" for p in found]
+            if row.enable and bool(gl.glIsEnabled(row.pname)) != bool(v):
+                problems.append(f"unit {unit}, unit 1 set: IsEnabled({name}) is not {bool(v)} (per unit)")
+    gl.glActiveTexture(C.GL_TEXTURE1)
+    gl.glTexGeniOES(*mode, refl)
+    gl.glDisable(C.GL_TEXTURE_GEN_STR_OES)
+    gl.glDisable(C.GL_TEXTURE_CUBE_MAP_OES)
+    gl.glBindTexture(C.GL_TEXTURE_CUBE_MAP_OES, 0)
+    gl.glDeleteTextures(1, [tex])
+    gl.glActiveTexture(C.GL_TEXTURE0)
+    err = gl.glGetError()
+    if err:
+        problems.append(f"cube map per-unit state: GL error 0x{err:04X}")
+    return problems
+
+
+def ext_problems(gl: Any, common: bool, env: Env, *, strict: bool) -> list[str]:
+    """The rows of EXT_STATE whose extension GL_EXTENSIONS names: initial values in
+    every Get and IsEnabled, the enables, the cube map's per-unit state, and the
+    round trips of EXT_SETTERS in x and (Common) f forms."""
+    have = extensions(gl)
+    rows = [r for r in EXT_STATE if r.ext in have]
+    problems = []
+    for row in rows:
+        problems += check_row(gl, common, row, row.want(env), strict=strict, minimum=row.minimum)
+        if row.enable:
+            on = gl.glIsEnabled(row.pname)
+            if bool(on) != bool(row.want(env)[0]):
+                problems.append(f"IsEnabled({row.name}) (Table {row.table}) is {on}")
+    problems += enable_problems(gl, [r for r in rows if r.enable])
+    if CUBE_EXT in have:
+        problems += cube_map_unit_problems(gl, common, strict=strict)
+    for form in ("x", "f") if common else ("x",):
+        for setter, (ext, _) in EXT_SETTERS.items():
+            if ext in have:
+                problems += round_trip_problems(gl, common, setter, form, strict=strict)
+    return problems
+
+
 # {============================================================
 # the conformance tests
 
 _ALL_PATH_STATES = ("dither", "scissor", "alpha", "blend", "depth", "stencil", "fog")
 
 
-@conformance_test("Gets", section="6.1", uses=_ALL_PATH_STATES, visuals=("rgba8888", "rgb565"))
+@conformance_test(
+    "Gets", section="6.1", uses=_ALL_PATH_STATES, visuals=("rgba8888", "rgb565", "rgba4444", "rgba5551")
+)
 def gets(t: TestContext) -> None:
     """Initial values of Tables 6.3-6.24 through every Get, then set/get round trips."""
     gl = t.gl
@@ -1131,6 +1319,18 @@ def gets(t: TestContext) -> None:
             problems += round_trip_problems(gl, t.common, setter, form, strict=False)
     if problems:
         t.fail(f"{len(problems)} state query problems; " + "; ".join(problems[:12]))
+
+
+@conformance_test("Gets.extensions", section="6.1", uses=_ALL_PATH_STATES, visuals=("rgba8888",))
+def gets_extensions(t: TestContext) -> None:
+    """New State of OES_texture_cube_map and KHR_debug (where listed) through every Get."""
+    gl = t.gl
+    if not extensions(gl) & {CUBE_EXT, DEBUG_EXT}:
+        raise Unsupported(f"neither {CUBE_EXT} nor {DEBUG_EXT} is in GL_EXTENSIONS")
+    t.clear()  # a known picture for the path comparison
+    problems = ext_problems(gl, t.common, env_of(t), strict=False)
+    if problems:
+        t.fail(f"{len(problems)} extension state problems; " + "; ".join(problems[:12]))
 
 
 def _matrix(gl: Any) -> np.ndarray:
