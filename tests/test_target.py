@@ -94,6 +94,40 @@ def test_target_can_be_turned_off(monkeypatch: Any) -> None:
     assert "n/a" in md
 
 
+def _target_build_module() -> Any:
+    """src/_gles_build/target_build.py, a build helper no install carries: loaded from the tree."""
+    import importlib.util
+    from pathlib import Path
+
+    path = Path(__file__).resolve().parent.parent / "src" / "_gles_build" / "target_build.py"
+    spec = importlib.util.spec_from_file_location("_target_build_under_test", path)
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_a_build_without_the_cross_compiler_removes_stale_replayers(monkeypatch: Any, tmp_path: Any) -> None:
+    # a replayer older than the core's sources would count another core's
+    # instructions (or fail on a changed trace format): the target must read n/a
+    tb = _target_build_module()
+    monkeypatch.setenv("GLES_TARGET_CC", "none")
+    out = tmp_path / "target"
+    out.mkdir()
+    for numeric in tb.BUILDS:
+        (out / tb.exe_name(numeric)).write_bytes(b"old")
+        (out / (tb.exe_name(numeric) + ".flags")).write_text("old")
+    import os
+    for f in out.iterdir():
+        os.utime(f, (0, 0))                                  # older than every source
+    assert tb.build(tmp_path) == []
+    assert sorted(p.name for p in out.iterdir()) == []
+    # one newer than the sources stays (a build made from these sources)
+    fresh = out / tb.exe_name("fixed")
+    fresh.write_bytes(b"new")
+    assert tb.build(tmp_path) == [] and fresh.exists()
+
+
 def test_trace_module_needs_no_target() -> None:
     # recording and host replay do not depend on the target toolchain
     t = gles.trace(buffers_scene, 8, 8)

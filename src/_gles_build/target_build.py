@@ -40,17 +40,29 @@ def exe_name(numeric: str) -> str:
     return f"gles-replay-armel-{numeric}"
 
 
+def remove_stale(out: Path, newest: float) -> None:
+    """Without a cross compiler, remove the replayers in `out` older than the
+    sources (mtime `newest`): they would count another core's instructions,
+    or fail on a changed trace format, where the target should read n/a."""
+    for numeric in BUILDS:
+        target = out / exe_name(numeric)
+        if target.exists() and target.stat().st_mtime <= newest:
+            target.unlink()
+            target.with_name(target.name + ".flags").unlink(missing_ok=True)
+
+
 def build(lib: Path) -> list[Path]:
     """Build the target replayers into ``lib/target`` if the cross compiler is
     there; returns the programs (up to date ones are not rebuilt)."""
     cc = compiler()
-    if cc is None:
-        return []
     out = lib / "target"
-    out.mkdir(parents=True, exist_ok=True)
-    version = subprocess.run([cc, "--version"], capture_output=True, text=True).stdout.splitlines()[0]
     inputs = [*CSRC.glob("*.[ch]"), *(CSRC / "replay").glob("*.[ch]")]
     newest = max(p.stat().st_mtime for p in inputs)
+    if cc is None:
+        remove_stale(out, newest)
+        return []
+    out.mkdir(parents=True, exist_ok=True)
+    version = subprocess.run([cc, "--version"], capture_output=True, text=True).stdout.splitlines()[0]
     inc = ["-I" + str(CSRC), "-I" + str(CSRC / "khronos")]
 
     def one(numeric: str) -> Path:
