@@ -158,13 +158,9 @@ int gles_ReadPixels(GlesContext *ctx, int x, int y, int width, int height,
     ** copy for the buffer's own format); pixels outside the window are
     ** undefined (§4.3.1), we give 0 */
     /* a 16-bit format's channels to 8 bits, c * 255 / max rounded */
-    const ColorLayout *l = color_layout16(ctx->color_format);
-    uint8_t x8[4][64];
-    for (int i = 0; i < 4; i++)
-        for (uint32_t c = 0; c < 64; c++)
-            x8[i][c] = (uint8_t)color_channel8(l, i, (c & ((1u << l->bits[i]) - 1)) << l->shift[i]);
-    const uint32_t max[4] = { (1u << l->bits[0]) - 1, (1u << l->bits[1]) - 1, (1u << l->bits[2]) - 1,
-                              (1u << l->bits[3]) - 1 };
+    ColorExpand8 expand = { 0 };   /* read only for a 16-bit format */
+    if (rgba && ctx->color_format != GLES_COLOR_RGBA8888)
+        color_expand8_init(&expand, ctx->color_format);
     int64_t ix0 = x < 0 ? -(int64_t)x : 0;                              /* first i inside */
     int64_t ix1 = (int64_t)ctx->width - x;                              /* past the last */
     if (ix1 > width)
@@ -197,11 +193,8 @@ int gles_ReadPixels(GlesContext *ctx, int x, int y, int width, int height,
         } else {
             const uint16_t *src = (const uint16_t *)ctx->color + at;
             uint8_t *o = row + 4 * ix0;
-            for (size_t i = 0; i < n; i++) {
-                const uint32_t v = src[i];
-                for (int c = 0; c < 4; c++)
-                    o[4 * i + (size_t)c] = x8[c][(v >> l->shift[c]) & max[c]];
-            }
+            for (size_t i = 0; i < n; i++)
+                color_expand8(&expand, src[i], o + 4 * i);
         }
         if (bgra)
             for (size_t i = 0; i < n; i++) {

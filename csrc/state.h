@@ -246,6 +246,31 @@ static inline uint32_t color_channel8(const ColorLayout *l, int i, uint32_t word
     return (((word >> l->shift[i]) & max) * 255 + max / 2) / max;
 }
 
+/* a 16-bit format's words to 8-bit channels by table (color_channel8's
+** rounding, 255 for a channel the format lacks): ReadPixels' and CopyTex's
+** rows, the table made once per command */
+typedef struct ColorExpand8 {
+    const ColorLayout *layout;
+    uint32_t max[4];            /* each channel's mask after its shift */
+    uint8_t x8[4][64];          /* [channel][stored value] */
+} ColorExpand8;
+
+static inline void color_expand8_init(ColorExpand8 *e, int format)
+{
+    const ColorLayout *l = e->layout = color_layout16(format);
+    for (int i = 0; i < 4; i++) {
+        e->max[i] = (1u << l->bits[i]) - 1;
+        for (uint32_t c = 0; c < 64; c++)
+            e->x8[i][c] = (uint8_t)color_channel8(l, i, (c & e->max[i]) << l->shift[i]);
+    }
+}
+
+static inline void color_expand8(const ColorExpand8 *e, uint32_t word, uint8_t out[4])
+{
+    for (int i = 0; i < 4; i++)
+        out[i] = e->x8[i][(word >> e->layout->shift[i]) & e->max[i]];
+}
+
 /* a colour format's implementation read pair (OES_read_format): its own
 ** packed type, or for RGBA8888, whose byte order is RGBA already, the pair
 ** a program cannot otherwise have (EXT_read_format_bgra's BGRA_EXT) */

@@ -646,8 +646,8 @@ static uint32_t as_base_format(uint32_t c, unsigned int format)
 /* `n` framebuffer pixels of row y from column x, as texels of a base
 ** format (§3.7.2), into dst: a block copy of the row's part inside the
 ** window (a pixel outside it reads as 0) */
-static void copy_framebuffer_row(const GlesContext *ctx, int64_t x, int64_t y, int n, unsigned int format,
-                                 uint32_t *dst)
+static void copy_framebuffer_row(const GlesContext *ctx, const ColorExpand8 *expand, int64_t x, int64_t y, int n,
+                                 unsigned int format, uint32_t *dst)
 {
     const uint32_t outside = as_base_format(0, format);
     int64_t lo = 0, hi = 0;     /* dst[lo, hi) lies inside the window */
@@ -663,13 +663,11 @@ static void copy_framebuffer_row(const GlesContext *ctx, int64_t x, int64_t y, i
     if (hi > lo && ctx->color_format != GLES_COLOR_RGBA8888) {
         /* a 16-bit format's channels to 8 bits as texels of 4_4_4_4,
         ** 5_5_5_1 and 5_6_5 are (c * 255 / max rounded) */
-        const ColorLayout *l = color_layout16(ctx->color_format);
         const uint16_t *src = (const uint16_t *)ctx->color + at;
         for (int64_t i = lo; i < hi; i++) {
-            const uint32_t v = src[i - lo];
-            dst[i] = as_base_format(pack(color_channel8(l, 0, v), color_channel8(l, 1, v), color_channel8(l, 2, v),
-                                         color_channel8(l, 3, v)),
-                                    format);
+            uint8_t c[4];
+            color_expand8(expand, src[i - lo], c);
+            dst[i] = as_base_format(pack(c[0], c[1], c[2], c[3]), format);
         }
     } else if (hi > lo && format == GL_RGBA) {
         memcpy(dst + lo, (const uint32_t *)ctx->color + at, (size_t)(hi - lo) * sizeof *dst);
@@ -680,6 +678,18 @@ static void copy_framebuffer_row(const GlesContext *ctx, int64_t x, int64_t y, i
     }
     for (int64_t i = hi; i < n; i++)
         dst[i] = outside;
+}
+
+/* the framebuffer's width x height pixels from (x, y), row j into
+** dst + j * stride, as texels of base format `format` */
+static void copy_framebuffer_rect(const GlesContext *ctx, int64_t x, int64_t y, int width, int height,
+                                  unsigned int format, uint32_t *dst, size_t stride)
+{
+    ColorExpand8 expand = { 0 };   /* read only for a 16-bit format */
+    if (ctx->color_format != GLES_COLOR_RGBA8888)
+        color_expand8_init(&expand, ctx->color_format);
+    for (int j = 0; j < height && width; j++)
+        copy_framebuffer_row(ctx, &expand, x, y + j, width, format, dst + (size_t)j * stride);
 }
 
 /* may a base format be copied from this framebuffer (it needs alpha bits for
@@ -720,8 +730,8 @@ void gles_CopyTexImage2D(GlesContext *ctx, unsigned int target, int level, unsig
         ctx_error(ctx, GL_OUT_OF_MEMORY);
         return;
     }
-    for (int j = 0; j < height && count; j++)
-        copy_framebuffer_row(ctx, x, (int64_t)y + j, width, internalformat, tmp + (size_t)j * (size_t)width);
+    if (count)
+        copy_framebuffer_rect(ctx, x, y, width, height, internalformat, tmp, (size_t)width);
     ctx->mem_used -= level_bytes(li);
     free(li->texels);
     li->texels = tmp;
@@ -774,11 +784,9 @@ void gles_CopyTexSubImage2D(GlesContext *ctx, unsigned int target, int level, in
         ctx_error(ctx, GL_OUT_OF_MEMORY);
         return;
     }
-    for (int j = 0; j < height && width; j++) {
-        uint32_t *dst = li->texels + (size_t)(yoffset + j) * (size_t)li->width + (size_t)xoffset;
-        copy_framebuffer_row(ctx, x, (int64_t)y + j, width, texture_base_format(t->level_format[level]),
-                             from ? from + (size_t)j * (size_t)width : dst);
-    }
+    uint32_t *at = li->texels + (size_t)yoffset * (size_t)li->width + (size_t)xoffset;
+    copy_framebuffer_rect(ctx, x, y, width, height, texture_base_format(t->level_format[level]), from ? from : at,
+                          from ? (size_t)width : (size_t)li->width);
     for (int j = 0; from && j < height; j++)
         memcpy(li->texels + (size_t)(yoffset + j) * (size_t)li->width + (size_t)xoffset,
                from + (size_t)j * (size_t)width, (size_t)width * sizeof *from);

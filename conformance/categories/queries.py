@@ -1130,15 +1130,21 @@ def misc_problems(gl: Any, common: bool, *, exact_version: str | None) -> list[s
     return problems
 
 
-def initial_problems(gl: Any, common: bool, env: Env, *, strict: bool) -> list[str]:
-    """Every row of CORE_STATE at its initial value, plus IsEnabled of the enables."""
+def initial_rows_problems(gl: Any, common: bool, rows: Any, env: Env, *, strict: bool) -> list[str]:
+    """Each row at its initial value in every Get, and IsEnabled of the enables among them."""
     problems = []
-    for row in CORE_STATE:
+    for row in rows:
         problems += check_row(gl, common, row, row.want(env), strict=strict, minimum=row.minimum)
         if row.enable:
             on = gl.glIsEnabled(row.pname)
             if bool(on) != bool(row.want(env)[0]):
                 problems.append(f"IsEnabled({row.name}) (Table {row.table}) is {on}")
+    return problems
+
+
+def initial_problems(gl: Any, common: bool, env: Env, *, strict: bool) -> list[str]:
+    """Every row of CORE_STATE at its initial value, plus IsEnabled of the enables."""
+    problems = initial_rows_problems(gl, common, CORE_STATE, env, strict=strict)
     # POINT_SIZE_MAX starts at the largest supported size (Table 6.11)
     top = max(
         as_list(gl.glGetFixedv(C.GL_ALIASED_POINT_SIZE_RANGE))[1],
@@ -1275,13 +1281,7 @@ def ext_problems(gl: Any, common: bool, env: Env, *, strict: bool) -> list[str]:
     round trips of EXT_SETTERS in x and (Common) f forms."""
     have = extensions(gl)
     rows = [r for r in EXT_STATE if r.ext in have]
-    problems = []
-    for row in rows:
-        problems += check_row(gl, common, row, row.want(env), strict=strict, minimum=row.minimum)
-        if row.enable:
-            on = gl.glIsEnabled(row.pname)
-            if bool(on) != bool(row.want(env)[0]):
-                problems.append(f"IsEnabled({row.name}) (Table {row.table}) is {on}")
+    problems = initial_rows_problems(gl, common, rows, env, strict=strict)
     problems += enable_problems(gl, [r for r in rows if r.enable])
     if CUBE_EXT in have:
         problems += cube_map_unit_problems(gl, common, strict=strict)
