@@ -15,6 +15,7 @@
 #include "light.h"
 #include "fragment.h"
 #include "texture.h"
+#include "raster.h"
 #include "fbo.h"
 #include "debug.h"
 
@@ -42,9 +43,22 @@ void ctx_set_clamped_color(double *d, NUM *n, const double *rgba)
     }
 }
 /* the window's buffers, whichever framebuffer is bound */
-void *gles_color_buffer(GlesContext *ctx) { return fbo_window(ctx)->color; }
-void *gles_depth_buffer(GlesContext *ctx) { return fbo_window(ctx)->depth; }
-void *gles_stencil_buffer(GlesContext *ctx) { return fbo_window(ctx)->stencil; }
+/* the window's buffers, with every draw's rows in them (raster_join) */
+void *gles_color_buffer(GlesContext *ctx)
+{
+    raster_join(ctx);
+    return fbo_window(ctx)->color;
+}
+void *gles_depth_buffer(GlesContext *ctx)
+{
+    raster_join(ctx);
+    return fbo_window(ctx)->depth;
+}
+void *gles_stencil_buffer(GlesContext *ctx)
+{
+    raster_join(ctx);
+    return fbo_window(ctx)->stencil;
+}
 int gles_width(GlesContext *ctx) { return fbo_window(ctx)->width; }
 int gles_height(GlesContext *ctx) { return fbo_window(ctx)->height; }
 const char *gles_last_span_name(GlesContext *ctx) { return ctx->span_name ? ctx->span_name : ""; }
@@ -132,6 +146,7 @@ GlesContext *gles_context_create(int width, int height, int color_format,
     ctx->color_mask_alpha = 1;
     ctx->profile = profile;
     ctx->threads = ctx->band_count = 1;
+    ctx->band_caller_rows = RASTER_BAND_ROWS;
     ctx->simd = simd_detect();
     ctx->chain_coords_unit = ctx->chain_coords_tx_unit = ctx->chain_lod_unit = -1;
     ctx->color = calloc(npix, (size_t)color_bytes(color_format));
@@ -216,6 +231,7 @@ void gles_context_destroy(GlesContext *ctx)
 {
     if (!ctx)
         return;
+    raster_join(ctx);       /* the workers first: they read what follows frees */
     fbo_free(ctx);          /* first: the window's buffers back in the context */
     array_free(ctx);
     texture_free(ctx);
@@ -277,6 +293,7 @@ int gles_threads_set(GlesContext *ctx, int threads)
         threads = 1;
     if (threads == ctx->threads)
         return threads;
+    raster_join(ctx);
     GlesContext **workers = threads > 1 ? calloc((size_t)threads - 1, sizeof *workers) : NULL;
     int made = 0;
     while (workers && made < threads - 1 && (workers[made] = worker_create(ctx)) != NULL)
@@ -290,6 +307,7 @@ int gles_threads_set(GlesContext *ctx, int threads)
     ctx->pool = pool;
     ctx->worker_ctx = workers;
     ctx->threads = threads;
+    ctx->band_caller_rows = RASTER_BAND_ROWS;
     return threads;
 }
 
@@ -571,7 +589,10 @@ void gles_ClientActiveTexture(GlesContext *ctx, unsigned int texture)
     ctx->client_active_texture = texture;
 }
 
-void gles_Finish(GlesContext *ctx) { (void)ctx; }
+/* §5.1: Finish returns once every command's effect is complete, the
+** threaded draws' rows among them; Flush, that they complete in finite
+** time, which they do without waiting */
+void gles_Finish(GlesContext *ctx) { raster_join(ctx); }
 void gles_Flush(GlesContext *ctx) { (void)ctx; }
 
 /* {====================================================================

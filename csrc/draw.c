@@ -37,6 +37,7 @@
 ** attributes; base advances by 2 per draw */
 static int draw_begin(GlesContext *ctx, int64_t nverts)
 {
+    raster_join(ctx);       /* the last threaded draw's workers read the vertices */
     if (nverts > ctx->verts_capacity) {
         int64_t cap = ctx->verts_capacity ? ctx->verts_capacity : 1024;
         while (cap < nverts)
@@ -303,7 +304,6 @@ static void vertex_threaded(GlesContext *ctx, VertexJob *j)
 {
     if (raster_pool_take(ctx, j->n, DRAW_THREADED_VERTICES)) {
         pool_run(ctx->pool, vertex_job, j, ctx->threads);
-        pool_release(ctx->pool);
     } else {
         vertex_slices(j, 0, (j->n + VERTEX_BATCH - 1) / VERTEX_BATCH);
     }
@@ -363,7 +363,7 @@ static void draw_deferred(Batch *b)
     b->npend_all = 0;
     const Prim *prims = ctx->draw_prims;
     DrawJob job = { prims, b->ndeferred, b->base };
-    if (!raster_threaded(ctx, b->work, draw_job, &job))
+    if (!raster_threaded(ctx, b->work, draw_job, &job, sizeof job))
         draw_job(ctx, &job);
     b->ndeferred = 0;
     b->work = 0;
@@ -390,8 +390,10 @@ static void flush(Batch *b)
         vertex_batch_attribs(b->ctx, b->pend, b->pendv, b->npend);
     b->npend = 0;
     if (!b->deferred || !defer_queue(b)) {
-        if (b->deferred)
+        if (b->deferred) {
             draw_deferred(b);   /* no memory to keep the queue: what came before it first */
+            raster_join(b->ctx);
+        }
         for (int i = 0; i < b->nprim; i++)
             draw_prim(b->ctx, b->base, &b->prim[i]);
     }

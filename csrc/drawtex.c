@@ -21,20 +21,23 @@
 
 /* the rectangle's rows through the span chain, on each thread its own */
 typedef struct DrawTexJob {
-    const RectSetup *r;
+    RectSetup r;
     int64_t x0, y0, x1, y1;
 } DrawTexJob;
+_Static_assert(sizeof(DrawTexJob) <= GLES_JOB_ARG_BYTES, "raster_threaded keeps a copy of the job");
 
 static void drawtex_job(GlesContext *ctx, void *arg)
 {
     const DrawTexJob *j = arg;
     /* one primitive, so any split of its rows gives the same bytes: each
-    ** thread an even share of them, where the 16-row bands would split a
-    ** rectangle of a few bands unevenly */
-    const int n = ctx->band_count, i = ctx->band_index;
-    const int64_t h = j->y1 - j->y0;
+    ** thread its band's share of the period (an even one, unless the
+    ** caller's is smaller or larger), where the bands would split a
+    ** rectangle of a few of them unevenly */
+    const int n = ctx->band_count;
+    const int64_t h = j->y1 - j->y0, period = n > 1 ? ctx->band_period : 1;
+    const int64_t lo = n > 1 ? ctx->band_lo : 0, hi = n > 1 ? ctx->band_hi : 1;
     ctx->band_count = 1;
-    span_rect(ctx, j->r, j->x0, j->y0 + h * i / n, j->x1, j->y0 + h * (i + 1) / n);
+    span_rect(ctx, &j->r, j->x0, j->y0 + h * lo / period, j->x1, j->y0 + h * hi / period);
     ctx->band_count = n;
 }
 
@@ -46,9 +49,11 @@ void gles_DrawTexOES(GlesContext *ctx, double xs, double ys, double zs, double w
     }
     if (!fbo_sync(ctx))
         return;
+    raster_join(ctx);
     draw_validate(ctx);
-    RectSetup r;
-    FragIn *in = &r.in;
+    DrawTexJob job;
+    RectSetup *const rp = &job.r;
+    FragIn *in = &rp->in;
     /* depth: n if z <= 0, f if z >= 1, n + z (f - n) otherwise */
     double z = zs <= 0 ? 0 : (zs >= 1 ? 1 : zs);
     double zw = ctx->depth_range[0] + z * (ctx->depth_range[1] - ctx->depth_range[0]);
@@ -59,16 +64,16 @@ void gles_DrawTexOES(GlesContext *ctx, double xs, double ys, double zs, double w
     in->coverage = FRAG_ONE;
     /* per unit: s = a_s + b_s X, t = a_t + b_t Y */
     for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++) {
-        r.coord[u] = RECT_COORD_LINEAR;
-        r.as[u] = r.bs[u] = r.at[u] = r.bt[u] = 0;
+        rp->coord[u] = RECT_COORD_LINEAR;
+        rp->as[u] = rp->bs[u] = rp->at[u] = rp->bt[u] = 0;
         if (!(ctx->tex_units_on & (1u << u)))
             continue;
         const Texture *t = ctx->units[u].bound;
         double wt = t->level[0].width, ht = t->level[0].height;
-        r.bs[u] = t->crop[2] / ws / wt;
-        r.as[u] = t->crop[0] / wt - xs * r.bs[u];
-        r.bt[u] = t->crop[3] / hs / ht;
-        r.at[u] = t->crop[1] / ht - ys * r.bt[u];
+        rp->bs[u] = t->crop[2] / ws / wt;
+        rp->as[u] = t->crop[0] / wt - xs * rp->bs[u];
+        rp->bt[u] = t->crop[3] / hs / ht;
+        rp->at[u] = t->crop[1] / ht - ys * rp->bt[u];
     }
     int64_t x0 = dbl_to_i64(ceil(xs - 0.5), -(1 << 30), 1 << 30), x1 = dbl_to_i64(ceil(xs + ws - 0.5), -(1 << 30), 1 << 30);
     int64_t y0 = dbl_to_i64(ceil(ys - 0.5), -(1 << 30), 1 << 30), y1 = dbl_to_i64(ceil(ys + hs - 0.5), -(1 << 30), 1 << 30);
@@ -80,8 +85,11 @@ void gles_DrawTexOES(GlesContext *ctx, double xs, double ys, double zs, double w
     if (x0 >= x1 || y0 >= y1)
         return;
     if (!ctx_generic_spans(ctx)) {
-        DrawTexJob job = { &r, x0, y0, x1, y1 };
-        if (!raster_threaded(ctx, (x1 - x0) * (y1 - y0), drawtex_job, &job))
+        job.x0 = x0;
+        job.y0 = y0;
+        job.x1 = x1;
+        job.y1 = y1;
+        if (!raster_threaded(ctx, (x1 - x0) * (y1 - y0), drawtex_job, &job, sizeof job))
             drawtex_job(ctx, &job);
         return;
     }
@@ -90,7 +98,7 @@ void gles_DrawTexOES(GlesContext *ctx, double xs, double ys, double zs, double w
         for (int64_t px = x0; px < x1; px++) {
             for (int u = 0; u < GLES_MAX_TEXTURE_UNITS; u++)
                 if (ctx->tex_units_on & (1u << u)) {
-                    rect_linear_coords(&r, u, px, py, &in->tc[u], &in->tdx[u], &in->tdy[u]);
+                    rect_linear_coords(rp, u, px, py, &in->tc[u], &in->tdx[u], &in->tdy[u]);
                     if (ctx->cube_units & (1u << u)) {
                         /* a cube map: the direction (s, t, 0) */
                         const TEXC c[3] = { in->tc[u].s, in->tc[u].t, 0 };

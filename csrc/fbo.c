@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "state.h"
+#include "raster.h"
 #include "array.h"
 #include "fbo.h"
 #include "texture.h"
@@ -292,11 +293,13 @@ static void gen_names(GlesContext *ctx, NameTable *t, int n, unsigned int *names
 
 void gles_GenFramebuffersOES(GlesContext *ctx, int n, unsigned int *names)
 {
+    raster_join(ctx);
     gen_names(ctx, &ctx->framebuffers, n, names);
 }
 
 void gles_GenRenderbuffersOES(GlesContext *ctx, int n, unsigned int *names)
 {
+    raster_join(ctx);
     gen_names(ctx, &ctx->renderbuffers, n, names);
 }
 
@@ -322,6 +325,7 @@ static void *bound_object(GlesContext *ctx, NameTable *t, unsigned int name, siz
 
 void gles_BindFramebufferOES(GlesContext *ctx, unsigned int target, unsigned int name)
 {
+    raster_join(ctx);
     if (target != GL_FRAMEBUFFER_OES) {
         ctx_error(ctx, GL_INVALID_ENUM);
         return;
@@ -334,6 +338,7 @@ void gles_BindFramebufferOES(GlesContext *ctx, unsigned int target, unsigned int
 
 void gles_BindRenderbufferOES(GlesContext *ctx, unsigned int target, unsigned int name)
 {
+    raster_join(ctx);
     if (target != GL_RENDERBUFFER_OES) {
         ctx_error(ctx, GL_INVALID_ENUM);
         return;
@@ -346,6 +351,7 @@ void gles_BindRenderbufferOES(GlesContext *ctx, unsigned int target, unsigned in
 
 void gles_DeleteFramebuffersOES(GlesContext *ctx, int n, const unsigned int *names)
 {
+    raster_join(ctx);
     if (n < 0) {
         ctx_error(ctx, GL_INVALID_VALUE);
         return;
@@ -363,6 +369,7 @@ void gles_DeleteFramebuffersOES(GlesContext *ctx, int n, const unsigned int *nam
 
 void gles_DeleteRenderbuffersOES(GlesContext *ctx, int n, const unsigned int *names)
 {
+    raster_join(ctx);
     if (n < 0) {
         ctx_error(ctx, GL_INVALID_VALUE);
         return;
@@ -395,6 +402,7 @@ unsigned char gles_IsRenderbufferOES(GlesContext *ctx, unsigned int name)
 void gles_RenderbufferStorageOES(GlesContext *ctx, unsigned int target, unsigned int internalformat, int width,
                                  int height)
 {
+    raster_join(ctx);
     if (target != GL_RENDERBUFFER_OES || !(rb_color_format(internalformat) || rb_depth_format(internalformat)
                                            || rb_stencil_format(internalformat))) {
         ctx_error(ctx, GL_INVALID_ENUM);
@@ -464,6 +472,7 @@ static int attachment_enum_ok(unsigned int target, unsigned int attachment)
 void gles_FramebufferTexture2DOES(GlesContext *ctx, unsigned int target, unsigned int attachment,
                                   unsigned int textarget, unsigned int texture, int level)
 {
+    raster_join(ctx);
     const int face_target = textarget >= GL_TEXTURE_CUBE_MAP_POSITIVE_X_OES
                             && textarget <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z_OES;
     if (!attachment_enum_ok(target, attachment) || (texture && textarget != GL_TEXTURE_2D && !face_target)) {
@@ -501,6 +510,7 @@ void gles_FramebufferTexture2DOES(GlesContext *ctx, unsigned int target, unsigne
 void gles_FramebufferRenderbufferOES(GlesContext *ctx, unsigned int target, unsigned int attachment,
                                      unsigned int renderbuffertarget, unsigned int renderbuffer)
 {
+    raster_join(ctx);
     if (!attachment_enum_ok(target, attachment) || (renderbuffertarget != GL_RENDERBUFFER_OES)) {
         ctx_error(ctx, GL_INVALID_ENUM);
         return;
@@ -607,6 +617,7 @@ int gles_GetRenderbufferParameterivOES(GlesContext *ctx, unsigned int target, un
 ** them (one of the allowed outcomes), after the extension's checks */
 void gles_DiscardFramebufferEXT(GlesContext *ctx, unsigned int target, int n, const unsigned int *attachments)
 {
+    raster_join(ctx);
     if (target != GL_FRAMEBUFFER_OES) {
         ctx_error(ctx, GL_INVALID_ENUM);
         return;

@@ -109,7 +109,7 @@ int gles_Clear(GlesContext *ctx, unsigned int mask)
     j.wm = (uint8_t)(ctx->stencil_writemask & 0xFF);
     const int64_t pixels = (int64_t)(j.x1 - j.x0) * (j.y1 - j.y0);
     /* a whole-buffer fill is cheap per pixel: threads only for large ones */
-    if (!raster_threaded(ctx, pixels / 16, clear_rows, &j))
+    if (!raster_threaded(ctx, pixels / 16, clear_rows, &j, sizeof j))
         clear_rows(ctx, &j);
     return GLES_OK;
 }
@@ -123,6 +123,7 @@ int gles_ReadPixels(GlesContext *ctx, int x, int y, int width, int height,
     }
     if (!fbo_sync(ctx))
         return GLES_OK;
+    raster_join(ctx);
     /* the two pairs: RGBA/UNSIGNED_BYTE, and the buffer's implementation
     ** pair (OES_read_format): its own packed type (RGB/5_6_5, RGBA/4_4_4_4,
     ** RGBA/5_5_5_1), or BGRA_EXT/UNSIGNED_BYTE (EXT_read_format_bgra) */

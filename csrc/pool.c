@@ -2,7 +2,9 @@
 ** pool.c -- the process's worker threads (pool.h).
 ** Owns: starting and waking the workers. A job's generation number wakes
 **       them; each runs its share once (or none, past the job's count) and
-**       the last one done wakes the caller, which ran share 0 meanwhile.
+**       the last one done marks the job finished, gives the pool back
+**       and wakes whoever waits for it: the caller ran share 0 meanwhile
+**       and may have gone on to other work (pool_start, pool_wait).
 **       The pool lives as long as the process: contexts come and go, and
 **       a program with many of them keeps one set of threads.
 */
@@ -36,8 +38,13 @@ typedef struct PoolWorker {
 struct WorkPool {
     pthread_mutex_t lock;
     pthread_cond_t wake, done;
-    pthread_mutex_t busy;       /* held from pool_acquire to pool_release */
+    /* 1 from pool_acquire to the end of the job started then (its last
+    ** worker clears it): a flag, not a mutex, since that is another
+    ** thread than the one that took it */
+    atomic_int busy;
+    pthread_mutex_t growing;    /* held while workers are started */
     atomic_ulong generation;    /* advances per job */
+    atomic_ulong finished;      /* the generation of the last job done */
     atomic_int running;         /* workers still on the current job */
     int sleeping;               /* workers waiting on `wake` (under lock) */
     PoolJob job;
@@ -75,16 +82,20 @@ static void *pool_main(void *p)
         if (w->index < pool->count)
             pool->job(pool->arg, w->index);
         if (atomic_fetch_sub_explicit(&pool->running, 1, memory_order_acq_rel) == 1) {
+            /* the job's last worker: finished before the wake-up (a waiter
+            ** tests it under the lock), then the pool free for the next */
+            atomic_store_explicit(&pool->finished, seen, memory_order_release);
             pthread_mutex_lock(&pool->lock);
-            pthread_cond_signal(&pool->done);
+            pthread_cond_broadcast(&pool->done);
             pthread_mutex_unlock(&pool->lock);
+            atomic_store_explicit(&pool->busy, 0, memory_order_release);
         }
     }
     return NULL;
 }
 
 static WorkPool shared_pool = { .lock = PTHREAD_MUTEX_INITIALIZER, .wake = PTHREAD_COND_INITIALIZER,
-                                .done = PTHREAD_COND_INITIALIZER, .busy = PTHREAD_MUTEX_INITIALIZER,
+                                .done = PTHREAD_COND_INITIALIZER, .growing = PTHREAD_MUTEX_INITIALIZER,
                                 .threads = 1 };
 
 /* a child of fork() has none of the workers: its pool starts over empty
@@ -93,16 +104,22 @@ static void pool_after_fork(void)
 {
     WorkPool *pool = &shared_pool;
     pthread_mutex_init(&pool->lock, NULL);
-    pthread_mutex_init(&pool->busy, NULL);
+    pthread_mutex_init(&pool->growing, NULL);
+    atomic_store(&pool->busy, 0);
     pthread_cond_init(&pool->wake, NULL);
     pthread_cond_init(&pool->done, NULL);
     atomic_store(&pool->running, 0);
+    atomic_store(&pool->finished, atomic_load(&pool->generation));   /* (the parent waited for it) */
     pool->sleeping = 0;
     pool->threads = 1;
 }
 
+/* a job still running when the process forks finishes first: the child
+** then holds every row its draws asked for */
+static void pool_before_fork(void) { pool_wait(&shared_pool, atomic_load(&shared_pool.generation)); }
+
 static pthread_once_t pool_once = PTHREAD_ONCE_INIT;
-static void pool_init(void) { pthread_atfork(NULL, NULL, pool_after_fork); }
+static void pool_init(void) { pthread_atfork(pool_before_fork, NULL, pool_after_fork); }
 
 WorkPool *pool_shared(int threads)
 {
@@ -110,8 +127,14 @@ WorkPool *pool_shared(int threads)
     pthread_once(&pool_once, pool_init);
     if (threads > GLES_MAX_THREADS)
         threads = GLES_MAX_THREADS;
-    /* no job runs while workers join (each starts at the current generation) */
-    pthread_mutex_lock(&pool->busy);
+    /* no job runs while workers join (each starts at the current
+    ** generation): the pool taken as pool_acquire takes it, waiting */
+    pthread_mutex_lock(&pool->growing);
+    int expected = 0;
+    while (!atomic_compare_exchange_weak(&pool->busy, &expected, 1)) {
+        expected = 0;
+        pool_relax();
+    }
     while (pool->threads < threads) {
         PoolWorker *w = &pool->workers[pool->threads];
         w->pool = pool;
@@ -123,7 +146,8 @@ WorkPool *pool_shared(int threads)
         pool->threads++;
     }
     const int have = pool->threads;
-    pthread_mutex_unlock(&pool->busy);
+    atomic_store_explicit(&pool->busy, 0, memory_order_release);
+    pthread_mutex_unlock(&pool->growing);
     return have >= 2 ? pool : NULL;
 }
 
@@ -131,19 +155,19 @@ int pool_threads(const WorkPool *pool) { return pool->threads; }
 
 int pool_acquire(WorkPool *pool, int threads)
 {
-    if (pthread_mutex_trylock(&pool->busy) != 0)
+    int expected = 0;
+    if (!atomic_compare_exchange_strong_explicit(&pool->busy, &expected, 1, memory_order_acquire,
+                                                 memory_order_relaxed))
         return 0;
     if (pool->threads < threads) {
         /* fewer workers than the context was given (a child of fork()) */
-        pthread_mutex_unlock(&pool->busy);
+        atomic_store_explicit(&pool->busy, 0, memory_order_release);
         return 0;
     }
     return 1;
 }
 
-void pool_release(WorkPool *pool) { pthread_mutex_unlock(&pool->busy); }
-
-void pool_run(WorkPool *pool, PoolJob job, void *arg, int count)
+unsigned long pool_start(WorkPool *pool, PoolJob job, void *arg, int count)
 {
     /* the job is in place before the generation that announces it (release) */
     pool->job = job;
@@ -151,20 +175,36 @@ void pool_run(WorkPool *pool, PoolJob job, void *arg, int count)
     pool->count = count;
     atomic_store_explicit(&pool->running, pool->threads - 1, memory_order_relaxed);
     pthread_mutex_lock(&pool->lock);
-    atomic_fetch_add_explicit(&pool->generation, 1, memory_order_release);
+    const unsigned long ticket = atomic_fetch_add_explicit(&pool->generation, 1, memory_order_release) + 1;
     if (pool->sleeping)
         pthread_cond_broadcast(&pool->wake);
     pthread_mutex_unlock(&pool->lock);
     job(arg, 0);
-    for (int i = 0; i < POOL_SPINS && atomic_load_explicit(&pool->running, memory_order_acquire); i++)
+    return ticket;
+}
+
+/* whether the job of generation `ticket` (or a later one) is done */
+static int pool_finished(WorkPool *pool, unsigned long ticket)
+{
+    return atomic_load_explicit(&pool->finished, memory_order_acquire) >= ticket;
+}
+
+int pool_wait(WorkPool *pool, unsigned long ticket)
+{
+    if (pool_finished(pool, ticket))
+        return 0;
+    for (int i = 0; i < POOL_SPINS && !pool_finished(pool, ticket); i++)
         pool_relax();
-    if (atomic_load_explicit(&pool->running, memory_order_acquire)) {
+    if (!pool_finished(pool, ticket)) {
         pthread_mutex_lock(&pool->lock);
-        while (atomic_load(&pool->running))
+        while (!pool_finished(pool, ticket))
             pthread_cond_wait(&pool->done, &pool->lock);
         pthread_mutex_unlock(&pool->lock);
     }
+    return 1;
 }
+
+void pool_run(WorkPool *pool, PoolJob job, void *arg, int count) { pool_wait(pool, pool_start(pool, job, arg, count)); }
 
 #else
 
@@ -187,13 +227,21 @@ int pool_acquire(WorkPool *pool, int threads)
     return 0;
 }
 
-void pool_release(WorkPool *pool) { (void)pool; }
-
-void pool_run(WorkPool *pool, PoolJob job, void *arg, int count)
+unsigned long pool_start(WorkPool *pool, PoolJob job, void *arg, int count)
 {
     (void)pool;
     (void)count;
     job(arg, 0);
+    return 0;
 }
+
+int pool_wait(WorkPool *pool, unsigned long ticket)
+{
+    (void)pool;
+    (void)ticket;
+    return 0;
+}
+
+void pool_run(WorkPool *pool, PoolJob job, void *arg, int count) { pool_start(pool, job, arg, count); }
 
 #endif

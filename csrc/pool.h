@@ -19,13 +19,18 @@ typedef void (*PoolJob)(void *arg, int index);
 WorkPool *pool_shared(int threads);
 /* the caller and the workers */
 int pool_threads(const WorkPool *pool);
-/* 1 when the pool, with at least `threads` threads, is the caller's until
-** pool_release; 0 while another context's job has it, or in a child of
-** fork(), which has no workers (the caller then works alone) */
+/* 1 when the pool, with at least `threads` threads, is the caller's for
+** one job (pool_start or pool_run; its end gives the pool back); 0 while
+** another job has it, or in a child of fork(), which has no workers (the
+** caller then works alone) */
 int pool_acquire(WorkPool *pool, int threads);
-void pool_release(WorkPool *pool);
 /* job(arg, i) on thread i for i in 0..count-1 (count <= pool_threads; 0
-** on the caller), between pool_acquire and pool_release */
+** on the caller), after pool_acquire; returns when all are done */
 void pool_run(WorkPool *pool, PoolJob job, void *arg, int count);
+/* pool_run without the wait: returns when share 0 is done, the workers'
+** shares perhaps still running, with the job's ticket for pool_wait */
+unsigned long pool_start(WorkPool *pool, PoolJob job, void *arg, int count);
+/* waits for the job of `ticket` to end: 1 where it had not yet */
+int pool_wait(WorkPool *pool, unsigned long ticket);
 
 #endif

@@ -308,9 +308,9 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
     ** band after band, the other threads' bands between (`skip` rows)
     ** stepped over at once */
     int64_t py = raster_next_owned_row(ctx, y0);
-    const int64_t band_rows = (int64_t)1 << RASTER_BAND_SHIFT;
-    const int64_t skip = ctx->band_count > 1 ? (ctx->band_count - 1) * band_rows : 0;
-    int64_t band_end = skip ? (py | (band_rows - 1)) + 1 : y1 + 1;
+    const int64_t band_rows = ctx->band_count > 1 ? ctx->band_hi - ctx->band_lo : 0;
+    const int64_t skip = ctx->band_count > 1 ? ctx->band_period - band_rows : 0;
+    int64_t band_end = skip ? py - raster_band_phase(ctx, py) + ctx->band_hi : y1 + 1;
     EdgeStep st[3];
     EdgeJump jump[3];
     for (int i = 0; i < 3; i++) {
@@ -386,18 +386,13 @@ static void worker_prepare(const GlesContext *ctx, GlesContext *w, int index)
     w->threads = 1;
     w->band_index = index;
     w->band_count = ctx->threads;
+    w->job_pending = 0;
 }
-
-typedef struct RasterJob {
-    GlesContext *ctx;
-    RasterWork work;
-    void *arg;
-} RasterJob;
 
 static void raster_job(void *arg, int index)
 {
-    const RasterJob *j = arg;
-    j->work(index ? j->ctx->worker_ctx[index - 1] : j->ctx, j->arg);
+    GlesContext *ctx = arg;
+    ctx->job_work(index ? ctx->worker_ctx[index - 1] : ctx, ctx->job_arg);
 }
 
 /* a draw sampling the texture it draws into (a framebuffer object's):
@@ -414,22 +409,67 @@ static int samples_own_target(const GlesContext *ctx)
 
 int raster_pool_take(GlesContext *ctx, int64_t amount, int64_t threshold)
 {
+    raster_join(ctx);
     return ctx->pool && amount > 0 && (amount >= threshold || (ctx->debug & GLES_DEBUG_THREADS_ALWAYS))
         && !samples_own_target(ctx) && pool_acquire(ctx->pool, ctx->threads);
 }
 
-int raster_threaded(GlesContext *ctx, int64_t pixels, RasterWork work, void *arg)
+/* thread `index`'s rows of each period: the caller's first, then the
+** workers' in equal parts of the rest */
+static void raster_band_rows(const GlesContext *ctx, int index, int *lo, int *hi)
 {
-    if (!raster_pool_take(ctx, pixels, RASTER_THREADED_PIXELS))
+    const int period = RASTER_BAND_ROWS * ctx->threads, caller = ctx->band_caller_rows;
+    if (index == 0) {
+        *lo = 0;
+        *hi = caller;
+        return;
+    }
+    const int rest = period - caller, workers = ctx->threads - 1;
+    *lo = caller + rest * (index - 1) / workers;
+    *hi = caller + rest * index / workers;
+}
+
+/* the caller's rows of a period, moved by one row per job towards the
+** share at which the caller, back from its own work, finds the workers
+** just done (still running: it takes more; all idle: fewer), within a
+** quarter band of each thread's even share */
+static void raster_band_balance(GlesContext *ctx, int workers_were_running)
+{
+    const int even = RASTER_BAND_ROWS, lo = even - even / 4 * (ctx->threads > 2 ? 2 : 1), hi = even + even / 4;
+    int rows = ctx->band_caller_rows + (workers_were_running ? 1 : -1);
+    ctx->band_caller_rows = rows < lo ? lo : rows > hi ? hi : rows;
+}
+
+void raster_join(GlesContext *ctx)
+{
+    if (!ctx->job_pending)
+        return;
+    raster_band_balance(ctx, pool_wait(ctx->pool, ctx->job_ticket));
+    ctx->job_pending = 0;
+}
+
+int raster_threaded(GlesContext *ctx, int64_t pixels, RasterWork work, const void *arg, size_t size)
+{
+    raster_join(ctx);       /* (where the work then runs on this thread alone) */
+    if (size > sizeof ctx->job_arg || !raster_pool_take(ctx, pixels, RASTER_THREADED_PIXELS))
         return 0;
-    for (int i = 1; i < ctx->threads; i++)
-        worker_prepare(ctx, ctx->worker_ctx[i - 1], i);
-    RasterJob job = { ctx, work, arg };
+    const int period = RASTER_BAND_ROWS * ctx->threads;
+    for (int i = 1; i < ctx->threads; i++) {
+        GlesContext *w = ctx->worker_ctx[i - 1];
+        worker_prepare(ctx, w, i);
+        w->band_period = period;
+        raster_band_rows(ctx, i, &w->band_lo, &w->band_hi);
+    }
+    /* the work's argument in the context: the workers read it after this returns */
+    memcpy(ctx->job_arg, arg, size);
+    ctx->job_work = work;
     ctx->band_index = 0;
     ctx->band_count = ctx->threads;
-    pool_run(ctx->pool, raster_job, &job, ctx->threads);
+    ctx->band_period = period;
+    raster_band_rows(ctx, 0, &ctx->band_lo, &ctx->band_hi);
+    ctx->job_ticket = pool_start(ctx->pool, raster_job, ctx, ctx->threads);
     ctx->band_count = 1;
-    pool_release(ctx->pool);
+    ctx->job_pending = 1;
     return 1;
 }
 

@@ -93,56 +93,67 @@ typedef struct ClipRect {
 } ClipRect;
 ClipRect raster_clip_rect(const GlesContext *ctx);
 
-/* rows in bands of 2^RASTER_BAND_SHIFT: band k belongs to thread k mod
-** band_count, which rasterizes every primitive's fragments in it, in
-** order, so the bytes are the same for any number of threads. 16 rows
-** keep most small triangles within one thread's band and spread a
-** scene's busy rows evenly (benchmarks/README.md) */
-#define RASTER_BAND_SHIFT 4
+/* rows in periods of RASTER_BAND_ROWS x threads: in each, a band of rows
+** per thread, which rasterizes every primitive's fragments in them, in
+** order, so the bytes are the same for any number of threads and any
+** split of the period. Bands near 16 rows keep most small triangles
+** within one thread's band and spread a scene's busy rows evenly
+** (benchmarks/README.md) */
+#define RASTER_BAND_ROWS 16
+/* y mod the period, in [0, period) */
+static inline int64_t raster_band_phase(const GlesContext *ctx, int64_t y)
+{
+    const int64_t period = ctx->band_period;
+    /* a mask for the usual periods (a division per row showed in profiles) */
+    if (!(period & (period - 1)))
+        return y & (period - 1);
+    const int64_t m = y % period;
+    return m < 0 ? m + period : m;
+}
 static inline int raster_owns_row(const GlesContext *ctx, int64_t y)
 {
-    const int64_t count = ctx->band_count, band = y >> RASTER_BAND_SHIFT;
-    if (count <= 1)
+    if (ctx->band_count <= 1)
         return 1;
-    /* a mask for the usual counts (a division per row showed in profiles) */
-    return ((count & (count - 1)) ? band % count : (band & (count - 1))) == ctx->band_index;
+    const int64_t m = raster_band_phase(ctx, y);
+    return m >= ctx->band_lo && m < ctx->band_hi;
 }
 /* below this many pixels a draw is rasterized on the calling thread:
 ** waking the workers and copying the context for them cost about as much
 ** as that (benchmarks/README.md) */
 #define RASTER_THREADED_PIXELS 8192
 typedef void (*RasterWork)(GlesContext *ctx, void *arg);
-/* 1 when the context's pool is now the caller's (pool_release gives it
-** back): the context has threads, the pool is free, and `amount` of work
-** reaches `threshold` (or debug switch 64 threads everything) */
+/* 1 when the context's pool is now the caller's for one job (pool_run or
+** pool_start, whose end gives it back): the context has threads, the pool
+** is free, and `amount` of work reaches `threshold` (or debug switch 64
+** threads everything); the context's last job is waited for first */
 int raster_pool_take(GlesContext *ctx, int64_t amount, int64_t threshold);
-/* work(c, arg) on each thread of the context's pool, c the thread's
-** context (this one on the calling thread) owning its bands of rows;
+/* work(c, copy) on each thread of the context's pool, c the thread's
+** context (this one on the calling thread) owning its bands of rows and
+** copy the context's copy of the `size` bytes at arg; returns 1 once the
+** calling thread's share is done, the workers' perhaps not (raster_join);
 ** 0 (nothing done) where the context has one thread, the pool is busy
 ** with another context, or `pixels` is too few to gain */
-int raster_threaded(GlesContext *ctx, int64_t pixels, RasterWork work, void *arg);
+int raster_threaded(GlesContext *ctx, int64_t pixels, RasterWork work, const void *arg, size_t size);
+/* waits for the workers of the context's last threaded job, if any are
+** still running: every command that changes what they read (the
+** vertices, textures, buffers and framebuffer objects) or reads or
+** writes the framebuffer calls it first */
+void raster_join(GlesContext *ctx);
 
-/* the first row at or after y (>= 0) that the context rasterizes */
+/* the first row at or after y that the context rasterizes */
 static inline int64_t raster_next_owned_row(const GlesContext *ctx, int64_t y)
 {
-    if (raster_owns_row(ctx, y))
+    if (ctx->band_count <= 1)
         return y;
-    const int64_t band = y >> RASTER_BAND_SHIFT;
-    const int64_t ahead = ((int64_t)ctx->band_index - band % ctx->band_count + ctx->band_count) % ctx->band_count;
-    return (band + ahead) << RASTER_BAND_SHIFT;
+    const int64_t m = raster_band_phase(ctx, y);
+    if (m < ctx->band_lo)
+        return y + (ctx->band_lo - m);
+    return m < ctx->band_hi ? y : y + (ctx->band_period - m) + ctx->band_lo;
 }
-/* whether the context rasterizes any row of y0..y1 (rows >= 0) */
+/* whether the context rasterizes any row of y0..y1 */
 static inline int raster_owns_rows(const GlesContext *ctx, int64_t y0, int64_t y1)
 {
-    if (ctx->band_count <= 1)
-        return 1;
-    const int64_t b0 = y0 >> RASTER_BAND_SHIFT, b1 = y1 >> RASTER_BAND_SHIFT;
-    if (b1 - b0 + 1 >= ctx->band_count)
-        return 1;
-    for (int64_t k = b0; k <= b1; k++)
-        if (k % ctx->band_count == ctx->band_index)
-            return 1;
-    return 0;
+    return ctx->band_count <= 1 || raster_next_owned_row(ctx, y0) <= y1;
 }
 
 /* floor(v / GLES_SUBPIXEL_ONE) and ceil, for window coordinates in subpixels */

@@ -401,6 +401,10 @@ typedef struct SmoothStep {
     FRAGV base[4], d1[4], d2[4];  /* the colour as v4_lerp_deltas takes it (the vector instance) */
 } SmoothStep;
 
+/* room for a threaded job's argument (raster_threaded), which the largest,
+** DrawTex's rectangle, fits */
+#define GLES_JOB_ARG_BYTES 4096
+
 struct GlesContext {
     /* framebuffer */
     /* the buffers drawn into and read (the window's unless a framebuffer
@@ -429,6 +433,16 @@ struct GlesContext {
     WorkPool *pool;
     GlesContext **worker_ctx;
     int band_index, band_count;
+    /* a thread's rows in such a draw: y with y mod band_period in
+    ** [band_lo, band_hi) (raster_owns_row); band_caller_rows, the
+    ** caller's part of each period, moves with the balance of the last
+    ** jobs (raster.c's raster_band_balance) */
+    int band_period, band_lo, band_hi, band_caller_rows;
+    /* a threaded job whose workers may still be running after the command
+    ** that started it returned (raster_threaded): raster_join waits for
+    ** them before anything the workers read or write changes */
+    int job_pending;
+    unsigned long job_ticket;   /* its pool_wait ticket */
     /* a threaded draw's primitives, kept until its vertex work is done
     ** (draw.c's Prim), and the vertices whose attributes they need */
     void *draw_prims;           /* Prim */
@@ -624,6 +638,10 @@ struct GlesContext {
     /* a flat colour's blend as a table per destination byte (span.c's
     ** span_flat_table) */
     FlatTable flat_table;
+    /* the running threaded job's work and argument (raster_threaded),
+    ** which its workers read until raster_join */
+    void (*job_work)(GlesContext *ctx, void *arg);
+    _Alignas(16) unsigned char job_arg[GLES_JOB_ARG_BYTES];
 };
 
 /* dirty bits */

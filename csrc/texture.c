@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "state.h"
+#include "raster.h"
 #include "array.h"
 #include "texture.h"
 #include "fbo.h"
@@ -281,6 +282,7 @@ static int face_not_square(const Texture *t, int width, int height) { return t->
 
 void gles_GenTextures(GlesContext *ctx, int n, unsigned int *names)
 {
+    raster_join(ctx);
     if (n < 0) {
         ctx_error(ctx, GL_INVALID_VALUE);
         return;
@@ -290,6 +292,7 @@ void gles_GenTextures(GlesContext *ctx, int n, unsigned int *names)
 
 void gles_DeleteTextures(GlesContext *ctx, int n, const unsigned int *names)
 {
+    raster_join(ctx);
     if (n < 0) {
         ctx_error(ctx, GL_INVALID_VALUE);
         return;
@@ -321,6 +324,7 @@ void gles_DeleteTextures(GlesContext *ctx, int n, const unsigned int *names)
 
 void gles_BindTexture(GlesContext *ctx, unsigned int target, unsigned int name)
 {
+    raster_join(ctx);
     if (target != GL_TEXTURE_2D && target != GL_TEXTURE_CUBE_MAP_OES) {
         ctx_error(ctx, GL_INVALID_ENUM);
         return;
@@ -523,6 +527,7 @@ static int is_palette_format(unsigned int f) { return f >= GL_PALETTE4_RGB8_OES 
 int gles_TexImage2D(GlesContext *ctx, unsigned int target, int level, int internalformat, int width, int height,
                     int border, unsigned int format, unsigned int type, const void *pixels, int64_t nbytes)
 {
+    raster_join(ctx);
     /* a PALETTE* internal format is not one of Table 3.8's: INVALID_VALUE
     ** (§3.7.1), whatever format and type say (as piglit's paletted API
     ** test expects of ES; the extension's INVALID_OPERATION is for the
@@ -586,6 +591,7 @@ int gles_TexImage2D(GlesContext *ctx, unsigned int target, int level, int intern
 int gles_TexSubImage2D(GlesContext *ctx, unsigned int target, int level, int xoffset, int yoffset, int width,
                        int height, unsigned int format, unsigned int type, const void *pixels, int64_t nbytes)
 {
+    raster_join(ctx);
     Texture *t = image_target(ctx, target);
     if (!t || !is_upload_format(format)
         || (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT_5_6_5 && type != GL_UNSIGNED_SHORT_4_4_4_4
@@ -703,6 +709,7 @@ static int copy_compatible(const GlesContext *ctx, unsigned int format)
 void gles_CopyTexImage2D(GlesContext *ctx, unsigned int target, int level, unsigned int internalformat, int x, int y,
                          int width, int height, int border)
 {
+    raster_join(ctx);
     Texture *t = image_target(ctx, target);
     if (!t) {
         ctx_error(ctx, GL_INVALID_ENUM);
@@ -749,6 +756,7 @@ void gles_CopyTexImage2D(GlesContext *ctx, unsigned int target, int level, unsig
 void gles_CopyTexSubImage2D(GlesContext *ctx, unsigned int target, int level, int xoffset, int yoffset, int x, int y,
                             int width, int height)
 {
+    raster_join(ctx);
     Texture *t = image_target(ctx, target);
     if (!t) {
         ctx_error(ctx, GL_INVALID_ENUM);
@@ -799,6 +807,7 @@ void gles_CopyTexSubImage2D(GlesContext *ctx, unsigned int target, int level, in
 ** makes them */
 void gles_GenerateMipmapOES(GlesContext *ctx, unsigned int target)
 {
+    raster_join(ctx);
     Texture *t = param_target(ctx, target);
     if (!t) {
         ctx_error(ctx, GL_INVALID_ENUM);
@@ -990,6 +999,7 @@ static void compressed_etc1(GlesContext *ctx, Texture *t, int level, int width, 
 int gles_CompressedTexImage2D(GlesContext *ctx, unsigned int target, int level, unsigned int internalformat,
                               int width, int height, int border, int image_size, const void *data, int64_t nbytes)
 {
+    raster_join(ctx);
     Texture *t = image_target(ctx, target);
     if (t && internalformat == GL_ETC1_RGB8_OES) {
         int st;
@@ -1061,6 +1071,7 @@ int gles_CompressedTexImage2D(GlesContext *ctx, unsigned int target, int level, 
 void gles_CompressedTexSubImage2D(GlesContext *ctx, unsigned int target, int level, int xoffset, int yoffset,
                                   int width, int height, unsigned int format, int image_size, const void *data)
 {
+    raster_join(ctx);
     (void)level; (void)xoffset; (void)yoffset; (void)width; (void)height; (void)image_size; (void)data;
     if (!image_target(ctx, target) || (!palette_format(format) && format != GL_ETC1_RGB8_OES)) {
         ctx_error(ctx, GL_INVALID_ENUM);
@@ -1076,6 +1087,7 @@ void gles_CompressedTexSubImage2D(GlesContext *ctx, unsigned int target, int lev
 
 void gles_TexParameter(GlesContext *ctx, unsigned int target, unsigned int pname, const double *p, int vector)
 {
+    raster_join(ctx);
     /* a cube map's parameters apply to the cube map as a whole */
     Texture *t = param_target(ctx, target);
     if (!t) {

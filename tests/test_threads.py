@@ -13,6 +13,7 @@ thread owns several bands and primitives cross band edges.
 
 from __future__ import annotations
 
+import gc
 import os
 import signal
 import threading
@@ -233,6 +234,129 @@ def _drawtex_scene(gl: Any, w: int, h: int) -> Callable[[], None]:
 
 def test_drawtex() -> None:
     _assert_same(_drawtex_scene, size=(72, 96))
+
+
+# {====================================================================
+# a threaded draw's workers may still run when the command returns: every
+# command that changes what they read, or reads what they write, waits first
+
+def _between_draws_scene(gl: Any, w: int, h: int) -> Callable[[], None]:
+    """Draws of a textured quad, each followed by a command that changes the
+    texture the draw samples, reads the framebuffer it writes, or renders
+    into another target: a missing wait shows as other bytes or a race."""
+    rng = np.random.default_rng(11)
+    gl.glViewport(0, 0, w, h)
+    gl.glEnableClientState(C.GL_VERTEX_ARRAY)
+    gl.glEnableClientState(C.GL_TEXTURE_COORD_ARRAY)
+    quad = np.array([[-1, -1], [1, -1], [-1, 1], [1, 1]], dtype=np.float32)
+    gl.glVertexPointer(2, C.GL_FLOAT, 0, quad)
+    tex = gl.glGenTextures(1)
+    gl.glBindTexture(C.GL_TEXTURE_2D, tex)
+    img = np.ascontiguousarray(rng.integers(0, 256, (32, 32, 4)), dtype=np.uint8)
+    gl.glTexImage2D(C.GL_TEXTURE_2D, 0, C.GL_RGBA, 32, 32, 0, C.GL_RGBA, C.GL_UNSIGNED_BYTE, img)
+    gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MIN_FILTER, C.GL_LINEAR)
+    gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MAG_FILTER, C.GL_LINEAR)
+    gl.glEnable(C.GL_TEXTURE_2D)
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_MODULATE)
+    gl.glEnable(C.GL_BLEND)
+    gl.glBlendFunc(C.GL_SRC_ALPHA, C.GL_ONE_MINUS_SRC_ALPHA)
+    # a texture the frame renders into through a framebuffer object
+    target = gl.glGenTextures(1)
+    gl.glBindTexture(C.GL_TEXTURE_2D, target)
+    gl.glTexImage2D(C.GL_TEXTURE_2D, 0, C.GL_RGBA, 64, 64, 0, C.GL_RGBA, C.GL_UNSIGNED_BYTE, None)
+    gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MIN_FILTER, C.GL_NEAREST)
+    fbo = gl.glGenFramebuffersOES(1)
+    gl.glBindFramebufferOES(C.GL_FRAMEBUFFER_OES, fbo)
+    gl.glFramebufferTexture2DOES(C.GL_FRAMEBUFFER_OES, C.GL_COLOR_ATTACHMENT0_OES, C.GL_TEXTURE_2D, target, 0)
+    gl.glBindFramebufferOES(C.GL_FRAMEBUFFER_OES, 0)
+    state = {"tex": tex}
+
+    def draw(shift: float) -> None:
+        tc = np.ascontiguousarray(quad * (0.8 + shift) + shift, dtype=np.float32)
+        state["tc"] = tc                         # alive until the next draw has read it
+        gl.glTexCoordPointer(2, C.GL_FLOAT, 0, tc)
+        gl.glColor4f(*rng.uniform(0.3, 1.0, 4))
+        gl.glDrawArrays(C.GL_TRIANGLE_STRIP, 0, 4)
+
+    def frame() -> None:
+        gl.glClear(C.GL_COLOR_BUFFER_BIT)
+        gl.glBindTexture(C.GL_TEXTURE_2D, state["tex"])
+        draw(0.1)
+        patch = np.ascontiguousarray(rng.integers(0, 256, (8, 16, 4)), dtype=np.uint8)
+        gl.glTexSubImage2D(C.GL_TEXTURE_2D, 0, 4, 5, 16, 8, C.GL_RGBA, C.GL_UNSIGNED_BYTE, patch)
+        draw(0.2)
+        gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MAG_FILTER, C.GL_NEAREST)
+        draw(0.3)
+        gl.glCopyTexSubImage2D(C.GL_TEXTURE_2D, 0, 0, 0, 3, 7, 24, 20)
+        draw(0.4)
+        read = np.asarray(gl.glReadPixels(5, 9, 16, 16, C.GL_RGBA, C.GL_UNSIGNED_BYTE), dtype=np.uint8)
+        gl.glTexSubImage2D(C.GL_TEXTURE_2D, 0, 16, 16, 16, 16, C.GL_RGBA, C.GL_UNSIGNED_BYTE,
+                           np.ascontiguousarray(read.reshape(16, 16, 4)))
+        draw(0.5)
+        gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_GENERATE_MIPMAP, 1)
+        gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MIN_FILTER, C.GL_LINEAR_MIPMAP_LINEAR)
+        gl.glTexSubImage2D(C.GL_TEXTURE_2D, 0, 0, 0, 8, 8, C.GL_RGBA, C.GL_UNSIGNED_BYTE,
+                           np.ascontiguousarray(rng.integers(0, 256, (8, 8, 4)), dtype=np.uint8))
+        draw(0.6)
+        # the texture deleted right after a draw that samples it
+        gl.glDeleteTextures([state["tex"]])
+        state["tex"] = gl.glGenTextures(1)
+        gl.glBindTexture(C.GL_TEXTURE_2D, state["tex"])
+        gl.glTexImage2D(C.GL_TEXTURE_2D, 0, C.GL_RGBA, 32, 32, 0, C.GL_RGBA, C.GL_UNSIGNED_BYTE,
+                        np.ascontiguousarray(rng.integers(0, 256, (32, 32, 4)), dtype=np.uint8))
+        gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MIN_FILTER, C.GL_LINEAR)
+        draw(0.7)
+        # into the framebuffer object's texture, then sampling it in the window
+        gl.glBindFramebufferOES(C.GL_FRAMEBUFFER_OES, fbo)
+        gl.glViewport(0, 0, 64, 64)
+        draw(0.8)
+        gl.glBindFramebufferOES(C.GL_FRAMEBUFFER_OES, 0)
+        gl.glViewport(0, 0, w, h)
+        gl.glBindTexture(C.GL_TEXTURE_2D, target)
+        draw(0.9)
+        gl.glDrawTexiOES(3, 4, 0, 40, 50)
+        gl.glBindTexture(C.GL_TEXTURE_2D, state["tex"])
+        draw(1.0)
+    return frame
+
+
+@pytest.mark.parametrize("numeric", ["fixed", "float"])
+def test_commands_between_draws(numeric: str) -> None:
+    _assert_same(_between_draws_scene, size=(72, 96), numeric=numeric, frames=2)
+
+
+def test_wait_in_another_python_thread() -> None:
+    """The draw's workers are waited for by whichever thread next uses the
+    context: the image read from another Python thread, then more draws from
+    this one, and a change of thread count between draws."""
+    scene = lambda gl, w, h: GALLERY["ground_plane"][1](gl, w, h)  # noqa: E731
+    expect = _render(scene, 1, frames=2)
+    ctx = gles.Context(80, 72, range_check="off", threads=2)
+    ctx.debug(THREADS_ALWAYS)
+    frame = scene(ctx.gl, 80, 72)
+    frame()
+    seen: list[np.ndarray] = []
+    t = threading.Thread(target=lambda: seen.append(ctx.image()))
+    t.start()
+    t.join()
+    assert np.array_equal(seen[0], _render(scene, 1, frames=1))
+    ctx.threads = 3
+    frame()
+    assert np.array_equal(ctx.image(), expect)
+    frame()
+    ctx.threads = 1
+    frame()
+    assert np.array_equal(ctx.image(), _render(scene, 1, frames=4))
+
+
+def test_freed_with_draws_running() -> None:
+    """A context freed (and another made) right after a threaded draw."""
+    for _ in range(5):
+        ctx = gles.Context(96, 96, range_check="off", threads=2)
+        ctx.debug(THREADS_ALWAYS)
+        GALLERY["ground_plane"][1](ctx.gl, 96, 96)()
+        del ctx
+        gc.collect()
 
 
 def test_mesa_threads() -> None:
