@@ -308,6 +308,7 @@ int gles_threads_set(GlesContext *ctx, int threads)
     ctx->worker_ctx = workers;
     ctx->threads = threads;
     ctx->band_caller_rows = RASTER_BAND_ROWS;
+    ctx->band_votes = 0;
     return threads;
 }
 

@@ -37,7 +37,7 @@
 ** attributes; base advances by 2 per draw */
 static int draw_begin(GlesContext *ctx, int64_t nverts)
 {
-    raster_join(ctx);       /* the last threaded draw's workers read the vertices */
+    raster_join_next(ctx);  /* the last threaded draw's workers read the vertices */
     if (nverts > ctx->verts_capacity) {
         int64_t cap = ctx->verts_capacity ? ctx->verts_capacity : 1024;
         while (cap < nverts)

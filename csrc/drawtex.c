@@ -49,7 +49,7 @@ void gles_DrawTexOES(GlesContext *ctx, double xs, double ys, double zs, double w
     }
     if (!fbo_sync(ctx))
         return;
-    raster_join(ctx);
+    raster_join_next(ctx);
     draw_validate(ctx);
     DrawTexJob job;
     RectSetup *const rp = &job.r;

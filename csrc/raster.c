@@ -409,7 +409,7 @@ static int samples_own_target(const GlesContext *ctx)
 
 int raster_pool_take(GlesContext *ctx, int64_t amount, int64_t threshold)
 {
-    raster_join(ctx);
+    raster_join_next(ctx);
     return ctx->pool && amount > 0 && (amount >= threshold || (ctx->debug & GLES_DEBUG_THREADS_ALWAYS))
         && !samples_own_target(ctx) && pool_acquire(ctx->pool, ctx->threads);
 }
@@ -429,18 +429,33 @@ static void raster_band_rows(const GlesContext *ctx, int index, int *lo, int *hi
     *hi = caller + rest * index / workers;
 }
 
-/* the caller's rows of a period, moved by one row per job towards the
-** share at which the caller, back from its own work, finds the workers
-** just done (still running: it takes more; all idle: fewer), within a
-** quarter band of each thread's even share */
+/* the caller's rows of a period, moved towards the share at which the
+** caller, back from its own rows and the commands since, finds the
+** workers just done: each join before another job votes (workers still
+** running: the caller had time to spare, and takes more; all done: they
+** waited for it, and it takes fewer), and three votes more one way than
+** the other move it a row, so it settles where the votes alternate;
+** within a quarter band of each thread's even share */
 static void raster_band_balance(GlesContext *ctx, int workers_were_running)
 {
     const int even = RASTER_BAND_ROWS, lo = even - even / 4 * (ctx->threads > 2 ? 2 : 1), hi = even + even / 4;
-    int rows = ctx->band_caller_rows + (workers_were_running ? 1 : -1);
+    ctx->band_votes += workers_were_running ? 1 : -1;
+    if (ctx->band_votes > -3 && ctx->band_votes < 3)
+        return;
+    const int rows = ctx->band_caller_rows + (ctx->band_votes > 0 ? 1 : -1);
     ctx->band_caller_rows = rows < lo ? lo : rows > hi ? hi : rows;
+    ctx->band_votes = 0;
 }
 
 void raster_join(GlesContext *ctx)
+{
+    if (!ctx->job_pending)
+        return;
+    pool_wait(ctx->pool, ctx->job_ticket);
+    ctx->job_pending = 0;
+}
+
+void raster_join_next(GlesContext *ctx)
 {
     if (!ctx->job_pending)
         return;
@@ -450,7 +465,7 @@ void raster_join(GlesContext *ctx)
 
 int raster_threaded(GlesContext *ctx, int64_t pixels, RasterWork work, const void *arg, size_t size)
 {
-    raster_join(ctx);       /* (where the work then runs on this thread alone) */
+    raster_join_next(ctx);  /* (also where the work then runs on this thread alone) */
     if (size > sizeof ctx->job_arg || !raster_pool_take(ctx, pixels, RASTER_THREADED_PIXELS))
         return 0;
     const int period = RASTER_BAND_ROWS * ctx->threads;

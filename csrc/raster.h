@@ -139,6 +139,9 @@ int raster_threaded(GlesContext *ctx, int64_t pixels, RasterWork work, const voi
 ** vertices, textures, buffers and framebuffer objects) or reads or
 ** writes the framebuffer calls it first */
 void raster_join(GlesContext *ctx);
+/* raster_join before the next job (a draw, DrawTex, Clear), which also
+** moves the caller's band towards the balance (raster.c) */
+void raster_join_next(GlesContext *ctx);
 
 /* the first row at or after y that the context rasterizes */
 static inline int64_t raster_next_owned_row(const GlesContext *ctx, int64_t y)

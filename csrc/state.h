@@ -437,7 +437,7 @@ struct GlesContext {
     ** [band_lo, band_hi) (raster_owns_row); band_caller_rows, the
     ** caller's part of each period, moves with the balance of the last
     ** jobs (raster.c's raster_band_balance) */
-    int band_period, band_lo, band_hi, band_caller_rows;
+    int band_period, band_lo, band_hi, band_caller_rows, band_votes;
     /* a threaded job whose workers may still be running after the command
     ** that started it returned (raster_threaded): raster_join waits for
     ** them before anything the workers read or write changes */
