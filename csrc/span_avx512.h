@@ -1,7 +1,8 @@
 /*
-** span_avx512.h -- the double build's bilinear kernel and RGBA8888
-** writers in eight lanes of AVX-512F, taken where the CPU has it (simd.h);
-** AVX2 holds four of its fragments to a register. The fixed and float
+** span_avx512.h -- the double build's bilinear kernel, RGBA8888 writers
+** and fused sample/modulate/write stage (span_float8.h's kernel) in eight
+** lanes of AVX-512 (F, DQ, BW), taken where the CPU has it (simd.h); AVX2
+** holds four of its fragments to a register. The fixed and float
 ** builds' bilinear kernels hold eight in AVX2's 32-bit lanes already
 ** (avx2_sample_linear, f8_sample_linear).
 ** Included after span_avx2.h (by texsample.c and span_chain.c: the guard
