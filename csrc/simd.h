@@ -4,8 +4,8 @@
 ** (SSE2 on x86-64); on x86-64 with GCC the span chain and the texture
 ** samplers also have an AVX2 instance (span_stages.h, texsample.c), taken
 ** when the CPU and the OS support AVX2 (with BMI1, BMI2 and FMA). The double
-** build's bilinear kernel and RGBA8888 writers have AVX-512F instances
-** besides (span_avx512.h),
+** build's bilinear kernel, RGBA8888 writers and fused stage have AVX-512
+** (F, DQ, BW) instances besides (span_avx512.h),
 ** eight fragments to a register where AVX2 holds four; the fixed and float
 ** builds' kernels hold eight fragments in AVX2's lanes already and have
 ** none. Every instance computes the same bits, and the baseline stays the
@@ -37,7 +37,7 @@ enum { SIMD_BASELINE = 0, SIMD_AVX2 = 1, SIMD_AVX512 = 2 };
 ** products and sums. The core is compiled with -ffp-contract=off, so no
 ** other a * b + c becomes an FMA: the float builds keep their operations. */
 #define SIMD_TARGET_AVX2 _Pragma("GCC target(\"avx2,bmi,bmi2,fma\")")
-#define SIMD_TARGET_AVX512 _Pragma("GCC target(\"avx2,bmi,bmi2,fma,avx512f\")")
+#define SIMD_TARGET_AVX512 _Pragma("GCC target(\"avx2,bmi,bmi2,fma,avx512f,avx512dq,avx512bw\")")
 
 /* the best instance this CPU can run */
 static inline int simd_detect(void)
@@ -47,7 +47,12 @@ static inline int simd_detect(void)
     if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("bmi") || !__builtin_cpu_supports("bmi2")
         || !__builtin_cpu_supports("fma"))
         return SIMD_BASELINE;
-    return SIMD_AVX512_INSTANCE && __builtin_cpu_supports("avx512f") ? SIMD_AVX512 : SIMD_AVX2;
+    /* DQ's 64-bit integer conversions and BW's byte shuffles form the
+    ** unorm values (span_avx512.h); every AVX-512 CPU but Xeon Phi has them */
+    return SIMD_AVX512_INSTANCE && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq")
+                   && __builtin_cpu_supports("avx512bw")
+             ? SIMD_AVX512
+             : SIMD_AVX2;
 #else
     return SIMD_BASELINE;
 #endif

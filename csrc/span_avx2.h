@@ -2518,6 +2518,8 @@ static inline void avx2_modwrite_dispatch(AVX2_MODWRITE_ARGS)
 /* }==================================================================== */
 #endif
 
-#include "span_float8.h"
+#if defined(GLES_NUM_FLOAT)
+#include "span_float8.h"    /* the double build's is in span_avx512.h's target */
+#endif
 
 #endif

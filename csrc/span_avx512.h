@@ -1,7 +1,8 @@
 /*
-** span_avx512.h -- the double build's bilinear kernel and RGBA8888
-** writers in eight lanes of AVX-512F, taken where the CPU has it (simd.h);
-** AVX2 holds four of its fragments to a register. The fixed and float
+** span_avx512.h -- the double build's bilinear kernel, RGBA8888 writers
+** and fused sample/modulate/write stage (span_float8.h's kernel) in eight
+** lanes of AVX-512 (F, DQ, BW), taken where the CPU has it (simd.h); AVX2
+** holds four of its fragments to a register. The fixed and float
 ** builds' bilinear kernels hold eight in AVX2's 32-bit lanes already
 ** (avx2_sample_linear, f8_sample_linear).
 ** Included after span_avx2.h (by texsample.c and span_chain.c: the guard
@@ -40,30 +41,69 @@ AVX512_INLINE void v8_linear_axis(__m512d s, int n, int repeat, __m256i *i0, __m
     }
 }
 
+/* Unsigned normalized values without a division. The 64-bit integer
+** d 0x0101010101010101 (the byte d in all eight bytes) converts to
+** round(d 2^64 / 255): d / 255 is d's eight bits repeated in binary, and
+** the conversion rounds the first 53 of them as the division does (checked
+** for all 256 bytes), so times 2^-64 it is frag_from_unorm(d, 255). In the
+** same way d times 1 repeated every 5 or 6 bits (60 bits) converts to
+** d / 31 or d / 63 times 2^60 (checked for every d). */
+#define UNORM8_REPEAT 0x0101010101010101ull
+#define UNORM5_REPEAT 0x0084210842108421ull     /* 1 every 5 bits, 60 bits */
+#define UNORM6_REPEAT 0x0041041041041041ull     /* 1 every 6 bits, 60 bits */
+
+/* eight words zero-extended to 64-bit lanes, and byte c of each repeated
+** through its lane */
+AVX512_INLINE __m512i v8_words64(__m256i words) { return _mm512_cvtepu32_epi64(words); }
+AVX512_INLINE __m512i v8_byte_repeated(__m512i words64, int c)
+{
+    /* a lane's low dword is the word: its byte c to all eight bytes */
+    const long long lo = (long long)(UNORM8_REPEAT * (unsigned)c), hi = (long long)(UNORM8_REPEAT * (unsigned)(c + 8));
+    return _mm512_shuffle_epi8(words64, _mm512_setr_epi64(lo, hi, lo, hi, lo, hi, lo, hi));
+}
+
 /* the byte at `shift` of eight texel words as d / 255 (texel_unorm8's value) */
 AVX512_INLINE __m512d v8_byte_unorm8(__m256i words, int shift)
 {
-    const __m256i d = _mm256_and_si256(_mm256_srli_epi32(words, shift), _mm256_set1_epi32(0xFF));
-    /* v4_div255's d / 255 */
-    const __m512d x = _mm512_cvtepi32_pd(d);
-    return _mm512_fmadd_pd(x, _mm512_set1_pd(UNORM8_RECIP_HI), _mm512_mul_pd(x, _mm512_set1_pd(UNORM8_RECIP_LO)));
+    return _mm512_mul_pd(_mm512_cvtepu64_pd(v8_byte_repeated(v8_words64(words), shift / 8)),
+                         _mm512_set1_pd(0x1p-64));
+}
+
+/* frag_from_unorm(d, 31) or (d, 63) of integer lanes d <= maxval */
+AVX512_INLINE __m512d v8_from_unorm56(__m256i d, int maxval)
+{
+    const __m512i rep = _mm512_set1_epi64((long long)(maxval == 31 ? UNORM5_REPEAT : UNORM6_REPEAT));
+    return _mm512_mul_pd(_mm512_cvtepu64_pd(_mm512_mullo_epi64(v8_words64(d), rep)), _mm512_set1_pd(0x1p-60));
+}
+
+/* frag_bilerp_rgba8 of eight fragments (lane k fragment k) channel by
+** channel into ch[0..3]: texel words g[0..3] (c00, c10, c01, c11),
+** weights a and b. The texel values are taken scaled by 2^64 (the
+** converted repeated bytes, above): every product and sum of the filter
+** then stays far from the subnormals (the weights are 0 or at least about
+** 2^-60, the values 0 or at least 2^-8), so each rounds to the unscaled
+** one's times 2^64, and one exact product by 2^-64 per channel ends it */
+AVX512_INLINE void v8_bilerp_channels(const __m256i g[4], __m512d a, __m512d b, __m512d ch[4])
+{
+    const __m512d one = _mm512_set1_pd(1);
+    const __m512d ia = _mm512_sub_pd(one, a), ib = _mm512_sub_pd(one, b);
+    const __m512i q[4] = { v8_words64(g[0]), v8_words64(g[1]), v8_words64(g[2]), v8_words64(g[3]) };
+    for (int c = 0; c < 4; c++) {
+        __m512d v[4];
+        for (int i = 0; i < 4; i++)
+            v[i] = _mm512_cvtepu64_pd(v8_byte_repeated(q[i], c));
+        const __m512d top = _mm512_add_pd(_mm512_mul_pd(v[0], ia), _mm512_mul_pd(v[1], a));
+        const __m512d bot = _mm512_add_pd(_mm512_mul_pd(v[2], ia), _mm512_mul_pd(v[3], a));
+        ch[c] = _mm512_mul_pd(_mm512_add_pd(_mm512_mul_pd(top, ib), _mm512_mul_pd(bot, b)), _mm512_set1_pd(0x1p-64));
+    }
 }
 
 /* v4_bilerp4 of eight fragments (lane k fragment k), stored as
 ** out[k stride + channel] */
 AVX512_INLINE void v8_bilerp8(const __m256i g[4], __m512d a, __m512d b, double *out, size_t stride)
 {
-    const __m512d one = _mm512_set1_pd(1);
-    const __m512d ia = _mm512_sub_pd(one, a), ib = _mm512_sub_pd(one, b);
     __m512d ch[4];
-    for (int c = 0; c < 4; c++) {
-        __m512d v[4];
-        for (int i = 0; i < 4; i++)
-            v[i] = v8_byte_unorm8(g[i], 8 * c);
-        const __m512d top = _mm512_add_pd(_mm512_mul_pd(v[0], ia), _mm512_mul_pd(v[1], a));
-        const __m512d bot = _mm512_add_pd(_mm512_mul_pd(v[2], ia), _mm512_mul_pd(v[3], a));
-        ch[c] = _mm512_add_pd(_mm512_mul_pd(top, ib), _mm512_mul_pd(bot, b));
-    }
+    v8_bilerp_channels(g, a, b, ch);
     /* channels of eight fragments to eight fragments' channels: pairs
     ** (r, g) and (b, a) of fragments 0 2 4 6 and 1 3 5 7, then one
     ** fragment's two pairs per 256-bit half */
@@ -183,6 +223,17 @@ static __attribute__((noinline)) int avx512_write_rgba8(uint32_t *dst, const uin
     return kind == 0 ? v8_write_rgba8_kind(dst, k, n, c, 0)
          : kind == 1 ? v8_write_rgba8_kind(dst, k, n, c, 1)
                      : v8_write_rgba8_kind(dst, k, n, c, 2);
+}
+
+#include "span_float8.h"
+
+/* the fused stage's kernel (f8_modwrite_dispatch) in eight double lanes,
+** for the AVX2 instance's stage_modulate_write and stage_sample_write */
+static __attribute__((noinline)) void avx512_modwrite(const F8ModWrite *m, int src, int rgb565, int n, int live,
+                                                      const uint8_t *k, const WGT (*p)[3], const FRAGV *ct,
+                                                      size_t stride, const TexCoord *tc, int x0, void *dst)
+{
+    f8_modwrite_dispatch(m, src, rgb565, n, live, k, p, ct, stride, tc, x0, dst);
 }
 #endif
 

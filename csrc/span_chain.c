@@ -86,6 +86,9 @@ typedef struct ChainStages {
     SpanStage modulate_write, sample_write;
     SpanStage dot3_write, dot3_sample_write;    /* NULL where the instance has none */
     int modulate_write_565;
+    /* the double build's AVX2 instance: modulate_write and sample_write
+    ** for a CPU that runs their AVX-512 kernel; else NULL */
+    SpanStage modulate_write_avx512, sample_write_avx512;
 } ChainStages;
 
 /* the baseline instance */
@@ -470,6 +473,16 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     if (ctx_simd(ctx) >= SIMD_AVX2)
         cs = &chain_stages_avx2;
 #endif
+    /* the fused stages of this instance and CPU */
+    SpanStage modulate_write_stage = cs->modulate_write, sample_write_stage = cs->sample_write;
+    int modulate_write_565 = cs->modulate_write_565;
+#if SIMD_AVX512_INSTANCE
+    if (ctx_simd(ctx) >= SIMD_AVX512 && cs->modulate_write_avx512) {
+        modulate_write_stage = cs->modulate_write_avx512;
+        sample_write_stage = cs->sample_write_avx512;
+        modulate_write_565 = 1;
+    }
+#endif
     const unsigned int units = ctx->tex_units_on;
     const int stencil = ctx->stencil_test && ctx->stencil;
     const int depth = ctx->depth_test && ctx->depth;
@@ -524,9 +537,9 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     const int plain565 = ctx->color_format == GLES_COLOR_RGB565 && ctx->color_mask[0] && ctx->color_mask[1]
                       && ctx->color_mask[2];
     const int target_fused = !ctx->fog && !(ctx->alpha_test && tests)
-                          && ((plain && bk >= 0) || (plain565 && (bk == 0 || bk == 1) && cs->modulate_write_565))
+                          && ((plain && bk >= 0) || (plain565 && (bk == 0 || bk == 1) && modulate_write_565))
                           && !ctx->color_logic_op;
-    const int writes_fused = lone >= 0 && target_fused && cs->modulate_write != NULL;
+    const int writes_fused = lone >= 0 && target_fused && modulate_write_stage != NULL;
     const int modulate_write = writes_fused && first_modulates;
     /* a first unit's DOT3 before a second one's MODULATE, on triangles
     ** (stage_dot3_write; the second unit sampled there too where it can
@@ -595,7 +608,7 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     }
     if (sample_write) {
         s[n++] = rect ? cs->coords_rect[lone] : cs->coords[lone];
-        s[n++] = cs->sample_write;
+        s[n++] = sample_write_stage;
         return n;
     }
     if (direct) {
@@ -611,7 +624,7 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
             if (units & (1u << u))
                 s[n++] = rect ? cs->fetch_rect[u] : cs->fetch[u];
         if (modulate_write) {
-            s[n++] = cs->modulate_write;
+            s[n++] = modulate_write_stage;
             return n;
         }
         if (dot3_env)

@@ -1,77 +1,120 @@
 /*
-** span_float8.h -- the float build's fused stage: the colour, a lone
-** unit's MODULATE of an RGBA or RGB texture (or REPLACE of an RGBA
+** span_float8.h -- the float and double builds' fused stage: the colour,
+** a lone unit's MODULATE of an RGBA or RGB texture (or REPLACE of an RGBA
 ** texture), the alpha test and the RGBA8888 or RGB565 write of eight
 ** fragments at a time, with the bilinear sampling of level 0 inside where
 ** the unit's sampler is the vector kernel. Lanes are GCC vectors of eight
-** floats, one AVX2 register per channel, and every lane does the scalar
-** code's IEEE operations in their order (frag_lerp3f, frag_clamp01,
-** frag_mul, sample_level's GL_LINEAR and frag_bilerp_rgba8,
-** fragment_alpha8, span_rgba8, fragment_channel), so every word is the
-** separate stages' without a proof. Included by span_avx2.h, inside its
-** AVX2 target. (The double build keeps the separate stages: the same
-** kernel in four double lanes measured 10-20% slower than they are.)
+** NUMs, one register per channel: eight floats in AVX2 (the float build,
+** included by span_avx2.h inside its AVX2 target), eight doubles in
+** AVX-512F (the double build, included by span_avx512.h inside its target:
+** the same kernel in AVX2's four double lanes measured 10-20% slower than
+** the separate stages). Every lane does the scalar code's IEEE operations
+** in their order (frag_lerp3f, frag_clamp01, frag_mul, sample_level's
+** GL_LINEAR and frag_bilerp_rgba8, fragment_alpha8, span_rgba8,
+** fragment_channel), so every word is the separate stages' without a proof.
 */
-#if SIMD_X86 && defined(GLES_NUM_FLOAT)
+#if SIMD_X86 && (defined(GLES_NUM_FLOAT) || SIMD_AVX512_INSTANCE)
+#ifndef GLES_SPAN_FLOAT8_H
+#define GLES_SPAN_FLOAT8_H
 
-/* F8_N float lanes; int32 lanes (also what comparing two f8_num gives: -1
-** or 0 per lane); F8_N stored RGB565 words */
+/* F8_N lanes of NUM; their comparisons' lanes (-1 or 0, as wide as a
+** NUM); int32 lanes; F8_N stored RGB565 words */
 #define F8_N 8
+#if defined(GLES_NUM_FLOAT)
 typedef float f8_num __attribute__((vector_size(32)));
 typedef int32_t f8_mask __attribute__((vector_size(32)));
+#else
+typedef double f8_num __attribute__((vector_size(64)));
+typedef int64_t f8_mask __attribute__((vector_size(64)));
+#endif
 typedef int32_t f8_i32 __attribute__((vector_size(32)));
 typedef uint16_t f8_u16 __attribute__((vector_size(16)));
 
-/* m ? a : b per lane */
-AVX2_INLINE f8_num f8_sel(f8_mask m, f8_num a, f8_num b) { return (f8_num)(((f8_mask)a & m) | ((f8_mask)b & ~m)); }
 AVX2_INLINE f8_num f8_set1(NUM x) { return (f8_num){ 0 } + x; }
 
 /* 1 when every lane of m is set */
 AVX2_INLINE int f8_all(f8_mask m)
 {
+#if defined(GLES_NUM_FLOAT)
     return _mm256_movemask_ps((__m256)m) == 0xFF;
+#else
+    return _mm512_test_epi64_mask((__m512i)m, (__m512i)m) == 0xFF;
+#endif
 }
 
 /* NUM_FLOOR per lane, for any finite value */
 AVX2_INLINE f8_num f8_floor(f8_num v)
 {
+#if defined(GLES_NUM_FLOAT)
     return (f8_num)_mm256_floor_ps((__m256)v);
+#else
+    return (f8_num)_mm512_roundscale_pd((__m512d)v, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+#endif
 }
 
-/* frag_clamp01 (NaN and -0 pass as there) */
-AVX2_INLINE f8_num f8_clamp01(f8_num v)
+/* the min and max instructions per lane: the second operand where either
+** is NaN or both are zeros */
+AVX2_INLINE f8_num f8_min(f8_num a, f8_num b)
 {
-    v = f8_sel(v < 0, f8_set1(0), v);
-    return f8_sel(v > 1, f8_set1(1), v);
+#if defined(GLES_NUM_FLOAT)
+    return (f8_num)_mm256_min_ps((__m256)a, (__m256)b);
+#else
+    return (f8_num)_mm512_min_pd((__m512d)a, (__m512d)b);
+#endif
+}
+AVX2_INLINE f8_num f8_max(f8_num a, f8_num b)
+{
+#if defined(GLES_NUM_FLOAT)
+    return (f8_num)_mm256_max_ps((__m256)a, (__m256)b);
+#else
+    return (f8_num)_mm512_max_pd((__m512d)a, (__m512d)b);
+#endif
 }
 
-/* frag_to_unorm(v, maxval, t): 0 unless v > 0, maxval from 1 up, else
-** v maxval + t truncated (below maxval + 1) */
+/* frag_clamp01 (NaN and -0 pass as there: v4_clamp01's operand order) */
+AVX2_INLINE f8_num f8_clamp01(f8_num v) { return f8_min(f8_set1(1), f8_max(f8_set1(0), v)); }
+
+/* frag_to_unorm(v, maxval, t) for thresholds 0 <= t < 1 whose sum with
+** maxval is exact (1/2 and the dither's odd 32nds): 0 unless v > 0 (x =
+** v maxval + t is then below 1, or NaN, which max turns to 0), maxval
+** from 1 up (x >= maxval), else x truncated; there fl(v maxval) <= maxval,
+** so x <= maxval + t < maxval + 1 and the minimum with maxval truncates
+** alike */
 AVX2_INLINE f8_i32 f8_unorm(f8_num v, NUM maxval, f8_num t)
 {
-    f8_num x = v * maxval + t;
-    x = f8_sel(v >= 1, f8_set1(maxval), x);
-    x = f8_sel(v > 0, x, f8_set1(0));
+    const f8_num x = f8_min(f8_max(v * maxval + t, f8_set1(0)), f8_set1(maxval));
     return __builtin_convertvector(x, f8_i32);
 }
 
-/* frag_to_msb(v, bits): floor(v 2^bits), 0 unless v > 0, at most 2^bits - 1 */
+/* frag_to_msb(v, bits): floor(v 2^bits), 0 unless v > 0 (max turns a
+** product <= 0 or NaN to 0), at most 2^bits - 1 (the minimum with it
+** truncates alike) */
 AVX2_INLINE f8_i32 f8_msb(f8_num v, int bits)
 {
     const NUM top = (NUM)(1 << bits);
-    f8_num x = f8_sel(v > 0, v * top, f8_set1(0));
-    x = f8_sel(x >= top, f8_set1(top - 1), x);
+    const f8_num x = f8_min(f8_max(v * top, f8_set1(0)), f8_set1(top - 1));
     return __builtin_convertvector(x, f8_i32);      /* x >= 0: truncation is the floor */
 }
 
 /* int32 lanes as floats */
 AVX2_INLINE f8_num f8_from_i32(f8_i32 c)
 {
+#if defined(GLES_NUM_FLOAT)
     return (f8_num)_mm256_cvtepi32_ps((__m256i)c);
+#else
+    return (f8_num)_mm512_cvtepi32_pd((__m256i)c);
+#endif
 }
 
 /* frag_from_unorm(c, maxval) of integer lanes */
-AVX2_INLINE f8_num f8_from_unorm(f8_i32 c, NUM maxval) { return f8_from_i32(c) / maxval; }
+AVX2_INLINE f8_num f8_from_unorm(f8_i32 c, NUM maxval)
+{
+#if defined(GLES_NUM_FLOAT)
+    return f8_from_i32(c) / maxval;
+#else
+    return (f8_num)v8_from_unorm56((__m256i)c, (int)maxval);    /* 31 or 63 */
+#endif
+}
 
 /* fragment_channel(v, bits, dither, t) of RGB565's 5- or 6-bit channels */
 AVX2_INLINE f8_i32 f8_channel(f8_num v, int bits, int dither, f8_num t)
@@ -126,12 +169,10 @@ AVX2_INLINE f8_i32 f8_sel_i32(f8_i32 m, f8_i32 a, f8_i32 b) { return (a & m) | (
 ** wrap_index (v4_linear_axis's, in F8_N lanes) */
 AVX2_INLINE void f8_linear_axis(f8_num s, int n, int repeat, f8_i32 *i0, f8_i32 *i1, f8_num *w)
 {
-    if (repeat) {
+    if (repeat)
         s = s - f8_floor(s);
-    } else {
-        s = f8_sel(s < -1, f8_set1(-1), s);
-        s = f8_sel(s > 2, f8_set1(2), s);
-    }
+    else
+        s = f8_min(f8_max(s, f8_set1(-1)), f8_set1(2));     /* s is finite */
     const f8_num uu = s * (NUM)n - (NUM)0.5;
     const f8_num fl = f8_floor(uu);
     *w = uu - fl;
@@ -160,12 +201,12 @@ AVX2_INLINE f8_i32 f8_compare(const ModWriteAlpha *f, f8_i32 a)
 
 /* the fused stage's state for one chunk */
 typedef struct F8ModWrite {
-    f8_num col[3][4];            /* the vertex colours, or the flat colour clamped in col[0] */
+    NUM col[3][4];               /* the vertex colours, or the flat colour clamped in col[0] */
     int smooth, rgb, replace, kind;
     ModWriteAlpha alpha;         /* the alpha test */
     int dither;
     FRAGV t_row[4];              /* the dither thresholds by x & 3 */
-    f8_num thr[4];               /* those of F8_N neighbouring pixels from x & 3 = r */
+    NUM thr[4][F8_N];            /* those of F8_N neighbouring pixels from x & 3 = r */
     ModWriteTexture tx;          /* where the kernel samples (source 1) */
 } F8ModWrite;
 
@@ -177,7 +218,7 @@ static inline void f8_modwrite_setup(F8ModWrite *m, const FRAGV *const a[3], int
     modwrite_alpha_setup(&m->alpha, alpha_func, alpha_ref);
     for (int i = 0; i < 3; i++)
         for (int c = 0; c < 4; c++)
-            m->col[i][c] = f8_set1(smooth ? a[i][c] : frag_clamp01(a[0][c]));
+            m->col[i][c] = smooth ? a[i][c] : frag_clamp01(a[0][c]);
 }
 
 /* RGB565's dither thresholds t_row[x & 3] (dither) */
@@ -194,12 +235,14 @@ static inline void f8_modwrite_dither(F8ModWrite *m, int dither, const FRAGV t_r
 /* channel i (byte i) of RGBA8888 words as frag_from_unorm(., 255) */
 AVX2_INLINE f8_num f8_byte(f8_i32 g, int i)
 {
+#if defined(GLES_NUM_FLOAT)
     /* v4_div255's d / 255 in eight lanes */
     const f8_num d = f8_from_i32((g >> (8 * i)) & 0xFF);
     return (f8_num)_mm256_fmadd_ps((__m256)d, _mm256_set1_ps(UNORM8_RECIP_HI),
-                                   (__m256)(d * (f8_num){ UNORM8_RECIP_LO, UNORM8_RECIP_LO, UNORM8_RECIP_LO,
-                                                          UNORM8_RECIP_LO, UNORM8_RECIP_LO, UNORM8_RECIP_LO,
-                                                          UNORM8_RECIP_LO, UNORM8_RECIP_LO }));
+                                   (__m256)(d * f8_set1(UNORM8_RECIP_LO)));
+#else
+    return (f8_num)v8_byte_unorm8((__m256i)g, 8 * i);
+#endif
 }
 
 /* the texels of coordinates tc[0..F8_N-1] on a w x h level (powers of
@@ -220,6 +263,7 @@ AVX2_INLINE int f8_sample_level(const uint32_t *texels, int w, int h, int repeat
     f8_linear_axis(t, h, repeat_t, &y0, &y1, &b);
     __m256i g[4];
     avx2_texel_words8(texels, w, (int64_t)w * h, (__m256i)x0, (__m256i)x1, (__m256i)y0, (__m256i)y1, rows, g);
+#if defined(GLES_NUM_FLOAT)
     const f8_i32 g00 = (f8_i32)g[0], g10 = (f8_i32)g[1], g01 = (f8_i32)g[2], g11 = (f8_i32)g[3];
     const f8_num ia = 1 - a, ib = 1 - b;
     for (int i = 0; i < 4; i++) {
@@ -227,6 +271,12 @@ AVX2_INLINE int f8_sample_level(const uint32_t *texels, int w, int h, int repeat
         const f8_num bot = f8_byte(g01, i) * ia + f8_byte(g11, i) * a;
         T[i] = top * ib + bot * b;
     }
+#else
+    __m512d ch[4];
+    v8_bilerp_channels(g, (__m512d)a, (__m512d)b, ch);
+    for (int i = 0; i < 4; i++)
+        T[i] = (f8_num)ch[i];
+#endif
     return 1;
 }
 
@@ -284,10 +334,11 @@ AVX2_INLINE f8_i32 f8_modwrite(const F8ModWrite *m, int smooth, int kind, int rg
             f8_num w[3];
             f8_weights(p, w);
             for (int i = 0; i < 4; i++)
-                c[i] = f8_clamp01(m->col[0][i] * w[0] + m->col[1][i] * w[1] + m->col[2][i] * w[2]);
+                c[i] = f8_clamp01(f8_set1(m->col[0][i]) * w[0] + f8_set1(m->col[1][i]) * w[1]
+                                  + f8_set1(m->col[2][i]) * w[2]);
         } else {
             for (int i = 0; i < 4; i++)
-                c[i] = m->col[0][i];
+                c[i] = f8_set1(m->col[0][i]);
         }
         for (int i = 0; i < 4; i++)
             y[i] = c[i] * T[i];
@@ -363,7 +414,7 @@ AVX2_INLINE void f8_modwrite_run(const F8ModWrite *mw, int src, int smooth, int 
         f8_num thr = { 0 };
         if (rgb565 && m->dither) {
             if (run)
-                thr = m->thr[(x0 + k[j]) & 3];
+                memcpy(&thr, m->thr[(x0 + k[j]) & 3], sizeof thr);
             else
                 for (int L = 0; L < F8_N; L++)
                     thr[L] = m->t_row[(x0 + k[j + L]) & 3];
@@ -411,4 +462,5 @@ static inline void f8_modwrite_dispatch(const F8ModWrite *m, int src, int rgb565
 #undef F8_RUN
 }
 
+#endif
 #endif

@@ -1578,12 +1578,13 @@ static void STAGE(stage_dot3_sample_write)(GlesContext *ctx, const TriSetup *t, 
 }
 #endif
 
-#if CHAIN_SIMD && defined(GLES_NUM_FLOAT)
+#if CHAIN_SIMD && !NUM_IS_FIXED
 /* stage_color_modulate of the one enabled unit (or a rectangle's colour
 ** and stage_env's MODULATE), the alpha test and write_rgba8 (blend kind 0,
 ** 1 or 2) or stage_write_565 / stage_write_565_alpha in one pass of eight
-** float lanes: the float build's operations in their order
-** (f8_modwrite), so the words are the separate stages'. Source 0 takes
+** lanes: the build's operations in their order (f8_modwrite), so the words
+** are the separate stages'. The double build's lanes are AVX-512's
+** (avx512_modwrite), and the chain takes the stage only where they run. Source 0 takes
 ** the texels a fetch stage sampled; source 1 samples at the coordinates a
 ** coordinates stage left (a bilinear sampler with a vector kernel), and
 ** there the unit may be a lone REPLACE of an RGBA texture. The chunk's
@@ -1618,8 +1619,13 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
         dither_row(b, ctx->dither, t_row);
         f8_modwrite_dither(m, ctx->dither, t_row);
     }
+#if defined(GLES_NUM_FLOAT)
     f8_modwrite_dispatch(m, src, rgb565, n, b->n, b->k, (const WGT (*)[3])b->p, b->ct[0][u], stride, b->tc, b->x0,
                          chunk_color(ctx, b, rgb565));
+#else
+    avx512_modwrite(m, src, rgb565, n, b->n, b->k, (const WGT (*)[3])b->p, b->ct[0][u], stride, b->tc, b->x0,
+                    chunk_color(ctx, b, rgb565));
+#endif
 }
 
 static void STAGE(stage_modulate_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
@@ -1670,6 +1676,10 @@ static const ChainStages STAGE(chain_stages) = {
     .modulate_write = STAGE(stage_modulate_write),
     .sample_write = STAGE(stage_sample_write),
     .modulate_write_565 = 1,
+#endif
+#if CHAIN_SIMD && SIMD_AVX512_INSTANCE
+    .modulate_write_avx512 = STAGE(stage_modulate_write),
+    .sample_write_avx512 = STAGE(stage_sample_write),
 #endif
 #if CHAIN_SIMD && NUM_IS_FIXED
     .dot3_write = STAGE(stage_dot3_write),

@@ -759,7 +759,10 @@ int texture_span_sample_group(const Texture *t, int simd)
 #if SIMD_X86
     if (simd >= SIMD_AVX2 && !texture_needs_lod(t) && t->mag_filter == GL_LINEAR
         && linear_kernel_fits(t, t->wrap_s, t->wrap_t))
-        return NUM_IS_FIXED ? 8 : 4;
+        /* the kernels' groups: eight fragments in the fixed build and in
+        ** the double build's AVX-512 instance, so a chunk's tail is padded
+        ** to eight there (not to four for the AVX2 kernel) */
+        return NUM_IS_FIXED || simd >= SIMD_AVX512 ? 8 : 4;
 #endif
     (void)t, (void)simd;
     return 1;
