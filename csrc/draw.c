@@ -363,7 +363,7 @@ static void draw_deferred(Batch *b)
     b->npend_all = 0;
     const Prim *prims = ctx->draw_prims;
     DrawJob job = { prims, b->ndeferred, b->base };
-    if (!raster_threaded(ctx, b->work, draw_job, &job, sizeof job))
+    if (!raster_threaded(ctx, b->work, draw_job, &job, sizeof job, 1))
         draw_job(ctx, &job);
     b->ndeferred = 0;
     b->work = 0;

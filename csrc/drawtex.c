@@ -89,7 +89,7 @@ void gles_DrawTexOES(GlesContext *ctx, double xs, double ys, double zs, double w
         job.y0 = y0;
         job.x1 = x1;
         job.y1 = y1;
-        if (!raster_threaded(ctx, (x1 - x0) * (y1 - y0), drawtex_job, &job, sizeof job))
+        if (!raster_threaded(ctx, (x1 - x0) * (y1 - y0), drawtex_job, &job, sizeof job, 1))
             drawtex_job(ctx, &job);
         return;
     }

@@ -109,7 +109,7 @@ int gles_Clear(GlesContext *ctx, unsigned int mask)
     j.wm = (uint8_t)(ctx->stencil_writemask & 0xFF);
     const int64_t pixels = (int64_t)(j.x1 - j.x0) * (j.y1 - j.y0);
     /* a whole-buffer fill is cheap per pixel: threads only for large ones */
-    if (!raster_threaded(ctx, pixels / 16, clear_rows, &j, sizeof j))
+    if (!raster_threaded(ctx, pixels / 16, clear_rows, &j, sizeof j, 0))
         clear_rows(ctx, &j);
     return GLES_OK;
 }

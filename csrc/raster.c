@@ -409,7 +409,7 @@ static int samples_own_target(const GlesContext *ctx)
 
 int raster_pool_take(GlesContext *ctx, int64_t amount, int64_t threshold)
 {
-    raster_join_next(ctx);
+    raster_join(ctx);
     return ctx->pool && amount > 0 && (amount >= threshold || (ctx->debug & GLES_DEBUG_THREADS_ALWAYS))
         && !samples_own_target(ctx) && pool_acquire(ctx->pool, ctx->threads);
 }
@@ -431,11 +431,13 @@ static void raster_band_rows(const GlesContext *ctx, int index, int *lo, int *hi
 
 /* the caller's rows of a period, moved towards the share at which the
 ** caller, back from its own rows and the commands since, finds the
-** workers just done: each join before another job votes (workers still
-** running: the caller had time to spare, and takes more; all done: they
-** waited for it, and it takes fewer), and three votes more one way than
-** the other move it a row, so it settles where the votes alternate;
-** within a quarter band of each thread's even share */
+** workers just done: each join of a draw's or DrawTex's job by the next
+** one votes (workers still running: the caller had time to spare, and
+** takes more; all done: they waited for it, and it takes fewer), and three
+** votes more one way than the other move it a row, so it settles where the
+** votes alternate; within a quarter band of each thread's even share.
+** Other pairs would mislead: a Clear returns at once, a draw after it
+** always finds it running */
 static void raster_band_balance(GlesContext *ctx, int workers_were_running)
 {
     const int even = RASTER_BAND_ROWS, lo = even - even / 4 * (ctx->threads > 2 ? 2 : 1), hi = even + even / 4;
@@ -459,13 +461,15 @@ void raster_join_next(GlesContext *ctx)
 {
     if (!ctx->job_pending)
         return;
-    raster_band_balance(ctx, pool_wait(ctx->pool, ctx->job_ticket));
+    const int waited = pool_wait(ctx->pool, ctx->job_ticket);
+    if (ctx->job_votes)
+        raster_band_balance(ctx, waited);
     ctx->job_pending = 0;
 }
 
-int raster_threaded(GlesContext *ctx, int64_t pixels, RasterWork work, const void *arg, size_t size)
+int raster_threaded(GlesContext *ctx, int64_t pixels, RasterWork work, const void *arg, size_t size, int votes)
 {
-    raster_join_next(ctx);  /* (also where the work then runs on this thread alone) */
+    raster_join(ctx);       /* (also where the work then runs on this thread alone) */
     if (size > sizeof ctx->job_arg || !raster_pool_take(ctx, pixels, RASTER_THREADED_PIXELS))
         return 0;
     const int period = RASTER_BAND_ROWS * ctx->threads;
@@ -478,6 +482,7 @@ int raster_threaded(GlesContext *ctx, int64_t pixels, RasterWork work, const voi
     /* the work's argument in the context: the workers read it after this returns */
     memcpy(ctx->job_arg, arg, size);
     ctx->job_work = work;
+    ctx->job_votes = votes;
     ctx->band_index = 0;
     ctx->band_count = ctx->threads;
     ctx->band_period = period;

@@ -131,16 +131,17 @@ int raster_pool_take(GlesContext *ctx, int64_t amount, int64_t threshold);
 ** context (this one on the calling thread) owning its bands of rows and
 ** copy the context's copy of the `size` bytes at arg; returns 1 once the
 ** calling thread's share is done, the workers' perhaps not (raster_join);
+** `votes`: the next draw's wait for it moves the bands (raster_join_next);
 ** 0 (nothing done) where the context has one thread, the pool is busy
 ** with another context, or `pixels` is too few to gain */
-int raster_threaded(GlesContext *ctx, int64_t pixels, RasterWork work, const void *arg, size_t size);
+int raster_threaded(GlesContext *ctx, int64_t pixels, RasterWork work, const void *arg, size_t size, int votes);
 /* waits for the workers of the context's last threaded job, if any are
 ** still running: every command that changes what they read (the
 ** vertices, textures, buffers and framebuffer objects) or reads or
 ** writes the framebuffer calls it first */
 void raster_join(GlesContext *ctx);
-/* raster_join before the next job (a draw, DrawTex, Clear), which also
-** moves the caller's band towards the balance (raster.c) */
+/* raster_join at the start of a draw or DrawTex, which also moves the
+** caller's band towards the balance where the job waited for votes */
 void raster_join_next(GlesContext *ctx);
 
 /* the first row at or after y that the context rasterizes */

@@ -443,6 +443,7 @@ struct GlesContext {
     ** them before anything the workers read or write changes */
     int job_pending;
     unsigned long job_ticket;   /* its pool_wait ticket */
+    int job_votes;              /* its end moves the bands (raster_join_next) */
     /* a threaded draw's primitives, kept until its vertex work is done
     ** (draw.c's Prim), and the vertices whose attributes they need */
     void *draw_prims;           /* Prim */
