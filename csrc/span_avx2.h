@@ -1945,14 +1945,17 @@ static inline void modwrite_alpha_setup(ModWriteAlpha *t, unsigned int func, uin
 static inline int avx2_modwrite_pad(int group, int n, uint8_t *k, WGT (*p)[3], int smooth, TexCoord *tc, FRAGV *ct,
                                     size_t stride)
 {
+    /* each copy from the last live slot, not the slot just written: no
+    ** store waits for the one before it */
+    const int last = n - 1;
     for (; n % group; n++) {
-        k[n] = k[n - 1];
+        k[n] = k[last];
         if (smooth)
-            memcpy(p[n], p[n - 1], sizeof p[n]);
+            memcpy(p[n], p[last], sizeof p[n]);
         if (tc)
-            tc[n] = tc[n - 1];
+            tc[n] = tc[last];
         if (ct)
-            memcpy(ct + (size_t)n * stride, ct + (size_t)(n - 1) * stride, 4 * sizeof *ct);
+            memcpy(ct + (size_t)n * stride, ct + (size_t)last * stride, 4 * sizeof *ct);
     }
     return n;
 }

@@ -1,8 +1,9 @@
 /*
 ** span_avx512.h -- the double build's bilinear kernel, RGBA8888 writers
-** and fused sample/modulate/write stage (span_float8.h's kernel) in eight
-** lanes of AVX-512 (F, DQ, BW), taken where the CPU has it (simd.h); AVX2
-** holds four of its fragments to a register. The fixed and float
+** and fused sample/modulate/write stage (span_float8.h's kernel, also
+** with the DOT3 pair before the MODULATE) in eight lanes of AVX-512 (F,
+** DQ, BW), taken where the CPU has it (simd.h); AVX2 holds four of its
+** fragments to a register. The fixed and float
 ** builds' bilinear kernels hold eight in AVX2's 32-bit lanes already
 ** (avx2_sample_linear, f8_sample_linear).
 ** Included after span_avx2.h (by texsample.c and span_chain.c: the guard
@@ -234,6 +235,16 @@ static __attribute__((noinline)) void avx512_modwrite(const F8ModWrite *m, int s
                                                       size_t stride, const TexCoord *tc, int x0, void *dst)
 {
     f8_modwrite_dispatch(m, src, rgb565, n, live, k, p, ct, stride, tc, x0, dst);
+}
+
+/* the same with the DOT3 pair's first unit before the MODULATE (m->dot3),
+** its texels fetched into ct0 or, where ct0 is NULL, sampled at tc0 */
+static __attribute__((noinline)) void avx512_dot3_write(const F8ModWrite *m, int src, int rgb565, int n, int live,
+                                                        const uint8_t *k, const WGT (*p)[3], const FRAGV *ct0,
+                                                        const TexCoord *tc0, const FRAGV *ct, size_t stride,
+                                                        const TexCoord *tc, int x0, void *dst)
+{
+    f8_modwrite_dispatch_dot3(m, src, rgb565, 1, n, live, k, p, ct0, tc0, ct, stride, tc, x0, dst);
 }
 #endif
 

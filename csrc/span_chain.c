@@ -86,9 +86,10 @@ typedef struct ChainStages {
     SpanStage modulate_write, sample_write;
     SpanStage dot3_write, dot3_sample_write;    /* NULL where the instance has none */
     int modulate_write_565;
-    /* the double build's AVX2 instance: modulate_write and sample_write
-    ** for a CPU that runs their AVX-512 kernel; else NULL */
-    SpanStage modulate_write_avx512, sample_write_avx512;
+    /* the double build's AVX2 instance: modulate_write, sample_write,
+    ** dot3_write and dot3_sample_write for a CPU that runs their AVX-512
+    ** kernel; else NULL */
+    SpanStage modulate_write_avx512, sample_write_avx512, dot3_write_avx512, dot3_sample_write_avx512;
 } ChainStages;
 
 /* the baseline instance */
@@ -475,12 +476,19 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
 #endif
     /* the fused stages of this instance and CPU */
     SpanStage modulate_write_stage = cs->modulate_write, sample_write_stage = cs->sample_write;
+    SpanStage dot3_write_stage = cs->dot3_write, dot3_sample_write_stage = cs->dot3_sample_write;
     int modulate_write_565 = cs->modulate_write_565;
+    /* the fixed build's DOT3 lanes are float approximations bounded per
+    ** byte; the double build's repeat the separate stages' operations */
+    int dot3_exact = 0;
 #if SIMD_AVX512_INSTANCE
     if (ctx_simd(ctx) >= SIMD_AVX512 && cs->modulate_write_avx512) {
         modulate_write_stage = cs->modulate_write_avx512;
         sample_write_stage = cs->sample_write_avx512;
+        dot3_write_stage = cs->dot3_write_avx512;
+        dot3_sample_write_stage = cs->dot3_sample_write_avx512;
         modulate_write_565 = 1;
+        dot3_exact = 1;
     }
 #endif
     const unsigned int units = ctx->tex_units_on;
@@ -543,14 +551,15 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     const int modulate_write = writes_fused && first_modulates;
     /* a first unit's DOT3 before a second one's MODULATE, on triangles
     ** (stage_dot3_write; the second unit sampled there too where it can
-    ** be, stage_dot3_sample_write). Not DOT3_RGBA under SRC_ALPHA blending
-    ** on RGBA8888: its alpha carries DOT3's error into both blend terms,
-    ** past what the byte's margin proves (docs/architecture.md) */
-    const int dot3 = !rect && target_fused && cs->dot3_write != NULL && span_dot3_pair(ctx)
-                  && !(bk == 1 && plain && ctx->units[first].combine_rgb == GL_DOT3_RGBA);
-    /* where no fused stage takes that pair (the float and double builds),
-    ** the colour and both units' environments in one stage after the
-    ** fetches (stage_color_dot3_modulate) */
+    ** be, stage_dot3_sample_write). In the fixed build not DOT3_RGBA under
+    ** SRC_ALPHA blending on RGBA8888: its alpha carries DOT3's error into
+    ** both blend terms, past what the byte's margin proves
+    ** (docs/architecture.md) */
+    const int dot3 = !rect && target_fused && dot3_write_stage != NULL && span_dot3_pair(ctx)
+                  && (dot3_exact || !(bk == 1 && plain && ctx->units[first].combine_rgb == GL_DOT3_RGBA));
+    /* where no fused stage takes that pair (the float build, the double
+    ** build below AVX-512), the colour and both units' environments in one
+    ** stage after the fetches (stage_color_dot3_modulate) */
     const int dot3_env = !rect && !dot3 && cs->color_dot3_modulate != NULL && span_dot3_pair(ctx);
     /* ... sampling too where the unit's sampler is a bilinear vector kernel
     ** (stage_sample_write), and then also for a lone REPLACE unit of an
@@ -599,10 +608,10 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
         s[n++] = ctx->sample_group[first] > 1 ? cs->coords_tx[first] : cs->fetch[first];
         if (ctx->sample_group[second] > 1) {
             s[n++] = cs->coords[second];
-            s[n++] = cs->dot3_sample_write;
+            s[n++] = dot3_sample_write_stage;
         } else {
             s[n++] = cs->fetch[second];
-            s[n++] = cs->dot3_write;
+            s[n++] = dot3_write_stage;
         }
         return n;
     }

@@ -208,6 +208,10 @@ typedef struct F8ModWrite {
     FRAGV t_row[4];              /* the dither thresholds by x & 3 */
     NUM thr[4][F8_N];            /* those of F8_N neighbouring pixels from x & 3 = r */
     ModWriteTexture tx;          /* where the kernel samples (source 1) */
+    /* the DOT3 pair (span_dot3_pair): 0, or 1 for the first unit's
+    ** DOT3_RGB, 2 for DOT3_RGBA; tx0 where its texels are sampled here */
+    int dot3;
+    ModWriteTexture tx0;
 } F8ModWrite;
 
 static inline void f8_modwrite_setup(F8ModWrite *m, const FRAGV *const a[3], int smooth, int rgb, int replace,
@@ -319,10 +323,28 @@ static int f8_sample_linear(const TexImage *li, int n, const TexCoord *c, float 
 }
 #endif
 
+/* the DOT3 pair's first unit over colour c with its texels T0, in
+** stage_color_dot3_modulate's operations and order (combine_block's: the
+** sum from 0, then times 4; the scales of 1 left out, as there): (T0 -
+** 1/2)(c - 1/2) per rgb channel, 4 ((0 + p0) + p1) + p2 clamped into
+** every rgb channel, and into alpha for DOT3_RGBA; else the clamped alpha
+** product T0 c (MODULATE) */
+AVX2_INLINE void f8_dot3(int rgba, const f8_num T0[4], f8_num c[4])
+{
+    const f8_num half = f8_set1((NUM)0.5);
+    f8_num sum = f8_set1(0);
+    for (int i = 0; i < 3; i++)
+        sum = sum + (T0[i] - half) * (c[i] - half);
+    const f8_num d = f8_clamp01(sum * (NUM)4);
+    c[3] = rgba ? d : f8_clamp01(T0[3] * c[3]);
+    c[0] = c[1] = c[2] = d;
+}
+
 /* the words written over d (lanes of the stored words) by F8_N fragments
-** with texels T and weights p; thr: the dither thresholds (RGB565) */
-AVX2_INLINE f8_i32 f8_modwrite(const F8ModWrite *m, int smooth, int kind, int rgb565, const WGT (*p)[3],
-                               const f8_num T[4], f8_i32 d, f8_num thr)
+** with texels T and weights p (with dot3, T0 the first unit's texels);
+** thr: the dither thresholds (RGB565) */
+AVX2_INLINE f8_i32 f8_modwrite(const F8ModWrite *m, int smooth, int kind, int rgb565, int dot3, const WGT (*p)[3],
+                               const f8_num T0[4], const f8_num T[4], f8_i32 d, f8_num thr)
 {
     f8_num y[4];
     if (m->replace) {
@@ -340,6 +362,8 @@ AVX2_INLINE f8_i32 f8_modwrite(const F8ModWrite *m, int smooth, int kind, int rg
             for (int i = 0; i < 4; i++)
                 c[i] = f8_set1(m->col[0][i]);
         }
+        if (dot3)
+            f8_dot3(m->dot3 == 2, T0, c);
         for (int i = 0; i < 4; i++)
             y[i] = c[i] * T[i];
         if (m->rgb)
@@ -379,21 +403,31 @@ AVX2_INLINE f8_i32 f8_modwrite(const F8ModWrite *m, int smooth, int kind, int rg
 ** ones live, the rest, fewer than F8_N, copies of the last live one: a
 ** group of copies alone would read the word its original wrote) at the ascending
 ** offsets k of dst (pixel x0 + k): texels from source 0 (ct + j stride,
-** sampled by a fetch stage) or 1 (sampled here at tc) */
-AVX2_INLINE void f8_modwrite_run(const F8ModWrite *mw, int src, int smooth, int kind, int rgb565, int n, int live,
-                                 const uint8_t *k, const WGT (*p)[3], const FRAGV *ct, size_t stride,
-                                 const TexCoord *tc, int x0, void *dst)
+** sampled by a fetch stage) or 1 (sampled here at tc). With dot3 the
+** first unit's texels come from ct0 + j stride (fetched) or are sampled
+** here at tc0 (where ct0 is NULL). */
+AVX2_INLINE void f8_modwrite_run(const F8ModWrite *mw, int src, int smooth, int kind, int rgb565, int dot3, int n,
+                                 int live, const uint8_t *k, const WGT (*p)[3], const FRAGV *ct0,
+                                 const TexCoord *tc0, const FRAGV *ct, size_t stride, const TexCoord *tc, int x0,
+                                 void *dst)
 {
     const F8ModWrite local = *mw, *m = &local;   /* not aliased by the framebuffer stores */
     uint32_t *d32 = dst;
     uint16_t *d16 = dst;
     for (int j = 0; j < n; j += F8_N) {
-        f8_num T[4];
+        f8_num T[4], T0[4];
         if (src == 0 || !f8_sample(m, tc + j, T)) {
             FRAGV texel[F8_N][4];
             if (src == 1)
                 m->tx.sampler(m->tx.tex, F8_N, tc + j, NULL, NULL, texel[0], 4, m->tx.unorm8);
             f8_gather_rows(src == 1 ? texel[0] : ct + (size_t)j * stride, src == 1 ? 4 : stride, T);
+        }
+        if (dot3 && (ct0 != NULL || !f8_sample_level(m->tx0.texels, m->tx0.w, m->tx0.h, m->tx0.repeat_s,
+                                                     m->tx0.repeat_t, 1, tc0 + j, T0))) {
+            FRAGV texel[F8_N][4];
+            if (ct0 == NULL)
+                m->tx0.sampler(m->tx0.tex, F8_N, tc0 + j, NULL, NULL, texel[0], 4, m->tx0.unorm8);
+            f8_gather_rows(ct0 == NULL ? texel[0] : ct0 + (size_t)j * stride, ct0 == NULL ? 4 : stride, T0);
         }
         /* a group with copies is never F8_N neighbouring pixels, whatever
         ** its offsets say */
@@ -419,7 +453,7 @@ AVX2_INLINE void f8_modwrite_run(const F8ModWrite *mw, int src, int smooth, int 
                 for (int L = 0; L < F8_N; L++)
                     thr[L] = m->t_row[(x0 + k[j + L]) & 3];
         }
-        const f8_i32 w = f8_modwrite(m, smooth, kind, rgb565, &p[j], T, d, thr);
+        const f8_i32 w = f8_modwrite(m, smooth, kind, rgb565, dot3, &p[j], T0, T, d, thr);
         if (run && rgb565) {
             const f8_u16 h = __builtin_convertvector(w, f8_u16);
             memcpy(&d16[k[j]], &h, sizeof h);
@@ -438,12 +472,14 @@ AVX2_INLINE void f8_modwrite_run(const F8ModWrite *mw, int src, int smooth, int 
 }
 
 /* f8_modwrite_run with the source, the colour's interpolation, the blend
-** and the format fixed per instance */
-static inline void f8_modwrite_dispatch(const F8ModWrite *m, int src, int rgb565, int n, int live, const uint8_t *k,
-                                        const WGT (*p)[3], const FRAGV *ct, size_t stride, const TexCoord *tc,
-                                        int x0, void *dst)
+** and the format fixed per instance; dot3 (a constant) as there */
+AVX2_INLINE void f8_modwrite_dispatch_dot3(const F8ModWrite *m, int src, int rgb565, int dot3, int n, int live,
+                                           const uint8_t *k, const WGT (*p)[3], const FRAGV *ct0,
+                                           const TexCoord *tc0, const FRAGV *ct, size_t stride, const TexCoord *tc,
+                                           int x0, void *dst)
 {
-#define F8_RUN(S, SM, K, F) f8_modwrite_run(m, S, SM, K, F, n, live, k, p, ct, stride, tc, x0, dst)
+#define F8_RUN(S, SM, K, F) \
+    f8_modwrite_run(m, S, SM, K, F, dot3, n, live, k, p, ct0, tc0, ct, stride, tc, x0, dst)
 #define F8_KINDS(S, SM)                    \
     switch (m->kind + 3 * rgb565) {        \
     case 0: F8_RUN(S, SM, 0, 0); break;    \
@@ -460,6 +496,13 @@ static inline void f8_modwrite_dispatch(const F8ModWrite *m, int src, int rgb565
     }
 #undef F8_KINDS
 #undef F8_RUN
+}
+
+static inline void f8_modwrite_dispatch(const F8ModWrite *m, int src, int rgb565, int n, int live, const uint8_t *k,
+                                        const WGT (*p)[3], const FRAGV *ct, size_t stride, const TexCoord *tc,
+                                        int x0, void *dst)
+{
+    f8_modwrite_dispatch_dot3(m, src, rgb565, 0, n, live, k, p, NULL, NULL, ct, stride, tc, x0, dst);
 }
 
 #endif

@@ -1588,11 +1588,17 @@ static void STAGE(stage_dot3_sample_write)(GlesContext *ctx, const TriSetup *t, 
 ** the texels a fetch stage sampled; source 1 samples at the coordinates a
 ** coordinates stage left (a bilinear sampler with a vector kernel), and
 ** there the unit may be a lone REPLACE of an RGBA texture. The chunk's
-** tail is padded to a whole group with copies of its last fragment. */
+** tail is padded to a whole group with copies of its last fragment. With
+** dot3 (the double build's AVX-512 lanes only) the units are two
+** (span_dot3_pair): the first one's COMBINE DOT3 of its texels (fetched,
+** or sampled here at the coordinates in b->tx) and the colour comes
+** before the second one's MODULATE, in stage_color_dot3_modulate's
+** operations (f8_dot3). */
 static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesContext *ctx, const TriSetup *t,
-                                                                       SpanBuf *b, int src)
+                                                                       SpanBuf *b, int src, int dot3)
 {
-    const int u = __builtin_ctz(ctx->tex_units_on);
+    const unsigned int units = ctx->tex_units_on;
+    const int u0 = __builtin_ctz(units), u = dot3 ? __builtin_ctz(units & (units - 1)) : u0;
     const Texture *tex = ctx->units[u].bound;
     const int replace = ctx->units[u].env_mode == GL_REPLACE;
     const int smooth = !replace && !b->rect && t->smooth;
@@ -1602,17 +1608,30 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
     _Static_assert(sizeof(F8ModWrite) <= GLES_FUSED_SETUP_BYTES, "the context has room for the setup");
     F8ModWrite *const m = ctx->fused_setup;
     const uint64_t serial = b->rect ? b->rect->serial : t->serial;
+    /* the first unit's texels are sampled here where its sampler has the
+    ** vector kernel (its coordinates are in b->tx, FETCH_COORDS_TX) */
+    const int sampled0 = dot3 && ctx->sample_group[u0] > 1;
     if (ctx->fused_serial != serial) {
         f8_modwrite_setup(m, a, smooth, tex->format != GL_RGBA, replace, span_blend_kind(ctx),
                           ctx->alpha_test ? ctx->alpha_func : GL_ALWAYS, fragment_alpha_ref8(ctx));
         if (src == 1)
             modwrite_texture_setup(&m->tx, tex, ctx->samplers[u], ctx->texel_unorm8);
+        if (dot3)
+            m->dot3 = ctx->units[u0].combine_rgb == GL_DOT3_RGBA ? 2 : 1;
+        if (sampled0)
+            modwrite_texture_setup(&m->tx0, ctx->units[u0].bound, ctx->samplers[u0], ctx->texel_unorm8);
         ctx->fused_serial = serial;
     }
     const size_t stride = GLES_MAX_TEXTURE_UNITS * 4;
     _Static_assert(SPAN_CHUNK % 8 == 0, "a padded group stays within the chunk");
     const int n = avx2_modwrite_pad(F8_N, b->n, b->k, b->p, smooth, src == 1 ? b->tc : NULL,
                                     src == 0 ? b->ct[0][u] : NULL, stride);
+    for (int j = b->n; j < n && dot3; j++) {
+        if (sampled0)
+            b->tx[j] = b->tx[b->n - 1];
+        else
+            memcpy(b->ct[j][u0], b->ct[b->n - 1][u0], sizeof b->ct[j][u0]);
+    }
     const int rgb565 = ctx->color_format == GLES_COLOR_RGB565;
     if (rgb565) {
         FRAGV t_row[4];
@@ -1623,20 +1642,36 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
     f8_modwrite_dispatch(m, src, rgb565, n, b->n, b->k, (const WGT (*)[3])b->p, b->ct[0][u], stride, b->tc, b->x0,
                          chunk_color(ctx, b, rgb565));
 #else
-    avx512_modwrite(m, src, rgb565, n, b->n, b->k, (const WGT (*)[3])b->p, b->ct[0][u], stride, b->tc, b->x0,
-                    chunk_color(ctx, b, rgb565));
+    if (dot3)
+        avx512_dot3_write(m, src, rgb565, n, b->n, b->k, (const WGT (*)[3])b->p, sampled0 ? NULL : b->ct[0][u0],
+                          b->tx, b->ct[0][u], stride, b->tc, b->x0, chunk_color(ctx, b, rgb565));
+    else
+        avx512_modwrite(m, src, rgb565, n, b->n, b->k, (const WGT (*)[3])b->p, b->ct[0][u], stride, b->tc, b->x0,
+                        chunk_color(ctx, b, rgb565));
 #endif
 }
 
 static void STAGE(stage_modulate_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
-    STAGE(modulate_write)(ctx, t, b, 0);
+    STAGE(modulate_write)(ctx, t, b, 0, 0);
 }
 
 static void STAGE(stage_sample_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
-    STAGE(modulate_write)(ctx, t, b, 1);
+    STAGE(modulate_write)(ctx, t, b, 1, 0);
 }
+
+#if SIMD_AVX512_INSTANCE
+static void STAGE(stage_dot3_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    STAGE(modulate_write)(ctx, t, b, 0, 1);
+}
+
+static void STAGE(stage_dot3_sample_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    STAGE(modulate_write)(ctx, t, b, 1, 1);
+}
+#endif
 #endif
 
 static const ChainStages STAGE(chain_stages) = {
@@ -1680,6 +1715,8 @@ static const ChainStages STAGE(chain_stages) = {
 #if CHAIN_SIMD && SIMD_AVX512_INSTANCE
     .modulate_write_avx512 = STAGE(stage_modulate_write),
     .sample_write_avx512 = STAGE(stage_sample_write),
+    .dot3_write_avx512 = STAGE(stage_dot3_write),
+    .dot3_sample_write_avx512 = STAGE(stage_dot3_sample_write),
 #endif
 #if CHAIN_SIMD && NUM_IS_FIXED
     .dot3_write = STAGE(stage_dot3_write),
