@@ -118,6 +118,14 @@ static void pool_after_fork(void)
 ** then holds every row its draws asked for */
 static void pool_before_fork(void) { pool_wait(&shared_pool, atomic_load(&shared_pool.generation)); }
 
+/* 1 where the pool was free and is now the caller's */
+static int pool_take(WorkPool *pool)
+{
+    int expected = 0;
+    return atomic_compare_exchange_strong_explicit(&pool->busy, &expected, 1, memory_order_acquire,
+                                                   memory_order_relaxed);
+}
+
 static pthread_once_t pool_once = PTHREAD_ONCE_INIT;
 static void pool_init(void) { pthread_atfork(pool_before_fork, NULL, pool_after_fork); }
 
@@ -130,11 +138,8 @@ WorkPool *pool_shared(int threads)
     /* no job runs while workers join (each starts at the current
     ** generation): the pool taken as pool_acquire takes it, waiting */
     pthread_mutex_lock(&pool->growing);
-    int expected = 0;
-    while (!atomic_compare_exchange_weak(&pool->busy, &expected, 1)) {
-        expected = 0;
+    while (!pool_take(pool))
         pool_relax();
-    }
     while (pool->threads < threads) {
         PoolWorker *w = &pool->workers[pool->threads];
         w->pool = pool;
@@ -155,9 +160,7 @@ int pool_threads(const WorkPool *pool) { return pool->threads; }
 
 int pool_acquire(WorkPool *pool, int threads)
 {
-    int expected = 0;
-    if (!atomic_compare_exchange_strong_explicit(&pool->busy, &expected, 1, memory_order_acquire,
-                                                 memory_order_relaxed))
+    if (!pool_take(pool))
         return 0;
     if (pool->threads < threads) {
         /* fewer workers than the context was given (a child of fork()) */

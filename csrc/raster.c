@@ -360,6 +360,21 @@ uint32_t raster_offset_depth(const GlesContext *ctx, const TriSetup *t, uint32_t
 /* {====================================================================
 ** threads */
 
+/* thread `index`'s bands of a job, into its context c (ctx itself for the
+** caller): of each period of RASTER_BAND_ROWS x threads rows, the
+** caller's band_caller_rows first, then the workers' in equal parts of the
+** rest */
+static void raster_band_take(const GlesContext *ctx, GlesContext *c, int index)
+{
+    const int period = RASTER_BAND_ROWS * ctx->threads, caller = ctx->band_caller_rows;
+    const int rest = period - caller, workers = ctx->threads - 1;
+    c->band_index = index;
+    c->band_count = ctx->threads;
+    c->band_period = period;
+    c->band_lo = index ? caller + rest * (index - 1) / workers : 0;
+    c->band_hi = index ? caller + rest * index / workers : caller;
+}
+
 /* worker i's copy of ctx for a draw: the state as it is, its own
 ** per-primitive caches (emptied) and scratch buffers, band i. The matrix
 ** stacks (modelview to the palette, two thirds of the context) are left
@@ -384,9 +399,8 @@ static void worker_prepare(const GlesContext *ctx, GlesContext *w, int index)
     w->draw_pend = NULL;
     w->draw_pendv = NULL;
     w->threads = 1;
-    w->band_index = index;
-    w->band_count = ctx->threads;
     w->job_pending = 0;
+    raster_band_take(ctx, w, index);
 }
 
 static void raster_job(void *arg, int index)
@@ -414,21 +428,6 @@ int raster_pool_take(GlesContext *ctx, int64_t amount, int64_t threshold)
         && !samples_own_target(ctx) && pool_acquire(ctx->pool, ctx->threads);
 }
 
-/* thread `index`'s rows of each period: the caller's first, then the
-** workers' in equal parts of the rest */
-static void raster_band_rows(const GlesContext *ctx, int index, int *lo, int *hi)
-{
-    const int period = RASTER_BAND_ROWS * ctx->threads, caller = ctx->band_caller_rows;
-    if (index == 0) {
-        *lo = 0;
-        *hi = caller;
-        return;
-    }
-    const int rest = period - caller, workers = ctx->threads - 1;
-    *lo = caller + rest * (index - 1) / workers;
-    *hi = caller + rest * index / workers;
-}
-
 /* the caller's rows of a period, moved towards the share at which the
 ** caller, back from its own rows and the commands since, finds the
 ** workers just done: each join of a draw's or DrawTex's job by the next
@@ -449,44 +448,32 @@ static void raster_band_balance(GlesContext *ctx, int workers_were_running)
     ctx->band_votes = 0;
 }
 
-void raster_join(GlesContext *ctx)
-{
-    if (!ctx->job_pending)
-        return;
-    pool_wait(ctx->pool, ctx->job_ticket);
-    ctx->job_pending = 0;
-}
-
-void raster_join_next(GlesContext *ctx)
+/* the wait of raster_join and raster_join_next, which votes where `vote` */
+static void join(GlesContext *ctx, int vote)
 {
     if (!ctx->job_pending)
         return;
     const int waited = pool_wait(ctx->pool, ctx->job_ticket);
-    if (ctx->job_votes)
+    if (vote && ctx->job_votes)
         raster_band_balance(ctx, waited);
     ctx->job_pending = 0;
 }
+
+void raster_join(GlesContext *ctx) { join(ctx, 0); }
+void raster_join_next(GlesContext *ctx) { join(ctx, 1); }
 
 int raster_threaded(GlesContext *ctx, int64_t pixels, RasterWork work, const void *arg, size_t size, int votes)
 {
     raster_join(ctx);       /* (also where the work then runs on this thread alone) */
     if (size > sizeof ctx->job_arg || !raster_pool_take(ctx, pixels, RASTER_THREADED_PIXELS))
         return 0;
-    const int period = RASTER_BAND_ROWS * ctx->threads;
-    for (int i = 1; i < ctx->threads; i++) {
-        GlesContext *w = ctx->worker_ctx[i - 1];
-        worker_prepare(ctx, w, i);
-        w->band_period = period;
-        raster_band_rows(ctx, i, &w->band_lo, &w->band_hi);
-    }
+    for (int i = 1; i < ctx->threads; i++)
+        worker_prepare(ctx, ctx->worker_ctx[i - 1], i);
     /* the work's argument in the context: the workers read it after this returns */
     memcpy(ctx->job_arg, arg, size);
     ctx->job_work = work;
     ctx->job_votes = votes;
-    ctx->band_index = 0;
-    ctx->band_count = ctx->threads;
-    ctx->band_period = period;
-    raster_band_rows(ctx, 0, &ctx->band_lo, &ctx->band_hi);
+    raster_band_take(ctx, ctx, 0);
     ctx->job_ticket = pool_start(ctx->pool, raster_job, ctx, ctx->threads);
     ctx->band_count = 1;
     ctx->job_pending = 1;

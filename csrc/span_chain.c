@@ -69,6 +69,18 @@ static inline uint32_t pack565(const FRAGV v[3], int dither, FRAGV t_d)
 }
 
 /* the stages of one instance of span_stages.h */
+/* an instance's stages that sample, combine and write in one pass (NULL
+** where it has none) */
+typedef struct FusedStages {
+    SpanStage modulate_write, sample_write;
+    SpanStage dot3_write, dot3_sample_write;
+    int modulate_write_565;     /* they also write RGB565 */
+    /* the DOT3 pair repeats the separate stages' operations (the double
+    ** build's lanes), so it may take DOT3_RGBA under SRC_ALPHA blending;
+    ** the fixed build's float lanes are approximations bounded per byte */
+    int dot3_exact;
+} FusedStages;
+
 typedef struct ChainStages {
     SpanStage persp, persp_lod, depth, tests_early, tests_late, zless_early, color;
     SpanStage fetch[GLES_MAX_TEXTURE_UNITS], fetch_rect[GLES_MAX_TEXTURE_UNITS], env[GLES_MAX_TEXTURE_UNITS];
@@ -81,15 +93,10 @@ typedef struct ChainStages {
     SpanStage color_dot3_modulate;  /* float and double builds, AVX2 */
     SpanStage coords[GLES_MAX_TEXTURE_UNITS], coords_rect[GLES_MAX_TEXTURE_UNITS];
     SpanStage coords_tx[GLES_MAX_TEXTURE_UNITS];
-    /* the AVX2 instances of the fixed and float builds (RGBA8888 and
-    ** RGB565); else NULL */
-    SpanStage modulate_write, sample_write;
-    SpanStage dot3_write, dot3_sample_write;    /* NULL where the instance has none */
-    int modulate_write_565;
-    /* the double build's AVX2 instance: modulate_write, sample_write,
-    ** dot3_write and dot3_sample_write for a CPU that runs their AVX-512
-    ** kernel; else NULL */
-    SpanStage modulate_write_avx512, sample_write_avx512, dot3_write_avx512, dot3_sample_write_avx512;
+    /* the fused stages of the fixed and float builds' AVX2 instances, and
+    ** of the double build's for a CPU that runs their AVX-512 kernel
+    ** (fused_avx512) */
+    FusedStages fused, fused_avx512;
 } ChainStages;
 
 /* the baseline instance */
@@ -475,22 +482,9 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
         cs = &chain_stages_avx2;
 #endif
     /* the fused stages of this instance and CPU */
-    SpanStage modulate_write_stage = cs->modulate_write, sample_write_stage = cs->sample_write;
-    SpanStage dot3_write_stage = cs->dot3_write, dot3_sample_write_stage = cs->dot3_sample_write;
-    int modulate_write_565 = cs->modulate_write_565;
-    /* the fixed build's DOT3 lanes are float approximations bounded per
-    ** byte; the double build's repeat the separate stages' operations */
-    int dot3_exact = 0;
-#if SIMD_AVX512_INSTANCE
-    if (ctx_simd(ctx) >= SIMD_AVX512 && cs->modulate_write_avx512) {
-        modulate_write_stage = cs->modulate_write_avx512;
-        sample_write_stage = cs->sample_write_avx512;
-        dot3_write_stage = cs->dot3_write_avx512;
-        dot3_sample_write_stage = cs->dot3_sample_write_avx512;
-        modulate_write_565 = 1;
-        dot3_exact = 1;
-    }
-#endif
+    const FusedStages *fs = &cs->fused;
+    if (ctx_simd(ctx) >= SIMD_AVX512 && cs->fused_avx512.modulate_write)
+        fs = &cs->fused_avx512;
     const unsigned int units = ctx->tex_units_on;
     const int stencil = ctx->stencil_test && ctx->stencil;
     const int depth = ctx->depth_test && ctx->depth;
@@ -545,9 +539,9 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     const int plain565 = ctx->color_format == GLES_COLOR_RGB565 && ctx->color_mask[0] && ctx->color_mask[1]
                       && ctx->color_mask[2];
     const int target_fused = !ctx->fog && !(ctx->alpha_test && tests)
-                          && ((plain && bk >= 0) || (plain565 && (bk == 0 || bk == 1) && modulate_write_565))
+                          && ((plain && bk >= 0) || (plain565 && (bk == 0 || bk == 1) && fs->modulate_write_565))
                           && !ctx->color_logic_op;
-    const int writes_fused = lone >= 0 && target_fused && modulate_write_stage != NULL;
+    const int writes_fused = lone >= 0 && target_fused && fs->modulate_write != NULL;
     const int modulate_write = writes_fused && first_modulates;
     /* a first unit's DOT3 before a second one's MODULATE, on triangles
     ** (stage_dot3_write; the second unit sampled there too where it can
@@ -555,8 +549,8 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     ** SRC_ALPHA blending on RGBA8888: its alpha carries DOT3's error into
     ** both blend terms, past what the byte's margin proves
     ** (docs/architecture.md) */
-    const int dot3 = !rect && target_fused && dot3_write_stage != NULL && span_dot3_pair(ctx)
-                  && (dot3_exact || !(bk == 1 && plain && ctx->units[first].combine_rgb == GL_DOT3_RGBA));
+    const int dot3 = !rect && target_fused && fs->dot3_write != NULL && span_dot3_pair(ctx)
+                  && (fs->dot3_exact || !(bk == 1 && plain && ctx->units[first].combine_rgb == GL_DOT3_RGBA));
     /* where no fused stage takes that pair (the float build, the double
     ** build below AVX-512), the colour and both units' environments in one
     ** stage after the fetches (stage_color_dot3_modulate) */
@@ -608,16 +602,16 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
         s[n++] = ctx->sample_group[first] > 1 ? cs->coords_tx[first] : cs->fetch[first];
         if (ctx->sample_group[second] > 1) {
             s[n++] = cs->coords[second];
-            s[n++] = dot3_sample_write_stage;
+            s[n++] = fs->dot3_sample_write;
         } else {
             s[n++] = cs->fetch[second];
-            s[n++] = dot3_write_stage;
+            s[n++] = fs->dot3_write;
         }
         return n;
     }
     if (sample_write) {
         s[n++] = rect ? cs->coords_rect[lone] : cs->coords[lone];
-        s[n++] = sample_write_stage;
+        s[n++] = fs->sample_write;
         return n;
     }
     if (direct) {
@@ -633,7 +627,7 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
             if (units & (1u << u))
                 s[n++] = rect ? cs->fetch_rect[u] : cs->fetch[u];
         if (modulate_write) {
-            s[n++] = modulate_write_stage;
+            s[n++] = fs->modulate_write;
             return n;
         }
         if (dot3_env)

@@ -1707,20 +1707,18 @@ static const ChainStages STAGE(chain_stages) = {
     .write_rgba8_masked = STAGE(stage_write_rgba8_masked),
     .write_565 = STAGE(stage_write_565),
     .write_565_alpha = STAGE(stage_write_565_alpha),
-#if CHAIN_SIMD && (NUM_IS_FIXED || defined(GLES_NUM_FLOAT))
-    .modulate_write = STAGE(stage_modulate_write),
-    .sample_write = STAGE(stage_sample_write),
-    .modulate_write_565 = 1,
+#if CHAIN_SIMD && NUM_IS_FIXED
+    .fused = { .modulate_write = STAGE(stage_modulate_write), .sample_write = STAGE(stage_sample_write),
+               .dot3_write = STAGE(stage_dot3_write), .dot3_sample_write = STAGE(stage_dot3_sample_write),
+               .modulate_write_565 = 1 },
+#elif CHAIN_SIMD && defined(GLES_NUM_FLOAT)
+    .fused = { .modulate_write = STAGE(stage_modulate_write), .sample_write = STAGE(stage_sample_write),
+               .modulate_write_565 = 1 },
 #endif
 #if CHAIN_SIMD && SIMD_AVX512_INSTANCE
-    .modulate_write_avx512 = STAGE(stage_modulate_write),
-    .sample_write_avx512 = STAGE(stage_sample_write),
-    .dot3_write_avx512 = STAGE(stage_dot3_write),
-    .dot3_sample_write_avx512 = STAGE(stage_dot3_sample_write),
-#endif
-#if CHAIN_SIMD && NUM_IS_FIXED
-    .dot3_write = STAGE(stage_dot3_write),
-    .dot3_sample_write = STAGE(stage_dot3_sample_write),
+    .fused_avx512 = { .modulate_write = STAGE(stage_modulate_write), .sample_write = STAGE(stage_sample_write),
+                      .dot3_write = STAGE(stage_dot3_write), .dot3_sample_write = STAGE(stage_dot3_sample_write),
+                      .modulate_write_565 = 1, .dot3_exact = 1 },
 #endif
 #if CHAIN_SIMD && !NUM_IS_FIXED
     .color_dot3_modulate = STAGE(stage_color_dot3_modulate),
