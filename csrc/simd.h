@@ -5,9 +5,10 @@
 ** samplers also have an AVX2 instance (span_stages.h, texsample.c), taken
 ** when the CPU and the OS support AVX2 (with BMI1, BMI2 and FMA). The double
 ** build's bilinear kernel, RGBA8888 writers and fused stage have AVX-512
-** (F, DQ, BW) instances besides (span_avx512.h),
-** eight fragments to a register where AVX2 holds four; the fixed and float
-** builds' kernels hold eight fragments in AVX2's lanes already and have
+** (F, DQ, BW) instances besides (span_avx512.h), and so has the fixed
+** build's perspective stage with a level of detail (span_fx512.h): eight
+** fragments to a register where AVX2 holds four 64-bit lanes. The float
+** build's kernels hold eight fragments in AVX2's lanes already and have
 ** none. Every instance computes the same bits, and the baseline stays the
 ** portable path that tests compare with.
 */
@@ -22,11 +23,18 @@
 
 enum { SIMD_BASELINE = 0, SIMD_AVX2 = 1, SIMD_AVX512 = 2 };
 
-/* whether this build has an AVX-512 instance */
+/* whether this build has an AVX-512 instance: the double build's float
+** kernels (SIMD_AVX512_INSTANCE), the fixed build's 64-bit lanes
+** (SIMD_AVX512_FX) */
 #if SIMD_X86 && defined(GLES_NUM_DOUBLE)
 #define SIMD_AVX512_INSTANCE 1
 #else
 #define SIMD_AVX512_INSTANCE 0
+#endif
+#if SIMD_X86 && defined(GLES_NUM_FIXED)
+#define SIMD_AVX512_FX 1
+#else
+#define SIMD_AVX512_FX 0
 #endif
 
 /* the instructions of the vector instance, for the code that follows (in
@@ -49,7 +57,7 @@ static inline int simd_detect(void)
         return SIMD_BASELINE;
     /* DQ's 64-bit integer conversions and BW's byte shuffles form the
     ** unorm values (span_avx512.h); every AVX-512 CPU but Xeon Phi has them */
-    return SIMD_AVX512_INSTANCE && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq")
+    return (SIMD_AVX512_INSTANCE || SIMD_AVX512_FX) && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq")
                    && __builtin_cpu_supports("avx512bw")
              ? SIMD_AVX512
              : SIMD_AVX2;

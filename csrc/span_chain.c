@@ -117,6 +117,12 @@ SIMD_TARGET_AVX512
 #include "span_avx512.h"   /* the double build's writer (as texsample.c includes it: once) */
 #pragma GCC pop_options
 #endif
+#if SIMD_AVX512_FX
+#pragma GCC push_options
+SIMD_TARGET_AVX512
+#include "span_fx512.h"    /* the fixed build's perspective stage in eight lanes */
+#pragma GCC pop_options
+#endif
 #if NUM_IS_FIXED || defined(GLES_NUM_FLOAT)
 /* a test's fragments for a fused stage's kernel: copies with room for the
 ** padded group, as the stage pads its chunk */

