@@ -1,17 +1,21 @@
 /*
-** span_fx512.h -- the fixed build's perspective weights with the level of
-** detail's tangents (stage_persp_lod) and the level of detail's choice
-** (lod_block's lod_choose) in eight 64-bit lanes of AVX-512
-** (F, DQ, BW), taken where the CPU has it (simd.h); AVX2 holds four
-** (span_avx2.h's avx2_persp4_den, avx2_tangents4, avx2_texc_lerp3x4,
-** avx2_lod_choose4).
-** Every lane does the AVX2 kernels' integer operations, so the bits are
-** theirs and the scalar code's; what AVX-512 adds is the width and the
-** 64-bit operations AVX2 builds from several (vpsraq, vpmaxsq, vpminsq,
-** vpmullq and the int64/double conversions).
+** span_fx512.h -- the fixed build's 64-bit-lane work of trilinear
+** texturing in AVX-512 (F, DQ, BW), taken where the CPU has it (simd.h):
+** the perspective weights with the level of detail's tangents and the
+** unit's coordinates (stage_persp_lod), the level of detail's choice
+** (lod_block), the two-level bilinear mix and the fog stage. AVX2 holds
+** four 64-bit lanes (span_avx2.h's avx2_persp4_den, avx2_tangents4,
+** avx2_texc_lerp3x4, avx2_lod_choose4, avx2_sample_linear_mix,
+** avx2_fog4 and avx2_fog_mix4); these hold eight (sixteen 32-bit lanes
+** for the bilinear sums). Every lane does the AVX2 kernels' integer
+** operations, so the bits are theirs and the scalar code's; what AVX-512
+** adds is the width and the 64-bit operations AVX2 builds from several
+** (vpsraq, vpmaxsq, vpminsq, vpabsq, vpmullq, the int64/double
+** conversions, mask registers).
 ** Included by span_chain.c after span_avx2.h, inside a target pragma for
-** these instructions, and by texsample.c (the level of detail's choice);
-** the guard keeps one copy in the core's one unit. Every function is static.
+** these instructions, and by texsample.c (the level of detail's choice
+** and the mix); the guard keeps one copy in the core's one unit. Every
+** function is static.
 */
 #ifndef GLES_SPAN_FX512_H
 #define GLES_SPAN_FX512_H
@@ -294,6 +298,241 @@ static __attribute__((noinline)) int fx512_lod_choose(const Avx2LodParams *p, in
     int j = 0;
     for (; j + 8 <= n; j += 8)
         fx512_lod_choose8(p, c + j, dx + j, dy + j, key + j, frac + j);
+    return j;
+}
+/* }==================================================================== */
+
+/* {====================================================================
+** the trilinear mix (avx2_sample_linear_mix, span_avx2.h) sixteen
+** fragments at a time: each level's bilinear sum in 32-bit lanes, the
+** mix in 64-bit lanes, the AVX2 kernel's integer operations lane by lane */
+
+/* the low and high dwords of the s and t of sixteen fragments'
+** coordinates c[0..15] (lane = fragment) */
+FX512_INLINE void fx512_load_st16(const TexCoord *c, __m512i *s_lo, __m512i *s_hi, __m512i *t_lo, __m512i *t_hi)
+{
+    const __m512i q0 = _mm512_loadu_si512((const void *)&c[0]), q1 = _mm512_loadu_si512((const void *)&c[4]);
+    const __m512i q2 = _mm512_loadu_si512((const void *)&c[8]), q3 = _mm512_loadu_si512((const void *)&c[12]);
+    /* s of fragments 0-7 in the low half, t in the high one (of 8-15 from q2, q3) */
+    const __m512i lo = _mm512_setr_epi32(0, 4, 8, 12, 16, 20, 24, 28, 2, 6, 10, 14, 18, 22, 26, 30);
+    const __m512i hi = _mm512_setr_epi32(1, 5, 9, 13, 17, 21, 25, 29, 3, 7, 11, 15, 19, 23, 27, 31);
+    const __m512i a = _mm512_permutex2var_epi32(q0, lo, q1), b = _mm512_permutex2var_epi32(q2, lo, q3);
+    const __m512i c1 = _mm512_permutex2var_epi32(q0, hi, q1), d = _mm512_permutex2var_epi32(q2, hi, q3);
+    *s_lo = _mm512_shuffle_i64x2(a, b, _MM_SHUFFLE(1, 0, 1, 0));
+    *t_lo = _mm512_shuffle_i64x2(a, b, _MM_SHUFFLE(3, 2, 3, 2));
+    *s_hi = _mm512_shuffle_i64x2(c1, d, _MM_SHUFFLE(1, 0, 1, 0));
+    *t_hi = _mm512_shuffle_i64x2(c1, d, _MM_SHUFFLE(3, 2, 3, 2));
+}
+
+/* avx2_linear_axis8 of sixteen coordinates */
+FX512_INLINE void fx512_linear_axis16(__m512i lo, __m512i hi, int log2n, int repeat, __m512i *i0, __m512i *i1,
+                                      __m512i *w)
+{
+    const __m128i to_index = _mm_cvtsi32_si128(32 - log2n), up = _mm_cvtsi32_si128(log2n);
+    const __m512i half = _mm512_set1_epi32((int)(0x80000000u >> log2n));
+    const __m512i one = _mm512_set1_epi32(1);
+    const int n = 1 << log2n;
+    if (repeat) {
+        const __m512i g = _mm512_sub_epi32(lo, half);
+        const __m512i mask = _mm512_set1_epi32(n - 1);
+        *i0 = _mm512_and_si512(_mm512_srl_epi32(g, to_index), mask);
+        *i1 = _mm512_and_si512(_mm512_add_epi32(*i0, one), mask);
+        *w = _mm512_srli_epi32(_mm512_sll_epi32(g, up), 16);
+        return;
+    }
+    const __mmask16 below = _mm512_cmpgt_epi32_mask(_mm512_set1_epi32(-1), hi);    /* s < -1 */
+    const __mmask16 above = _mm512_cmpgt_epi32_mask(hi, one);                      /* s >= 2 */
+    hi = _mm512_mask_mov_epi32(_mm512_mask_mov_epi32(hi, below, _mm512_set1_epi32(-1)), above, _mm512_set1_epi32(2));
+    lo = _mm512_maskz_mov_epi32((__mmask16)~(below | above), lo);
+    const __m512i g = _mm512_sub_epi32(lo, half);
+    /* a borrow (-1) where lo < half, unsigned */
+    const __m512i h = _mm512_mask_sub_epi32(hi, _mm512_cmplt_epu32_mask(lo, half), hi, one);
+    const __m512i ip = _mm512_add_epi32(_mm512_sll_epi32(h, up), _mm512_srl_epi32(g, to_index));
+    const __m512i zero = _mm512_setzero_si512(), top = _mm512_set1_epi32(n - 1);
+    *i0 = _mm512_min_epi32(_mm512_max_epi32(ip, zero), top);
+    *i1 = _mm512_min_epi32(_mm512_max_epi32(_mm512_add_epi32(ip, one), zero), top);
+    *w = _mm512_srli_epi32(_mm512_sll_epi32(g, up), 16);
+}
+
+/* the texels at indices i (sixteen lanes) and i + 1 (no lane at the
+** level's right edge), as two registers, by two gathers of eight 64-bit
+** words (each word is the pair) */
+FX512_INLINE void fx512_gather_pairs(const int *tx32, __m512i i, __m512i *left, __m512i *right)
+{
+    const __m512i lo = _mm512_i32gather_epi64(_mm512_castsi512_si256(i), (const void *)tx32, 4);
+    const __m512i hi = _mm512_i32gather_epi64(_mm512_extracti64x4_epi64(i, 1), (const void *)tx32, 4);
+    *left = _mm512_permutex2var_epi32(lo, _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30),
+                                      hi);
+    *right = _mm512_permutex2var_epi32(lo, _mm512_setr_epi32(1, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23, 25, 27, 29, 31),
+                                       hi);
+}
+
+/* avx2_bilerp8_channel of sixteen fragments: channel `sh` of the texel
+** words g[0..3] filtered by the 16-bit weights a, b (ia = 2^16 - a, ib) */
+FX512_INLINE __m512i fx512_bilerp16_channel(const __m512i g[4], int sh, __m512i a, __m512i ia, __m512i b, __m512i ib)
+{
+    const __m512i byte = _mm512_set1_epi32(0xFF);
+    __m512i c[4];
+    for (int i = 0; i < 4; i++)
+        c[i] = sh == 24 ? _mm512_srli_epi32(g[i], 24) : _mm512_and_si512(_mm512_srli_epi32(g[i], sh), byte);
+    const __m512i h0 = _mm512_add_epi32(_mm512_mullo_epi32(c[0], ia), _mm512_mullo_epi32(c[1], a));
+    const __m512i h1 = _mm512_add_epi32(_mm512_mullo_epi32(c[2], ia), _mm512_mullo_epi32(c[3], a));
+    const __m512i hi = _mm512_add_epi32(_mm512_mullo_epi32(_mm512_srli_epi32(h0, 8), ib),
+                                        _mm512_mullo_epi32(_mm512_srli_epi32(h1, 8), b));
+    __m512i lo = _mm512_add_epi32(_mm512_mullo_epi32(_mm512_and_si512(h0, byte), ib),
+                                  _mm512_mullo_epi32(_mm512_and_si512(h1, byte), b));
+    lo = _mm512_srli_epi32(_mm512_add_epi32(lo, _mm512_set1_epi32(128)), 8);
+    return _mm512_add_epi32(hi, lo);
+}
+
+/* a level's four channels of sixteen fragments at coordinates c[0..15]
+** (avx2_linear_channels8's texels and sums) */
+FX512_INLINE void fx512_linear_channels16(const TexImage *li, const TexCoord *c, int repeat_s, int repeat_t,
+                                          __m512i ch[4])
+{
+    const int log2w = __builtin_ctz((unsigned)li->width), log2h = __builtin_ctz((unsigned)li->height);
+    const int *tx32 = (const int *)(const void *)li->texels;
+    __m512i s_lo, s_hi, t_lo, t_hi, xa, xb, ya, yb, a, b, g[4];
+    fx512_load_st16(c, &s_lo, &s_hi, &t_lo, &t_hi);
+    fx512_linear_axis16(s_lo, s_hi, log2w, repeat_s, &xa, &xb, &a);
+    fx512_linear_axis16(t_lo, t_hi, log2h, repeat_t, &ya, &yb, &b);
+    const __m512i r0 = _mm512_slli_epi32(ya, log2w), r1 = _mm512_slli_epi32(yb, log2w);
+    if (_mm512_cmpeq_epi32_mask(xb, _mm512_add_epi32(xa, _mm512_set1_epi32(1))) == 0xFFFF) {
+        fx512_gather_pairs(tx32, _mm512_add_epi32(r0, xa), &g[0], &g[1]);
+        fx512_gather_pairs(tx32, _mm512_add_epi32(r1, xa), &g[2], &g[3]);
+    } else {
+        g[0] = _mm512_i32gather_epi32(_mm512_add_epi32(r0, xa), (const void *)tx32, 4);
+        g[1] = _mm512_i32gather_epi32(_mm512_add_epi32(r0, xb), (const void *)tx32, 4);
+        g[2] = _mm512_i32gather_epi32(_mm512_add_epi32(r1, xa), (const void *)tx32, 4);
+        g[3] = _mm512_i32gather_epi32(_mm512_add_epi32(r1, xb), (const void *)tx32, 4);
+    }
+    const __m512i one16 = _mm512_set1_epi32(65536);
+    const __m512i ia = _mm512_sub_epi32(one16, a), ib = _mm512_sub_epi32(one16, b);
+    for (int k = 0; k < 4; k++)
+        ch[k] = fx512_bilerp16_channel(g, 8 * k, a, ia, b, ib);
+}
+
+/* avx2_bilerp_to_frag of eight fragments' sums r (< 2^32) */
+FX512_INLINE __m512i fx512_bilerp_to_frag(__m256i r)
+{
+    const __m512i p = _mm512_mul_epu32(_mm512_cvtepu32_epi64(r), _mm512_set1_epi64(16843009));
+    return _mm512_srli_epi64(_mm512_add_epi64(p, _mm512_set1_epi64((int64_t)1 << 25)), 26);
+}
+
+/* the four channels of eight fragments (lane = fragment, 64-bit lanes)
+** stored as each fragment's FRAGV[4] at out + k * stride */
+FX512_INLINE void fx512_store_transposed8(const __m512i v[4], FRAGV *out, size_t stride)
+{
+    const __m512i t0 = _mm512_unpacklo_epi64(v[0], v[1]), t1 = _mm512_unpackhi_epi64(v[0], v[1]);
+    const __m512i t2 = _mm512_unpacklo_epi64(v[2], v[3]), t3 = _mm512_unpackhi_epi64(v[2], v[3]);
+    /* (fragment 0 | 2), (1 | 3), (4 | 6), (5 | 7) */
+    const __m512i first = _mm512_setr_epi64(0, 1, 8, 9, 2, 3, 10, 11), second = _mm512_setr_epi64(4, 5, 12, 13, 6, 7, 14, 15);
+    const __m512i f[4] = { _mm512_permutex2var_epi64(t0, first, t2), _mm512_permutex2var_epi64(t1, first, t3),
+                           _mm512_permutex2var_epi64(t0, second, t2), _mm512_permutex2var_epi64(t1, second, t3) };
+    for (int k = 0; k < 4; k++) {
+        const int at = 4 * (k >> 1) + (k & 1);      /* fragments at, at + 2 */
+        _mm256_storeu_si256((__m256i *)(void *)(out + (size_t)at * stride), _mm512_castsi512_si256(f[k]));
+        _mm256_storeu_si256((__m256i *)(void *)(out + (size_t)(at + 2) * stride), _mm512_extracti64x4_epi64(f[k], 1));
+    }
+}
+
+/* avx2_sample_linear_mix over fragments 0..n-1 sixteen at a time: level
+** l1's and l2's bilinear texels, mixed by frac as frag_mul (the product
+** of a difference and frac, both in int32 range, rounded by 2^29 and
+** shifted arithmetically); returns the fragments done (n rounded down to
+** sixteen) */
+static __attribute__((noinline)) int fx512_sample_linear_mix(const TexImage *l1, const TexImage *l2, int n,
+                                                             const TexCoord *c, const FRAGV *frac, FRAGV *out,
+                                                             size_t stride, int repeat_s, int repeat_t)
+{
+    int j = 0;
+    for (; j + 16 <= n; j += 16) {
+        __m512i ch1[4], ch2[4];
+        fx512_linear_channels16(l1, c + j, repeat_s, repeat_t, ch1);
+        fx512_linear_channels16(l2, c + j, repeat_s, repeat_t, ch2);
+        for (int h = 0; h < 2; h++) {
+            const __m512i f = _mm512_loadu_si512((const void *)&frac[j + 8 * h]);
+            __m512i v[4];
+            for (int k = 0; k < 4; k++) {
+                const __m512i t1 = fx512_bilerp_to_frag(h ? _mm512_extracti64x4_epi64(ch1[k], 1)
+                                                          : _mm512_castsi512_si256(ch1[k]));
+                const __m512i t2 = fx512_bilerp_to_frag(h ? _mm512_extracti64x4_epi64(ch2[k], 1)
+                                                          : _mm512_castsi512_si256(ch2[k]));
+                const __m512i p = _mm512_add_epi64(_mm512_mul_epi32(_mm512_sub_epi64(t2, t1), f),
+                                                   _mm512_set1_epi64((int64_t)1 << 29));
+                v[k] = _mm512_add_epi64(t1, _mm512_srai_epi64(p, 30));
+            }
+            fx512_store_transposed8(v, out + (size_t)(j + 8 * h) * stride, stride);
+        }
+    }
+    return j;
+}
+/* }==================================================================== */
+
+/* {====================================================================
+** fog (stage_fog's per-vertex factor) for eight fragments at a time:
+** avx2_fog4's factor and avx2_fog_mix4's mix, lane by lane */
+
+/* the weights p[0..7][i] of eight fragments as the low dwords of 64-bit
+** lanes w[i] (what vpmuldq reads; the high dwords are any) */
+FX512_INLINE void fx512_wgt_lanes8(const WGT (*p)[3], __m512i w[3])
+{
+    const int32_t *q = &p[0][0];
+    const __m512i a = _mm512_loadu_si512((const void *)q);                                        /* ints 0..15 */
+    const __m512i b = _mm512_castsi256_si512(_mm256_loadu_si256((const __m256i *)(const void *)(q + 16)));   /* 16..23 */
+    for (int i = 0; i < 3; i++)
+        w[i] = _mm512_permutex2var_epi32(a, _mm512_setr_epi32(i, 0, 3 + i, 0, 6 + i, 0, 9 + i, 0, 12 + i, 0, 15 + i, 0,
+                                                              18 + i, 0, 21 + i, 0),
+                                         b);
+}
+
+/* lanes clamped to [0, 1] (0.30) */
+FX512_INLINE __m512i fx512_clamp01(__m512i v)
+{
+    return _mm512_min_epi64(_mm512_max_epi64(v, _mm512_setzero_si512()), _mm512_set1_epi64(FRAG_ONE));
+}
+
+/* frag_mul of lanes in [0, 2^32): (a b + 2^29) >> 30 */
+FX512_INLINE __m512i fx512_mul_u(__m512i a, __m512i b)
+{
+    return _mm512_srli_epi64(_mm512_add_epi64(_mm512_mul_epu32(a, b), _mm512_set1_epi64((int64_t)1 << 29)), 30);
+}
+
+/* stage_fog's mix of fragments 0..n-1's colours c with the per-vertex
+** factors a[0..2] (each in [-2^30, 2^30]) at their weights p, eight at a
+** time: the factor a0 w0 + a1 w1 + a2 w2 rounded half away from zero by 16
+** bits and clamped to [0, 1], then frag_mul(f, clamp01(c)) + frag_mul(1 -
+** f, fc) in the three colour channels (the fog colour's channels fc in
+** [0, 2^31)); returns the fragments done (n rounded down to eight) */
+static __attribute__((noinline)) int fx512_fog(const NUM a[3], const WGT (*p)[3], FRAGV (*c)[4], int n,
+                                               const FRAGV fc[3])
+{
+    const __m512i av[3] = { _mm512_set1_epi64(a[0]), _mm512_set1_epi64(a[1]), _mm512_set1_epi64(a[2]) };
+    const __m512i fcv[3] = { _mm512_set1_epi64(fc[0]), _mm512_set1_epi64(fc[1]), _mm512_set1_epi64(fc[2]) };
+    /* (r | g) and (b | a) of four fragments, from two registers of two */
+    const __m512i rg = _mm512_setr_epi64(0, 4, 8, 12, 1, 5, 9, 13), ba = _mm512_setr_epi64(2, 6, 10, 14, 3, 7, 11, 15);
+    int j = 0;
+    for (; j + 8 <= n; j += 8) {
+        __m512i w[3];
+        fx512_wgt_lanes8(&p[j], w);
+        const __m512i acc = _mm512_add_epi64(_mm512_add_epi64(_mm512_mul_epi32(av[0], w[0]), _mm512_mul_epi32(av[1], w[1])),
+                                             _mm512_mul_epi32(av[2], w[2]));
+        const __m512i f = fx512_clamp01(_mm512_srai_epi64(
+            _mm512_add_epi64(_mm512_add_epi64(acc, _mm512_set1_epi64((int64_t)1 << 15)), _mm512_srai_epi64(acc, 63)), 16));
+        const __m512i g = _mm512_sub_epi64(_mm512_set1_epi64(FRAG_ONE), f);
+        __m512i z[4];
+        for (int k = 0; k < 4; k++)
+            z[k] = _mm512_loadu_si512((const void *)c[j + 2 * k]);
+        const __m512i x0 = _mm512_permutex2var_epi64(z[0], rg, z[1]), y0 = _mm512_permutex2var_epi64(z[2], rg, z[3]);
+        const __m512i x1 = _mm512_permutex2var_epi64(z[0], ba, z[1]), y1 = _mm512_permutex2var_epi64(z[2], ba, z[3]);
+        __m512i ch[4] = { _mm512_shuffle_i64x2(x0, y0, _MM_SHUFFLE(1, 0, 1, 0)),
+                          _mm512_shuffle_i64x2(x0, y0, _MM_SHUFFLE(3, 2, 3, 2)),
+                          _mm512_shuffle_i64x2(x1, y1, _MM_SHUFFLE(1, 0, 1, 0)),
+                          _mm512_shuffle_i64x2(x1, y1, _MM_SHUFFLE(3, 2, 3, 2)) };
+        for (int i = 0; i < 3; i++)
+            ch[i] = _mm512_add_epi64(fx512_mul_u(f, fx512_clamp01(ch[i])), fx512_mul_u(g, fcv[i]));
+        fx512_store_transposed8(ch, c[j], 4);
+    }
     return j;
 }
 /* }==================================================================== */

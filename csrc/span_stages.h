@@ -1068,6 +1068,10 @@ static void STAGE(stage_fog)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
     if (!ctx->fog_per_fragment && fits && v4_fits(fog)) {
 #if NUM_IS_FIXED
         const __m256i fcv[3] = { _mm256_set1_epi64x(fc[0]), _mm256_set1_epi64x(fc[1]), _mm256_set1_epi64x(fc[2]) };
+#if SIMD_AVX512_FX
+        if (ctx_simd(ctx) >= SIMD_AVX512)    /* eight at a time, the rest as below */
+            j = fx512_fog(a, (const WGT (*)[3])b->p, b->c, b->n, fc);
+#endif
         for (; j + 4 <= b->n; j += 4)
             avx2_fog_mix4(&b->c[j], avx2_fog4(a, (const WGT (*)[3])&b->p[j]), fcv);
 #else

@@ -657,8 +657,14 @@ static int lod_block(int simd, const Texture *t, int n, const TexCoord *c, const
         int mixed = 0;
 #if NUM_IS_FIXED
         if (two && m4) {
-            avx2_sample_linear_mix(&t->level[level], &t->level[level + 1], m4, c + j, frac + j,
-                                   out + (size_t)j * stride, stride, ws == GL_REPEAT, wt == GL_REPEAT);
+            int d = 0;
+#if SIMD_AVX512_FX
+            if (simd >= SIMD_AVX512)    /* sixteen at a time, the rest as below */
+                d = fx512_sample_linear_mix(&t->level[level], &t->level[level + 1], m4, c + j, frac + j,
+                                            out + (size_t)j * stride, stride, ws == GL_REPEAT, wt == GL_REPEAT);
+#endif
+            avx2_sample_linear_mix(&t->level[level], &t->level[level + 1], m4 - d, c + j + d, frac + j + d,
+                                   out + (size_t)(j + d) * stride, stride, ws == GL_REPEAT, wt == GL_REPEAT);
             mixed = m4;
         }
 #endif

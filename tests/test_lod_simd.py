@@ -237,3 +237,34 @@ def test_inputs_reach_every_boundary():
     np.testing.assert_array_equal(vec, base)
     red = base[:, 0]
     assert ((red > 0) & (red < 1 << 30)).sum() > 300        # frac shows in red
+
+
+@pytest.mark.parametrize("wrap", WRAPS[:4], ids=WRAP_IDS[:4])
+@pytest.mark.parametrize("size", [(256, 256), (64, 4), (8, 32)], ids=["256x256", "64x4", "8x32"])
+def test_long_runs_of_one_level_pair_match_scalar(size, wrap):
+    """Runs of up to 64 fragments with one footprint (so one level pair and
+    one mix fraction) and scattered coordinates, near the edges too: the
+    trilinear mix's groups of eight (AVX2) and sixteen (AVX-512) give the
+    baseline's texels at full precision (0.30), where a rounding off by one
+    unit shows."""
+    rng = np.random.default_rng(size[0] * 7 + size[1] + 100 * WRAPS.index(wrap))
+    w, h = size
+    ctx = make_ctx("fixed", 4, 4)
+    _texture(ctx, w, h, C.GL_LINEAR_MIPMAP_LINEAR, C.GL_LINEAR, wrap, rng)
+    rows = []
+    for run in range(24):
+        n = int(rng.integers(16, 65))
+        # lambda between 0.05 and q - 0.05: rho = 2^lambda texels per pixel along s
+        lam = rng.uniform(0.05, max(w, h).bit_length() - 1.05)
+        ds = (2.0 ** lam) / w
+        st = rng.uniform(-1.5, 2.5, (n, 2))
+        if run % 3 == 0:                        # on and beside the right and top edges
+            st[:, 0] = rng.choice([1 - 0.5 / w, 1.0, 1 + 0.25 / w, -0.25 / w], n)
+        rows += np.concatenate([st, st + [ds, 0.0], st + [0.0, ds * w / h / 4]], axis=1).tolist()
+    coords = np.ascontiguousarray(np.array(rows, dtype=np.float64))
+    base = _sampled(ctx, coords, 0)
+    np.testing.assert_array_equal(_sampled(ctx, coords, 1), base, err_msg="avx2")
+    if ctx.simd == "avx512":
+        np.testing.assert_array_equal(_sampled(ctx, coords, 2), base, err_msg="avx512")
+    red = base[:, 0]
+    assert ((red > 0) & (red < 1 << 30)).mean() > 0.5     # mixes of two levels

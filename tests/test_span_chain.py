@@ -1311,7 +1311,8 @@ def _mipmapped_plane(numeric: str, flags: int, case: str) -> np.ndarray:
     formed with the weights), "q" (a projective unit: the tangents'
     weights stored instead), "two" (a second unit beside the one with the
     level of detail), "depth" (a depth test dropping fragments, so that
-    slots are not the offsets)."""
+    slots are not the offsets), "fog" (linear fog from the vertices'
+    distances, mixed in the fog stage's groups)."""
     w, h = 160, 96
     ctx = make_ctx(numeric, w, h, depth=24 if case == "depth" else 0)
     gl = ctx.gl
@@ -1336,6 +1337,12 @@ def _mipmapped_plane(numeric: str, flags: int, case: str) -> np.ndarray:
         gl.glEnable(C.GL_TEXTURE_2D)
         gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_MODULATE)
     gl.glActiveTexture(C.GL_TEXTURE0)
+    if case == "fog":
+        gl.glEnable(C.GL_FOG)
+        gl.glFogf(C.GL_FOG_MODE, C.GL_LINEAR)
+        gl.glFogf(C.GL_FOG_START, 3.0)
+        gl.glFogf(C.GL_FOG_END, 170.0)
+        gl.glFogfv(C.GL_FOG_COLOR, [0.55, 0.65, 0.8, 1.0])
     gl.glViewport(0, 0, w, h)
     gl.glMatrixMode(C.GL_PROJECTION)
     gl.glLoadIdentity()
@@ -1383,7 +1390,7 @@ def _mipmapped_plane(numeric: str, flags: int, case: str) -> np.ndarray:
 
 
 @pytest.mark.parametrize("numeric", BUILDS)
-@pytest.mark.parametrize("case", ["st", "q", "two", "depth"])
+@pytest.mark.parametrize("case", ["st", "q", "two", "depth", "fog"])
 def test_mipmapped_plane_matches_generic_on_every_instance(numeric, case):
     """Each instance of the chain (the best this CPU runs, AVX2, the baseline)
     draws the plane with the per-fragment reference's bits."""
