@@ -214,19 +214,21 @@ static void STAGE(stage_persp)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
         b->tx_unit = v;
         b->tx_done = j;
     }
-    /* the loop's constants in locals (stores to b->p could alias t and b) */
-    const WgtSetup ws = t->wgt;
-    Edges4 ed;
-    avx2_edges4_setup(b->e0, t->ea, &ed);
     const int n = b->n;
-    WGT (*const p)[3] = b->p;
-    for (; j + 4 <= n; j += 4) {
-        __m256i e[3];
-        avx2_edges4(&ed, &b->k[j], e);
-        if (!STAGE(persp4)(&ws, e, &p[j]))
-            /* a lane out of the kernels' ranges: the group by the scalar code */
-            for (int k = j; k < j + 4; k++)
-                STAGE(persp1)(t, b, k);
+    if (j + 4 <= n) {   /* (the stepped run above often leaves none) */
+        /* the loop's constants in locals (stores to b->p could alias t and b) */
+        const WgtSetup ws = t->wgt;
+        Edges4 ed;
+        avx2_edges4_setup(b->e0, t->ea, &ed);
+        WGT (*const p)[3] = b->p;
+        for (; j + 4 <= n; j += 4) {
+            __m256i e[3];
+            avx2_edges4(&ed, &b->k[j], e);
+            if (!STAGE(persp4)(&ws, e, &p[j]))
+                /* a lane out of the kernels' ranges: the group by the scalar code */
+                for (int k = j; k < j + 4; k++)
+                    STAGE(persp1)(t, b, k);
+        }
     }
 #endif
     for (; j < b->n; j++)
@@ -741,6 +743,12 @@ static void STAGE(stage_fetch)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, 
     /* stage_persp may have formed the first ones (not with neighbours), or
     ** stage_persp_lod the first ones with them */
     const int from = b->tc_unit == u && !lod ? b->tc_done : b->lod_unit == u && lod ? b->lod_done : 0;
+    if (mode == FETCH_COORDS && from >= b->n && b->lod_unit != u) {
+        /* every coordinate formed, and a later stage samples: nothing to do
+        ** (a chunk of a small triangle pays the setup below otherwise) */
+        b->tc_unit = -1;
+        return;
+    }
     b->tc_unit = -1;
     if (b->lod_unit == u)
         b->lod_unit = -1;
