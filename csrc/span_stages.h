@@ -271,11 +271,6 @@ static void STAGE(stage_persp_lod)(GlesContext *ctx, const TriSetup *t, SpanBuf 
     Edges4 ed;
     avx2_edges4_setup(b->e0, t->ea, &ed);
     WGT (*const p)[3] = b->p, (*const px)[3] = b->px, (*const py)[3] = b->py;
-#if NUM_IS_FIXED
-    /* the weights and their divisions first, then the tangents: as one
-    ** loop, each group's division, tangents and stores form one long chain
-    ** of dependent operations, and the groups overlap less (measured) */
-    __m256i dens[SPAN_CHUNK / 4];
     /* the chain's one unit with a level of detail, where it has no q: its
     ** coordinates at the weights and the tangents from the same lanes
     ** (stage_fetch forms them so from the stored weights), into b->tc, tx
@@ -285,6 +280,12 @@ static void STAGE(stage_persp_lod)(GlesContext *ctx, const TriSetup *t, SpanBuf 
     int done = u >= 0 && !((t->tex_projective >> u) & 1) ? 0 : -1;
     NUM sv[3], tv[3];
     span_unit_st(t, done == 0 ? u : -1, sv, tv);
+    TexCoord *const tc = b->tc, *const tx = b->tx, *const ty = b->ty;
+#if NUM_IS_FIXED
+    /* the weights and their divisions first, then the tangents: as one
+    ** loop, each group's division, tangents and stores form one long chain
+    ** of dependent operations, and the groups overlap less (measured) */
+    __m256i dens[SPAN_CHUNK / 4];
 #if SIMD_AVX512_FX
     /* groups of eight by AVX-512 where it runs, as far as they go */
     if (ctx && ctx_simd(ctx) >= SIMD_AVX512) {
@@ -318,14 +319,30 @@ static void STAGE(stage_persp_lod)(GlesContext *ctx, const TriSetup *t, SpanBuf 
         }
         v4_persp4_lanes_den(&ws, ev, l, &inv);
         v4_store_wgt4(l, &p[j]);
+        if (done == j) {
+            /* the coordinates at the lanes (v4_tex_coord_affine4 is
+            ** span_tex_coord's operations for a unit without q) */
+            v4_tex_coord_affine4(sv, tv, l, &tc[j]);
+            v4_tangent4(&tan[0], l, inv, o);
+            v4_tex_coord_affine4(sv, tv, o, &tx[j]);
+            v4_tangent4(&tan[1], l, inv, o);
+            v4_tex_coord_affine4(sv, tv, o, &ty[j]);
+            done += 4;
+            continue;
+        }
         v4_tangent4(&tan[0], l, inv, o);
         v4_store_wgt4(o, &px[j]);
         v4_tangent4(&tan[1], l, inv, o);
         v4_store_wgt4(o, &py[j]);
 #endif
     }
+#if !NUM_IS_FIXED
+    if (done > 0) {
+        b->lod_unit = u;
+        b->lod_done = done;
+    }
+#endif
 #if NUM_IS_FIXED
-    TexCoord *const tc = b->tc, *const tx = b->tx, *const ty = b->ty;
     for (int i = simd_from; i + 4 <= j; i += 4) {
         __m256i l[3], o[2][3];
         if (_mm256_testz_si256(dens[i / 4], dens[i / 4]))
@@ -771,12 +788,12 @@ static void STAGE(stage_fetch)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, 
     }
 #else
 #define TEX_COORD(p, out) span_tex_coord(t, u, p, out)
-    const int four = 0, tail = from;
+    const int tail = from;
 #endif
     for (int j = tail; j < b->n; j++)
         TEX_COORD(b->p[j], &b->tc[j]);
     if (lod)
-        for (int j = four; j < b->n; j++) {
+        for (int j = tail; j < b->n; j++) {
             TEX_COORD(b->px[j], &b->tx[j]);
             TEX_COORD(b->py[j], &b->ty[j]);
         }
