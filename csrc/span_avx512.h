@@ -1,6 +1,7 @@
 /*
-** span_avx512.h -- the double build's bilinear kernel, RGBA8888 writers
-** and fused sample/modulate/write stage (span_float8.h's kernel, also
+** span_avx512.h -- the double build's bilinear kernel, RGBA8888 writers,
+** perspective stage with a level of detail (d8_persp_lod) and fused
+** sample/modulate/write stage (span_float8.h's kernel, also
 ** with the DOT3 pair before the MODULATE) in eight lanes of AVX-512 (F,
 ** DQ, BW), taken where the CPU has it (simd.h); AVX2 holds four of its
 ** fragments to a register. The fixed and float
@@ -246,6 +247,111 @@ static __attribute__((noinline)) void avx512_dot3_write(const F8ModWrite *m, int
 {
     f8_modwrite_dispatch_dot3(m, src, rgb565, 1, n, live, k, p, ct0, tc0, ct, stride, tc, x0, dst);
 }
+/* {====================================================================
+** stage_persp_lod of the double build eight fragments at a time: the
+** AVX2 stage's V4 operations (v4_persp4_lanes_den, v4_tangent4,
+** v4_tex_coord_affine4: each a product, sum or quotient of doubles in the
+** same order, no FMA) over eight lanes */
+
+/* eight fragments' weights o[0..2] (lanes) stored as out[lane][0..2] */
+AVX512_INLINE void d8_store_wgt8(const __m512d o[3], double (*out)[3])
+{
+    static const int64_t ab[3][8] = { { 0, 8, 0, 1, 9, 0, 2, 10 }, { 0, 3, 11, 0, 4, 12, 0, 5 },
+                                      { 13, 0, 6, 14, 0, 7, 15, 0 } };
+    static const int64_t abc[3][8] = { { 0, 1, 8, 3, 4, 9, 6, 7 }, { 10, 1, 2, 11, 4, 5, 12, 7 },
+                                       { 0, 13, 2, 3, 14, 5, 6, 15 } };
+    double *d = &out[0][0];
+    for (int k = 0; k < 3; k++) {
+        const __m512d x = _mm512_permutex2var_pd(o[0], _mm512_loadu_si512((const void *)ab[k]), o[1]);
+        _mm512_storeu_pd(d + 8 * k, _mm512_permutex2var_pd(x, _mm512_loadu_si512((const void *)abc[k]), o[2]));
+    }
+}
+
+/* v4_tex_coord_affine4 of eight fragments */
+AVX512_INLINE void d8_tex_coord8(const double sv[3], const double tv[3], const __m512d o[3], TexCoord *out)
+{
+#define D8_LERP3(a) _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(_mm512_set1_pd(a[0]), o[0]), \
+                                                _mm512_mul_pd(_mm512_set1_pd(a[1]), o[1])), \
+                                  _mm512_mul_pd(_mm512_set1_pd(a[2]), o[2]))
+    const __m512d s = D8_LERP3(sv), t = D8_LERP3(tv);
+#undef D8_LERP3
+    const __m512d lo = _mm512_unpacklo_pd(s, t), hi = _mm512_unpackhi_pd(s, t);   /* s0 t0 s2 t2 ..., s1 t1 s3 t3 ... */
+    _mm512_storeu_pd(&out[0].s, _mm512_permutex2var_pd(lo, _mm512_setr_epi64(0, 1, 8, 9, 2, 3, 10, 11), hi));
+    _mm512_storeu_pd(&out[4].s, _mm512_permutex2var_pd(lo, _mm512_setr_epi64(4, 5, 12, 13, 6, 7, 14, 15), hi));
+}
+
+/* v4_tangent4 of eight fragments */
+AVX512_INLINE void d8_tangent8(const WgtTangent *g, const __m512d o[3], __m512d inv, __m512d out[3])
+{
+    const __m512d a0 = _mm512_mul_pd(_mm512_set1_pd(g->a[0]), inv), a1 = _mm512_mul_pd(_mm512_set1_pd(g->a[1]), inv);
+    const __m512d a2 = _mm512_mul_pd(_mm512_set1_pd(g->a[2]), inv);
+    const __m512d r = _mm512_add_pd(_mm512_add_pd(a0, a1), a2);
+    out[1] = _mm512_add_pd(o[1], _mm512_sub_pd(a1, _mm512_mul_pd(o[1], r)));
+    out[2] = _mm512_add_pd(o[2], _mm512_sub_pd(a2, _mm512_mul_pd(o[2], r)));
+    out[0] = _mm512_sub_pd(_mm512_sub_pd(_mm512_set1_pd(1), out[1]), out[2]);
+}
+
+/* stage_persp_lod's groups of eight slots from slot 0 of a triangle that
+** is not affine, up to the first group with an edge value of magnitude
+** 2^51 or more (v4_edge_lanes' range; the AVX2 code then takes it): the
+** weights into b->p, and where sv is not NULL (the chain's unit with a
+** level of detail, without q) its coordinates at the weights and at both
+** tangents into b->tc, tx and ty, else the tangent weights into b->px and
+** b->py. Returns the slots done (a multiple of eight). */
+static __attribute__((noinline)) int d8_persp_lod(const WgtSetup *ws, const WgtTangent tan[2], const int64_t ea[3],
+                                                  SpanBuf *b, const double *sv, const double *tv)
+{
+    const WgtSetup s = *ws;
+    const WgtTangent g[2] = { tan[0], tan[1] };
+    __m512i e0[3], eav[3];
+    for (int i = 0; i < 3; i++) {
+        e0[i] = _mm512_set1_epi64(b->e0[i]);
+        eav[i] = _mm512_set1_epi64(ea[i]);
+    }
+    double a_s[3] = { 0, 0, 0 }, a_t[3] = { 0, 0, 0 };
+    if (sv)
+        for (int i = 0; i < 3; i++)
+            a_s[i] = sv[i], a_t[i] = tv[i];
+    const __m512i bias = _mm512_set1_epi64((int64_t)1 << 51), high = _mm512_set1_epi64(~(((int64_t)1 << 52) - 1));
+    const int n8 = b->n & ~7;
+    int j = 0;
+    for (; j < n8; j += 8) {
+        const __m512i kv = _mm512_cvtepu8_epi64(_mm_loadl_epi64((const __m128i *)(const void *)&b->k[j]));
+        __m512d ev[3];
+        __m512i far = _mm512_setzero_si512();
+        for (int i = 0; i < 3; i++) {
+            const __m512i e = _mm512_add_epi64(e0[i], _mm512_mullo_epi64(kv, eav[i]));
+            far = _mm512_or_si512(far, _mm512_and_si512(_mm512_add_epi64(e, bias), high));
+            ev[i] = _mm512_cvtepi64_pd(e);
+        }
+        if (_mm512_test_epi64_mask(far, far))
+            break;
+        const __m512d n0 = _mm512_mul_pd(ev[0], _mm512_set1_pd(s.q[0]));
+        const __m512d n1 = _mm512_mul_pd(ev[1], _mm512_set1_pd(s.q[1]));
+        const __m512d n2 = _mm512_mul_pd(ev[2], _mm512_set1_pd(s.q[2]));
+        const __m512d inv = _mm512_div_pd(_mm512_set1_pd(1), _mm512_add_pd(_mm512_add_pd(n0, n1), n2));
+        __m512d l[3], o[3];
+        l[1] = _mm512_mul_pd(n1, inv);
+        l[2] = _mm512_mul_pd(n2, inv);
+        l[0] = _mm512_sub_pd(_mm512_sub_pd(_mm512_set1_pd(1), l[1]), l[2]);
+        d8_store_wgt8(l, &b->p[j]);
+        if (sv) {
+            d8_tex_coord8(a_s, a_t, l, &b->tc[j]);
+            d8_tangent8(&g[0], l, inv, o);
+            d8_tex_coord8(a_s, a_t, o, &b->tx[j]);
+            d8_tangent8(&g[1], l, inv, o);
+            d8_tex_coord8(a_s, a_t, o, &b->ty[j]);
+        } else {
+            d8_tangent8(&g[0], l, inv, o);
+            d8_store_wgt8(o, &b->px[j]);
+            d8_tangent8(&g[1], l, inv, o);
+            d8_store_wgt8(o, &b->py[j]);
+        }
+    }
+    return j;
+}
+/* }==================================================================== */
+
 #endif
 
 #endif

@@ -295,6 +295,13 @@ static void STAGE(stage_persp_lod)(GlesContext *ctx, const TriSetup *t, SpanBuf 
     }
 #endif
     const int simd_from = j;    /* the slots past the AVX-512 groups */
+#elif SIMD_AVX512_INSTANCE
+    /* groups of eight by AVX-512 where it runs, as far as they go */
+    if (ctx && ctx_simd(ctx) >= SIMD_AVX512) {
+        j = d8_persp_lod(&ws, tan, t->ea, b, done == 0 ? sv : NULL, tv);
+        if (done == 0)
+            done = j;
+    }
 #endif
     for (; j + 4 <= n; j += 4) {
         __m256i e[3];
