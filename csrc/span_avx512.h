@@ -17,6 +17,8 @@
 #if SIMD_AVX512_INSTANCE
 #include <immintrin.h>
 
+#include "span_edges8.h"
+
 #define AVX512_INLINE static inline __attribute__((always_inline))
 
 /* v4_linear_axis in eight lanes: the same IEEE operations in the same
@@ -294,35 +296,29 @@ AVX512_INLINE void d8_tangent8(const WgtTangent *g, const __m512d o[3], __m512d 
 /* stage_persp_lod's groups of eight slots from slot 0 of a triangle that
 ** is not affine, up to the first group with an edge value of magnitude
 ** 2^51 or more (v4_edge_lanes' range; the AVX2 code then takes it): the
-** weights into b->p, and where sv is not NULL (the chain's unit with a
-** level of detail, without q) its coordinates at the weights and at both
-** tangents into b->tc, tx and ty, else the tangent weights into b->px and
-** b->py. Returns the slots done (a multiple of eight). */
+** weights into b->p, and where coords (the chain's unit with a level of
+** detail, without q: its s and t at the vertices sv, tv) its coordinates
+** at the weights and at both tangents into b->tc, tx and ty, else the
+** tangent weights into b->px and b->py. Returns the slots done (a
+** multiple of eight). */
 static __attribute__((noinline)) int d8_persp_lod(const WgtSetup *ws, const WgtTangent tan[2], const int64_t ea[3],
-                                                  SpanBuf *b, const double *sv, const double *tv)
+                                                  SpanBuf *b, int coords, const double sv[3], const double tv[3])
 {
     const WgtSetup s = *ws;
     const WgtTangent g[2] = { tan[0], tan[1] };
-    __m512i e0[3], eav[3];
-    for (int i = 0; i < 3; i++) {
-        e0[i] = _mm512_set1_epi64(b->e0[i]);
-        eav[i] = _mm512_set1_epi64(ea[i]);
-    }
-    double a_s[3] = { 0, 0, 0 }, a_t[3] = { 0, 0, 0 };
-    if (sv)
-        for (int i = 0; i < 3; i++)
-            a_s[i] = sv[i], a_t[i] = tv[i];
+    const double a_s[3] = { sv[0], sv[1], sv[2] }, a_t[3] = { tv[0], tv[1], tv[2] };
+    Edges8 ed;
+    edges8_setup(b->e0, ea, &ed);
     const __m512i bias = _mm512_set1_epi64((int64_t)1 << 51), high = _mm512_set1_epi64(~(((int64_t)1 << 52) - 1));
     const int n8 = b->n & ~7;
     int j = 0;
     for (; j < n8; j += 8) {
-        const __m512i kv = _mm512_cvtepu8_epi64(_mm_loadl_epi64((const __m128i *)(const void *)&b->k[j]));
+        __m512i e[3], far = _mm512_setzero_si512();
         __m512d ev[3];
-        __m512i far = _mm512_setzero_si512();
+        edges8(&ed, &b->k[j], e);
         for (int i = 0; i < 3; i++) {
-            const __m512i e = _mm512_add_epi64(e0[i], _mm512_mullo_epi64(kv, eav[i]));
-            far = _mm512_or_si512(far, _mm512_and_si512(_mm512_add_epi64(e, bias), high));
-            ev[i] = _mm512_cvtepi64_pd(e);
+            far = _mm512_or_si512(far, _mm512_and_si512(_mm512_add_epi64(e[i], bias), high));
+            ev[i] = _mm512_cvtepi64_pd(e[i]);
         }
         if (_mm512_test_epi64_mask(far, far))
             break;
@@ -335,7 +331,7 @@ static __attribute__((noinline)) int d8_persp_lod(const WgtSetup *ws, const WgtT
         l[2] = _mm512_mul_pd(n2, inv);
         l[0] = _mm512_sub_pd(_mm512_sub_pd(_mm512_set1_pd(1), l[1]), l[2]);
         d8_store_wgt8(l, &b->p[j]);
-        if (sv) {
+        if (coords) {
             d8_tex_coord8(a_s, a_t, l, &b->tc[j]);
             d8_tangent8(&g[0], l, inv, o);
             d8_tex_coord8(a_s, a_t, o, &b->tx[j]);

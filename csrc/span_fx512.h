@@ -23,17 +23,9 @@
 #if SIMD_AVX512_FX
 #include <immintrin.h>
 
-#define FX512_INLINE static inline __attribute__((always_inline))
+#include "span_edges8.h"
 
-/* the edge values e0 + ea k at eight slots' offsets k: vpmullq's product
-** mod 2^64, which is the scalar code's wherever that fits int64 (as
-** avx2_edges4 forms it) */
-FX512_INLINE void fx512_edges8(const __m512i e0[3], const __m512i ea[3], const uint8_t *k, __m512i e[3])
-{
-    const __m512i kv = _mm512_cvtepu8_epi64(_mm_loadl_epi64((const __m128i *)(const void *)k));
-    for (int i = 0; i < 3; i++)
-        e[i] = _mm512_add_epi64(e0[i], _mm512_mullo_epi64(kv, ea[i]));
-}
+#define FX512_INLINE static inline __attribute__((always_inline))
 
 /* avx2_persp4_den of eight fragments (the same ranges, the same operations:
 ** the numerators, the normalising shift from the exponent of den >> 32 as
@@ -152,25 +144,20 @@ FX512_INLINE void fx512_store_wgt8(const __m512i l[3], WGT (*out)[3])
 /* stage_persp_lod's division and tangents for the groups of eight slots
 ** from slot 0 of a triangle that is not affine, up to the first group a
 ** lane of which leaves the kernels' ranges (which the AVX2 code then
-** takes): the weights into b->p, and where sv is not NULL (the chain's
-** unit with a level of detail, without q) its coordinates at the weights
-** and at both tangents into b->tc, tx and ty, else the tangent weights
-** into b->px and b->py. Returns the slots done (a multiple of eight). */
+** takes): the weights into b->p, and where coords (the chain's unit with
+** a level of detail, without q: its s and t at the vertices sv, tv) its
+** coordinates at the weights and at both tangents into b->tc, tx and ty,
+** else the tangent weights into b->px and b->py. Returns the slots done
+** (a multiple of eight). */
 static __attribute__((noinline)) int fx512_persp_lod(const WgtSetup *ws, const WgtTangent tan[2], const int64_t ea[3],
-                                                     SpanBuf *b, const NUM *sv, const NUM *tv)
+                                                     SpanBuf *b, int coords, const NUM sv[3], const NUM tv[3])
 {
     /* the loop's constants in locals (stores to b->p could alias them) */
     const WgtSetup s = *ws;
     const WgtTangent g[2] = { tan[0], tan[1] };
-    __m512i e0[3], eav[3];
-    for (int i = 0; i < 3; i++) {
-        e0[i] = _mm512_set1_epi64(b->e0[i]);
-        eav[i] = _mm512_set1_epi64(ea[i]);
-    }
-    NUM a_s[3] = { 0, 0, 0 }, a_t[3] = { 0, 0, 0 };
-    if (sv)
-        for (int i = 0; i < 3; i++)
-            a_s[i] = sv[i], a_t[i] = tv[i];
+    const NUM a_s[3] = { sv[0], sv[1], sv[2] }, a_t[3] = { tv[0], tv[1], tv[2] };
+    Edges8 ed;
+    edges8_setup(b->e0, ea, &ed);
     const int n8 = b->n & ~7;
     WGT (*const p)[3] = b->p, (*const px)[3] = b->px, (*const py)[3] = b->py;
     TexCoord *const tc = b->tc, *const tx = b->tx, *const ty = b->ty;
@@ -182,7 +169,7 @@ static __attribute__((noinline)) int fx512_persp_lod(const WgtSetup *ws, const W
     int groups = 0;
     for (; 8 * groups < n8; groups++) {
         __m512i e[3];
-        fx512_edges8(e0, eav, &b->k[8 * groups], e);
+        edges8(&ed, &b->k[8 * groups], e);
         if (!fx512_persp8_den(&s, e, lanes[groups], &dens[groups]))
             break;
         fx512_store_wgt8(lanes[groups], &p[8 * groups]);
@@ -193,7 +180,7 @@ static __attribute__((noinline)) int fx512_persp_lod(const WgtSetup *ws, const W
         __m512i o[2][3];
         if (!fx512_tangents8(g, l, dens[i], o))
             break;
-        if (sv) {
+        if (coords) {
             fx512_store_st8(fx512_texc_lerp3x8(a_s, l), fx512_texc_lerp3x8(a_t, l), &tc[j]);
             fx512_store_st8(fx512_texc_lerp3x8(a_s, o[0]), fx512_texc_lerp3x8(a_t, o[0]), &tx[j]);
             fx512_store_st8(fx512_texc_lerp3x8(a_s, o[1]), fx512_texc_lerp3x8(a_t, o[1]), &ty[j]);

@@ -289,7 +289,7 @@ static void STAGE(stage_persp_lod)(GlesContext *ctx, const TriSetup *t, SpanBuf 
 #if SIMD_AVX512_FX
     /* groups of eight by AVX-512 where it runs, as far as they go */
     if (ctx && ctx_simd(ctx) >= SIMD_AVX512) {
-        j = fx512_persp_lod(&ws, tan, t->ea, b, done == 0 ? sv : NULL, tv);
+        j = fx512_persp_lod(&ws, tan, t->ea, b, done == 0, sv, tv);
         if (done == 0)
             done = j;
     }
@@ -298,7 +298,7 @@ static void STAGE(stage_persp_lod)(GlesContext *ctx, const TriSetup *t, SpanBuf 
 #elif SIMD_AVX512_INSTANCE
     /* groups of eight by AVX-512 where it runs, as far as they go */
     if (ctx && ctx_simd(ctx) >= SIMD_AVX512) {
-        j = d8_persp_lod(&ws, tan, t->ea, b, done == 0 ? sv : NULL, tv);
+        j = d8_persp_lod(&ws, tan, t->ea, b, done == 0, sv, tv);
         if (done == 0)
             done = j;
     }
