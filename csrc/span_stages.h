@@ -281,27 +281,25 @@ static void STAGE(stage_persp_lod)(GlesContext *ctx, const TriSetup *t, SpanBuf 
     NUM sv[3], tv[3];
     span_unit_st(t, done == 0 ? u : -1, sv, tv);
     TexCoord *const tc = b->tc, *const tx = b->tx, *const ty = b->ty;
+#if SIMD_AVX512_FX || SIMD_AVX512_INSTANCE
+    /* groups of eight by AVX-512 where it runs, as far as they go (the
+    ** fixed build's span_fx512.h, the double build's span_avx512.h) */
+    if (ctx && ctx_simd(ctx) >= SIMD_AVX512) {
+#if SIMD_AVX512_FX
+        j = fx512_persp_lod(&ws, tan, t->ea, b, done == 0, sv, tv);
+#else
+        j = d8_persp_lod(&ws, tan, t->ea, b, done == 0, sv, tv);
+#endif
+        if (done == 0)
+            done = j;
+    }
+#endif
 #if NUM_IS_FIXED
     /* the weights and their divisions first, then the tangents: as one
     ** loop, each group's division, tangents and stores form one long chain
     ** of dependent operations, and the groups overlap less (measured) */
     __m256i dens[SPAN_CHUNK / 4];
-#if SIMD_AVX512_FX
-    /* groups of eight by AVX-512 where it runs, as far as they go */
-    if (ctx && ctx_simd(ctx) >= SIMD_AVX512) {
-        j = fx512_persp_lod(&ws, tan, t->ea, b, done == 0, sv, tv);
-        if (done == 0)
-            done = j;
-    }
-#endif
     const int simd_from = j;    /* the slots past the AVX-512 groups */
-#elif SIMD_AVX512_INSTANCE
-    /* groups of eight by AVX-512 where it runs, as far as they go */
-    if (ctx && ctx_simd(ctx) >= SIMD_AVX512) {
-        j = d8_persp_lod(&ws, tan, t->ea, b, done == 0, sv, tv);
-        if (done == 0)
-            done = j;
-    }
 #endif
     for (; j + 4 <= n; j += 4) {
         __m256i e[3];

@@ -10,6 +10,7 @@ exactly, so expected coverage can be worked out from the input alone.
 
 from __future__ import annotations
 
+import functools
 import struct
 import sys
 import zlib
@@ -42,6 +43,13 @@ SPAN_CHUNK = int(gles.Context(1, 1)._lib.gles_span_chunk())
 def make_ctx(numeric: str, w: int = 64, h: int = 64, **kw: Any) -> gles.Context:
     """A context of the given build and size; keyword options go to gles.Context."""
     return gles.Context(w, h, numeric=numeric, **kw)
+
+
+@functools.cache
+def has_avx512(numeric: str) -> bool:
+    """Whether the build's span stages run an AVX-512 instance on this CPU
+    (then tests compare its AVX2 instance, ctx.debug(32), as well)."""
+    return make_ctx(numeric, 1, 1).simd == "avx512"
 
 
 @pytest.fixture(params=BUILDS)

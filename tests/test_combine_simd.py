@@ -25,6 +25,7 @@ from conftest import (
     SPAN_CHUNK,
     colour_window,
     draw_arrays,
+    has_avx512,
     make_ctx,
     random_triangles,
     set_frustum,
@@ -49,7 +50,7 @@ FORMATS = ((C.GL_RGBA, 4), (C.GL_RGBA, 4), (C.GL_RGB, 3), (C.GL_LUMINANCE_ALPHA,
 # vector one exists) and the per-fragment reference
 PATHS = (0, 1) + ((16,) if HAS_SIMD else ())
 
-HAS_AVX512 = make_ctx("double", 1, 1).simd == "avx512"
+HAS_AVX512 = has_avx512("double")
 
 # a row is a chunk and a last 3 columns
 W, H = SPAN_CHUNK + 3, 8

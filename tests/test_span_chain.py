@@ -60,13 +60,21 @@ faster paths are not checked (they change); the forced run must report
 
 from __future__ import annotations
 
-import functools
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
 import numpy as np
 import pytest
-from conftest import BUILDS, HAS_SIMD, SPAN_CHUNK, make_ctx, random_triangles, set_frustum, set_ortho
+from conftest import (
+    BUILDS,
+    HAS_SIMD,
+    SPAN_CHUNK,
+    has_avx512,
+    make_ctx,
+    random_triangles,
+    set_frustum,
+    set_ortho,
+)
 from hypothesis import event, given, settings
 from hypothesis import strategies as st
 
@@ -797,13 +805,6 @@ def render(scene: dict, generic: bool, baseline: bool = False, avx2: bool = Fals
         paths.append(ctx.last_span_path())
     return {"color": ctx.color_buffer(), "depth": ctx.depth_buffer(), "stencil": ctx.stencil_buffer(),
             "error": gl.glGetError(), "paths": paths}
-
-
-@functools.cache
-def has_avx512(numeric: str) -> bool:
-    """Whether the build's span stages run an AVX-512 instance here (then
-    the AVX2 one is checked as well)."""
-    return make_ctx(numeric, 1, 1).simd == "avx512"
 
 
 def check_scene(scene: dict) -> list[str]:
