@@ -2095,23 +2095,35 @@ static inline void avx2_modwrite_dither(Avx2ModWrite *m, int dither, const FRAGV
     m->t_row_f = _mm256_setr_ps(f[0], f[1], f[2], f[3], f[0], f[1], f[2], f[3]);
 }
 
+/* how near an integer a lane's value may lie and still be proved: above
+** the largest bound of the state's values (docs/architecture.md, in u =
+** 2^-24 of a byte, an RGB565 step or the alpha test's byte) with room to
+** spare. DOT3: at most 28281u (SRC_ALPHA), under 2^-9 = 32768u; else
+** SRC_ALPHA 9564u under 2^-10 = 16384u, no blend and ONE / ONE 3622u
+** under 2^-11 = 8192u. A smaller margin leaves fewer lanes to the exact
+** code (each margin's share of the values that lie that near) */
+AVX2_INLINE float avx2_modwrite_margin(int kind, int dot3)
+{
+    return dot3 ? 0x1p-9f : kind == 1 ? 0x1p-10f : 0x1p-11f;
+}
+
 /* floor(z) of lanes z >= 0, and in *bad the lanes where z lies within
-** 2^-9 of an integer (where the exact value's floor may differ) */
-AVX2_INLINE __m256i avx2_floor_proved(__m256 z, __m256 *bad)
+** `margin` of an integer (where the exact value's floor may differ) */
+AVX2_INLINE __m256i avx2_floor_proved(__m256 z, float margin, __m256 *bad)
 {
     const __m256 fl = _mm256_floor_ps(z), f = _mm256_sub_ps(z, fl);
-    *bad = _mm256_or_ps(*bad, _mm256_or_ps(_mm256_cmp_ps(f, _mm256_set1_ps(0x1p-9f), _CMP_LT_OQ),
-                                           _mm256_cmp_ps(f, _mm256_set1_ps(1.0f - 0x1p-9f), _CMP_GT_OQ)));
+    *bad = _mm256_or_ps(*bad, _mm256_or_ps(_mm256_cmp_ps(f, _mm256_set1_ps(margin), _CMP_LT_OQ),
+                                           _mm256_cmp_ps(f, _mm256_set1_ps(1.0f - margin), _CMP_GT_OQ)));
     return _mm256_cvttps_epi32(fl);
 }
 
 /* the same where the exact value is known to be >= 0 and its floor is
 ** clamped to `top`: an integer q nearby matters only for 1 <= q <= top
 ** (both neighbouring floors give 0, or both clamp to top, elsewhere) */
-AVX2_INLINE __m256i avx2_floor_proved_upto(__m256 z, float top, __m256 *bad)
+AVX2_INLINE __m256i avx2_floor_proved_upto(__m256 z, float top, float margin, __m256 *bad)
 {
     __m256 near = _mm256_setzero_ps();
-    const __m256i q = avx2_floor_proved(z, &near);
+    const __m256i q = avx2_floor_proved(z, margin, &near);
     near = _mm256_and_ps(near, _mm256_and_ps(_mm256_cmp_ps(z, _mm256_set1_ps(0.5f), _CMP_GT_OQ),
                                              _mm256_cmp_ps(z, _mm256_set1_ps(top + 0.5f), _CMP_LT_OQ)));
     *bad = _mm256_or_ps(*bad, near);
@@ -2174,10 +2186,10 @@ AVX2_INLINE void avx2_dot3_float(int rgba, const __m256 T0[4], __m256 c[4])
 ** MODULATE (or the texel, for REPLACE), clamped to [0, 1], as floats
 ** y[0..3]; with dot3 (m->dot3 set) the colour first goes through DOT3
 ** with the first unit's texels T0. The alpha test's outcome in *pass, the lanes not
-** proved in *bad */
+** proved (within `margin`) in *bad */
 AVX2_INLINE void avx2_modwrite_source8(const Avx2ModWrite *m, int smooth, int dot3, const WGT (*p)[3],
-                                       const __m256 T0[4], const __m256 T[4], __m256 y[4], __m256i *pass,
-                                       __m256 *bad)
+                                       const __m256 T0[4], const __m256 T[4], float margin, __m256 y[4],
+                                       __m256i *pass, __m256 *bad)
 {
     const __m256 zero = _mm256_setzero_ps(), one = _mm256_set1_ps(1.0f);
     *bad = zero;
@@ -2215,7 +2227,7 @@ AVX2_INLINE void avx2_modwrite_source8(const Avx2ModWrite *m, int smooth, int do
     if (m->alpha.test) {
         /* fragment_alpha8 of the alpha, proved as the bytes are */
         const __m256i a8 = avx2_floor_proved(_mm256_fmadd_ps(y[3], _mm256_set1_ps(255.0f), _mm256_set1_ps(0.5f)),
-                                             bad);
+                                             margin, bad);
         *pass = avx2_cmp_i32(&m->alpha.cmp, a8, m->alpha.ref_v);
     }
 }
@@ -2229,7 +2241,7 @@ AVX2_INLINE unsigned avx2_modwrite8(const Avx2ModWrite *m, int smooth, int kind,
 {
     __m256 y[4], bad;
     __m256i pass;
-    avx2_modwrite_source8(m, smooth, dot3, p, T0, T, y, &pass, &bad);
+    avx2_modwrite_source8(m, smooth, dot3, p, T0, T, avx2_modwrite_margin(kind, dot3), y, &pass, &bad);
     const __m256 one = _mm256_set1_ps(1.0f);
     if (kind) {
         const __m256i byte = _mm256_set1_epi32(0xFF);
@@ -2244,7 +2256,8 @@ AVX2_INLINE unsigned avx2_modwrite8(const Avx2ModWrite *m, int smooth, int kind,
     }
     __m256i v[4];
     for (int i = 0; i < 4; i++)
-        v[i] = avx2_floor_proved(_mm256_fmadd_ps(y[i], _mm256_set1_ps(255.0f), _mm256_set1_ps(0.5f)), &bad);
+        v[i] = avx2_floor_proved(_mm256_fmadd_ps(y[i], _mm256_set1_ps(255.0f), _mm256_set1_ps(0.5f)),
+                                 avx2_modwrite_margin(kind, dot3), &bad);
     const __m256i w = avx2_pack_rgba8x8(v);
     /* a fragment that fails the alpha test leaves the stored word */
     *out = _mm256_blendv_epi8(d, w, pass);
@@ -2259,7 +2272,7 @@ AVX2_INLINE unsigned avx2_modwrite565_8(const Avx2ModWrite *m, int smooth, int k
 {
     __m256 y[4], bad;
     __m256i pass;
-    avx2_modwrite_source8(m, smooth, dot3, p, T0, T, y, &pass, &bad);
+    avx2_modwrite_source8(m, smooth, dot3, p, T0, T, avx2_modwrite_margin(kind, dot3), y, &pass, &bad);
     static const int shift[3] = { 11, 5, 0 }, bits[3] = { 5, 6, 5 };
     if (kind) {
         const __m256 b = _mm256_sub_ps(_mm256_set1_ps(1.0f), y[3]), a = y[3];
@@ -2278,7 +2291,7 @@ AVX2_INLINE unsigned avx2_modwrite565_8(const Avx2ModWrite *m, int smooth, int k
         const int maxval = (1 << bits[i]) - 1;
         const __m256 z = m->dither ? _mm256_fmadd_ps(y[i], _mm256_set1_ps((float)maxval), t)
                                    : _mm256_mul_ps(y[i], _mm256_set1_ps((float)(1 << bits[i])));
-        const __m256i v = _mm256_min_epi32(avx2_floor_proved_upto(z, (float)maxval, &bad), _mm256_set1_epi32(maxval));
+        const __m256i v = _mm256_min_epi32(avx2_floor_proved_upto(z, (float)maxval, avx2_modwrite_margin(kind, dot3), &bad), _mm256_set1_epi32(maxval));
         w = _mm256_or_si256(w, _mm256_slli_epi32(v, shift[i]));
     }
     *out = _mm256_blendv_epi8(d, w, pass);
