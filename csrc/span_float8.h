@@ -249,12 +249,19 @@ AVX2_INLINE f8_num f8_byte(f8_i32 g, int i)
 #endif
 }
 
-/* the texels of coordinates tc[0..F8_N-1] on a w x h level (powers of
-** two; REPEAT or CLAMP_TO_EDGE per axis) as sample_level's GL_LINEAR gives
-** them (frag_bilerp_rgba8's operations); 0 when a coordinate is not
-** finite. `rows`: try avx2_row_texels8's loads before the gathers. */
-AVX2_INLINE int f8_sample_level(const uint32_t *texels, int w, int h, int repeat_s, int repeat_t, int rows,
-                                const TexCoord *tc, f8_num T[4])
+/* a group's four texel words per lane and its weights along s and t:
+** what f8_sample_level reads from memory, apart from what it computes */
+typedef struct F8Texels {
+    __m256i g[4];
+    f8_num a, b;
+} F8Texels;
+
+/* the texel words and weights of coordinates tc[0..F8_N-1] on a w x h
+** level (powers of two; REPEAT or CLAMP_TO_EDGE per axis), as
+** sample_level's GL_LINEAR finds them; 0 when a coordinate is not finite.
+** `rows`: try avx2_row_texels8's loads before the gathers. */
+AVX2_INLINE int f8_texels(const uint32_t *texels, int w, int h, int repeat_s, int repeat_t, int rows,
+                          const TexCoord *tc, F8Texels *x)
 {
     f8_num s, t;
     f8_coords(tc, &s, &t);
@@ -262,11 +269,18 @@ AVX2_INLINE int f8_sample_level(const uint32_t *texels, int w, int h, int repeat
     if (!f8_all((s < inf) & (s > -inf) & (t < inf) & (t > -inf)))
         return 0;
     f8_i32 x0, x1, y0, y1;
-    f8_num a, b;
-    f8_linear_axis(s, w, repeat_s, &x0, &x1, &a);
-    f8_linear_axis(t, h, repeat_t, &y0, &y1, &b);
-    __m256i g[4];
-    avx2_texel_words8(texels, w, (int64_t)w * h, (__m256i)x0, (__m256i)x1, (__m256i)y0, (__m256i)y1, rows, g);
+    f8_linear_axis(s, w, repeat_s, &x0, &x1, &x->a);
+    f8_linear_axis(t, h, repeat_t, &y0, &y1, &x->b);
+    avx2_texel_words8(texels, w, (int64_t)w * h, (__m256i)x0, (__m256i)x1, (__m256i)y0, (__m256i)y1, rows, x->g);
+    return 1;
+}
+
+/* the bilinear texels T of f8_texels' words and weights
+** (frag_bilerp_rgba8's operations) */
+AVX2_INLINE void f8_bilerp(const F8Texels *x, f8_num T[4])
+{
+    const __m256i *g = x->g;
+    const f8_num a = x->a, b = x->b;
 #if defined(GLES_NUM_FLOAT)
     const f8_i32 g00 = (f8_i32)g[0], g10 = (f8_i32)g[1], g01 = (f8_i32)g[2], g11 = (f8_i32)g[3];
     const f8_num ia = 1 - a, ib = 1 - b;
@@ -281,13 +295,25 @@ AVX2_INLINE int f8_sample_level(const uint32_t *texels, int w, int h, int repeat
     for (int i = 0; i < 4; i++)
         T[i] = (f8_num)ch[i];
 #endif
+}
+
+/* the texels of coordinates tc[0..F8_N-1] on a w x h level as
+** sample_level's GL_LINEAR gives them (f8_texels, f8_bilerp); 0 when a
+** coordinate is not finite */
+AVX2_INLINE int f8_sample_level(const uint32_t *texels, int w, int h, int repeat_s, int repeat_t, int rows,
+                                const TexCoord *tc, f8_num T[4])
+{
+    F8Texels x;
+    if (!f8_texels(texels, w, h, repeat_s, repeat_t, rows, tc, &x))
+        return 0;
+    f8_bilerp(&x, T);
     return 1;
 }
 
-/* the fused stage's texture at tc[0..F8_N-1] (f8_sample_level) */
-AVX2_INLINE int f8_sample(const F8ModWrite *m, const TexCoord *tc, f8_num T[4])
+/* f8_texels of a fused stage's texture at tc[0..F8_N-1] */
+AVX2_INLINE int f8_texels_of(const ModWriteTexture *tx, const TexCoord *tc, F8Texels *x)
 {
-    return f8_sample_level(m->tx.texels, m->tx.w, m->tx.h, m->tx.repeat_s, m->tx.repeat_t, 1, tc, T);
+    return f8_texels(tx->texels, tx->w, tx->h, tx->repeat_s, tx->repeat_t, 1, tc, x);
 }
 
 #if defined(GLES_NUM_FLOAT)
@@ -414,9 +440,20 @@ AVX2_INLINE void f8_modwrite_run(const F8ModWrite *mw, int src, int smooth, int 
     const F8ModWrite local = *mw, *m = &local;   /* not aliased by the framebuffer stores */
     uint32_t *d32 = dst;
     uint16_t *d16 = dst;
+    /* source 1: each group's texel words are read one group ahead, so that
+    ** their loads (gathers, on a rotated texture) overlap the arithmetic of
+    ** the group before */
+    F8Texels next;
+    int next_ok = src == 1 && n > 0 && f8_texels_of(&m->tx, tc, &next);
     for (int j = 0; j < n; j += F8_N) {
         f8_num T[4], T0[4];
-        if (src == 0 || !f8_sample(m, tc + j, T)) {
+        const F8Texels cur = next;
+        const int cur_ok = next_ok;
+        if (src == 1 && j + F8_N < n)
+            next_ok = f8_texels_of(&m->tx, tc + j + F8_N, &next);
+        if (src == 1 && cur_ok) {
+            f8_bilerp(&cur, T);
+        } else {
             FRAGV texel[F8_N][4];
             if (src == 1)
                 m->tx.sampler(m->tx.tex, F8_N, tc + j, NULL, NULL, texel[0], 4, m->tx.unorm8);
