@@ -282,6 +282,43 @@ AVX512_INLINE void d8_tex_coord8(const double sv[3], const double tv[3], const _
     _mm512_storeu_pd(&out[4].s, _mm512_permutex2var_pd(lo, _mm512_setr_epi64(4, 5, 12, 13, 6, 7, 14, 15), hi));
 }
 
+/* STAGE(persp_affine_steps) (span_stages.h) eight slots at a time: an
+** affine triangle's weights from edges 1 and 2 at slots 0..n8-1, stepped
+** in doubles from their values at slot 0 (e0) and their step (ea), which
+** the caller has found exact to n8 (edge_steps_exact); o_1 = e_1
+** inv_area, o_2 likewise, o_0 = (1 - o_1) - o_2 into b->p, with unit
+** coordinates at them into b->tc (u: vertex values sv, tv) and b->tx (v:
+** sv2, tv2) */
+static __attribute__((noinline)) void d8_affine_steps(double inv_area, const int64_t e0[3], const int64_t ea[3],
+                                                      int n8, SpanBuf *b, int u, const double sv[3],
+                                                      const double tv[3], int v, const double sv2[3],
+                                                      const double tv2[3])
+{
+    const double a_s[3] = { sv[0], sv[1], sv[2] }, a_t[3] = { tv[0], tv[1], tv[2] };
+    const double a_s2[3] = { sv2[0], sv2[1], sv2[2] }, a_t2[3] = { tv2[0], tv2[1], tv2[2] };
+    const __m512d k8 = _mm512_setr_pd(0, 1, 2, 3, 4, 5, 6, 7);
+    const double a1 = (double)ea[1], a2 = (double)ea[2];
+    __m512d d1 = _mm512_add_pd(_mm512_set1_pd((double)e0[1]), _mm512_mul_pd(k8, _mm512_set1_pd(a1)));
+    __m512d d2 = _mm512_add_pd(_mm512_set1_pd((double)e0[2]), _mm512_mul_pd(k8, _mm512_set1_pd(a2)));
+    const __m512d step1 = _mm512_set1_pd(8 * a1), step2 = _mm512_set1_pd(8 * a2);
+    const __m512d ia = _mm512_set1_pd(inv_area), one = _mm512_set1_pd(1);
+    WGT (*const p)[3] = b->p;
+    TexCoord *const tc = b->tc, *const tx = b->tx;
+    for (int j = 0; j < n8; j += 8) {
+        __m512d o[3];
+        o[1] = _mm512_mul_pd(d1, ia);
+        o[2] = _mm512_mul_pd(d2, ia);
+        o[0] = _mm512_sub_pd(_mm512_sub_pd(one, o[1]), o[2]);
+        d8_store_wgt8(o, &p[j]);
+        if (u)
+            d8_tex_coord8(a_s, a_t, o, &tc[j]);
+        if (v)
+            d8_tex_coord8(a_s2, a_t2, o, &tx[j]);
+        d1 = _mm512_add_pd(d1, step1);
+        d2 = _mm512_add_pd(d2, step2);
+    }
+}
+
 /* v4_tangent4 of eight fragments */
 AVX512_INLINE void d8_tangent8(const WgtTangent *g, const __m512d o[3], __m512d inv, __m512d out[3])
 {

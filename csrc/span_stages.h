@@ -156,13 +156,30 @@ static inline void STAGE(edge_steps)(const TriSetup *t, const SpanBuf *b, __m256
 ** is exact, with unit u's coordinates (u >= 0: an affine unit) formed from
 ** the same lanes into b->tc, and unit v's (v >= 0) into b->tx; a last
 ** group of fewer than four slots whole (the slots past n are free; the
-** exactness holds to the group's end, as the test covers it). Returns the
-** slots done (n), or 0. */
-static int STAGE(persp_affine_steps)(const TriSetup *t, SpanBuf *b, int u, int v)
+** exactness holds to the group's end, as the test covers it); with wide
+** (AVX-512 runs) the double build's eight at a time (d8_affine_steps).
+** Returns the slots done (n), or 0. */
+static int STAGE(persp_affine_steps)(const TriSetup *t, SpanBuf *b, int u, int v, int wide)
 {
-    _Static_assert(SPAN_CHUNK % 4 == 0, "a last group rounded up to four stays within the chunk");
+    _Static_assert(SPAN_CHUNK % 8 == 0, "a last group rounded up to eight stays within the chunk");
     const int n4 = (b->n + 3) & ~3;
-    if (!t->wgt.affine || !STAGE(edge_steps_exact)(t, b, n4))
+    if (!t->wgt.affine)
+        return 0;
+#if SIMD_AVX512_INSTANCE
+    /* eight slots at a time where AVX-512 runs and the chunk fills more
+    ** than one group (a last one whole, as below) */
+    const int n8 = (b->n + 7) & ~7;
+    if (wide && b->n > 8 && STAGE(edge_steps_exact)(t, b, n8)) {
+        NUM sv[3], tv[3], sv2[3], tv2[3];
+        span_unit_st(t, u, sv, tv);
+        span_unit_st(t, v, sv2, tv2);
+        d8_affine_steps(t->wgt.inv_area, b->e0, t->ea, n8, b, u >= 0, sv, tv, v >= 0, sv2, tv2);
+        return b->n;
+    }
+#else
+    (void)wide;
+#endif
+    if (!STAGE(edge_steps_exact)(t, b, n4))
         return 0;
     __m256d d1, d2, step1, step2;
     STAGE(edge_steps)(t, b, &d1, &d2, &step1, &step2);
@@ -204,7 +221,7 @@ static void STAGE(stage_persp)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 #if NUM_IS_FIXED
     j = STAGE(persp_affine_run)(t, b, coords ? u : -1, coords_tx ? v : -1);
 #else
-    j = STAGE(persp_affine_steps)(t, b, coords ? u : -1, coords_tx ? v : -1);
+    j = STAGE(persp_affine_steps)(t, b, coords ? u : -1, coords_tx ? v : -1, ctx && ctx_simd(ctx) >= SIMD_AVX512);
 #endif
     if (coords && j) {
         b->tc_unit = u;
