@@ -443,7 +443,7 @@ AVX2_INLINE void f8_modwrite_run(const F8ModWrite *mw, int src, int smooth, int 
     /* source 1: each group's texel words are read one group ahead, so that
     ** their loads (gathers, on a rotated texture) overlap the arithmetic of
     ** the group before */
-    F8Texels next;
+    F8Texels next = { 0 };
     int next_ok = src == 1 && n > 0 && f8_texels_of(&m->tx, tc, &next);
     for (int j = 0; j < n; j += F8_N) {
         f8_num T[4], T0[4];
