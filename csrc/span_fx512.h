@@ -372,14 +372,19 @@ FX512_INLINE __m512i fx512_bilerp16_channel(const __m512i g[4], int sh, __m512i 
     return _mm512_add_epi32(hi, lo);
 }
 
-/* a level's four channels of sixteen fragments at coordinates c[0..15]
-** (avx2_linear_channels8's texels and sums) */
-FX512_INLINE void fx512_linear_channels16(const TexImage *li, const TexCoord *c, int repeat_s, int repeat_t,
-                                          __m512i ch[4])
+/* sixteen fragments' texel words on a level and their 16-bit weights */
+typedef struct Fx512Texels {
+    __m512i g[4], a, b;
+} Fx512Texels;
+
+/* the texel words and weights of a level at coordinates c[0..15]
+** (avx2_linear_channels8's texels) */
+FX512_INLINE void fx512_linear_texels16(const TexImage *li, const TexCoord *c, int repeat_s, int repeat_t,
+                                        Fx512Texels *x)
 {
     const int log2w = __builtin_ctz((unsigned)li->width), log2h = __builtin_ctz((unsigned)li->height);
     const int *tx32 = (const int *)(const void *)li->texels;
-    __m512i s_lo, s_hi, t_lo, t_hi, xa, xb, ya, yb, a, b, g[4];
+    __m512i s_lo, s_hi, t_lo, t_hi, xa, xb, ya, yb, a, b, *g = x->g;
     fx512_load_st16(c, &s_lo, &s_hi, &t_lo, &t_hi);
     fx512_linear_axis16(s_lo, s_hi, log2w, repeat_s, &xa, &xb, &a);
     fx512_linear_axis16(t_lo, t_hi, log2h, repeat_t, &ya, &yb, &b);
@@ -393,10 +398,17 @@ FX512_INLINE void fx512_linear_channels16(const TexImage *li, const TexCoord *c,
         g[2] = _mm512_i32gather_epi32(_mm512_add_epi32(r1, xa), (const void *)tx32, 4);
         g[3] = _mm512_i32gather_epi32(_mm512_add_epi32(r1, xb), (const void *)tx32, 4);
     }
+    x->a = a, x->b = b;
+}
+
+/* a level's four channels of sixteen fragments from their texel words and
+** weights (avx2_linear_channels8's sums) */
+FX512_INLINE void fx512_linear_channels16(const Fx512Texels *x, __m512i ch[4])
+{
     const __m512i one16 = _mm512_set1_epi32(65536);
-    const __m512i ia = _mm512_sub_epi32(one16, a), ib = _mm512_sub_epi32(one16, b);
+    const __m512i ia = _mm512_sub_epi32(one16, x->a), ib = _mm512_sub_epi32(one16, x->b);
     for (int k = 0; k < 4; k++)
-        ch[k] = fx512_bilerp16_channel(g, 8 * k, a, ia, b, ib);
+        ch[k] = fx512_bilerp16_channel(x->g, 8 * k, x->a, ia, x->b, ib);
 }
 
 /* avx2_bilerp_to_frag of eight fragments' sums r (< 2^32) */
@@ -432,11 +444,23 @@ static __attribute__((noinline)) int fx512_sample_linear_mix(const TexImage *l1,
                                                              const TexCoord *c, const FRAGV *frac, FRAGV *out,
                                                              size_t stride, int repeat_s, int repeat_t)
 {
+    /* each group's texel words read one group ahead, so that their gathers
+    ** overlap the sums of the group before */
+    Fx512Texels next1 = { 0 }, next2 = { 0 };
+    if (n >= 16) {
+        fx512_linear_texels16(l1, c, repeat_s, repeat_t, &next1);
+        fx512_linear_texels16(l2, c, repeat_s, repeat_t, &next2);
+    }
     int j = 0;
     for (; j + 16 <= n; j += 16) {
+        const Fx512Texels x1 = next1, x2 = next2;
+        if (j + 32 <= n) {
+            fx512_linear_texels16(l1, c + j + 16, repeat_s, repeat_t, &next1);
+            fx512_linear_texels16(l2, c + j + 16, repeat_s, repeat_t, &next2);
+        }
         __m512i ch1[4], ch2[4];
-        fx512_linear_channels16(l1, c + j, repeat_s, repeat_t, ch1);
-        fx512_linear_channels16(l2, c + j, repeat_s, repeat_t, ch2);
+        fx512_linear_channels16(&x1, ch1);
+        fx512_linear_channels16(&x2, ch2);
         for (int h = 0; h < 2; h++) {
             const __m512i f = _mm512_loadu_si512((const void *)&frac[j + 8 * h]);
             __m512i v[4];
