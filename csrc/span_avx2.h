@@ -2241,7 +2241,8 @@ AVX2_INLINE unsigned avx2_modwrite8(const Avx2ModWrite *m, int smooth, int kind,
 {
     __m256 y[4], bad;
     __m256i pass;
-    avx2_modwrite_source8(m, smooth, dot3, p, T0, T, avx2_modwrite_margin(kind, dot3), y, &pass, &bad);
+    const float margin = avx2_modwrite_margin(kind, dot3);
+    avx2_modwrite_source8(m, smooth, dot3, p, T0, T, margin, y, &pass, &bad);
     const __m256 one = _mm256_set1_ps(1.0f);
     if (kind) {
         const __m256i byte = _mm256_set1_epi32(0xFF);
@@ -2256,8 +2257,7 @@ AVX2_INLINE unsigned avx2_modwrite8(const Avx2ModWrite *m, int smooth, int kind,
     }
     __m256i v[4];
     for (int i = 0; i < 4; i++)
-        v[i] = avx2_floor_proved(_mm256_fmadd_ps(y[i], _mm256_set1_ps(255.0f), _mm256_set1_ps(0.5f)),
-                                 avx2_modwrite_margin(kind, dot3), &bad);
+        v[i] = avx2_floor_proved(_mm256_fmadd_ps(y[i], _mm256_set1_ps(255.0f), _mm256_set1_ps(0.5f)), margin, &bad);
     const __m256i w = avx2_pack_rgba8x8(v);
     /* a fragment that fails the alpha test leaves the stored word */
     *out = _mm256_blendv_epi8(d, w, pass);
@@ -2272,7 +2272,8 @@ AVX2_INLINE unsigned avx2_modwrite565_8(const Avx2ModWrite *m, int smooth, int k
 {
     __m256 y[4], bad;
     __m256i pass;
-    avx2_modwrite_source8(m, smooth, dot3, p, T0, T, avx2_modwrite_margin(kind, dot3), y, &pass, &bad);
+    const float margin = avx2_modwrite_margin(kind, dot3);
+    avx2_modwrite_source8(m, smooth, dot3, p, T0, T, margin, y, &pass, &bad);
     static const int shift[3] = { 11, 5, 0 }, bits[3] = { 5, 6, 5 };
     if (kind) {
         const __m256 b = _mm256_sub_ps(_mm256_set1_ps(1.0f), y[3]), a = y[3];
@@ -2291,7 +2292,8 @@ AVX2_INLINE unsigned avx2_modwrite565_8(const Avx2ModWrite *m, int smooth, int k
         const int maxval = (1 << bits[i]) - 1;
         const __m256 z = m->dither ? _mm256_fmadd_ps(y[i], _mm256_set1_ps((float)maxval), t)
                                    : _mm256_mul_ps(y[i], _mm256_set1_ps((float)(1 << bits[i])));
-        const __m256i v = _mm256_min_epi32(avx2_floor_proved_upto(z, (float)maxval, avx2_modwrite_margin(kind, dot3), &bad), _mm256_set1_epi32(maxval));
+        const __m256i v = _mm256_min_epi32(avx2_floor_proved_upto(z, (float)maxval, margin, &bad),
+                                           _mm256_set1_epi32(maxval));
         w = _mm256_or_si256(w, _mm256_slli_epi32(v, shift[i]));
     }
     *out = _mm256_blendv_epi8(d, w, pass);
