@@ -1999,11 +1999,12 @@ static inline void modwrite_texture_setup(ModWriteTexture *m, const Texture *t, 
 ** The exact chain ends in byte = floor(255 Y + 1/2) of a value Y that
 ** float lanes approximate: Y_f with |Y_f - Y| <= 27 u (u = 2^-24; the
 ** bound, from the colours, weights and texels' ranges, is derived in
-** docs/architecture.md). When 255 Y_f + 1/2 lies at least 2^-9 (above
-** 255 * 2^-18 plus the rounding of that sum) from the nearest integer,
-** 255 Y + 1/2 has the same floor. A lane nearer than that (about 0.4% of
-** channels), or whose weights' magnitudes sum to more than 1 + 2^-7, gets
-** the exact chain's bytes instead. */
+** docs/architecture.md). When 255 Y_f + 1/2 lies at least the state's
+** margin (avx2_modwrite_margin: above 255 times the bound plus the
+** rounding of that sum) from the nearest integer, 255 Y + 1/2 has the
+** same floor. A lane nearer than that (0.1-0.4% of channels), or whose
+** weights' magnitudes sum to more than 1 + 2^-7, gets the exact chain's
+** bytes instead. */
 
 /* the low dwords of four fragments' channels c + k stride (k = 0..3) as
 ** (R0..R3 | B0..B3) and (G0..G3 | A0..A3); *any collects the lanes' bits */
@@ -2039,6 +2040,7 @@ AVX2_INLINE int avx2_channels8(const FRAGV *c, size_t stride, __m256i ch[4])
 ** the dither thresholds of the row's x & 3 */
 typedef struct Avx2ModWrite {
     __m256 col[3][4];
+    __m256 col_half[3][4];       /* the same less 1/2 (DOT3's operand; rgb) */
     int smooth, rgb, kind;
     ModWriteAlpha alpha;         /* the alpha test */
     int dither;
@@ -2073,6 +2075,7 @@ static inline void avx2_modwrite_setup(Avx2ModWrite *m, const FRAGV *const a[3],
         for (int c = 0; c < 4; c++) {
             const FRAGV v = smooth ? a[i][c] : frag_clamp01(a[0][c]);
             m->col[i][c] = _mm256_set1_ps((float)((double)v * (smooth ? 0x1p-60 : 0x1p-30)));
+            m->col_half[i][c] = _mm256_set1_ps((float)((double)(v - FRAG_ONE / 2) * (smooth ? 0x1p-60 : 0x1p-30)));
         }
     m->dither = 0;
     m->replace = 0;
@@ -2098,13 +2101,14 @@ static inline void avx2_modwrite_dither(Avx2ModWrite *m, int dither, const FRAGV
 /* how near an integer a lane's value may lie and still be proved: above
 ** the largest bound of the state's values (docs/architecture.md, in u =
 ** 2^-24 of a byte, an RGB565 step or the alpha test's byte) with room to
-** spare. DOT3: at most 28281u (SRC_ALPHA), under 2^-9 = 32768u; else
-** SRC_ALPHA 9564u under 2^-10 = 16384u, no blend and ONE / ONE 3622u
-** under 2^-11 = 8192u. A smaller margin leaves fewer lanes to the exact
-** code (each margin's share of the values that lie that near) */
+** spare. DOT3: SRC_ALPHA at most 19800u, under 2^-9 = 32768u, no blend
+** and ONE / ONE 11300u under 2^-10 = 16384u; else SRC_ALPHA 9564u under
+** 2^-10, no blend and ONE / ONE 3622u under 2^-11 = 8192u. A smaller
+** margin leaves fewer lanes to the exact code (each margin's share of the
+** values that lie that near) */
 AVX2_INLINE float avx2_modwrite_margin(int kind, int dot3)
 {
-    return dot3 ? 0x1p-9f : kind == 1 ? 0x1p-10f : 0x1p-11f;
+    return dot3 ? (kind == 1 ? 0x1p-9f : 0x1p-10f) : kind == 1 ? 0x1p-10f : 0x1p-11f;
 }
 
 /* floor(z) of lanes z >= 0, and in *bad the lanes where z lies within
@@ -2131,14 +2135,17 @@ AVX2_INLINE __m256i avx2_floor_proved_upto(__m256 z, float top, float margin, __
 }
 
 /* eight fragments' texels ct + k stride (0.30) as floats T[0..3] (exact
-** but for the conversion's rounding); 0 when a texel leaves [0, 2^31) */
-AVX2_INLINE int avx2_texels_ct8(const FRAGV *ct, size_t stride, __m256 T[4])
+** but for the conversion's rounding), with half_rgb T[0..2] less 1/2 (the
+** integer less 2^29, then converted); 0 when a texel leaves [0, 2^31) */
+AVX2_INLINE int avx2_texels_ct8(const FRAGV *ct, size_t stride, int half_rgb, __m256 T[4])
 {
     __m256i ch[4];
     if (!avx2_channels8(ct, stride, ch))
         return 0;
-    for (int i = 0; i < 4; i++)
-        T[i] = _mm256_mul_ps(_mm256_cvtepi32_ps(ch[i]), _mm256_set1_ps(0x1p-30f));
+    for (int i = 0; i < 4; i++) {
+        const __m256i v = half_rgb && i < 3 ? _mm256_sub_epi32(ch[i], _mm256_set1_epi32(1 << 29)) : ch[i];
+        T[i] = _mm256_mul_ps(_mm256_cvtepi32_ps(v), _mm256_set1_ps(0x1p-30f));
+    }
     return 1;
 }
 
@@ -2146,8 +2153,11 @@ AVX2_INLINE int avx2_texels_ct8(const FRAGV *ct, size_t stride, __m256 T[4])
 ** floats T[0..3]: h0 = c00 (2^16 - a) + c10 a and h1 (integers below 2^24,
 ** exact in float), then (h0 (2^16 - b) + h1 b) / (255 2^32) with the
 ** factors' (2^16 - b) / (255 2^32) and b / (255 2^32) rounded: within 4u of
-** the value, and within 4.02u of frag_bilerp_rgba8's 0.30 texel */
-AVX2_INLINE void avx2_bilerp8_float(const __m256i g[4], __m256i a, __m256i b, __m256 T[4])
+** the value, and within 4.02u of frag_bilerp_rgba8's 0.30 texel. With
+** half_rgb, T[0..2] are the texel less 1/2 (DOT3's operand): h0' = 2 h0 -
+** 255 2^16 (exact: |h0'| <= 255 2^16) and h1' over twice that divisor,
+** within 2u of the value (it is at most 1/2), 2.01u of the 0.30 texel's. */
+AVX2_INLINE void avx2_bilerp8_float(const __m256i g[4], __m256i a, __m256i b, int half_rgb, __m256 T[4])
 {
     const __m256i one16 = _mm256_set1_epi32(65536);
     const __m256 af = _mm256_cvtepi32_ps(a), iaf = _mm256_cvtepi32_ps(_mm256_sub_epi32(one16, a));
@@ -2163,19 +2173,27 @@ AVX2_INLINE void avx2_bilerp8_float(const __m256i g[4], __m256i a, __m256i b, __
             c[q] = _mm256_cvtepi32_ps(_mm256_shuffle_epi8(g[q], pick));
         const __m256 h0 = _mm256_fmadd_ps(c[0], iaf, _mm256_mul_ps(c[1], af));
         const __m256 h1 = _mm256_fmadd_ps(c[2], iaf, _mm256_mul_ps(c[3], af));
-        T[i] = _mm256_fmadd_ps(h0, ibk, _mm256_mul_ps(h1, bk));
+        if (half_rgb && i < 3) {
+            const __m256 two = _mm256_set1_ps(2.0f), mid = _mm256_set1_ps(-255.0f * 65536.0f);
+            const __m256 half = _mm256_set1_ps(0.5f);
+            T[i] = _mm256_fmadd_ps(_mm256_fmadd_ps(h0, two, mid), _mm256_mul_ps(ibk, half),
+                                   _mm256_mul_ps(_mm256_fmadd_ps(h1, two, mid), _mm256_mul_ps(bk, half)));
+        } else {
+            T[i] = _mm256_fmadd_ps(h0, ibk, _mm256_mul_ps(h1, bk));
+        }
     }
 }
 
-/* COMBINE DOT3 of texels T0 and colours c (in place, all in [0, 1]): in
-** the rgb lanes 4 sum((T0_i - 1/2)(c_i - 1/2)) clamped to [0, 1], in the
-** alpha lane the same (DOT3_RGBA, rgba) or T0_a c_a (DOT3_RGB's MODULATE) */
+/* COMBINE DOT3 of texels T0 and colours c (in place): with the rgb lanes
+** of both given less 1/2 (in [-1/2, 1/2]) and the alpha lanes in [0, 1],
+** in the rgb lanes 4 sum((T0_i - 1/2)(c_i - 1/2)) clamped to [0, 1], in
+** the alpha lane the same (DOT3_RGBA, rgba) or T0_a c_a (DOT3_RGB's
+** MODULATE) */
 AVX2_INLINE void avx2_dot3_float(int rgba, const __m256 T0[4], __m256 c[4])
 {
-    const __m256 half = _mm256_set1_ps(0.5f);
-    __m256 s = _mm256_mul_ps(_mm256_sub_ps(T0[0], half), _mm256_sub_ps(c[0], half));
-    s = _mm256_fmadd_ps(_mm256_sub_ps(T0[1], half), _mm256_sub_ps(c[1], half), s);
-    s = _mm256_fmadd_ps(_mm256_sub_ps(T0[2], half), _mm256_sub_ps(c[2], half), s);
+    __m256 s = _mm256_mul_ps(T0[0], c[0]);
+    s = _mm256_fmadd_ps(T0[1], c[1], s);
+    s = _mm256_fmadd_ps(T0[2], c[2], s);
     const __m256 d = _mm256_min_ps(_mm256_max_ps(_mm256_mul_ps(s, _mm256_set1_ps(4.0f)), _mm256_setzero_ps()),
                                    _mm256_set1_ps(1.0f));
     c[3] = rgba ? d : _mm256_mul_ps(T0[3], c[3]);
@@ -2207,14 +2225,18 @@ AVX2_INLINE void avx2_modwrite_source8(const Avx2ModWrite *m, int smooth, int do
             const __m256 mag = _mm256_add_ps(_mm256_add_ps(_mm256_andnot_ps(sign, w0), _mm256_andnot_ps(sign, w1)),
                                              _mm256_andnot_ps(sign, w2));
             *bad = _mm256_cmp_ps(mag, _mm256_set1_ps(0x1.02p30f), _CMP_GT_OQ);
+            /* with dot3 the rgb lanes less 1/2, from the vertex
+            ** colours less 1/2 (the weights sum to 1) */
+            const __m256 half = _mm256_set1_ps(0.5f), nhalf = _mm256_set1_ps(-0.5f);
             for (int i = 0; i < 4; i++) {
-                const __m256 sum = _mm256_fmadd_ps(m->col[0][i], w0,
-                                                   _mm256_fmadd_ps(m->col[1][i], w1, _mm256_mul_ps(m->col[2][i], w2)));
-                c[i] = _mm256_min_ps(_mm256_max_ps(sum, zero), one);
+                const __m256(*col)[4] = dot3 && i < 3 ? m->col_half : m->col;
+                const __m256 sum = _mm256_fmadd_ps(col[0][i], w0, _mm256_fmadd_ps(col[1][i], w1, _mm256_mul_ps(col[2][i], w2)));
+                c[i] = dot3 && i < 3 ? _mm256_min_ps(_mm256_max_ps(sum, nhalf), half)
+                                     : _mm256_min_ps(_mm256_max_ps(sum, zero), one);
             }
         } else {
             for (int i = 0; i < 4; i++)
-                c[i] = m->col[0][i];
+                c[i] = dot3 && i < 3 ? m->col_half[0][i] : m->col[0][i];
         }
         if (dot3)
             avx2_dot3_float(m->dot3->rgba, T0, c);
@@ -2369,14 +2391,14 @@ AVX2_INLINE uint32_t avx2_modwrite565_1(const Avx2ModWrite *m, const FRAGV *cons
 ** fetch stage sampled) or 1 (sampled here at the coordinates tc[0..7]);
 ** 0 when source 0 has a texel outside [0, 2^31) */
 AVX2_INLINE int avx2_modwrite_texels8(const ModWriteTexture *tx, int src, const FRAGV *ct, size_t stride,
-                                      const TexCoord *tc, __m256 T[4])
+                                      const TexCoord *tc, int half_rgb, __m256 T[4])
 {
     if (src == 0)
-        return avx2_texels_ct8(ct, stride, T);
+        return avx2_texels_ct8(ct, stride, half_rgb, T);
     __m256i g[4], a, b;
     avx2_linear_texels8((const int *)(const void *)tx->texels, tx->log2w, tx->log2h, tc, tx->repeat_s, tx->repeat_t, 1,
                         g, &a, &b);
-    avx2_bilerp8_float(g, a, b, T);
+    avx2_bilerp8_float(g, a, b, half_rgb, T);
     return 1;
 }
 
@@ -2447,10 +2469,10 @@ AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *restrict m, const FRAGV *
         __m256 T[4], T0[4] = { _mm256_setzero_ps() };    /* read only with dot3 */
         __m256i w = d;
         unsigned bad = 0xFFu;
-        if (avx2_modwrite_texels8(&m->tx, src, ct + (size_t)j * stride, stride, tc + j, T)
+        if (avx2_modwrite_texels8(&m->tx, src, ct + (size_t)j * stride, stride, tc + j, 0, T)
             && (!dot3
                 || avx2_modwrite_texels8(&d3.tx0, src0, modwrite_ct0(&d3, j), d3.ct0_stride, modwrite_tc0(&d3, j),
-                                         T0))) {
+                                         1, T0))) {
             const __m256i x3 = _mm256_and_si256(_mm256_add_epi32(idx, _mm256_set1_epi32(x0)), _mm256_set1_epi32(3));
             bad = rgb565 ? avx2_modwrite565_8(m, smooth, kind, dot3, &p[j], T0, T, d, x3, &w)
                          : avx2_modwrite8(m, smooth, kind, dot3, &p[j], T0, T, d, &w);

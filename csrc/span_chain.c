@@ -212,7 +212,7 @@ static int debug_modulate_write_avx2(Avx2ModWrite *m, const FRAGV *const a[3], i
             _mm256_set1_epi32(3));
         __m256i w;
         __m256 T[4], T0[4] = { _mm256_setzero_ps() };
-        if (!avx2_texels_ct8(ct[j], 4, T) || (dot3 && !avx2_texels_ct8(g.ct0[j], 4, T0)))
+        if (!avx2_texels_ct8(ct[j], 4, 0, T) || (dot3 && !avx2_texels_ct8(g.ct0[j], 4, 1, T0)))
             exact += 8;
         else
             exact += __builtin_popcount(

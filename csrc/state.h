@@ -20,7 +20,7 @@
 ** limits (each at or above the spec's minimum, Tables 6.20-6.22) */
 #define GLES_MAX_TEXTURE_UNITS 4
 /* room for the fused span stage's per-triangle constants (Avx2ModWrite) */
-#define GLES_FUSED_SETUP_BYTES 1024
+#define GLES_FUSED_SETUP_BYTES 1536
 /* room for the stencil and depth tests' per-primitive setup (Avx2TestsSetup) */
 #define GLES_TESTS_SETUP_BYTES 1024
 /* fragments of one flat colour's blend before its table is built: building
