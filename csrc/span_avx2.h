@@ -129,9 +129,23 @@ AVX2_INLINE int avx2_row_texels8(const void *texels, int64_t w, int64_t total, _
     return 1;
 }
 
+/* the texels at indices i (eight lanes) and i + 1, as two registers of
+** eight lanes, by two gathers of four 64-bit words (each word is the pair) */
+AVX2_INLINE void avx2_gather_pairs(const int *tx32, __m256i i, __m256i *left, __m256i *right)
+{
+    const long long *base = (const long long *)(const void *)tx32;
+    const __m256i lo = _mm256_i32gather_epi64(base, _mm256_castsi256_si128(i), 4);
+    const __m256i hi = _mm256_i32gather_epi64(base, _mm256_extracti128_si256(i, 1), 4);
+    const __m256i split = _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7);
+    const __m256i a = _mm256_permutevar8x32_epi32(lo, split), b = _mm256_permutevar8x32_epi32(hi, split);
+    *left = _mm256_permute2x128_si256(a, b, 0x20);
+    *right = _mm256_permute2x128_si256(a, b, 0x31);
+}
+
 /* the same words by avx2_row_texels8 where `rows` asks for it and it
-** applies, else by four gathers of eight (the float and double builds'
-** kernels, on levels of any width) */
+** applies, else, where no lane's pair wraps, by gathers of the pairs as
+** 64-bit words (half the elements), else by four gathers of eight (the
+** float and double builds' kernels, on levels of any width) */
 AVX2_INLINE void avx2_texel_words8(const void *texels, int w, int64_t total, __m256i xa, __m256i xb, __m256i ya,
                                    __m256i yb, int rows, __m256i g[4])
 {
@@ -139,6 +153,13 @@ AVX2_INLINE void avx2_texel_words8(const void *texels, int w, int64_t total, __m
         return;
     const int *tx32 = texels;
     const __m256i r0 = _mm256_mullo_epi32(ya, _mm256_set1_epi32(w)), r1 = _mm256_mullo_epi32(yb, _mm256_set1_epi32(w));
+    if (_mm256_movemask_epi8(_mm256_cmpeq_epi32(xb, _mm256_add_epi32(xa, _mm256_set1_epi32(1)))) == -1) {
+        /* no lane wraps or clamps at the right edge: each row's two
+        ** texels are one 64-bit word (avx2_linear_texels8's pairs) */
+        avx2_gather_pairs(tx32, _mm256_add_epi32(r0, xa), &g[0], &g[1]);
+        avx2_gather_pairs(tx32, _mm256_add_epi32(r1, xa), &g[2], &g[3]);
+        return;
+    }
     g[0] = _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r0, xa), 4);
     g[1] = _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r0, xb), 4);
     g[2] = _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r1, xa), 4);
@@ -407,18 +428,6 @@ AVX2_INLINE void avx2_store_transposed4(__m256i r, __m256i g, __m256i b, __m256i
     avx2_store4(out + 3 * stride, _mm256_permute2x128_si256(t1, t3, 0x31));
 }
 
-/* the texels at indices i (eight lanes) and i + 1, as two registers of
-** eight lanes, by two gathers of four 64-bit words (each word is the pair) */
-AVX2_INLINE void avx2_gather_pairs(const int *tx32, __m256i i, __m256i *left, __m256i *right)
-{
-    const long long *base = (const long long *)(const void *)tx32;
-    const __m256i lo = _mm256_i32gather_epi64(base, _mm256_castsi256_si128(i), 4);
-    const __m256i hi = _mm256_i32gather_epi64(base, _mm256_extracti128_si256(i, 1), 4);
-    const __m256i split = _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7);
-    const __m256i a = _mm256_permutevar8x32_epi32(lo, split), b = _mm256_permutevar8x32_epi32(hi, split);
-    *left = _mm256_permute2x128_si256(a, b, 0x20);
-    *right = _mm256_permute2x128_si256(a, b, 0x31);
-}
 
 /* the low and high dwords of the s and t of eight fragments' coordinates
 ** c[0..7] (lane = fragment): four loads, two rounds of shuffles (which
