@@ -1239,42 +1239,8 @@ static inline void frag_bilerp_rgba8(uint32_t c00, uint32_t c10, uint32_t c01, u
     }
 }
 
-#if defined(GLES_NUM_FLOAT)
-/* The float build's lambda is (float)log2((double)rho). Rather than a libm
-** call per fragment, y = lod_log2_approx(rho) in double, and (float)y
-** wherever no float rounding boundary (the midpoint of two adjacent floats)
-** lies within 2^12 ulps of y; elsewhere (about one in 2^16) log2 itself.
-**
-** The approximation, for a positive finite x = (double)rho (whose
-** significand has at most 24 bits): x = 2^e m with m in [0.75, 1.5) (the
-** top 7 bits of the significand pick a table row; rows 64..127 take m / 2
-** and e + 1); r = m c - 1 with c = lod_log2_c[row] a multiple of 2^-19
-** (20 bits) near 1 / m, so m c is exact (at most 44 bits) and so is the
-** subtraction (m c lies in [1/2, 2]); |r| < 2^-7. Then
-** y = (e + L) + p(r), L = lod_log2_l[row] = -log2(c) rounded to nearest
-** (c = 1 and L = 0 for the two rows next to m = 1), p the series of
-** log2(1 + r) to r^6 by Horner. Error: the truncated series is within
-** |r|^6 / 7 < 2^-44.8 of log2(1 + r) relatively, and the roundings of
-** Horner's scheme and of the coefficients add less than 2^-50: p is
-** within 2^-44.7 of log2(1 + r) relatively. With e = 0 on the rows of
-** c = 1, y = p and that is the bound; on the other rows |log2 x| > 2^-7.5
-** and the error is at most 2^-54 (L) + 2^-51.2 (p, |p| < 2^-6.4) +
-** 2^-53.7 (the last addition), below 2^-43 |log2 x|; with e != 0,
-** |log2 x| > max(0.41, |e| - 0.59) and the roundings of e + L and of the
-** sum add at most 2^-52 (|e| + 0.6), so the error is below 2^-48 |log2 x|.
-** So |y - log2 x| < 2^-43 |log2 x| <= 2^10 ulps of y, and glibc's log2 is
-** within 1 ulp of log2 x (<= 2 ulps of y).
-** Where no midpoint lies within 2^12 ulps of y, none lies between y,
-** log2 x and glibc's result, which therefore round to the same float. The
-** midpoints of y's binade are where the low 29 bits of y (those the
-** conversion to float drops) are 2^28, so the distance in ulps is
-** |low29 - 2^28|; those of the neighbouring binades lie at least 2^26 ulps
-** away, and y = 0 (x = 1, where glibc's log2 is 0 too) is exact.
-** (Over every positive finite float, with glibc 2.36: y is within 211
-** ulps of log2 x, 33794 inputs go to log2, and the float of y would have
-** been glibc's float for every one of them too.) */
-#define LOD_LOG2_FAST 1
-#define LOD_LOG2_NEAR ((int64_t)1 << 12)    /* ulps of y around a midpoint that go to log2 */
+/* the float and double builds' log2 of rho (below): a row's c and -log2(c)
+** rounded to nearest, the series' coefficients */
 static const double lod_log2_c[128] = {
     0x1p+0, 0x1.fa11cp-1, 0x1.f631p-1, 0x1.f25f8p-1, 0x1.ee9c8p-1, 0x1.eae8p-1,
     0x1.e741cp-1, 0x1.e3a9p-1, 0x1.e01ep-1, 0x1.dcap-1, 0x1.d92f4p-1, 0x1.d5cacp-1,
@@ -1343,6 +1309,43 @@ static const double lod_log2_l[128] = {
 
 typedef union LodBits { double d; uint64_t u; } LodBits;
 
+#if defined(GLES_NUM_FLOAT)
+/* The float build's lambda is (float)log2((double)rho). Rather than a libm
+** call per fragment, y = lod_log2_approx(rho) in double, and (float)y
+** wherever no float rounding boundary (the midpoint of two adjacent floats)
+** lies within 2^12 ulps of y; elsewhere (about one in 2^16) log2 itself.
+**
+** The approximation, for a positive finite x = (double)rho (whose
+** significand has at most 24 bits): x = 2^e m with m in [0.75, 1.5) (the
+** top 7 bits of the significand pick a table row; rows 64..127 take m / 2
+** and e + 1); r = m c - 1 with c = lod_log2_c[row] a multiple of 2^-19
+** (20 bits) near 1 / m, so m c is exact (at most 44 bits) and so is the
+** subtraction (m c lies in [1/2, 2]); |r| < 2^-7. Then
+** y = (e + L) + p(r), L = lod_log2_l[row] = -log2(c) rounded to nearest
+** (c = 1 and L = 0 for the two rows next to m = 1), p the series of
+** log2(1 + r) to r^6 by Horner. Error: the truncated series is within
+** |r|^6 / 7 < 2^-44.8 of log2(1 + r) relatively, and the roundings of
+** Horner's scheme and of the coefficients add less than 2^-50: p is
+** within 2^-44.7 of log2(1 + r) relatively. With e = 0 on the rows of
+** c = 1, y = p and that is the bound; on the other rows |log2 x| > 2^-7.5
+** and the error is at most 2^-54 (L) + 2^-51.2 (p, |p| < 2^-6.4) +
+** 2^-53.7 (the last addition), below 2^-43 |log2 x|; with e != 0,
+** |log2 x| > max(0.41, |e| - 0.59) and the roundings of e + L and of the
+** sum add at most 2^-52 (|e| + 0.6), so the error is below 2^-48 |log2 x|.
+** So |y - log2 x| < 2^-43 |log2 x| <= 2^10 ulps of y, and glibc's log2 is
+** within 1 ulp of log2 x (<= 2 ulps of y).
+** Where no midpoint lies within 2^12 ulps of y, none lies between y,
+** log2 x and glibc's result, which therefore round to the same float. The
+** midpoints of y's binade are where the low 29 bits of y (those the
+** conversion to float drops) are 2^28, so the distance in ulps is
+** |low29 - 2^28|; those of the neighbouring binades lie at least 2^26 ulps
+** away, and y = 0 (x = 1, where glibc's log2 is 0 too) is exact.
+** (Over every positive finite float, with glibc 2.36: y is within 211
+** ulps of log2 x, 33794 inputs go to log2, and the float of y would have
+** been glibc's float for every one of them too.) */
+#define LOD_LOG2_FAST 1
+#define LOD_LOG2_NEAR ((int64_t)1 << 12)    /* ulps of y around a midpoint that go to log2 */
+
 /* the approximation above, for a positive finite double x with at most
 ** 24 significant bits */
 static inline double lod_log2_approx(double x)
@@ -1379,7 +1382,46 @@ static inline LODV lod_log2(TEXC rho)
 }
 #else
 #define LOD_LOG2_FAST 0
-static inline LODV lod_log2(TEXC rho) { return rho > 0 ? (NUM)log2((double)rho) : (NUM)-1e30; }
+/* The double build's lambda, log2 x of x = rho (positive, normal and
+** finite; elsewhere the C library's log2), within 0.51 ulp: the float
+** build's rows (x = 2^e m, |m c - 1| < 2^-7) with m c as the double mc
+** and its exact error mc_lo (a fused multiply-add), r = mc - 1 exact (mc
+** in [1/2, 2]); log2(1 + r + mc_lo) as r A1 (its double and the product's
+** exact error, and r times A1's tail), mc_lo A1 (1 - r) and r^2 (A2 + ...
+** + r^6 A8); -log2(c) as its double L and tail (tables_lod.h). (e + L) +
+** r A1 are two exact sums (their errors join the tail), so one rounding
+** at y's scale remains: the tail's terms are below 2^-14, their roundings
+** and mc_lo's second-order term below 2^-66, the truncated series below
+** 2^-65 (|r|^9 / (9 ln 2)). tests/test_lod_log2.py measures at most 0.509
+** ulp against log2 to 40 digits. Every lane of lod_choose4_d does these
+** operations in this order, so the vector code gives the same bits. */
+#include "tables_lod.h"
+#define LOD_LOG2_A7 0x1.a61762a7aded9p-3
+#define LOD_LOG2_A8 (-0x1.71547652b82fep-3)
+static inline double lod_log2_dd(double x)
+{
+    LodBits b = { x }, m;
+    const uint64_t fold = (b.u >> 51) & 1;     /* m >= 1.5: m / 2, e + 1 */
+    const double e = (double)((int64_t)(b.u >> 52) + (int64_t)fold - 1023);
+    m.u = (b.u & (((uint64_t)1 << 52) - 1)) | ((1023 - fold) << 52);
+    const int row = (int)((b.u >> 45) & 127);
+    /* m c = mc + mc_lo exactly; r = mc - 1 is exact (mc in [1/2, 2]) */
+    const double mc = m.d * lod_log2_c[row], mc_lo = fma(m.d, lod_log2_c[row], -mc), r = mc - 1.0;
+    const double ph = r * LOD_LOG2_A1, pl = fma(r, LOD_LOG2_A1, -ph);
+    const double q = (r * r) * (LOD_LOG2_A2 + r * (LOD_LOG2_A3 + r * (LOD_LOG2_A4 + r * (LOD_LOG2_A5
+                   + r * (LOD_LOG2_A6 + r * (LOD_LOG2_A7 + r * LOD_LOG2_A8))))));
+    /* s1 = e + L (|e| >= 1 > |L|, or e = 0), s2 = s1 + ph, with errors */
+    const double L = lod_log2_l[row];
+    const double s1 = e + L, err1 = L - (s1 - e);
+    const double s2 = s1 + ph, v = s2 - s1, err2 = (s1 - (s2 - v)) + (ph - v);
+    return s2 + (((err1 + err2) + (pl + lod_log2_l_lo[row])) + ((r * LOD_LOG2_A1_LO + mc_lo * (LOD_LOG2_A1 - r * LOD_LOG2_A1)) + q));
+}
+static inline LODV lod_log2(TEXC rho)
+{
+    if (!(rho > 0))
+        return (NUM)-1e30;
+    return rho >= 0x1p-1022 && rho <= 0x1.fffffffffffffp1023 ? lod_log2_dd(rho) : log2(rho);
+}
 #endif
 static inline LODV lod_from_ratio(int n, int d) { return (NUM)n / (NUM)d; }
 static inline LODV lod_from_double(double v) { return (NUM)v; }

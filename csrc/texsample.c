@@ -492,11 +492,50 @@ AVX2_INLINE int lod_choose4_f(const LodParamsR *p, const TexCoord *c, const TexC
 #elif !NUM_IS_FIXED
 _Static_assert(sizeof(TexCoord) == 2 * sizeof(double), "two TexCoords are four double lanes");
 
+/* lod_log2_dd (num.h) of four lanes x: its operations in its order, the
+** rows' constants by gathers, e as a double through the bits of 2^52 + e;
+** every lane's value is that of the scalar code for a positive normal x
+** (other lanes give some value, and read the tables within bounds) */
+AVX2_INLINE __m256d lod_log2_dd4(__m256d x)
+{
+    const __m256i b = _mm256_castpd_si256(x), one = _mm256_set1_epi64x(1);
+    const __m256i fold = _mm256_and_si256(_mm256_srli_epi64(b, 51), one);       /* m >= 1.5: m / 2, e + 1 */
+    const __m256i biased = _mm256_add_epi64(_mm256_srli_epi64(b, 52), fold);   /* e + 1023, below 2^13 */
+    const __m256d two52 = _mm256_set1_pd(0x1p52);
+    const __m256d e = _mm256_sub_pd(_mm256_castsi256_pd(_mm256_or_si256(biased, _mm256_castpd_si256(two52))),
+                                    _mm256_set1_pd(0x1p52 + 1023));
+    const __m256d m = _mm256_castsi256_pd(
+        _mm256_or_si256(_mm256_and_si256(b, _mm256_set1_epi64x((int64_t)(((uint64_t)1 << 52) - 1))),
+                        _mm256_slli_epi64(_mm256_sub_epi64(_mm256_set1_epi64x(1023), fold), 52)));
+    const __m256i row = _mm256_and_si256(_mm256_srli_epi64(b, 45), _mm256_set1_epi64x(127));
+    const __m256d c = _mm256_i64gather_pd(lod_log2_c, row, 8);
+    const __m256d lh = _mm256_i64gather_pd(lod_log2_l, row, 8), llo = _mm256_i64gather_pd(lod_log2_l_lo, row, 8);
+    const __m256d a1 = _mm256_set1_pd(LOD_LOG2_A1);
+    const __m256d mc = _mm256_mul_pd(m, c), mc_lo = _mm256_fmsub_pd(m, c, mc);
+    const __m256d r = _mm256_sub_pd(mc, _mm256_set1_pd(1.0));
+    const __m256d ph = _mm256_mul_pd(r, a1), pl = _mm256_fmsub_pd(r, a1, ph);
+    static const double coef[7] = { LOD_LOG2_A2, LOD_LOG2_A3, LOD_LOG2_A4, LOD_LOG2_A5,
+                                    LOD_LOG2_A6, LOD_LOG2_A7, LOD_LOG2_A8 };
+    __m256d h = _mm256_set1_pd(coef[6]);
+    for (int k = 5; k >= 0; k--)
+        h = _mm256_add_pd(_mm256_set1_pd(coef[k]), _mm256_mul_pd(r, h));
+    const __m256d q = _mm256_mul_pd(_mm256_mul_pd(r, r), h);
+    const __m256d s1 = _mm256_add_pd(e, lh), err1 = _mm256_sub_pd(lh, _mm256_sub_pd(s1, e));
+    const __m256d s2 = _mm256_add_pd(s1, ph), v = _mm256_sub_pd(s2, s1);
+    const __m256d err2 = _mm256_add_pd(_mm256_sub_pd(s1, _mm256_sub_pd(s2, v)), _mm256_sub_pd(ph, v));
+    const __m256d lo = _mm256_add_pd(
+        _mm256_add_pd(_mm256_mul_pd(r, _mm256_set1_pd(LOD_LOG2_A1_LO)),
+                      _mm256_mul_pd(mc_lo, _mm256_sub_pd(a1, _mm256_mul_pd(r, a1)))),
+        q);
+    return _mm256_add_pd(s2, _mm256_add_pd(_mm256_add_pd(_mm256_add_pd(err1, err2), _mm256_add_pd(pl, llo)), lo));
+}
+
 /* lod_choose of fragments 0..3 in the double build (key[k], frac[k], frac 0
 ** where not two). rho: the scalar double operations in lanes, as in
 ** lod_choose4_f (s and t interleaved in two registers per array, then
-** unpacked to one register per derivative). Lambda is lod_log2's libm call
-** wherever its value is used; it is not where 1 < rho < 2^(q+1) fails:
+** unpacked to one register per derivative). Lambda is lod_log2's
+** (lod_log2_dd4, the same bits) wherever its value is used; it is not
+** where 1 < rho < 2^(q+1) fails:
 ** for rho <= 1, log2 rho <= 0 and log2 (within 1 ulp, so of the same
 ** sign, and 0 at 1) gives lambda <= 0 <= c: magnification, as -1e30 gives
 ** (rho <= 0 or NaN is -1e30 in the scalar code too); for rho >= 2^(q+1),
@@ -530,16 +569,9 @@ AVX2_INLINE void lod_choose4_d(const LodParamsR *p, const TexCoord *c, const Tex
     const double top = (double)((int64_t)2 << p->q);     /* 2^(q+1); q <= 11 */
     const __m256d gt1 = _mm256_cmp_pd(rho, _mm256_set1_pd(1), _CMP_GT_OQ);
     __m256d lam = _mm256_blendv_pd(_mm256_set1_pd(-1e30), _mm256_set1_pd(p->q + 1), gt1);
-    const int used = _mm256_movemask_pd(_mm256_and_pd(gt1, _mm256_cmp_pd(rho, _mm256_set1_pd(top), _CMP_LT_OQ)));
-    if (used) {
-        double r[4], l[4];
-        _mm256_storeu_pd(r, rho);
-        _mm256_storeu_pd(l, lam);
-        for (int k = 0; k < 4; k++)
-            if (used >> k & 1)
-                l[k] = lod_log2(r[k]);
-        lam = _mm256_setr_pd(l[0], l[1], l[2], l[3]);
-    }
+    const __m256d used = _mm256_and_pd(gt1, _mm256_cmp_pd(rho, _mm256_set1_pd(top), _CMP_LT_OQ));
+    if (_mm256_movemask_pd(used))       /* (the lanes used are normal: 1 < rho < 2^12) */
+        lam = _mm256_blendv_pd(lam, lod_log2_dd4(rho), used);
 
     const __m256d above = _mm256_cmp_pd(lam, _mm256_set1_pd(p->cshift), _CMP_GT_OQ);
     const __m256i pick = _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6);
