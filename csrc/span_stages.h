@@ -1649,7 +1649,7 @@ static void STAGE(stage_dot3_sample_write)(GlesContext *ctx, const TriSetup *t, 
 ** coordinates stage left (a bilinear sampler with a vector kernel), and
 ** there the unit may be a lone REPLACE of an RGBA texture. The chunk's
 ** tail is padded to a whole group with copies of its last fragment. With
-** dot3 (the double build's AVX-512 lanes only) the units are two
+** dot3 (the float build's lanes and the double build's AVX-512 ones) the units are two
 ** (span_dot3_pair): the first one's COMBINE DOT3 of its texels (fetched,
 ** or sampled here at the coordinates in b->tx) and the colour comes
 ** before the second one's MODULATE, in stage_color_dot3_modulate's
@@ -1699,8 +1699,13 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
         f8_modwrite_dither(m, ctx->dither, t_row);
     }
 #if defined(GLES_NUM_FLOAT)
-    f8_modwrite_dispatch(m, src, rgb565, n, b->n, b->k, (const WGT (*)[3])b->p, b->ct[0][u], stride, b->tc, b->x0,
-                         chunk_color(ctx, b, rgb565));
+    if (dot3)
+        f8_modwrite_dispatch_dot3(m, src, rgb565, 1, n, b->n, b->k, (const WGT (*)[3])b->p,
+                                  sampled0 ? NULL : b->ct[0][u0], b->tx, b->ct[0][u], stride, b->tc, b->x0,
+                                  chunk_color(ctx, b, rgb565));
+    else
+        f8_modwrite_dispatch(m, src, rgb565, n, b->n, b->k, (const WGT (*)[3])b->p, b->ct[0][u], stride, b->tc,
+                             b->x0, chunk_color(ctx, b, rgb565));
 #else
     if (dot3)
         avx512_dot3_write(m, src, rgb565, n, b->n, b->k, (const WGT (*)[3])b->p, sampled0 ? NULL : b->ct[0][u0],
@@ -1721,7 +1726,7 @@ static void STAGE(stage_sample_write)(GlesContext *ctx, const TriSetup *t, SpanB
     STAGE(modulate_write)(ctx, t, b, 1, 0);
 }
 
-#if SIMD_AVX512_INSTANCE
+#if SIMD_AVX512_INSTANCE || defined(GLES_NUM_FLOAT)
 static void STAGE(stage_dot3_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     STAGE(modulate_write)(ctx, t, b, 0, 1);
@@ -1773,7 +1778,8 @@ static const ChainStages STAGE(chain_stages) = {
                .modulate_write_565 = 1 },
 #elif CHAIN_SIMD && defined(GLES_NUM_FLOAT)
     .fused = { .modulate_write = STAGE(stage_modulate_write), .sample_write = STAGE(stage_sample_write),
-               .modulate_write_565 = 1 },
+               .dot3_write = STAGE(stage_dot3_write), .dot3_sample_write = STAGE(stage_dot3_sample_write),
+               .modulate_write_565 = 1, .dot3_exact = 1 },
 #endif
 #if CHAIN_SIMD && SIMD_AVX512_INSTANCE
     .fused_avx512 = { .modulate_write = STAGE(stage_modulate_write), .sample_write = STAGE(stage_sample_write),
