@@ -605,18 +605,22 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
             ctx->chain_coords_tx_unit = first;
             ctx->chain_coords_unit = second;
         }
-        s[n++] = ctx->sample_group[first] > 1 ? cs->coords_tx[first] : cs->fetch[first];
         if (ctx->sample_group[second] > 1) {
-            s[n++] = cs->coords[second];
+            /* (the fused stage forms both units' coordinates where
+            ** stage_persp left any: STAGE(fused_coords)) */
+            if (ctx->sample_group[first] <= 1)
+                s[n++] = cs->fetch[first];
             s[n++] = fs->dot3_sample_write;
         } else {
+            s[n++] = ctx->sample_group[first] > 1 ? cs->coords_tx[first] : cs->fetch[first];
             s[n++] = cs->fetch[second];
             s[n++] = fs->dot3_write;
         }
         return n;
     }
     if (sample_write) {
-        s[n++] = rect ? cs->coords_rect[lone] : cs->coords[lone];
+        if (rect)   /* (a triangle's, the fused stage forms: STAGE(fused_coords)) */
+            s[n++] = cs->coords_rect[lone];
         s[n++] = fs->sample_write;
         return n;
     }

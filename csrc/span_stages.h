@@ -1514,6 +1514,21 @@ static void STAGE(stage_rect_source)(GlesContext *ctx, const TriSetup *t, SpanBu
 
 /* }==================================================================== */
 
+#if CHAIN_SIMD
+/* a fused stage's coordinates where its lanes sample: where stage_persp
+** left any of the first (DOT3) unit's in b->tx or the sampled unit's in
+** b->tc unformed, the coordinate stages' work (in their order: the one
+** into b->tx forms its values in b->tc first), in place of two stages
+** that mostly find everything done */
+static inline void STAGE(fused_coords)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, int u0, int u, int sampled0)
+{
+    if (sampled0 && !(b->tx_unit == u0 && b->tx_done >= b->n))
+        STAGE(stage_fetch)(ctx, t, b, u0, FETCH_COORDS_TX);
+    if (!(b->tc_unit == u && b->tc_done >= b->n))
+        STAGE(stage_fetch)(ctx, t, b, u, FETCH_COORDS);
+}
+#endif
+
 #if CHAIN_SIMD && NUM_IS_FIXED
 /* stage_color_modulate of the one enabled unit (or a rectangle's colour
 ** and stage_env's MODULATE), the alpha test and write_rgba8 (blend kind 0,
@@ -1557,6 +1572,8 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
     ** the vector kernel (its coordinates are in b->tx, FETCH_COORDS_TX) */
     const size_t stride = GLES_MAX_TEXTURE_UNITS * 4;
     const int sampled0 = dot3 && ctx->sample_group[u0] > 1;
+    if (src == 1 && !b->rect)
+        STAGE(fused_coords)(ctx, t, b, u0, u, sampled0);
     if (!in_range) {
         if (src == 1)
             STAGE(chunk_sample)(ctx, b, u, 0);
@@ -1671,6 +1688,8 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
     /* the first unit's texels are sampled here where its sampler has the
     ** vector kernel (its coordinates are in b->tx, FETCH_COORDS_TX) */
     const int sampled0 = dot3 && ctx->sample_group[u0] > 1;
+    if (src == 1 && !b->rect)
+        STAGE(fused_coords)(ctx, t, b, u0, u, sampled0);
     if (ctx->fused_serial != serial) {
         f8_modwrite_setup(m, a, smooth, tex->format != GL_RGBA, replace, span_blend_kind(ctx),
                           ctx->alpha_test ? ctx->alpha_func : GL_ALWAYS, fragment_alpha_ref8(ctx));
