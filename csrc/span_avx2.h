@@ -142,6 +142,20 @@ AVX2_INLINE void avx2_gather_pairs(const int *tx32, __m256i i, __m256i *left, __
     *right = _mm256_permute2x128_si256(a, b, 0x31);
 }
 
+/* eight words w into dst[k[0..7]]: one store where the offsets are eight
+** neighbouring pixels (run), else eight */
+AVX2_INLINE void avx2_store_words8(uint32_t *dst, const uint8_t *k, int run, __m256i w)
+{
+    if (run) {
+        _mm256_storeu_si256((__m256i *)(void *)&dst[k[0]], w);
+        return;
+    }
+    uint32_t words[8];
+    _mm256_storeu_si256((__m256i *)(void *)words, w);
+    for (int i = 0; i < 8; i++)
+        dst[k[i]] = words[i];
+}
+
 /* the same words by avx2_row_texels8 where `rows` asks for it and it
 ** applies, else, where no lane's pair wraps, by gathers of the pairs as
 ** 64-bit words (half the elements), else by four gathers of eight (the

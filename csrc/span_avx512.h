@@ -208,15 +208,7 @@ AVX512_INLINE int v8_write_rgba8_kind(uint32_t *dst, const uint8_t *k, int n, co
         else if (kind)
             d = _mm256_i32gather_epi32((const int *)(const void *)dst,
                                        _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)&k[j])), 4);
-        const __m256i w = v8_rgba8x8(&c[j], d, kind);
-        if (run) {
-            _mm256_storeu_si256((__m256i *)(void *)&dst[k[j]], w);
-        } else {
-            uint32_t words[8];
-            _mm256_storeu_si256((__m256i *)(void *)words, w);
-            for (int i = 0; i < 8; i++)
-                dst[k[j + i]] = words[i];
-        }
+        avx2_store_words8(dst, &k[j], run, v8_rgba8x8(&c[j], d, kind));
     }
     return j;
 }

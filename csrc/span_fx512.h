@@ -509,6 +509,35 @@ FX512_INLINE __m512i fx512_mul_u(__m512i a, __m512i b)
     return _mm512_srli_epi64(_mm512_add_epi64(_mm512_mul_epu32(a, b), _mm512_set1_epi64((int64_t)1 << 29)), 30);
 }
 
+/* fragments c[0..7]'s channels as lanes ch[0..3] (64-bit lanes, lane =
+** fragment), the colour channels fogged: frag_mul(f, clamp01(c)) +
+** frag_mul(1 - f, fc) with the factor f of the per-vertex factors av at
+** the weights p (rounded half away from zero by 16 bits, clamped) */
+FX512_INLINE void fx512_fog8(const __m512i av[3], const __m512i fcv[3], const WGT (*p)[3], const FRAGV (*c)[4],
+                             __m512i ch[4])
+{
+    /* (r | g) and (b | a) of four fragments, from two registers of two */
+    const __m512i rg = _mm512_setr_epi64(0, 4, 8, 12, 1, 5, 9, 13), ba = _mm512_setr_epi64(2, 6, 10, 14, 3, 7, 11, 15);
+    __m512i w[3];
+    fx512_wgt_lanes8(p, w);
+    const __m512i acc = _mm512_add_epi64(_mm512_add_epi64(_mm512_mul_epi32(av[0], w[0]), _mm512_mul_epi32(av[1], w[1])),
+                                         _mm512_mul_epi32(av[2], w[2]));
+    const __m512i f = fx512_clamp01(_mm512_srai_epi64(
+        _mm512_add_epi64(_mm512_add_epi64(acc, _mm512_set1_epi64((int64_t)1 << 15)), _mm512_srai_epi64(acc, 63)), 16));
+    const __m512i g = _mm512_sub_epi64(_mm512_set1_epi64(FRAG_ONE), f);
+    __m512i z[4];
+    for (int k = 0; k < 4; k++)
+        z[k] = _mm512_loadu_si512((const void *)c[2 * k]);
+    const __m512i x0 = _mm512_permutex2var_epi64(z[0], rg, z[1]), y0 = _mm512_permutex2var_epi64(z[2], rg, z[3]);
+    const __m512i x1 = _mm512_permutex2var_epi64(z[0], ba, z[1]), y1 = _mm512_permutex2var_epi64(z[2], ba, z[3]);
+    ch[0] = _mm512_shuffle_i64x2(x0, y0, _MM_SHUFFLE(1, 0, 1, 0));
+    ch[1] = _mm512_shuffle_i64x2(x0, y0, _MM_SHUFFLE(3, 2, 3, 2));
+    ch[2] = _mm512_shuffle_i64x2(x1, y1, _MM_SHUFFLE(1, 0, 1, 0));
+    ch[3] = _mm512_shuffle_i64x2(x1, y1, _MM_SHUFFLE(3, 2, 3, 2));
+    for (int i = 0; i < 3; i++)
+        ch[i] = _mm512_add_epi64(fx512_mul_u(f, fx512_clamp01(ch[i])), fx512_mul_u(g, fcv[i]));
+}
+
 /* stage_fog's mix of fragments 0..n-1's colours c with the per-vertex
 ** factors a[0..2] (each in [-2^30, 2^30]) at their weights p, eight at a
 ** time: the factor a0 w0 + a1 w1 + a2 w2 rounded half away from zero by 16
@@ -520,29 +549,38 @@ static __attribute__((noinline)) int fx512_fog(const NUM a[3], const WGT (*p)[3]
 {
     const __m512i av[3] = { _mm512_set1_epi64(a[0]), _mm512_set1_epi64(a[1]), _mm512_set1_epi64(a[2]) };
     const __m512i fcv[3] = { _mm512_set1_epi64(fc[0]), _mm512_set1_epi64(fc[1]), _mm512_set1_epi64(fc[2]) };
-    /* (r | g) and (b | a) of four fragments, from two registers of two */
-    const __m512i rg = _mm512_setr_epi64(0, 4, 8, 12, 1, 5, 9, 13), ba = _mm512_setr_epi64(2, 6, 10, 14, 3, 7, 11, 15);
     int j = 0;
     for (; j + 8 <= n; j += 8) {
-        __m512i w[3];
-        fx512_wgt_lanes8(&p[j], w);
-        const __m512i acc = _mm512_add_epi64(_mm512_add_epi64(_mm512_mul_epi32(av[0], w[0]), _mm512_mul_epi32(av[1], w[1])),
-                                             _mm512_mul_epi32(av[2], w[2]));
-        const __m512i f = fx512_clamp01(_mm512_srai_epi64(
-            _mm512_add_epi64(_mm512_add_epi64(acc, _mm512_set1_epi64((int64_t)1 << 15)), _mm512_srai_epi64(acc, 63)), 16));
-        const __m512i g = _mm512_sub_epi64(_mm512_set1_epi64(FRAG_ONE), f);
-        __m512i z[4];
-        for (int k = 0; k < 4; k++)
-            z[k] = _mm512_loadu_si512((const void *)c[j + 2 * k]);
-        const __m512i x0 = _mm512_permutex2var_epi64(z[0], rg, z[1]), y0 = _mm512_permutex2var_epi64(z[2], rg, z[3]);
-        const __m512i x1 = _mm512_permutex2var_epi64(z[0], ba, z[1]), y1 = _mm512_permutex2var_epi64(z[2], ba, z[3]);
-        __m512i ch[4] = { _mm512_shuffle_i64x2(x0, y0, _MM_SHUFFLE(1, 0, 1, 0)),
-                          _mm512_shuffle_i64x2(x0, y0, _MM_SHUFFLE(3, 2, 3, 2)),
-                          _mm512_shuffle_i64x2(x1, y1, _MM_SHUFFLE(1, 0, 1, 0)),
-                          _mm512_shuffle_i64x2(x1, y1, _MM_SHUFFLE(3, 2, 3, 2)) };
-        for (int i = 0; i < 3; i++)
-            ch[i] = _mm512_add_epi64(fx512_mul_u(f, fx512_clamp01(ch[i])), fx512_mul_u(g, fcv[i]));
+        __m512i ch[4];
+        fx512_fog8(av, fcv, &p[j], (const FRAGV (*)[4])&c[j], ch);
         fx512_store_transposed8(ch, c[j], 4);
+    }
+    return j;
+}
+
+/* fx512_fog of fragments 0..n-1 (eight at a time) and write_rgba8's kind 0
+** of the result in the same pass: each channel (the fogged colour, and
+** the alpha as it is) clamped to [0, 2^30] and turned to a byte as
+** frag_to_unorm(v, 255) does, (255 v + 2^29) >> 30 (0 at 0, 255 at
+** 2^30), the four bytes packed into the words dst[k[j]] (one store for
+** eight neighbouring pixels); the colours are not stored back. Returns the
+** fragments done (n rounded down to eight) */
+static __attribute__((noinline)) int fx512_fog_write_rgba8(const NUM a[3], const WGT (*p)[3], const FRAGV (*c)[4],
+                                                           int n, const FRAGV fc[3], uint32_t *dst,
+                                                           const uint8_t *k)
+{
+    const __m512i av[3] = { _mm512_set1_epi64(a[0]), _mm512_set1_epi64(a[1]), _mm512_set1_epi64(a[2]) };
+    const __m512i fcv[3] = { _mm512_set1_epi64(fc[0]), _mm512_set1_epi64(fc[1]), _mm512_set1_epi64(fc[2]) };
+    const __m512i b255 = _mm512_set1_epi64(255), half = _mm512_set1_epi64((int64_t)1 << 29);
+    int j = 0;
+    for (; j + 8 <= n; j += 8) {
+        __m512i ch[4], word = _mm512_setzero_si512();
+        fx512_fog8(av, fcv, &p[j], &c[j], ch);
+        for (int i = 0; i < 4; i++) {
+            const __m512i byte = _mm512_srli_epi64(_mm512_add_epi64(_mm512_mul_epu32(fx512_clamp01(ch[i]), b255), half), 30);
+            word = _mm512_or_si512(word, _mm512_slli_epi64(byte, 8 * i));
+        }
+        avx2_store_words8(dst, &k[j], k[j + 7] == k[j] + 7, _mm512_cvtepi64_epi32(word));
     }
     return j;
 }

@@ -1095,6 +1095,23 @@ static inline void STAGE(chunk_fog)(FRAGV c[4], FRAGV f, const FRAGV fc[3])
 }
 
 /* fog (§3.8) with the factor interpolated, or from the interpolated distance */
+#if CHAIN_SIMD
+/* whether the fog's lanes take a triangle: the per-vertex factor (no
+** per-fragment fog), its values a (in the fixed build within +-2^30) and
+** the fog colour fc in the kernels' ranges */
+static inline int STAGE(fog_in_lanes)(const GlesContext *ctx, const NUM a[3], const FRAGV fc[3])
+{
+#if NUM_IS_FIXED
+    const int32_t lim = (int32_t)1 << 30;
+    const int fits = a[0] >= -lim && a[0] <= lim && a[1] >= -lim && a[1] <= lim && a[2] >= -lim && a[2] <= lim;
+#else
+    const int fits = 1;
+    (void)a;
+#endif
+    return !ctx->fog_per_fragment && fits && v4_fits(v4_rgb0(fc));
+}
+#endif
+
 static void STAGE(stage_fog)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     const Vertex *v0 = t->v[0], *v1 = t->v[1], *v2 = t->v[2];
@@ -1104,15 +1121,8 @@ static void STAGE(stage_fog)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 #if CHAIN_SIMD
     /* the per-vertex factor of four fragments at a time (lanes), then each
     ** fragment's mix */
-    const V4 fog = v4_rgb0(fc);
     const NUM a[3] = { v0->fog, v1->fog, v2->fog };
-#if NUM_IS_FIXED
-    const int32_t lim = (int32_t)1 << 30;
-    const int fits = a[0] >= -lim && a[0] <= lim && a[1] >= -lim && a[1] <= lim && a[2] >= -lim && a[2] <= lim;
-#else
-    const int fits = 1;
-#endif
-    if (!ctx->fog_per_fragment && fits && v4_fits(fog)) {
+    if (STAGE(fog_in_lanes)(ctx, a, fc)) {
 #if NUM_IS_FIXED
         const __m256i fcv[3] = { _mm256_set1_epi64x(fc[0]), _mm256_set1_epi64x(fc[1]), _mm256_set1_epi64x(fc[2]) };
 #if SIMD_AVX512_FX
@@ -1122,6 +1132,7 @@ static void STAGE(stage_fog)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
         for (; j + 4 <= b->n; j += 4)
             avx2_fog_mix4(&b->c[j], avx2_fog4(a, (const WGT (*)[3])&b->p[j]), fcv);
 #else
+        const V4 fog = v4_rgb0(fc);
         for (; j + 4 <= b->n; j += 4) {
             FRAGV f[4];
             v4_store(f, v4_clamp01(v4_lerp3x4(a, (const WGT (*)[3])&b->p[j])));
@@ -1285,6 +1296,34 @@ static void STAGE(stage_write_rgba8)(GlesContext *ctx, const TriSetup *t, SpanBu
     (void)t;
     STAGE(write_rgba8)(ctx, b, 0);
 }
+
+#if CHAIN_SIMD && SIMD_AVX512_FX
+/* stage_fog then stage_write_rgba8 (no blend, every channel written) in
+** one pass of eight lanes where stage_fog's lanes take the triangle and
+** AVX-512 runs (fx512_fog_write_rgba8: the fogged colour goes straight to
+** the bytes), the last fragments by the stages' scalar code; else the two
+** stages */
+static void STAGE(stage_fog_write_rgba8)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    const NUM a[3] = { t->v[0]->fog, t->v[1]->fog, t->v[2]->fog };
+    FRAGV fc[3];
+    fragment_fog_color(ctx, fc);
+    if (ctx_simd(ctx) < SIMD_AVX512 || !STAGE(fog_in_lanes)(ctx, a, fc)) {
+        STAGE(stage_fog)(ctx, t, b);
+        STAGE(write_rgba8)(ctx, b, 0);
+        return;
+    }
+    uint32_t *dst = (uint32_t *)ctx->color + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
+    const int n = b->n;
+    for (int j = fx512_fog_write_rgba8(a, (const WGT (*)[3])b->p, (const FRAGV (*)[4])b->c, n, fc, dst, b->k); j < n;
+         j++) {
+        const WGT *p = b->p[j];
+        STAGE(chunk_fog)(b->c[j], frag_clamp01(frag_lerp3(a[0], a[1], a[2], p[0], p[1], p[2])), fc);
+        uint32_t *at = &dst[b->k[j]];
+        *at = v4_rgba8(v4_load(b->c[j]), *at, 0);
+    }
+}
+#endif
 
 static void STAGE(stage_write_rgba8_alpha)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
@@ -1791,6 +1830,9 @@ static const ChainStages STAGE(chain_stages) = {
     .write_rgba8_masked = STAGE(stage_write_rgba8_masked),
     .write_565 = STAGE(stage_write_565),
     .write_565_alpha = STAGE(stage_write_565_alpha),
+#if CHAIN_SIMD && SIMD_AVX512_FX
+    .fog_write_rgba8 = STAGE(stage_fog_write_rgba8),
+#endif
 #if CHAIN_SIMD && NUM_IS_FIXED
     .fused = { .modulate_write = STAGE(stage_modulate_write), .sample_write = STAGE(stage_sample_write),
                .dot3_write = STAGE(stage_dot3_write), .dot3_sample_write = STAGE(stage_dot3_sample_write),

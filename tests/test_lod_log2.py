@@ -125,30 +125,27 @@ def neighbours(x: float, k: int = 3) -> list[int]:
     return [v for v in range(b - k, b + k + 1) if 0 < v <= FLT_MAX_BITS]
 
 
-@pytest.fixture(scope="module")
-def driver(tmp_path_factory: pytest.TempPathFactory) -> Path:
+def compile_driver(tmp_path_factory: pytest.TempPathFactory, source: str, numeric: str) -> Path:
+    """A driver program over num.h, built as the core is (-ffp-contract=off) for one numeric build."""
     cc = shutil.which("cc") or shutil.which("gcc")
     if not cc:
         pytest.skip("no C compiler")
-    d = tmp_path_factory.mktemp("lod_log2")
-    (d / "driver.c").write_text(DRIVER)
+    d = tmp_path_factory.mktemp(f"lod_log2_{numeric.lower()}")
+    (d / "driver.c").write_text(source)
     exe = d / "driver"
-    subprocess.run([cc, "-std=c11", "-O2", "-Wall", "-Wextra", "-ffp-contract=off", "-DGLES_NUM_FLOAT=1",
+    subprocess.run([cc, "-std=c11", "-O2", "-Wall", "-Wextra", "-ffp-contract=off", f"-DGLES_NUM_{numeric}=1",
                     f"-I{CSRC}", str(d / "driver.c"), "-o", str(exe), "-lm"], check=True)
     return exe
+
+
+@pytest.fixture(scope="module")
+def driver(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    return compile_driver(tmp_path_factory, DRIVER, "FLOAT")
 
 
 @pytest.fixture(scope="module")
 def driver_double(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    cc = shutil.which("cc") or shutil.which("gcc")
-    if not cc:
-        pytest.skip("no C compiler")
-    d = tmp_path_factory.mktemp("lod_log2_double")
-    (d / "driver.c").write_text(DRIVER_DOUBLE)
-    exe = d / "driver"
-    subprocess.run([cc, "-std=c11", "-O2", "-Wall", "-Wextra", "-ffp-contract=off", "-DGLES_NUM_DOUBLE=1",
-                    f"-I{CSRC}", str(d / "driver.c"), "-o", str(exe), "-lm"], check=True)
-    return exe
+    return compile_driver(tmp_path_factory, DRIVER_DOUBLE, "DOUBLE")
 
 
 def run_driver(exe: Path, bits: list[int]) -> tuple[np.ndarray, np.ndarray]:
