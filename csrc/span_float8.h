@@ -443,14 +443,18 @@ AVX2_INLINE void f8_modwrite_run(const F8ModWrite *mw, int src, int smooth, int 
     /* source 1: each group's texel words are read one group ahead, so that
     ** their loads (gathers, on a rotated texture) overlap the arithmetic of
     ** the group before */
-    F8Texels next = { 0 };
+    F8Texels next = { 0 }, next0 = { 0 };
+    const int sample0 = dot3 && ct0 == NULL;      /* (the DOT3 unit's texels, the same way) */
     int next_ok = src == 1 && n > 0 && f8_texels_of(&m->tx, tc, &next);
+    int next0_ok = sample0 && n > 0 && f8_texels_of(&m->tx0, tc0, &next0);
     for (int j = 0; j < n; j += F8_N) {
         f8_num T[4], T0[4];
-        const F8Texels cur = next;
-        const int cur_ok = next_ok;
+        const F8Texels cur = next, cur0 = next0;
+        const int cur_ok = next_ok, cur0_ok = next0_ok;
         if (src == 1 && j + F8_N < n)
             next_ok = f8_texels_of(&m->tx, tc + j + F8_N, &next);
+        if (sample0 && j + F8_N < n)
+            next0_ok = f8_texels_of(&m->tx0, tc0 + j + F8_N, &next0);
         if (src == 1 && cur_ok) {
             f8_bilerp(&cur, T);
         } else {
@@ -459,8 +463,9 @@ AVX2_INLINE void f8_modwrite_run(const F8ModWrite *mw, int src, int smooth, int 
                 m->tx.sampler(m->tx.tex, F8_N, tc + j, NULL, NULL, texel[0], 4, m->tx.unorm8);
             f8_gather_rows(src == 1 ? texel[0] : ct + (size_t)j * stride, src == 1 ? 4 : stride, T);
         }
-        if (dot3 && (ct0 != NULL || !f8_sample_level(m->tx0.texels, m->tx0.w, m->tx0.h, m->tx0.repeat_s,
-                                                     m->tx0.repeat_t, 1, tc0 + j, T0))) {
+        if (sample0 && cur0_ok) {
+            f8_bilerp(&cur0, T0);
+        } else if (dot3) {
             FRAGV texel[F8_N][4];
             if (ct0 == NULL)
                 m->tx0.sampler(m->tx0.tex, F8_N, tc0 + j, NULL, NULL, texel[0], 4, m->tx0.unorm8);
