@@ -2187,6 +2187,8 @@ AVX2_INLINE void avx2_bilerp8_float(const __m256i g[4], __m256i a, __m256i b, in
     const __m256 k = _mm256_set1_ps((float)(1.0 / (255.0 * 4294967296.0)));
     const __m256 bk = _mm256_mul_ps(_mm256_cvtepi32_ps(b), k);
     const __m256 ibk = _mm256_mul_ps(_mm256_cvtepi32_ps(_mm256_sub_epi32(one16, b)), k);
+    /* (half_rgb's factors over twice the divisor: exact halvings) */
+    const __m256 ibk_half = _mm256_mul_ps(ibk, _mm256_set1_ps(0.5f)), bk_half = _mm256_mul_ps(bk, _mm256_set1_ps(0.5f));
     for (int i = 0; i < 4; i++) {
         /* byte i of every dword, zero-extended */
         const __m256i pick = _mm256_setr_epi8(i, -1, -1, -1, 4 + i, -1, -1, -1, 8 + i, -1, -1, -1, 12 + i, -1, -1, -1,
@@ -2198,9 +2200,8 @@ AVX2_INLINE void avx2_bilerp8_float(const __m256i g[4], __m256i a, __m256i b, in
         const __m256 h1 = _mm256_fmadd_ps(c[2], iaf, _mm256_mul_ps(c[3], af));
         if (half_rgb && i < 3) {
             const __m256 two = _mm256_set1_ps(2.0f), mid = _mm256_set1_ps(-255.0f * 65536.0f);
-            const __m256 half = _mm256_set1_ps(0.5f);
-            T[i] = _mm256_fmadd_ps(_mm256_fmadd_ps(h0, two, mid), _mm256_mul_ps(ibk, half),
-                                   _mm256_mul_ps(_mm256_fmadd_ps(h1, two, mid), _mm256_mul_ps(bk, half)));
+            T[i] = _mm256_fmadd_ps(_mm256_fmadd_ps(h0, two, mid), ibk_half,
+                                   _mm256_mul_ps(_mm256_fmadd_ps(h1, two, mid), bk_half));
         } else {
             T[i] = _mm256_fmadd_ps(h0, ibk, _mm256_mul_ps(h1, bk));
         }

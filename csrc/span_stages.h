@@ -1094,7 +1094,6 @@ static inline void STAGE(chunk_fog)(FRAGV c[4], FRAGV f, const FRAGV fc[3])
     fragment_fog(c, f, fc);
 }
 
-/* fog (§3.8) with the factor interpolated, or from the interpolated distance */
 #if CHAIN_SIMD
 /* whether the fog's lanes take a triangle: the per-vertex factor (no
 ** per-fragment fog), its values a (in the fixed build within +-2^30) and
@@ -1112,6 +1111,7 @@ static inline int STAGE(fog_in_lanes)(const GlesContext *ctx, const NUM a[3], co
 }
 #endif
 
+/* fog (§3.8) with the factor interpolated, or from the interpolated distance */
 static void STAGE(stage_fog)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     const Vertex *v0 = t->v[0], *v1 = t->v[1], *v2 = t->v[2];
@@ -1313,7 +1313,7 @@ static void STAGE(stage_fog_write_rgba8)(GlesContext *ctx, const TriSetup *t, Sp
         STAGE(write_rgba8)(ctx, b, 0);
         return;
     }
-    uint32_t *dst = (uint32_t *)ctx->color + (size_t)b->y * (size_t)ctx->width + (size_t)b->x0;
+    uint32_t *dst = chunk_color(ctx, b, 0);
     const int n = b->n;
     for (int j = fx512_fog_write_rgba8(a, (const WGT (*)[3])b->p, (const FRAGV (*)[4])b->c, n, fc, dst, b->k); j < n;
          j++) {
