@@ -2057,6 +2057,18 @@ AVX2_INLINE int avx2_channels8(const FRAGV *c, size_t stride, __m256i ch[4])
     return _mm256_testz_si256(any, _mm256_set1_epi64x(~(int64_t)0x7FFFFFFF));
 }
 
+/* a first unit's COMBINE DOT3 (DOT3_RGB with MODULATE alpha, or rgba:
+** DOT3_RGBA; scales 1) of its texels and the colour, before the MODULATE:
+** the texels at ct0 + j ct0_stride, or (tc0 not NULL) sampled in the
+** kernel at tc0[j] from tx0 */
+typedef struct ModWriteDot3 {
+    int rgba;
+    const FRAGV *ct0;
+    size_t ct0_stride;
+    const TexCoord *tc0;
+    ModWriteTexture tx0;
+} ModWriteDot3;
+
 /* the chain's constants: the vertex colours' channels times 2^-60 (so
 ** that a weight's integer times them is the term's value), or the flat
 ** colour's (clamped) times 2^-30 in col[0]; the alpha test; for RGB565
@@ -2071,20 +2083,14 @@ typedef struct Avx2ModWrite {
     __m256 t_row_f;              /* t_row twice, as floats (0 without dither: the top bits are kept) */
     int replace;                 /* the texel is the colour (a lone REPLACE unit of an RGBA texture) */
     ModWriteTexture tx;          /* where the kernel samples (avx2_modwrite_run's source 1) */
-    const struct ModWriteDot3 *dot3;   /* a first unit's DOT3 before the MODULATE, or NULL */
+    const ModWriteDot3 *dot3;    /* a first unit's DOT3 before the MODULATE, or NULL */
+    /* the fused stage's choices for the primitive (span_stages.h): its
+    ** units, whether it samples the first one, the target, the colours
+    ** and the DOT3 (dot3 points here; its ct0 and tc0 are a chunk's) */
+    int u0, u, sampled0, rgb565;
+    const FRAGV *a[3];
+    ModWriteDot3 d3;
 } Avx2ModWrite;
-
-/* a first unit's COMBINE DOT3 (DOT3_RGB with MODULATE alpha, or rgba:
-** DOT3_RGBA; scales 1) of its texels and the colour, before the MODULATE:
-** the texels at ct0 + j ct0_stride, or (tc0 not NULL) sampled in the
-** kernel at tc0[j] from tx0 */
-typedef struct ModWriteDot3 {
-    int rgba;
-    const FRAGV *ct0;
-    size_t ct0_stride;
-    const TexCoord *tc0;
-    ModWriteTexture tx0;
-} ModWriteDot3;
 
 /* setup for vertex colours a[0..2] in [0, 2^30] (smooth), or the flat
 ** colour a[0] (any value: it is clamped, as stage_color_modulate does);
@@ -2444,11 +2450,21 @@ AVX2_INLINE const FRAGV *modwrite_ct0(const ModWriteDot3 *d, int i)
 }
 AVX2_INLINE const TexCoord *modwrite_tc0(const ModWriteDot3 *d, int i) { return d->tc0 ? d->tc0 + i : NULL; }
 
+/* whether avx2_modwrite_run takes a last partial group of n fragments as
+** their last eight again: where there are eight and nothing reads the
+** stored words (RGBA8888, no blend, no alpha test), so that a lane written
+** twice writes the same word */
+AVX2_INLINE int avx2_modwrite_overlaps(int kind, int alpha_test, int rgb565, int n)
+{
+    return n >= 8 && !rgb565 && !kind && !alpha_test;
+}
+
 /* the kernel over fragments 0..n-1 at the offsets k of dst (RGBA8888
 ** words, or RGB565 words whose first is column x0): weights p, texels
 ** from source src (ct + j stride, or sampled at tc[j]); eight at a time,
-** the rest exactly. The first `live` offsets ascend; slots from there to
-** n repeat the last live fragment (a padded group). */
+** a last partial group as the last eight again where that applies
+** (avx2_modwrite_overlaps), else exactly. The first `live` offsets ascend;
+** slots from there to n repeat the last live fragment (a padded group). */
 AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *restrict m, const FRAGV *const a[3], int smooth, int kind,
                                    int src, int rgb565, int dot3, int n, int live, const uint8_t *k, int x0,
                                    const WGT (*p)[3],
@@ -2472,7 +2488,13 @@ AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *restrict m, const FRAGV *
             : avx2_modwrite1(m, a, smooth, kind, p[i], MODWRITE_T0(i), \
                              avx2_modwrite_texel1(&m->tx, src, ct + (size_t)(i) * stride, tc + (i), tmp), d))
     int j = 0;
-    for (; j + 8 <= n; j += 8) {
+    for (; j < n; j += 8) {
+        if (j + 8 > n) {
+            /* a last partial group: the last eight again, or the exact code */
+            if (!avx2_modwrite_overlaps(kind, m->alpha.test, rgb565, n))
+                break;
+            j = n - 8;
+        }
         /* eight neighbouring pixels (a padded group never is) */
         const int run = j + 8 <= live && k[j + 7] == k[j] + 7;
         const __m256i idx = _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)&k[j]));

@@ -1584,36 +1584,59 @@ static inline void STAGE(fused_coords)(GlesContext *ctx, const TriSetup *t, Span
 static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesContext *ctx, const TriSetup *t,
                                                                        SpanBuf *b, int src, int dot3)
 {
-    const unsigned int units = ctx->tex_units_on;
-    const int u0 = __builtin_ctz(units), u = dot3 ? __builtin_ctz(units & (units - 1)) : u0;
-    const Texture *tex = ctx->units[u].bound;
-    const int kind = span_blend_kind(ctx);
-    const int replace = ctx->units[u].env_mode == GL_REPLACE;
-    const int smooth = !replace && !b->rect && t->smooth;
-    const FRAGV *flat = b->rect ? b->rect->in.c : t->flat;
-    const FRAGV *const a[3] = { smooth ? t->col[0] : flat, smooth ? t->col[1] : flat, smooth ? t->col[2] : flat };
-    /* a primitive's chunks share the constants, in the context: the first
-    ** chunk forms them, each chunk completes them with its own DOT3 texels
-    ** and dither row */
+    /* a primitive's chunks share the constants and the stage's choices,
+    ** in the context: the first chunk forms them, each chunk completes
+    ** them with its own DOT3 texels or coordinates and dither row */
     _Static_assert(sizeof(Avx2ModWrite) <= GLES_FUSED_SETUP_BYTES, "the context has room for the setup");
     Avx2ModWrite *const m = ctx->fused_setup;
     const uint64_t serial = b->rect ? b->rect->serial : t->serial;
-    const int cached = ctx->fused_serial == serial;
-    int in_range = 1;
-    if (cached) {
-        in_range = ctx->fused_in_range;
-    } else {
+    const size_t stride = GLES_MAX_TEXTURE_UNITS * 4;
+    if (ctx->fused_serial != serial) {
+        const unsigned int units = ctx->tex_units_on;
+        const int u0 = __builtin_ctz(units), u = dot3 ? __builtin_ctz(units & (units - 1)) : u0;
+        const Texture *tex = ctx->units[u].bound;
+        const int kind = span_blend_kind(ctx);
+        const int replace = ctx->units[u].env_mode == GL_REPLACE;
+        const int smooth = !replace && !b->rect && t->smooth;
+        const FRAGV *flat = b->rect ? b->rect->in.c : t->flat;
+        const FRAGV *const a[3] = { smooth ? t->col[0] : flat, smooth ? t->col[1] : flat,
+                                    smooth ? t->col[2] : flat };
+        int in_range = 1;
         for (int i = 0; i < 3 && smooth; i++)
             for (int c = 0; c < 4; c++)
                 in_range &= a[i][c] >= 0 && a[i][c] <= FRAG_ONE;
+        ctx->fused_serial = serial, ctx->fused_in_range = in_range;
+        if (in_range) {
+            avx2_modwrite_setup(m, a, smooth, tex->format != GL_RGBA, kind,
+                                ctx->alpha_test ? ctx->alpha_func : GL_ALWAYS, fragment_alpha_ref8(ctx));
+            if (replace)
+                avx2_modwrite_replace(m);
+            if (src == 1)
+                modwrite_texture_setup(&m->tx, tex, ctx->samplers[u], ctx->texel_unorm8);
+            m->u0 = u0, m->u = u;
+            /* the first unit's texels are sampled here too where its
+            ** sampler has the vector kernel (its coordinates are in b->tx,
+            ** FETCH_COORDS_TX) */
+            m->sampled0 = dot3 && ctx->sample_group[u0] > 1;
+            m->rgb565 = ctx->color_format == GLES_COLOR_RGB565;
+            for (int i = 0; i < 3; i++)
+                m->a[i] = a[i];
+            if (dot3) {
+                m->d3.rgba = ctx->units[u0].combine_rgb == GL_DOT3_RGBA;
+                m->d3.ct0_stride = stride;
+                if (m->sampled0)
+                    modwrite_texture_setup(&m->d3.tx0, ctx->units[u0].bound, ctx->samplers[u0], ctx->texel_unorm8);
+                m->dot3 = &m->d3;
+            }
+        }
     }
-    /* the first unit's texels are sampled here too where its sampler has
-    ** the vector kernel (its coordinates are in b->tx, FETCH_COORDS_TX) */
-    const size_t stride = GLES_MAX_TEXTURE_UNITS * 4;
-    const int sampled0 = dot3 && ctx->sample_group[u0] > 1;
-    if (src == 1 && !b->rect)
-        STAGE(fused_coords)(ctx, t, b, u0, u, sampled0);
-    if (!in_range) {
+    if (!ctx->fused_in_range) {
+        /* vertex colours outside [0, 1]: the separate stages */
+        const unsigned int units = ctx->tex_units_on;
+        const int u0 = __builtin_ctz(units), u = dot3 ? __builtin_ctz(units & (units - 1)) : u0;
+        const int sampled0 = dot3 && ctx->sample_group[u0] > 1;
+        if (src == 1 && !b->rect)
+            STAGE(fused_coords)(ctx, t, b, u0, u, sampled0);
         if (src == 1)
             STAGE(chunk_sample)(ctx, b, u, 0);
         if (sampled0)
@@ -1629,48 +1652,33 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
         if (ctx->alpha_test)
             STAGE(stage_alpha)(ctx, t, b);
         if (ctx->color_format == GLES_COLOR_RGB565)
-            (kind ? STAGE(stage_write_565_alpha) : STAGE(stage_write_565))(ctx, t, b);
+            (span_blend_kind(ctx) ? STAGE(stage_write_565_alpha) : STAGE(stage_write_565))(ctx, t, b);
         else
-            STAGE(write_rgba8)(ctx, b, kind);
-        ctx->fused_serial = serial, ctx->fused_in_range = 0;
+            STAGE(write_rgba8)(ctx, b, span_blend_kind(ctx));
         return;
     }
-    if (!cached) {
-        avx2_modwrite_setup(m, a, smooth, tex->format != GL_RGBA, kind,
-                            ctx->alpha_test ? ctx->alpha_func : GL_ALWAYS, fragment_alpha_ref8(ctx));
-        if (replace)
-            avx2_modwrite_replace(m);
-        if (src == 1)
-            modwrite_texture_setup(&m->tx, tex, ctx->samplers[u], ctx->texel_unorm8);
-        ctx->fused_serial = serial, ctx->fused_in_range = 1;
-    }
-    ModWriteDot3 d3;
+    const int u0 = m->u0, u = m->u, sampled0 = m->sampled0, rgb565 = m->rgb565;
+    if (src == 1 && !b->rect)
+        STAGE(fused_coords)(ctx, t, b, u0, u, sampled0);
     if (dot3) {
-        d3.rgba = ctx->units[u0].combine_rgb == GL_DOT3_RGBA;
-        d3.ct0 = sampled0 ? NULL : b->ct[0][u0];
-        d3.ct0_stride = stride;
-        d3.tc0 = sampled0 ? b->tx : NULL;
-        if (sampled0)
-            modwrite_texture_setup(&d3.tx0, ctx->units[u0].bound, ctx->samplers[u0], ctx->texel_unorm8);
-        m->dot3 = &d3;
+        m->d3.ct0 = sampled0 ? NULL : b->ct[0][u0];
+        m->d3.tc0 = sampled0 ? b->tx : NULL;
     }
     int n = b->n;
-    if (src == 1) {
+    if (src == 1 && !avx2_modwrite_overlaps(m->kind, m->alpha.test, rgb565, n)) {
         /* the tail padded to a group of eight (the slots past n are free) */
         _Static_assert(SPAN_CHUNK % 8 == 0, "a padded group stays within the chunk");
-        n = avx2_modwrite_pad(8, n, b->k, b->p, smooth, b->tc, dot3 && !sampled0 ? b->ct[0][u0] : NULL, stride);
+        n = avx2_modwrite_pad(8, n, b->k, b->p, m->smooth, b->tc, dot3 && !sampled0 ? b->ct[0][u0] : NULL, stride);
         for (int j = b->n; j < n && sampled0; j++)
             b->tx[j] = b->tx[b->n - 1];
     }
-    const int rgb565 = ctx->color_format == GLES_COLOR_RGB565;
     if (rgb565) {
         FRAGV t_row[4];
         dither_row(b, ctx->dither, t_row);
         avx2_modwrite_dither(m, ctx->dither, t_row);
     }
-    avx2_modwrite_dispatch(m, a, src, rgb565, n, b->n, b->k, b->x0, (const WGT (*)[3])b->p, b->ct[0][u], stride,
+    avx2_modwrite_dispatch(m, m->a, src, rgb565, n, b->n, b->k, b->x0, (const WGT (*)[3])b->p, b->ct[0][u], stride,
                            b->tc, chunk_color(ctx, b, rgb565), ctx->unorm5, ctx->unorm6);
-    m->dot3 = NULL;     /* d3 ends here */
 }
 
 static void STAGE(stage_modulate_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
