@@ -1995,6 +1995,16 @@ typedef struct ModWriteTexture {
     int w, h, log2w, log2h, repeat_s, repeat_t;
 } ModWriteTexture;
 
+/* whether a fused stage's kernel takes a chunk's last partial group of n
+** fragments as their last `group` again, so that a lane written twice
+** writes the same word: where there are that many and nothing reads the
+** stored words (RGBA8888, blend kind 0, no alpha test); else the chunk is
+** padded to whole groups */
+AVX2_INLINE int modwrite_overlaps(int kind, int alpha_test, int rgb565, int n, int group)
+{
+    return n >= group && !rgb565 && !kind && !alpha_test;
+}
+
 static inline void modwrite_texture_setup(ModWriteTexture *m, const Texture *t, TexSpanSampler sampler,
                                           const FRAGV *unorm8)
 {
@@ -2450,20 +2460,11 @@ AVX2_INLINE const FRAGV *modwrite_ct0(const ModWriteDot3 *d, int i)
 }
 AVX2_INLINE const TexCoord *modwrite_tc0(const ModWriteDot3 *d, int i) { return d->tc0 ? d->tc0 + i : NULL; }
 
-/* whether avx2_modwrite_run takes a last partial group of n fragments as
-** their last eight again: where there are eight and nothing reads the
-** stored words (RGBA8888, no blend, no alpha test), so that a lane written
-** twice writes the same word */
-AVX2_INLINE int avx2_modwrite_overlaps(int kind, int alpha_test, int rgb565, int n)
-{
-    return n >= 8 && !rgb565 && !kind && !alpha_test;
-}
-
 /* the kernel over fragments 0..n-1 at the offsets k of dst (RGBA8888
 ** words, or RGB565 words whose first is column x0): weights p, texels
 ** from source src (ct + j stride, or sampled at tc[j]); eight at a time,
 ** a last partial group as the last eight again where that applies
-** (avx2_modwrite_overlaps), else exactly. The first `live` offsets ascend;
+** (modwrite_overlaps), else exactly. The first `live` offsets ascend;
 ** slots from there to n repeat the last live fragment (a padded group). */
 AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *restrict m, const FRAGV *const a[3], int smooth, int kind,
                                    int src, int rgb565, int dot3, int n, int live, const uint8_t *k, int x0,
@@ -2491,7 +2492,7 @@ AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *restrict m, const FRAGV *
     for (; j < n; j += 8) {
         if (j + 8 > n) {
             /* a last partial group: the last eight again, or the exact code */
-            if (!avx2_modwrite_overlaps(kind, m->alpha.test, rgb565, n))
+            if (!modwrite_overlaps(kind, m->alpha.test, rgb565, n, 8))
                 break;
             j = n - 8;
         }

@@ -427,11 +427,12 @@ AVX2_INLINE f8_i32 f8_modwrite(const F8ModWrite *m, int smooth, int kind, int rg
 
 /* the kernel over fragments 0..n-1 (n a multiple of F8_N, the first live
 ** ones live, the rest, fewer than F8_N, copies of the last live one: a
-** group of copies alone would read the word its original wrote) at the ascending
-** offsets k of dst (pixel x0 + k): texels from source 0 (ct + j stride,
-** sampled by a fetch stage) or 1 (sampled here at tc). With dot3 the
-** first unit's texels come from ct0 + j stride (fetched) or are sampled
-** here at tc0 (where ct0 is NULL). */
+** group of copies alone would read the word its original wrote; or where
+** modwrite_overlaps, n = live, a last partial group taken as the last
+** F8_N again) at the ascending offsets k of dst (pixel x0 + k): texels
+** from source 0 (ct + j stride, sampled by a fetch stage) or 1 (sampled
+** here at tc). With dot3 the first unit's texels come from ct0 + j stride
+** (fetched) or are sampled here at tc0 (where ct0 is NULL). */
 AVX2_INLINE void f8_modwrite_run(const F8ModWrite *mw, int src, int smooth, int kind, int rgb565, int dot3, int n,
                                  int live, const uint8_t *k, const WGT (*p)[3], const FRAGV *ct0,
                                  const TexCoord *tc0, const FRAGV *ct, size_t stride, const TexCoord *tc, int x0,
@@ -447,14 +448,17 @@ AVX2_INLINE void f8_modwrite_run(const F8ModWrite *mw, int src, int smooth, int 
     const int sample0 = dot3 && ct0 == NULL;      /* (the DOT3 unit's texels, the same way) */
     int next_ok = src == 1 && n > 0 && f8_texels_of(&m->tx, tc, &next);
     int next0_ok = sample0 && n > 0 && f8_texels_of(&m->tx0, tc0, &next0);
-    for (int j = 0; j < n; j += F8_N) {
+    const int overlap = modwrite_overlaps(kind, m->alpha.test, rgb565, n, F8_N);
+    for (int j = 0, jn; j < n; j = jn) {
+        /* the next group; a last partial one as the last F8_N again */
+        jn = overlap && j + F8_N < n && j + 2 * F8_N > n ? n - F8_N : j + F8_N;
         f8_num T[4], T0[4];
         const F8Texels cur = next, cur0 = next0;
         const int cur_ok = next_ok, cur0_ok = next0_ok;
-        if (src == 1 && j + F8_N < n)
-            next_ok = f8_texels_of(&m->tx, tc + j + F8_N, &next);
-        if (sample0 && j + F8_N < n)
-            next0_ok = f8_texels_of(&m->tx0, tc0 + j + F8_N, &next0);
+        if (src == 1 && jn < n)
+            next_ok = f8_texels_of(&m->tx, tc + jn, &next);
+        if (sample0 && jn < n)
+            next0_ok = f8_texels_of(&m->tx0, tc0 + jn, &next0);
         if (src == 1 && cur_ok) {
             f8_bilerp(&cur, T);
         } else {

@@ -1665,7 +1665,7 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
         m->d3.tc0 = sampled0 ? b->tx : NULL;
     }
     int n = b->n;
-    if (src == 1 && !avx2_modwrite_overlaps(m->kind, m->alpha.test, rgb565, n)) {
+    if (src == 1 && !modwrite_overlaps(m->kind, m->alpha.test, rgb565, n, 8)) {
         /* the tail padded to a group of eight (the slots past n are free) */
         _Static_assert(SPAN_CHUNK % 8 == 0, "a padded group stays within the chunk");
         n = avx2_modwrite_pad(8, n, b->k, b->p, m->smooth, b->tc, dot3 && !sampled0 ? b->ct[0][u0] : NULL, stride);
@@ -1749,16 +1749,20 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
         ctx->fused_serial = serial;
     }
     const size_t stride = GLES_MAX_TEXTURE_UNITS * 4;
-    _Static_assert(SPAN_CHUNK % 8 == 0, "a padded group stays within the chunk");
-    const int n = avx2_modwrite_pad(F8_N, b->n, b->k, b->p, smooth, src == 1 ? b->tc : NULL,
-                                    src == 0 ? b->ct[0][u] : NULL, stride);
-    for (int j = b->n; j < n && dot3; j++) {
-        if (sampled0)
-            b->tx[j] = b->tx[b->n - 1];
-        else
-            memcpy(b->ct[j][u0], b->ct[b->n - 1][u0], sizeof b->ct[j][u0]);
-    }
     const int rgb565 = ctx->color_format == GLES_COLOR_RGB565;
+    int n = b->n;
+    if (!modwrite_overlaps(m->kind, m->alpha.test, rgb565, n, F8_N)) {
+        /* the tail padded to a whole group (the slots past n are free) */
+        _Static_assert(SPAN_CHUNK % 8 == 0, "a padded group stays within the chunk");
+        n = avx2_modwrite_pad(F8_N, b->n, b->k, b->p, smooth, src == 1 ? b->tc : NULL, src == 0 ? b->ct[0][u] : NULL,
+                              stride);
+        for (int j = b->n; j < n && dot3; j++) {
+            if (sampled0)
+                b->tx[j] = b->tx[b->n - 1];
+            else
+                memcpy(b->ct[j][u0], b->ct[b->n - 1][u0], sizeof b->ct[j][u0]);
+        }
+    }
     if (rgb565) {
         FRAGV t_row[4];
         dither_row(b, ctx->dither, t_row);
