@@ -45,7 +45,7 @@ enum { SIMD_BASELINE = 0, SIMD_AVX2 = 1, SIMD_AVX512 = 2 };
 ** products and sums. The core is compiled with -ffp-contract=off, so no
 ** other a * b + c becomes an FMA: the float builds keep their operations. */
 #define SIMD_TARGET_AVX2 _Pragma("GCC target(\"avx2,bmi,bmi2,fma\")")
-#define SIMD_TARGET_AVX512 _Pragma("GCC target(\"avx2,bmi,bmi2,fma,avx512f,avx512dq,avx512bw\")")
+#define SIMD_TARGET_AVX512 _Pragma("GCC target(\"avx2,bmi,bmi2,fma,avx512f,avx512dq,avx512bw,avx512vl\")")
 
 /* the best instance this CPU can run */
 static inline int simd_detect(void)
@@ -56,9 +56,11 @@ static inline int simd_detect(void)
         || !__builtin_cpu_supports("fma"))
         return SIMD_BASELINE;
     /* DQ's 64-bit integer conversions and BW's byte shuffles form the
-    ** unorm values (span_avx512.h); every AVX-512 CPU but Xeon Phi has them */
+    ** unorm values (span_avx512.h), and VL's 32 registers hold the fixed
+    ** build's fused kernel (span_avx2.h); every AVX-512 CPU but Xeon Phi
+    ** has them */
     return (SIMD_AVX512_INSTANCE || SIMD_AVX512_FX) && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq")
-                   && __builtin_cpu_supports("avx512bw")
+                   && __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512vl")
              ? SIMD_AVX512
              : SIMD_AVX2;
 #else

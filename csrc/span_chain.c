@@ -221,7 +221,7 @@ static int debug_modulate_write_avx2(Avx2ModWrite *m, const FRAGV *const a[3], i
                        : avx2_modwrite8(m, smooth, kind, dot3, (const WGT (*)[3])&p[j], T0, T, dv, &w));
     }
     const TexCoord tc[SPAN_CHUNK] = { { 0, 0 } };   /* source 0 reads no coordinates */
-    avx2_modwrite_dispatch(m, a, 0, rgb565, n, live, k, x0, (const WGT (*)[3])p, ct[0], 4, tc, dst, unorm5, unorm6);
+    avx2_modwrite_dispatch(m, a, 0, rgb565, n, live, k, x0, (const WGT (*)[3])p, ct[0], 4, tc, dst, unorm5, unorm6, 0);
     return exact;
 }
 #endif

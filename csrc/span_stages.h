@@ -1678,7 +1678,7 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
         avx2_modwrite_dither(m, ctx->dither, t_row);
     }
     avx2_modwrite_dispatch(m, m->a, src, rgb565, n, b->n, b->k, b->x0, (const WGT (*)[3])b->p, b->ct[0][u], stride,
-                           b->tc, chunk_color(ctx, b, rgb565), ctx->unorm5, ctx->unorm6);
+                           b->tc, chunk_color(ctx, b, rgb565), ctx->unorm5, ctx->unorm6, ctx_simd(ctx) >= SIMD_AVX512);
 }
 
 static void STAGE(stage_modulate_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
