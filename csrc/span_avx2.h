@@ -2095,9 +2095,9 @@ typedef struct Avx2ModWrite {
     ModWriteTexture tx;          /* where the kernel samples (avx2_modwrite_run's source 1) */
     const ModWriteDot3 *dot3;    /* a first unit's DOT3 before the MODULATE, or NULL */
     /* the fused stage's choices for the primitive (span_stages.h): its
-    ** units, whether it samples the first one, the target, the colours
-    ** and the DOT3 (dot3 points here; its ct0 and tc0 are a chunk's) */
-    int u0, u, sampled0, rgb565;
+    ** units, whether it samples the first one, the colours and the DOT3
+    ** (dot3 points here; its ct0 and tc0 are a chunk's) */
+    int u0, u, sampled0;
     const FRAGV *a[3];
     ModWriteDot3 d3;
 } Avx2ModWrite;
@@ -2585,18 +2585,20 @@ AVX2_INLINE void avx2_modwrite_instances(AVX2_MODWRITE_ARGS, int dot3)
 #undef MODWRITE
 }
 
-/* the instances with and without DOT3 as two functions: one function of
-** all of them grows past what the compiler optimises as well (its
-** register allocation), which cost the lone unit's kernel 2-3% */
-static __attribute__((noinline)) void avx2_modwrite_plain(AVX2_MODWRITE_ARGS)
-{
-    avx2_modwrite_instances(m, a, src, rgb565, n, live, k, x0, p, ct, stride, tc, dst, unorm5, unorm6, 0);
-}
-static __attribute__((noinline)) void avx2_modwrite_dot3(AVX2_MODWRITE_ARGS)
-{
-    avx2_modwrite_instances(m, a, src, rgb565, n, live, k, x0, p, ct, stride, tc, dst, unorm5, unorm6, 1);
-}
-
+/* the instances with and without DOT3 as two functions, prefix_modwrite_plain
+** and prefix_modwrite_dot3: one function of all of them grows past what the
+** compiler optimises as well (its register allocation), which cost the
+** lone unit's kernel 2-3% */
+#define AVX2_MODWRITE_FUNCTIONS(prefix) \
+    static __attribute__((noinline)) void prefix##_modwrite_plain(AVX2_MODWRITE_ARGS) \
+    { \
+        avx2_modwrite_instances(m, a, src, rgb565, n, live, k, x0, p, ct, stride, tc, dst, unorm5, unorm6, 0); \
+    } \
+    static __attribute__((noinline)) void prefix##_modwrite_dot3(AVX2_MODWRITE_ARGS) \
+    { \
+        avx2_modwrite_instances(m, a, src, rgb565, n, live, k, x0, p, ct, stride, tc, dst, unorm5, unorm6, 1); \
+    }
+AVX2_MODWRITE_FUNCTIONS(avx2)
 #if SIMD_AVX512_FX
 /* the same functions compiled for AVX-512VL, where the CPU has it: the
 ** same AVX2 operations on the same lanes (so the same words), with
@@ -2604,16 +2606,10 @@ static __attribute__((noinline)) void avx2_modwrite_dot3(AVX2_MODWRITE_ARGS)
 ** fill without spills (combine_dot3: about 5% of the frame) */
 #pragma GCC push_options
 SIMD_TARGET_AVX512
-static __attribute__((noinline)) void fx512_modwrite_plain(AVX2_MODWRITE_ARGS)
-{
-    avx2_modwrite_instances(m, a, src, rgb565, n, live, k, x0, p, ct, stride, tc, dst, unorm5, unorm6, 0);
-}
-static __attribute__((noinline)) void fx512_modwrite_dot3(AVX2_MODWRITE_ARGS)
-{
-    avx2_modwrite_instances(m, a, src, rgb565, n, live, k, x0, p, ct, stride, tc, dst, unorm5, unorm6, 1);
-}
+AVX2_MODWRITE_FUNCTIONS(fx512)
 #pragma GCC pop_options
 #endif
+#undef AVX2_MODWRITE_FUNCTIONS
 
 /* the kernel's instance for the state (m->dot3), in AVX-512VL's registers
 ** where wide (the context runs AVX-512) */

@@ -1566,6 +1566,18 @@ static inline void STAGE(fused_coords)(GlesContext *ctx, const TriSetup *t, Span
     if (!(b->tc_unit == u && b->tc_done >= b->n))
         STAGE(stage_fetch)(ctx, t, b, u, FETCH_COORDS);
 }
+
+/* a fused stage's units: the first enabled one u0 and the one it
+** modulates by u (the second with dot3, the DOT3 pair), and whether it
+** samples u0's texels itself (its sampler has the vector kernel; its
+** coordinates are in b->tx, FETCH_COORDS_TX) */
+static inline void STAGE(fused_units)(const GlesContext *ctx, int dot3, int *u0, int *u, int *sampled0)
+{
+    const unsigned int units = ctx->tex_units_on;
+    *u0 = __builtin_ctz(units);
+    *u = dot3 ? __builtin_ctz(units & (units - 1)) : *u0;
+    *sampled0 = dot3 && ctx->sample_group[*u0] > 1;
+}
 #endif
 
 #if CHAIN_SIMD && NUM_IS_FIXED
@@ -1592,8 +1604,10 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
     const uint64_t serial = b->rect ? b->rect->serial : t->serial;
     const size_t stride = GLES_MAX_TEXTURE_UNITS * 4;
     if (ctx->fused_serial != serial) {
-        const unsigned int units = ctx->tex_units_on;
-        const int u0 = __builtin_ctz(units), u = dot3 ? __builtin_ctz(units & (units - 1)) : u0;
+        /* (the units are kept with the constants either way: the stage's
+        ** colours out of range need them too) */
+        STAGE(fused_units)(ctx, dot3, &m->u0, &m->u, &m->sampled0);
+        const int u0 = m->u0, u = m->u;
         const Texture *tex = ctx->units[u].bound;
         const int kind = span_blend_kind(ctx);
         const int replace = ctx->units[u].env_mode == GL_REPLACE;
@@ -1613,12 +1627,6 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
                 avx2_modwrite_replace(m);
             if (src == 1)
                 modwrite_texture_setup(&m->tx, tex, ctx->samplers[u], ctx->texel_unorm8);
-            m->u0 = u0, m->u = u;
-            /* the first unit's texels are sampled here too where its
-            ** sampler has the vector kernel (its coordinates are in b->tx,
-            ** FETCH_COORDS_TX) */
-            m->sampled0 = dot3 && ctx->sample_group[u0] > 1;
-            m->rgb565 = ctx->color_format == GLES_COLOR_RGB565;
             for (int i = 0; i < 3; i++)
                 m->a[i] = a[i];
             if (dot3) {
@@ -1630,13 +1638,12 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
             }
         }
     }
+    const int u0 = m->u0, u = m->u, sampled0 = m->sampled0;
+    const int rgb565 = ctx->color_format == GLES_COLOR_RGB565;
+    if (src == 1 && !b->rect)
+        STAGE(fused_coords)(ctx, t, b, u0, u, sampled0);
     if (!ctx->fused_in_range) {
         /* vertex colours outside [0, 1]: the separate stages */
-        const unsigned int units = ctx->tex_units_on;
-        const int u0 = __builtin_ctz(units), u = dot3 ? __builtin_ctz(units & (units - 1)) : u0;
-        const int sampled0 = dot3 && ctx->sample_group[u0] > 1;
-        if (src == 1 && !b->rect)
-            STAGE(fused_coords)(ctx, t, b, u0, u, sampled0);
         if (src == 1)
             STAGE(chunk_sample)(ctx, b, u, 0);
         if (sampled0)
@@ -1651,15 +1658,13 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
         }
         if (ctx->alpha_test)
             STAGE(stage_alpha)(ctx, t, b);
-        if (ctx->color_format == GLES_COLOR_RGB565)
-            (span_blend_kind(ctx) ? STAGE(stage_write_565_alpha) : STAGE(stage_write_565))(ctx, t, b);
+        const int kind = span_blend_kind(ctx);
+        if (rgb565)
+            (kind ? STAGE(stage_write_565_alpha) : STAGE(stage_write_565))(ctx, t, b);
         else
-            STAGE(write_rgba8)(ctx, b, span_blend_kind(ctx));
+            STAGE(write_rgba8)(ctx, b, kind);
         return;
     }
-    const int u0 = m->u0, u = m->u, sampled0 = m->sampled0, rgb565 = m->rgb565;
-    if (src == 1 && !b->rect)
-        STAGE(fused_coords)(ctx, t, b, u0, u, sampled0);
     if (dot3) {
         m->d3.ct0 = sampled0 ? NULL : b->ct[0][u0];
         m->d3.tc0 = sampled0 ? b->tx : NULL;
@@ -1721,8 +1726,8 @@ static void STAGE(stage_dot3_sample_write)(GlesContext *ctx, const TriSetup *t, 
 static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesContext *ctx, const TriSetup *t,
                                                                        SpanBuf *b, int src, int dot3)
 {
-    const unsigned int units = ctx->tex_units_on;
-    const int u0 = __builtin_ctz(units), u = dot3 ? __builtin_ctz(units & (units - 1)) : u0;
+    int u0, u, sampled0;
+    STAGE(fused_units)(ctx, dot3, &u0, &u, &sampled0);
     const Texture *tex = ctx->units[u].bound;
     const int replace = ctx->units[u].env_mode == GL_REPLACE;
     const int smooth = !replace && !b->rect && t->smooth;
@@ -1732,9 +1737,6 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
     _Static_assert(sizeof(F8ModWrite) <= GLES_FUSED_SETUP_BYTES, "the context has room for the setup");
     F8ModWrite *const m = ctx->fused_setup;
     const uint64_t serial = b->rect ? b->rect->serial : t->serial;
-    /* the first unit's texels are sampled here where its sampler has the
-    ** vector kernel (its coordinates are in b->tx, FETCH_COORDS_TX) */
-    const int sampled0 = dot3 && ctx->sample_group[u0] > 1;
     if (src == 1 && !b->rect)
         STAGE(fused_coords)(ctx, t, b, u0, u, sampled0);
     if (ctx->fused_serial != serial) {
