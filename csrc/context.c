@@ -149,6 +149,7 @@ GlesContext *gles_context_create(int width, int height, int color_format,
     ctx->band_caller_rows = RASTER_BAND_ROWS;
     ctx->simd = simd_detect();
     ctx->chain_coords_unit = ctx->chain_coords_tx_unit = ctx->chain_lod_unit = -1;
+    ctx->chain_fused_lanes = 0;
     ctx->color = calloc(npix, (size_t)color_bytes(color_format));
     ctx->depth = depth_bits ? calloc(npix, sizeof(uint32_t)) : NULL;
     ctx->stencil = stencil_bits ? calloc(npix, 1) : NULL;

@@ -116,6 +116,7 @@ struct SpanBuf {
     int tc_unit, tc_done;           /* tc[0..tc_done) holds unit tc_unit's already (-1: none) */
     int tx_unit, tx_done;           /* likewise tx[0..tx_done), unit tx_unit's (FETCH_COORDS_TX) */
     int lod_unit, lod_done;         /* tc, tx and ty[0..lod_done) hold unit lod_unit's and its neighbours' */
+    int lanes;                      /* stage_persp left p, tc and tx to the fused stage (ctx->chain_fused_lanes) */
 };
 
 /* 1 when the four slots from k are four neighbouring pixels (offsets

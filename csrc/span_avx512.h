@@ -224,12 +224,15 @@ static __attribute__((noinline)) int avx512_write_rgba8(uint32_t *dst, const uin
 #include "span_float8.h"
 
 /* the fused stage's kernel (f8_modwrite_dispatch) in eight double lanes,
-** for the AVX2 instance's stage_modulate_write and stage_sample_write */
+** for the AVX2 instance's stage_modulate_write and stage_sample_write;
+** af not NULL where stage_persp left the weights and coordinates to it
+** (SpanBuf.lanes) */
 static __attribute__((noinline)) void avx512_modwrite(const F8ModWrite *m, int src, int rgb565, int n, int live,
                                                       const uint8_t *k, const WGT (*p)[3], const FRAGV *ct,
-                                                      size_t stride, const TexCoord *tc, int x0, void *dst)
+                                                      size_t stride, const TexCoord *tc, int x0, void *dst,
+                                                      const F8Affine *af)
 {
-    f8_modwrite_dispatch(m, src, rgb565, n, live, k, p, ct, stride, tc, x0, dst);
+    f8_modwrite_dispatch(m, src, rgb565, n, live, k, p, ct, stride, tc, x0, dst, af);
 }
 
 /* the same with the DOT3 pair's first unit before the MODULATE (m->dot3),
@@ -237,9 +240,9 @@ static __attribute__((noinline)) void avx512_modwrite(const F8ModWrite *m, int s
 static __attribute__((noinline)) void avx512_dot3_write(const F8ModWrite *m, int src, int rgb565, int n, int live,
                                                         const uint8_t *k, const WGT (*p)[3], const FRAGV *ct0,
                                                         const TexCoord *tc0, const FRAGV *ct, size_t stride,
-                                                        const TexCoord *tc, int x0, void *dst)
+                                                        const TexCoord *tc, int x0, void *dst, const F8Affine *af)
 {
-    f8_modwrite_dispatch_dot3(m, src, rgb565, 1, n, live, k, p, ct0, tc0, ct, stride, tc, x0, dst);
+    f8_modwrite_dispatch_dot3(m, src, rgb565, 1, n, live, k, p, ct0, tc0, ct, stride, tc, x0, dst, af);
 }
 /* {====================================================================
 ** stage_persp_lod of the double build eight fragments at a time: the

@@ -240,7 +240,7 @@ int gles_debug_modulate_write_f(int smooth, int rgb, int kind, unsigned int alph
     f8_modwrite_setup(&m, a, smooth != 0, rgb != 0, 0, kind, alpha_func, alpha_ref);
     DebugGroup g;
     const int padded = debug_group(&g, n, k, p, ct, smooth != 0, 1, F8_N);
-    f8_modwrite_dispatch(&m, 0, 0, padded, n, g.k, (const WGT (*)[3])g.p, g.ct[0], 4, NULL, 0, dst);
+    f8_modwrite_dispatch(&m, 0, 0, padded, n, g.k, (const WGT (*)[3])g.p, g.ct[0], 4, NULL, 0, dst, NULL);
     return 0;
 #else
     (void)smooth, (void)rgb, (void)kind, (void)alpha_func, (void)alpha_ref, (void)col, (void)n, (void)k, (void)p,
@@ -503,8 +503,10 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     ** write, and without an alpha test no colour work at all */
     const int no_color = span_no_color(ctx);
     const int color_work = !no_color || ctx->alpha_test;
-    if (!rect)
+    if (!rect) {
         ctx->chain_coords_unit = ctx->chain_coords_tx_unit = ctx->chain_lod_unit = -1;
+        ctx->chain_fused_lanes = 0;
+    }
     ctx->stencil_cull.on = 0;
     if (stencil) {
         FragTests ft;
@@ -611,6 +613,9 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
             ** stage_persp left any: STAGE(fused_coords)) */
             if (ctx->sample_group[first] <= 1)
                 s[n++] = cs->fetch[first];
+            /* both units' coordinates from stage_persp: the stage may form
+            ** them and the weights itself */
+            ctx->chain_fused_lanes = ctx->chain_coords_tx_unit == first && ctx->chain_coords_unit == second;
             s[n++] = fs->dot3_sample_write;
         } else {
             s[n++] = ctx->sample_group[first] > 1 ? cs->coords_tx[first] : cs->fetch[first];
@@ -622,6 +627,8 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     if (sample_write) {
         if (rect)   /* (a triangle's, the fused stage forms: STAGE(fused_coords)) */
             s[n++] = cs->coords_rect[lone];
+        else        /* (... or where stage_persp forms them, it may form them itself) */
+            ctx->chain_fused_lanes = ctx->chain_coords_unit == lone;
         s[n++] = fs->sample_write;
         return n;
     }
@@ -828,6 +835,7 @@ static void run(GlesContext *ctx, const SpanStage *stages, int count, const TriS
         b.tc_unit = -1;
         b.tx_unit = -1;
         b.lod_unit = -1;
+        b.lanes = 0;
         memcpy(b.k, span_offsets, SPAN_CHUNK);
         if (t)
             for (int i = 0; i < 3; i++)

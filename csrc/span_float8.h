@@ -160,6 +160,45 @@ AVX2_INLINE void f8_coords(const TexCoord *tc, f8_num *s, f8_num *t)
     *t = __builtin_shuffle(q0, q1, (f8_mask){ 1, 3, 5, 7, 9, 11, 13, 15 });
 }
 
+#if !defined(GLES_NUM_FLOAT)
+/* what the double build's fused stage needs to form an affine triangle's
+** weights and coordinates in its lanes, where stage_persp leaves them
+** (SpanBuf.lanes): edges 1 and 2 at slot 0 (e1, e2) and their steps per
+** slot (a1, a2), exact integers as doubles at every slot of the chunk
+** (edge_steps_exact), 1 / area, and the vertex s and t of the sampled
+** unit (s, t) and of the DOT3 pair's first unit (s0, t0) */
+typedef struct F8Affine {
+    double e1, e2, a1, a2, inv_area;
+    double s[3], t[3], s0[3], t0[3];
+} F8Affine;
+
+/* the weights of the slots at offsets k[0..7] in d8_affine_steps'
+** operations: o_1 = e_1 inv_area, o_2 likewise, o_0 = (1 - o_1) - o_2,
+** each edge value e + k a an exact integer however it is summed (the
+** product k a, |a| <= 2^44 and k < 2^8, is exact too) */
+AVX2_INLINE void f8_affine_weights(const F8Affine *af, const uint8_t *k, f8_num w[3])
+{
+    const f8_num kd = (f8_num)_mm512_cvtepi32_pd(_mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)k)));
+    w[1] = (af->e1 + kd * af->a1) * af->inv_area;
+    w[2] = (af->e2 + kd * af->a2) * af->inv_area;
+    w[0] = (1 - w[1]) - w[2];
+}
+
+/* a coordinate at weights w, v4_tex_coord_affine4's (a0 w0 + a1 w1) + a2 w2 */
+AVX2_INLINE f8_num f8_lerp3(const double a[3], const f8_num w[3]) { return a[0] * w[0] + a[1] * w[1] + a[2] * w[2]; }
+
+/* lanes s and t stored as coordinates out[0..F8_N-1] */
+AVX2_INLINE void f8_store_coords(f8_num s, f8_num t, TexCoord *out)
+{
+    const f8_num lo = __builtin_shuffle(s, t, (f8_mask){ 0, 8, 1, 9, 2, 10, 3, 11 });
+    const f8_num hi = __builtin_shuffle(s, t, (f8_mask){ 4, 12, 5, 13, 6, 14, 7, 15 });
+    memcpy(out, &lo, sizeof lo);
+    memcpy(out + F8_N / 2, &hi, sizeof hi);
+}
+#else
+typedef struct F8Affine F8Affine;   /* (the float build forms them in memory) */
+#endif
+
 /* m ? a : b of int32 lanes */
 AVX2_INLINE f8_i32 f8_sel_i32(f8_i32 m, f8_i32 a, f8_i32 b) { return (a & m) | (b & ~m); }
 
@@ -260,11 +299,9 @@ typedef struct F8Texels {
 ** level (powers of two; REPEAT or CLAMP_TO_EDGE per axis), as
 ** sample_level's GL_LINEAR finds them; 0 when a coordinate is not finite.
 ** `rows`: try avx2_row_texels8's loads before the gathers. */
-AVX2_INLINE int f8_texels(const uint32_t *texels, int w, int h, int repeat_s, int repeat_t, int rows,
-                          const TexCoord *tc, F8Texels *x)
+AVX2_INLINE int f8_texels_st(const uint32_t *texels, int w, int h, int repeat_s, int repeat_t, int rows, f8_num s,
+                             f8_num t, F8Texels *x)
 {
-    f8_num s, t;
-    f8_coords(tc, &s, &t);
     const NUM inf = (NUM)INFINITY;
     if (!f8_all((s < inf) & (s > -inf) & (t < inf) & (t > -inf)))
         return 0;
@@ -273,6 +310,15 @@ AVX2_INLINE int f8_texels(const uint32_t *texels, int w, int h, int repeat_s, in
     f8_linear_axis(t, h, repeat_t, &y0, &y1, &x->b);
     avx2_texel_words8(texels, w, (int64_t)w * h, (__m256i)x0, (__m256i)x1, (__m256i)y0, (__m256i)y1, rows, x->g);
     return 1;
+}
+
+/* f8_texels_st at the coordinates tc[0..F8_N-1] */
+AVX2_INLINE int f8_texels(const uint32_t *texels, int w, int h, int repeat_s, int repeat_t, int rows,
+                          const TexCoord *tc, F8Texels *x)
+{
+    f8_num s, t;
+    f8_coords(tc, &s, &t);
+    return f8_texels_st(texels, w, h, repeat_s, repeat_t, rows, s, t, x);
 }
 
 /* the bilinear texels T of f8_texels' words and weights
@@ -310,10 +356,35 @@ AVX2_INLINE int f8_sample_level(const uint32_t *texels, int w, int h, int repeat
     return 1;
 }
 
-/* f8_texels of a fused stage's texture at tc[0..F8_N-1] */
-AVX2_INLINE int f8_texels_of(const ModWriteTexture *tx, const TexCoord *tc, F8Texels *x)
+/* f8_texels of a fused stage's texture at tc[0..F8_N-1], or where af is
+** not NULL at the weights w of its vertex values sv, tv */
+AVX2_INLINE int f8_texels_of(const ModWriteTexture *tx, const TexCoord *tc, const F8Affine *af, const double *sv,
+                             const double *tv, const f8_num w[3], F8Texels *x)
 {
+#if !defined(GLES_NUM_FLOAT)
+    if (af)
+        return f8_texels_st(tx->texels, tx->w, tx->h, tx->repeat_s, tx->repeat_t, 1, f8_lerp3(sv, w),
+                            f8_lerp3(tv, w), x);
+#else
+    (void)af, (void)sv, (void)tv, (void)w;
+#endif
     return f8_texels(tx->texels, tx->w, tx->h, tx->repeat_s, tx->repeat_t, 1, tc, x);
+}
+
+/* the coordinates f8_texels_of reads, in memory: tc + j, or where af is
+** not NULL those at the weights w stored into buf */
+AVX2_INLINE const TexCoord *f8_coords_at(const TexCoord *tc, int j, const F8Affine *af, const double *sv,
+                                         const double *tv, const f8_num w[3], TexCoord buf[F8_N])
+{
+#if !defined(GLES_NUM_FLOAT)
+    if (af) {
+        f8_store_coords(f8_lerp3(sv, w), f8_lerp3(tv, w), buf);
+        return buf;
+    }
+#else
+    (void)af, (void)sv, (void)tv, (void)w, (void)buf;
+#endif
+    return tc + j;
 }
 
 #if defined(GLES_NUM_FLOAT)
@@ -367,9 +438,9 @@ AVX2_INLINE void f8_dot3(int rgba, const f8_num T0[4], f8_num c[4])
 }
 
 /* the words written over d (lanes of the stored words) by F8_N fragments
-** with texels T and weights p (with dot3, T0 the first unit's texels);
-** thr: the dither thresholds (RGB565) */
-AVX2_INLINE f8_i32 f8_modwrite(const F8ModWrite *m, int smooth, int kind, int rgb565, int dot3, const WGT (*p)[3],
+** with texels T and weights w (lanes; read where smooth) (with dot3, T0
+** the first unit's texels); thr: the dither thresholds (RGB565) */
+AVX2_INLINE f8_i32 f8_modwrite(const F8ModWrite *m, int smooth, int kind, int rgb565, int dot3, const f8_num w[3],
                                const f8_num T0[4], const f8_num T[4], f8_i32 d, f8_num thr)
 {
     f8_num y[4];
@@ -379,8 +450,6 @@ AVX2_INLINE f8_i32 f8_modwrite(const F8ModWrite *m, int smooth, int kind, int rg
     } else {
         f8_num c[4];
         if (smooth) {
-            f8_num w[3];
-            f8_weights(p, w);
             for (int i = 0; i < 4; i++)
                 c[i] = f8_clamp01(f8_set1(m->col[0][i]) * w[0] + f8_set1(m->col[1][i]) * w[1]
                                   + f8_set1(m->col[2][i]) * w[2]);
@@ -415,14 +484,14 @@ AVX2_INLINE f8_i32 f8_modwrite(const F8ModWrite *m, int smooth, int kind, int rg
             y[i] = kind == 1 ? y[i] * va + di * ia : y[i] + di;
         }
     }
-    f8_i32 w;
+    f8_i32 word;
     if (rgb565)
-        w = (f8_channel(y[0], 5, m->dither, thr) << 11) | (f8_channel(y[1], 6, m->dither, thr) << 5)
-          | f8_channel(y[2], 5, m->dither, thr);
+        word = (f8_channel(y[0], 5, m->dither, thr) << 11) | (f8_channel(y[1], 6, m->dither, thr) << 5)
+             | f8_channel(y[2], 5, m->dither, thr);
     else
-        w = f8_unorm(y[0], 255, half) | (f8_unorm(y[1], 255, half) << 8) | (f8_unorm(y[2], 255, half) << 16)
-          | (f8_unorm(y[3], 255, half) << 24);
-    return (pass & w) | (~pass & d);
+        word = f8_unorm(y[0], 255, half) | (f8_unorm(y[1], 255, half) << 8) | (f8_unorm(y[2], 255, half) << 16)
+             | (f8_unorm(y[3], 255, half) << 24);
+    return (pass & word) | (~pass & d);
 }
 
 /* the kernel over fragments 0..n-1 (n a multiple of F8_N, the first live
@@ -432,47 +501,74 @@ AVX2_INLINE f8_i32 f8_modwrite(const F8ModWrite *m, int smooth, int kind, int rg
 ** F8_N again) at the ascending offsets k of dst (pixel x0 + k): texels
 ** from source 0 (ct + j stride, sampled by a fetch stage) or 1 (sampled
 ** here at tc). With dot3 the first unit's texels come from ct0 + j stride
-** (fetched) or are sampled here at tc0 (where ct0 is NULL). */
+** (fetched) or are sampled here at tc0 (where ct0 is NULL). Where af is
+** not NULL (source 1, the double build) the weights and both coordinates
+** are formed here from the offsets k instead of read from p, tc and tc0. */
 AVX2_INLINE void f8_modwrite_run(const F8ModWrite *mw, int src, int smooth, int kind, int rgb565, int dot3, int n,
                                  int live, const uint8_t *k, const WGT (*p)[3], const FRAGV *ct0,
                                  const TexCoord *tc0, const FRAGV *ct, size_t stride, const TexCoord *tc, int x0,
-                                 void *dst)
+                                 void *dst, const F8Affine *af)
 {
     const F8ModWrite local = *mw, *m = &local;   /* not aliased by the framebuffer stores */
     uint32_t *d32 = dst;
     uint16_t *d16 = dst;
+#if !defined(GLES_NUM_FLOAT)
+    const double *sv = af ? af->s : NULL, *tv = af ? af->t : NULL, *sv0 = af ? af->s0 : NULL,
+                 *tv0 = af ? af->t0 : NULL;
+#else
+    const double *sv = NULL, *tv = NULL, *sv0 = NULL, *tv0 = NULL;
+#endif
     /* source 1: each group's texel words are read one group ahead, so that
     ** their loads (gathers, on a rotated texture) overlap the arithmetic of
-    ** the group before */
+    ** the group before (and where af, its weights formed then) */
     F8Texels next = { 0 }, next0 = { 0 };
+    f8_num wnext[3] = { { 0 }, { 0 }, { 0 } };
     const int sample0 = dot3 && ct0 == NULL;      /* (the DOT3 unit's texels, the same way) */
-    int next_ok = src == 1 && n > 0 && f8_texels_of(&m->tx, tc, &next);
-    int next0_ok = sample0 && n > 0 && f8_texels_of(&m->tx0, tc0, &next0);
+#if !defined(GLES_NUM_FLOAT)
+    if (af && n > 0)
+        f8_affine_weights(af, k, wnext);
+#endif
+    int next_ok = src == 1 && n > 0 && f8_texels_of(&m->tx, tc, af, sv, tv, wnext, &next);
+    int next0_ok = sample0 && n > 0 && f8_texels_of(&m->tx0, tc0, af, sv0, tv0, wnext, &next0);
     const int overlap = modwrite_overlaps(kind, m->alpha.test, rgb565, n, F8_N);
     for (int j = 0, jn; j < n; j = jn) {
         /* the next group; a last partial one as the last F8_N again */
         jn = overlap && j + F8_N < n && j + 2 * F8_N > n ? n - F8_N : j + F8_N;
-        f8_num T[4], T0[4];
+        f8_num T[4], T0[4], w[3];
         const F8Texels cur = next, cur0 = next0;
         const int cur_ok = next_ok, cur0_ok = next0_ok;
+        if (af) {
+            for (int i = 0; i < 3; i++)
+                w[i] = wnext[i];
+#if !defined(GLES_NUM_FLOAT)
+            if (jn < n)
+                f8_affine_weights(af, k + jn, wnext);
+#endif
+        } else if (smooth) {
+            f8_weights(&p[j], w);
+        }
         if (src == 1 && jn < n)
-            next_ok = f8_texels_of(&m->tx, tc + jn, &next);
+            next_ok = f8_texels_of(&m->tx, tc + jn, af, sv, tv, wnext, &next);
         if (sample0 && jn < n)
-            next0_ok = f8_texels_of(&m->tx0, tc0 + jn, &next0);
+            next0_ok = f8_texels_of(&m->tx0, tc0 + jn, af, sv0, tv0, wnext, &next0);
         if (src == 1 && cur_ok) {
             f8_bilerp(&cur, T);
         } else {
             FRAGV texel[F8_N][4];
+            TexCoord buf[F8_N];
             if (src == 1)
-                m->tx.sampler(m->tx.tex, F8_N, tc + j, NULL, NULL, texel[0], 4, m->tx.unorm8);
+                m->tx.sampler(m->tx.tex, F8_N, f8_coords_at(tc, j, af, sv, tv, w, buf), NULL, NULL, texel[0], 4,
+                              m->tx.unorm8);
             f8_gather_rows(src == 1 ? texel[0] : ct + (size_t)j * stride, src == 1 ? 4 : stride, T);
         }
         if (sample0 && cur0_ok) {
             f8_bilerp(&cur0, T0);
         } else if (dot3) {
             FRAGV texel[F8_N][4];
+            TexCoord buf[F8_N];
             if (ct0 == NULL)
-                m->tx0.sampler(m->tx0.tex, F8_N, tc0 + j, NULL, NULL, texel[0], 4, m->tx0.unorm8);
+                m->tx0.sampler(m->tx0.tex, F8_N, f8_coords_at(tc0, j, af, sv0, tv0, w, buf), NULL, NULL, texel[0], 4,
+                               m->tx0.unorm8);
             f8_gather_rows(ct0 == NULL ? texel[0] : ct0 + (size_t)j * stride, ct0 == NULL ? 4 : stride, T0);
         }
         /* a group with copies is never F8_N neighbouring pixels, whatever
@@ -499,56 +595,69 @@ AVX2_INLINE void f8_modwrite_run(const F8ModWrite *mw, int src, int smooth, int 
                 for (int L = 0; L < F8_N; L++)
                     thr[L] = m->t_row[(x0 + k[j + L]) & 3];
         }
-        const f8_i32 w = f8_modwrite(m, smooth, kind, rgb565, dot3, &p[j], T0, T, d, thr);
+        const f8_i32 word = f8_modwrite(m, smooth, kind, rgb565, dot3, w, T0, T, d, thr);
         if (run && rgb565) {
-            const f8_u16 h = __builtin_convertvector(w, f8_u16);
+            const f8_u16 h = __builtin_convertvector(word, f8_u16);
             memcpy(&d16[k[j]], &h, sizeof h);
         } else if (run) {
-            memcpy(&d32[k[j]], &w, sizeof w);
+            memcpy(&d32[k[j]], &word, sizeof word);
         } else {
             /* padded lanes repeat the last fragment: the same word again */
             for (int L = 0; L < F8_N; L++) {
                 if (rgb565)
-                    d16[k[j + L]] = (uint16_t)w[L];
+                    d16[k[j + L]] = (uint16_t)word[L];
                 else
-                    d32[k[j + L]] = (uint32_t)w[L];
+                    d32[k[j + L]] = (uint32_t)word[L];
             }
         }
     }
 }
 
 /* f8_modwrite_run with the source, the colour's interpolation, the blend
-** and the format fixed per instance; dot3 (a constant) as there */
+** and the format fixed per instance; dot3 (a constant) as there; af (the
+** double build's, source 1) NULL or not per instance */
 AVX2_INLINE void f8_modwrite_dispatch_dot3(const F8ModWrite *m, int src, int rgb565, int dot3, int n, int live,
                                            const uint8_t *k, const WGT (*p)[3], const FRAGV *ct0,
                                            const TexCoord *tc0, const FRAGV *ct, size_t stride, const TexCoord *tc,
-                                           int x0, void *dst)
+                                           int x0, void *dst, const F8Affine *af)
 {
-#define F8_RUN(S, SM, K, F) \
-    f8_modwrite_run(m, S, SM, K, F, dot3, n, live, k, p, ct0, tc0, ct, stride, tc, x0, dst)
-#define F8_KINDS(S, SM)                    \
-    switch (m->kind + 3 * rgb565) {        \
-    case 0: F8_RUN(S, SM, 0, 0); break;    \
-    case 1: F8_RUN(S, SM, 1, 0); break;    \
-    case 2: F8_RUN(S, SM, 2, 0); break;    \
-    case 3: F8_RUN(S, SM, 0, 1); break;    \
-    default: F8_RUN(S, SM, 1, 1); break;   \
+#define F8_RUN(S, SM, K, F, AF) \
+    f8_modwrite_run(m, S, SM, K, F, dot3, n, live, k, p, ct0, tc0, ct, stride, tc, x0, dst, AF)
+#define F8_KINDS(S, SM, AF)                    \
+    switch (m->kind + 3 * rgb565) {            \
+    case 0: F8_RUN(S, SM, 0, 0, AF); break;    \
+    case 1: F8_RUN(S, SM, 1, 0, AF); break;    \
+    case 2: F8_RUN(S, SM, 2, 0, AF); break;    \
+    case 3: F8_RUN(S, SM, 0, 1, AF); break;    \
+    default: F8_RUN(S, SM, 1, 1, AF); break;   \
     }
+#if defined(GLES_NUM_FLOAT)
+    (void)af;
+#define F8_SAMPLED(SM) F8_KINDS(1, SM, NULL)
+#else
+#define F8_SAMPLED(SM)            \
+    if (af) {                     \
+        F8_KINDS(1, SM, af)       \
+    } else {                      \
+        F8_KINDS(1, SM, NULL)     \
+    }
+#endif
     switch (src * 2 + m->smooth) {
-    case 0: F8_KINDS(0, 0) break;
-    case 1: F8_KINDS(0, 1) break;
-    case 2: F8_KINDS(1, 0) break;
-    default: F8_KINDS(1, 1) break;
+    case 0: F8_KINDS(0, 0, NULL) break;
+    case 1: F8_KINDS(0, 1, NULL) break;
+    case 2: F8_SAMPLED(0) break;
+    default: F8_SAMPLED(1) break;
     }
+#undef F8_SAMPLED
 #undef F8_KINDS
 #undef F8_RUN
 }
 
 static inline void f8_modwrite_dispatch(const F8ModWrite *m, int src, int rgb565, int n, int live, const uint8_t *k,
                                         const WGT (*p)[3], const FRAGV *ct, size_t stride, const TexCoord *tc,
-                                        int x0, void *dst)
+                                        int x0, void *dst, const F8Affine *af)
 {
-    f8_modwrite_dispatch_dot3(m, src, rgb565, 0, n, live, k, p, NULL, NULL, ct, stride, tc, x0, dst);
+    f8_modwrite_dispatch_dot3(m, src, rgb565, 0, n, live, k, p, NULL, NULL, ct, stride, tc, x0, dst, af);
 }
 
 #endif

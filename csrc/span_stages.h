@@ -218,6 +218,15 @@ static void STAGE(stage_persp)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
     const int v = ctx ? ctx->chain_coords_tx_unit : -1;
     const int coords = u >= 0 && !((t->tex_projective >> u) & 1);
     const int coords_tx = v >= 0 && !((t->tex_projective >> v) & 1);
+#if SIMD_AVX512_INSTANCE
+    /* the fused stage forms the weights and both coordinates itself, in
+    ** its lanes, from an affine triangle's edges stepped exactly over the
+    ** chunk's whole groups (it would read them back from memory) */
+    b->lanes = ctx && ctx->chain_fused_lanes && coords && (v < 0 || coords_tx) && t->wgt.affine
+            && ctx_simd(ctx) >= SIMD_AVX512 && STAGE(edge_steps_exact)(t, b, (b->n + 7) & ~7);
+    if (b->lanes)
+        return;
+#endif
 #if NUM_IS_FIXED
     j = STAGE(persp_affine_run)(t, b, coords ? u : -1, coords_tx ? v : -1);
 #else
@@ -1737,7 +1746,22 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
     _Static_assert(sizeof(F8ModWrite) <= GLES_FUSED_SETUP_BYTES, "the context has room for the setup");
     F8ModWrite *const m = ctx->fused_setup;
     const uint64_t serial = b->rect ? b->rect->serial : t->serial;
-    if (src == 1 && !b->rect)
+    /* stage_persp left the weights and coordinates to the lanes (source
+    ** 1 of a triangle: the chain's ctx->chain_fused_lanes) */
+#if SIMD_AVX512_INSTANCE
+    const int lanes = src == 1 && !b->rect && b->lanes;
+    F8Affine af;
+    if (lanes) {
+        af.e1 = (double)b->e0[1], af.e2 = (double)b->e0[2];
+        af.a1 = (double)t->ea[1], af.a2 = (double)t->ea[2];
+        af.inv_area = t->wgt.inv_area;
+        span_unit_st(t, u, af.s, af.t);
+        span_unit_st(t, sampled0 ? u0 : -1, af.s0, af.t0);
+    }
+#else
+    const int lanes = 0;
+#endif
+    if (src == 1 && !b->rect && !lanes)
         STAGE(fused_coords)(ctx, t, b, u0, u, sampled0);
     if (ctx->fused_serial != serial) {
         f8_modwrite_setup(m, a, smooth, tex->format != GL_RGBA, replace, span_blend_kind(ctx),
@@ -1756,9 +1780,9 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
     if (!modwrite_overlaps(m->kind, m->alpha.test, rgb565, n, F8_N)) {
         /* the tail padded to a whole group (the slots past n are free) */
         _Static_assert(SPAN_CHUNK % 8 == 0, "a padded group stays within the chunk");
-        n = avx2_modwrite_pad(F8_N, b->n, b->k, b->p, smooth, src == 1 ? b->tc : NULL, src == 0 ? b->ct[0][u] : NULL,
-                              stride);
-        for (int j = b->n; j < n && dot3; j++) {
+        n = avx2_modwrite_pad(F8_N, b->n, b->k, b->p, smooth && !lanes, src == 1 && !lanes ? b->tc : NULL,
+                              src == 0 ? b->ct[0][u] : NULL, stride);
+        for (int j = b->n; j < n && dot3 && !lanes; j++) {
             if (sampled0)
                 b->tx[j] = b->tx[b->n - 1];
             else
@@ -1774,17 +1798,17 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
     if (dot3)
         f8_modwrite_dispatch_dot3(m, src, rgb565, 1, n, b->n, b->k, (const WGT (*)[3])b->p,
                                   sampled0 ? NULL : b->ct[0][u0], b->tx, b->ct[0][u], stride, b->tc, b->x0,
-                                  chunk_color(ctx, b, rgb565));
+                                  chunk_color(ctx, b, rgb565), NULL);
     else
         f8_modwrite_dispatch(m, src, rgb565, n, b->n, b->k, (const WGT (*)[3])b->p, b->ct[0][u], stride, b->tc,
-                             b->x0, chunk_color(ctx, b, rgb565));
+                             b->x0, chunk_color(ctx, b, rgb565), NULL);
 #else
     if (dot3)
         avx512_dot3_write(m, src, rgb565, n, b->n, b->k, (const WGT (*)[3])b->p, sampled0 ? NULL : b->ct[0][u0],
-                          b->tx, b->ct[0][u], stride, b->tc, b->x0, chunk_color(ctx, b, rgb565));
+                          b->tx, b->ct[0][u], stride, b->tc, b->x0, chunk_color(ctx, b, rgb565), lanes ? &af : NULL);
     else
         avx512_modwrite(m, src, rgb565, n, b->n, b->k, (const WGT (*)[3])b->p, b->ct[0][u], stride, b->tc, b->x0,
-                        chunk_color(ctx, b, rgb565));
+                        chunk_color(ctx, b, rgb565), lanes ? &af : NULL);
 #endif
 }
 

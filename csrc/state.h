@@ -607,6 +607,7 @@ struct GlesContext {
     int chain_coords_unit;      /* the unit whose coordinates stage_persp forms, else -1 */
     int chain_coords_tx_unit;   /* ... and the unit whose it forms into b->tx, else -1 */
     int chain_lod_unit;         /* the first unit, the one with a level of detail, whose coordinates stage_persp_lod forms, else -1 */
+    int chain_fused_lanes;      /* the chain ends in a fused stage that samples every unit it reads, at the coordinates stage_persp forms: it may form them itself (SpanBuf.lanes) */
     uint8_t stencil_lut[4][256];        /* the chain's stencil tables (fragment_stencil_lut) */
     /* the chain's stencil cull (span_chain.c's run), set with those tables:
     ** on where a fragment failing the test keeps the stored value; the
