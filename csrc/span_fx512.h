@@ -377,8 +377,52 @@ typedef struct Fx512Texels {
     __m512i g[4], a, b;
 } Fx512Texels;
 
+/* the four texel words of sixteen bilinear footprints (columns xa and
+** xa + 1, rows ya and ya + 1 of a level 2^log2w wide holding `total`
+** texels) out of a window of four rows of sixteen texels around lane 8's
+** (rows ya8 - 1 to ya8 + 2, columns xa8 - 7 to xa8 + 8): four loads and
+** permutes of them in place of four gathers, where every footprint lies
+** that close (most groups: a level is chosen for about a texel a pixel);
+** 0 where one does not, or the window leaves the level's texels. A
+** texel's place in the window is its offset y w + x from the window's
+** first, so a window's row may run on into the level's next row (a level
+** narrower than sixteen) and the places stay right */
+FX512_INLINE int fx512_window_texels16(const int *tx32, int log2w, int64_t total, __m512i xa, __m512i ya,
+                                       __m512i g[4])
+{
+    const __m512i mid = _mm512_set1_epi32(8), one = _mm512_set1_epi32(1);
+    const __m512i dx = _mm512_add_epi32(_mm512_sub_epi32(xa, _mm512_permutexvar_epi32(mid, xa)), _mm512_set1_epi32(7));
+    const __m512i dy = _mm512_add_epi32(_mm512_sub_epi32(ya, _mm512_permutexvar_epi32(mid, ya)), one);
+    if (_mm512_cmpgt_epu32_mask(dx, _mm512_set1_epi32(14)) | _mm512_cmpgt_epu32_mask(dy, _mm512_set1_epi32(2)))
+        return 0;
+    const int x8 = _mm_cvtsi128_si32(_mm512_extracti32x4_epi32(xa, 2));
+    const int y8 = _mm_cvtsi128_si32(_mm512_extracti32x4_epi32(ya, 2));
+    const int64_t w = (int64_t)1 << log2w, first = (int64_t)(y8 - 1) * w + x8 - 7;
+    if (first < 0 || first + 3 * w + 16 > total)
+        return 0;
+    const int *at = tx32 + first;
+    const __m512i r0 = _mm512_loadu_si512((const void *)at), r1 = _mm512_loadu_si512((const void *)(at + w));
+    const __m512i r2 = _mm512_loadu_si512((const void *)(at + 2 * w));
+    const __m512i r3 = _mm512_loadu_si512((const void *)(at + 3 * w));
+    /* a texel of window row r, column x: x + 16 (r & 1) of (r0, r1) or,
+    ** for rows 2 and 3, of (r2, r3) */
+    const __m512i top = _mm512_or_si512(dx, _mm512_slli_epi32(_mm512_and_si512(dy, one), 4));
+    const __m512i bottom = _mm512_xor_si512(top, _mm512_set1_epi32(16));
+    const __mmask16 top_high = _mm512_cmpeq_epi32_mask(dy, _mm512_set1_epi32(2));
+    const __mmask16 bottom_high = _mm512_cmpgt_epi32_mask(dy, _mm512_setzero_si512());
+#define FX512_WINDOW(idx, high) \
+    _mm512_mask_blend_epi32(high, _mm512_permutex2var_epi32(r0, idx, r1), _mm512_permutex2var_epi32(r2, idx, r3))
+    g[0] = FX512_WINDOW(top, top_high);
+    g[1] = FX512_WINDOW(_mm512_add_epi32(top, one), top_high);
+    g[2] = FX512_WINDOW(bottom, bottom_high);
+    g[3] = FX512_WINDOW(_mm512_add_epi32(bottom, one), bottom_high);
+#undef FX512_WINDOW
+    return 1;
+}
+
 /* the texel words and weights of a level at coordinates c[0..15]
-** (avx2_linear_channels8's texels) */
+** (avx2_linear_channels8's texels; fx512_window_texels16's where the
+** footprints are neighbours, not wrapped, else by gathers) */
 FX512_INLINE void fx512_linear_texels16(const TexImage *li, const TexCoord *c, int repeat_s, int repeat_t,
                                         Fx512Texels *x)
 {
@@ -389,7 +433,12 @@ FX512_INLINE void fx512_linear_texels16(const TexImage *li, const TexCoord *c, i
     fx512_linear_axis16(s_lo, s_hi, log2w, repeat_s, &xa, &xb, &a);
     fx512_linear_axis16(t_lo, t_hi, log2h, repeat_t, &ya, &yb, &b);
     const __m512i r0 = _mm512_slli_epi32(ya, log2w), r1 = _mm512_slli_epi32(yb, log2w);
-    if (_mm512_cmpeq_epi32_mask(xb, _mm512_add_epi32(xa, _mm512_set1_epi32(1))) == 0xFFFF) {
+    const __m512i one = _mm512_set1_epi32(1);
+    const int pairs = _mm512_cmpeq_epi32_mask(xb, _mm512_add_epi32(xa, one)) == 0xFFFF;
+    if (pairs && _mm512_cmpeq_epi32_mask(yb, _mm512_add_epi32(ya, one)) == 0xFFFF
+        && fx512_window_texels16(tx32, log2w, (int64_t)li->width * li->height, xa, ya, g)) {
+        /* (the window's words) */
+    } else if (pairs) {
         fx512_gather_pairs(tx32, _mm512_add_epi32(r0, xa), &g[0], &g[1]);
         fx512_gather_pairs(tx32, _mm512_add_epi32(r1, xa), &g[2], &g[3]);
     } else {

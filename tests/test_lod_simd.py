@@ -268,3 +268,40 @@ def test_long_runs_of_one_level_pair_match_scalar(size, wrap):
         np.testing.assert_array_equal(_sampled(ctx, coords, 2), base, err_msg="avx512")
     red = base[:, 0]
     assert ((red > 0) & (red < 1 << 30)).mean() > 0.5     # mixes of two levels
+
+
+@pytest.mark.parametrize("wrap", WRAPS[:2], ids=WRAP_IDS[:2])
+@pytest.mark.parametrize("size", [(256, 256), (64, 4), (8, 32)], ids=["256x256", "64x4", "8x32"])
+def test_clustered_runs_match_scalar(size, wrap):
+    """Runs of one level pair whose footprints lie within a few texels of
+    each other, as a perspective plane's do (the AVX-512 mix then reads a
+    group's texels from a window of four rows of sixteen, or gathers them
+    where a footprint lies outside it or the window outside the level):
+    near the level's first and last rows and columns too, and on levels
+    narrower than the window, the texels are the baseline's."""
+    rng = np.random.default_rng(size[0] + 3 * size[1] + 11 * WRAPS.index(wrap))
+    w, h = size
+    ctx = make_ctx("fixed", 4, 4)
+    _texture(ctx, w, h, C.GL_LINEAR_MIPMAP_LINEAR, C.GL_LINEAR, wrap, rng)
+    rows = []
+    for run in range(40):
+        n = int(rng.integers(16, 65))
+        lam = rng.uniform(0.05, max(w, h).bit_length() - 1.05)
+        level_w, level_h = max(w >> int(lam), 1), max(h >> int(lam), 1)
+        ds = (2.0 ** lam) / w
+        cs, ct = rng.uniform(-1.5, 2.5, 2)
+        if run % 4 == 1:                        # by the first or last row and column
+            cs, ct = rng.choice([0.0, 1.0]), rng.choice([0.0, 1.0])
+        # within about 6.5 texels along s and one along t of the level
+        st = np.stack([cs + rng.uniform(-6.5, 6.5, n) / level_w,
+                       ct + rng.uniform(-1.0, 1.0, n) / level_h], axis=1)
+        if run % 5 == 2:                        # wider: some groups leave the window
+            st[:, 0] += rng.uniform(-12, 12, n) / level_w
+        rows += np.concatenate([st, st + [ds, 0.0], st + [0.0, ds * w / h / 4]], axis=1).tolist()
+    coords = np.ascontiguousarray(np.array(rows, dtype=np.float64))
+    base = _sampled(ctx, coords, 0)
+    np.testing.assert_array_equal(_sampled(ctx, coords, 1), base, err_msg="avx2")
+    if ctx.simd == "avx512":
+        np.testing.assert_array_equal(_sampled(ctx, coords, 2), base, err_msg="avx512")
+    red = base[:, 0]
+    assert ((red > 0) & (red < 1 << 30)).mean() > 0.5     # mixes of two levels
