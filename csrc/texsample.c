@@ -690,14 +690,25 @@ static int lod_block(int simd, const Texture *t, int n, const TexCoord *c, const
 #if NUM_IS_FIXED
         if (two && m4) {
             int d = 0;
-#if SIMD_AVX512_FX
-            if (simd >= SIMD_AVX512)    /* sixteen at a time, the rest as below */
-                d = fx512_sample_linear_mix(&t->level[level], &t->level[level + 1], m4, c + j, frac + j,
-                                            out + (size_t)j * stride, stride, ws == GL_REPEAT, wt == GL_REPEAT);
-#endif
-            avx2_sample_linear_mix(&t->level[level], &t->level[level + 1], m4 - d, c + j + d, frac + j + d,
-                                   out + (size_t)(j + d) * stride, stride, ws == GL_REPEAT, wt == GL_REPEAT);
             mixed = m4;
+#if SIMD_AVX512_FX
+            if (simd >= SIMD_AVX512) {  /* sixteen at a time, the rest as below */
+                const TexImage *l1 = &t->level[level], *l2 = &t->level[level + 1];
+                d = fx512_sample_linear_mix(l1, l2, e - j, c + j, frac + j, out + (size_t)j * stride, stride,
+                                            ws == GL_REPEAT, wt == GL_REPEAT);
+                if (d && d < e - j) {
+                    /* a run's last partial sixteen as its last sixteen
+                    ** again: the same texels where they overlap */
+                    const int at = e - 16;
+                    fx512_sample_linear_mix(l1, l2, 16, c + at, frac + at, out + (size_t)at * stride, stride,
+                                            ws == GL_REPEAT, wt == GL_REPEAT);
+                    d = mixed = e - j;
+                }
+            }
+#endif
+            if (d < m4)
+                avx2_sample_linear_mix(&t->level[level], &t->level[level + 1], m4 - d, c + j + d, frac + j + d,
+                                       out + (size_t)(j + d) * stride, stride, ws == GL_REPEAT, wt == GL_REPEAT);
         }
 #endif
         for (int k = 0; k <= two; k++) {
