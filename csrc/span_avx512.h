@@ -102,12 +102,10 @@ AVX512_INLINE void v8_bilerp_channels(const __m256i g[4], __m512d a, __m512d b, 
     }
 }
 
-/* v4_bilerp4 of eight fragments (lane k fragment k), stored as
+/* eight fragments' channels ch[0..3] (lane k fragment k) stored as
 ** out[k stride + channel] */
-AVX512_INLINE void v8_bilerp8(const __m256i g[4], __m512d a, __m512d b, double *out, size_t stride)
+AVX512_INLINE void v8_store_channels8(const __m512d ch[4], double *out, size_t stride)
 {
-    __m512d ch[4];
-    v8_bilerp_channels(g, a, b, ch);
     /* channels of eight fragments to eight fragments' channels: pairs
     ** (r, g) and (b, a) of fragments 0 2 4 6 and 1 3 5 7, then one
     ** fragment's two pairs per 256-bit half */
@@ -128,6 +126,40 @@ AVX512_INLINE void v8_bilerp8(const __m256i g[4], __m512d a, __m512d b, double *
     _mm256_storeu_pd(out + 7 * stride, _mm512_extractf64x4_pd(f57, 1));
 }
 
+/* v4_bilerp4 of eight fragments (lane k fragment k), stored as
+** out[k stride + channel] */
+AVX512_INLINE void v8_bilerp8(const __m256i g[4], __m512d a, __m512d b, double *out, size_t stride)
+{
+    __m512d ch[4];
+    v8_bilerp_channels(g, a, b, ch);
+    v8_store_channels8(ch, out, stride);
+}
+
+/* s and t of coordinates c[0..7] as lanes; 0 where one is not finite */
+AVX512_INLINE int v8_coords8(const TexCoord *c, __m512d *s, __m512d *t)
+{
+    const __m512i even = _mm512_setr_epi64(0, 2, 4, 6, 8, 10, 12, 14);
+    const __m512i odd = _mm512_setr_epi64(1, 3, 5, 7, 9, 11, 13, 15);
+    const __m512d inf = _mm512_set1_pd(INFINITY);
+    const __m512d p0 = _mm512_loadu_pd(&c[0].s), p1 = _mm512_loadu_pd(&c[4].s);
+    *s = _mm512_permutex2var_pd(p0, even, p1), *t = _mm512_permutex2var_pd(p0, odd, p1);
+    return (__mmask8)(_mm512_cmp_pd_mask(_mm512_abs_pd(*s), inf, _CMP_LT_OQ)
+                      & _mm512_cmp_pd_mask(_mm512_abs_pd(*t), inf, _CMP_LT_OQ)) == 0xFF;
+}
+
+/* the bilinear channels ch[0..3] of a w x h level at lanes s, t (finite) */
+AVX512_INLINE void v8_linear_channels(const int *t32, int w, int h, __m512d s, __m512d t, int repeat_s, int repeat_t,
+                                      int rows, __m512d ch[4])
+{
+    __m256i x0, x1, y0, y1;
+    __m512d a, b;
+    v8_linear_axis(s, w, repeat_s, &x0, &x1, &a);
+    v8_linear_axis(t, h, repeat_t, &y0, &y1, &b);
+    __m256i g[4];
+    avx2_texel_words8(t32, w, (int64_t)w * h, x0, x1, y0, y1, rows, g);
+    v8_bilerp_channels(g, a, b, ch);
+}
+
 /* avx2_sample_linear_real eight fragments at a time: the first n - n % 8
 ** of fragments 0..n-1, stopping before the first eight coordinates of
 ** which one is not finite; returns the number of fragments done */
@@ -135,25 +167,39 @@ static __attribute__((noinline)) int avx512_sample_linear_real(const TexImage *l
                                                                double *out, size_t stride, int repeat_s,
                                                                int repeat_t, int rows)
 {
-    const int w = li->width, h = li->height;
     const int *t32 = (const int *)(const void *)li->texels;
-    const __m512i even = _mm512_setr_epi64(0, 2, 4, 6, 8, 10, 12, 14);
-    const __m512i odd = _mm512_setr_epi64(1, 3, 5, 7, 9, 11, 13, 15);
-    const __m512d inf = _mm512_set1_pd(INFINITY);
     int j = 0;
     for (; j + 8 <= n; j += 8) {
-        const __m512d p0 = _mm512_loadu_pd(&c[j].s), p1 = _mm512_loadu_pd(&c[j + 4].s);
-        const __m512d s = _mm512_permutex2var_pd(p0, even, p1), t = _mm512_permutex2var_pd(p0, odd, p1);
-        if ((__mmask8)(_mm512_cmp_pd_mask(_mm512_abs_pd(s), inf, _CMP_LT_OQ)
-                       & _mm512_cmp_pd_mask(_mm512_abs_pd(t), inf, _CMP_LT_OQ)) != 0xFF)
+        __m512d s, t, ch[4];
+        if (!v8_coords8(c + j, &s, &t))
             break;
-        __m256i x0, x1, y0, y1;
-        __m512d a, b;
-        v8_linear_axis(s, w, repeat_s, &x0, &x1, &a);
-        v8_linear_axis(t, h, repeat_t, &y0, &y1, &b);
-        __m256i g[4];
-        avx2_texel_words8(t32, w, (int64_t)w * h, x0, x1, y0, y1, rows, g);
-        v8_bilerp8(g, a, b, out + (size_t)j * stride, stride);
+        v8_linear_channels(t32, li->width, li->height, s, t, repeat_s, repeat_t, rows, ch);
+        v8_store_channels8(ch, out + (size_t)j * stride, stride);
+    }
+    return j;
+}
+
+/* avx512_sample_linear_real of two levels l1, l2 at the same coordinates
+** (not read by rows), mixed by frac[0..n) as lod_block mixes them (t1 +
+** frac (t2 - t1) per channel), with no store of either level's texels
+** between; returns the number of fragments done (as there) */
+static __attribute__((noinline)) int avx512_sample_linear_mix_real(const TexImage *l1, const TexImage *l2, int n,
+                                                                   const TexCoord *c, const double *frac,
+                                                                   double *out, size_t stride, int repeat_s,
+                                                                   int repeat_t)
+{
+    const int *t1 = (const int *)(const void *)l1->texels, *t2 = (const int *)(const void *)l2->texels;
+    int j = 0;
+    for (; j + 8 <= n; j += 8) {
+        __m512d s, t, ch1[4], ch2[4];
+        if (!v8_coords8(c + j, &s, &t))
+            break;
+        v8_linear_channels(t1, l1->width, l1->height, s, t, repeat_s, repeat_t, 0, ch1);
+        v8_linear_channels(t2, l2->width, l2->height, s, t, repeat_s, repeat_t, 0, ch2);
+        const __m512d f = _mm512_loadu_pd(frac + j);
+        for (int k = 0; k < 4; k++)
+            ch1[k] = _mm512_add_pd(ch1[k], _mm512_mul_pd(f, _mm512_sub_pd(ch2[k], ch1[k])));
+        v8_store_channels8(ch1, out + (size_t)j * stride, stride);
     }
     return j;
 }

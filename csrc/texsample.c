@@ -710,14 +710,29 @@ static int lod_block(int simd, const Texture *t, int n, const TexCoord *c, const
                 avx2_sample_linear_mix(&t->level[level], &t->level[level + 1], m4 - d, c + j + d, frac + j + d,
                                        out + (size_t)(j + d) * stride, stride, ws == GL_REPEAT, wt == GL_REPEAT);
         }
+#elif SIMD_AVX512_INSTANCE
+        if (two && m4 && simd >= SIMD_AVX512) {
+            /* eight at a time where every coordinate is finite, a run's last
+            ** partial eight as its last eight again (the same texels where
+            ** they overlap), the rest as below */
+            const TexImage *l1 = &t->level[level], *l2 = &t->level[level + 1];
+            mixed = avx512_sample_linear_mix_real(l1, l2, e - j, c + j, frac + j, out + (size_t)j * stride, stride,
+                                                  ws == GL_REPEAT, wt == GL_REPEAT);
+            if (mixed && mixed == ((e - j) & ~7) && mixed < e - j
+                && avx512_sample_linear_mix_real(l1, l2, 8, c + e - 8, frac + e - 8, out + (size_t)(e - 8) * stride,
+                                                 stride, ws == GL_REPEAT, wt == GL_REPEAT) == 8)
+                mixed = e - j;
+        }
 #endif
         for (int k = 0; k <= two; k++) {
             FRAGV *dst = k ? second[j] : out + (size_t)j * stride;
             const size_t dstride = k ? 4 : stride;
-            const int done = mixed ? mixed
-                           : m4    ? sample_linear4(simd, &t->level[level + k], m4, c + j, dst, dstride,
-                                                    ws == GL_REPEAT, wt == GL_REPEAT, !two)
-                                   : 0;
+            /* (past what the mix did) */
+            int done = mixed;
+            if (m4 > mixed)
+                done += sample_linear4(simd, &t->level[level + k], m4 - mixed, c + j + mixed,
+                                       dst + (size_t)mixed * dstride, dstride, ws == GL_REPEAT, wt == GL_REPEAT,
+                                       !two);
             for (int i = done; i < e - j; i++)
                 sample_level(t, level + k, filter, c[j + i].s, c[j + i].t, dst + (size_t)i * dstride, unorm, ws,
                              wt, 1);
