@@ -520,37 +520,52 @@ AVX2_INLINE void f8_modwrite_run(const F8ModWrite *mw, int src, int smooth, int 
 #endif
     /* source 1: each group's texel words are read one group ahead, so that
     ** their loads (gathers, on a rotated texture) overlap the arithmetic of
-    ** the group before (and where af, its weights formed then) */
+    ** the group before (and where af, its weights formed then); not so for
+    ** the double build's DOT3 pair, whose two textures' words held across
+    ** the loop leave too few registers (measured slower, rotated or not) */
+#if defined(GLES_NUM_FLOAT)
+    const int ahead = 1;
+#else
+    const int ahead = !dot3;
+#endif
     F8Texels next = { 0 }, next0 = { 0 };
     f8_num wnext[3] = { { 0 }, { 0 }, { 0 } };
     const int sample0 = dot3 && ct0 == NULL;      /* (the DOT3 unit's texels, the same way) */
 #if !defined(GLES_NUM_FLOAT)
-    if (af && n > 0)
+    if (ahead && af && n > 0)
         f8_affine_weights(af, k, wnext);
 #endif
-    int next_ok = src == 1 && n > 0 && f8_texels_of(&m->tx, tc, af, sv, tv, wnext, &next);
-    int next0_ok = sample0 && n > 0 && f8_texels_of(&m->tx0, tc0, af, sv0, tv0, wnext, &next0);
+    int next_ok = ahead && src == 1 && n > 0 && f8_texels_of(&m->tx, tc, af, sv, tv, wnext, &next);
+    int next0_ok = ahead && sample0 && n > 0 && f8_texels_of(&m->tx0, tc0, af, sv0, tv0, wnext, &next0);
     const int overlap = modwrite_overlaps(kind, m->alpha.test, rgb565, n, F8_N);
     for (int j = 0, jn; j < n; j = jn) {
         /* the next group; a last partial one as the last F8_N again */
         jn = overlap && j + F8_N < n && j + 2 * F8_N > n ? n - F8_N : j + F8_N;
         f8_num T[4], T0[4], w[3];
-        const F8Texels cur = next, cur0 = next0;
-        const int cur_ok = next_ok, cur0_ok = next0_ok;
+        F8Texels cur = next, cur0 = next0;
+        int cur_ok = next_ok, cur0_ok = next0_ok;
         if (af) {
             for (int i = 0; i < 3; i++)
                 w[i] = wnext[i];
 #if !defined(GLES_NUM_FLOAT)
-            if (jn < n)
+            if (!ahead)
+                f8_affine_weights(af, k + j, w);
+            else if (jn < n)
                 f8_affine_weights(af, k + jn, wnext);
 #endif
         } else if (smooth) {
             f8_weights(&p[j], w);
         }
-        if (src == 1 && jn < n)
-            next_ok = f8_texels_of(&m->tx, tc + jn, af, sv, tv, wnext, &next);
-        if (sample0 && jn < n)
-            next0_ok = f8_texels_of(&m->tx0, tc0 + jn, af, sv0, tv0, wnext, &next0);
+        if (!ahead) {
+            /* this group's words now */
+            cur_ok = src == 1 && f8_texels_of(&m->tx, tc + j, af, sv, tv, w, &cur);
+            cur0_ok = sample0 && f8_texels_of(&m->tx0, tc0 + j, af, sv0, tv0, w, &cur0);
+        } else {
+            if (src == 1 && jn < n)
+                next_ok = f8_texels_of(&m->tx, tc + jn, af, sv, tv, wnext, &next);
+            if (sample0 && jn < n)
+                next0_ok = f8_texels_of(&m->tx0, tc0 + jn, af, sv0, tv0, wnext, &next0);
+        }
         if (src == 1 && cur_ok) {
             f8_bilerp(&cur, T);
         } else {
