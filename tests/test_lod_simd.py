@@ -193,6 +193,38 @@ def _case(numeric: str, seed: int, size: tuple[int, int], minf: int, magf: int, 
     return texc, vec, _sampled(ctx, coords, 0)
 
 
+def _trilinear_ctx(numeric: str, size: tuple[int, int], wrap: tuple[int, int], seed: int):
+    """A 4x4 context with a LINEAR_MIPMAP_LINEAR texture of random levels
+    (red alternating per level) of the size, and the generator after it."""
+    rng = np.random.default_rng(seed)
+    ctx = make_ctx(numeric, 4, 4)
+    _texture(ctx, size[0], size[1], C.GL_LINEAR_MIPMAP_LINEAR, C.GL_LINEAR, wrap, rng)
+    return ctx, rng
+
+
+def _runs(rng: np.random.Generator, size: tuple[int, int], count: int):
+    """count runs of 16 to 64 fragments: (index, length, lambda between 0.05
+    and q - 0.05, the footprint 2^lambda / w along s)."""
+    for run in range(count):
+        n = int(rng.integers(16, 65))
+        lam = rng.uniform(0.05, max(size).bit_length() - 1.05)
+        yield run, n, lam, (2.0 ** lam) / size[0]
+
+
+def _runs_match_scalar(ctx, numeric: str, rows: list) -> None:
+    """Rows of (s, t, right neighbour, upper neighbour) sampled by every
+    instance give the baseline's texels, most of them mixes of two levels
+    (red, 0 on even levels and full on odd ones, strictly between)."""
+    coords = np.ascontiguousarray(np.array(rows, dtype=np.float64))
+    base = _sampled(ctx, coords, 0)
+    np.testing.assert_array_equal(_sampled(ctx, coords, 1), base, err_msg="avx2")
+    if ctx.simd == "avx512":
+        np.testing.assert_array_equal(_sampled(ctx, coords, 2), base, err_msg="avx512")
+    red = base[:, 0]
+    one = 1 << 30 if numeric == "fixed" else 1.0
+    assert ((red > 0) & (red < one)).mean() > 0.5
+
+
 pytestmark = pytest.mark.skipif(not HAS_SIMD, reason="no vector instance on this CPU")
 
 
@@ -249,28 +281,15 @@ def test_long_runs_of_one_level_pair_match_scalar(size, wrap, numeric):
     AVX-512, the double build's eight in AVX-512) give the baseline's
     texels at full precision (0.30 in the fixed build), where a rounding
     off by one unit shows."""
-    rng = np.random.default_rng(size[0] * 7 + size[1] + 100 * WRAPS.index(wrap))
+    ctx, rng = _trilinear_ctx(numeric, size, wrap, size[0] * 7 + size[1] + 100 * WRAPS.index(wrap))
     w, h = size
-    ctx = make_ctx(numeric, 4, 4)
-    _texture(ctx, w, h, C.GL_LINEAR_MIPMAP_LINEAR, C.GL_LINEAR, wrap, rng)
     rows = []
-    for run in range(24):
-        n = int(rng.integers(16, 65))
-        # lambda between 0.05 and q - 0.05: rho = 2^lambda texels per pixel along s
-        lam = rng.uniform(0.05, max(w, h).bit_length() - 1.05)
-        ds = (2.0 ** lam) / w
+    for run, n, _lam, ds in _runs(rng, size, 24):
         st = rng.uniform(-1.5, 2.5, (n, 2))
         if run % 3 == 0:                        # on and beside the right and top edges
             st[:, 0] = rng.choice([1 - 0.5 / w, 1.0, 1 + 0.25 / w, -0.25 / w], n)
         rows += np.concatenate([st, st + [ds, 0.0], st + [0.0, ds * w / h / 4]], axis=1).tolist()
-    coords = np.ascontiguousarray(np.array(rows, dtype=np.float64))
-    base = _sampled(ctx, coords, 0)
-    np.testing.assert_array_equal(_sampled(ctx, coords, 1), base, err_msg="avx2")
-    if ctx.simd == "avx512":
-        np.testing.assert_array_equal(_sampled(ctx, coords, 2), base, err_msg="avx512")
-    red = base[:, 0]
-    one = 1 << 30 if numeric == "fixed" else 1.0
-    assert ((red > 0) & (red < one)).mean() > 0.5     # mixes of two levels
+    _runs_match_scalar(ctx, numeric, rows)
 
 
 @pytest.mark.parametrize("numeric", BUILDS)
@@ -283,16 +302,11 @@ def test_clustered_runs_match_scalar(size, wrap, numeric):
     where a footprint lies outside it or the window outside the level):
     near the level's first and last rows and columns too, and on levels
     narrower than the window, the texels are the baseline's."""
-    rng = np.random.default_rng(size[0] + 3 * size[1] + 11 * WRAPS.index(wrap))
+    ctx, rng = _trilinear_ctx(numeric, size, wrap, size[0] + 3 * size[1] + 11 * WRAPS.index(wrap))
     w, h = size
-    ctx = make_ctx(numeric, 4, 4)
-    _texture(ctx, w, h, C.GL_LINEAR_MIPMAP_LINEAR, C.GL_LINEAR, wrap, rng)
     rows = []
-    for run in range(40):
-        n = int(rng.integers(16, 65))
-        lam = rng.uniform(0.05, max(w, h).bit_length() - 1.05)
+    for run, n, lam, ds in _runs(rng, size, 40):
         level_w, level_h = max(w >> int(lam), 1), max(h >> int(lam), 1)
-        ds = (2.0 ** lam) / w
         cs, ct = rng.uniform(-1.5, 2.5, 2)
         if run % 4 == 1:                        # by the first or last row and column
             cs, ct = rng.choice([0.0, 1.0]), rng.choice([0.0, 1.0])
@@ -302,11 +316,4 @@ def test_clustered_runs_match_scalar(size, wrap, numeric):
         if run % 5 == 2:                        # wider: some groups leave the window
             st[:, 0] += rng.uniform(-12, 12, n) / level_w
         rows += np.concatenate([st, st + [ds, 0.0], st + [0.0, ds * w / h / 4]], axis=1).tolist()
-    coords = np.ascontiguousarray(np.array(rows, dtype=np.float64))
-    base = _sampled(ctx, coords, 0)
-    np.testing.assert_array_equal(_sampled(ctx, coords, 1), base, err_msg="avx2")
-    if ctx.simd == "avx512":
-        np.testing.assert_array_equal(_sampled(ctx, coords, 2), base, err_msg="avx512")
-    red = base[:, 0]
-    one = 1 << 30 if numeric == "fixed" else 1.0
-    assert ((red > 0) & (red < one)).mean() > 0.5     # mixes of two levels
+    _runs_match_scalar(ctx, numeric, rows)
