@@ -393,6 +393,24 @@ AVX2_INLINE const TexCoord *f8_coords_at(const TexCoord *tc, int j, const F8Affi
 ** eight at a time by f8_sample_level, stored as out[k stride + channel];
 ** stops before the first eight with a coordinate that is not finite and
 ** returns the count done (a multiple of 8; AVX2's four take the rest) */
+/* eight fragments' channels T[0..3] (lanes) stored as out[k stride + channel] */
+AVX2_INLINE void f8_store_channels(const f8_num T[4], float *out, size_t stride)
+{
+    /* four channel registers to eight fragments' four channels */
+    const __m256 rg_lo = _mm256_unpacklo_ps((__m256)T[0], (__m256)T[1]);
+    const __m256 rg_hi = _mm256_unpackhi_ps((__m256)T[0], (__m256)T[1]);
+    const __m256 ba_lo = _mm256_unpacklo_ps((__m256)T[2], (__m256)T[3]);
+    const __m256 ba_hi = _mm256_unpackhi_ps((__m256)T[2], (__m256)T[3]);
+    const __m256 f[4] = { _mm256_shuffle_ps(rg_lo, ba_lo, _MM_SHUFFLE(1, 0, 1, 0)),    /* fragments 0 | 4 */
+                          _mm256_shuffle_ps(rg_lo, ba_lo, _MM_SHUFFLE(3, 2, 3, 2)),    /* 1 | 5 */
+                          _mm256_shuffle_ps(rg_hi, ba_hi, _MM_SHUFFLE(1, 0, 1, 0)),    /* 2 | 6 */
+                          _mm256_shuffle_ps(rg_hi, ba_hi, _MM_SHUFFLE(3, 2, 3, 2)) };  /* 3 | 7 */
+    for (int k = 0; k < 4; k++) {
+        _mm_storeu_ps(out + (size_t)k * stride, _mm256_castps256_ps128(f[k]));
+        _mm_storeu_ps(out + (size_t)(k + 4) * stride, _mm256_extractf128_ps(f[k], 1));
+    }
+}
+
 static int f8_sample_linear(const TexImage *li, int n, const TexCoord *c, float *out, size_t stride, int repeat_s,
                             int repeat_t, int rows)
 {
@@ -401,20 +419,28 @@ static int f8_sample_linear(const TexImage *li, int n, const TexCoord *c, float 
         f8_num T[4];
         if (!f8_sample_level(li->texels, li->width, li->height, repeat_s, repeat_t, rows, c + j, T))
             break;
-        /* four channel registers to eight fragments' four channels */
-        const __m256 rg_lo = _mm256_unpacklo_ps((__m256)T[0], (__m256)T[1]);
-        const __m256 rg_hi = _mm256_unpackhi_ps((__m256)T[0], (__m256)T[1]);
-        const __m256 ba_lo = _mm256_unpacklo_ps((__m256)T[2], (__m256)T[3]);
-        const __m256 ba_hi = _mm256_unpackhi_ps((__m256)T[2], (__m256)T[3]);
-        const __m256 f[4] = { _mm256_shuffle_ps(rg_lo, ba_lo, _MM_SHUFFLE(1, 0, 1, 0)),    /* fragments 0 | 4 */
-                              _mm256_shuffle_ps(rg_lo, ba_lo, _MM_SHUFFLE(3, 2, 3, 2)),    /* 1 | 5 */
-                              _mm256_shuffle_ps(rg_hi, ba_hi, _MM_SHUFFLE(1, 0, 1, 0)),    /* 2 | 6 */
-                              _mm256_shuffle_ps(rg_hi, ba_hi, _MM_SHUFFLE(3, 2, 3, 2)) };  /* 3 | 7 */
-        float *o = out + (size_t)j * stride;
-        for (int k = 0; k < 4; k++) {
-            _mm_storeu_ps(o + (size_t)k * stride, _mm256_castps256_ps128(f[k]));
-            _mm_storeu_ps(o + (size_t)(k + 4) * stride, _mm256_extractf128_ps(f[k], 1));
-        }
+        f8_store_channels(T, out + (size_t)j * stride, stride);
+    }
+    return j;
+}
+
+/* f8_sample_linear of two levels l1, l2 at the same coordinates (not read
+** by rows), mixed by frac[0..n) as lod_block mixes them (t1 + frac (t2 -
+** t1) per channel), with no store of either level's texels between;
+** returns the number of fragments done (as there) */
+static int f8_sample_linear_mix(const TexImage *l1, const TexImage *l2, int n, const TexCoord *c, const float *frac,
+                                float *out, size_t stride, int repeat_s, int repeat_t)
+{
+    int j = 0;
+    for (; j + F8_N <= n; j += F8_N) {
+        f8_num T1[4], T2[4], f;
+        if (!f8_sample_level(l1->texels, l1->width, l1->height, repeat_s, repeat_t, 0, c + j, T1)
+            || !f8_sample_level(l2->texels, l2->width, l2->height, repeat_s, repeat_t, 0, c + j, T2))
+            break;
+        memcpy(&f, frac + j, sizeof f);
+        for (int k = 0; k < 4; k++)
+            T1[k] = T1[k] + f * (T2[k] - T1[k]);
+        f8_store_channels(T1, out + (size_t)j * stride, stride);
     }
     return j;
 }

@@ -710,18 +710,25 @@ static int lod_block(int simd, const Texture *t, int n, const TexCoord *c, const
                 avx2_sample_linear_mix(&t->level[level], &t->level[level + 1], m4 - d, c + j + d, frac + j + d,
                                        out + (size_t)(j + d) * stride, stride, ws == GL_REPEAT, wt == GL_REPEAT);
         }
-#elif SIMD_AVX512_INSTANCE
-        if (two && m4 && simd >= SIMD_AVX512) {
-            /* eight at a time where every coordinate is finite, a run's last
-            ** partial eight as its last eight again (the same texels where
-            ** they overlap), the rest as below */
+#elif SIMD_AVX512_INSTANCE || defined(GLES_NUM_FLOAT)
+        if (two && m4 && simd >= (SIMD_AVX512_INSTANCE ? SIMD_AVX512 : SIMD_AVX2)) {
+            /* eight at a time where every coordinate is finite (the double
+            ** build's AVX-512 lanes, the float build's AVX2 ones), a run's
+            ** last partial eight as its last eight again (the same texels
+            ** where they overlap), the rest as below */
             const TexImage *l1 = &t->level[level], *l2 = &t->level[level + 1];
-            mixed = avx512_sample_linear_mix_real(l1, l2, e - j, c + j, frac + j, out + (size_t)j * stride, stride,
-                                                  ws == GL_REPEAT, wt == GL_REPEAT);
+#if SIMD_AVX512_INSTANCE
+#define LOD_MIX8 avx512_sample_linear_mix_real
+#else
+#define LOD_MIX8 f8_sample_linear_mix
+#endif
+            mixed = LOD_MIX8(l1, l2, e - j, c + j, frac + j, out + (size_t)j * stride, stride, ws == GL_REPEAT,
+                             wt == GL_REPEAT);
             if (mixed && mixed == ((e - j) & ~7) && mixed < e - j
-                && avx512_sample_linear_mix_real(l1, l2, 8, c + e - 8, frac + e - 8, out + (size_t)(e - 8) * stride,
-                                                 stride, ws == GL_REPEAT, wt == GL_REPEAT) == 8)
+                && LOD_MIX8(l1, l2, 8, c + e - 8, frac + e - 8, out + (size_t)(e - 8) * stride, stride,
+                            ws == GL_REPEAT, wt == GL_REPEAT) == 8)
                 mixed = e - j;
+#undef LOD_MIX8
         }
 #endif
         for (int k = 0; k <= two; k++) {
