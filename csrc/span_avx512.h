@@ -135,6 +135,22 @@ AVX512_INLINE void v8_bilerp8(const __m256i g[4], __m512d a, __m512d b, double *
     v8_store_channels8(ch, out, stride);
 }
 
+/* a coordinate at eight fragments' weights o0, o1, o2 (lanes):
+** v4_tex_coord_affine4's (a0 o0 + a1 o1) + a2 o2 */
+AVX512_INLINE __m512d v8_lerp3(const double a[3], __m512d o0, __m512d o1, __m512d o2)
+{
+    return _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(_mm512_set1_pd(a[0]), o0), _mm512_mul_pd(_mm512_set1_pd(a[1]), o1)),
+                         _mm512_mul_pd(_mm512_set1_pd(a[2]), o2));
+}
+
+/* eight fragments' s and t (lanes) stored as TexCoord out[0..7] */
+AVX512_INLINE void v8_store_st8(__m512d s, __m512d t, TexCoord *out)
+{
+    const __m512d lo = _mm512_unpacklo_pd(s, t), hi = _mm512_unpackhi_pd(s, t);   /* s0 t0 s2 t2 ..., s1 t1 s3 t3 ... */
+    _mm512_storeu_pd(&out[0].s, _mm512_permutex2var_pd(lo, _mm512_setr_epi64(0, 1, 8, 9, 2, 3, 10, 11), hi));
+    _mm512_storeu_pd(&out[4].s, _mm512_permutex2var_pd(lo, _mm512_setr_epi64(4, 5, 12, 13, 6, 7, 14, 15), hi));
+}
+
 /* s and t of coordinates c[0..7] as lanes; 0 where one is not finite */
 AVX512_INLINE int v8_coords8(const TexCoord *c, __m512d *s, __m512d *t)
 {
@@ -313,14 +329,7 @@ AVX512_INLINE void d8_store_wgt8(const __m512d o[3], double (*out)[3])
 /* v4_tex_coord_affine4 of eight fragments */
 AVX512_INLINE void d8_tex_coord8(const double sv[3], const double tv[3], const __m512d o[3], TexCoord *out)
 {
-#define D8_LERP3(a) _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(_mm512_set1_pd(a[0]), o[0]), \
-                                                _mm512_mul_pd(_mm512_set1_pd(a[1]), o[1])), \
-                                  _mm512_mul_pd(_mm512_set1_pd(a[2]), o[2]))
-    const __m512d s = D8_LERP3(sv), t = D8_LERP3(tv);
-#undef D8_LERP3
-    const __m512d lo = _mm512_unpacklo_pd(s, t), hi = _mm512_unpackhi_pd(s, t);   /* s0 t0 s2 t2 ..., s1 t1 s3 t3 ... */
-    _mm512_storeu_pd(&out[0].s, _mm512_permutex2var_pd(lo, _mm512_setr_epi64(0, 1, 8, 9, 2, 3, 10, 11), hi));
-    _mm512_storeu_pd(&out[4].s, _mm512_permutex2var_pd(lo, _mm512_setr_epi64(4, 5, 12, 13, 6, 7, 14, 15), hi));
+    v8_store_st8(v8_lerp3(sv, o[0], o[1], o[2]), v8_lerp3(tv, o[0], o[1], o[2]), out);
 }
 
 /* STAGE(persp_affine_steps) (span_stages.h) eight slots at a time: an

@@ -184,17 +184,8 @@ AVX2_INLINE void f8_affine_weights(const F8Affine *af, const uint8_t *k, f8_num 
     w[0] = (1 - w[1]) - w[2];
 }
 
-/* a coordinate at weights w, v4_tex_coord_affine4's (a0 w0 + a1 w1) + a2 w2 */
+/* a coordinate at weights w, v8_lerp3's (a0 w0 + a1 w1) + a2 w2 */
 AVX2_INLINE f8_num f8_lerp3(const double a[3], const f8_num w[3]) { return a[0] * w[0] + a[1] * w[1] + a[2] * w[2]; }
-
-/* lanes s and t stored as coordinates out[0..F8_N-1] */
-AVX2_INLINE void f8_store_coords(f8_num s, f8_num t, TexCoord *out)
-{
-    const f8_num lo = __builtin_shuffle(s, t, (f8_mask){ 0, 8, 1, 9, 2, 10, 3, 11 });
-    const f8_num hi = __builtin_shuffle(s, t, (f8_mask){ 4, 12, 5, 13, 6, 14, 7, 15 });
-    memcpy(out, &lo, sizeof lo);
-    memcpy(out + F8_N / 2, &hi, sizeof hi);
-}
 #else
 typedef struct F8Affine F8Affine;   /* (the float build forms them in memory) */
 #endif
@@ -378,7 +369,7 @@ AVX2_INLINE const TexCoord *f8_coords_at(const TexCoord *tc, int j, const F8Affi
 {
 #if !defined(GLES_NUM_FLOAT)
     if (af) {
-        f8_store_coords(f8_lerp3(sv, w), f8_lerp3(tv, w), buf);
+        v8_store_st8((__m512d)f8_lerp3(sv, w), (__m512d)f8_lerp3(tv, w), buf);
         return buf;
     }
 #else
@@ -388,11 +379,6 @@ AVX2_INLINE const TexCoord *f8_coords_at(const TexCoord *tc, int j, const F8Affi
 }
 
 #if defined(GLES_NUM_FLOAT)
-/* the float build's bilinear span kernel (sample_linear4): fragments
-** 0..n-1 of a power-of-two level, REPEAT or CLAMP_TO_EDGE on each axis,
-** eight at a time by f8_sample_level, stored as out[k stride + channel];
-** stops before the first eight with a coordinate that is not finite and
-** returns the count done (a multiple of 8; AVX2's four take the rest) */
 /* eight fragments' channels T[0..3] (lanes) stored as out[k stride + channel] */
 AVX2_INLINE void f8_store_channels(const f8_num T[4], float *out, size_t stride)
 {
@@ -411,6 +397,11 @@ AVX2_INLINE void f8_store_channels(const f8_num T[4], float *out, size_t stride)
     }
 }
 
+/* the float build's bilinear span kernel (sample_linear4): fragments
+** 0..n-1 of a power-of-two level, REPEAT or CLAMP_TO_EDGE on each axis,
+** eight at a time by f8_sample_level, stored as out[k stride + channel];
+** stops before the first eight with a coordinate that is not finite and
+** returns the count done (a multiple of 8; AVX2's four take the rest) */
 static int f8_sample_linear(const TexImage *li, int n, const TexCoord *c, float *out, size_t stride, int repeat_s,
                             int repeat_t, int rows)
 {
@@ -571,13 +562,15 @@ AVX2_INLINE void f8_modwrite_run(const F8ModWrite *mw, int src, int smooth, int 
         F8Texels cur = next, cur0 = next0;
         int cur_ok = next_ok, cur0_ok = next0_ok;
         if (af) {
-            for (int i = 0; i < 3; i++)
-                w[i] = wnext[i];
 #if !defined(GLES_NUM_FLOAT)
-            if (!ahead)
+            if (!ahead) {
                 f8_affine_weights(af, k + j, w);
-            else if (jn < n)
-                f8_affine_weights(af, k + jn, wnext);
+            } else {
+                for (int i = 0; i < 3; i++)
+                    w[i] = wnext[i];
+                if (jn < n)
+                    f8_affine_weights(af, k + jn, wnext);
+            }
 #endif
         } else if (smooth) {
             f8_weights(&p[j], w);

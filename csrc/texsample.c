@@ -598,6 +598,25 @@ AVX2_INLINE void lod_choose4_d(const LodParamsR *p, const TexCoord *c, const Tex
 }
 #endif
 
+/* lod_block's widest mix of a run's two levels in this build: its group
+** and the instance it needs (the fixed build's sixteen and the double
+** build's eight in AVX-512, the float build's eight in AVX2) */
+#if SIMD_AVX512_FX
+#define LOD_MIX fx512_sample_linear_mix
+#define LOD_MIX_GROUP 16
+#define LOD_MIX_SIMD SIMD_AVX512
+#elif SIMD_AVX512_INSTANCE
+#define LOD_MIX avx512_sample_linear_mix_real
+#define LOD_MIX_GROUP 8
+#define LOD_MIX_SIMD SIMD_AVX512
+#elif defined(GLES_NUM_FLOAT)
+#define LOD_MIX f8_sample_linear_mix
+#define LOD_MIX_GROUP 8
+#define LOD_MIX_SIMD SIMD_AVX2
+#else
+#define LOD_MIX_GROUP 0
+#endif
+
 /* sample_w of n fragments with the vector kernel doing the GL_LINEAR
 ** samples: each fragment's level of detail first (lod_choose, four at a
 ** time by avx2_lod_choose4, lod_choose4_f or lod_choose4_d), as a key;
@@ -687,48 +706,28 @@ static int lod_block(int simd, const Texture *t, int n, const TexCoord *c, const
         const int m4 = filter == GL_LINEAR ? (e - j) & ~3 : 0;
         /* fragments whose two levels the kernel samples and mixes at once */
         int mixed = 0;
-#if NUM_IS_FIXED
-        if (two && m4) {
-            int d = 0;
-            mixed = m4;
-#if SIMD_AVX512_FX
-            if (simd >= SIMD_AVX512) {  /* sixteen at a time, the rest as below */
-                const TexImage *l1 = &t->level[level], *l2 = &t->level[level + 1];
-                d = fx512_sample_linear_mix(l1, l2, e - j, c + j, frac + j, out + (size_t)j * stride, stride,
-                                            ws == GL_REPEAT, wt == GL_REPEAT);
-                if (d && d < e - j) {
-                    /* a run's last partial sixteen as its last sixteen
-                    ** again: the same texels where they overlap */
-                    const int at = e - 16;
-                    fx512_sample_linear_mix(l1, l2, 16, c + at, frac + at, out + (size_t)at * stride, stride,
-                                            ws == GL_REPEAT, wt == GL_REPEAT);
-                    d = mixed = e - j;
-                }
-            }
-#endif
-            if (d < m4)
-                avx2_sample_linear_mix(&t->level[level], &t->level[level + 1], m4 - d, c + j + d, frac + j + d,
-                                       out + (size_t)(j + d) * stride, stride, ws == GL_REPEAT, wt == GL_REPEAT);
-        }
-#elif SIMD_AVX512_INSTANCE || defined(GLES_NUM_FLOAT)
-        if (two && m4 && simd >= (SIMD_AVX512_INSTANCE ? SIMD_AVX512 : SIMD_AVX2)) {
-            /* eight at a time where every coordinate is finite (the double
-            ** build's AVX-512 lanes, the float build's AVX2 ones), a run's
-            ** last partial eight as its last eight again (the same texels
+#if LOD_MIX_GROUP
+        if (two && m4 && simd >= LOD_MIX_SIMD) {
+            /* a group at a time where every coordinate is finite, a run's
+            ** last partial group as its last group again (the same texels
             ** where they overlap), the rest as below */
             const TexImage *l1 = &t->level[level], *l2 = &t->level[level + 1];
-#if SIMD_AVX512_INSTANCE
-#define LOD_MIX8 avx512_sample_linear_mix_real
-#else
-#define LOD_MIX8 f8_sample_linear_mix
+            const int len = e - j, g = LOD_MIX_GROUP;
+            mixed = LOD_MIX(l1, l2, len, c + j, frac + j, out + (size_t)j * stride, stride, ws == GL_REPEAT,
+                            wt == GL_REPEAT);
+            if (mixed && mixed == (len & ~(g - 1)) && mixed < len
+                && LOD_MIX(l1, l2, g, c + e - g, frac + e - g, out + (size_t)(e - g) * stride, stride,
+                           ws == GL_REPEAT, wt == GL_REPEAT) == g)
+                mixed = len;
+        }
 #endif
-            mixed = LOD_MIX8(l1, l2, e - j, c + j, frac + j, out + (size_t)j * stride, stride, ws == GL_REPEAT,
-                             wt == GL_REPEAT);
-            if (mixed && mixed == ((e - j) & ~7) && mixed < e - j
-                && LOD_MIX8(l1, l2, 8, c + e - 8, frac + e - 8, out + (size_t)(e - 8) * stride, stride,
-                            ws == GL_REPEAT, wt == GL_REPEAT) == 8)
-                mixed = e - j;
-#undef LOD_MIX8
+#if NUM_IS_FIXED
+        /* the whole fours left by the AVX2 mix (eight at a time) */
+        if (two && mixed < m4) {
+            avx2_sample_linear_mix(&t->level[level], &t->level[level + 1], m4 - mixed, c + j + mixed,
+                                   frac + j + mixed, out + (size_t)(j + mixed) * stride, stride, ws == GL_REPEAT,
+                                   wt == GL_REPEAT);
+            mixed = m4;
         }
 #endif
         for (int k = 0; k <= two; k++) {
@@ -760,6 +759,9 @@ static int lod_block(int simd, const Texture *t, int n, const TexCoord *c, const
     }
     return 1;
 }
+#undef LOD_MIX
+#undef LOD_MIX_GROUP
+#undef LOD_MIX_SIMD
 #pragma GCC pop_options
 #else
 static int lod_block(int simd, const Texture *t, int n, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
