@@ -3,10 +3,14 @@
     python benchmarks/run.py [--size 640x480] [--frames N] [--warmup N] [--scenes a,b]
                              [--backends gles-fixed,llvmpipe] [--instructions] [--out FILE.md]
 
-Each (backend, scene) gets a fresh context: setup, warm-up frames, then N
+Each (backend, scene) gets a fresh context: setup and warm-up frames, then N
 timed frames, each ending with glFinish (so Mesa's deferred rendering is
-counted). The median ms per frame is reported, and the ratio llvmpipe ms /
-gles ms (above 1: gles is faster) with its geometric mean over the scenes.
+counted). The backends of a scene take their timed frames side by side: in
+--rounds rounds, each backend in turn (the order rotating) draws one untimed
+frame and then its share of the N, so a slow spell of the machine falls on
+every backend alike instead of on whichever ran then. The median ms per
+frame is reported, and the ratio llvmpipe ms / gles ms (above 1: gles is
+faster) with its geometric mean over the scenes.
 The last frame's image is checked (enough pixels differ from the clear
 colour, no GL error), so a broken scene cannot post a fast time.
 
@@ -38,10 +42,17 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-import numpy as np
+# numpy's BLAS threads spin for a while after a call (the scenes' setup makes
+# some): on a machine of few CPUs they would take one from llvmpipe's two
+# threads (its binning and its rasteriser) or from ours. One thread each,
+# unless the caller says otherwise, before numpy starts them.
+for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_var, "1")
 
-import gles
-from gles import mesa
+import numpy as np  # noqa: E402
+
+import gles  # noqa: E402
+from gles import mesa  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from scenes import ALIASES, CLEAR, SCENES, Scene  # noqa: E402
@@ -118,29 +129,53 @@ def prepare(backend: str, scene: Scene, w: int, h: int, warmup: int) -> tuple[An
     return ctx, gl, state
 
 
-def run_one(backend: str, scene: Scene, w: int, h: int, frames: int,
-            warmup: int) -> tuple[Result, np.ndarray]:
-    """Setup, warm-up, timed frames and the image check; returns the result and the last image."""
-    ctx, gl, state = prepare(backend, scene, w, h, warmup)
+def run_scene(backends: Sequence[str], scene: Scene, w: int, h: int, frames: int, warmup: int,
+              rounds: int) -> dict[str, tuple[Result, np.ndarray]]:
+    """Every backend's context at once (setup and warm-up each), then `rounds` rounds of timed
+    frames: in each, every backend in turn (the order rotating from round to round) draws one
+    untimed frame (the caches the others left) and its share of the `frames`. Then each
+    backend's image check. Returns each backend's result and last image."""
+    live: dict[str, tuple[Any, Any, Any]] = {}
     try:
-        times = []
-        for _ in range(frames):
-            t0 = time.perf_counter()
-            scene.frame(gl, state)
-            gl.glFinish()
-            times.append(time.perf_counter() - t0)
-        res = Result(ms=1000 * statistics.median(times), spread=(1000 * min(times), 1000 * max(times)))
-        err = gl.glGetError()
-        if err:
-            res.problems.append(f"GL error 0x{err:04X}")
-        img = ctx.image()
-        res.coverage = float((img[..., :3] != clear_rgb(scene.color)).any(axis=-1).mean())
-        want = scene.min_coverage(w, h)
-        if res.coverage < want:
-            res.problems.append(f"only {100 * res.coverage:.1f}% of pixels drawn (want >= {100 * want:.0f}%)")
-        return res, img
+        for b in backends:
+            live[b] = prepare(b, scene, w, h, warmup)
+        times: dict[str, list[float]] = {b: [] for b in live}
+        order = list(live)
+        rounds = max(1, min(rounds, frames))
+        for r in range(rounds):
+            share = frames // rounds + (1 if r < frames % rounds else 0)
+            for b in order[r % len(order):] + order[:r % len(order)]:
+                ctx, gl, state = live[b]
+                if hasattr(ctx, "make_current"):
+                    ctx.make_current()
+                if rounds > 1:
+                    scene.frame(gl, state)
+                    gl.glFinish()
+                for _ in range(share):
+                    t0 = time.perf_counter()
+                    scene.frame(gl, state)
+                    gl.glFinish()
+                    times[b].append(time.perf_counter() - t0)
+        out = {}
+        for b, (ctx, gl, _state) in live.items():
+            if hasattr(ctx, "make_current"):
+                ctx.make_current()
+            t = times[b]
+            res = Result(ms=1000 * statistics.median(t), spread=(1000 * min(t), 1000 * max(t)))
+            err = gl.glGetError()
+            if err:
+                res.problems.append(f"GL error 0x{err:04X}")
+            img = ctx.image()
+            res.coverage = float((img[..., :3] != clear_rgb(scene.color)).any(axis=-1).mean())
+            want = scene.min_coverage(w, h)
+            if res.coverage < want:
+                res.problems.append(f"only {100 * res.coverage:.1f}% of pixels drawn "
+                                    f"(want >= {100 * want:.0f}%)")
+            out[b] = (res, img)
+        return out
     finally:
-        close_context(ctx)
+        for ctx, _gl, _state in live.values():
+            close_context(ctx)
 
 
 def clear_rgb(color: str) -> np.ndarray:
@@ -370,6 +405,9 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--size", default="640x480", help="WxH (default 640x480)")
     ap.add_argument("--frames", type=int, default=20, help="timed frames per scene (default 20)")
     ap.add_argument("--warmup", type=int, default=2, help="untimed frames first (default 2)")
+    ap.add_argument("--rounds", type=int, default=5,
+                    help="rounds the timed frames are split into, the backends taking turns in each "
+                         "(default 5; 1: each backend's frames in one go)")
     ap.add_argument("--scenes", default=",".join(SCENES),
                     help=f"comma-separated subset of {','.join(SCENES)} (default all)")
     ap.add_argument("--backends", default=",".join(BACKENDS),
@@ -405,8 +443,8 @@ def main(argv: list[str] | None = None) -> int:
         return one(backend, scene, w, h, args.frames, args.warmup)
     names = pick(ap, args.scenes, list(SCENES), "scene", ALIASES)
     bnames = pick(ap, args.backends, BACKENDS, "backend")
-    if args.frames < 1 or args.instr_frames < 1:
-        ap.error("--frames and --instr-frames must be at least 1")
+    if args.frames < 1 or args.instr_frames < 1 or args.rounds < 1:
+        ap.error("--frames, --instr-frames and --rounds must be at least 1")
     instr_warmup = max(1, args.instr_warmup)
 
     # llvmpipe's thread count: Mesa reads it when its display is initialised,
@@ -422,11 +460,13 @@ def main(argv: list[str] | None = None) -> int:
         for bname in bnames:
             if status[bname] is not None:
                 results[bname, name] = Result(problems=[f"unavailable: {status[bname]}"])
-                continue
-            print(f"{name:18s} {bname:12s} ...", end="", flush=True, file=sys.stderr)
-            res, images[bname] = run_one(bname, scene, w, h, args.frames, args.warmup)
+        ready = [b for b in bnames if status[b] is None]
+        print(f"{name:18s} ...", end="", flush=True, file=sys.stderr)
+        for bname, (res, images[bname]) in run_scene(ready, scene, w, h, args.frames, args.warmup,
+                                                      args.rounds).items():
             results[bname, name] = res
-            print(f" {res.ms:9.2f} ms/frame", " ".join(res.problems), file=sys.stderr)
+            print(f" {bname} {res.ms:.2f} ms", " ".join(res.problems), end="", file=sys.stderr)
+        print(file=sys.stderr, flush=True)
         ref = images.get("llvmpipe")
         if ref is not None:
             for bname, img in images.items():
@@ -469,8 +509,12 @@ def main(argv: list[str] | None = None) -> int:
             with mesa.MesaContext(1, 1, driver=d) as c:
                 mesa_info.append(f"{c.renderer}, {c.version}")
     cmd = "python benchmarks/run.py " + " ".join(argv if argv is not None else sys.argv[1:])
+    rounds = max(1, min(args.rounds, args.frames))
+    rounds_note = (f", in {rounds} rounds the backends take turns in (one untimed frame each before its "
+                   f"share)" if rounds > 1 else "")
     lines = [f"Command: `{cmd.strip()}`", "",
-             f"{w}x{h}, {args.frames} timed frames after {args.warmup} warm-up, median ms per frame "
+             f"{w}x{h}, {args.frames} timed frames after {args.warmup} warm-up{rounds_note}, "
+             f"median ms per frame "
              f"(each frame ends with glFinish); gles threads={args.threads}, "
              f"LP_NUM_THREADS={args.lp_threads}.", "",
              f"Machine: {machine()}.", ""]
