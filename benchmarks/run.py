@@ -60,6 +60,11 @@ from scenes import ALIASES, CLEAR, SCENES, Scene  # noqa: E402
 GLES_BUILDS = ("fixed", "float", "double")
 MESA_DRIVERS = ("llvmpipe", "softpipe")
 BACKENDS = tuple(f"gles-{b}" for b in GLES_BUILDS) + MESA_DRIVERS
+# The builds whose fragment stages have an AVX-512 instance, capped at their
+# AVX2 one (ctx.debug(32)): what a CPU without AVX-512 runs. Not in the
+# default set; on such a CPU they equal gles-fixed and gles-double.
+AVX2_CAPPED = ("gles-fixed-avx2", "gles-double-avx2")
+CHOICES = BACKENDS + AVX2_CAPPED
 
 # Under callgrind the counted subprocess starts instrumentation itself, after
 # setup and warm-up (a client request in a small library built here with the C
@@ -105,6 +110,10 @@ THREADS = 1
 
 def make_context(backend: str, w: int, h: int, color: str) -> Any:
     """A fresh context of the backend with the scene's colour format (24-bit depth, 8-bit stencil)."""
+    if backend in AVX2_CAPPED:
+        ctx = gles.Context(w, h, numeric=backend[len("gles-"):-len("-avx2")], color=color, threads=THREADS)
+        ctx.debug(32)       # at most the AVX2 instance
+        return ctx
     if backend.startswith("gles-"):
         return gles.Context(w, h, numeric=backend[len("gles-"):], color=color, threads=THREADS)
     return mesa.MesaContext(w, h, driver=backend, color=color)
@@ -333,13 +342,20 @@ def ratio_table(results: dict[tuple[str, str], Result], names: list[str], bnames
                 key: str) -> str | None:
     """Mesa / gles per scene and build, float/fixed and double/fixed, and a geometric-mean row."""
     cols: list[tuple[str, str, str]] = []        # (header, numerator backend, denominator backend)
+    gles_names = [f"gles-{g}" for g in GLES_BUILDS] + list(AVX2_CAPPED)
     for m in MESA_DRIVERS:
-        for g in GLES_BUILDS:
-            if m in bnames and f"gles-{g}" in bnames:
-                cols.append((f"{m} / {g}", m, f"gles-{g}"))
+        for g in gles_names:
+            if m in bnames and g in bnames:
+                cols.append((f"{m} / {g[len('gles-'):]}", m, g))
     for g in GLES_BUILDS[1:]:
         if "gles-fixed" in bnames and f"gles-{g}" in bnames:
             cols.append((f"{g} / fixed", f"gles-{g}", "gles-fixed"))
+    if all(g in bnames for g in AVX2_CAPPED):
+        cols.append(("double-avx2 / fixed-avx2", "gles-double-avx2", "gles-fixed-avx2"))
+    for g in AVX2_CAPPED:
+        plain = g[:-len("-avx2")]
+        if plain in bnames and g in bnames:
+            cols.append((f"{g[len('gles-'):]} / {plain[len('gles-'):]}", g, plain))
     if not cols:
         return None
     rows, per_col = [], [[] for _ in cols]
@@ -411,7 +427,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--scenes", default=",".join(SCENES),
                     help=f"comma-separated subset of {','.join(SCENES)} (default all)")
     ap.add_argument("--backends", default=",".join(BACKENDS),
-                    help=f"comma-separated subset of {','.join(BACKENDS)} (default all)")
+                    help=f"comma-separated subset of {','.join(CHOICES)} (default: all but the -avx2 ones, "
+                         "the fixed and double builds capped at their AVX2 instance)")
     ap.add_argument("--instructions", action="store_true",
                     help="also count instructions per frame (perf stat, else callgrind)")
     ap.add_argument("--instr-frames", type=int, default=2, help="frames of the counted run (default 2)")
@@ -438,11 +455,11 @@ def main(argv: list[str] | None = None) -> int:
         args.lp_threads = str(args.threads)
     if args.one:
         backend, scene = args.one
-        if backend not in BACKENDS or scene not in SCENES:
-            ap.error(f"--one takes one of {','.join(BACKENDS)} and one of {','.join(SCENES)}")
+        if backend not in CHOICES or scene not in SCENES:
+            ap.error(f"--one takes one of {','.join(CHOICES)} and one of {','.join(SCENES)}")
         return one(backend, scene, w, h, args.frames, args.warmup)
     names = pick(ap, args.scenes, list(SCENES), "scene", ALIASES)
-    bnames = pick(ap, args.backends, BACKENDS, "backend")
+    bnames = pick(ap, args.backends, CHOICES, "backend")
     if args.frames < 1 or args.instr_frames < 1 or args.rounds < 1:
         ap.error("--frames, --instr-frames and --rounds must be at least 1")
     instr_warmup = max(1, args.instr_warmup)
