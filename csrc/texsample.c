@@ -358,7 +358,7 @@ static inline int sample_linear4(int simd, const TexImage *li, int n, const TexC
 #else
     (void)simd;
 #endif
-    return j + avx2_sample_linear_real(li, n - j, c + j, out + (size_t)j * stride, stride, rs, rt);
+    return j + avx2_sample_linear_real(li, n - j, c + j, out + (size_t)j * stride, stride, rs, rt, rows);
 #endif
 }
 #endif
