@@ -1,6 +1,6 @@
 """Time the scenes on gles (fixed, float, double) and Mesa (llvmpipe, softpipe) in one run.
 
-    python benchmarks/run.py [--size 640x480] [--frames N] [--warmup N] [--scenes a,b]
+    python benchmarks/run.py [--size 640x480] [--frames N] [--warmup N] [--rounds R] [--scenes a,b]
                              [--backends gles-fixed,llvmpipe] [--instructions] [--out FILE.md]
 
 Each (backend, scene) gets a fresh context: setup and warm-up frames, then N
@@ -145,6 +145,8 @@ def run_scene(backends: Sequence[str], scene: Scene, w: int, h: int, frames: int
     untimed frame (the caches the others left) and its share of the `frames`. Then each
     backend's image check. Returns each backend's result and last image."""
     live: dict[str, tuple[Any, Any, Any]] = {}
+    if not backends:
+        return {}
     try:
         for b in backends:
             live[b] = prepare(b, scene, w, h, warmup)
