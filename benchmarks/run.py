@@ -110,12 +110,12 @@ THREADS = 1
 
 def make_context(backend: str, w: int, h: int, color: str) -> Any:
     """A fresh context of the backend with the scene's colour format (24-bit depth, 8-bit stencil)."""
-    if backend in AVX2_CAPPED:
-        ctx = gles.Context(w, h, numeric=backend[len("gles-"):-len("-avx2")], color=color, threads=THREADS)
-        ctx.debug(32)       # at most the AVX2 instance
-        return ctx
     if backend.startswith("gles-"):
-        return gles.Context(w, h, numeric=backend[len("gles-"):], color=color, threads=THREADS)
+        build = backend[len("gles-"):].removesuffix("-avx2")
+        ctx = gles.Context(w, h, numeric=build, color=color, threads=THREADS)
+        if backend in AVX2_CAPPED:
+            ctx.debug(32)       # at most the AVX2 instance
+        return ctx
     return mesa.MesaContext(w, h, driver=backend, color=color)
 
 
