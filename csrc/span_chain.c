@@ -89,7 +89,7 @@ typedef struct ChainStages {
     SpanStage fog, fog_const, alpha;
     SpanStage write, write_rgba8, write_rgba8_alpha, write_rgba8_add, write_rgba8_logic, write_rgba8_masked;
     SpanStage write_565, write_565_alpha;
-    SpanStage fog_write_rgba8;      /* the fixed build's AVX2 instance, for AVX-512 CPUs */
+    SpanStage fog_write_rgba8, fog_write_565;  /* the fixed build's AVX2 instance, for AVX-512 CPUs */
     SpanStage rect_source;
     SpanStage color_dot3_modulate;  /* float and double builds, AVX2 */
     SpanStage coords[GLES_MAX_TEXTURE_UNITS], coords_rect[GLES_MAX_TEXTURE_UNITS];
@@ -660,7 +660,10 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     const int fog_write = ctx->fog && !rect && cs->fog_write_rgba8 && ctx_simd(ctx) >= SIMD_AVX512
                        && !ctx->alpha_test && !(tests && !early) && !no_color && plain && bk == 0
                        && !ctx->color_logic_op;
-    if (ctx->fog && !fog_write)
+    const int fog_write_565 = ctx->fog && !rect && cs->fog_write_565 && ctx_simd(ctx) >= SIMD_AVX512
+                           && !ctx->alpha_test && !(tests && !early) && !no_color && plain565 && bk == 0
+                           && !ctx->color_logic_op;
+    if (ctx->fog && !fog_write && !fog_write_565)
         s[n++] = rect ? cs->fog_const : cs->fog;
     if (ctx->alpha_test)
         s[n++] = cs->alpha;
@@ -673,6 +676,8 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
         ;
     else if (fog_write)
         s[n++] = cs->fog_write_rgba8;
+    else if (fog_write_565)
+        s[n++] = cs->fog_write_565;
     else if (plain && bk == 0 && !ctx->color_logic_op)
         s[n++] = cs->write_rgba8;
     else if (plain && bk == 1)

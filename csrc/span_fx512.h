@@ -633,6 +633,51 @@ static __attribute__((noinline)) int fx512_fog_write_rgba8(const NUM a[3], const
     }
     return j;
 }
+/* fx512_fog of fragments 0..n-1 (eight at a time) and stage_write_565's
+** pack565 of the result in the same pass (v4_pack565's operations lane by
+** lane): each colour channel taken to 5, 6 and 5 bits, dithered by the
+** threshold t_row[(x0 + k[j]) & 3] as (min(max(v, 0), 2^30) top + t) >> 30,
+** or without dither as min(max(v, 0) >> (30 - bits), top); the three
+** packed into the words dst[k[j]] (one store for eight neighbouring
+** pixels); the colours are not stored back. Returns the fragments done (n
+** rounded down to eight) */
+static __attribute__((noinline)) int fx512_fog_write_565(const NUM a[3], const WGT (*p)[3], const FRAGV (*c)[4],
+                                                         int n, const FRAGV fc[3], uint16_t *dst, const uint8_t *k,
+                                                         int x0, int dither, const FRAGV t_row[4])
+{
+    const __m512i av[3] = { _mm512_set1_epi64(a[0]), _mm512_set1_epi64(a[1]), _mm512_set1_epi64(a[2]) };
+    const __m512i fcv[3] = { _mm512_set1_epi64(fc[0]), _mm512_set1_epi64(fc[1]), _mm512_set1_epi64(fc[2]) };
+    const __m512i zero = _mm512_setzero_si512(), one = _mm512_set1_epi64(FRAG_ONE);
+    const __m512i t4 = _mm512_setr_epi64(t_row[0], t_row[1], t_row[2], t_row[3], t_row[0], t_row[1], t_row[2],
+                                         t_row[3]);
+    const int bits[3] = { 5, 6, 5 }, shift[3] = { 11, 5, 0 };
+    int j = 0;
+    for (; j + 8 <= n; j += 8) {
+        __m512i ch[4], word = zero;
+        fx512_fog8(av, fcv, &p[j], &c[j], ch);
+        const __m512i x = _mm512_add_epi64(_mm512_cvtepu8_epi64(_mm_loadl_epi64((const __m128i *)(const void *)&k[j])),
+                                           _mm512_set1_epi64(x0));
+        const __m512i t = _mm512_permutexvar_epi64(x, t4);     /* (the index's low three bits; t4 repeats) */
+        for (int i = 0; i < 3; i++) {
+            const __m512i top = _mm512_set1_epi64((1 << bits[i]) - 1);
+            const __m512i v = _mm512_max_epi64(ch[i], zero);
+            const __m512i r = dither
+                ? _mm512_srli_epi64(_mm512_add_epi64(_mm512_mul_epu32(_mm512_min_epi64(v, one), top), t), 30)
+                : _mm512_min_epi64(_mm512_srli_epi64(v, 30 - bits[i]), top);
+            word = _mm512_or_si512(word, _mm512_slli_epi64(r, shift[i]));
+        }
+        const __m128i w16 = _mm512_cvtepi64_epi16(word);
+        if (k[j + 7] == k[j] + 7) {
+            _mm_storeu_si128((__m128i *)(void *)&dst[k[j]], w16);
+        } else {
+            uint16_t w[8];
+            _mm_storeu_si128((__m128i *)(void *)w, w16);
+            for (int i = 0; i < 8; i++)
+                dst[k[j + i]] = w[i];
+        }
+    }
+    return j;
+}
 /* }==================================================================== */
 
 #undef FX512_INLINE

@@ -1490,6 +1490,35 @@ static void STAGE(stage_write_565)(GlesContext *ctx, const TriSetup *t, SpanBuf 
     }
 }
 
+#if CHAIN_SIMD && SIMD_AVX512_FX
+/* stage_fog then stage_write_565 (no blend, red, green and blue written) in
+** one pass of eight lanes where stage_fog's lanes take the triangle and
+** AVX-512 runs (fx512_fog_write_565), the last fragments by the stages'
+** code; else the two stages */
+static void STAGE(stage_fog_write_565)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    const NUM a[3] = { t->v[0]->fog, t->v[1]->fog, t->v[2]->fog };
+    FRAGV fc[3];
+    fragment_fog_color(ctx, fc);
+    if (ctx_simd(ctx) < SIMD_AVX512 || !STAGE(fog_in_lanes)(ctx, a, fc)) {
+        STAGE(stage_fog)(ctx, t, b);
+        STAGE(stage_write_565)(ctx, t, b);
+        return;
+    }
+    uint16_t *dst = chunk_color(ctx, b, 1);
+    const int dither = ctx->dither, n = b->n;
+    FRAGV t_row[4];
+    dither_row(b, dither, t_row);
+    for (int j = fx512_fog_write_565(a, (const WGT (*)[3])b->p, (const FRAGV (*)[4])b->c, n, fc, dst, b->k, b->x0,
+                                     dither, t_row);
+         j < n; j++) {
+        const WGT *p = b->p[j];
+        STAGE(chunk_fog)(b->c[j], frag_clamp01(frag_lerp3(a[0], a[1], a[2], p[0], p[1], p[2])), fc);
+        dst[b->k[j]] = (uint16_t)v4_pack565(v4_load(b->c[j]), dither, t_row[(b->x0 + b->k[j]) & 3]);
+    }
+}
+#endif
+
 /* RGB565, red, green and blue written, SRC_ALPHA, ONE_MINUS_SRC_ALPHA with
 ** FUNC_ADD (fragment_blend's arithmetic for those factors) */
 static void STAGE(stage_write_565_alpha)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
@@ -1870,6 +1899,7 @@ static const ChainStages STAGE(chain_stages) = {
     .write_565_alpha = STAGE(stage_write_565_alpha),
 #if CHAIN_SIMD && SIMD_AVX512_FX
     .fog_write_rgba8 = STAGE(stage_fog_write_rgba8),
+    .fog_write_565 = STAGE(stage_fog_write_565),
 #endif
 #if CHAIN_SIMD && NUM_IS_FIXED
     .fused = { .modulate_write = STAGE(stage_modulate_write), .sample_write = STAGE(stage_sample_write),
