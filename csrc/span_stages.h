@@ -1307,17 +1307,26 @@ static void STAGE(stage_write_rgba8)(GlesContext *ctx, const TriSetup *t, SpanBu
 }
 
 #if CHAIN_SIMD && SIMD_AVX512_FX
+/* a fused fog-and-write stage's inputs: the triangle's per-vertex fog
+** factors a and the fog colour fc; 1 where the fused pass takes them
+** (AVX-512 runs and stage_fog's lanes take the triangle) */
+static inline int STAGE(fog_write_lanes)(GlesContext *ctx, const TriSetup *t, NUM a[3], FRAGV fc[3])
+{
+    for (int i = 0; i < 3; i++)
+        a[i] = t->v[i]->fog;
+    fragment_fog_color(ctx, fc);
+    return ctx_simd(ctx) >= SIMD_AVX512 && STAGE(fog_in_lanes)(ctx, a, fc);
+}
+
 /* stage_fog then stage_write_rgba8 (no blend, every channel written) in
-** one pass of eight lanes where stage_fog's lanes take the triangle and
-** AVX-512 runs (fx512_fog_write_rgba8: the fogged colour goes straight to
-** the bytes), the last fragments by the stages' scalar code; else the two
-** stages */
+** one pass of eight lanes where STAGE(fog_write_lanes) holds
+** (fx512_fog_write_rgba8: the fogged colour goes straight to the bytes),
+** the last fragments by the stages' scalar code; else the two stages */
 static void STAGE(stage_fog_write_rgba8)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
-    const NUM a[3] = { t->v[0]->fog, t->v[1]->fog, t->v[2]->fog };
+    NUM a[3];
     FRAGV fc[3];
-    fragment_fog_color(ctx, fc);
-    if (ctx_simd(ctx) < SIMD_AVX512 || !STAGE(fog_in_lanes)(ctx, a, fc)) {
+    if (!STAGE(fog_write_lanes)(ctx, t, a, fc)) {
         STAGE(stage_fog)(ctx, t, b);
         STAGE(write_rgba8)(ctx, b, 0);
         return;
@@ -1492,15 +1501,14 @@ static void STAGE(stage_write_565)(GlesContext *ctx, const TriSetup *t, SpanBuf 
 
 #if CHAIN_SIMD && SIMD_AVX512_FX
 /* stage_fog then stage_write_565 (no blend, red, green and blue written) in
-** one pass of eight lanes where stage_fog's lanes take the triangle and
-** AVX-512 runs (fx512_fog_write_565), the last fragments by the stages'
-** code; else the two stages */
+** one pass of eight lanes where STAGE(fog_write_lanes) holds
+** (fx512_fog_write_565), the last fragments by the stages' code; else the
+** two stages */
 static void STAGE(stage_fog_write_565)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
-    const NUM a[3] = { t->v[0]->fog, t->v[1]->fog, t->v[2]->fog };
+    NUM a[3];
     FRAGV fc[3];
-    fragment_fog_color(ctx, fc);
-    if (ctx_simd(ctx) < SIMD_AVX512 || !STAGE(fog_in_lanes)(ctx, a, fc)) {
+    if (!STAGE(fog_write_lanes)(ctx, t, a, fc)) {
         STAGE(stage_fog)(ctx, t, b);
         STAGE(stage_write_565)(ctx, t, b);
         return;
