@@ -156,6 +156,19 @@ AVX2_INLINE void avx2_store_words8(uint32_t *dst, const uint8_t *k, int run, __m
         dst[k[i]] = words[i];
 }
 
+/* the same for eight 16-bit words w (RGB565) */
+AVX2_INLINE void avx2_store_halves8(uint16_t *dst, const uint8_t *k, int run, __m128i w)
+{
+    if (run) {
+        _mm_storeu_si128((__m128i *)(void *)&dst[k[0]], w);
+        return;
+    }
+    uint16_t halves[8];
+    _mm_storeu_si128((__m128i *)(void *)halves, w);
+    for (int i = 0; i < 8; i++)
+        dst[k[i]] = halves[i];
+}
+
 /* the same words by avx2_row_texels8 where `rows` asks for it and it
 ** applies, else, where no lane's pair wraps, by gathers of the pairs as
 ** 64-bit words (half the elements), else by four gathers of eight (the

@@ -655,14 +655,12 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
                 if (units & (1u << u))
                     s[n++] = modulate && u == first ? cs->color_modulate[u] : cs->env[u];
     }
-    /* the fog and the plain write as one stage where the instance has it
-    ** and AVX-512 runs (nothing between them) */
-    const int fog_write = ctx->fog && !rect && cs->fog_write_rgba8 && ctx_simd(ctx) >= SIMD_AVX512
-                       && !ctx->alpha_test && !(tests && !early) && !no_color && plain && bk == 0
-                       && !ctx->color_logic_op;
-    const int fog_write_565 = ctx->fog && !rect && cs->fog_write_565 && ctx_simd(ctx) >= SIMD_AVX512
-                           && !ctx->alpha_test && !(tests && !early) && !no_color && plain565 && bk == 0
-                           && !ctx->color_logic_op;
+    /* the fog and the plain write (RGBA8888 or RGB565) as one stage where
+    ** the instance has it and AVX-512 runs (nothing between them) */
+    const int fog_then_write = ctx->fog && !rect && ctx_simd(ctx) >= SIMD_AVX512 && !ctx->alpha_test
+                            && !(tests && !early) && !no_color && bk == 0 && !ctx->color_logic_op;
+    const int fog_write = fog_then_write && plain && cs->fog_write_rgba8;
+    const int fog_write_565 = fog_then_write && plain565 && cs->fog_write_565;
     if (ctx->fog && !fog_write && !fog_write_565)
         s[n++] = rect ? cs->fog_const : cs->fog;
     if (ctx->alpha_test)

@@ -666,15 +666,7 @@ static __attribute__((noinline)) int fx512_fog_write_565(const NUM a[3], const W
                 : _mm512_min_epi64(_mm512_srli_epi64(v, 30 - bits[i]), top);
             word = _mm512_or_si512(word, _mm512_slli_epi64(r, shift[i]));
         }
-        const __m128i w16 = _mm512_cvtepi64_epi16(word);
-        if (k[j + 7] == k[j] + 7) {
-            _mm_storeu_si128((__m128i *)(void *)&dst[k[j]], w16);
-        } else {
-            uint16_t w[8];
-            _mm_storeu_si128((__m128i *)(void *)w, w16);
-            for (int i = 0; i < 8; i++)
-                dst[k[j + i]] = w[i];
-        }
+        avx2_store_halves8(dst, &k[j], k[j + 7] == k[j] + 7, _mm512_cvtepi64_epi16(word));
     }
     return j;
 }
