@@ -307,15 +307,24 @@ static void STAGE(stage_persp_lod)(GlesContext *ctx, const TriSetup *t, SpanBuf 
     NUM sv[3], tv[3];
     span_unit_st(t, done == 0 ? u : -1, sv, tv);
     TexCoord *const tc = b->tc, *const tx = b->tx, *const ty = b->ty;
+    /* a tail past the last whole group padded with copies of the last slot
+    ** (the slots past n are free, and nothing reads what lands there): one
+    ** more group costs less than the AVX2 groups and the scalar slots */
+    _Static_assert(SPAN_CHUNK % 8 == 0, "a padded group stays within the chunk");
+    const int np = n > 0 ? avx2_modwrite_pad(ctx && ctx_simd(ctx) >= SIMD_AVX512 ? 8 : 4, n, b->k, b->p, 0, NULL,
+                                             NULL, 0)
+                         : 0;
 #if SIMD_AVX512_FX || SIMD_AVX512_INSTANCE
     /* groups of eight by AVX-512 where it runs, as far as they go (the
     ** fixed build's span_fx512.h, the double build's span_avx512.h) */
     if (ctx && ctx_simd(ctx) >= SIMD_AVX512) {
+        b->n = np;      /* (what the kernels read) */
 #if SIMD_AVX512_FX
         j = fx512_persp_lod(&ws, tan, t->ea, b, done == 0, sv, tv);
 #else
         j = d8_persp_lod(&ws, tan, t->ea, b, done == 0, sv, tv);
 #endif
+        b->n = n;
         if (done == 0)
             done = j;
     }
@@ -327,7 +336,7 @@ static void STAGE(stage_persp_lod)(GlesContext *ctx, const TriSetup *t, SpanBuf 
     __m256i dens[SPAN_CHUNK / 4];
     const int simd_from = j;    /* the slots past the AVX-512 groups */
 #endif
-    for (; j + 4 <= n; j += 4) {
+    for (; j + 4 <= np; j += 4) {
         __m256i e[3];
         avx2_edges4(&ed, &b->k[j], e);
 #if NUM_IS_FIXED
@@ -370,7 +379,7 @@ static void STAGE(stage_persp_lod)(GlesContext *ctx, const TriSetup *t, SpanBuf 
 #if !NUM_IS_FIXED
     if (done > 0) {
         b->lod_unit = u;
-        b->lod_done = done;
+        b->lod_done = done < n ? done : n;
     }
 #endif
 #if NUM_IS_FIXED
@@ -397,7 +406,7 @@ static void STAGE(stage_persp_lod)(GlesContext *ctx, const TriSetup *t, SpanBuf 
     }
     if (done > 0) {
         b->lod_unit = u;
-        b->lod_done = done;
+        b->lod_done = done < n ? done : n;
     }
 #endif
 #endif

@@ -645,8 +645,13 @@ static int lod_block(int simd, const Texture *t, int n, const TexCoord *c, const
         lod_key(0, 0, t->mag_filter), lod_key(0, 0, lod_min_filter(minf)), LOD_KEY_TWO,
     };
 #if SIMD_AVX512_FX
-    if (simd >= SIMD_AVX512)    /* eight at a time, the rest as below */
+    if (simd >= SIMD_AVX512) {  /* eight at a time, the last eight again */
         j = fx512_lod_choose(&p, n, c, dx, dy, key + 1, frac);
+        if (j < n && n >= 8) {
+            fx512_lod_choose(&p, 8, c + n - 8, dx + n - 8, dy + n - 8, key + 1 + n - 8, frac + n - 8);
+            j = n;
+        }
+    }
 #endif
     for (; j + 4 <= n; j += 4)
         avx2_lod_choose4(&p, c + j, dx + j, dy + j, key + 1 + j, frac + j);
@@ -728,6 +733,12 @@ static int lod_block(int simd, const Texture *t, int n, const TexCoord *c, const
                                    frac + j + mixed, out + (size_t)(j + mixed) * stride, stride, ws == GL_REPEAT,
                                    wt == GL_REPEAT);
             mixed = m4;
+        }
+        /* the last four again (the same texels where they overlap) */
+        if (two && m4 && mixed < e - j && e - j >= 4) {
+            avx2_sample_linear_mix(&t->level[level], &t->level[level + 1], 4, c + e - 4, frac + e - 4,
+                                   out + (size_t)(e - 4) * stride, stride, ws == GL_REPEAT, wt == GL_REPEAT);
+            mixed = e - j;
         }
 #endif
         for (int k = 0; k <= two; k++) {
