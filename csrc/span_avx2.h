@@ -2009,7 +2009,7 @@ static inline void modwrite_alpha_setup(ModWriteAlpha *t, unsigned int func, uin
 ** copies of the last one, in the free slots past n; returns the padded
 ** count. A copy computes the last fragment's word again from the same
 ** stored word, in the same group, so writing it writes that word again. */
-static inline int avx2_modwrite_pad(int group, int n, uint8_t *k, WGT (*p)[3], int smooth, TexCoord *tc, FRAGV *ct,
+static inline int avx2_pad_group(int group, int n, uint8_t *k, WGT (*p)[3], int smooth, TexCoord *tc, FRAGV *ct,
                                     size_t stride)
 {
     /* each copy from the last live slot, not the slot just written: no

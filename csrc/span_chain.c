@@ -142,7 +142,7 @@ static int debug_group(DebugGroup *g, int n, const uint8_t *k, const WGT *p, con
     memcpy(g->k, k, (size_t)n);
     memcpy(g->p, p, (size_t)n * sizeof g->p[0]);
     memcpy(g->ct, ct, (size_t)n * sizeof g->ct[0]);
-    return pad && n > 0 ? avx2_modwrite_pad(group, n, g->k, g->p, smooth, NULL, g->ct[0], 4) : n;
+    return pad && n > 0 ? avx2_pad_group(group, n, g->k, g->p, smooth, NULL, g->ct[0], 4) : n;
 }
 #endif
 #define STAGE(name) name##_avx2

@@ -311,9 +311,8 @@ static void STAGE(stage_persp_lod)(GlesContext *ctx, const TriSetup *t, SpanBuf 
     ** (the slots past n are free, and nothing reads what lands there): one
     ** more group costs less than the AVX2 groups and the scalar slots */
     _Static_assert(SPAN_CHUNK % 8 == 0, "a padded group stays within the chunk");
-    const int np = n > 0 ? avx2_modwrite_pad(ctx && ctx_simd(ctx) >= SIMD_AVX512 ? 8 : 4, n, b->k, b->p, 0, NULL,
-                                             NULL, 0)
-                         : 0;
+    const int group = ctx && ctx_simd(ctx) >= SIMD_AVX512 ? 8 : 4;
+    const int np = n > 0 ? avx2_pad_group(group, n, b->k, b->p, 0, NULL, NULL, 0) : 0;
 #if SIMD_AVX512_FX || SIMD_AVX512_INSTANCE
     /* groups of eight by AVX-512 where it runs, as far as they go (the
     ** fixed build's span_fx512.h, the double build's span_avx512.h) */
@@ -1728,7 +1727,7 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
     if (src == 1 && !modwrite_overlaps(m->kind, m->alpha.test, rgb565, n, 8)) {
         /* the tail padded to a group of eight (the slots past n are free) */
         _Static_assert(SPAN_CHUNK % 8 == 0, "a padded group stays within the chunk");
-        n = avx2_modwrite_pad(8, n, b->k, b->p, m->smooth, b->tc, dot3 && !sampled0 ? b->ct[0][u0] : NULL, stride);
+        n = avx2_pad_group(8, n, b->k, b->p, m->smooth, b->tc, dot3 && !sampled0 ? b->ct[0][u0] : NULL, stride);
         for (int j = b->n; j < n && sampled0; j++)
             b->tx[j] = b->tx[b->n - 1];
     }
@@ -1826,7 +1825,7 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
     if (!modwrite_overlaps(m->kind, m->alpha.test, rgb565, n, F8_N)) {
         /* the tail padded to a whole group (the slots past n are free) */
         _Static_assert(SPAN_CHUNK % 8 == 0, "a padded group stays within the chunk");
-        n = avx2_modwrite_pad(F8_N, b->n, b->k, b->p, smooth && !lanes, src == 1 && !lanes ? b->tc : NULL,
+        n = avx2_pad_group(F8_N, b->n, b->k, b->p, smooth && !lanes, src == 1 && !lanes ? b->tc : NULL,
                               src == 0 ? b->ct[0][u] : NULL, stride);
         for (int j = b->n; j < n && dot3 && !lanes; j++) {
             if (sampled0)
