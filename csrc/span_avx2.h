@@ -2007,10 +2007,11 @@ static inline void modwrite_alpha_setup(ModWriteAlpha *t, unsigned int func, uin
 /* pads fragments 0..n-1 (offsets k, weights p when smooth, coordinates tc
 ** and texels ct + j stride where given) to a whole group of `group` with
 ** copies of the last one, in the free slots past n; returns the padded
-** count. A copy computes the last fragment's word again from the same
-** stored word, in the same group, so writing it writes that word again. */
+** count. A copy computes the last fragment's values again; in a writer,
+** its word from the same stored word, in the same group, so writing it
+** writes that word again. */
 static inline int avx2_pad_group(int group, int n, uint8_t *k, WGT (*p)[3], int smooth, TexCoord *tc, FRAGV *ct,
-                                    size_t stride)
+                                 size_t stride)
 {
     /* each copy from the last live slot, not the slot just written: no
     ** store waits for the one before it */
