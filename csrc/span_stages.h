@@ -380,12 +380,6 @@ static void STAGE(stage_persp_lod)(GlesContext *ctx, const TriSetup *t, SpanBuf 
         v4_store_wgt4(o, &py[j]);
 #endif
     }
-#if !NUM_IS_FIXED
-    if (done > 0) {
-        b->lod_unit = u;
-        b->lod_done = done < n ? done : n;
-    }
-#endif
 #if NUM_IS_FIXED
     for (int i = simd_from; i + 4 <= j; i += 4) {
         __m256i l[3], o[2][3];
@@ -408,11 +402,11 @@ static void STAGE(stage_persp_lod)(GlesContext *ctx, const TriSetup *t, SpanBuf 
             avx2_store_wgt4(o[1], &py[i]);
         }
     }
-    if (done > 0) {
+#endif
+    if (done > 0) {     /* (a padded group's slots past n are not the chunk's) */
         b->lod_unit = u;
         b->lod_done = done < n ? done : n;
     }
-#endif
 #endif
     for (; j < n; j++)
         STAGE(persp_lod1)(t, b, j);
