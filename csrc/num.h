@@ -669,7 +669,7 @@ static inline DEPTHV depthv_from_clip(NUM z, NUM w, NUM n, NUM f, uint32_t maxva
 ** kept as a 30-bit mantissa and a shift, and products are aligned to the
 ** largest: no 16.16 reciprocal ever underflows near the far plane. */
 typedef struct WgtSetup {
-    int eshift;          /* e_i >> eshift fits in 31 bits */
+    int eshift;          /* e_i >> eshift fits in 31 bits; at most 32 (area2 < 2^63) */
     int64_t lin_recip;   /* 2^61 / (area >> eshift) */
     int64_t mant[3];     /* 1/w_i ~ mant_i * 2^-qshift_i (relative) */
     int qshift[3];

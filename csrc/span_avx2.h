@@ -21,19 +21,13 @@
 
 #define AVX2_INLINE static inline __attribute__((always_inline))
 
-/* int64 lanes of magnitude below 2^51 as doubles, and integral doubles of
-** magnitude below 2^51 as int64 (exact: the bias 2^52 + 2^51 puts the
-** integer in the mantissa's low bits) */
+/* int64 lanes of magnitude below 2^51 as doubles (exact: the bias 2^52 +
+** 2^51 puts the integer in the mantissa's low bits) */
 #define AVX2_I64_BIAS 6755399441055744.0
 AVX2_INLINE __m256d avx2_i64_to_pd(__m256i v)
 {
     const __m256d magic = _mm256_set1_pd(AVX2_I64_BIAS);
     return _mm256_sub_pd(_mm256_castsi256_pd(_mm256_add_epi64(v, _mm256_castpd_si256(magic))), magic);
-}
-AVX2_INLINE __m256i avx2_pd_to_i64(__m256d v)
-{
-    const __m256d magic = _mm256_set1_pd(AVX2_I64_BIAS);
-    return _mm256_sub_epi64(_mm256_castpd_si256(_mm256_add_pd(v, magic)), _mm256_castpd_si256(magic));
 }
 
 /* the edge values e0 + ea k at slots' offsets k, four at a time: k ea is
@@ -43,6 +37,7 @@ AVX2_INLINE __m256i avx2_pd_to_i64(__m256d v)
 ** registers (stores to the span buffer could otherwise alias t and b). */
 typedef struct Edges4 {
     __m256i e0[3], lo[3], hi[3];
+    int narrow;     /* every ea_i in int32 range: k ea is one vpmuldq (k < 2^8) */
 } Edges4;
 
 AVX2_INLINE void avx2_edges4_setup(const int64_t e0[3], const int64_t ea[3], Edges4 *ed)
@@ -52,6 +47,9 @@ AVX2_INLINE void avx2_edges4_setup(const int64_t e0[3], const int64_t ea[3], Edg
         ed->lo[i] = _mm256_set1_epi64x(ea[i]);
         ed->hi[i] = _mm256_set1_epi64x((int64_t)((uint64_t)ea[i] >> 32));
     }
+    ed->narrow = 1;
+    for (int i = 0; i < 3; i++)
+        ed->narrow &= ea[i] >= INT32_MIN && ea[i] <= INT32_MAX;
 }
 
 AVX2_INLINE void avx2_edges4(const Edges4 *ed, const uint8_t *k, __m256i ev[3])
@@ -59,6 +57,11 @@ AVX2_INLINE void avx2_edges4(const Edges4 *ed, const uint8_t *k, __m256i ev[3])
     uint32_t k4;
     memcpy(&k4, k, sizeof k4);
     const __m256i kv = _mm256_cvtepu8_epi64(_mm_cvtsi32_si128((int)k4));
+    if (ed->narrow) {
+        for (int i = 0; i < 3; i++)
+            ev[i] = _mm256_add_epi64(ed->e0[i], _mm256_mul_epi32(kv, ed->lo[i]));
+        return;
+    }
     for (int i = 0; i < 3; i++)
         ev[i] = _mm256_add_epi64(ed->e0[i], _mm256_add_epi64(_mm256_mul_epu32(kv, ed->lo[i]),
                                                               _mm256_slli_epi64(_mm256_mul_epu32(kv, ed->hi[i]), 32)));
@@ -308,8 +311,11 @@ AVX2_INLINE __m256i avx2_round_shift(__m256i acc, int shift)
 AVX2_INLINE void avx2_store_st4(__m256i s, __m256i t, TexCoord *out)
 {
     const __m256i lo = _mm256_unpacklo_epi64(s, t), hi = _mm256_unpackhi_epi64(s, t);   /* s0 t0 s2 t2, s1 t1 s3 t3 */
-    _mm256_storeu_si256((__m256i *)(void *)out, _mm256_permute2x128_si256(lo, hi, 0x20));
-    _mm256_storeu_si256((__m256i *)(void *)(out + 2), _mm256_permute2x128_si256(lo, hi, 0x31));
+    /* a 128-bit store per fragment: the halves need no lane-crossing shuffle */
+    _mm_storeu_si128((__m128i *)(void *)out, _mm256_castsi256_si128(lo));
+    _mm_storeu_si128((__m128i *)(void *)(out + 1), _mm256_castsi256_si128(hi));
+    _mm_storeu_si128((__m128i *)(void *)(out + 2), _mm256_extracti128_si256(lo, 1));
+    _mm_storeu_si128((__m128i *)(void *)(out + 3), _mm256_extracti128_si256(hi, 1));
 }
 
 /* }==================================================================== */
@@ -735,10 +741,18 @@ AVX2_INLINE void avx2_lod_choose4(const Avx2LodParams *p, const TexCoord *c, con
 ** values) stored as out[lane][0..2] */
 AVX2_INLINE void avx2_store_wgt4(const __m256i l[3], WGT (*out)[3])
 {
-    const __m256i lo = _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7);
-    avx2_store3x4_32(_mm256_castsi256_si128(_mm256_permutevar8x32_epi32(l[0], lo)),
-                     _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(l[1], lo)),
-                     _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(l[2], lo)), out);
+    /* a0 b0 a1 b1 | a2 b2 a3 b3 (the lanes' high dwords are not read) */
+    const __m256i ab = _mm256_blend_epi32(l[0], _mm256_slli_epi64(l[1], 32), 0xAA);
+    /* c2 . c0 c3 . c1 . .: c0 and c1 where the first eight take them, c2
+    ** and c3 where the last four do */
+    const __m256i c = _mm256_permutevar8x32_epi32(l[2], _mm256_setr_epi32(4, 0, 0, 6, 0, 2, 0, 0));
+    const __m256i first = _mm256_blend_epi32(_mm256_permutevar8x32_epi32(ab, _mm256_setr_epi32(0, 1, 0, 2, 3, 0, 4, 5)),
+                                             c, 0x24);
+    const __m128i last = _mm_blend_epi32(_mm256_castsi256_si128(_mm256_permutevar8x32_epi32(ab, _mm256_setr_epi32(0, 6, 7, 0, 0, 0, 0, 0))),
+                                         _mm256_castsi256_si128(c), 0x9);
+    int32_t *o = &out[0][0];
+    _mm256_storeu_si256((__m256i *)(void *)o, first);
+    _mm_storeu_si128((__m128i *)(void *)(o + 8), last);
 }
 
 /* wgt_persp of four fragments of a triangle that is not affine, edge values
@@ -757,36 +771,36 @@ AVX2_INLINE void avx2_store_wgt4(const __m256i l[3], WGT (*out)[3])
 AVX2_INLINE int avx2_persp4_den(const WgtSetup *s, const __m256i e[3], __m256i l[3], __m256i *den_out)
 {
     const __m128i esh = _mm_cvtsi32_si128(s->eshift);
-    const __m256i high = _mm256_set1_epi64x(~(int64_t)0x7FFFFFFF);
-    __m256i n[3], bad = _mm256_setzero_si256();
+    __m256i n[3], any = _mm256_setzero_si256();
     for (int i = 0; i < 3; i++) {
-        const __m256i ev = e[i];
-        const __m256i ei = _mm256_srl_epi64(ev, esh);
-        /* e < 0 (its top bit) or e >> eshift >= 2^31 */
-        bad = _mm256_or_si256(bad, _mm256_or_si256(_mm256_and_si256(ev, _mm256_set1_epi64x(INT64_MIN)),
-                                                   _mm256_and_si256(ei, high)));
+        const __m256i ei = _mm256_srl_epi64(e[i], esh);
+        any = _mm256_or_si256(any, ei);
         /* qshift >= 64 shifts everything out, as the scalar code's 0 for >= 63
         ** does (a product below 2^61 shifted by 63 is 0 too) */
         n[i] = _mm256_srl_epi64(_mm256_mul_epu32(ei, _mm256_set1_epi64x(s->mant[i])),
                                 _mm_cvtsi32_si128(s->qshift[i] < 64 ? s->qshift[i] : 64));
     }
-    if (!_mm256_testz_si256(bad, bad))
+    /* e >> eshift >= 2^31, or e < 0: eshift <= 32 (wgt_setup), so the
+    ** logical shift of a negative e keeps a bit at 31 or above */
+    if (!_mm256_testz_si256(any, _mm256_set1_epi64x(~(int64_t)0x7FFFFFFF)))
         return 0;
     __m256i den = _mm256_add_epi64(_mm256_add_epi64(n[0], n[1]), n[2]);
     /* sh = max(bit length of den - 32, 0) */
     const __m256i hi_bits = _mm256_srli_epi64(_mm256_castpd_si256(avx2_i64_to_pd(_mm256_srli_epi64(den, 32))), 52);
-    __m256i sh = _mm256_sub_epi64(hi_bits, _mm256_set1_epi64x(1022));
-    sh = _mm256_andnot_si256(avx2_negative(sh), sh);
+    /* (a negative difference, small, is a lane of two negative dwords: the
+    ** 32-bit max takes both to 0) */
+    const __m256i sh = _mm256_max_epi32(_mm256_sub_epi64(hi_bits, _mm256_set1_epi64x(1022)), _mm256_setzero_si256());
     den = _mm256_srlv_epi64(den, sh);
     const __m256i n1 = _mm256_srlv_epi64(n[1], sh), n2 = _mm256_srlv_epi64(n[2], sh);
     if (_mm256_movemask_pd(_mm256_castsi256_pd(_mm256_cmpgt_epi64(_mm256_set1_epi64x((int64_t)1 << 31), den))))
         return 0;
     const __m256i half = _mm256_srli_epi64(den, 1);
-    const __m256d qd = _mm256_round_pd(_mm256_div_pd(_mm256_add_pd(_mm256_set1_pd(4611686018427387904.0),
-                                                                   avx2_i64_to_pd(half)),
-                                                     avx2_i64_to_pd(den)),
-                                       _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
-    __m256i q = avx2_pd_to_i64(qd);
+    const __m256d qd = _mm256_div_pd(_mm256_add_pd(_mm256_set1_pd(4611686018427387904.0), avx2_i64_to_pd(half)),
+                                     avx2_i64_to_pd(den));
+    /* qd lies in (2^30, 2^31 + 1], so its truncation is below 2^31 but
+    ** where it is 2^31 (den = 2^31), which vcvttpd2dq gives as 0x80000000:
+    ** zero-extended, 2^31 too */
+    __m256i q = _mm256_cvtepu32_epi64(_mm256_cvttpd_epi32(qd));
     const __m256i r = _mm256_sub_epi64(_mm256_add_epi64(_mm256_set1_epi64x((int64_t)1 << 62), half),
                                        _mm256_mul_epu32(q, den));
     /* r < 0: one too many; r >= den: one too few */
@@ -807,8 +821,25 @@ AVX2_INLINE int avx2_persp4(const WgtSetup *s, const __m256i e[3], __m256i l[3])
     return avx2_persp4_den(s, e, l, NULL);
 }
 
-/* wgt_tangent along both steps g[0], g[1] of four fragments of a triangle
-** that is not affine: their weights l[1], l[2] (lanes in [0, 2^30 + 1]) and
+/* a triangle's WgtTangent pair as the lanes avx2_tangents4 reads (set up
+** outside its loop: broadcasts the loop would otherwise form again) */
+typedef struct Avx2Tangents {
+    __m256i ashift, asum[2], a[2][2];    /* a[d][i - 1] = a_i + 2^32 of step d */
+} Avx2Tangents;
+
+AVX2_INLINE void avx2_tangents_setup(const WgtTangent g[2], Avx2Tangents *c)
+{
+    c->ashift = _mm256_set1_epi64x(g[0].ashift);
+    for (int d = 0; d < 2; d++) {
+        c->asum[d] = _mm256_set1_epi64x(g[d].asum);
+        for (int i = 1; i < 3; i++)
+            c->a[d][i - 1] = _mm256_set1_epi64x((int64_t)g[d].a[i] + ((int64_t)1 << 32));
+    }
+}
+
+/* wgt_tangent along both steps (g: their Avx2Tangents) of four fragments
+** of a triangle that is not affine: their weights l[1], l[2] (lanes in
+** [0, 2^30 + 1]) and
 ** WgtDen lanes (half in the low 32 bits, sh >= 0 in the high ones,
 ** avx2_persp4_den's), the tangent weights as lanes out[k][i] whose low 32
 ** bits are the WGT values; 0 (nothing written) where a lane has sh <
@@ -817,10 +848,10 @@ AVX2_INLINE int avx2_persp4(const WgtSetup *s, const __m256i e[3], __m256i l[3])
 ** dword, and with kn = max(-k, 0) both of wgt_tangent's quotients are
 ** floor((m half + 2^(30 - kn)) / 2^(31 - kn)): |m half| < 2^61 (vpmuldq),
 ** and the floor is a logical shift of it plus 2^62, less 2^(62 - 31 + kn). */
-AVX2_INLINE int avx2_tangents4(const WgtTangent g[2], const __m256i l[3], __m256i den, __m256i out[2][3])
+AVX2_INLINE int avx2_tangents4(const Avx2Tangents *g, const __m256i l[3], __m256i den, __m256i out[2][3])
 {
     const __m256i one = _mm256_set1_epi64x(1);
-    const __m256i k = _mm256_sub_epi64(_mm256_srli_epi64(den, 32), _mm256_set1_epi64x(g[0].ashift));
+    const __m256i k = _mm256_sub_epi64(_mm256_srli_epi64(den, 32), g->ashift);
     if (_mm256_movemask_pd(_mm256_castsi256_pd(_mm256_cmpgt_epi64(_mm256_set1_epi64x(-30), k))))
         return 0;
     const __m256i neg = avx2_negative(k), kp = _mm256_andnot_si256(neg, k);
@@ -831,11 +862,10 @@ AVX2_INLINE int avx2_tangents4(const WgtTangent g[2], const __m256i l[3], __m256
     const __m256i bias29 = _mm256_set1_epi64x(((int64_t)1 << 62) + ((int64_t)1 << 29));
     const __m256i pb[3] = { l[0], _mm256_sub_epi64(l[1], unbias), _mm256_sub_epi64(l[2], unbias) };
     for (int d = 0; d < 2; d++) {
-        const __m256i asum = _mm256_set1_epi64x(g[d].asum);
         for (int i = 1; i < 3; i++) {
             /* n = (a_i + 2^32) - ((p_i asum + 2^62 + 2^29) >> 30) */
-            const __m256i n = _mm256_sub_epi64(_mm256_set1_epi64x((int64_t)g[d].a[i] + ((int64_t)1 << 32)),
-                                               _mm256_srli_epi64(_mm256_add_epi64(_mm256_mul_epi32(l[i], asum), bias29), 30));
+            const __m256i n = _mm256_sub_epi64(g->a[d][i - 1],
+                                               _mm256_srli_epi64(_mm256_add_epi64(_mm256_mul_epi32(l[i], g->asum[d]), bias29), 30));
             const __m256i m = _mm256_srav_epi32(n, kp);
             /* p_i + dp_i = (p_i - 2^(31 + kn)) + ((m half + 2^62 + 2^(30 - kn)) >> (31 - kn)) */
             __m256i o = _mm256_add_epi64(pb[i], _mm256_srlv_epi64(_mm256_add_epi64(_mm256_mul_epi32(m, den), bias), s));
@@ -1894,19 +1924,55 @@ AVX2_INLINE __m256i avx2_fog4(const NUM a[3], const WGT (*p)[3])
 ** [0, 2^30]) and the fog colour's channels as lanes fcv[0..2] (each in
 ** [0, 2^31)): the colours transposed to one register per channel, then
 ** frag_mul(f, frag_clamp01(c)) + frag_mul(1 - f, fc) per channel, whose
-** operands are in [0, 2^31) (avx2_mul_u is frag_mul there); the alphas
-** go back as they were */
-AVX2_INLINE void avx2_fog_mix4(FRAGV (*c)[4], __m256i f, const __m256i fcv[3])
+** operands are in [0, 2^31) (avx2_mul_u is frag_mul there), as one
+** register per channel ch[0..3] (the alphas as they were) */
+AVX2_INLINE void avx2_fog_channels4(const FRAGV (*c)[4], __m256i f, const __m256i fcv[3], __m256i ch[4])
 {
     const __m256i c0 = avx2_load4(c[0]), c1 = avx2_load4(c[1]), c2 = avx2_load4(c[2]), c3 = avx2_load4(c[3]);
     const __m256i t0 = _mm256_unpacklo_epi64(c0, c1), t1 = _mm256_unpackhi_epi64(c0, c1);   /* r0 r1 b0 b1, g0 g1 a0 a1 */
     const __m256i t2 = _mm256_unpacklo_epi64(c2, c3), t3 = _mm256_unpackhi_epi64(c2, c3);
-    __m256i ch[4] = { _mm256_permute2x128_si256(t0, t2, 0x20), _mm256_permute2x128_si256(t1, t3, 0x20),
-                      _mm256_permute2x128_si256(t0, t2, 0x31), _mm256_permute2x128_si256(t1, t3, 0x31) };
+    ch[0] = _mm256_permute2x128_si256(t0, t2, 0x20);
+    ch[1] = _mm256_permute2x128_si256(t1, t3, 0x20);
+    ch[2] = _mm256_permute2x128_si256(t0, t2, 0x31);
+    ch[3] = _mm256_permute2x128_si256(t1, t3, 0x31);
     const __m256i g = _mm256_sub_epi64(_mm256_set1_epi64x(FRAG_ONE), f);
     for (int i = 0; i < 3; i++)
         ch[i] = _mm256_add_epi64(avx2_mul_u(f, avx2_clamp01(ch[i])), avx2_mul_u(g, fcv[i]));
+}
+
+/* avx2_fog_channels4, stored back as the colours */
+AVX2_INLINE void avx2_fog_mix4(FRAGV (*c)[4], __m256i f, const __m256i fcv[3])
+{
+    __m256i ch[4];
+    avx2_fog_channels4((const FRAGV (*)[4])c, f, fcv, ch);
     avx2_store_transposed4(ch[0], ch[1], ch[2], ch[3], c[0], 4);
+}
+
+/* avx2_fog_mix4 of four fragments c[0..3] and write_rgba8's kind 0 of
+** the result in the same pass (fx512_fog_write_rgba8's operations lane by
+** lane): each channel (the fogged colour, and the alpha as it is) clamped
+** to [0, 2^30] and turned to a byte, (255 v + 2^29) >> 30, the four bytes
+** packed into the words dst[k[0..3]] (one store for four neighbouring
+** pixels); the colours are not stored back */
+AVX2_INLINE void avx2_fog_write_rgba8x4(const FRAGV (*c)[4], __m256i f, const __m256i fcv[3], uint32_t *dst,
+                                        const uint8_t *k)
+{
+    __m256i ch[4], word = _mm256_setzero_si256();
+    avx2_fog_channels4(c, f, fcv, ch);
+    for (int i = 0; i < 4; i++) {
+        const __m256i byte = _mm256_srli_epi64(_mm256_add_epi64(_mm256_mul_epu32(avx2_clamp01(ch[i]), _mm256_set1_epi64x(255)),
+                                                                _mm256_set1_epi64x((int64_t)1 << 29)), 30);
+        word = _mm256_or_si256(word, _mm256_slli_epi64(byte, 8 * i));
+    }
+    const __m128i w = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(word, _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6)));
+    if (k[3] == k[0] + 3) {
+        _mm_storeu_si128((__m128i *)(void *)&dst[k[0]], w);
+        return;
+    }
+    uint32_t words[4];
+    _mm_storeu_si128((__m128i *)(void *)words, w);
+    for (int i = 0; i < 4; i++)
+        dst[k[i]] = words[i];
 }
 
 /* fragment_alpha8 of the alphas of four fragments' colours c0..c3, as

@@ -89,7 +89,8 @@ typedef struct ChainStages {
     SpanStage fog, fog_const, alpha;
     SpanStage write, write_rgba8, write_rgba8_alpha, write_rgba8_add, write_rgba8_logic, write_rgba8_masked;
     SpanStage write_565, write_565_alpha;
-    SpanStage fog_write_rgba8, fog_write_565;  /* the fixed build's AVX2 instance, for AVX-512 CPUs */
+    SpanStage fog_write_rgba8;  /* the fixed build's AVX2 instance */
+    SpanStage fog_write_565;    /* the same, for AVX-512 CPUs */
     SpanStage rect_source;
     SpanStage color_dot3_modulate;  /* float and double builds, AVX2 */
     SpanStage coords[GLES_MAX_TEXTURE_UNITS], coords_rect[GLES_MAX_TEXTURE_UNITS];
@@ -163,7 +164,9 @@ static int debug_persp4_avx2(const WgtSetup *s, const WgtTangent *g, const int64
         ev[i] = _mm256_setr_epi64x(e[0][i], e[1][i], e[2][i], e[3][i]);
     if (!g)
         return persp4_avx2(s, ev, out);
-    if (s->affine || !avx2_persp4_den(s, ev, l, &den) || !avx2_tangents4(g, l, den, o))
+    Avx2Tangents gv;
+    avx2_tangents_setup(g, &gv);
+    if (s->affine || !avx2_persp4_den(s, ev, l, &den) || !avx2_tangents4(&gv, l, den, o))
         return 0;
     avx2_store_wgt4(l, out);
     avx2_store_wgt4(o[0], tx);
@@ -288,7 +291,7 @@ int gles_debug_modulate_write(int smooth, int rgb, int kind, unsigned int alpha_
 static int debug_wgt_setup(WgtSetup *s, int eshift, int64_t lin_recip, const int64_t mant[3], const int qshift[3],
                            int affine)
 {
-    if (eshift < 0 || eshift > 62)
+    if (eshift < 0 || eshift > 32)
         return 0;
     *s = (WgtSetup){ .eshift = eshift, .lin_recip = lin_recip, .affine = affine };
     for (int i = 0; i < 3; i++) {
@@ -655,12 +658,12 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
                 if (units & (1u << u))
                     s[n++] = modulate && u == first ? cs->color_modulate[u] : cs->env[u];
     }
-    /* the fog and the plain write (RGBA8888 or RGB565) as one stage where
-    ** the instance has it and AVX-512 runs (nothing between them) */
-    const int fog_then_write = ctx->fog && !rect && ctx_simd(ctx) >= SIMD_AVX512 && !ctx->alpha_test
-                            && !(tests && !early) && !no_color && bk == 0 && !ctx->color_logic_op;
+    /* the fog and the plain write as one stage where the instance has it:
+    ** RGBA8888, and RGB565 where AVX-512 runs (nothing between them) */
+    const int fog_then_write = ctx->fog && !rect && !ctx->alpha_test && !(tests && !early) && !no_color && bk == 0
+                            && !ctx->color_logic_op;
     const int fog_write = fog_then_write && plain && cs->fog_write_rgba8;
-    const int fog_write_565 = fog_then_write && plain565 && cs->fog_write_565;
+    const int fog_write_565 = fog_then_write && plain565 && ctx_simd(ctx) >= SIMD_AVX512 && cs->fog_write_565;
     if (ctx->fog && !fog_write && !fog_write_565)
         s[n++] = rect ? cs->fog_const : cs->fog;
     if (ctx->alpha_test)

@@ -337,14 +337,14 @@ static void STAGE(stage_persp_lod)(GlesContext *ctx, const TriSetup *t, SpanBuf 
     /* the weights and their divisions first, then the tangents: as one
     ** loop, each group's division, tangents and stores form one long chain
     ** of dependent operations, and the groups overlap less (measured) */
-    __m256i dens[SPAN_CHUNK / 4];
+    __m256i lanes[SPAN_CHUNK / 4][3], dens[SPAN_CHUNK / 4];
     const int simd_from = j;    /* the slots past the AVX-512 groups */
 #endif
     for (; j + 4 <= np; j += 4) {
         __m256i e[3];
         avx2_edges4(&ed, &b->k[j], e);
 #if NUM_IS_FIXED
-        __m256i l[3];
+        __m256i *const l = lanes[j / 4];
         if (!avx2_persp4_den(&ws, e, l, &dens[j / 4])) {
             /* a lane out of the kernels' ranges: the group by the scalar
             ** code (a WgtDen of 0 marks it done) */
@@ -381,15 +381,14 @@ static void STAGE(stage_persp_lod)(GlesContext *ctx, const TriSetup *t, SpanBuf 
 #endif
     }
 #if NUM_IS_FIXED
+    Avx2Tangents g;
+    avx2_tangents_setup(tan, &g);
     for (int i = simd_from; i + 4 <= j; i += 4) {
-        __m256i l[3], o[2][3];
+        __m256i o[2][3];
         if (_mm256_testz_si256(dens[i / 4], dens[i / 4]))
             continue;   /* the scalar code's group (above) */
-        /* the weights again, as 64-bit lanes (they are >= 0) */
-        avx2_wgt_lanes4((const WGT (*)[3])&p[i], l);
-        for (int c = 0; c < 3; c++)
-            l[c] = _mm256_and_si256(l[c], _mm256_set1_epi64x(0xFFFFFFFF));
-        if (!avx2_tangents4(tan, l, dens[i / 4], o)) {
+        const __m256i *const l = lanes[i / 4];      /* (the first loop's weights) */
+        if (!avx2_tangents4(&g, l, dens[i / 4], o)) {
             for (int k = i; k < i + 4; k++)
                 STAGE(persp_lod1)(t, b, k);
         } else if (done == i) {
@@ -1313,22 +1312,23 @@ static void STAGE(stage_write_rgba8)(GlesContext *ctx, const TriSetup *t, SpanBu
     STAGE(write_rgba8)(ctx, b, 0);
 }
 
-#if CHAIN_SIMD && SIMD_AVX512_FX
+#if CHAIN_SIMD && NUM_IS_FIXED
 /* a fused fog-and-write stage's inputs: the triangle's per-vertex fog
 ** factors a and the fog colour fc; 1 where the fused pass takes them
-** (AVX-512 runs and stage_fog's lanes take the triangle) */
+** (stage_fog's lanes take the triangle) */
 static inline int STAGE(fog_write_lanes)(GlesContext *ctx, const TriSetup *t, NUM a[3], FRAGV fc[3])
 {
     for (int i = 0; i < 3; i++)
         a[i] = t->v[i]->fog;
     fragment_fog_color(ctx, fc);
-    return ctx_simd(ctx) >= SIMD_AVX512 && STAGE(fog_in_lanes)(ctx, a, fc);
+    return STAGE(fog_in_lanes)(ctx, a, fc);
 }
 
 /* stage_fog then stage_write_rgba8 (no blend, every channel written) in
-** one pass of eight lanes where STAGE(fog_write_lanes) holds
-** (fx512_fog_write_rgba8: the fogged colour goes straight to the bytes),
-** the last fragments by the stages' scalar code; else the two stages */
+** one pass where STAGE(fog_write_lanes) holds, the fogged colour going
+** straight to the bytes: eight lanes at a time where AVX-512 runs
+** (fx512_fog_write_rgba8), four (avx2_fog_write_rgba8x4), then the last
+** fragments by the stages' scalar code; else the two stages */
 static void STAGE(stage_fog_write_rgba8)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     NUM a[3];
@@ -1340,8 +1340,16 @@ static void STAGE(stage_fog_write_rgba8)(GlesContext *ctx, const TriSetup *t, Sp
     }
     uint32_t *dst = chunk_color(ctx, b, 0);
     const int n = b->n;
-    for (int j = fx512_fog_write_rgba8(a, (const WGT (*)[3])b->p, (const FRAGV (*)[4])b->c, n, fc, dst, b->k); j < n;
-         j++) {
+    int j = 0;
+#if SIMD_AVX512_FX
+    if (ctx_simd(ctx) >= SIMD_AVX512)
+        j = fx512_fog_write_rgba8(a, (const WGT (*)[3])b->p, (const FRAGV (*)[4])b->c, n, fc, dst, b->k);
+#endif
+    const __m256i fcv[3] = { _mm256_set1_epi64x(fc[0]), _mm256_set1_epi64x(fc[1]), _mm256_set1_epi64x(fc[2]) };
+    for (; j + 4 <= n; j += 4)
+        avx2_fog_write_rgba8x4((const FRAGV (*)[4])&b->c[j], avx2_fog4(a, (const WGT (*)[3])&b->p[j]), fcv, dst,
+                               &b->k[j]);
+    for (; j < n; j++) {
         const WGT *p = b->p[j];
         STAGE(chunk_fog)(b->c[j], frag_clamp01(frag_lerp3(a[0], a[1], a[2], p[0], p[1], p[2])), fc);
         uint32_t *at = &dst[b->k[j]];
@@ -1508,14 +1516,14 @@ static void STAGE(stage_write_565)(GlesContext *ctx, const TriSetup *t, SpanBuf 
 
 #if CHAIN_SIMD && SIMD_AVX512_FX
 /* stage_fog then stage_write_565 (no blend, red, green and blue written) in
-** one pass of eight lanes where STAGE(fog_write_lanes) holds
-** (fx512_fog_write_565), the last fragments by the stages' code; else the
-** two stages */
+** one pass of eight lanes where AVX-512 runs and STAGE(fog_write_lanes)
+** holds (fx512_fog_write_565), the last fragments by the stages' code;
+** else the two stages */
 static void STAGE(stage_fog_write_565)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     NUM a[3];
     FRAGV fc[3];
-    if (!STAGE(fog_write_lanes)(ctx, t, a, fc)) {
+    if (!(STAGE(fog_write_lanes)(ctx, t, a, fc) && ctx_simd(ctx) >= SIMD_AVX512)) {
         STAGE(stage_fog)(ctx, t, b);
         STAGE(stage_write_565)(ctx, t, b);
         return;
@@ -1912,8 +1920,10 @@ static const ChainStages STAGE(chain_stages) = {
     .write_rgba8_masked = STAGE(stage_write_rgba8_masked),
     .write_565 = STAGE(stage_write_565),
     .write_565_alpha = STAGE(stage_write_565_alpha),
-#if CHAIN_SIMD && SIMD_AVX512_FX
+#if CHAIN_SIMD && NUM_IS_FIXED
     .fog_write_rgba8 = STAGE(stage_fog_write_rgba8),
+#endif
+#if CHAIN_SIMD && SIMD_AVX512_FX
     .fog_write_565 = STAGE(stage_fog_write_565),
 #endif
 #if CHAIN_SIMD && NUM_IS_FIXED
