@@ -1967,12 +1967,12 @@ AVX2_INLINE void avx2_fog_write_rgba8x4(const FRAGV (*c)[4], __m256i f, const __
     const __m128i w = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(word, _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6)));
     if (k[3] == k[0] + 3) {
         _mm_storeu_si128((__m128i *)(void *)&dst[k[0]], w);
-        return;
+    } else {
+        dst[k[0]] = (uint32_t)_mm_cvtsi128_si32(w);
+        dst[k[1]] = (uint32_t)_mm_extract_epi32(w, 1);
+        dst[k[2]] = (uint32_t)_mm_extract_epi32(w, 2);
+        dst[k[3]] = (uint32_t)_mm_extract_epi32(w, 3);
     }
-    uint32_t words[4];
-    _mm_storeu_si128((__m128i *)(void *)words, w);
-    for (int i = 0; i < 4; i++)
-        dst[k[i]] = words[i];
 }
 
 /* fragment_alpha8 of the alphas of four fragments' colours c0..c3, as
