@@ -1975,6 +1975,54 @@ AVX2_INLINE void avx2_fog_write_rgba8x4(const FRAGV (*c)[4], __m256i f, const __
     }
 }
 
+/* avx2_fog_channels4 of four fragments c[0..3] and stage_write_565's
+** pack565 of the result in the same pass (fx512_fog_write_565's
+** operations lane by lane): red, green and blue taken to 5, 6 and 5 bits,
+** dithered by the threshold t_row[(x0 + k[j]) & 3] as (min(max(v, 0),
+** 2^30) top + t) >> 30, or without dither as min(max(v, 0) >> (30 - bits),
+** top); the three packed into the words dst[k[0..3]] (one store for four
+** neighbouring pixels); the colours are not stored back */
+AVX2_INLINE void avx2_fog_write_565x4(const FRAGV (*c)[4], __m256i f, const __m256i fcv[3], uint16_t *dst,
+                                      const uint8_t *k, int x0, int dither, const FRAGV t_row[4])
+{
+    __m256i ch[4], word = _mm256_setzero_si256(), t = _mm256_setzero_si256();
+    avx2_fog_channels4(c, f, fcv, ch);
+    if (dither) {
+        /* each lane's threshold: the dwords 2 d and 2 d + 1 of the row's four, d = (x0 + k) & 3 */
+        uint32_t k4;
+        memcpy(&k4, k, sizeof k4);
+        const __m256i d = _mm256_slli_epi64(_mm256_and_si256(_mm256_add_epi64(_mm256_cvtepu8_epi64(_mm_cvtsi32_si128((int)k4)),
+                                                                               _mm256_set1_epi64x(x0)),
+                                                              _mm256_set1_epi64x(3)), 1);
+        const __m256i pick = _mm256_or_si256(d, _mm256_slli_epi64(_mm256_add_epi64(d, _mm256_set1_epi64x(1)), 32));
+        t = _mm256_permutevar8x32_epi32(_mm256_loadu_si256((const __m256i *)(const void *)t_row), pick);
+    }
+    const int bits[3] = { 5, 6, 5 }, shift[3] = { 11, 5, 0 };
+    for (int i = 0; i < 3; i++) {
+        const __m256i top = _mm256_set1_epi64x((1 << bits[i]) - 1), one = _mm256_set1_epi64x(FRAG_ONE);
+        const __m256i v = _mm256_andnot_si256(_mm256_cmpgt_epi64(_mm256_setzero_si256(), ch[i]), ch[i]);
+        __m256i r;
+        if (dither) {
+            r = _mm256_mul_epu32(_mm256_blendv_epi8(v, one, _mm256_cmpgt_epi64(v, one)), top);
+            r = _mm256_srli_epi64(_mm256_add_epi64(r, t), 30);
+        } else {
+            r = _mm256_srli_epi64(v, 30 - bits[i]);
+            r = _mm256_blendv_epi8(r, top, _mm256_cmpgt_epi64(r, top));
+        }
+        word = _mm256_or_si256(word, _mm256_slli_epi64(r, shift[i]));
+    }
+    const __m128i w32 = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(word, _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6)));
+    const __m128i w = _mm_packus_epi32(w32, w32);
+    if (k[3] == k[0] + 3) {
+        _mm_storel_epi64((__m128i *)(void *)&dst[k[0]], w);
+    } else {
+        dst[k[0]] = (uint16_t)_mm_extract_epi16(w, 0);
+        dst[k[1]] = (uint16_t)_mm_extract_epi16(w, 1);
+        dst[k[2]] = (uint16_t)_mm_extract_epi16(w, 2);
+        dst[k[3]] = (uint16_t)_mm_extract_epi16(w, 3);
+    }
+}
+
 /* fragment_alpha8 of the alphas of four fragments' colours c0..c3, as
 ** int32 lanes: after frag_clamp01 the alpha v lies in [0, 2^30], where
 ** (v 255 + 2^29) >> 30 is frag_to_unorm's value (0 for v <= 0, 255 for

@@ -89,8 +89,7 @@ typedef struct ChainStages {
     SpanStage fog, fog_const, alpha;
     SpanStage write, write_rgba8, write_rgba8_alpha, write_rgba8_add, write_rgba8_logic, write_rgba8_masked;
     SpanStage write_565, write_565_alpha;
-    SpanStage fog_write_rgba8;  /* the fixed build's AVX2 instance */
-    SpanStage fog_write_565;    /* the same, for AVX-512 CPUs */
+    SpanStage fog_write_rgba8, fog_write_565;  /* the fixed build's AVX2 instance */
     SpanStage rect_source;
     SpanStage color_dot3_modulate;  /* float and double builds, AVX2 */
     SpanStage coords[GLES_MAX_TEXTURE_UNITS], coords_rect[GLES_MAX_TEXTURE_UNITS];
@@ -658,12 +657,12 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
                 if (units & (1u << u))
                     s[n++] = modulate && u == first ? cs->color_modulate[u] : cs->env[u];
     }
-    /* the fog and the plain write as one stage where the instance has it:
-    ** RGBA8888, and RGB565 where AVX-512 runs (nothing between them) */
+    /* the fog and the plain write (RGBA8888 or RGB565) as one stage where
+    ** the instance has it (nothing between them) */
     const int fog_then_write = ctx->fog && !rect && !ctx->alpha_test && !(tests && !early) && !no_color && bk == 0
                             && !ctx->color_logic_op;
     const int fog_write = fog_then_write && plain && cs->fog_write_rgba8;
-    const int fog_write_565 = fog_then_write && plain565 && ctx_simd(ctx) >= SIMD_AVX512 && cs->fog_write_565;
+    const int fog_write_565 = fog_then_write && plain565 && cs->fog_write_565;
     if (ctx->fog && !fog_write && !fog_write_565)
         s[n++] = rect ? cs->fog_const : cs->fog;
     if (ctx->alpha_test)

@@ -1514,16 +1514,16 @@ static void STAGE(stage_write_565)(GlesContext *ctx, const TriSetup *t, SpanBuf 
     }
 }
 
-#if CHAIN_SIMD && SIMD_AVX512_FX
+#if CHAIN_SIMD && NUM_IS_FIXED
 /* stage_fog then stage_write_565 (no blend, red, green and blue written) in
-** one pass of eight lanes where AVX-512 runs and STAGE(fog_write_lanes)
-** holds (fx512_fog_write_565), the last fragments by the stages' code;
-** else the two stages */
+** one pass where STAGE(fog_write_lanes) holds: eight lanes at a time where
+** AVX-512 runs (fx512_fog_write_565), four (avx2_fog_write_565x4), then the
+** last fragments by the stages' code; else the two stages */
 static void STAGE(stage_fog_write_565)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     NUM a[3];
     FRAGV fc[3];
-    if (!(STAGE(fog_write_lanes)(ctx, t, a, fc) && ctx_simd(ctx) >= SIMD_AVX512)) {
+    if (!STAGE(fog_write_lanes)(ctx, t, a, fc)) {
         STAGE(stage_fog)(ctx, t, b);
         STAGE(stage_write_565)(ctx, t, b);
         return;
@@ -1532,9 +1532,17 @@ static void STAGE(stage_fog_write_565)(GlesContext *ctx, const TriSetup *t, Span
     const int dither = ctx->dither, n = b->n;
     FRAGV t_row[4];
     dither_row(b, dither, t_row);
-    for (int j = fx512_fog_write_565(a, (const WGT (*)[3])b->p, (const FRAGV (*)[4])b->c, n, fc, dst, b->k, b->x0,
-                                     dither, t_row);
-         j < n; j++) {
+    int j = 0;
+#if SIMD_AVX512_FX
+    if (ctx_simd(ctx) >= SIMD_AVX512)
+        j = fx512_fog_write_565(a, (const WGT (*)[3])b->p, (const FRAGV (*)[4])b->c, n, fc, dst, b->k, b->x0, dither,
+                                t_row);
+#endif
+    const __m256i fcv[3] = { _mm256_set1_epi64x(fc[0]), _mm256_set1_epi64x(fc[1]), _mm256_set1_epi64x(fc[2]) };
+    for (; j + 4 <= n; j += 4)
+        avx2_fog_write_565x4((const FRAGV (*)[4])&b->c[j], avx2_fog4(a, (const WGT (*)[3])&b->p[j]), fcv, dst,
+                             &b->k[j], b->x0, dither, t_row);
+    for (; j < n; j++) {
         const WGT *p = b->p[j];
         STAGE(chunk_fog)(b->c[j], frag_clamp01(frag_lerp3(a[0], a[1], a[2], p[0], p[1], p[2])), fc);
         dst[b->k[j]] = (uint16_t)v4_pack565(v4_load(b->c[j]), dither, t_row[(b->x0 + b->k[j]) & 3]);
@@ -1922,8 +1930,6 @@ static const ChainStages STAGE(chain_stages) = {
     .write_565_alpha = STAGE(stage_write_565_alpha),
 #if CHAIN_SIMD && NUM_IS_FIXED
     .fog_write_rgba8 = STAGE(stage_fog_write_rgba8),
-#endif
-#if CHAIN_SIMD && SIMD_AVX512_FX
     .fog_write_565 = STAGE(stage_fog_write_565),
 #endif
 #if CHAIN_SIMD && NUM_IS_FIXED
