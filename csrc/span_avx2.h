@@ -1920,6 +1920,13 @@ AVX2_INLINE __m256i avx2_fog4(const NUM a[3], const WGT (*p)[3])
     return avx2_clamp01(avx2_round_shift(avx2_dot3_lanes(a[0], a[1], a[2], w), 16));
 }
 
+/* the fog colour's channels fc[0..2], each as the lanes of a register */
+AVX2_INLINE void avx2_fog_color_lanes(const FRAGV fc[3], __m256i fcv[3])
+{
+    for (int i = 0; i < 3; i++)
+        fcv[i] = _mm256_set1_epi64x(fc[i]);
+}
+
 /* fragment_fog of four fragments c[0..3] with factors f (lanes, each in
 ** [0, 2^30]) and the fog colour's channels as lanes fcv[0..2] (each in
 ** [0, 2^31)): the colours transposed to one register per channel, then

@@ -1139,7 +1139,8 @@ static void STAGE(stage_fog)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
     const NUM a[3] = { v0->fog, v1->fog, v2->fog };
     if (STAGE(fog_in_lanes)(ctx, a, fc)) {
 #if NUM_IS_FIXED
-        const __m256i fcv[3] = { _mm256_set1_epi64x(fc[0]), _mm256_set1_epi64x(fc[1]), _mm256_set1_epi64x(fc[2]) };
+        __m256i fcv[3];
+        avx2_fog_color_lanes(fc, fcv);
 #if SIMD_AVX512_FX
         if (ctx_simd(ctx) >= SIMD_AVX512)    /* eight at a time, the rest as below */
             j = fx512_fog(a, (const WGT (*)[3])b->p, b->c, b->n, fc);
@@ -1345,7 +1346,8 @@ static void STAGE(stage_fog_write_rgba8)(GlesContext *ctx, const TriSetup *t, Sp
     if (ctx_simd(ctx) >= SIMD_AVX512)
         j = fx512_fog_write_rgba8(a, (const WGT (*)[3])b->p, (const FRAGV (*)[4])b->c, n, fc, dst, b->k);
 #endif
-    const __m256i fcv[3] = { _mm256_set1_epi64x(fc[0]), _mm256_set1_epi64x(fc[1]), _mm256_set1_epi64x(fc[2]) };
+    __m256i fcv[3];
+    avx2_fog_color_lanes(fc, fcv);
     for (; j + 4 <= n; j += 4)
         avx2_fog_write_rgba8x4((const FRAGV (*)[4])&b->c[j], avx2_fog4(a, (const WGT (*)[3])&b->p[j]), fcv, dst,
                                &b->k[j]);
@@ -1538,7 +1540,8 @@ static void STAGE(stage_fog_write_565)(GlesContext *ctx, const TriSetup *t, Span
         j = fx512_fog_write_565(a, (const WGT (*)[3])b->p, (const FRAGV (*)[4])b->c, n, fc, dst, b->k, b->x0, dither,
                                 t_row);
 #endif
-    const __m256i fcv[3] = { _mm256_set1_epi64x(fc[0]), _mm256_set1_epi64x(fc[1]), _mm256_set1_epi64x(fc[2]) };
+    __m256i fcv[3];
+    avx2_fog_color_lanes(fc, fcv);
     for (; j + 4 <= n; j += 4)
         avx2_fog_write_565x4((const FRAGV (*)[4])&b->c[j], avx2_fog4(a, (const WGT (*)[3])&b->p[j]), fcv, dst,
                              &b->k[j], b->x0, dither, t_row);
