@@ -1057,8 +1057,6 @@ typedef __m128 V4;
 #define V4_OP(op) _mm_##op##_ps
 AVX2_INLINE V4 v4_from_i32(__m128i v) { return _mm_cvtepi32_ps(v); }
 AVX2_INLINE __m128i v4_trunc_i32(V4 v) { return _mm_cvttps_epi32(v); }
-AVX2_INLINE V4 v4_gt(V4 a, V4 b) { return _mm_cmpgt_ps(a, b); }
-AVX2_INLINE V4 v4_ge(V4 a, V4 b) { return _mm_cmpge_ps(a, b); }
 AVX2_INLINE V4 v4_keep_alpha(V4 m, V4 c) { return _mm_blend_ps(m, c, 8); }
 AVX2_INLINE V4 v4_alpha(V4 a) { return _mm_shuffle_ps(a, a, 0xFF); }
 #else
@@ -1066,8 +1064,6 @@ typedef __m256d V4;
 #define V4_OP(op) _mm256_##op##_pd
 AVX2_INLINE V4 v4_from_i32(__m128i v) { return _mm256_cvtepi32_pd(v); }
 AVX2_INLINE __m128i v4_trunc_i32(V4 v) { return _mm256_cvttpd_epi32(v); }
-AVX2_INLINE V4 v4_gt(V4 a, V4 b) { return _mm256_cmp_pd(a, b, _CMP_GT_OQ); }
-AVX2_INLINE V4 v4_ge(V4 a, V4 b) { return _mm256_cmp_pd(a, b, _CMP_GE_OQ); }
 AVX2_INLINE V4 v4_keep_alpha(V4 m, V4 c) { return _mm256_blend_pd(m, c, 8); }
 AVX2_INLINE V4 v4_alpha(V4 a) { return _mm256_permute4x64_pd(a, 0xFF); }
 #endif
@@ -1256,15 +1252,22 @@ AVX2_INLINE V4 v4_byte_unorm8(__m128i words, int shift)
 {
     return v4_div255(v4_from_i32(_mm_and_si128(_mm_srli_epi32(words, shift), _mm_set1_epi32(0xFF))));
 }
+/* x (= v maxval + t, or v 2^bits) within [0, top] and truncated, per
+** lane: frag_to_unorm(v, maxval, t) with top = maxval, for thresholds 0
+** <= t < 1 whose sum with maxval is exact, and frag_to_msb(v, bits) with
+** top = 2^bits - 1. Where v <= 0, x < 1 and gives 0; a NaN x (v NaN) is
+** max's second operand, 0. Where v >= 1, x >= top. Else fl(v maxval) <=
+** maxval, so x < maxval + 1 and the minimum truncates as x does; and
+** v 2^bits's floor is its truncation. (span_float8.h's f8_unorm, f8_msb.) */
+AVX2_INLINE __m128i v4_trunc_within(V4 x, V4 top)
+{
+    return v4_trunc_i32(V4_OP(min)(V4_OP(max)(x, V4_OP(setzero)()), top));
+}
 /* frag_to_unorm(v, 255, 1/2) per lane, as int32: 0 unless v > 0, 255
 ** from 1 up, else v 255 + 1/2 truncated */
 AVX2_INLINE __m128i v4_to_unorm8(V4 v)
 {
-    const V4 zero = V4_OP(setzero)(), one = V4_OP(set1)(1);
-    V4 x = V4_OP(add)(V4_OP(mul)(v, V4_OP(set1)(255)), V4_OP(set1)(0.5));
-    x = V4_OP(blendv)(x, V4_OP(set1)(255), v4_ge(v, one));
-    x = V4_OP(blendv)(zero, x, v4_gt(v, zero));
-    return v4_trunc_i32(x);
+    return v4_trunc_within(V4_OP(add)(V4_OP(mul)(v, V4_OP(set1)(255)), V4_OP(set1)(0.5)), V4_OP(set1)(255));
 }
 /* the four channels' v4_to_unorm8 as one RGBA8888 word */
 AVX2_INLINE uint32_t v4_pack_unorm8(V4 v)
@@ -1280,21 +1283,9 @@ AVX2_INLINE uint32_t v4_pack_unorm8(V4 v)
 ** larger value, or of infinity, is at least 2^bits, so the minimum is it) */
 AVX2_INLINE uint32_t v4_pack565(V4 v, int dither, FRAGV t)
 {
-    const V4 zero = V4_OP(setzero)(), top = V4_OP(setr)(31, 63, 31, 0);
-    V4 x;
-    if (dither) {
-        x = V4_OP(add)(V4_OP(mul)(v, top), V4_OP(set1)(t));
-        x = V4_OP(blendv)(x, top, v4_ge(v, V4_OP(set1)(1)));
-    } else {
-#if defined(GLES_NUM_FLOAT)
-        x = _mm_floor_ps(V4_OP(mul)(v, V4_OP(setr)(32, 64, 32, 1)));
-#else
-        x = _mm256_floor_pd(V4_OP(mul)(v, V4_OP(setr)(32, 64, 32, 1)));
-#endif
-        x = V4_OP(min)(x, top);
-    }
-    x = V4_OP(blendv)(zero, x, v4_gt(v, zero));
-    const __m128i i = _mm_sllv_epi32(v4_trunc_i32(x), _mm_setr_epi32(11, 5, 0, 0));
+    const V4 top = V4_OP(setr)(31, 63, 31, 0);
+    const V4 x = dither ? V4_OP(add)(V4_OP(mul)(v, top), V4_OP(set1)(t)) : V4_OP(mul)(v, V4_OP(setr)(32, 64, 32, 1));
+    const __m128i i = _mm_sllv_epi32(v4_trunc_within(x, top), _mm_setr_epi32(11, 5, 0, 0));
     return (uint32_t)_mm_cvtsi128_si32(_mm_or_si128(_mm_or_si128(i, _mm_srli_si128(i, 4)), _mm_srli_si128(i, 8)));
 }
 /* v4_pack565 of four fragments, channel by channel: red, green and blue
@@ -1303,24 +1294,11 @@ AVX2_INLINE uint32_t v4_pack565(V4 v, int dither, FRAGV t)
 AVX2_INLINE __m128i v4_pack565x4(const V4 rgb[3], int dither, V4 t)
 {
     static const int bits[3] = { 5, 6, 5 }, shift[3] = { 11, 5, 0 };
-    const V4 zero = V4_OP(setzero)();
     __m128i w = _mm_setzero_si128();
     for (int i = 0; i < 3; i++) {
         const V4 v = rgb[i], top = V4_OP(set1)((NUM)((1 << bits[i]) - 1));
-        V4 x;
-        if (dither) {
-            x = V4_OP(add)(V4_OP(mul)(v, top), t);
-            x = V4_OP(blendv)(x, top, v4_ge(v, V4_OP(set1)(1)));
-        } else {
-#if defined(GLES_NUM_FLOAT)
-            x = _mm_floor_ps(V4_OP(mul)(v, V4_OP(set1)((NUM)(1 << bits[i]))));
-#else
-            x = _mm256_floor_pd(V4_OP(mul)(v, V4_OP(set1)((NUM)(1 << bits[i]))));
-#endif
-            x = V4_OP(min)(x, top);
-        }
-        x = V4_OP(blendv)(zero, x, v4_gt(v, zero));
-        w = _mm_or_si128(w, _mm_slli_epi32(v4_trunc_i32(x), shift[i]));
+        const V4 x = dither ? V4_OP(add)(V4_OP(mul)(v, top), t) : V4_OP(mul)(v, V4_OP(set1)((NUM)(1 << bits[i])));
+        w = _mm_or_si128(w, _mm_slli_epi32(v4_trunc_within(x, top), shift[i]));
     }
     return w;
 }
@@ -2067,11 +2045,7 @@ AVX2_INLINE __m128i v4_alpha8x4(V4 c0, V4 c1, V4 c2, V4 c3)
     /* g0 g1 a0 a1 and g2 g3 a2 a3, then the alphas */
     const V4 v = _mm256_permute2f128_pd(_mm256_unpackhi_pd(c0, c1), _mm256_unpackhi_pd(c2, c3), 0x31);
 #endif
-    const V4 zero = V4_OP(setzero)(), one = V4_OP(set1)(1);
-    V4 x = V4_OP(add)(V4_OP(mul)(v, V4_OP(set1)(255)), V4_OP(set1)((NUM)0.5));
-    x = V4_OP(blendv)(x, V4_OP(set1)(255), v4_ge(v, one));
-    x = V4_OP(blendv)(zero, x, v4_gt(v, zero));
-    return v4_trunc_i32(x);
+    return v4_to_unorm8(v);
 }
 #endif
 
