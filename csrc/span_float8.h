@@ -30,7 +30,15 @@ typedef int64_t f8_mask __attribute__((vector_size(64)));
 typedef int32_t f8_i32 __attribute__((vector_size(32)));
 typedef uint16_t f8_u16 __attribute__((vector_size(16)));
 
-AVX2_INLINE f8_num f8_set1(NUM x) { return (f8_num){ 0 } + x; }
+/* x in every lane (a broadcast: {0} + x would add 0 at every use) */
+AVX2_INLINE f8_num f8_set1(NUM x)
+{
+#if defined(GLES_NUM_FLOAT)
+    return (f8_num)_mm256_set1_ps(x);
+#else
+    return (f8_num)_mm512_set1_pd(x);
+#endif
+}
 
 /* 1 when every lane of m is set */
 AVX2_INLINE int f8_all(f8_mask m)
