@@ -82,6 +82,26 @@ AVX2_INLINE void avx2_store3x4_32(__m128i a, __m128i b, __m128i c, void *out)
     _mm_storeu_si128((__m128i *)((char *)out + 32), last);
 }
 
+/* the byte shuffle that takes byte i (0..3) of every dword to the dword,
+** zero-extended */
+AVX2_INLINE __m256i avx2_byte_pick8(int i)
+{
+    return _mm256_setr_epi8(i, -1, -1, -1, 4 + i, -1, -1, -1, 8 + i, -1, -1, -1, 12 + i, -1, -1, -1, i, -1, -1, -1,
+                            4 + i, -1, -1, -1, 8 + i, -1, -1, -1, 12 + i, -1, -1, -1);
+}
+/* byte i of every dword of g, zero-extended: a mask for the low byte, a
+** shift for the high one, the shuffle between. (Where the same shuffle
+** serves four texel words, as in avx2_bilerp8_float and f8_byte, the
+** shuffle alone measured fewer instructions.) */
+AVX2_INLINE __m256i avx2_byte_lanes8(__m256i g, int i)
+{
+    if (i == 0)
+        return _mm256_and_si256(g, _mm256_set1_epi32(0xFF));
+    if (i == 3)
+        return _mm256_srli_epi32(g, 24);
+    return _mm256_shuffle_epi8(g, avx2_byte_pick8(i));
+}
+
 /* The texel words of a bilinear group of eight fragments (every build's
 ** kernel): lanes xa, xb the columns and ya, yb the rows of its four texels
 ** on a level w texels wide of `total` texels, g[0..3] the words at (xa, ya),
@@ -2349,9 +2369,7 @@ AVX2_INLINE void avx2_bilerp8_float(const __m256i g[4], __m256i a, __m256i b, in
     /* (half_rgb's factors over twice the divisor: exact halvings) */
     const __m256 ibk_half = _mm256_mul_ps(ibk, _mm256_set1_ps(0.5f)), bk_half = _mm256_mul_ps(bk, _mm256_set1_ps(0.5f));
     for (int i = 0; i < 4; i++) {
-        /* byte i of every dword, zero-extended */
-        const __m256i pick = _mm256_setr_epi8(i, -1, -1, -1, 4 + i, -1, -1, -1, 8 + i, -1, -1, -1, 12 + i, -1, -1, -1,
-                                              i, -1, -1, -1, 4 + i, -1, -1, -1, 8 + i, -1, -1, -1, 12 + i, -1, -1, -1);
+        const __m256i pick = avx2_byte_pick8(i);
         __m256 c[4];
         for (int q = 0; q < 4; q++)
             c[q] = _mm256_cvtepi32_ps(_mm256_shuffle_epi8(g[q], pick));
@@ -2450,12 +2468,10 @@ AVX2_INLINE unsigned avx2_modwrite8(const Avx2ModWrite *m, int smooth, int kind,
     avx2_modwrite_source8(m, smooth, dot3, p, T0, T, margin, y, &pass, &bad);
     const __m256 one = _mm256_set1_ps(1.0f);
     if (kind) {
-        const __m256i byte = _mm256_set1_epi32(0xFF);
         const __m256 inv255 = _mm256_set1_ps(1.0f / 255.0f);
         const __m256 b = _mm256_sub_ps(one, y[3]), a = y[3];
         for (int i = 0; i < 4; i++) {
-            const __m256i di = i == 3 ? _mm256_srli_epi32(d, 24) : _mm256_and_si256(_mm256_srli_epi32(d, 8 * i), byte);
-            const __m256 dv = _mm256_mul_ps(_mm256_cvtepi32_ps(di), inv255);
+            const __m256 dv = _mm256_mul_ps(_mm256_cvtepi32_ps(avx2_byte_lanes8(d, i)), inv255);
             y[i] = kind == 1 ? _mm256_fmadd_ps(y[i], a, _mm256_mul_ps(dv, b))
                              : _mm256_min_ps(_mm256_add_ps(y[i], dv), one);
         }

@@ -278,8 +278,8 @@ static inline void f8_modwrite_dither(F8ModWrite *m, int dither, const FRAGV t_r
 AVX2_INLINE f8_num f8_byte(f8_i32 g, int i)
 {
 #if defined(GLES_NUM_FLOAT)
-    /* v4_div255's d / 255 in eight lanes */
-    const f8_num d = f8_from_i32((g >> (8 * i)) & 0xFF);
+    /* v4_div255's d / 255 in eight lanes, the byte by a shuffle */
+    const f8_num d = f8_from_i32((f8_i32)_mm256_shuffle_epi8((__m256i)g, avx2_byte_pick8(i)));
     return (f8_num)_mm256_fmadd_ps((__m256)d, _mm256_set1_ps(UNORM8_RECIP_HI),
                                    (__m256)(d * f8_set1(UNORM8_RECIP_LO)));
 #else
