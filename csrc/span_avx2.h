@@ -1268,12 +1268,11 @@ AVX2_INLINE V4 v4_unorm8(uint32_t word)
     return v4_div255(v4_from_i32(_mm_cvtepu8_epi32(_mm_cvtsi32_si128((int)word))));
 }
 /* the same of one byte (bits shift .. shift + 7) of four words, lane by
-** lane (the low byte needs no shift, the high one no mask) */
+** lane (avx2_byte_lanes8's taking, in the low half) */
 AVX2_INLINE V4 v4_byte_unorm8(__m128i words, int shift)
 {
-    const __m128i d = shift == 24 ? _mm_srli_epi32(words, 24)
-                    : _mm_and_si128(shift ? _mm_srli_epi32(words, shift) : words, _mm_set1_epi32(0xFF));
-    return v4_div255(v4_from_i32(d));
+    const __m256i d = avx2_byte_lanes8(_mm256_castsi128_si256(words), shift / 8);
+    return v4_div255(v4_from_i32(_mm256_castsi256_si128(d)));
 }
 /* x (= v maxval + t, or v 2^bits) within [0, top] and truncated, per
 ** lane: frag_to_unorm(v, maxval, t) with top = maxval, for thresholds 0
