@@ -173,20 +173,43 @@ ClipRect raster_clip_rect(const GlesContext *ctx)
 ** the divisions. The test has no branch: with E biased by tie - 1 (E > 0
 ** is E - 1 >= 0 for integers), a centre is covered where no biased value
 ** is negative, the sign bit of their OR; the row's centres are bits of a
-** mask (the box is at most RASTER_SCAN_MAX wide). Writes (row, lo, hi)
-** per row with a run; returns their number. */
+** mask (the box is at most RASTER_SCAN_MAX wide). scan_runs writes (row,
+** lo, hi) per row with a run and returns their number; scan_runs_avx2 is
+** the same with four centres to a test. */
+
+/* the biased edge values at the box's first centre */
+static void scan_first(const TriSetup *t, const int tie[3], const ClipRect *box, int64_t r[3])
+{
+    for (int i = 0; i < 3; i++)
+        r[i] = t->ea[i] * box->x0 + t->eb[i] * box->y0 + t->ec[i] + tie[i] - 1;
+}
+
+/* row py's run from its mask of covered centres, kept where it is not
+** empty, without a branch (m < RASTER_SCAN_MAX: at most one run per row
+** before); returns the runs kept so far */
+static inline int scan_keep(int64_t runs[RASTER_SCAN_MAX][3], int m, int64_t py, uint32_t covered, int64_t x0,
+                            int drop_last)
+{
+    const uint32_t any = covered ? covered : 1;
+    const int64_t lo = x0 + __builtin_ctz(any);
+    const int64_t hi = x0 + 32 - __builtin_clz(any) - (drop_last != 0);
+    runs[m][0] = py;
+    runs[m][1] = lo;
+    runs[m][2] = hi;
+    return m + ((covered != 0) & (lo < hi));
+}
+
 static int scan_runs(const TriSetup *t, const int tie[3], const ClipRect *box, int drop_last,
                      int64_t runs[RASTER_SCAN_MAX][3])
 {
     _Static_assert(RASTER_SCAN_MAX <= 32, "a row's centres are bits of a uint32_t");
     const int width = (int)(box->x1 - box->x0 + 1);
     const int64_t a0 = t->ea[0], a1 = t->ea[1], a2 = t->ea[2];
-    int64_t r0 = a0 * box->x0 + t->eb[0] * box->y0 + t->ec[0] + tie[0] - 1;
-    int64_t r1 = a1 * box->x0 + t->eb[1] * box->y0 + t->ec[1] + tie[1] - 1;
-    int64_t r2 = a2 * box->x0 + t->eb[2] * box->y0 + t->ec[2] + tie[2] - 1;
+    int64_t r[3];
+    scan_first(t, tie, box, r);
     int m = 0;
     for (int64_t py = box->y0; py <= box->y1; py++) {
-        int64_t e0 = r0, e1 = r1, e2 = r2;
+        int64_t e0 = r[0], e1 = r[1], e2 = r[2];
         uint32_t covered = 0;
         for (int k = 0; k < width; k++) {
             covered |= (uint32_t)(~(uint64_t)(e0 | e1 | e2) >> 63) << k;
@@ -194,21 +217,55 @@ static int scan_runs(const TriSetup *t, const int tie[3], const ClipRect *box, i
             e1 += a1;
             e2 += a2;
         }
-        /* the row's run, kept where it is not empty, without a branch
-        ** (m < RASTER_SCAN_MAX here: at most one run per row before) */
-        const uint32_t any = covered ? covered : 1;
-        const int64_t lo = box->x0 + __builtin_ctz(any);
-        const int64_t hi = box->x0 + 32 - __builtin_clz(any) - (drop_last != 0);
-        runs[m][0] = py;
-        runs[m][1] = lo;
-        runs[m][2] = hi;
-        m += (covered != 0) & (lo < hi);
-        r0 += t->eb[0];
-        r1 += t->eb[1];
-        r2 += t->eb[2];
+        m = scan_keep(runs, m, py, covered, box->x0, drop_last);
+        for (int i = 0; i < 3; i++)
+            r[i] += t->eb[i];
     }
     return m;
 }
+
+#if SIMD_X86
+#pragma GCC push_options
+SIMD_TARGET_AVX2
+#include <immintrin.h>
+/* scan_runs with a row's centres four to a register (lane q the centre k +
+** q): the sign bits of the three values' OR are movmskpd's bits, set
+** where a centre is outside; the lanes past the row's end are masked off
+** (their values, past the box, may wrap: vector adds are modular) */
+static int scan_runs_avx2(const TriSetup *t, const int tie[3], const ClipRect *box, int drop_last,
+                          int64_t runs[RASTER_SCAN_MAX][3])
+{
+    const int width = (int)(box->x1 - box->x0 + 1);
+    const uint32_t in_row = (uint32_t)(((uint64_t)1 << width) - 1);
+    __m256i lane[3], step[3], down[3], row[3];
+    int64_t r[3];
+    scan_first(t, tie, box, r);
+    for (int i = 0; i < 3; i++) {
+        const int64_t a = t->ea[i];
+        lane[i] = _mm256_setr_epi64x(0, a, 2 * a, 3 * a);
+        step[i] = _mm256_set1_epi64x(4 * a);
+        down[i] = _mm256_set1_epi64x(t->eb[i]);
+        row[i] = _mm256_add_epi64(_mm256_set1_epi64x(r[i]), lane[i]);
+    }
+    int m = 0;
+    for (int64_t py = box->y0; py <= box->y1; py++) {
+        __m256i e0 = row[0], e1 = row[1], e2 = row[2];
+        uint64_t outside = 0;
+        for (int k = 0; k < width; k += 4) {
+            const __m256i any = _mm256_or_si256(_mm256_or_si256(e0, e1), e2);
+            outside |= (uint64_t)_mm256_movemask_pd(_mm256_castsi256_pd(any)) << k;
+            e0 = _mm256_add_epi64(e0, step[0]);
+            e1 = _mm256_add_epi64(e1, step[1]);
+            e2 = _mm256_add_epi64(e2, step[2]);
+        }
+        m = scan_keep(runs, m, py, ~(uint32_t)outside & in_row, box->x0, drop_last);
+        for (int i = 0; i < 3; i++)
+            row[i] = _mm256_add_epi64(row[i], down[i]);
+    }
+    return m;
+}
+#pragma GCC pop_options
+#endif
 
 /* the flat colour in the framebuffer's format; neighbouring triangles of a
 ** flat-lit face share it, so the last one is kept */
@@ -257,7 +314,12 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
     int64_t runs[RASTER_SCAN_MAX][3];
     int nruns = -1;  /* -1: the rows are bounded by division below */
     if ((box.x1 - box.x0 + 1) * (box.y1 - box.y0 + 1) <= RASTER_SCAN_MAX) {
-        nruns = scan_runs(&t, tie, &box, drop_last, runs);
+#if SIMD_X86
+        if (ctx_simd(ctx) >= SIMD_AVX2)
+            nruns = scan_runs_avx2(&t, tie, &box, drop_last, runs);
+        else
+#endif
+            nruns = scan_runs(&t, tie, &box, drop_last, runs);
         if (nruns == 0)
             return;
     }

@@ -386,16 +386,20 @@ def test_random_triangles_follow_the_rule(numeric, seed, persp):
 
 
 @pytest.mark.parametrize("numeric", BUILDS)
+@pytest.mark.parametrize("baseline", [False, True])
 @SETTINGS
 @given(seed=seeds)
-def test_small_triangles_follow_the_rule(numeric, seed):
+def test_small_triangles_follow_the_rule(numeric, baseline, seed):
     """Triangles a few pixels across, many with vertices on pixel centres or
     on the 1/2-pixel grid (so centres fall exactly on edges), cover exactly
     the pixels of the exact model. The rasterizer tests the centres of small
-    bounding boxes one by one and solves row bounds for larger ones; both
-    must give the rule's pixels, ties included."""
+    bounding boxes (four at a time where AVX2 runs; one by one in the
+    baseline instance, ctx.debug(16)) and solves row bounds for larger ones;
+    each must give the rule's pixels, ties included."""
     rng = np.random.default_rng(seed)
     ctx = make_ctx(numeric, W, H)
+    if baseline:
+        ctx.debug(16)
     ctx.gl.glColor4ub(255, 255, 255, 255)
     set_ortho(ctx.gl, W, H)
     for _ in range(12):
