@@ -158,7 +158,9 @@ static inline uint32_t span_flat_word(const uint32_t (*table)[256], uint32_t d)
 ** placement made blended_quads take 4.6 ms in one build and 6.5 in
 ** another on this machine's AMD EPYC), and two words per iteration, which
 ** was the fastest of the placements and unrollings measured (4.2-4.5 ms
-** in all three) */
+** in all three). It uses no SSE register, so GCC's AVX2 callers need
+** -fno-ipa-ra to place their vzeroupper (docs/architecture.md, Compiler
+** flags). */
 static __attribute__((noinline, aligned(64))) void span_flat_run(const uint32_t (*table)[256], uint32_t *dst, int n)
 {
     int k = 0;
