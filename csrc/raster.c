@@ -175,7 +175,7 @@ ClipRect raster_clip_rect(const GlesContext *ctx)
 ** is negative, the sign bit of their OR; the row's centres are bits of a
 ** mask (the box is at most RASTER_SCAN_MAX wide). scan_runs writes (row,
 ** lo, hi) per row with a run and returns their number; scan_runs_avx2 is
-** the same with four centres to a test. */
+** the same with four centres to a test (for boxes four or more wide). */
 
 /* the biased edge values at the box's first centre */
 static void scan_first(const TriSetup *t, const int tie[3], const ClipRect *box, int64_t r[3])
@@ -205,11 +205,13 @@ static int scan_runs(const TriSetup *t, const int tie[3], const ClipRect *box, i
     _Static_assert(RASTER_SCAN_MAX <= 32, "a row's centres are bits of a uint32_t");
     const int width = (int)(box->x1 - box->x0 + 1);
     const int64_t a0 = t->ea[0], a1 = t->ea[1], a2 = t->ea[2];
+    const int64_t b0 = t->eb[0], b1 = t->eb[1], b2 = t->eb[2];
     int64_t r[3];
     scan_first(t, tie, box, r);
+    int64_t r0 = r[0], r1 = r[1], r2 = r[2];
     int m = 0;
     for (int64_t py = box->y0; py <= box->y1; py++) {
-        int64_t e0 = r[0], e1 = r[1], e2 = r[2];
+        int64_t e0 = r0, e1 = r1, e2 = r2;
         uint32_t covered = 0;
         for (int k = 0; k < width; k++) {
             covered |= (uint32_t)(~(uint64_t)(e0 | e1 | e2) >> 63) << k;
@@ -218,8 +220,9 @@ static int scan_runs(const TriSetup *t, const int tie[3], const ClipRect *box, i
             e2 += a2;
         }
         m = scan_keep(runs, m, py, covered, box->x0, drop_last);
-        for (int i = 0; i < 3; i++)
-            r[i] += t->eb[i];
+        r0 += b0;
+        r1 += b1;
+        r2 += b2;
     }
     return m;
 }
@@ -315,7 +318,10 @@ void raster_triangle(GlesContext *ctx, const Vertex *a, const Vertex *b, const V
     int nruns = -1;  /* -1: the rows are bounded by division below */
     if ((box.x1 - box.x0 + 1) * (box.y1 - box.y0 + 1) <= RASTER_SCAN_MAX) {
 #if SIMD_X86
-        if (ctx_simd(ctx) >= SIMD_AVX2)
+        /* (a box narrower than four centres takes the scalar loop: one
+        ** or two steps of it cost less than the lanes' setup, and the
+        ** width is tested first, as it is in a register) */
+        if (box.x1 - box.x0 >= 3 && ctx_simd(ctx) >= SIMD_AVX2)
             nruns = scan_runs_avx2(&t, tie, &box, drop_last, runs);
         else
 #endif
