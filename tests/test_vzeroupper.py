@@ -32,7 +32,8 @@ def disassembly(numeric: str) -> list[str]:
 
 
 def calls_after(lines: list[str], callee: str) -> dict[str, list[str]]:
-    """For each flat span's AVX2 instance, the instruction before each of its calls of `callee`."""
+    """For each flat span's AVX2 instance, the instruction before each of its calls (or tail
+    calls) of `callee`."""
     out: dict[str, list[str]] = {}
     current = None
     previous = ""
@@ -47,7 +48,7 @@ def calls_after(lines: list[str], callee: str) -> dict[str, list[str]]:
         if current is None or "\t" not in line:
             continue
         insn = line.split("\t", 1)[1].strip()
-        if insn.startswith("call") and f"<{callee}>" in insn:
+        if insn.startswith(("call", "jmp")) and f"<{callee}>" in insn:     # (a tail call jumps)
             out[current].append(previous)
         previous = insn
     return out

@@ -58,13 +58,12 @@ def cflags(cc: Sequence[str] = ("cc",)) -> list[str]:
     """The compiler flags of every library (the core's, see docs/architecture.md).
 
     With GCC, -fno-ipa-ra: where interprocedural register allocation knows a
-    local callee uses no SSE register, GCC (12 and 13 at least) emits no
-    vzeroupper before the call from AVX code, yet takes the upper halves as
-    clean after it, so the function returns without one too, and the baseline
-    code that runs next (SSE) pays for the dirty halves on each instruction:
-    blended_quads' flat blended spans took 35% longer in the fixed build.
-    Without the flag each such call gets its vzeroupper; the instruction counts
-    stay within 0.1%."""
+    local callee uses no SSE register, GCC 12 emits no vzeroupper before the
+    call from AVX code, yet takes the upper halves as clean after it, so the
+    function returns without one too, and the baseline code that runs next
+    (SSE) pays for the dirty halves on its vector instructions: blended_quads
+    took about 35% longer in the fixed build. Without the flag each such call
+    gets its vzeroupper; the instruction counts stay within 0.1%."""
     extra = _extra()
     opt = [] if any(f.startswith("-O") for f in extra) else ["-O3"]
     gcc = ["-fno-ipa-ra"] if _is_gcc(tuple(cc)) else []
