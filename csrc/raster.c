@@ -180,8 +180,9 @@ ClipRect raster_clip_rect(const GlesContext *ctx)
 /* the biased edge values at the box's first centre */
 static void scan_first(const TriSetup *t, const int tie[3], const ClipRect *box, int64_t r[3])
 {
+    tri_edges_at(t, box->x0, box->y0, r);
     for (int i = 0; i < 3; i++)
-        r[i] = t->ea[i] * box->x0 + t->eb[i] * box->y0 + t->ec[i] + tie[i] - 1;
+        r[i] += tie[i] - 1;
 }
 
 /* row py's run from its mask of covered centres, kept where it is not
@@ -240,15 +241,14 @@ static int scan_runs_avx2(const TriSetup *t, const int tie[3], const ClipRect *b
 {
     const int width = (int)(box->x1 - box->x0 + 1);
     const uint32_t in_row = (uint32_t)(((uint64_t)1 << width) - 1);
-    __m256i lane[3], step[3], down[3], row[3];
+    __m256i step[3], down[3], row[3];
     int64_t r[3];
     scan_first(t, tie, box, r);
     for (int i = 0; i < 3; i++) {
         const int64_t a = t->ea[i];
-        lane[i] = _mm256_setr_epi64x(0, a, 2 * a, 3 * a);
+        row[i] = _mm256_add_epi64(_mm256_set1_epi64x(r[i]), _mm256_setr_epi64x(0, a, 2 * a, 3 * a));
         step[i] = _mm256_set1_epi64x(4 * a);
         down[i] = _mm256_set1_epi64x(t->eb[i]);
-        row[i] = _mm256_add_epi64(_mm256_set1_epi64x(r[i]), lane[i]);
     }
     int m = 0;
     for (int64_t py = box->y0; py <= box->y1; py++) {

@@ -27,6 +27,13 @@ struct TriSetup {
     uint32_t flat_packed;   /* the same in the framebuffer's format */
 };
 
+/* the three edge values E_i at pixel (x, y) */
+static inline void tri_edges_at(const TriSetup *t, int64_t x, int64_t y, int64_t e[3])
+{
+    for (int i = 0; i < 3; i++)
+        e[i] = t->ea[i] * x + t->eb[i] * y + t->ec[i];
+}
+
 /* unit u's s and t at the three vertices (0 where u < 0: no unit) */
 static inline void span_unit_st(const TriSetup *t, int u, NUM s[3], NUM tt[3])
 {

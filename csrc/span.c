@@ -108,8 +108,7 @@ void fragment_from_setup(GlesContext *ctx, const TriSetup *t, const int64_t e[3]
 static void span_generic(GlesContext *ctx, const TriSetup *t, int y, int x0, int n)
 {
     int64_t e[3];
-    for (int i = 0; i < 3; i++)
-        e[i] = t->ea[i] * x0 + t->eb[i] * y + t->ec[i];
+    tri_edges_at(t, x0, y, e);
     for (int k = 0; k < n; k++, e[0] += t->ea[0], e[1] += t->ea[1], e[2] += t->ea[2])
         fragment_from_setup(ctx, t, e, x0 + k, y, FRAG_ONE, NULL, NULL, NULL);
 }

@@ -843,8 +843,7 @@ static void run(GlesContext *ctx, const SpanStage *stages, int count, const TriS
         b.lanes = 0;
         memcpy(b.k, span_offsets, SPAN_CHUNK);
         if (t)
-            for (int i = 0; i < 3; i++)
-                b.e0[i] = t->ea[i] * b.x0 + t->eb[i] * y + t->ec[i];
+            tri_edges_at(t, b.x0, y, b.e0);
         for (int i = 0; i < count && b.n > 0; i++)
             stages[i](ctx, t, &b);
     }

@@ -105,8 +105,7 @@ static inline __attribute__((always_inline)) void SPAN_FN(span_fused)(GlesContex
     uint32_t *zb = depth ? ctx->depth + (size_t)y * (size_t)ctx->width + x0 : NULL;
     const uint32_t zmax = ctx->depth_max;
     int64_t e[3];
-    for (int i = 0; i < 3; i++)
-        e[i] = t->ea[i] * x0 + t->eb[i] * y + t->ec[i];
+    tri_edges_at(t, x0, y, e);
 #if NUM_IS_FIXED
     if (smooth && SPAN_FN(span_smooth_stepped)(ctx, t, e, dst, zb, n, depth, blend))
         return;
