@@ -109,7 +109,9 @@ static int scratch_alloc(GlesContext *c, int width)
     c->fused_setup = aligned_alloc(64, GLES_FUSED_SETUP_BYTES);
     _Static_assert(GLES_TESTS_SETUP_BYTES % 64 == 0, "aligned_alloc takes a multiple of the alignment");
     c->tests_setup = aligned_alloc(64, GLES_TESTS_SETUP_BYTES);
-    return c->rect_s && c->fused_setup && c->tests_setup;
+    _Static_assert(GLES_PERSP_SETUP_BYTES % 64 == 0, "aligned_alloc takes a multiple of the alignment");
+    c->persp_setup = aligned_alloc(64, GLES_PERSP_SETUP_BYTES);
+    return c->rect_s && c->fused_setup && c->tests_setup && c->persp_setup;
 }
 
 static void scratch_free(GlesContext *c)
@@ -117,6 +119,7 @@ static void scratch_free(GlesContext *c)
     free(c->rect_s);
     free(c->fused_setup);
     free(c->tests_setup);
+    free(c->persp_setup);
 }
 
 GlesContext *gles_context_create(int width, int height, int color_format,

@@ -450,7 +450,7 @@ static void raster_band_take(const GlesContext *ctx, GlesContext *c, int index)
 ** worker they hold zeros, so a read would show in tests/test_threads.py) */
 static void worker_prepare(const GlesContext *ctx, GlesContext *w, int index)
 {
-    void *fused = w->fused_setup, *tests = w->tests_setup;
+    void *fused = w->fused_setup, *tests = w->tests_setup, *persp = w->persp_setup;
     TEXC *rect_s = w->rect_s;
     const size_t skip0 = offsetof(GlesContext, modelview), skip1 = offsetof(GlesContext, current_palette),
                  tail = offsetof(GlesContext, unorm8);
@@ -458,8 +458,9 @@ static void worker_prepare(const GlesContext *ctx, GlesContext *w, int index)
     memcpy((char *)w + skip1, (const char *)ctx + skip1, tail - skip1);
     w->fused_setup = fused;
     w->tests_setup = tests;
+    w->persp_setup = persp;
     w->rect_s = rect_s;
-    w->fused_serial = w->smooth_serial = w->tests_serial = 0;
+    w->fused_serial = w->smooth_serial = w->tests_serial = w->persp_serial = 0;
     w->flat_cache_format = -1;
     w->pool = NULL;
     w->worker_ctx = NULL;

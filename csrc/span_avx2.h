@@ -215,6 +215,21 @@ AVX2_INLINE void avx2_texel_words8(const void *texels, int w, int64_t total, __m
     g[2] = _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r1, xa), 4);
     g[3] = _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r1, xb), 4);
 }
+
+/* avx2_linear_axis8's constants of an axis 2^L texels wide (a kernel that
+** keeps them per primitive reads them from memory in its loop) */
+typedef struct Avx2Axis {
+    __m256i half, top;          /* 2^(31 - L) and 2^L - 1 in every lane */
+    __m128i to_index, up;       /* the shift counts 32 - L and L */
+} Avx2Axis;
+
+AVX2_INLINE void avx2_axis_setup(int log2n, Avx2Axis *ax)
+{
+    ax->half = _mm256_set1_epi32((int)(0x80000000u >> log2n));
+    ax->top = _mm256_set1_epi32((1 << log2n) - 1);
+    ax->to_index = _mm_cvtsi32_si128(32 - log2n);
+    ax->up = _mm_cvtsi32_si128(log2n);
+}
 #endif
 
 #if SIMD_X86 && NUM_IS_FIXED
@@ -517,17 +532,15 @@ AVX2_INLINE void avx2_load_st8(const TexCoord *c, __m256i *s_lo, __m256i *s_hi, 
 ** (the top L bits of g alone); CLAMP_TO_EDGE first clamps s to [-1, 2] as
 ** reduce_coord does (hi < -1 gives -1.0, hi >= 2 gives 2.0), then the
 ** indices to [0, n - 1]. */
-AVX2_INLINE void avx2_linear_axis8(__m256i lo, __m256i hi, int log2n, int repeat, __m256i *i0, __m256i *i1,
-                                   __m256i *w)
+AVX2_INLINE void avx2_linear_axis8c(__m256i lo, __m256i hi, const Avx2Axis *ax, int repeat, __m256i *i0,
+                                    __m256i *i1, __m256i *w)
 {
-    const __m128i to_index = _mm_cvtsi32_si128(32 - log2n), up = _mm_cvtsi32_si128(log2n);
-    const __m256i half = _mm256_set1_epi32((int)(0x80000000u >> log2n));
-    const int n = 1 << log2n;
+    const __m128i to_index = ax->to_index, up = ax->up;
+    const __m256i half = ax->half, top = ax->top;
     if (repeat) {
         const __m256i g = _mm256_sub_epi32(lo, half);
-        const __m256i mask = _mm256_set1_epi32(n - 1);
-        *i0 = _mm256_and_si256(_mm256_srl_epi32(g, to_index), mask);
-        *i1 = _mm256_and_si256(_mm256_add_epi32(*i0, _mm256_set1_epi32(1)), mask);
+        *i0 = _mm256_and_si256(_mm256_srl_epi32(g, to_index), top);
+        *i1 = _mm256_and_si256(_mm256_add_epi32(*i0, _mm256_set1_epi32(1)), top);
         *w = _mm256_srli_epi32(_mm256_sll_epi32(g, up), 16);
         return;
     }
@@ -540,10 +553,19 @@ AVX2_INLINE void avx2_linear_axis8(__m256i lo, __m256i hi, int log2n, int repeat
     const __m256i borrow = _mm256_cmpgt_epi32(_mm256_xor_si256(half, sign), _mm256_xor_si256(lo, sign));   /* -1 */
     const __m256i ip = _mm256_add_epi32(_mm256_sll_epi32(_mm256_add_epi32(hi, borrow), up),
                                         _mm256_srl_epi32(g, to_index));
-    const __m256i zero = _mm256_setzero_si256(), top = _mm256_set1_epi32(n - 1);
+    const __m256i zero = _mm256_setzero_si256();
     *i0 = _mm256_min_epi32(_mm256_max_epi32(ip, zero), top);
     *i1 = _mm256_min_epi32(_mm256_max_epi32(_mm256_add_epi32(ip, _mm256_set1_epi32(1)), zero), top);
     *w = _mm256_srli_epi32(_mm256_sll_epi32(g, up), 16);
+}
+
+/* the same with the constants of an axis 2^log2n texels wide formed here */
+AVX2_INLINE void avx2_linear_axis8(__m256i lo, __m256i hi, int log2n, int repeat, __m256i *i0, __m256i *i1,
+                                   __m256i *w)
+{
+    Avx2Axis ax;
+    avx2_axis_setup(log2n, &ax);
+    avx2_linear_axis8c(lo, hi, &ax, repeat, i0, i1, w);
 }
 
 /* the four texels and the weights of sample_level's GL_LINEAR for the
@@ -552,13 +574,14 @@ AVX2_INLINE void avx2_linear_axis8(__m256i lo, __m256i hi, int log2n, int repeat
 ** (i1, j0), (i0, j1), (i1, j1), *a and *b the 16-bit weights along s and t;
 ** with `rows`, by avx2_row_texels8 where it applies (magnified levels: a
 ** minified one's columns spread too far for it to pay its test) */
-AVX2_INLINE void avx2_linear_texels8(const int *tx32, int log2w, int log2h, const TexCoord *c, int repeat_s,
-                                     int repeat_t, int rows, __m256i g[4], __m256i *a, __m256i *b)
+AVX2_INLINE void avx2_linear_texels8c(const int *tx32, int log2w, int log2h, const Avx2Axis *ax_s,
+                                      const Avx2Axis *ax_t, const TexCoord *c, int repeat_s, int repeat_t, int rows,
+                                      __m256i g[4], __m256i *a, __m256i *b)
 {
     __m256i s_lo, s_hi, t_lo, t_hi, xa, xb, ya, yb;
     avx2_load_st8(c, &s_lo, &s_hi, &t_lo, &t_hi);
-    avx2_linear_axis8(s_lo, s_hi, log2w, repeat_s, &xa, &xb, a);
-    avx2_linear_axis8(t_lo, t_hi, log2h, repeat_t, &ya, &yb, b);
+    avx2_linear_axis8c(s_lo, s_hi, ax_s, repeat_s, &xa, &xb, a);
+    avx2_linear_axis8c(t_lo, t_hi, ax_t, repeat_t, &ya, &yb, b);
     if (rows && avx2_row_texels8(tx32, (int64_t)1 << log2w, (int64_t)1 << (log2w + log2h), xa, xb, ya, yb, g))
         return;
     const __m256i r0 = _mm256_slli_epi32(ya, log2w), r1 = _mm256_slli_epi32(yb, log2w);
@@ -573,6 +596,16 @@ AVX2_INLINE void avx2_linear_texels8(const int *tx32, int log2w, int log2h, cons
         g[2] = _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r1, xa), 4);
         g[3] = _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r1, xb), 4);
     }
+}
+
+/* the same with the axes' constants formed here */
+AVX2_INLINE void avx2_linear_texels8(const int *tx32, int log2w, int log2h, const TexCoord *c, int repeat_s,
+                                     int repeat_t, int rows, __m256i g[4], __m256i *a, __m256i *b)
+{
+    Avx2Axis ax_s, ax_t;
+    avx2_axis_setup(log2w, &ax_s);
+    avx2_axis_setup(log2h, &ax_t);
+    avx2_linear_texels8c(tx32, log2w, log2h, &ax_s, &ax_t, c, repeat_s, repeat_t, rows, g, a, b);
 }
 
 /* sample_level's GL_LINEAR of a power-of-two level for fragments 0..n-1
@@ -2150,6 +2183,7 @@ static inline int avx2_pad_group(int group, int n, uint8_t *k, WGT (*p)[3], int 
 ** (texture_span_sample_group > 1), and the span sampler that gives the
 ** exact texel of a fragment the lanes leave */
 typedef struct ModWriteTexture {
+    Avx2Axis ax_s, ax_t;        /* level 0's axes (avx2_linear_texels8c) */
     const Texture *tex;
     TexSpanSampler sampler;
     const FRAGV *unorm8;
@@ -2179,6 +2213,8 @@ static inline void modwrite_texture_setup(ModWriteTexture *m, const Texture *t, 
     m->h = l0->height;
     m->log2w = __builtin_ctz((unsigned)l0->width);
     m->log2h = __builtin_ctz((unsigned)l0->height);
+    avx2_axis_setup(m->log2w, &m->ax_s);
+    avx2_axis_setup(m->log2h, &m->ax_t);
     m->repeat_s = t->wrap_s == GL_REPEAT;
     m->repeat_t = t->wrap_t == GL_REPEAT;
 }
@@ -2594,8 +2630,8 @@ AVX2_INLINE int avx2_modwrite_texels8(const ModWriteTexture *tx, int src, const 
     if (src == 0)
         return avx2_texels_ct8(ct, stride, half_rgb, T);
     __m256i g[4], a, b;
-    avx2_linear_texels8((const int *)(const void *)tx->texels, tx->log2w, tx->log2h, tc, tx->repeat_s, tx->repeat_t, 1,
-                        g, &a, &b);
+    avx2_linear_texels8c((const int *)(const void *)tx->texels, tx->log2w, tx->log2h, &tx->ax_s, &tx->ax_t, tc,
+                         tx->repeat_s, tx->repeat_t, 1, g, &a, &b);
     avx2_bilerp8_float(g, a, b, half_rgb, T);
     return 1;
 }
@@ -2636,10 +2672,10 @@ AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *restrict m, const FRAGV *
     uint16_t *dst16 = dst;
     FRAGV tmp[4], tmp0[4];
     /* the first unit's texels (DOT3): from ct0, or sampled at tc0 */
-    const ModWriteDot3 d3 = dot3 ? *m->dot3 : (ModWriteDot3){ 0 };
-    const int src0 = d3.tc0 != NULL;
+    const ModWriteDot3 *const d3 = m->dot3;     /* (read only with dot3) */
+    const int src0 = dot3 && d3->tc0 != NULL;
 #define MODWRITE_T0(i) \
-    (dot3 ? avx2_modwrite_texel1(&d3.tx0, src0, modwrite_ct0(&d3, i), modwrite_tc0(&d3, i), tmp0) : NULL)
+    (dot3 ? avx2_modwrite_texel1(&d3->tx0, src0, modwrite_ct0(d3, i), modwrite_tc0(d3, i), tmp0) : NULL)
 #define MODWRITE_EXACT(i, d) \
     (rgb565 ? avx2_modwrite565_1(m, a, smooth, kind, p[i], MODWRITE_T0(i), \
                                  avx2_modwrite_texel1(&m->tx, src, ct + (size_t)(i) * stride, tc + (i), tmp), \
@@ -2676,7 +2712,7 @@ AVX2_INLINE void avx2_modwrite_run(const Avx2ModWrite *restrict m, const FRAGV *
         unsigned bad = 0xFFu;
         if (avx2_modwrite_texels8(&m->tx, src, ct + (size_t)j * stride, stride, tc + j, 0, T)
             && (!dot3
-                || avx2_modwrite_texels8(&d3.tx0, src0, modwrite_ct0(&d3, j), d3.ct0_stride, modwrite_tc0(&d3, j),
+                || avx2_modwrite_texels8(&d3->tx0, src0, modwrite_ct0(d3, j), d3->ct0_stride, modwrite_tc0(d3, j),
                                          1, T0))) {
             const __m256i x3 = _mm256_and_si256(_mm256_add_epi32(idx, _mm256_set1_epi32(x0)), _mm256_set1_epi32(3));
             bad = rgb565 ? avx2_modwrite565_8(m, smooth, kind, dot3, &p[j], T0, T, d, x3, &w)

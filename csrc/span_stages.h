@@ -37,19 +37,69 @@ static inline int STAGE(persp4)(const WgtSetup *ws, const __m256i e[3], WGT (*p)
 #endif
 
 #if CHAIN_SIMD && NUM_IS_FIXED
-/* STAGE(persp_affine_run)'s loop over groups of four slots to n4 from the
-** running sums of edges 1 and 2 (lanes = four slots) and their step: the
-** weights, unit u's coordinates into b->tc (units >= 1) and unit v's
-** into b->tx (units == 2) */
-static inline __attribute__((always_inline)) void STAGE(persp_affine_loop)(const TriSetup *t, SpanBuf *b, int n4,
-                                                                          __m256i sum1, __m256i sum2,
-                                                                          __m256i step1, __m256i step2, int u,
-                                                                          int v, const int units)
+/* STAGE(persp_affine_run)'s constants of a primitive, formed by
+** STAGE(persp_affine_setup) for its first chunk and kept in the context
+** (ctx->persp_setup) for the rest: a triangle of small rows would form them
+** again for every row, in more instructions than the row's weights */
+typedef struct PerspAffine {
+    __m256i st[2][2][3];    /* unit u's (0) and v's (1) s and t at the three vertices, broadcast */
+    __m256i step[2];        /* edges 1 and 2's sums' step from one group of four slots to the next */
+    __m256i lane_ea[2];     /* k ea_i in lane k (0..3) */
+    __m256i r_lo, r_hi;     /* lin_recip's low and high 32 bits, in every lane */
+    int ok;                 /* the triangle's conditions for the run (below) hold */
+    int u, v;               /* the units whose coordinates the run forms into b->tc and b->tx, else -1 */
+} PerspAffine;
+_Static_assert(sizeof(PerspAffine) <= GLES_PERSP_SETUP_BYTES, "the context has room for the setup");
+
+/* a triangle's PerspAffine, with unit u's coordinates into b->tc (u >= 0:
+** an affine unit) and unit v's (v >= 0, with u) into b->tx. The run
+** applies where the triangle is affine and the step of four slots, 4 ea_i,
+** is a multiple of 2^eshift on both edges (STAGE(persp_affine_run)) */
+static void STAGE(persp_affine_setup)(const TriSetup *t, int u, int v, PerspAffine *pa)
 {
-    NUM sv[3], tv[3], sv2[3], tv2[3];
-    span_unit_st(t, units >= 1 ? u : -1, sv, tv);
-    span_unit_st(t, units == 2 ? v : -1, sv2, tv2);
-    const __m256i one = _mm256_set1_epi64x(WGT_ONE);
+    const WgtSetup *ws = &t->wgt;
+    const int sh = ws->eshift;
+    pa->ok = ws->affine && ws->lin_recip >= 0 && sh <= 62 && !(u < 0 && v >= 0);
+    pa->u = u, pa->v = v;
+    if (!pa->ok)
+        return;
+    const uint64_t r = (uint64_t)ws->lin_recip;
+    for (int i = 1; i < 3; i++) {
+        const int64_t ea = t->ea[i], e4 = 4 * ea;
+        pa->ok &= !(e4 & (((int64_t)1 << sh) - 1));
+        pa->step[i - 1] = _mm256_set1_epi64x((int64_t)((uint64_t)(e4 >> sh) * r));
+        pa->lane_ea[i - 1] = _mm256_setr_epi64x(0, ea, 2 * ea, 3 * ea);
+    }
+    pa->r_lo = _mm256_set1_epi64x((int64_t)(r & 0xFFFFFFFFu));
+    pa->r_hi = _mm256_set1_epi64x((int64_t)(r >> 32));
+    const int unit[2] = { u, v };
+    for (int c = 0; c < 2; c++) {
+        NUM sv[3], tv[3];
+        span_unit_st(t, unit[c], sv, tv);
+        for (int i = 0; i < 3; i++) {
+            pa->st[c][0][i] = _mm256_set1_epi64x(sv[i]);
+            pa->st[c][1][i] = _mm256_set1_epi64x(tv[i]);
+        }
+    }
+}
+
+/* texc_lerp3 of one coordinate for four fragments (lanes) whose weights
+** are w, from the vertex values a[0..2] broadcast: avx2_texc_lerp3x4's lanes */
+AVX2_INLINE __m256i avx2_texc_lerp3x4v(const __m256i a[3], const __m256i w[3])
+{
+    const __m256i sum = _mm256_add_epi64(_mm256_add_epi64(_mm256_mul_epi32(a[0], w[0]), _mm256_mul_epi32(a[1], w[1])),
+                                         _mm256_mul_epi32(a[2], w[2]));
+    return avx2_round_shift(sum, 14);
+}
+
+/* STAGE(persp_affine_run)'s loop over groups of four slots to n4 from the
+** running sums of edges 1 and 2 (lanes = four slots): the weights, and
+** the coordinates of `units` units (pa->u's into b->tc, pa->v's into b->tx) */
+static inline __attribute__((always_inline)) void STAGE(persp_affine_loop)(const PerspAffine *restrict pa,
+                                                                          SpanBuf *b, int n4, __m256i sum1,
+                                                                          __m256i sum2, const int units)
+{
+    const __m256i one = _mm256_set1_epi64x(WGT_ONE), step1 = pa->step[0], step2 = pa->step[1];
     WGT (*const p)[3] = b->p;
     TexCoord *const tc = b->tc, *const tx = b->tx;
     for (int j = 0; j < n4; j += 4) {
@@ -59,62 +109,56 @@ static inline __attribute__((always_inline)) void STAGE(persp_affine_loop)(const
         l[0] = _mm256_sub_epi64(_mm256_sub_epi64(one, l[1]), l[2]);
         avx2_store_wgt4(l, &p[j]);
         if (units >= 1)
-            avx2_store_st4(avx2_texc_lerp3x4(sv, l), avx2_texc_lerp3x4(tv, l), &tc[j]);
+            avx2_store_st4(avx2_texc_lerp3x4v(pa->st[0][0], l), avx2_texc_lerp3x4v(pa->st[0][1], l), &tc[j]);
         if (units == 2)
-            avx2_store_st4(avx2_texc_lerp3x4(sv2, l), avx2_texc_lerp3x4(tv2, l), &tx[j]);
+            avx2_store_st4(avx2_texc_lerp3x4v(pa->st[1][0], l), avx2_texc_lerp3x4v(pa->st[1][1], l), &tx[j]);
         sum1 = _mm256_add_epi64(sum1, step1);
         sum2 = _mm256_add_epi64(sum2, step2);
     }
 }
-#endif
 
-#if CHAIN_SIMD && NUM_IS_FIXED
 /* wgt_linear of an affine triangle's slots 0..n-1 when they are offsets
 ** (k[j] = j: no test has dropped a fragment): l_i = (q_i R + 2^30) >> 31
 ** with q_i = e_i >> eshift and e_i = e0_i + j ea_i. From one group of four
-** to the next e_i grows by 4 ea_i, a multiple of 2^eshift wherever eshift
-** <= 10 (ea_i is a multiple of 2^8 and 4 ea_i of 2^10; eshift is at most
-** 10 below MAX_VIEWPORT_DIMS 4096, the rest is left to stage_persp), so q_i
+** to the next e_i grows by 4 ea_i, a multiple of 2^eshift (pa->ok), so q_i
 ** grows by 4 ea_i >> eshift and the sum by that times R. Sums are kept mod
 ** 2^64, so each is the scalar code's value wherever that fits int64 (as
 ** avx2_linear4v's products are). The kernels' range, 0 <= e_i and q_i <
 ** 2^31, holds at every slot when it holds at the first and the last (e_i
-** is linear in j). Unit u's s and t (u >= 0: an affine unit) are formed
-** from the same lanes as stage_fetch forms them from the stored weights
-** (avx2_tex_coord_affine4 reads a weight's int32, the lane's low dword),
-** into b->tc, and unit v's (v >= 0, with u) into b->tx. A last group of
-** fewer than four slots is formed whole: the slots past n are free, and
-** what lands there (the sums' continuation, in or out of the range) is
-** never read. Returns the slots done (n), or 0 where it does not apply. */
-static int STAGE(persp_affine_run)(const TriSetup *t, SpanBuf *b, int u, int v)
+** is linear in j); there the first four lanes' q_i R is q_i R_lo + (q_i R_hi
+** << 32) mod 2^64, two vpmuludq. The units' coordinates (pa->u, pa->v) are
+** formed from the same lanes as stage_fetch forms them from the stored
+** weights (avx2_tex_coord_affine4 reads a weight's int32, the lane's low
+** dword). A last group of fewer than four slots is formed whole: the slots
+** past n are free, and what lands there (the sums' continuation, in or out
+** of the range, from a lane past n that may be negative) is never read.
+** Returns the slots done (n), or 0 where it does not apply. */
+static int STAGE(persp_affine_run)(const PerspAffine *pa, const TriSetup *t, SpanBuf *b)
 {
     _Static_assert(SPAN_CHUNK % 4 == 0, "a last group rounded up to four stays within the chunk");
-    const WgtSetup *ws = &t->wgt;
-    const int n = b->n, sh = ws->eshift;
-    if (!ws->affine || ws->lin_recip < 0 || sh > 62 || n < 1 || b->k[n - 1] != n - 1 || (u < 0 && v >= 0))
+    const int n = b->n, sh = t->wgt.eshift;
+    if (!pa->ok || n < 1 || b->k[n - 1] != n - 1)
         return 0;
-    const uint64_t r = (uint64_t)ws->lin_recip, half = (uint64_t)1 << 30;
-    __m256i sum[3], step[3];
-    for (int i = 1; i < 3; i++) {
-        const int64_t first = b->e0[i], last = b->e0[i] + t->ea[i] * (n - 1), e4 = 4 * t->ea[i];
-        if (first < 0 || last < 0 || (first >> sh) > INT32_MAX || (last >> sh) > INT32_MAX
-            || (e4 & (((int64_t)1 << sh) - 1)))
+    const __m128i shift = _mm_cvtsi32_si128(sh);
+    const __m256i half = _mm256_set1_epi64x((int64_t)1 << 30);
+    __m256i sum[2];
+    for (int i = 0; i < 2; i++) {
+        const int64_t first = b->e0[i + 1], last = first + t->ea[i + 1] * (n - 1);
+        if (first < 0 || last < 0 || (first >> sh) > INT32_MAX || (last >> sh) > INT32_MAX)
             return 0;
-        step[i] = _mm256_set1_epi64x((int64_t)((uint64_t)(e4 >> sh) * r));
-        /* the line's values (a slot past n may lie past the triangle) */
-        uint64_t s4[4];
-        for (int k = 0; k < 4; k++)
-            s4[k] = (uint64_t)((first + t->ea[i] * k) >> sh) * r + half;
-        sum[i] = _mm256_setr_epi64x((int64_t)s4[0], (int64_t)s4[1], (int64_t)s4[2], (int64_t)s4[3]);
+        const __m256i q = _mm256_srl_epi64(_mm256_add_epi64(_mm256_set1_epi64x(first), pa->lane_ea[i]), shift);
+        sum[i] = _mm256_add_epi64(_mm256_add_epi64(_mm256_mul_epu32(q, pa->r_lo),
+                                                   _mm256_slli_epi64(_mm256_mul_epu32(q, pa->r_hi), 32)),
+                                  half);
     }
     const int n4 = (n + 3) & ~3;
     /* the loop's instances: the units' coordinates asked for */
-    if (u < 0)
-        STAGE(persp_affine_loop)(t, b, n4, sum[1], sum[2], step[1], step[2], u, v, 0);
-    else if (v < 0)
-        STAGE(persp_affine_loop)(t, b, n4, sum[1], sum[2], step[1], step[2], u, v, 1);
+    if (pa->u < 0)
+        STAGE(persp_affine_loop)(pa, b, n4, sum[0], sum[1], 0);
+    else if (pa->v < 0)
+        STAGE(persp_affine_loop)(pa, b, n4, sum[0], sum[1], 1);
     else
-        STAGE(persp_affine_loop)(t, b, n4, sum[1], sum[2], step[1], step[2], u, v, 2);
+        STAGE(persp_affine_loop)(pa, b, n4, sum[0], sum[1], 2);
     return n;
 }
 #endif
@@ -228,7 +272,16 @@ static void STAGE(stage_persp)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
         return;
 #endif
 #if NUM_IS_FIXED
-    j = STAGE(persp_affine_run)(t, b, coords ? u : -1, coords_tx ? v : -1);
+    /* the run's constants, once per primitive (the debug entry, without a
+    ** context, forms them for its chunk) */
+    PerspAffine local;
+    PerspAffine *pa = ctx ? ctx->persp_setup : &local;
+    if (!ctx || ctx->persp_serial != t->serial) {
+        STAGE(persp_affine_setup)(t, coords ? u : -1, coords_tx ? v : -1, pa);
+        if (ctx)
+            ctx->persp_serial = t->serial;
+    }
+    j = STAGE(persp_affine_run)(pa, t, b);
 #else
     j = STAGE(persp_affine_steps)(t, b, coords ? u : -1, coords_tx ? v : -1, ctx && ctx_simd(ctx) >= SIMD_AVX512);
 #endif

@@ -20,7 +20,8 @@
 ** limits (each at or above the spec's minimum, Tables 6.20-6.22) */
 #define GLES_MAX_TEXTURE_UNITS 4
 /* room for the fused span stage's per-triangle constants (Avx2ModWrite) */
-#define GLES_FUSED_SETUP_BYTES 1536
+#define GLES_FUSED_SETUP_BYTES 2048
+#define GLES_PERSP_SETUP_BYTES 640
 /* room for the stencil and depth tests' per-primitive setup (Avx2TestsSetup) */
 #define GLES_TESTS_SETUP_BYTES 1024
 /* fragments of one flat colour's blend before its table is built: building
@@ -466,6 +467,11 @@ struct GlesContext {
     ** of serial tests_serial (0: none), GLES_TESTS_SETUP_BYTES, 64-byte aligned */
     uint64_t tests_serial;
     void *tests_setup;
+    /* the stepped weights' constants (span_stages.h's PerspAffine) of the
+    ** primitive of serial persp_serial (0: none), GLES_PERSP_SETUP_BYTES,
+    ** 64-byte aligned */
+    uint64_t persp_serial;
+    void *persp_setup;
 
     unsigned int error;
     char message[256];
