@@ -95,7 +95,7 @@ AVX2_INLINE __m256i avx2_texc_lerp3x4v(const __m256i a[3], const __m256i w[3])
 /* STAGE(persp_affine_run)'s loop over groups of four slots to n4 from the
 ** running sums of edges 1 and 2 (lanes = four slots): the weights, and
 ** the coordinates of `units` units (pa->u's into b->tc, pa->v's into b->tx) */
-static inline __attribute__((always_inline)) void STAGE(persp_affine_loop)(const PerspAffine *restrict pa,
+static inline __attribute__((always_inline)) void STAGE(persp_affine_loop)(const PerspAffine *pa,
                                                                           SpanBuf *b, int n4, __m256i sum1,
                                                                           __m256i sum2, const int units)
 {
