@@ -531,12 +531,11 @@ AVX2_INLINE void avx2_load_st8(const TexCoord *c, __m256i *s_lo, __m256i *s_hi, 
 ** is bits 16..31 of g << L, the 64-bit form's bits. REPEAT keeps i0 mod n
 ** (the top L bits of g alone); CLAMP_TO_EDGE first clamps s to [-1, 2] as
 ** reduce_coord does (hi < -1 gives -1.0, hi >= 2 gives 2.0), then the
-** indices to [0, n - 1]. */
-AVX2_INLINE void avx2_linear_axis8c(__m256i lo, __m256i hi, const Avx2Axis *ax, int repeat, __m256i *i0,
-                                    __m256i *i1, __m256i *w)
+** indices to [0, n - 1]. half, top, to_index and up are the axis'
+** Avx2Axis values. */
+AVX2_INLINE void avx2_linear_axis8v(__m256i lo, __m256i hi, __m256i half, __m256i top, __m128i to_index, __m128i up,
+                                    int repeat, __m256i *i0, __m256i *i1, __m256i *w)
 {
-    const __m128i to_index = ax->to_index, up = ax->up;
-    const __m256i half = ax->half, top = ax->top;
     if (repeat) {
         const __m256i g = _mm256_sub_epi32(lo, half);
         *i0 = _mm256_and_si256(_mm256_srl_epi32(g, to_index), top);
@@ -559,29 +558,26 @@ AVX2_INLINE void avx2_linear_axis8c(__m256i lo, __m256i hi, const Avx2Axis *ax, 
     *w = _mm256_srli_epi32(_mm256_sll_epi32(g, up), 16);
 }
 
-/* the same with the constants of an axis 2^log2n texels wide formed here */
+/* the same with an axis' constants ax (Avx2Axis) */
+AVX2_INLINE void avx2_linear_axis8c(__m256i lo, __m256i hi, const Avx2Axis *ax, int repeat, __m256i *i0,
+                                    __m256i *i1, __m256i *w)
+{
+    avx2_linear_axis8v(lo, hi, ax->half, ax->top, ax->to_index, ax->up, repeat, i0, i1, w);
+}
+
+/* the same on an axis 2^log2n texels wide */
 AVX2_INLINE void avx2_linear_axis8(__m256i lo, __m256i hi, int log2n, int repeat, __m256i *i0, __m256i *i1,
                                    __m256i *w)
 {
-    Avx2Axis ax;
-    avx2_axis_setup(log2n, &ax);
-    avx2_linear_axis8c(lo, hi, &ax, repeat, i0, i1, w);
+    avx2_linear_axis8v(lo, hi, _mm256_set1_epi32((int)(0x80000000u >> log2n)), _mm256_set1_epi32((1 << log2n) - 1),
+                       _mm_cvtsi32_si128(32 - log2n), _mm_cvtsi32_si128(log2n), repeat, i0, i1, w);
 }
 
-/* the four texels and the weights of sample_level's GL_LINEAR for the
-** coordinates c[0..7] on a power-of-two level (2^log2w texels wide), REPEAT
-** or CLAMP_TO_EDGE on each axis: g[0..3] the texel words at (i0, j0),
-** (i1, j0), (i0, j1), (i1, j1), *a and *b the 16-bit weights along s and t;
-** with `rows`, by avx2_row_texels8 where it applies (magnified levels: a
-** minified one's columns spread too far for it to pay its test) */
-AVX2_INLINE void avx2_linear_texels8c(const int *tx32, int log2w, int log2h, const Avx2Axis *ax_s,
-                                      const Avx2Axis *ax_t, const TexCoord *c, int repeat_s, int repeat_t, int rows,
-                                      __m256i g[4], __m256i *a, __m256i *b)
+/* avx2_linear_texels8's words g[0..3] at the columns xa, xb and rows ya, yb
+** of a level 2^log2w x 2^log2h texels */
+AVX2_INLINE void avx2_linear_words8(const int *tx32, int log2w, int log2h, __m256i xa, __m256i xb, __m256i ya,
+                                    __m256i yb, int rows, __m256i g[4])
 {
-    __m256i s_lo, s_hi, t_lo, t_hi, xa, xb, ya, yb;
-    avx2_load_st8(c, &s_lo, &s_hi, &t_lo, &t_hi);
-    avx2_linear_axis8c(s_lo, s_hi, ax_s, repeat_s, &xa, &xb, a);
-    avx2_linear_axis8c(t_lo, t_hi, ax_t, repeat_t, &ya, &yb, b);
     if (rows && avx2_row_texels8(tx32, (int64_t)1 << log2w, (int64_t)1 << (log2w + log2h), xa, xb, ya, yb, g))
         return;
     const __m256i r0 = _mm256_slli_epi32(ya, log2w), r1 = _mm256_slli_epi32(yb, log2w);
@@ -598,14 +594,32 @@ AVX2_INLINE void avx2_linear_texels8c(const int *tx32, int log2w, int log2h, con
     }
 }
 
-/* the same with the axes' constants formed here */
+/* the four texels and the weights of sample_level's GL_LINEAR for the
+** coordinates c[0..7] on a power-of-two level (2^log2w texels wide), REPEAT
+** or CLAMP_TO_EDGE on each axis: g[0..3] the texel words at (i0, j0),
+** (i1, j0), (i0, j1), (i1, j1), *a and *b the 16-bit weights along s and t;
+** with `rows`, by avx2_row_texels8 where it applies (magnified levels: a
+** minified one's columns spread too far for it to pay its test) */
 AVX2_INLINE void avx2_linear_texels8(const int *tx32, int log2w, int log2h, const TexCoord *c, int repeat_s,
                                      int repeat_t, int rows, __m256i g[4], __m256i *a, __m256i *b)
 {
-    Avx2Axis ax_s, ax_t;
-    avx2_axis_setup(log2w, &ax_s);
-    avx2_axis_setup(log2h, &ax_t);
-    avx2_linear_texels8c(tx32, log2w, log2h, &ax_s, &ax_t, c, repeat_s, repeat_t, rows, g, a, b);
+    __m256i s_lo, s_hi, t_lo, t_hi, xa, xb, ya, yb;
+    avx2_load_st8(c, &s_lo, &s_hi, &t_lo, &t_hi);
+    avx2_linear_axis8(s_lo, s_hi, log2w, repeat_s, &xa, &xb, a);
+    avx2_linear_axis8(t_lo, t_hi, log2h, repeat_t, &ya, &yb, b);
+    avx2_linear_words8(tx32, log2w, log2h, xa, xb, ya, yb, rows, g);
+}
+
+/* the same with the axes' constants ax_s and ax_t (Avx2Axis) */
+AVX2_INLINE void avx2_linear_texels8c(const int *tx32, int log2w, int log2h, const Avx2Axis *ax_s,
+                                      const Avx2Axis *ax_t, const TexCoord *c, int repeat_s, int repeat_t, int rows,
+                                      __m256i g[4], __m256i *a, __m256i *b)
+{
+    __m256i s_lo, s_hi, t_lo, t_hi, xa, xb, ya, yb;
+    avx2_load_st8(c, &s_lo, &s_hi, &t_lo, &t_hi);
+    avx2_linear_axis8c(s_lo, s_hi, ax_s, repeat_s, &xa, &xb, a);
+    avx2_linear_axis8c(t_lo, t_hi, ax_t, repeat_t, &ya, &yb, b);
+    avx2_linear_words8(tx32, log2w, log2h, xa, xb, ya, yb, rows, g);
 }
 
 /* sample_level's GL_LINEAR of a power-of-two level for fragments 0..n-1

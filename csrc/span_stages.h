@@ -272,16 +272,18 @@ static void STAGE(stage_persp)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
         return;
 #endif
 #if NUM_IS_FIXED
-    /* the run's constants, once per primitive (the debug entry, without a
-    ** context, forms them for its chunk) */
-    PerspAffine local;
-    PerspAffine *pa = ctx ? ctx->persp_setup : &local;
-    if (!ctx || ctx->persp_serial != t->serial) {
-        STAGE(persp_affine_setup)(t, coords ? u : -1, coords_tx ? v : -1, pa);
-        if (ctx)
-            ctx->persp_serial = t->serial;
+    if (t->wgt.affine) {
+        /* the run's constants, once per primitive (the debug entry, without
+        ** a context, forms them for its chunk) */
+        PerspAffine local;
+        PerspAffine *pa = ctx ? ctx->persp_setup : &local;
+        if (!ctx || ctx->persp_serial != t->serial) {
+            STAGE(persp_affine_setup)(t, coords ? u : -1, coords_tx ? v : -1, pa);
+            if (ctx)
+                ctx->persp_serial = t->serial;
+        }
+        j = STAGE(persp_affine_run)(pa, t, b);
     }
-    j = STAGE(persp_affine_run)(pa, t, b);
 #else
     j = STAGE(persp_affine_steps)(t, b, coords ? u : -1, coords_tx ? v : -1, ctx && ctx_simd(ctx) >= SIMD_AVX512);
 #endif
