@@ -120,8 +120,10 @@ static inline __attribute__((always_inline)) void STAGE(persp_affine_loop)(const
 /* wgt_linear of an affine triangle's slots 0..n-1 when they are offsets
 ** (k[j] = j: no test has dropped a fragment): l_i = (q_i R + 2^30) >> 31
 ** with q_i = e_i >> eshift and e_i = e0_i + j ea_i. From one group of four
-** to the next e_i grows by 4 ea_i, a multiple of 2^eshift (pa->ok), so q_i
-** grows by 4 ea_i >> eshift and the sum by that times R. Sums are kept mod
+** to the next e_i grows by 4 ea_i, a multiple of 2^eshift (pa->ok; so
+** wherever eshift <= 10, as ea_i is a multiple of 2^8 and eshift is at most
+** 10 below MAX_VIEWPORT_DIMS 4096), so q_i grows by 4 ea_i >> eshift and
+** the sum by that times R. Sums are kept mod
 ** 2^64, so each is the scalar code's value wherever that fits int64 (as
 ** avx2_linear4v's products are). The kernels' range, 0 <= e_i and q_i <
 ** 2^31, holds at every slot when it holds at the first and the last (e_i
