@@ -1238,13 +1238,12 @@ AVX2_INLINE void v4_persp4_ev(const WgtSetup *s, const V4 ev[3], WGT (*out)[3])
     v4_store_wgt4(o, out);
 }
 
-/* span_tex_coord of an affine unit (vertex values sv[i], tv[i]) at four
+/* span_tex_coord of an affine unit (vertex values sv[i], tv[i], in every lane) at four
 ** fragments' weights o (lanes): texc_lerp3's operations in its order,
 ** (a0 w0 + a1 w1) + a2 w2, stored as out[0..3] */
-AVX2_INLINE void v4_tex_coord_affine4(const NUM sv[3], const NUM tv[3], const V4 o[3], TexCoord *out)
+AVX2_INLINE void v4_tex_coord_affine4v(const V4 sv[3], const V4 tv[3], const V4 o[3], TexCoord *out)
 {
-#define V4_LERP3(a) V4_OP(add)(V4_OP(add)(V4_OP(mul)(V4_OP(set1)(a[0]), o[0]), V4_OP(mul)(V4_OP(set1)(a[1]), o[1])), \
-                               V4_OP(mul)(V4_OP(set1)(a[2]), o[2]))
+#define V4_LERP3(a) V4_OP(add)(V4_OP(add)(V4_OP(mul)(a[0], o[0]), V4_OP(mul)(a[1], o[1])), V4_OP(mul)(a[2], o[2]))
     const V4 s = V4_LERP3(sv), t = V4_LERP3(tv);
 #undef V4_LERP3
 #if defined(GLES_NUM_FLOAT)
@@ -1257,6 +1256,14 @@ AVX2_INLINE void v4_tex_coord_affine4(const NUM sv[3], const NUM tv[3], const V4
     _mm256_storeu_pd(&out[0].s, _mm256_permute2f128_pd(lo, hi, 0x20));
     _mm256_storeu_pd(&out[2].s, _mm256_permute2f128_pd(lo, hi, 0x31));
 #endif
+}
+
+/* the same with the vertex values sv[0..2], tv[0..2] */
+AVX2_INLINE void v4_tex_coord_affine4(const NUM sv[3], const NUM tv[3], const V4 o[3], TexCoord *out)
+{
+    const V4 s3[3] = { V4_OP(set1)(sv[0]), V4_OP(set1)(sv[1]), V4_OP(set1)(sv[2]) };
+    const V4 t3[3] = { V4_OP(set1)(tv[0]), V4_OP(set1)(tv[1]), V4_OP(set1)(tv[2]) };
+    v4_tex_coord_affine4v(s3, t3, o, out);
 }
 
 AVX2_INLINE V4 v4_load(const FRAGV *c) { return V4_OP(loadu)(c); }
@@ -2197,7 +2204,9 @@ static inline int avx2_pad_group(int group, int n, uint8_t *k, WGT (*p)[3], int 
 ** (texture_span_sample_group > 1), and the span sampler that gives the
 ** exact texel of a fragment the lanes leave */
 typedef struct ModWriteTexture {
-    Avx2Axis ax_s, ax_t;        /* level 0's axes (avx2_linear_texels8c) */
+#if NUM_IS_FIXED
+    Avx2Axis ax_s, ax_t;        /* level 0's axes (the fixed build's avx2_linear_texels8c) */
+#endif
     const Texture *tex;
     TexSpanSampler sampler;
     const FRAGV *unorm8;
@@ -2227,8 +2236,10 @@ static inline void modwrite_texture_setup(ModWriteTexture *m, const Texture *t, 
     m->h = l0->height;
     m->log2w = __builtin_ctz((unsigned)l0->width);
     m->log2h = __builtin_ctz((unsigned)l0->height);
+#if NUM_IS_FIXED
     avx2_axis_setup(m->log2w, &m->ax_s);
     avx2_axis_setup(m->log2h, &m->ax_t);
+#endif
     m->repeat_s = t->wrap_s == GL_REPEAT;
     m->repeat_t = t->wrap_t == GL_REPEAT;
 }

@@ -36,6 +36,33 @@ static inline int STAGE(persp4)(const WgtSetup *ws, const __m256i e[3], WGT (*p)
 }
 #endif
 
+#if CHAIN_SIMD
+/* the lanes of the stepped weights' coordinates: the fixed build's 64-bit
+** integers, the others' V4 */
+#if NUM_IS_FIXED
+typedef __m256i PerspLane;
+#define PERSP_SET1(x) _mm256_set1_epi64x(x)
+#else
+typedef V4 PerspLane;
+#define PERSP_SET1(x) v4_set1(x)
+#endif
+
+/* unit u's (0) and v's (1) s and t at the three vertices, in every lane */
+static inline void STAGE(persp_units_st)(const TriSetup *t, int u, int v, PerspLane st[2][2][3])
+{
+    const int unit[2] = { u, v };
+    for (int c = 0; c < 2; c++) {
+        NUM sv[3], tv[3];
+        span_unit_st(t, unit[c], sv, tv);
+        for (int i = 0; i < 3; i++) {
+            st[c][0][i] = PERSP_SET1(sv[i]);
+            st[c][1][i] = PERSP_SET1(tv[i]);
+        }
+    }
+}
+#undef PERSP_SET1
+#endif
+
 #if CHAIN_SIMD && NUM_IS_FIXED
 /* STAGE(persp_affine_run)'s constants of a primitive, formed by
 ** STAGE(persp_affine_setup) for its first chunk and kept in the context
@@ -72,15 +99,7 @@ static void STAGE(persp_affine_setup)(const TriSetup *t, int u, int v, PerspAffi
     }
     pa->r_lo = _mm256_set1_epi64x((int64_t)(r & 0xFFFFFFFFu));
     pa->r_hi = _mm256_set1_epi64x((int64_t)(r >> 32));
-    const int unit[2] = { u, v };
-    for (int c = 0; c < 2; c++) {
-        NUM sv[3], tv[3];
-        span_unit_st(t, unit[c], sv, tv);
-        for (int i = 0; i < 3; i++) {
-            pa->st[c][0][i] = _mm256_set1_epi64x(sv[i]);
-            pa->st[c][1][i] = _mm256_set1_epi64x(tv[i]);
-        }
-    }
+    STAGE(persp_units_st)(t, u, v, pa->st);
 }
 
 /* texc_lerp3 of one coordinate for four fragments (lanes) whose weights
@@ -205,7 +224,20 @@ static inline void STAGE(edge_steps)(const TriSetup *t, const SpanBuf *b, __m256
 ** exactness holds to the group's end, as the test covers it); with wide
 ** (AVX-512 runs) the double build's eight at a time (d8_affine_steps).
 ** Returns the slots done (n), or 0. */
-static int STAGE(persp_affine_steps)(const TriSetup *t, SpanBuf *b, int u, int v, int wide)
+/* the float and double builds' PerspAffine: STAGE(persp_affine_steps)'s
+** units' vertex coordinates in every lane, formed by an affine primitive's
+** first chunk and kept in the context (ctx->persp_setup) for the rest */
+typedef struct PerspAffine {
+    V4 st[2][2][3];     /* unit u's (0) and v's (1) s and t at the three vertices */
+} PerspAffine;
+_Static_assert(sizeof(PerspAffine) <= GLES_PERSP_SETUP_BYTES, "the context has room for the setup");
+
+static void STAGE(persp_affine_setup)(const TriSetup *t, int u, int v, PerspAffine *ps)
+{
+    STAGE(persp_units_st)(t, u, v, ps->st);
+}
+
+static int STAGE(persp_affine_steps)(const TriSetup *t, SpanBuf *b, int u, int v, const PerspAffine *ps, int wide)
 {
     _Static_assert(SPAN_CHUNK % 8 == 0, "a last group rounded up to eight stays within the chunk");
     const int n4 = (b->n + 3) & ~3;
@@ -229,22 +261,20 @@ static int STAGE(persp_affine_steps)(const TriSetup *t, SpanBuf *b, int u, int v
         return 0;
     __m256d d1, d2, step1, step2;
     STAGE(edge_steps)(t, b, &d1, &d2, &step1, &step2);
-    /* the loop's constants in locals (stores to b->p could alias t and b) */
+    /* the loop's constants in locals (stores to b->p could alias t and b);
+    ** the coordinates' read in place as operands */
     const WgtSetup ws = t->wgt;
     WGT (*const p)[3] = b->p;
     TexCoord *const tc = b->tc, *const tx = b->tx;
-    NUM sv[3], tv[3], sv2[3], tv2[3];
-    span_unit_st(t, u, sv, tv);
-    span_unit_st(t, v, sv2, tv2);
     for (int j = 0; j < n4; j += 4) {
         const V4 ev[3] = { v4_edge_num(d1), v4_edge_num(d1), v4_edge_num(d2) };
         V4 o[3];
         v4_persp4_lanes(&ws, ev, o);
         v4_store_wgt4(o, &p[j]);
         if (u >= 0)
-            v4_tex_coord_affine4(sv, tv, o, &tc[j]);
+            v4_tex_coord_affine4v(ps->st[0][0], ps->st[0][1], o, &tc[j]);
         if (v >= 0)
-            v4_tex_coord_affine4(sv2, tv2, o, &tx[j]);
+            v4_tex_coord_affine4v(ps->st[1][0], ps->st[1][1], o, &tx[j]);
         d1 = _mm256_add_pd(d1, step1);
         d2 = _mm256_add_pd(d2, step2);
     }
@@ -273,10 +303,9 @@ static void STAGE(stage_persp)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
     if (b->lanes)
         return;
 #endif
-#if NUM_IS_FIXED
     if (t->wgt.affine) {
-        /* the run's constants, once per primitive (the debug entry, without
-        ** a context, forms them for its chunk) */
+        /* the stepped weights' constants once per primitive (the debug
+        ** entry, without a context, forms them for its chunk) */
         PerspAffine local;
         PerspAffine *pa = ctx ? ctx->persp_setup : &local;
         if (!ctx || ctx->persp_serial != t->serial) {
@@ -284,11 +313,13 @@ static void STAGE(stage_persp)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
             if (ctx)
                 ctx->persp_serial = t->serial;
         }
+#if NUM_IS_FIXED
         j = STAGE(persp_affine_run)(pa, t, b);
-    }
 #else
-    j = STAGE(persp_affine_steps)(t, b, coords ? u : -1, coords_tx ? v : -1, ctx && ctx_simd(ctx) >= SIMD_AVX512);
+        j = STAGE(persp_affine_steps)(t, b, coords ? u : -1, coords_tx ? v : -1, pa,
+                                      ctx && ctx_simd(ctx) >= SIMD_AVX512);
 #endif
+    }
     if (coords && j) {
         b->tc_unit = u;
         b->tc_done = j;
