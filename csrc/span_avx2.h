@@ -215,7 +215,9 @@ AVX2_INLINE void avx2_texel_words8(const void *texels, int w, int64_t total, __m
     g[2] = _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r1, xa), 4);
     g[3] = _mm256_i32gather_epi32(tx32, _mm256_add_epi32(r1, xb), 4);
 }
+#endif
 
+#if SIMD_X86 && NUM_IS_FIXED
 /* avx2_linear_axis8's constants of an axis 2^L texels wide (a kernel that
 ** keeps them per primitive reads them from memory in its loop) */
 typedef struct Avx2Axis {
@@ -230,9 +232,7 @@ AVX2_INLINE void avx2_axis_setup(int log2n, Avx2Axis *ax)
     ax->to_index = _mm_cvtsi32_si128(32 - log2n);
     ax->up = _mm_cvtsi32_si128(log2n);
 }
-#endif
 
-#if SIMD_X86 && NUM_IS_FIXED
 /* the weights of eight fragments in lanes, for the fixed build's fused stage
 ** (where WGT is 32 bits) */
 /* the three weights of fragments p[0..7] as eight 32-bit lanes each: the
@@ -417,13 +417,19 @@ AVX2_INLINE void avx2_wgt_lanes4(const WGT (*p)[3], __m256i w[3])
 }
 
 /* a[0] w[0] + a[1] w[1] + a[2] w[2] per lane (four fragments' weights w as
-** avx2_wgt_lanes4 gives them, vertex values a in int32 range), the 64-bit
-** sum of avx2_lerp3w's lanes */
+** avx2_wgt_lanes4 gives them, vertex values a in int32 range, in every
+** lane), the 64-bit sum of avx2_lerp3w's lanes */
+AVX2_INLINE __m256i avx2_dot3_lanesv(const __m256i a[3], const __m256i w[3])
+{
+    return _mm256_add_epi64(_mm256_add_epi64(_mm256_mul_epi32(a[0], w[0]), _mm256_mul_epi32(a[1], w[1])),
+                            _mm256_mul_epi32(a[2], w[2]));
+}
+
+/* the same of the vertex values a0, a1, a2 */
 AVX2_INLINE __m256i avx2_dot3_lanes(int64_t a0, int64_t a1, int64_t a2, const __m256i w[3])
 {
-    return _mm256_add_epi64(_mm256_add_epi64(_mm256_mul_epi32(_mm256_set1_epi64x(a0), w[0]),
-                                             _mm256_mul_epi32(_mm256_set1_epi64x(a1), w[1])),
-                            _mm256_mul_epi32(_mm256_set1_epi64x(a2), w[2]));
+    const __m256i a[3] = { _mm256_set1_epi64x(a0), _mm256_set1_epi64x(a1), _mm256_set1_epi64x(a2) };
+    return avx2_dot3_lanesv(a, w);
 }
 
 /* texc_lerp3 of one coordinate (vertex values a[0..2], 16.16) for four
@@ -432,6 +438,12 @@ AVX2_INLINE __m256i avx2_dot3_lanes(int64_t a0, int64_t a1, int64_t a2, const __
 AVX2_INLINE __m256i avx2_texc_lerp3x4(const NUM a[3], const __m256i w[3])
 {
     return avx2_round_shift(avx2_dot3_lanes(a[0], a[1], a[2], w), 14);
+}
+
+/* the same from the vertex values in every lane (a kept setup's) */
+AVX2_INLINE __m256i avx2_texc_lerp3x4v(const __m256i a[3], const __m256i w[3])
+{
+    return avx2_round_shift(avx2_dot3_lanesv(a, w), 14);
 }
 
 /* span_tex_coord without q (an affine unit) for four fragments: s and t
@@ -610,7 +622,9 @@ AVX2_INLINE void avx2_linear_texels8(const int *tx32, int log2w, int log2h, cons
     avx2_linear_words8(tx32, log2w, log2h, xa, xb, ya, yb, rows, g);
 }
 
-/* the same with the axes' constants ax_s and ax_t (Avx2Axis) */
+/* the same with the axes' constants ax_s and ax_t (Avx2Axis, a fused
+** kernel's per primitive; the trilinear mix forms its own in registers, where
+** a struct of them measured more instructions) */
 AVX2_INLINE void avx2_linear_texels8c(const int *tx32, int log2w, int log2h, const Avx2Axis *ax_s,
                                       const Avx2Axis *ax_t, const TexCoord *c, int repeat_s, int repeat_t, int rows,
                                       __m256i g[4], __m256i *a, __m256i *b)

@@ -102,15 +102,6 @@ static void STAGE(persp_affine_setup)(const TriSetup *t, int u, int v, PerspAffi
     STAGE(persp_units_st)(t, u, v, pa->st);
 }
 
-/* texc_lerp3 of one coordinate for four fragments (lanes) whose weights
-** are w, from the vertex values a[0..2] broadcast: avx2_texc_lerp3x4's lanes */
-AVX2_INLINE __m256i avx2_texc_lerp3x4v(const __m256i a[3], const __m256i w[3])
-{
-    const __m256i sum = _mm256_add_epi64(_mm256_add_epi64(_mm256_mul_epi32(a[0], w[0]), _mm256_mul_epi32(a[1], w[1])),
-                                         _mm256_mul_epi32(a[2], w[2]));
-    return avx2_round_shift(sum, 14);
-}
-
 /* STAGE(persp_affine_run)'s loop over groups of four slots to n4 from the
 ** running sums of edges 1 and 2 (lanes = four slots): the weights, and
 ** the coordinates of `units` units (pa->u's into b->tc, pa->v's into b->tx) */
@@ -216,14 +207,6 @@ static inline void STAGE(edge_steps)(const TriSetup *t, const SpanBuf *b, __m256
     *step2 = _mm256_set1_pd(4 * a2);
 }
 
-/* an affine triangle's weights (wgt_linear reads edges 1 and 2 alone)
-** four at a time from the stepped edge values, where STAGE(edge_steps)
-** is exact, with unit u's coordinates (u >= 0: an affine unit) formed from
-** the same lanes into b->tc, and unit v's (v >= 0) into b->tx; a last
-** group of fewer than four slots whole (the slots past n are free; the
-** exactness holds to the group's end, as the test covers it); with wide
-** (AVX-512 runs) the double build's eight at a time (d8_affine_steps).
-** Returns the slots done (n), or 0. */
 /* the float and double builds' PerspAffine: STAGE(persp_affine_steps)'s
 ** units' vertex coordinates in every lane, formed by an affine primitive's
 ** first chunk and kept in the context (ctx->persp_setup) for the rest */
@@ -237,6 +220,14 @@ static void STAGE(persp_affine_setup)(const TriSetup *t, int u, int v, PerspAffi
     STAGE(persp_units_st)(t, u, v, ps->st);
 }
 
+/* an affine triangle's weights (wgt_linear reads edges 1 and 2 alone)
+** four at a time from the stepped edge values, where STAGE(edge_steps)
+** is exact, with unit u's coordinates (u >= 0: an affine unit) formed from
+** the same lanes into b->tc, and unit v's (v >= 0) into b->tx; a last
+** group of fewer than four slots whole (the slots past n are free; the
+** exactness holds to the group's end, as the test covers it); with wide
+** (AVX-512 runs) the double build's eight at a time (d8_affine_steps).
+** ps is the triangle's setup. Returns the slots done (n), or 0. */
 static int STAGE(persp_affine_steps)(const TriSetup *t, SpanBuf *b, int u, int v, const PerspAffine *ps, int wide)
 {
     _Static_assert(SPAN_CHUNK % 8 == 0, "a last group rounded up to eight stays within the chunk");
