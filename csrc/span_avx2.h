@@ -102,6 +102,18 @@ AVX2_INLINE __m256i avx2_byte_lanes8(__m256i g, int i)
     return _mm256_shuffle_epi8(g, avx2_byte_pick8(i));
 }
 
+/* 24 consecutive 32-bit values in q0, q1, q2 (eight fragments' three
+** values each) as three registers: lane L of w[i] is value 3L + i */
+AVX2_INLINE void avx2_deinterleave3x8(__m256i q0, __m256i q1, __m256i q2, __m256i w[3])
+{
+    w[0] = _mm256_permutevar8x32_epi32(_mm256_blend_epi32(_mm256_blend_epi32(q0, q1, 0x92), q2, 0x24),
+                                       _mm256_setr_epi32(0, 3, 6, 1, 4, 7, 2, 5));
+    w[1] = _mm256_permutevar8x32_epi32(_mm256_blend_epi32(_mm256_blend_epi32(q0, q1, 0x24), q2, 0x49),
+                                       _mm256_setr_epi32(1, 4, 7, 2, 5, 0, 3, 6));
+    w[2] = _mm256_permutevar8x32_epi32(_mm256_blend_epi32(_mm256_blend_epi32(q0, q1, 0x49), q2, 0x92),
+                                       _mm256_setr_epi32(2, 5, 0, 3, 6, 1, 4, 7));
+}
+
 /* The texel words of a bilinear group of eight fragments (every build's
 ** kernel): lanes xa, xb the columns and ya, yb the rows of its four texels
 ** on a level w texels wide of `total` texels, g[0..3] the words at (xa, ya),
@@ -240,13 +252,7 @@ AVX2_INLINE void avx2_axis_setup(int log2n, Avx2Axis *ax)
 AVX2_INLINE void avx2_wgt_lanes8(const WGT (*p)[3], __m256i w[3])
 {
     const __m256i *q = (const __m256i *)(const void *)&p[0][0];
-    const __m256i q0 = _mm256_loadu_si256(q), q1 = _mm256_loadu_si256(q + 1), q2 = _mm256_loadu_si256(q + 2);
-    w[0] = _mm256_permutevar8x32_epi32(_mm256_blend_epi32(_mm256_blend_epi32(q0, q1, 0x92), q2, 0x24),
-                                       _mm256_setr_epi32(0, 3, 6, 1, 4, 7, 2, 5));
-    w[1] = _mm256_permutevar8x32_epi32(_mm256_blend_epi32(_mm256_blend_epi32(q0, q1, 0x24), q2, 0x49),
-                                       _mm256_setr_epi32(1, 4, 7, 2, 5, 0, 3, 6));
-    w[2] = _mm256_permutevar8x32_epi32(_mm256_blend_epi32(_mm256_blend_epi32(q0, q1, 0x49), q2, 0x92),
-                                       _mm256_setr_epi32(2, 5, 0, 3, 6, 1, 4, 7));
+    avx2_deinterleave3x8(_mm256_loadu_si256(q), _mm256_loadu_si256(q + 1), _mm256_loadu_si256(q + 2), w);
 }
 
 /* the four channels of a FRAGV[4] */
@@ -2259,23 +2265,25 @@ static inline void modwrite_texture_setup(ModWriteTexture *m, const Texture *t, 
 }
 #endif
 
-#if SIMD_X86 && NUM_IS_FIXED
+#if SIMD_X86 && (NUM_IS_FIXED || defined(GLES_NUM_DOUBLE))
 /* {====================================================================
 ** The colour, the first unit's MODULATE, the alpha test and the RGBA8888
 ** write (blend kind 0, 1 or 2 as write_rgba8) of eight fragments in float lanes, with
 ** a filter that proves each byte equal to the exact chain's (the 0.30
-** integers of stage_color_modulate and v4_rgba8):
+** integers of stage_color_modulate and v4_rgba8 in the fixed build, their
+** doubles in the double build's AVX2 instance):
 **
 ** The exact chain ends in byte = floor(255 Y + 1/2) of a value Y that
-** float lanes approximate: Y_f with |Y_f - Y| <= 27 u (u = 2^-24; the
-** bound, from the colours, weights and texels' ranges, is derived in
-** docs/architecture.md). When 255 Y_f + 1/2 lies at least the state's
+** float lanes approximate: Y_f with |Y_f - Y| <= 27 u (u = 2^-24; 49 u
+** in the double build; the bounds, from the colours, weights and texels'
+** ranges, are derived in docs/architecture.md). When 255 Y_f + 1/2 lies at least the state's
 ** margin (avx2_modwrite_margin: above 255 times the bound plus the
 ** rounding of that sum) from the nearest integer, 255 Y + 1/2 has the
 ** same floor. A lane nearer than that (0.1-0.4% of channels), or whose
 ** weights' magnitudes sum to more than 1 + 2^-7, gets the exact chain's
 ** bytes instead. */
 
+#if NUM_IS_FIXED
 /* the low dwords of four fragments' channels c + k stride (k = 0..3) as
 ** (R0..R3 | B0..B3) and (G0..G3 | A0..A3); *any collects the lanes' bits */
 AVX2_INLINE void avx2_channels4(const FRAGV *c, size_t stride, __m256 *rb, __m256 *ga, __m256i *any)
@@ -2303,6 +2311,7 @@ AVX2_INLINE int avx2_channels8(const FRAGV *c, size_t stride, __m256i ch[4])
     ch[3] = _mm256_castps_si256(_mm256_permute2f128_ps(ga0, ga1, 0x31));
     return _mm256_testz_si256(any, _mm256_set1_epi64x(~(int64_t)0x7FFFFFFF));
 }
+#endif
 
 /* a first unit's COMBINE DOT3 (DOT3_RGB with MODULATE alpha, or rgba:
 ** DOT3_RGBA; scales 1) of its texels and the colour, before the MODULATE:
@@ -2318,8 +2327,16 @@ typedef struct ModWriteDot3 {
 
 /* the chain's constants: the vertex colours' channels times 2^-60 (so
 ** that a weight's integer times them is the term's value), or the flat
-** colour's (clamped) times 2^-30 in col[0]; the alpha test; for RGB565
-** the dither thresholds of the row's x & 3 */
+** colour's (clamped) times 2^-30 in col[0] (the double build's as they
+** are, its weights being numbers); the alpha test; for RGB565 the dither
+** thresholds of the row's x & 3 */
+#if NUM_IS_FIXED
+#define MODWRITE_COL_SCALE(smooth) ((smooth) ? 0x1p-60 : 0x1p-30)
+#define MODWRITE_FRAG_SCALE 0x1p-30     /* a FRAGV's value per unit */
+#else
+#define MODWRITE_COL_SCALE(smooth) 1.0
+#define MODWRITE_FRAG_SCALE 1.0
+#endif
 typedef struct Avx2ModWrite {
     __m256 col[3][4];
     __m256 col_half[3][4];       /* the same less 1/2 (DOT3's operand; rgb) */
@@ -2350,8 +2367,8 @@ static inline void avx2_modwrite_setup(Avx2ModWrite *m, const FRAGV *const a[3],
     for (int i = 0; i < 3; i++)
         for (int c = 0; c < 4; c++) {
             const FRAGV v = smooth ? a[i][c] : frag_clamp01(a[0][c]);
-            m->col[i][c] = _mm256_set1_ps((float)((double)v * (smooth ? 0x1p-60 : 0x1p-30)));
-            m->col_half[i][c] = _mm256_set1_ps((float)((double)(v - FRAG_ONE / 2) * (smooth ? 0x1p-60 : 0x1p-30)));
+            m->col[i][c] = _mm256_set1_ps((float)((double)v * MODWRITE_COL_SCALE(smooth)));
+            m->col_half[i][c] = _mm256_set1_ps((float)((double)(v - FRAG_ONE / 2) * MODWRITE_COL_SCALE(smooth)));
         }
     m->dither = 0;
     m->replace = 0;
@@ -2369,7 +2386,7 @@ static inline void avx2_modwrite_dither(Avx2ModWrite *m, int dither, const FRAGV
     float f[4];
     for (int x = 0; x < 4; x++) {
         m->t_row[x] = t_row[x];
-        f[x] = dither ? (float)((double)t_row[x] * 0x1p-30) : 0.0f;
+        f[x] = dither ? (float)((double)t_row[x] * MODWRITE_FRAG_SCALE) : 0.0f;
     }
     m->t_row_f = _mm256_setr_ps(f[0], f[1], f[2], f[3], f[0], f[1], f[2], f[3]);
 }
@@ -2410,6 +2427,29 @@ AVX2_INLINE __m256i avx2_floor_proved_upto(__m256 z, float top, float margin, __
     return q;
 }
 
+/* the two rows' bilinear sums of byte i of the texel words g (g[0..3]:
+** c00, c10, c01, c11, exact integers as floats) at weights a and ia (the
+** other): h0 = c00 ia + c10 a and h1 = c01 ia + c11 a */
+AVX2_INLINE void avx2_bilerp8_rows(const __m256i g[4], int i, __m256 a, __m256 ia, __m256 *h0, __m256 *h1)
+{
+    const __m256i pick = avx2_byte_pick8(i);
+    __m256 c[4];
+    for (int q = 0; q < 4; q++)
+        c[q] = _mm256_cvtepi32_ps(_mm256_shuffle_epi8(g[q], pick));
+    *h0 = _mm256_fmadd_ps(c[0], ia, _mm256_mul_ps(c[1], a));
+    *h1 = _mm256_fmadd_ps(c[2], ia, _mm256_mul_ps(c[3], a));
+}
+
+#if NUM_IS_FIXED
+/* the three weights of fragments p[0..7] as float lanes (integers times
+** 2^-30 ... read as integers: the colours carry the scale) */
+AVX2_INLINE void avx2_wgt_float8(const WGT (*p)[3], __m256 *w0, __m256 *w1, __m256 *w2)
+{
+    __m256i wi[3];
+    avx2_wgt_lanes8(p, wi);
+    *w0 = _mm256_cvtepi32_ps(wi[0]), *w1 = _mm256_cvtepi32_ps(wi[1]), *w2 = _mm256_cvtepi32_ps(wi[2]);
+}
+
 /* eight fragments' texels ct + k stride (0.30) as floats T[0..3] (exact
 ** but for the conversion's rounding), with half_rgb T[0..2] less 1/2 (the
 ** integer less 2^29, then converted); 0 when a texel leaves [0, 2^31) */
@@ -2443,12 +2483,8 @@ AVX2_INLINE void avx2_bilerp8_float(const __m256i g[4], __m256i a, __m256i b, in
     /* (half_rgb's factors over twice the divisor: exact halvings) */
     const __m256 ibk_half = _mm256_mul_ps(ibk, _mm256_set1_ps(0.5f)), bk_half = _mm256_mul_ps(bk, _mm256_set1_ps(0.5f));
     for (int i = 0; i < 4; i++) {
-        const __m256i pick = avx2_byte_pick8(i);
-        __m256 c[4];
-        for (int q = 0; q < 4; q++)
-            c[q] = _mm256_cvtepi32_ps(_mm256_shuffle_epi8(g[q], pick));
-        const __m256 h0 = _mm256_fmadd_ps(c[0], iaf, _mm256_mul_ps(c[1], af));
-        const __m256 h1 = _mm256_fmadd_ps(c[2], iaf, _mm256_mul_ps(c[3], af));
+        __m256 h0, h1;
+        avx2_bilerp8_rows(g, i, af, iaf, &h0, &h1);
         if (half_rgb && i < 3) {
             const __m256 two = _mm256_set1_ps(2.0f), mid = _mm256_set1_ps(-255.0f * 65536.0f);
             T[i] = _mm256_fmadd_ps(_mm256_fmadd_ps(h0, two, mid), ibk_half,
@@ -2458,6 +2494,83 @@ AVX2_INLINE void avx2_bilerp8_float(const __m256i g[4], __m256i a, __m256i b, in
         }
     }
 }
+#else
+/* the double build's weights of fragments p[0..7] as float lanes, each
+** rounded once */
+AVX2_INLINE void avx2_wgt_float8(const WGT (*p)[3], __m256 *w0, __m256 *w1, __m256 *w2)
+{
+    const double *d = &p[0][0];
+    __m256i q[3];
+    for (int i = 0; i < 3; i++)
+        q[i] = _mm256_castps_si256(_mm256_set_m128(_mm256_cvtpd_ps(_mm256_loadu_pd(d + 8 * i + 4)),
+                                                   _mm256_cvtpd_ps(_mm256_loadu_pd(d + 8 * i))));
+    __m256i w[3];
+    avx2_deinterleave3x8(q[0], q[1], q[2], w);
+    *w0 = _mm256_castsi256_ps(w[0]), *w1 = _mm256_castsi256_ps(w[1]), *w2 = _mm256_castsi256_ps(w[2]);
+}
+
+/* eight fragments' texels ct + k stride (doubles) as floats T[0..3], each
+** rounded once; 0 unless every one lies in [0, 1] (the bounds' range; NaN
+** fails) */
+AVX2_INLINE int avx2_texels_ct8(const FRAGV *ct, size_t stride, int half_rgb, __m256 T[4])
+{
+    (void)half_rgb;     /* (the double build's lanes take no DOT3) */
+    __m128 f[8];
+    for (int k = 0; k < 8; k++)
+        f[k] = _mm256_cvtpd_ps(_mm256_loadu_pd(ct + (size_t)k * stride));
+    _MM_TRANSPOSE4_PS(f[0], f[1], f[2], f[3]);
+    _MM_TRANSPOSE4_PS(f[4], f[5], f[6], f[7]);
+    __m256 in = _mm256_castsi256_ps(_mm256_set1_epi32(-1));
+    for (int i = 0; i < 4; i++) {
+        T[i] = _mm256_set_m128(f[4 + i], f[i]);
+        in = _mm256_and_ps(in, _mm256_and_ps(_mm256_cmp_ps(T[i], _mm256_setzero_ps(), _CMP_GE_OQ),
+                                             _mm256_cmp_ps(T[i], _mm256_set1_ps(1.0f), _CMP_LE_OQ)));
+    }
+    return _mm256_movemask_ps(in) == 0xFF;
+}
+
+/* sample_level's GL_LINEAR texel of the double build at the coordinates
+** tc[0..7] on level 0 of tx, in float lanes: the texel indices and the
+** weights a and b (and 1 - a, 1 - b) in v4_linear_axis's double lanes, as
+** the exact sampler has them, each weight then rounded to float once; the
+** bilinear sum of the texels' bytes (exact integers) h0 = c00 (1 - a) +
+** c10 a, h1 = c01 (1 - a) + c11 a, then h0 (1 - b) / 255 + h1 b / 255
+** with the factors' (1 - b) / 255 and b / 255 rounded: within 8.1u of the
+** exact sampler's texel (docs/architecture.md). 0 when a coordinate is not
+** finite. */
+AVX2_INLINE int avx2_texels_sampled8(const ModWriteTexture *tx, const TexCoord *tc, __m256 T[4])
+{
+    V4 s[2], t[2], a[2], b[2];
+    __m128i x0[2], x1[2], y0[2], y1[2];
+    for (int q = 0; q < 2; q++) {
+        s[q] = v4_coord4(&tc[4 * q], 0);
+        t[q] = v4_coord4(&tc[4 * q], 1);
+        if (!(v4_finite(s[q]) && v4_finite(t[q])))
+            return 0;
+    }
+    for (int q = 0; q < 2; q++) {
+        v4_linear_axis(s[q], tx->w, tx->repeat_s, &x0[q], &x1[q], &a[q]);
+        v4_linear_axis(t[q], tx->h, tx->repeat_t, &y0[q], &y1[q], &b[q]);
+    }
+    __m256i g[4];
+    avx2_texel_words8(tx->texels, tx->w, (int64_t)tx->w * tx->h, _mm256_set_m128i(x0[1], x0[0]),
+                      _mm256_set_m128i(x1[1], x1[0]), _mm256_set_m128i(y0[1], y0[0]), _mm256_set_m128i(y1[1], y1[0]),
+                      1, g);
+    const V4 one = V4_OP(set1)(1);
+#define TEXELS_F8(v) _mm256_set_m128(_mm256_cvtpd_ps((v)[1]), _mm256_cvtpd_ps((v)[0]))
+    const V4 ia[2] = { V4_OP(sub)(one, a[0]), V4_OP(sub)(one, a[1]) };
+    const V4 ib[2] = { V4_OP(sub)(one, b[0]), V4_OP(sub)(one, b[1]) };
+    const __m256 af = TEXELS_F8(a), iaf = TEXELS_F8(ia), k = _mm256_set1_ps((float)(1.0 / 255.0));
+    const __m256 bk = _mm256_mul_ps(TEXELS_F8(b), k), ibk = _mm256_mul_ps(TEXELS_F8(ib), k);
+#undef TEXELS_F8
+    for (int i = 0; i < 4; i++) {
+        __m256 h0, h1;
+        avx2_bilerp8_rows(g, i, af, iaf, &h0, &h1);
+        T[i] = _mm256_fmadd_ps(h0, ibk, _mm256_mul_ps(h1, bk));
+    }
+    return 1;
+}
+#endif
 
 /* COMBINE DOT3 of texels T0 and colours c (in place): with the rgb lanes
 ** of both given less 1/2 (in [-1/2, 1/2]) and the alpha lanes in [0, 1],
@@ -2492,14 +2605,13 @@ AVX2_INLINE void avx2_modwrite_source8(const Avx2ModWrite *m, int smooth, int do
     } else {
         __m256 c[4];
         if (smooth) {
-            __m256i wi[3];
-            avx2_wgt_lanes8(p, wi);
+            __m256 w0, w1, w2;
+            avx2_wgt_float8(p, &w0, &w1, &w2);
             const __m256 sign = _mm256_set1_ps(-0.0f);
-            const __m256 w0 = _mm256_cvtepi32_ps(wi[0]), w1 = _mm256_cvtepi32_ps(wi[1]);
-            const __m256 w2 = _mm256_cvtepi32_ps(wi[2]);
             const __m256 mag = _mm256_add_ps(_mm256_add_ps(_mm256_andnot_ps(sign, w0), _mm256_andnot_ps(sign, w1)),
                                              _mm256_andnot_ps(sign, w2));
-            *bad = _mm256_cmp_ps(mag, _mm256_set1_ps(0x1.02p30f), _CMP_GT_OQ);
+            /* (not below: larger, or NaN) */
+            *bad = _mm256_cmp_ps(mag, _mm256_set1_ps((float)(0x1.02p0 / MODWRITE_COL_SCALE(1))), _CMP_NLE_UQ);
             /* with dot3 the rgb lanes less 1/2, from the vertex
             ** colours less 1/2 (the weights sum to 1) */
             const __m256 half = _mm256_set1_ps(0.5f), nhalf = _mm256_set1_ps(-0.5f);
@@ -2668,11 +2780,15 @@ AVX2_INLINE int avx2_modwrite_texels8(const ModWriteTexture *tx, int src, const 
 {
     if (src == 0)
         return avx2_texels_ct8(ct, stride, half_rgb, T);
+#if !NUM_IS_FIXED
+    return avx2_texels_sampled8(tx, tc, T);
+#else
     __m256i g[4], a, b;
     avx2_linear_texels8c((const int *)(const void *)tx->texels, tx->log2w, tx->log2h, &tx->ax_s, &tx->ax_t, tc,
                          tx->repeat_s, tx->repeat_t, 1, g, &a, &b);
     avx2_bilerp8_float(g, a, b, half_rgb, T);
     return 1;
+#endif
 }
 
 /* the exact texel of one fragment: ct (source 0), or from the sampler at tc */
@@ -2822,16 +2938,24 @@ AVX2_INLINE void avx2_modwrite_instances(AVX2_MODWRITE_ARGS, int dot3)
 ** and prefix_modwrite_dot3: one function of all of them grows past what the
 ** compiler optimises as well (its register allocation), which cost the
 ** lone unit's kernel 2-3% */
-#define AVX2_MODWRITE_FUNCTIONS(prefix) \
+#define AVX2_MODWRITE_PLAIN(prefix) \
     static __attribute__((noinline)) void prefix##_modwrite_plain(AVX2_MODWRITE_ARGS) \
     { \
         avx2_modwrite_instances(m, a, src, rgb565, n, live, k, x0, p, ct, stride, tc, dst, unorm5, unorm6, 0); \
-    } \
+    }
+#define AVX2_MODWRITE_FUNCTIONS(prefix) \
+    AVX2_MODWRITE_PLAIN(prefix) \
     static __attribute__((noinline)) void prefix##_modwrite_dot3(AVX2_MODWRITE_ARGS) \
     { \
         avx2_modwrite_instances(m, a, src, rgb565, n, live, k, x0, p, ct, stride, tc, dst, unorm5, unorm6, 1); \
     }
+#if NUM_IS_FIXED
 AVX2_MODWRITE_FUNCTIONS(avx2)
+#else
+/* (the double build's lanes take no DOT3: its bound is the fixed build's
+** to derive again, and its chain has stage_color_dot3_modulate) */
+AVX2_MODWRITE_PLAIN(avx2)
+#endif
 #if SIMD_AVX512_FX
 /* the same functions compiled for AVX-512VL, where the CPU has it: the
 ** same AVX2 operations on the same lanes (so the same words), with
@@ -2843,6 +2967,7 @@ AVX2_MODWRITE_FUNCTIONS(fx512)
 #pragma GCC pop_options
 #endif
 #undef AVX2_MODWRITE_FUNCTIONS
+#undef AVX2_MODWRITE_PLAIN
 
 /* the kernel's instance for the state (m->dot3), in AVX-512VL's registers
 ** where wide (the context runs AVX-512) */
@@ -2857,8 +2982,12 @@ static inline void avx2_modwrite_dispatch(AVX2_MODWRITE_ARGS, int wide)
 #else
     (void)wide;
 #endif
+#if NUM_IS_FIXED
     (m->dot3 ? avx2_modwrite_dot3 : avx2_modwrite_plain)(m, a, src, rgb565, n, live, k, x0, p, ct, stride, tc, dst,
                                                          unorm5, unorm6);
+#else
+    avx2_modwrite_plain(m, a, src, rgb565, n, live, k, x0, p, ct, stride, tc, dst, unorm5, unorm6);
+#endif
 }
 #undef AVX2_MODWRITE_ARGS
 /* }==================================================================== */

@@ -124,7 +124,6 @@ SIMD_TARGET_AVX512
 #include "span_fx512.h"    /* the fixed build's perspective stage in eight lanes */
 #pragma GCC pop_options
 #endif
-#if NUM_IS_FIXED || defined(GLES_NUM_FLOAT)
 /* a test's fragments for a fused stage's kernel: copies with room for the
 ** padded group, as the stage pads its chunk */
 typedef struct DebugGroup {
@@ -144,7 +143,6 @@ static int debug_group(DebugGroup *g, int n, const uint8_t *k, const WGT *p, con
     memcpy(g->ct, ct, (size_t)n * sizeof g->ct[0]);
     return pad && n > 0 ? avx2_pad_group(group, n, g->k, g->p, smooth, NULL, g->ct[0], 4) : n;
 }
-#endif
 #define STAGE(name) name##_avx2
 #define CHAIN_SIMD 1
 #include "span_stages.h"
@@ -179,8 +177,11 @@ static void debug_color_avx2(int clamp, const FRAGV *const col[3], int n, const 
     for (int j = 0; j < n; j++)
         v4_store(out[j], clamp ? v4_lerp3f_clamp01(a0, a1, a2, p[j]) : v4_lerp3f(a0, a1, a2, p[j]));
 }
-/* gles_debug_modulate_write's kernel run, with the count of the lanes
-** the kernel leaves to the exact code, group by group */
+#endif
+#if NUM_IS_FIXED || defined(GLES_NUM_DOUBLE)
+/* gles_debug_modulate_write's kernel run (gles_debug_modulate_write_d's
+** in the double build), with the count of the lanes the kernel leaves to
+** the exact code, group by group */
 static int debug_modulate_write_avx2(Avx2ModWrite *m, const FRAGV *const a[3], int n, const uint8_t *k_in,
                                      const WGT (*p_in)[3], int rgba_dot, const FRAGV *ct0_in, const FRAGV *ct_in,
                                      int pad, int rgb565, int x0, void *dst, const FRAGV unorm5[32],
@@ -226,6 +227,34 @@ static int debug_modulate_write_avx2(Avx2ModWrite *m, const FRAGV *const a[3], i
     avx2_modwrite_dispatch(m, a, 0, rgb565, n, live, k, x0, (const WGT (*)[3])p, ct[0], 4, tc, dst, unorm5, unorm6, 0);
     return exact;
 }
+
+/* the debug entries' run: their arguments checked (-1 where out of range),
+** the kernel's setup for them (RGB565's dither row y = 0 from column x0,
+** the stored channels' values as the context has them), then the kernel */
+static int debug_modwrite(int smooth, int rgb, int kind, unsigned int alpha_func, uint32_t alpha_ref,
+                          const FRAGV col[12], int n, const uint8_t *k, const WGT *p, int rgba_dot, const FRAGV *ct0,
+                          const FRAGV *ct, int pad, int rgb565, int dither, int x0, void *dst)
+{
+    if (n < 0 || n > SPAN_CHUNK || kind < 0 || kind > (rgb565 ? 1 : 2) || x0 < 0 || simd_detect() < SIMD_AVX2)
+        return -1;
+    for (int i = 0; i < 12; i++)
+        if (smooth && !(col[i] >= 0 && col[i] <= FRAG_ONE))
+            return -1;
+    const FRAGV *const a[3] = { col, smooth ? col + 4 : col, smooth ? col + 8 : col };
+    Avx2ModWrite m;
+    avx2_modwrite_setup(&m, a, smooth != 0, rgb != 0, kind, alpha_func, alpha_ref);
+    FRAGV t_row[4], unorm5[32], unorm6[64];
+    for (int x = 0; x < 4; x++)
+        t_row[(x0 + x) & 3] = dither ? fragment_dither_threshold(x0 + x, 0) : FRAG_ONE / 2;
+    avx2_modwrite_dither(&m, dither != 0, t_row);
+    for (uint32_t d = 0; d < 64; d++) {
+        if (d < 32)
+            unorm5[d] = frag_from_unorm(d, 31);
+        unorm6[d] = frag_from_unorm(d, 63);
+    }
+    return debug_modulate_write_avx2(&m, a, n, k, (const WGT (*)[3])p, rgba_dot, ct0, ct, pad, rgb565 != 0, x0, dst,
+                                     unorm5, unorm6);
+}
 #endif
 #pragma GCC pop_options
 #endif
@@ -251,32 +280,30 @@ int gles_debug_modulate_write_f(int smooth, int rgb, int kind, unsigned int alph
 #endif
 }
 
+int gles_debug_modulate_write_d(int smooth, int rgb, int kind, unsigned int alpha_func, uint32_t alpha_ref,
+                                const double col[12], int n, const uint8_t *k, const double *p, const double *ct,
+                                int rgb565, int dither, int x0, void *dst)
+{
+#if SIMD_X86 && defined(GLES_NUM_DOUBLE)
+    return debug_modwrite(smooth, rgb, kind, alpha_func, alpha_ref, col, n, k, p, -1, NULL, ct, 1, rgb565, dither, x0,
+                          dst);
+#else
+    (void)smooth, (void)rgb, (void)kind, (void)alpha_func, (void)alpha_ref, (void)col, (void)n, (void)k, (void)p,
+        (void)ct, (void)rgb565, (void)dither, (void)x0, (void)dst;
+    return -1;
+#endif
+}
+
 int gles_debug_modulate_write(int smooth, int rgb, int kind, unsigned int alpha_func, uint32_t alpha_ref,
                               const int64_t col[12], int n, const uint8_t *k, const int32_t *p, int dot3,
                               const int64_t *ct0, const int64_t *ct, int pad, int rgb565, int dither, int x0,
                               void *dst)
 {
 #if SIMD_X86 && NUM_IS_FIXED
-    if (n < 0 || n > SPAN_CHUNK || kind < 0 || kind > (rgb565 ? 1 : 2) || x0 < 0 || dot3 < 0 || dot3 > 2
-        || simd_detect() < SIMD_AVX2)
+    if (dot3 < 0 || dot3 > 2)
         return -1;
-    for (int i = 0; i < 12; i++)
-        if (smooth && (col[i] < 0 || col[i] > FRAG_ONE))
-            return -1;
-    const FRAGV *const a[3] = { col, smooth ? col + 4 : col, smooth ? col + 8 : col };
-    Avx2ModWrite m;
-    avx2_modwrite_setup(&m, a, smooth != 0, rgb != 0, kind, alpha_func, alpha_ref);
-    FRAGV t_row[4], unorm5[32], unorm6[64];
-    for (int x = 0; x < 4; x++)
-        t_row[(x0 + x) & 3] = dither ? fragment_dither_threshold(x0 + x, 0) : FRAG_ONE / 2;
-    avx2_modwrite_dither(&m, dither != 0, t_row);
-    for (uint32_t d = 0; d < 64; d++) {
-        if (d < 32)
-            unorm5[d] = frag_from_unorm(d, 31);
-        unorm6[d] = frag_from_unorm(d, 63);
-    }
-    return debug_modulate_write_avx2(&m, a, n, k, (const WGT (*)[3])p, dot3 - 1, ct0, ct, pad, rgb565 != 0, x0, dst,
-                                     unorm5, unorm6);
+    return debug_modwrite(smooth, rgb, kind, alpha_func, alpha_ref, col, n, k, p, dot3 - 1, ct0, ct, pad, rgb565,
+                          dither, x0, dst);
 #else
     (void)smooth, (void)rgb, (void)kind, (void)alpha_func, (void)alpha_ref, (void)col, (void)n, (void)k, (void)p,
         (void)dot3, (void)ct0, (void)ct, (void)pad, (void)rgb565, (void)dither, (void)x0, (void)dst;

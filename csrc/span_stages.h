@@ -1731,12 +1731,15 @@ static inline void STAGE(fused_units)(const GlesContext *ctx, int dot3, int *u0,
 }
 #endif
 
-#if CHAIN_SIMD && NUM_IS_FIXED
+#if CHAIN_SIMD && (NUM_IS_FIXED || defined(GLES_NUM_DOUBLE))
 /* stage_color_modulate of the one enabled unit (or a rectangle's colour
 ** and stage_env's MODULATE), the alpha test and write_rgba8 (blend kind 0,
 ** 1 or 2) or stage_write_565 / stage_write_565_alpha in one pass of eight
 ** float lanes, each byte proved equal to the exact chain's or taken from
-** it (avx2_modwrite8). Source 0 takes the texels a fetch stage sampled;
+** it (avx2_modwrite8). The double build's AVX2 instance has it without
+** DOT3 (stage_modulate_write_proved,
+** stage_sample_write_proved), where its own kernel in double lanes needs
+** AVX-512. Source 0 takes the texels a fetch stage sampled;
 ** source 1 samples at the coordinates a coordinates stage left (a
 ** bilinear sampler with a vector kernel, texture_span_sample_group 8), and
 ** there the unit may be a lone REPLACE of an RGBA texture. With dot3 the
@@ -1744,8 +1747,8 @@ static inline void STAGE(fused_units)(const GlesContext *ctx, int dot3, int *u0,
 ** texels (a fetch stage sampled them) and the colour comes before the
 ** second one's MODULATE. Vertex colours outside [0, 1] go through the
 ** separate stages. */
-static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesContext *ctx, const TriSetup *t,
-                                                                       SpanBuf *b, int src, int dot3)
+static inline __attribute__((always_inline)) void STAGE(modwrite_proved)(GlesContext *ctx, const TriSetup *t,
+                                                                        SpanBuf *b, int src, int dot3)
 {
     /* a primitive's chunks share the constants and the stage's choices,
     ** in the context: the first chunk forms them, each chunk completes
@@ -1837,25 +1840,37 @@ static inline __attribute__((always_inline)) void STAGE(modulate_write)(GlesCont
                            b->tc, chunk_color(ctx, b, rgb565), ctx->unorm5, ctx->unorm6, ctx_simd(ctx) >= SIMD_AVX512);
 }
 
+#if NUM_IS_FIXED
 static void STAGE(stage_modulate_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
-    STAGE(modulate_write)(ctx, t, b, 0, 0);
+    STAGE(modwrite_proved)(ctx, t, b, 0, 0);
 }
 
 static void STAGE(stage_sample_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
-    STAGE(modulate_write)(ctx, t, b, 1, 0);
+    STAGE(modwrite_proved)(ctx, t, b, 1, 0);
 }
 
 static void STAGE(stage_dot3_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
-    STAGE(modulate_write)(ctx, t, b, 0, 1);
+    STAGE(modwrite_proved)(ctx, t, b, 0, 1);
 }
 
 static void STAGE(stage_dot3_sample_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
-    STAGE(modulate_write)(ctx, t, b, 1, 1);
+    STAGE(modwrite_proved)(ctx, t, b, 1, 1);
 }
+#else
+static void STAGE(stage_modulate_write_proved)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    STAGE(modwrite_proved)(ctx, t, b, 0, 0);
+}
+
+static void STAGE(stage_sample_write_proved)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    STAGE(modwrite_proved)(ctx, t, b, 1, 0);
+}
+#endif
 #endif
 
 #if CHAIN_SIMD && !NUM_IS_FIXED
@@ -2022,6 +2037,10 @@ static const ChainStages STAGE(chain_stages) = {
     .fused = { .modulate_write = STAGE(stage_modulate_write), .sample_write = STAGE(stage_sample_write),
                .dot3_write = STAGE(stage_dot3_write), .dot3_sample_write = STAGE(stage_dot3_sample_write),
                .modulate_write_565 = 1, .dot3_exact = 1 },
+#elif CHAIN_SIMD
+    /* the double build's float lanes, proved (no DOT3) */
+    .fused = { .modulate_write = STAGE(stage_modulate_write_proved),
+               .sample_write = STAGE(stage_sample_write_proved), .modulate_write_565 = 1 },
 #endif
 #if CHAIN_SIMD && SIMD_AVX512_INSTANCE
     .fused_avx512 = { .modulate_write = STAGE(stage_modulate_write), .sample_write = STAGE(stage_sample_write),

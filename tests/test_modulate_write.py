@@ -391,11 +391,11 @@ def test_padded_tails_over_scattered_fragments(rgb565):
 # the float build's kernel: the scalar code's float operations in its order
 
 
-def _model_f32(smooth, rgb, kind, func, ref, col, p, ct, d):
-    """Words of the float build's chain for all fragments at once, in
-    float32 numpy arithmetic, operation by operation as frag_lerp3f,
-    frag_clamp01, frag_mul, fragment_alpha8 and v4_rgba8 do them."""
-    f = np.float32
+def _model_f32(smooth, rgb, kind, func, ref, col, p, ct, d, f=np.float32):
+    """Words of the float build's chain (f = np.float64: the double build's)
+    for all fragments at once, in numpy arithmetic of that type, operation
+    by operation as frag_lerp3f, frag_clamp01, frag_mul, fragment_alpha8 and
+    v4_rgba8 do them."""
     one, zero = f(1), f(0)
 
     def clamp01(v):
@@ -466,6 +466,208 @@ def test_float_build_kernel_matches_float32_model(kind):
         expect = dst.copy()
         expect[k] = _model_f32(smooth, rgb, kind, func, ref, col, w, ct, d)
         np.testing.assert_array_equal(out, expect)
+
+
+# {================================================================
+# the double build's AVX2 kernel: float lanes, each byte proved equal to the
+# double chain's or taken from it
+
+
+def _run_d(smooth, rgb, kind, func, ref, col, p, ct, dst, k, rgb565=0, dither=0, x0=0):
+    """gles_debug_modulate_write_d's words at offsets k of dst, and its
+    count of fragments left to the exact code."""
+    ctx = make_ctx("double", 1, 1)
+    if ctx.simd == "baseline":
+        pytest.skip("no AVX2 instance")
+    ffi, lib = ctx._ffi, ctx._lib
+    n = len(k)
+    cf = np.ascontiguousarray(col, dtype=np.float64).reshape(-1)
+    w = np.ascontiguousarray(p, dtype=np.float64).reshape(-1)
+    t = np.ascontiguousarray(ct, dtype=np.float64).reshape(-1)
+    k = np.ascontiguousarray(k, dtype=np.uint8)
+    out = np.array(dst, dtype=np.uint16 if rgb565 else np.uint32)
+    exact = lib.gles_debug_modulate_write_d(
+        smooth, rgb, kind, func, ref, ffi.cast("double *", cf.ctypes.data), n,
+        ffi.cast("uint8_t *", k.ctypes.data), ffi.cast("double *", w.ctypes.data),
+        ffi.cast("double *", t.ctypes.data), rgb565, dither, x0, ffi.cast("void *", out.ctypes.data))
+    assert exact >= 0
+    return out, exact
+
+
+def _expect_d(smooth, rgb, kind, func, ref, col, p, ct, dst, k):
+    expect = np.array(dst, dtype=np.uint32)
+    expect[k] = _model_f32(smooth, rgb, kind, func, ref, col, p, ct, expect[k], f=np.float64)
+    return expect
+
+
+@pytest.mark.parametrize("kind", [0, 1, 2], ids=["none", "alpha", "add"])
+def test_double_build_kernel_matches_float64_model(kind):
+    """The double build's AVX2 kernel gives the double chain's words (the
+    scalar code's IEEE double operations in their order, in numpy float64)
+    on random colours, weights (a few slightly outside the triangle),
+    texels (bytes / 255, bilinear blends of them, 0 and 1), stored words,
+    alpha tests, and counts that are not whole groups; few lanes go to the
+    exact code."""
+    rng = np.random.default_rng(500 + kind)
+    lanes = exact_total = 0
+    for trial in range(512):
+        smooth, rgb = trial % 2, (trial // 2) % 2
+        func = FUNCS[trial % len(FUNCS)] if trial % 5 == 0 else C.GL_ALWAYS
+        ref = int(rng.integers(0, 256))
+        n = int(rng.integers(1, 64)) if trial % 4 == 3 else 64
+        col = rng.uniform(0, 1, (3, 4))
+        w = rng.uniform(0, 1, (n, 3))
+        w /= w.sum(axis=1, keepdims=True)
+        w[: n // 8, 0] -= rng.uniform(0, 2e-3, n // 8)
+        ct = rng.uniform(0, 1, (n, 4))
+        ct[: n // 2] = rng.integers(0, 256, (n // 2, 4)) / 255.0
+        ct[: min(n, 2)] = [[0.0, 1.0, 0.5, 1.0], [1.0, 0.0, 1.0, 0.0]][: min(n, 2)]
+        k = np.arange(n) if trial % 3 else np.sort(rng.choice(80, n, replace=False))
+        dst = rng.integers(0, 1 << 32, 80, dtype=np.uint64).astype(np.uint32)
+        out, exact = _run_d(smooth, rgb, kind, func, ref, col, w, ct, dst, k)
+        np.testing.assert_array_equal(out, _expect_d(smooth, rgb, kind, func, ref, col, w, ct, dst, k))
+        lanes += n
+        exact_total += exact
+    assert exact_total <= 0.05 * lanes
+
+
+@pytest.mark.parametrize("kind", [0, 1, 2], ids=["none", "alpha", "add"])
+def test_double_build_kernel_at_the_rounding_ties(kind):
+    """Values put on the ties of the final rounding, so that only the exact
+    code can be right: the colour c of each rgb channel is solved (in
+    float64) from a texel T, a stored byte D and the alpha A so that the
+    blended value is (b + 1/2) / 255 for a random byte b (ONE / ONE: cT + D
+    / 255; SRC_ALPHA: cT A + D / 255 (1 - A); none: cT), which lands within
+    a few units of the last place either side of the tie; the vertex
+    colours are all c (smooth) or c is the flat colour."""
+    rng = np.random.default_rng(600 + kind)
+    total = 0
+    for _ in range(64):
+        n = 64
+        T = rng.uniform(0.3, 1.0, (n, 4))
+        d = rng.integers(0, 1 << 32, n, dtype=np.uint64).astype(np.uint32)
+        alpha = 0.8 if kind == 1 else 1.0
+        c = np.empty(4)
+        c[3] = alpha
+        ct = T.copy()
+        ct[:, 3] = 1.0                      # A = c_a, the same in every fragment
+        D = np.stack([(d >> (8 * i)) & 0xFF for i in range(3)], axis=1) / 255.0
+        b = rng.integers(1, 255, 3)
+        target = (b + 0.5) / 255.0
+        # one colour per trial (flat and smooth alike): fragment 0's solution
+        if kind == 0:
+            m = target
+        elif kind == 2:
+            m = target - D[0]
+        else:
+            m = (target - D[0] * (1 - alpha)) / alpha
+        c[:3] = np.clip(m / T[0, :3], 0.0, 1.0)
+        # every fragment on the tie: its texel solved from the colour
+        want = np.broadcast_to(target, (n, 3))
+        if kind == 2:
+            want = want - D
+        elif kind == 1:
+            want = (want - D * (1 - alpha)) / alpha
+        with np.errstate(divide="ignore", invalid="ignore"):
+            ct[:, :3] = np.clip(np.where(c[:3] > 0, want / c[:3], 0.0), 0.0, 1.0)
+        col = np.array([c] * 3)
+        w = rng.uniform(0, 1, (n, 3))
+        w /= w.sum(axis=1, keepdims=True)
+        k = np.arange(n)
+        for smooth in (0, 1):
+            out, exact = _run_d(smooth, 0, kind, C.GL_ALWAYS, 0, col, w, ct, d, k)
+            np.testing.assert_array_equal(out, _expect_d(smooth, 0, kind, C.GL_ALWAYS, 0, col, w, ct, d, k))
+            total += exact
+    assert total > 0          # the ties did reach the exact code
+
+
+def _model_565_f64(smooth, rgb, kind, col, p, ct, d, x, dither):
+    """RGB565 words of the double build's chain (stage_color_modulate, then
+    stage_write_565 or stage_write_565_alpha) in numpy float64, operation
+    by operation; x: each fragment's column (row 0's dither thresholds)."""
+    f = np.float64
+
+    def clamp01(v):
+        return np.minimum(f(1), np.maximum(f(0), v))
+
+    if smooth:
+        c = clamp01((col[0][None, :] * p[:, 0:1] + col[1][None, :] * p[:, 1:2]) + col[2][None, :] * p[:, 2:3])
+    else:
+        c = np.broadcast_to(clamp01(col[0]), (len(ct), 4))
+    y = c * ct
+    if rgb:
+        y[:, 3] = c[:, 3]
+    if kind:
+        cv = clamp01(y)
+        va = cv[:, 3:4]
+        dv = np.stack([((d >> 11) & 31) / f(31), ((d >> 5) & 63) / f(63), (d & 31) / f(31)], axis=1)
+        y = cv[:, :3] * va + dv * (f(1) - va)
+    t = (2 * np.array(BAYER_ROW0)[x & 3] + 1) / f(32)
+    word = np.zeros(len(d), dtype=np.int64)
+    for i, (bits, shift) in enumerate(((5, 11), (6, 5), (5, 0))):
+        v, top = y[:, i], (1 << bits) - 1
+        if dither:
+            q = np.where(v >= 1, top, (v * f(top) + t).astype(np.int64))
+        else:
+            q = np.minimum(np.floor(v * f(1 << bits)), top).astype(np.int64)
+        word |= np.where(v > 0, q, 0) << shift
+    return word.astype(np.uint16)
+
+
+@pytest.mark.parametrize("dither", [0, 1], ids=["msb", "dither"])
+@pytest.mark.parametrize("kind", [0, 1], ids=["none", "alpha"])
+def test_double_build_rgb565_matches_float64_model(kind, dither):
+    """The double build's RGB565 writer in the kernel: random inputs, and
+    channels put on the steps' boundaries (c T = (s + t) / 31 with the
+    fragment's dither threshold t, or s / 32 for the top bits), flat and
+    smooth, from columns x0 of every phase."""
+    rng = np.random.default_rng(700 + 2 * kind + dither)
+    total = 0
+    for trial in range(128):
+        smooth, rgb = trial % 2, (trial // 2) % 2
+        n = int(rng.integers(1, 64)) if trial % 4 == 3 else 64
+        x0 = int(rng.integers(0, 4))
+        col = rng.uniform(0, 1, (3, 4))
+        w = rng.uniform(0, 1, (n, 3))
+        w /= w.sum(axis=1, keepdims=True)
+        ct = rng.uniform(0, 1, (n, 4))
+        k = np.arange(n) if trial % 3 else np.sort(rng.choice(80, n, replace=False))
+        x = x0 + k
+        if trial % 2 == 0 and kind == 0:
+            # on the boundaries: the texel solved from the flat colour
+            col[:] = col[0]
+            col[:, :3] = rng.uniform(0.5, 1.0, 3)
+            t = (2 * np.array(BAYER_ROW0)[x & 3] + 1) / 32.0 if dither else np.zeros(n)
+            for i, top in enumerate((31, 63, 31)):
+                s = rng.integers(1, top, n)
+                target = (s - t) / top if dither else s / (top + 1.0)
+                ct[:, i] = np.clip(target / col[0, i], 0, 1)
+        dst = rng.integers(0, 1 << 16, 80).astype(np.uint16)
+        out, exact = _run_d(smooth, rgb, kind, C.GL_ALWAYS, 0, col, w, ct, dst, k,
+                            rgb565=1, dither=dither, x0=x0)
+        expect = dst.copy()
+        expect[k] = _model_565_f64(smooth, rgb, kind, col, w, ct, dst[k].astype(np.int64), x, dither)
+        np.testing.assert_array_equal(out, expect)
+        total += exact
+    if kind == 0:
+        assert total > 0      # the boundaries did reach the exact code
+
+
+def test_double_build_texels_outside_the_unit_range_take_the_exact_code():
+    """A texel outside [0, 1] or NaN (no sampler makes one) sends its group
+    of eight to the exact code whole."""
+    rng = np.random.default_rng(14)
+    n = 16
+    col = rng.uniform(0, 1, (3, 4))
+    w = np.tile([0.25, 0.25, 0.5], (n, 1))
+    for bad in (1.5, -0.25, np.nan):
+        ct = rng.uniform(0, 1, (n, 4))
+        ct[3, 1] = bad
+        dst = rng.integers(0, 1 << 32, n, dtype=np.uint64).astype(np.uint32)
+        k = np.arange(n)
+        out, exact = _run_d(1, 0, 1, C.GL_ALWAYS, 0, col, w, ct, dst, k)
+        assert exact >= 8
+        np.testing.assert_array_equal(out, _expect_d(1, 0, 1, C.GL_ALWAYS, 0, col, w, ct, dst, k))
 
 
 @pytest.mark.parametrize("blend", [True, False], ids=["blend", "no_blend"])
