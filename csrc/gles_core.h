@@ -129,11 +129,12 @@ int gles_debug_modulate_write_f(int smooth, int rgb, int kind, unsigned int alph
 ** (at most gles_span_chunk(), padded to a whole group as the stage pads)
 ** at offsets k (ascending) of the words dst, with the arguments of
 ** gles_debug_modulate_write_f as doubles (vertex colours in [0, 1]), and
-** rgb565, dither and x0 as gles_debug_modulate_write has them; returns the
-** fragments the float lanes left to the exact code */
+** dot3 (with the first unit's texels ct0), rgb565, dither and x0 as
+** gles_debug_modulate_write has them; returns the fragments the float
+** lanes left to the exact code */
 int gles_debug_modulate_write_d(int smooth, int rgb, int kind, unsigned int alpha_func, uint32_t alpha_ref,
-                                const double col[12], int n, const uint8_t *k, const double *p, const double *ct,
-                                int rgb565, int dither, int x0, void *dst);
+                                const double col[12], int n, const uint8_t *k, const double *p, int dot3,
+                                const double *ct0, const double *ct, int rgb565, int dither, int x0, void *dst);
 /* for tests, fixed build with AVX2 (-1 elsewhere): stage_modulate_write's
 ** kernel over n fragments (at most gles_span_chunk()) at offsets k
 ** (ascending) of the words dst: vertex colours col[4 i ..] (0.30, in

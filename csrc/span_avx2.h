@@ -2401,6 +2401,13 @@ static inline void avx2_modwrite_dither(Avx2ModWrite *m, int dither, const FRAGV
 ** values that lie that near) */
 AVX2_INLINE float avx2_modwrite_margin(int kind, int dot3)
 {
+#if !NUM_IS_FIXED
+    /* the double build's DOT3 with texels sampled in the kernel (8.1u
+    ** each): no blend and ONE / ONE at most 22000u, under 2^-9 = 32768u;
+    ** SRC_ALPHA 35000u, under 2^-8 (docs/architecture.md) */
+    if (dot3)
+        return kind == 1 ? 0x1p-8f : 0x1p-9f;
+#endif
     return dot3 ? (kind == 1 ? 0x1p-9f : 0x1p-10f) : kind == 1 ? 0x1p-10f : 0x1p-11f;
 }
 
@@ -2510,21 +2517,24 @@ AVX2_INLINE void avx2_wgt_float8(const WGT (*p)[3], __m256 *w0, __m256 *w1, __m2
 }
 
 /* eight fragments' texels ct + k stride (doubles) as floats T[0..3], each
-** rounded once; 0 unless every one lies in [0, 1] (the bounds' range; NaN
-** fails) */
+** rounded once; with half_rgb T[0..2] less 1/2 (DOT3's operand: the
+** double difference, exact but below 1/4, then rounded); 0 unless every
+** texel lies in [0, 1] (the bounds' range; NaN fails) */
 AVX2_INLINE int avx2_texels_ct8(const FRAGV *ct, size_t stride, int half_rgb, __m256 T[4])
 {
-    (void)half_rgb;     /* (the double build's lanes take no DOT3) */
+    const float h = half_rgb ? 0.5f : 0.0f;
+    const __m256d shift = _mm256_setr_pd(h, h, h, 0);
     __m128 f[8];
     for (int k = 0; k < 8; k++)
-        f[k] = _mm256_cvtpd_ps(_mm256_loadu_pd(ct + (size_t)k * stride));
+        f[k] = _mm256_cvtpd_ps(_mm256_sub_pd(_mm256_loadu_pd(ct + (size_t)k * stride), shift));
     _MM_TRANSPOSE4_PS(f[0], f[1], f[2], f[3]);
     _MM_TRANSPOSE4_PS(f[4], f[5], f[6], f[7]);
     __m256 in = _mm256_castsi256_ps(_mm256_set1_epi32(-1));
     for (int i = 0; i < 4; i++) {
+        const float lo = i < 3 ? -h : 0.0f;
         T[i] = _mm256_set_m128(f[4 + i], f[i]);
-        in = _mm256_and_ps(in, _mm256_and_ps(_mm256_cmp_ps(T[i], _mm256_setzero_ps(), _CMP_GE_OQ),
-                                             _mm256_cmp_ps(T[i], _mm256_set1_ps(1.0f), _CMP_LE_OQ)));
+        in = _mm256_and_ps(in, _mm256_and_ps(_mm256_cmp_ps(T[i], _mm256_set1_ps(lo), _CMP_GE_OQ),
+                                             _mm256_cmp_ps(T[i], _mm256_set1_ps(1.0f + lo), _CMP_LE_OQ)));
     }
     return _mm256_movemask_ps(in) == 0xFF;
 }
@@ -2536,9 +2546,9 @@ AVX2_INLINE int avx2_texels_ct8(const FRAGV *ct, size_t stride, int half_rgb, __
 ** bilinear sum of the texels' bytes (exact integers) h0 = c00 (1 - a) +
 ** c10 a, h1 = c01 (1 - a) + c11 a, then h0 (1 - b) / 255 + h1 b / 255
 ** with the factors' (1 - b) / 255 and b / 255 rounded: within 8.1u of the
-** exact sampler's texel (docs/architecture.md). 0 when a coordinate is not
-** finite. */
-AVX2_INLINE int avx2_texels_sampled8(const ModWriteTexture *tx, const TexCoord *tc, __m256 T[4])
+** exact sampler's texel (docs/architecture.md); with half_rgb T[0..2] less
+** 1/2 in float (DOT3's operand). 0 when a coordinate is not finite. */
+AVX2_INLINE int avx2_texels_sampled8(const ModWriteTexture *tx, const TexCoord *tc, int half_rgb, __m256 T[4])
 {
     V4 s[2], t[2], a[2], b[2];
     __m128i x0[2], x1[2], y0[2], y1[2];
@@ -2567,6 +2577,8 @@ AVX2_INLINE int avx2_texels_sampled8(const ModWriteTexture *tx, const TexCoord *
         __m256 h0, h1;
         avx2_bilerp8_rows(g, i, af, iaf, &h0, &h1);
         T[i] = _mm256_fmadd_ps(h0, ibk, _mm256_mul_ps(h1, bk));
+        if (half_rgb && i < 3)
+            T[i] = _mm256_sub_ps(T[i], _mm256_set1_ps(0.5f));
     }
     return 1;
 }
@@ -2781,7 +2793,7 @@ AVX2_INLINE int avx2_modwrite_texels8(const ModWriteTexture *tx, int src, const 
     if (src == 0)
         return avx2_texels_ct8(ct, stride, half_rgb, T);
 #if !NUM_IS_FIXED
-    return avx2_texels_sampled8(tx, tc, T);
+    return avx2_texels_sampled8(tx, tc, half_rgb, T);
 #else
     __m256i g[4], a, b;
     avx2_linear_texels8c((const int *)(const void *)tx->texels, tx->log2w, tx->log2h, &tx->ax_s, &tx->ax_t, tc,
@@ -2938,24 +2950,16 @@ AVX2_INLINE void avx2_modwrite_instances(AVX2_MODWRITE_ARGS, int dot3)
 ** and prefix_modwrite_dot3: one function of all of them grows past what the
 ** compiler optimises as well (its register allocation), which cost the
 ** lone unit's kernel 2-3% */
-#define AVX2_MODWRITE_PLAIN(prefix) \
+#define AVX2_MODWRITE_FUNCTIONS(prefix) \
     static __attribute__((noinline)) void prefix##_modwrite_plain(AVX2_MODWRITE_ARGS) \
     { \
         avx2_modwrite_instances(m, a, src, rgb565, n, live, k, x0, p, ct, stride, tc, dst, unorm5, unorm6, 0); \
-    }
-#define AVX2_MODWRITE_FUNCTIONS(prefix) \
-    AVX2_MODWRITE_PLAIN(prefix) \
+    } \
     static __attribute__((noinline)) void prefix##_modwrite_dot3(AVX2_MODWRITE_ARGS) \
     { \
         avx2_modwrite_instances(m, a, src, rgb565, n, live, k, x0, p, ct, stride, tc, dst, unorm5, unorm6, 1); \
     }
-#if NUM_IS_FIXED
 AVX2_MODWRITE_FUNCTIONS(avx2)
-#else
-/* (the double build's lanes take no DOT3: its bound is the fixed build's
-** to derive again, and its chain has stage_color_dot3_modulate) */
-AVX2_MODWRITE_PLAIN(avx2)
-#endif
 #if SIMD_AVX512_FX
 /* the same functions compiled for AVX-512VL, where the CPU has it: the
 ** same AVX2 operations on the same lanes (so the same words), with
@@ -2967,7 +2971,6 @@ AVX2_MODWRITE_FUNCTIONS(fx512)
 #pragma GCC pop_options
 #endif
 #undef AVX2_MODWRITE_FUNCTIONS
-#undef AVX2_MODWRITE_PLAIN
 
 /* the kernel's instance for the state (m->dot3), in AVX-512VL's registers
 ** where wide (the context runs AVX-512) */
@@ -2982,12 +2985,8 @@ static inline void avx2_modwrite_dispatch(AVX2_MODWRITE_ARGS, int wide)
 #else
     (void)wide;
 #endif
-#if NUM_IS_FIXED
     (m->dot3 ? avx2_modwrite_dot3 : avx2_modwrite_plain)(m, a, src, rgb565, n, live, k, x0, p, ct, stride, tc, dst,
                                                          unorm5, unorm6);
-#else
-    avx2_modwrite_plain(m, a, src, rgb565, n, live, k, x0, p, ct, stride, tc, dst, unorm5, unorm6);
-#endif
 }
 #undef AVX2_MODWRITE_ARGS
 /* }==================================================================== */

@@ -281,15 +281,17 @@ int gles_debug_modulate_write_f(int smooth, int rgb, int kind, unsigned int alph
 }
 
 int gles_debug_modulate_write_d(int smooth, int rgb, int kind, unsigned int alpha_func, uint32_t alpha_ref,
-                                const double col[12], int n, const uint8_t *k, const double *p, const double *ct,
-                                int rgb565, int dither, int x0, void *dst)
+                                const double col[12], int n, const uint8_t *k, const double *p, int dot3,
+                                const double *ct0, const double *ct, int rgb565, int dither, int x0, void *dst)
 {
 #if SIMD_X86 && defined(GLES_NUM_DOUBLE)
-    return debug_modwrite(smooth, rgb, kind, alpha_func, alpha_ref, col, n, k, p, -1, NULL, ct, 1, rgb565, dither, x0,
-                          dst);
+    if (dot3 < 0 || dot3 > 2)
+        return -1;
+    return debug_modwrite(smooth, rgb, kind, alpha_func, alpha_ref, col, n, k, p, dot3 - 1, ct0, ct, 1, rgb565,
+                          dither, x0, dst);
 #else
     (void)smooth, (void)rgb, (void)kind, (void)alpha_func, (void)alpha_ref, (void)col, (void)n, (void)k, (void)p,
-        (void)ct, (void)rgb565, (void)dither, (void)x0, (void)dst;
+        (void)dot3, (void)ct0, (void)ct, (void)rgb565, (void)dither, (void)x0, (void)dst;
     return -1;
 #endif
 }

@@ -1736,10 +1736,9 @@ static inline void STAGE(fused_units)(const GlesContext *ctx, int dot3, int *u0,
 ** and stage_env's MODULATE), the alpha test and write_rgba8 (blend kind 0,
 ** 1 or 2) or stage_write_565 / stage_write_565_alpha in one pass of eight
 ** float lanes, each byte proved equal to the exact chain's or taken from
-** it (avx2_modwrite8). The double build's AVX2 instance has it without
-** DOT3 (stage_modulate_write_proved,
-** stage_sample_write_proved), where its own kernel in double lanes needs
-** AVX-512. Source 0 takes the texels a fetch stage sampled;
+** it (avx2_modwrite8). The double build's AVX2 instance has it too
+** (stage_modulate_write_proved and the rest), where its own kernel in
+** double lanes needs AVX-512. Source 0 takes the texels a fetch stage sampled;
 ** source 1 samples at the coordinates a coordinates stage left (a
 ** bilinear sampler with a vector kernel, texture_span_sample_group 8), and
 ** there the unit may be a lone REPLACE of an RGBA texture. With dot3 the
@@ -1869,6 +1868,16 @@ static void STAGE(stage_modulate_write_proved)(GlesContext *ctx, const TriSetup 
 static void STAGE(stage_sample_write_proved)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     STAGE(modwrite_proved)(ctx, t, b, 1, 0);
+}
+
+static void STAGE(stage_dot3_write_proved)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    STAGE(modwrite_proved)(ctx, t, b, 0, 1);
+}
+
+static void STAGE(stage_dot3_sample_write_proved)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    STAGE(modwrite_proved)(ctx, t, b, 1, 1);
 }
 #endif
 #endif
@@ -2038,9 +2047,10 @@ static const ChainStages STAGE(chain_stages) = {
                .dot3_write = STAGE(stage_dot3_write), .dot3_sample_write = STAGE(stage_dot3_sample_write),
                .modulate_write_565 = 1, .dot3_exact = 1 },
 #elif CHAIN_SIMD
-    /* the double build's float lanes, proved (no DOT3) */
+    /* the double build's float lanes, proved */
     .fused = { .modulate_write = STAGE(stage_modulate_write_proved),
-               .sample_write = STAGE(stage_sample_write_proved), .modulate_write_565 = 1 },
+               .sample_write = STAGE(stage_sample_write_proved), .dot3_write = STAGE(stage_dot3_write_proved),
+               .dot3_sample_write = STAGE(stage_dot3_sample_write_proved), .modulate_write_565 = 1 },
 #endif
 #if CHAIN_SIMD && SIMD_AVX512_INSTANCE
     .fused_avx512 = { .modulate_write = STAGE(stage_modulate_write), .sample_write = STAGE(stage_sample_write),

@@ -391,11 +391,12 @@ def test_padded_tails_over_scattered_fragments(rgb565):
 # the float build's kernel: the scalar code's float operations in its order
 
 
-def _model_f32(smooth, rgb, kind, func, ref, col, p, ct, d, f=np.float32):
+def _model_f32(smooth, rgb, kind, func, ref, col, p, ct, d, f=np.float32, dot3=0, t0=None):
     """Words of the float build's chain (f = np.float64: the double build's)
     for all fragments at once, in numpy arithmetic of that type, operation
     by operation as frag_lerp3f, frag_clamp01, frag_mul, fragment_alpha8 and
-    v4_rgba8 do them."""
+    v4_rgba8 do them; with dot3, stage_color_dot3_modulate's DOT3 of the
+    first unit's texels t0 and the colour first."""
     one, zero = f(1), f(0)
 
     def clamp01(v):
@@ -413,6 +414,12 @@ def _model_f32(smooth, rgb, kind, func, ref, col, p, ct, d, f=np.float32):
         c = clamp01((col[0][None, :] * w[:, 0:1] + col[1][None, :] * w[:, 1:2]) + col[2][None, :] * w[:, 2:3])
     else:
         c = np.broadcast_to(clamp01(col[0]), (len(ct), 4))
+    if dot3:
+        half = f(0.5)
+        q = (t0.astype(f)[:, :3] - half) * (c[:, :3] - half)
+        dsum = np.maximum(f(0), np.minimum(f(1), (((f(0) + q[:, 0]) + q[:, 1]) + q[:, 2]) * f(4)))
+        alpha = dsum if dot3 == 2 else clamp01(t0.astype(f)[:, 3] * c[:, 3])
+        c = np.stack([dsum, dsum, dsum, alpha], axis=1)
     y = (c * ct.astype(f)).astype(f)
     if rgb:
         y[:, 3] = c[:, 3]
@@ -473,7 +480,7 @@ def test_float_build_kernel_matches_float32_model(kind):
 # double chain's or taken from it
 
 
-def _run_d(smooth, rgb, kind, func, ref, col, p, ct, dst, k, rgb565=0, dither=0, x0=0):
+def _run_d(smooth, rgb, kind, func, ref, col, p, ct, dst, k, rgb565=0, dither=0, x0=0, dot3=0, t0=None):
     """gles_debug_modulate_write_d's words at offsets k of dst, and its
     count of fragments left to the exact code."""
     ctx = make_ctx("double", 1, 1)
@@ -484,19 +491,22 @@ def _run_d(smooth, rgb, kind, func, ref, col, p, ct, dst, k, rgb565=0, dither=0,
     cf = np.ascontiguousarray(col, dtype=np.float64).reshape(-1)
     w = np.ascontiguousarray(p, dtype=np.float64).reshape(-1)
     t = np.ascontiguousarray(ct, dtype=np.float64).reshape(-1)
+    t0 = np.ascontiguousarray(ct if t0 is None else t0, dtype=np.float64).reshape(-1)
     k = np.ascontiguousarray(k, dtype=np.uint8)
     out = np.array(dst, dtype=np.uint16 if rgb565 else np.uint32)
     exact = lib.gles_debug_modulate_write_d(
         smooth, rgb, kind, func, ref, ffi.cast("double *", cf.ctypes.data), n,
-        ffi.cast("uint8_t *", k.ctypes.data), ffi.cast("double *", w.ctypes.data),
-        ffi.cast("double *", t.ctypes.data), rgb565, dither, x0, ffi.cast("void *", out.ctypes.data))
+        ffi.cast("uint8_t *", k.ctypes.data), ffi.cast("double *", w.ctypes.data), dot3,
+        ffi.cast("double *", t0.ctypes.data), ffi.cast("double *", t.ctypes.data), rgb565, dither, x0,
+        ffi.cast("void *", out.ctypes.data))
     assert exact >= 0
     return out, exact
 
 
-def _expect_d(smooth, rgb, kind, func, ref, col, p, ct, dst, k):
+def _expect_d(smooth, rgb, kind, func, ref, col, p, ct, dst, k, dot3=0, t0=None):
     expect = np.array(dst, dtype=np.uint32)
-    expect[k] = _model_f32(smooth, rgb, kind, func, ref, col, p, ct, expect[k], f=np.float64)
+    expect[k] = _model_f32(smooth, rgb, kind, func, ref, col, p, ct, expect[k], f=np.float64,
+                           dot3=dot3, t0=t0)
     return expect
 
 
@@ -579,6 +589,51 @@ def test_double_build_kernel_at_the_rounding_ties(kind):
             np.testing.assert_array_equal(out, _expect_d(smooth, 0, kind, C.GL_ALWAYS, 0, col, w, ct, d, k))
             total += exact
     assert total > 0          # the ties did reach the exact code
+
+
+@pytest.mark.parametrize("kind", [0, 1, 2], ids=["none", "alpha", "add"])
+@pytest.mark.parametrize("dot3", [1, 2], ids=["dot3_rgb", "dot3_rgba"])
+def test_double_build_dot3_matches_float64_model(dot3, kind):
+    """The double build's kernel with a first unit's DOT3 before the
+    MODULATE (stage_color_dot3_modulate's operations): random inputs whose
+    channels often sit at 1/2, 0 and 1, and, in every other trial, the
+    first unit's red texel solved so that the word lands on a tie (the
+    colour (1, 1/2, 1/2) leaves the red product alone: DOT3 = 4 (t0_r -
+    1/2) / 2, which with a second texel of 1 and no blend is the channel's
+    value)."""
+    rng = np.random.default_rng(800 + 3 * dot3 + kind)
+    lanes = exact_total = ties_exact = 0
+    for trial in range(256):
+        smooth, rgb = trial % 2, (trial // 2) % 2
+        n = int(rng.integers(1, 65)) if trial % 4 == 3 else 64
+        col = rng.uniform(0, 1, (3, 4))
+        col[:, :3][rng.random((3, 3)) < 0.2] = 0.5
+        w = rng.uniform(0, 1, (n, 3))
+        w /= w.sum(axis=1, keepdims=True)
+        ct, t0 = rng.uniform(0, 1, (n, 4)), rng.uniform(0, 1, (n, 4))
+        t0[rng.random((n, 4)) < 0.1] = 0.5
+        ct[rng.random((n, 4)) < 0.1] = 1.0
+        tie = trial % 2 == 0
+        if tie:
+            col = np.array([[1.0, 0.5, 0.5, 1.0]] * 3)
+            ct[:] = 1.0
+            b = rng.integers(1, 255, n)
+            t0[:, 0] = 0.5 + (b + 0.5) / 255.0 / 2.0
+        k = np.arange(n) if trial % 3 else np.sort(rng.choice(80, n, replace=False))
+        dst = rng.integers(0, 1 << 32, 80, dtype=np.uint64).astype(np.uint32)
+        func = FUNCS[trial % len(FUNCS)] if trial % 5 == 1 else C.GL_ALWAYS
+        ref = int(rng.integers(0, 256))
+        args = (smooth, rgb, kind, func, ref, col, w, ct, dst, k)
+        out, exact = _run_d(*args, dot3=dot3, t0=t0)
+        np.testing.assert_array_equal(out, _expect_d(*args, dot3=dot3, t0=t0))
+        if tie:
+            ties_exact += exact
+        else:
+            lanes += n
+            exact_total += exact
+    assert exact_total <= 0.1 * lanes
+    if kind == 0:
+        assert ties_exact > 0     # the ties did reach the exact code
 
 
 def _model_565_f64(smooth, rgb, kind, col, p, ct, d, x, dither):
