@@ -2276,10 +2276,10 @@ static inline void modwrite_texture_setup(ModWriteTexture *m, const Texture *t, 
 ** The exact chain ends in byte = floor(255 Y + 1/2) of a value Y that
 ** float lanes approximate: Y_f with |Y_f - Y| <= 27 u (u = 2^-24; 49 u
 ** in the double build; the bounds, from the colours, weights and texels'
-** ranges, are derived in docs/architecture.md). When 255 Y_f + 1/2 lies at least the state's
-** margin (avx2_modwrite_margin: above 255 times the bound plus the
-** rounding of that sum) from the nearest integer, 255 Y + 1/2 has the
-** same floor. A lane nearer than that (0.1-0.4% of channels), or whose
+** ranges, are derived in docs/architecture.md). When 255 Y_f + 1/2 lies
+** at least the state's margin (avx2_modwrite_margin: above 255 times the
+** bound plus the rounding of that sum) from the nearest integer, 255 Y +
+** 1/2 has the same floor. A lane nearer than that (0.1-0.4% of channels), or whose
 ** weights' magnitudes sum to more than 1 + 2^-7, gets the exact chain's
 ** bytes instead. */
 
@@ -2448,8 +2448,8 @@ AVX2_INLINE void avx2_bilerp8_rows(const __m256i g[4], int i, __m256 a, __m256 i
 }
 
 #if NUM_IS_FIXED
-/* the three weights of fragments p[0..7] as float lanes (integers times
-** 2^-30 ... read as integers: the colours carry the scale) */
+/* the three weights of fragments p[0..7] as float lanes: their 0.30
+** integers (the colours carry the scale, 2^-60) */
 AVX2_INLINE void avx2_wgt_float8(const WGT (*p)[3], __m256 *w0, __m256 *w1, __m256 *w2)
 {
     __m256i wi[3];
@@ -2518,8 +2518,8 @@ AVX2_INLINE void avx2_wgt_float8(const WGT (*p)[3], __m256 *w0, __m256 *w1, __m2
 
 /* eight fragments' texels ct + k stride (doubles) as floats T[0..3], each
 ** rounded once; with half_rgb T[0..2] less 1/2 (DOT3's operand: the
-** double difference, exact but below 1/4, then rounded); 0 unless every
-** texel lies in [0, 1] (the bounds' range; NaN fails) */
+** double difference, exact from 1/4 up, then rounded once); 0 unless
+** every texel lies in [0, 1] (the bounds' range; NaN fails) */
 AVX2_INLINE int avx2_texels_ct8(const FRAGV *ct, size_t stride, int half_rgb, __m256 T[4])
 {
     const float h = half_rgb ? 0.5f : 0.0f;
@@ -2623,7 +2623,7 @@ AVX2_INLINE void avx2_modwrite_source8(const Avx2ModWrite *m, int smooth, int do
             const __m256 mag = _mm256_add_ps(_mm256_add_ps(_mm256_andnot_ps(sign, w0), _mm256_andnot_ps(sign, w1)),
                                              _mm256_andnot_ps(sign, w2));
             /* (not below: larger, or NaN) */
-            *bad = _mm256_cmp_ps(mag, _mm256_set1_ps((float)(0x1.02p0 / MODWRITE_COL_SCALE(1))), _CMP_NLE_UQ);
+            *bad = _mm256_cmp_ps(mag, _mm256_set1_ps((float)(0x1.02p0 * (double)WGT_ONE)), _CMP_NLE_UQ);
             /* with dot3 the rgb lanes less 1/2, from the vertex
             ** colours less 1/2 (the weights sum to 1) */
             const __m256 half = _mm256_set1_ps(0.5f), nhalf = _mm256_set1_ps(-0.5f);

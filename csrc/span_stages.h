@@ -1839,47 +1839,32 @@ static inline __attribute__((always_inline)) void STAGE(modwrite_proved)(GlesCon
                            b->tc, chunk_color(ctx, b, rgb565), ctx->unorm5, ctx->unorm6, ctx_simd(ctx) >= SIMD_AVX512);
 }
 
+/* the kernel's four stages: sampled here or fetched (source 1 or 0), with
+** and without the DOT3 pair; the double build's named _proved, beside its
+** kernel in AVX-512's double lanes */
+#define MODWRITE_PROVED_STAGES(suffix) \
+    static void STAGE(stage_modulate_write##suffix)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) \
+    { \
+        STAGE(modwrite_proved)(ctx, t, b, 0, 0); \
+    } \
+    static void STAGE(stage_sample_write##suffix)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) \
+    { \
+        STAGE(modwrite_proved)(ctx, t, b, 1, 0); \
+    } \
+    static void STAGE(stage_dot3_write##suffix)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) \
+    { \
+        STAGE(modwrite_proved)(ctx, t, b, 0, 1); \
+    } \
+    static void STAGE(stage_dot3_sample_write##suffix)(GlesContext *ctx, const TriSetup *t, SpanBuf *b) \
+    { \
+        STAGE(modwrite_proved)(ctx, t, b, 1, 1); \
+    }
 #if NUM_IS_FIXED
-static void STAGE(stage_modulate_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
-{
-    STAGE(modwrite_proved)(ctx, t, b, 0, 0);
-}
-
-static void STAGE(stage_sample_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
-{
-    STAGE(modwrite_proved)(ctx, t, b, 1, 0);
-}
-
-static void STAGE(stage_dot3_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
-{
-    STAGE(modwrite_proved)(ctx, t, b, 0, 1);
-}
-
-static void STAGE(stage_dot3_sample_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
-{
-    STAGE(modwrite_proved)(ctx, t, b, 1, 1);
-}
+MODWRITE_PROVED_STAGES()
 #else
-static void STAGE(stage_modulate_write_proved)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
-{
-    STAGE(modwrite_proved)(ctx, t, b, 0, 0);
-}
-
-static void STAGE(stage_sample_write_proved)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
-{
-    STAGE(modwrite_proved)(ctx, t, b, 1, 0);
-}
-
-static void STAGE(stage_dot3_write_proved)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
-{
-    STAGE(modwrite_proved)(ctx, t, b, 0, 1);
-}
-
-static void STAGE(stage_dot3_sample_write_proved)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
-{
-    STAGE(modwrite_proved)(ctx, t, b, 1, 1);
-}
+MODWRITE_PROVED_STAGES(_proved)
 #endif
+#undef MODWRITE_PROVED_STAGES
 #endif
 
 #if CHAIN_SIMD && !NUM_IS_FIXED

@@ -323,6 +323,29 @@ def test_texels_outside_the_unit_range_take_the_exact_code():
     np.testing.assert_array_equal(out, _expect(1, 0, 1, C.GL_ALWAYS, 0, col, p, ct, dst, k))
 
 
+def test_weights_far_outside_the_triangle_take_the_exact_code():
+    """A fragment whose weights' magnitudes sum past 1 + 2^-7 (a point well
+    outside its triangle; the bound counts that sum) goes to the exact
+    code, its group's others not; in both builds that have the kernel."""
+    rng = np.random.default_rng(15)
+    n = 16
+    far = [1.5, -0.25, -0.25]
+    near = [0.25, 0.25, 0.5]
+    k = np.arange(n)
+    dst = rng.integers(0, 1 << 32, n, dtype=np.uint64).astype(np.uint32)
+    col = rng.integers(ONE // 4, 3 * ONE // 4, (3, 4))
+    p = np.array([far if j % 5 == 0 else near for j in range(n)]) * ONE
+    ct = np.full((n, 4), ONE // 2)
+    out, exact = _run(1, 0, 0, C.GL_ALWAYS, 0, col, p.astype(np.int64), ct, dst, k)
+    assert exact == 4           # fragments 0, 5, 10 and 15
+    np.testing.assert_array_equal(out, _expect(1, 0, 0, C.GL_ALWAYS, 0, col, p.astype(np.int64), ct, dst, k))
+    cold, pd = col / ONE, p / ONE
+    ctd = np.full((n, 4), 0.5)
+    out, exact = _run_d(1, 0, 0, C.GL_ALWAYS, 0, cold, pd, ctd, dst, k)
+    assert exact == 4
+    np.testing.assert_array_equal(out, _expect_d(1, 0, 0, C.GL_ALWAYS, 0, cold, pd, ctd, dst, k))
+
+
 @pytest.mark.parametrize("dither", [0, 1], ids=["msb", "dither"])
 @pytest.mark.parametrize("kind", [0, 1], ids=["none", "alpha"])
 @pytest.mark.parametrize("smooth", [0, 1], ids=["flat", "smooth"])
