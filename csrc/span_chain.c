@@ -75,9 +75,10 @@ typedef struct FusedStages {
     SpanStage modulate_write, sample_write;
     SpanStage dot3_write, dot3_sample_write;
     int modulate_write_565;     /* they also write RGB565 */
-    /* the DOT3 pair repeats the separate stages' operations (the double
-    ** build's lanes), so it may take DOT3_RGBA under SRC_ALPHA blending;
-    ** the fixed build's float lanes are approximations bounded per byte */
+    /* the DOT3 pair repeats the separate stages' operations (the float
+    ** build's lanes, the double build's AVX-512 ones), so it may take
+    ** DOT3_RGBA under SRC_ALPHA blending; the fixed build's float lanes and
+    ** the double build's AVX2 ones are approximations bounded per byte */
     int dot3_exact;
 } FusedStages;
 
@@ -94,9 +95,9 @@ typedef struct ChainStages {
     SpanStage color_dot3_modulate;  /* float and double builds, AVX2 */
     SpanStage coords[GLES_MAX_TEXTURE_UNITS], coords_rect[GLES_MAX_TEXTURE_UNITS];
     SpanStage coords_tx[GLES_MAX_TEXTURE_UNITS];
-    /* the fused stages of the fixed and float builds' AVX2 instances, and
-    ** of the double build's for a CPU that runs their AVX-512 kernel
-    ** (fused_avx512) */
+    /* the fused stages of the AVX2 instances (the double build's in float
+    ** lanes, proved), and of the double build's for a CPU that runs its
+    ** AVX-512 kernel (fused_avx512) */
     FusedStages fused, fused_avx512;
 } ChainStages;
 
@@ -591,9 +592,10 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     ** (docs/architecture.md) */
     const int dot3 = !rect && target_fused && fs->dot3_write != NULL && span_dot3_pair(ctx)
                   && (fs->dot3_exact || !(bk == 1 && plain && ctx->units[first].combine_rgb == GL_DOT3_RGBA));
-    /* where no fused stage takes that pair (the float build, the double
-    ** build below AVX-512), the colour and both units' environments in one
-    ** stage after the fetches (stage_color_dot3_modulate) */
+    /* where no fused stage takes that pair (a target or blend none takes;
+    ** DOT3_RGBA under SRC_ALPHA on RGBA8888 in the double build's AVX2
+    ** instance), the colour and both units' environments in one stage
+    ** after the fetches (stage_color_dot3_modulate) */
     const int dot3_env = !rect && !dot3 && cs->color_dot3_modulate != NULL && span_dot3_pair(ctx);
     /* ... sampling too where the unit's sampler is a bilinear vector kernel
     ** (stage_sample_write), and then also for a lone REPLACE unit of an

@@ -1738,9 +1738,9 @@ static inline void STAGE(fused_units)(const GlesContext *ctx, int dot3, int *u0,
 ** float lanes, each byte proved equal to the exact chain's or taken from
 ** it (avx2_modwrite8). The double build's AVX2 instance has it too
 ** (stage_modulate_write_proved and the rest), where its own kernel in
-** double lanes needs AVX-512. Source 0 takes the texels a fetch stage sampled;
-** source 1 samples at the coordinates a coordinates stage left (a
-** bilinear sampler with a vector kernel, texture_span_sample_group 8), and
+** double lanes needs AVX-512. Source 0 takes the texels a fetch stage
+** sampled; source 1 samples at the coordinates a coordinates stage left (a
+** bilinear sampler with a vector kernel, texture_span_sample_group > 1), and
 ** there the unit may be a lone REPLACE of an RGBA texture. With dot3 the
 ** units are two (span_dot3_pair): the first one's COMBINE DOT3 of its
 ** texels (a fetch stage sampled them) and the colour comes before the
