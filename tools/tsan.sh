@@ -19,7 +19,8 @@ tsan_lib=$(gcc -print-file-name=libtsan.so)
 # shellcheck disable=SC1091
 . "$work/venv/bin/activate"
 python -m pip install -q --upgrade pip
-GLES_TARGET_CC=none GLES_CFLAGS="-O1 -g -fno-omit-frame-pointer -fsanitize=thread" \
+# (-fno-var-tracking-assignments: as in .ci/run's sanitizer build)
+GLES_TARGET_CC=none GLES_CFLAGS="-O1 -g -fno-var-tracking-assignments -fno-omit-frame-pointer -fsanitize=thread" \
     python -m pip install -q --no-cache-dir ".[test]"
 # -s: the reports go to stderr, past pytest's capture; TSan exits 66 after
 # any. The fork test is left out: TSan cannot follow threads started in a
