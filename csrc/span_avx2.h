@@ -2331,8 +2331,8 @@ typedef struct ModWriteDot3 {
 ** are, its weights being numbers); the alpha test; for RGB565 the dither
 ** thresholds of the row's x & 3 */
 #if NUM_IS_FIXED
-#define MODWRITE_COL_SCALE(smooth) ((smooth) ? 0x1p-60 : 0x1p-30)
 #define MODWRITE_FRAG_SCALE 0x1p-30     /* a FRAGV's value per unit */
+#define MODWRITE_COL_SCALE(smooth) ((smooth) ? 0x1p-60 : MODWRITE_FRAG_SCALE)
 #else
 #define MODWRITE_COL_SCALE(smooth) 1.0
 #define MODWRITE_FRAG_SCALE 1.0
