@@ -2501,6 +2501,98 @@ AVX2_INLINE void avx2_bilerp8_float(const __m256i g[4], __m256i a, __m256i b, in
         }
     }
 }
+
+/* {====================================================================
+** The fog and RGBA8888 write of a lone REPLACE unit's GL_LINEAR texels
+** (one level, or two mixed by the level of detail's fraction) for eight
+** fragments in float lanes, each byte proved equal to the exact stages'
+** (sample_level's texels, lod_mix, stage_fog_write_rgba8): a texel within
+** 4.02u of the exact one (avx2_bilerp8_float), the mix T1 + f (T2 - T1)
+** within 7.04u, the fog factor's weighted sum within 8.1u (the weights'
+** magnitudes summing to at most 1 + 2^-7, the vertices' factors at most 2
+** in magnitude), the fogged channel within 19.2u, so 255 v + 1/2 within
+** 5029u of the exact value, under the margin 2^-11 = 8192u
+** (docs/architecture.md). */
+
+/* the low dwords of eight int64 at q, in order */
+AVX2_INLINE __m256i avx2_low_dwords8(const int64_t *q)
+{
+    const __m256 lo = _mm256_castsi256_ps(_mm256_loadu_si256((const __m256i *)(const void *)q));
+    const __m256 hi = _mm256_castsi256_ps(_mm256_loadu_si256((const __m256i *)(const void *)(q + 4)));
+    /* q0 q1 q4 q5 | q2 q3 q6 q7 */
+    return _mm256_permute4x64_epi64(_mm256_castps_si256(_mm256_shuffle_ps(lo, hi, _MM_SHUFFLE(2, 0, 2, 0))), 0xD8);
+}
+
+/* a level's texel words and log2 sizes, as the kernels read them */
+typedef struct Avx2Level {
+    const int *tx;
+    int log2w, log2h;
+} Avx2Level;
+
+AVX2_INLINE Avx2Level avx2_level(const TexImage *li)
+{
+    return (Avx2Level){ (const int *)(const void *)li->texels, __builtin_ctz((unsigned)li->width),
+                        __builtin_ctz((unsigned)li->height) };
+}
+
+/* slots s0..s0+m-1 (1 <= m <= 8) of a chunk, with coordinates c[0..7] and
+** weights p[0..7] (copies of the last past m): level l1's texels, mixed
+** with the next level's l2 by frac[0..7] (0.30) where two, fogged and
+** written to fw->dst[fw->k[s]]; returns the lanes written (bit i: slot s0
+** + i), each marked in fw->done */
+AVX2_INLINE unsigned avx2_fog_write_texels8(const TexFogWrite *fw, int s0, int m, Avx2Level l1, Avx2Level l2,
+                                            int two, const TexCoord *c, const WGT (*p)[3], const FRAGV *frac,
+                                            int rs, int rt)
+{
+    __m256i g[4], a, b;
+    __m256 T[4];
+    avx2_linear_texels8(l1.tx, l1.log2w, l1.log2h, c, rs, rt, !two, g, &a, &b);
+    avx2_bilerp8_float(g, a, b, 0, T);
+    if (two) {
+        __m256 T2[4];
+        avx2_linear_texels8(l2.tx, l2.log2w, l2.log2h, c, rs, rt, 0, g, &a, &b);
+        avx2_bilerp8_float(g, a, b, 0, T2);
+        /* the fractions' integers are below 2^30: their low dwords */
+        const __m256 f = _mm256_mul_ps(_mm256_cvtepi32_ps(avx2_low_dwords8(frac)), _mm256_set1_ps(0x1p-30f));
+        for (int i = 0; i < 4; i++)
+            T[i] = _mm256_fmadd_ps(f, _mm256_sub_ps(T2[i], T[i]), T[i]);
+    }
+    __m256 w0, w1, w2;
+    avx2_wgt_float8(p, &w0, &w1, &w2);
+    const __m256 mag = _mm256_castsi256_ps(_mm256_set1_epi32(0x7FFFFFFF));
+    const __m256 wsum = _mm256_add_ps(_mm256_add_ps(_mm256_and_ps(w0, mag), _mm256_and_ps(w1, mag)),
+                                      _mm256_and_ps(w2, mag));
+    __m256 bad = _mm256_cmp_ps(wsum, _mm256_set1_ps(0x1.02p0f * (float)WGT_ONE), _CMP_NLE_UQ);
+    __m256 fog = _mm256_fmadd_ps(w0, _mm256_set1_ps(fw->a[0]),
+                                 _mm256_fmadd_ps(w1, _mm256_set1_ps(fw->a[1]),
+                                                 _mm256_mul_ps(w2, _mm256_set1_ps(fw->a[2]))));
+    fog = _mm256_min_ps(_mm256_max_ps(fog, _mm256_setzero_ps()), _mm256_set1_ps(1.0f));
+    const __m256 k255 = _mm256_set1_ps(255.0f), half = _mm256_set1_ps(0.5f);
+    __m256i word = _mm256_slli_epi32(avx2_floor_proved(_mm256_fmadd_ps(T[3], k255, half), 0x1p-11f, &bad), 24);
+    for (int i = 0; i < 3; i++) {
+        const __m256 fc = _mm256_set1_ps(fw->fc[i]);
+        const __m256 v = _mm256_fmadd_ps(fog, _mm256_sub_ps(T[i], fc), fc);
+        word = _mm256_or_si256(word, _mm256_slli_epi32(avx2_floor_proved(_mm256_fmadd_ps(v, k255, half), 0x1p-11f,
+                                                                         &bad), 8 * i));
+    }
+    const unsigned ok = ~(unsigned)_mm256_movemask_ps(bad) & ((1u << m) - 1);
+    const uint8_t *k = fw->k + s0;
+    if (ok == 0xFF && k[7] == k[0] + 7) {
+        _mm256_storeu_si256((__m256i *)(void *)&fw->dst[k[0]], word);
+    } else {
+        uint32_t w[8];
+        _mm256_storeu_si256((__m256i *)(void *)w, word);
+        for (unsigned r = ok; r; r &= r - 1)
+            fw->dst[k[__builtin_ctz(r)]] = w[__builtin_ctz(r)];
+    }
+    const int sh = s0 & 63;
+    fw->done[s0 >> 6] |= (uint64_t)ok << sh;
+    if (sh > 56 && ((uint64_t)ok >> (64 - sh)))     /* (a valid slot past the word: s0 < 64) */
+        fw->done[(s0 >> 6) + 1] |= (uint64_t)ok >> (64 - sh);
+    return ok;
+}
+
+/* }==================================================================== */
 #else
 /* the double build's weights of fragments p[0..7] as float lanes, each
 ** rounded once */

@@ -91,6 +91,7 @@ typedef struct ChainStages {
     SpanStage write, write_rgba8, write_rgba8_alpha, write_rgba8_add, write_rgba8_logic, write_rgba8_masked;
     SpanStage write_565, write_565_alpha;
     SpanStage fog_write_rgba8, fog_write_565;  /* the fixed build's AVX2 instance */
+    SpanStage sample_fog_write_rgba8;           /* the same */
     SpanStage rect_source;
     SpanStage color_dot3_modulate;  /* float and double builds, AVX2 */
     SpanStage coords[GLES_MAX_TEXTURE_UNITS], coords_rect[GLES_MAX_TEXTURE_UNITS];
@@ -665,6 +666,20 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
         s[n++] = fs->sample_write;
         return n;
     }
+    /* the fog and the plain write (RGBA8888 or RGB565) as one stage where
+    ** the instance has it (nothing between them) */
+    const int fog_then_write = ctx->fog && !rect && !ctx->alpha_test && !(tests && !early) && !no_color && bk == 0
+                            && !ctx->color_logic_op;
+    const int fog_write = fog_then_write && plain && cs->fog_write_rgba8;
+    const int fog_write_565 = fog_then_write && plain565 && cs->fog_write_565;
+    /* ... with the sampling of a lone REPLACE unit of an RGBA texture with
+    ** a level of detail before them, where the CPU has AVX2 but not
+    ** AVX-512 (the AVX-512 instance keeps its own kernels there) */
+    if (direct && fog_write && cs->sample_fog_write_rgba8 && texture_needs_lod(ctx->units[lone].bound)
+        && ctx_simd(ctx) < SIMD_AVX512) {
+        s[n++] = cs->sample_fog_write_rgba8;
+        return n;
+    }
     if (direct) {
         s[n++] = rect ? cs->fetch_rect_direct[lone] : cs->fetch_direct[lone];
     } else {
@@ -688,12 +703,6 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
                 if (units & (1u << u))
                     s[n++] = modulate && u == first ? cs->color_modulate[u] : cs->env[u];
     }
-    /* the fog and the plain write (RGBA8888 or RGB565) as one stage where
-    ** the instance has it (nothing between them) */
-    const int fog_then_write = ctx->fog && !rect && !ctx->alpha_test && !(tests && !early) && !no_color && bk == 0
-                            && !ctx->color_logic_op;
-    const int fog_write = fog_then_write && plain && cs->fog_write_rgba8;
-    const int fog_write_565 = fog_then_write && plain565 && cs->fog_write_565;
     if (ctx->fog && !fog_write && !fog_write_565)
         s[n++] = rect ? cs->fog_const : cs->fog;
     if (ctx->alpha_test)

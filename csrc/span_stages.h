@@ -1409,6 +1409,57 @@ static inline int STAGE(fog_write_lanes)(GlesContext *ctx, const TriSetup *t, NU
 ** straight to the bytes: eight lanes at a time where AVX-512 runs
 ** (fx512_fog_write_rgba8), four (avx2_fog_write_rgba8x4), then the last
 ** fragments by the stages' scalar code; else the two stages */
+/* the fog and write of slot j's colour, one fragment */
+static inline void STAGE(fog_write_rgba8_1)(SpanBuf *b, int j, const NUM a[3], const FRAGV fc[3], uint32_t *dst)
+{
+    const WGT *p = b->p[j];
+    STAGE(chunk_fog)(b->c[j], frag_clamp01(frag_lerp3(a[0], a[1], a[2], p[0], p[1], p[2])), fc);
+    uint32_t *at = &dst[b->k[j]];
+    *at = v4_rgba8(v4_load(b->c[j]), *at, 0);
+}
+
+/* stage_fog_write_rgba8's pass over the slots whose bit in done (NULL:
+** none) is clear */
+static void STAGE(fog_write_rgba8_rest)(GlesContext *ctx, SpanBuf *b, const NUM a[3], const FRAGV fc[3],
+                                        const uint64_t *done)
+{
+    uint32_t *dst = chunk_color(ctx, b, 0);
+    const int n = b->n;
+    int j = 0;
+#if SIMD_AVX512_FX
+    if (!done && ctx_simd(ctx) >= SIMD_AVX512)
+        j = fx512_fog_write_rgba8(a, (const WGT (*)[3])b->p, (const FRAGV (*)[4])b->c, n, fc, dst, b->k);
+#endif
+    __m256i fcv[3];
+    avx2_fog_color_lanes(fc, fcv);
+#define FOG_WRITE4(j) \
+    avx2_fog_write_rgba8x4((const FRAGV (*)[4])&b->c[j], avx2_fog4(a, (const WGT (*)[3])&b->p[j]), fcv, dst, &b->k[j])
+    if (!done) {
+        for (; j + 4 <= n; j += 4)
+            FOG_WRITE4(j);
+        for (; j < n; j++)
+            STAGE(fog_write_rgba8_1)(b, j, a, fc, dst);
+        return;
+    }
+    /* the clear bits of each word of done: four in a row at once */
+    for (int base = 0; base < n; base += 64) {
+        uint64_t todo = ~done[base >> 6];
+        if (n - base < 64)
+            todo &= ((uint64_t)1 << (n - base)) - 1;
+        while (todo) {
+            const int i = __builtin_ctzll(todo);
+            if (((todo >> i) & 0xF) == 0xF) {
+                FOG_WRITE4(base + i);
+                todo &= ~((uint64_t)0xF << i);
+            } else {
+                STAGE(fog_write_rgba8_1)(b, base + i, a, fc, dst);
+                todo &= todo - 1;
+            }
+        }
+    }
+#undef FOG_WRITE4
+}
+
 static void STAGE(stage_fog_write_rgba8)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     NUM a[3];
@@ -1418,23 +1469,45 @@ static void STAGE(stage_fog_write_rgba8)(GlesContext *ctx, const TriSetup *t, Sp
         STAGE(write_rgba8)(ctx, b, 0);
         return;
     }
-    uint32_t *dst = chunk_color(ctx, b, 0);
-    const int n = b->n;
-    int j = 0;
-#if SIMD_AVX512_FX
-    if (ctx_simd(ctx) >= SIMD_AVX512)
-        j = fx512_fog_write_rgba8(a, (const WGT (*)[3])b->p, (const FRAGV (*)[4])b->c, n, fc, dst, b->k);
-#endif
-    __m256i fcv[3];
-    avx2_fog_color_lanes(fc, fcv);
-    for (; j + 4 <= n; j += 4)
-        avx2_fog_write_rgba8x4((const FRAGV (*)[4])&b->c[j], avx2_fog4(a, (const WGT (*)[3])&b->p[j]), fcv, dst,
-                               &b->k[j]);
-    for (; j < n; j++) {
-        const WGT *p = b->p[j];
-        STAGE(chunk_fog)(b->c[j], frag_clamp01(frag_lerp3(a[0], a[1], a[2], p[0], p[1], p[2])), fc);
-        uint32_t *at = &dst[b->k[j]];
-        *at = v4_rgba8(v4_load(b->c[j]), *at, 0);
+    STAGE(fog_write_rgba8_rest)(ctx, b, a, fc, NULL);
+}
+
+/* a lone REPLACE unit of an RGBA texture with a level of detail (its
+** sampler lod_block's), the fog and the RGBA8888 write in one stage: the
+** texels of GL_LINEAR levels fogged and written in float lanes where each
+** byte is proved (texture_span_fog_write), the rest by stage_fog_write_rgba8's
+** exact pass. The float lanes' bound needs the vertices' fog factors
+** within [-2, 2] and the fog colour in [0, 1]; else, or where the kernel
+** does not apply, the separate stages */
+static void STAGE(stage_sample_fog_write_rgba8)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    const int u = __builtin_ctz(ctx->tex_units_on);
+    STAGE(stage_fetch)(ctx, t, b, u, FETCH_COORDS);
+    NUM a[3];
+    FRAGV fc[3];
+    const int lanes = STAGE(fog_write_lanes)(ctx, t, a, fc);
+    int fits = lanes;
+    for (int i = 0; i < 3; i++)
+        fits &= a[i] >= -2 * NUM_ONE && a[i] <= 2 * NUM_ONE && fc[i] >= 0 && fc[i] <= FRAG_ONE;
+    if (fits) {
+        uint64_t done[SPAN_CHUNK / 64] = { 0 };
+        TexFogWrite fw = { .p = (const WGT (*)[3])b->p, .dst = chunk_color(ctx, b, 0), .k = b->k, .done = done };
+        for (int i = 0; i < 3; i++) {
+            fw.a[i] = (float)((double)a[i] * 0x1p-46);
+            fw.fc[i] = (float)((double)fc[i] * 0x1p-30);
+        }
+        if (texture_span_fog_write(ctx->units[u].bound, b->n, b->tc, b->tx, b->ty, b->c[0], 4, ctx->texel_unorm8,
+                                   &fw)) {
+            STAGE(fog_write_rgba8_rest)(ctx, b, a, fc, done);
+            return;
+        }
+    }
+    STAGE(chunk_sample)(ctx, b, u, 1);
+    if (lanes)
+        STAGE(fog_write_rgba8_rest)(ctx, b, a, fc, NULL);
+    else {
+        STAGE(stage_fog)(ctx, t, b);
+        STAGE(write_rgba8)(ctx, b, 0);
     }
 }
 #endif
@@ -2022,6 +2095,7 @@ static const ChainStages STAGE(chain_stages) = {
 #if CHAIN_SIMD && NUM_IS_FIXED
     .fog_write_rgba8 = STAGE(stage_fog_write_rgba8),
     .fog_write_565 = STAGE(stage_fog_write_565),
+    .sample_fog_write_rgba8 = STAGE(stage_sample_fog_write_rgba8),
 #endif
 #if CHAIN_SIMD && NUM_IS_FIXED
     .fused = { .modulate_write = STAGE(stage_modulate_write), .sample_write = STAGE(stage_sample_write),

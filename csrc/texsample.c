@@ -617,6 +617,51 @@ AVX2_INLINE void lod_choose4_d(const LodParamsR *p, const TexCoord *c, const Tex
 #define LOD_MIX_GROUP 0
 #endif
 
+#if NUM_IS_FIXED
+/* a run [j, e) of fragments with one GL_LINEAR level, or (two) that level
+** and the next mixed by frac, through the fog and write of fw
+** (avx2_fog_write_texels8) eight at a time, the last group padded with
+** copies of its last fragment; where a lane is not proved, the exact
+** texel (sample_level and lod_mix, as lod_block forms it) at out + j
+** stride, left to the exact stages. s0 is fragment 0's slot in the chunk */
+static void lod_fog_run(const Texture *t, int level, int two, int j, int e, const TexCoord *c, const FRAGV *frac,
+                        FRAGV *out, size_t stride, const FRAGV *unorm, unsigned int ws, unsigned int wt,
+                        const TexFogWrite *fw, int s0)
+{
+    const Avx2Level l1 = avx2_level(&t->level[level]), l2 = avx2_level(&t->level[level + two]);
+    const int rs = ws == GL_REPEAT, rt = wt == GL_REPEAT;
+    for (int i = j; i < e; i += 8) {
+        const int m = e - i < 8 ? e - i : 8;
+        TexCoord cpad[8];
+        WGT ppad[8][3];
+        FRAGV fpad[8];
+        const TexCoord *ci = c + i;
+        const WGT (*pi)[3] = fw->p + s0 + i;
+        const FRAGV *fi = frac + i;
+        if (m < 8) {
+            for (int q = 0; q < 8; q++) {
+                const int from = i + (q < m ? q : m - 1);
+                cpad[q] = c[from];
+                memcpy(ppad[q], fw->p[s0 + from], sizeof ppad[q]);
+                fpad[q] = frac[from];
+            }
+            ci = cpad, pi = (const WGT (*)[3])ppad, fi = fpad;
+        }
+        const unsigned written = avx2_fog_write_texels8(fw, s0 + i, m, l1, l2, two, ci, pi, fi, rs, rt);
+        for (unsigned r = ~written & ((1u << m) - 1); r; r &= r - 1) {
+            const int q = i + __builtin_ctz(r);
+            FRAGV *o = out + (size_t)q * stride;
+            sample_level(t, level, GL_LINEAR, c[q].s, c[q].t, o, unorm, ws, wt, 1);
+            if (two) {
+                FRAGV t2[4];
+                sample_level(t, level + 1, GL_LINEAR, c[q].s, c[q].t, t2, unorm, ws, wt, 1);
+                lod_mix(frac[q], o, t2, o);
+            }
+        }
+    }
+}
+#endif
+
 /* sample_w of n fragments with the vector kernel doing the GL_LINEAR
 ** samples: each fragment's level of detail first (lod_choose, four at a
 ** time by avx2_lod_choose4, lod_choose4_f or lod_choose4_d), as a key;
@@ -626,7 +671,8 @@ AVX2_INLINE void lod_choose4_d(const LodParamsR *p, const TexCoord *c, const Tex
 ** one, and the run's mix of two levels. The same arithmetic per sample as
 ** sample_w; returns 0 where it does not apply (as linear_block) */
 static int lod_block(int simd, const Texture *t, int n, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
-                     FRAGV *out, size_t stride, const FRAGV *unorm, unsigned int ws, unsigned int wt)
+                     FRAGV *out, size_t stride, const FRAGV *unorm, unsigned int ws, unsigned int wt,
+                     const TexFogWrite *fw, int s0)
 {
     if (!linear_kernel_fits(t, ws, wt) || n > SPAN_SAMPLE_MAX)
         return 0;
@@ -709,6 +755,16 @@ static int lod_block(int simd, const Texture *t, int n, const TexCoord *c, const
         const int level = kj & 0xFF, two = (kj & LOD_KEY_TWO) != 0;
         const unsigned int filter = kj & LOD_KEY_LINEAR ? GL_LINEAR : GL_NEAREST;
         const int m4 = filter == GL_LINEAR ? (e - j) & ~3 : 0;
+#if NUM_IS_FIXED
+        if (fw && filter == GL_LINEAR) {
+            /* fogged and written where proved (else the exact texel) */
+            lod_fog_run(t, level, two, j, e, c, frac, out, stride, unorm, ws, wt, fw, s0);
+            j = e;
+            continue;
+        }
+#else
+        (void)fw, (void)s0;
+#endif
         /* fragments whose two levels the kernel samples and mixes at once */
         int mixed = 0;
 #if LOD_MIX_GROUP
@@ -776,26 +832,35 @@ static int lod_block(int simd, const Texture *t, int n, const TexCoord *c, const
 #pragma GCC pop_options
 #else
 static int lod_block(int simd, const Texture *t, int n, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
-                     FRAGV *out, size_t stride, const FRAGV *unorm, unsigned int ws, unsigned int wt)
+                     FRAGV *out, size_t stride, const FRAGV *unorm, unsigned int ws, unsigned int wt,
+                     const TexFogWrite *fw, int s0)
 {
     (void)simd, (void)t, (void)n, (void)c, (void)dx, (void)dy, (void)out, (void)stride, (void)unorm, (void)ws,
-        (void)wt;
+        (void)wt, (void)fw, (void)s0;
     return 0;
 }
 #endif
 
-/* lod_block over a chunk, SPAN_SAMPLE_MAX fragments at a time; 0 (nothing
-** done) where it does not apply, which is the same for every piece */
+/* lod_block over a chunk, SPAN_SAMPLE_MAX fragments at a time (fw: with
+** the fog and write); 0 (nothing done) where it does not apply, which is
+** the same for every piece */
+static inline int lod_blocks_fw(int simd, const Texture *t, int n, const TexCoord *c, const TexCoord *dx,
+                                const TexCoord *dy, FRAGV *out, size_t stride, const FRAGV *unorm, unsigned int ws,
+                                unsigned int wt, const TexFogWrite *fw)
+{
+    for (int j = 0; j < n; j += SPAN_SAMPLE_MAX) {
+        const int m = n - j < SPAN_SAMPLE_MAX ? n - j : SPAN_SAMPLE_MAX;
+        if (!lod_block(simd, t, m, c + j, dx + j, dy + j, out + (size_t)j * stride, stride, unorm, ws, wt, fw, j))
+            return 0;
+    }
+    return 1;
+}
+
 static inline int lod_blocks(int simd, const Texture *t, int n, const TexCoord *c, const TexCoord *dx,
                              const TexCoord *dy, FRAGV *out, size_t stride, const FRAGV *unorm, unsigned int ws,
                              unsigned int wt)
 {
-    for (int j = 0; j < n; j += SPAN_SAMPLE_MAX) {
-        const int m = n - j < SPAN_SAMPLE_MAX ? n - j : SPAN_SAMPLE_MAX;
-        if (!lod_block(simd, t, m, c + j, dx + j, dy + j, out + (size_t)j * stride, stride, unorm, ws, wt))
-            return 0;
-    }
-    return 1;
+    return lod_blocks_fw(simd, t, n, c, dx, dy, out, stride, unorm, ws, wt, NULL);
 }
 
 /* every [wrap: repeat, clamp, other][nearest, linear, with a level of
@@ -863,6 +928,29 @@ int texture_span_sample_group(const Texture *t, int simd)
 }
 
 
+
+#if SIMD_X86 && NUM_IS_FIXED
+#pragma GCC push_options
+SIMD_TARGET_AVX2
+static int span_fog_write_avx2(const Texture *t, int n, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
+                               FRAGV *out, size_t stride, const FRAGV *unorm, const TexFogWrite *fw)
+{
+    return lod_blocks_fw(SIMD_AVX2, t, n, c, dx, dy, out, stride, unorm, t->wrap_s, t->wrap_t, fw);
+}
+#pragma GCC pop_options
+#endif
+
+int texture_span_fog_write(const Texture *t, int n, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
+                           FRAGV *out, size_t stride, const FRAGV *unorm, const TexFogWrite *fw)
+{
+#if SIMD_X86 && NUM_IS_FIXED
+    /* lod_block's samplers (texture_span_sampler's with a level of detail) */
+    if (texture_needs_lod(t) && t->max_aniso <= 1.0)
+        return span_fog_write_avx2(t, n, c, dx, dy, out, stride, unorm, fw);
+#endif
+    (void)t, (void)n, (void)c, (void)dx, (void)dy, (void)out, (void)stride, (void)unorm, (void)fw;
+    return 0;
+}
 
 /* {====================================================================
 ** a test's view of the span samplers */

@@ -1315,17 +1315,21 @@ def _mipmapped_plane(numeric: str, flags: int, case: str) -> np.ndarray:
     slots are not the offsets), "fog" (linear fog from the vertices'
     distances, mixed in the fog stage's groups), "fog565" and
     "fog565_nodither" (that fog on an RGB565 target, dithered or not: the
-    fog and the write in one pass where AVX-512 runs)."""
+    fog and the write in one pass where AVX-512 runs), "replace_fog" and
+    "replace_fog_depth" (a REPLACE environment under that fog, with and
+    without the depth test: the texels fogged and written in one stage
+    where AVX2 runs without AVX-512)."""
     w, h = 160, 96
     color = "rgb565" if case.startswith("fog565") else "rgba8888"
-    ctx = make_ctx(numeric, w, h, depth=24 if case == "depth" else 0, color=color)
+    depth = case.endswith("depth")
+    ctx = make_ctx(numeric, w, h, depth=24 if depth else 0, color=color)
     gl = ctx.gl
     ctx.debug(flags)
     if case == "fog565_nodither":
         gl.glDisable(C.GL_DITHER)
     rng = np.random.default_rng(7)
     gl.glClearColor(0.1, 0.2, 0.3, 1.0)
-    gl.glClear(C.GL_COLOR_BUFFER_BIT | (C.GL_DEPTH_BUFFER_BIT if case == "depth" else 0))
+    gl.glClear(C.GL_COLOR_BUFFER_BIT | (C.GL_DEPTH_BUFFER_BIT if depth else 0))
     units = (0, 1) if case == "two" else (0,)
     for unit in units:
         gl.glActiveTexture(C.GL_TEXTURE0 + unit)
@@ -1341,9 +1345,10 @@ def _mipmapped_plane(numeric: str, flags: int, case: str) -> np.ndarray:
         gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MIN_FILTER, minf)
         gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MAG_FILTER, C.GL_LINEAR)
         gl.glEnable(C.GL_TEXTURE_2D)
-        gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_MODULATE)
+        env = C.GL_REPLACE if case.startswith("replace") else C.GL_MODULATE
+        gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, env)
     gl.glActiveTexture(C.GL_TEXTURE0)
-    if case.startswith("fog"):
+    if "fog" in case:
         gl.glEnable(C.GL_FOG)
         gl.glFogf(C.GL_FOG_MODE, C.GL_LINEAR)
         gl.glFogf(C.GL_FOG_START, 3.0)
@@ -1373,7 +1378,7 @@ def _mipmapped_plane(numeric: str, flags: int, case: str) -> np.ndarray:
         gl.glClientActiveTexture(C.GL_TEXTURE0 + unit)
         gl.glEnableClientState(C.GL_TEXTURE_COORD_ARRAY)
         gl.glTexCoordPointer(4, C.GL_FLOAT, 0, np.ascontiguousarray(tc * (1 + unit), dtype=np.float32))
-    if case == "depth":
+    if depth:
         # a nearer tilted quad first, so that the plane's rows lose fragments to the depth test
         gl.glEnable(C.GL_DEPTH_TEST)
         gl.glDisable(C.GL_TEXTURE_2D)
@@ -1395,8 +1400,98 @@ def _mipmapped_plane(numeric: str, flags: int, case: str) -> np.ndarray:
     return ctx.color_buffer()
 
 
+def _fogged_texels(seed: int, flags: int) -> np.ndarray:
+    """A perspective plane of a lone REPLACE unit under fog, the state where
+    the fixed build's AVX2 instance fogs and writes the texels in float
+    lanes and proves each byte (the rest by the exact stages): random
+    texels, smooth ramps among them (channels near a byte's rounding point
+    over many fragments), every filter pair with GL_LINEAR in it, REPEAT or
+    CLAMP_TO_EDGE, a random fog colour, and fog ranges whose vertex factors
+    lie within [-2, 2] or (seed % 3 == 2) past it; a depth test drops some
+    of each row's fragments."""
+    rng = np.random.default_rng(1000 + seed)
+    w, h = 256, 144
+    ctx = make_ctx("fixed", w, h, depth=24)
+    gl = ctx.gl
+    ctx.debug(flags)
+    gl.glClearColor(0.0, 0.0, 0.0, 0.0)
+    gl.glClear(C.GL_COLOR_BUFFER_BIT | C.GL_DEPTH_BUFFER_BIT)
+    gl.glBindTexture(C.GL_TEXTURE_2D, int(gl.glGenTextures(1)))
+    size, level = 64, 0
+    while size >= 1:
+        img = rng.integers(0, 256, (size, size, 4), dtype=np.uint8)
+        ramp = (np.arange(size * size).reshape(size, size) * 255 // max(size * size - 1, 1)).astype(np.uint8)
+        img[: size // 2, :, 1] = ramp[: size // 2]
+        img[:, : size // 2, 3] = 255 - ramp[:, : size // 2]
+        gl.glTexImage2D(C.GL_TEXTURE_2D, level, C.GL_RGBA, size, size, 0, C.GL_RGBA, C.GL_UNSIGNED_BYTE, img)
+        size //= 2
+        level += 1
+    filters = [(C.GL_LINEAR_MIPMAP_LINEAR, C.GL_LINEAR), (C.GL_LINEAR_MIPMAP_NEAREST, C.GL_LINEAR),
+               (C.GL_LINEAR_MIPMAP_LINEAR, C.GL_NEAREST), (C.GL_NEAREST_MIPMAP_LINEAR, C.GL_LINEAR)]
+    minf, magf = filters[seed % 4]
+    gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MIN_FILTER, minf)
+    gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MAG_FILTER, magf)
+    wrap = C.GL_REPEAT if seed % 2 == 0 else C.GL_CLAMP_TO_EDGE
+    gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_WRAP_S, wrap)
+    gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_WRAP_T, wrap)
+    gl.glEnable(C.GL_TEXTURE_2D)
+    gl.glTexEnvi(C.GL_TEXTURE_ENV, C.GL_TEXTURE_ENV_MODE, C.GL_REPLACE)
+    gl.glEnable(C.GL_FOG)
+    gl.glFogf(C.GL_FOG_MODE, C.GL_LINEAR)
+    start, end = (1.0, 150.0) if seed % 3 != 2 else (60.0, 90.0)    # (the latter: factors past [-2, 2])
+    gl.glFogf(C.GL_FOG_START, start)
+    gl.glFogf(C.GL_FOG_END, end)
+    gl.glFogfv(C.GL_FOG_COLOR, [*rng.random(3).tolist(), 1.0])
+    gl.glEnable(C.GL_DEPTH_TEST)
+    gl.glViewport(0, 0, w, h)
+    gl.glMatrixMode(C.GL_PROJECTION)
+    gl.glLoadIdentity()
+    gl.glFrustumf(-0.6, 0.6, -0.35, 0.35, 1.0, 400.0)
+    gl.glMatrixMode(C.GL_MODELVIEW)
+    gl.glLoadIdentity()
+    gl.glRotatef(float(rng.uniform(5, 12)), 1.0, 0.0, 0.0)
+    gl.glTranslatef(0.0, -1.5, 0.0)
+    gl.glRotatef(float(rng.uniform(-30, 30)), 0.0, 1.0, 0.0)
+    n = 9
+    xs, zs = np.meshgrid(np.linspace(-80.0, 80.0, n), np.linspace(-1.0, -200.0, n))
+    verts = np.stack([xs, np.zeros_like(xs), zs], axis=-1).reshape(-1, 3)
+    scale = float(rng.uniform(1.5, 6.0))
+    st = np.stack([xs.ravel() / scale, -zs.ravel() / scale], axis=-1)
+    i = np.arange(n - 1)
+    a = (i[:, None] * n + i[None, :]).reshape(-1)
+    idx = np.stack([a, a + 1, a + n, a + 1, a + n + 1, a + n], -1).reshape(-1).astype(np.uint16)
+    gl.glEnableClientState(C.GL_VERTEX_ARRAY)
+    gl.glEnableClientState(C.GL_TEXTURE_COORD_ARRAY)
+    # posts in front of the plane, drawn first: the depth test drops parts of its rows
+    gl.glDisable(C.GL_TEXTURE_2D)
+    for _ in range(5):
+        x0, z0 = rng.uniform(-8, 8), rng.uniform(-30, -4)
+        post = np.array([[x0, 0, z0], [x0 + 0.7, 0, z0], [x0, 4, z0], [x0 + 0.7, 4, z0]], np.float32)
+        gl.glVertexPointer(3, C.GL_FLOAT, 0, post)
+        gl.glTexCoordPointer(2, C.GL_FLOAT, 0, np.zeros((4, 2), np.float32))
+        gl.glDrawArrays(C.GL_TRIANGLE_STRIP, 0, 4)
+    gl.glEnable(C.GL_TEXTURE_2D)
+    gl.glVertexPointer(3, C.GL_FLOAT, 0, np.ascontiguousarray(verts, dtype=np.float32))
+    gl.glTexCoordPointer(2, C.GL_FLOAT, 0, np.ascontiguousarray(st, dtype=np.float32))
+    gl.glDrawElements(C.GL_TRIANGLES, len(idx), C.GL_UNSIGNED_SHORT, idx)
+    assert gl.glGetError() == C.GL_NO_ERROR
+    return ctx.color_buffer()
+
+
+@pytest.mark.parametrize("seed", range(12))
+def test_fogged_texels_in_float_lanes_match_generic(seed):
+    """The fixed build's fog and write of a REPLACE unit's texels in float
+    lanes (each byte proved, else the exact stages) draws the per-fragment
+    reference's bits, and so do the AVX2 and baseline instances."""
+    ref = _fogged_texels(seed, 1)
+    assert (ref != ref[0, 0]).any(axis=-1).mean() > 0.5, "the plane covers little"
+    for name, flags in (("chain", 0), ("avx2", 32), ("baseline", 16)):
+        np.testing.assert_array_equal(_fogged_texels(seed, flags), ref, err_msg=f"{name}, seed {seed}")
+
+
 @pytest.mark.parametrize("numeric", BUILDS)
-@pytest.mark.parametrize("case", ["st", "q", "two", "depth", "fog", "fog565", "fog565_nodither"])
+@pytest.mark.parametrize("case", ["st", "q", "two", "depth", "fog", "fog565", "fog565_nodither",
+                                  "replace_fog", "replace_fog_depth"])
 def test_mipmapped_plane_matches_generic_on_every_instance(numeric, case):
     """Each instance of the chain (the best this CPU runs, AVX2, the baseline)
     draws the plane with the per-fragment reference's bits."""
