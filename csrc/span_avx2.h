@@ -2511,8 +2511,8 @@ AVX2_INLINE void avx2_bilerp8_float(const __m256i g[4], __m256i a, __m256i b, in
 ** within 7.04u, the fog factor's weighted sum within 8.1u (the weights'
 ** magnitudes summing to at most 1 + 2^-7, the vertices' factors at most 2
 ** in magnitude), the fogged channel within 19.2u, so 255 v + 1/2 within
-** 5029u of the exact value, under the margin 2^-11 = 8192u
-** (docs/architecture.md). */
+** 5029u of the exact value, under the margin 2^-11 = 8192u; RGB565's
+** steps 1243u (docs/architecture.md). */
 
 /* the low dwords of eight int64 at q, in order */
 AVX2_INLINE __m256i avx2_low_dwords8(const int64_t *q)
@@ -2535,14 +2535,15 @@ AVX2_INLINE Avx2Level avx2_level(const TexImage *li)
                         __builtin_ctz((unsigned)li->height) };
 }
 
-/* slots s0..s0+m-1 (1 <= m <= 8) of a chunk, with coordinates c[0..7] and
-** weights p[0..7] (copies of the last past m): level l1's texels, mixed
-** with the next level's l2 by frac[0..7] (0.30) where two, fogged and
-** written to fw->dst[fw->k[s]]; returns the lanes written (bit i: slot s0
-** + i), each marked in fw->done */
+/* slots s0..s0+m-1 (1 <= m <= 8) of a chunk, with coordinates c[0..7],
+** weights p[0..7] and pixel offsets k[0..7] (copies of the last past m):
+** level l1's texels, mixed with the next level's l2 by frac[0..7] (0.30)
+** where two, fogged and written to fw->dst (RGBA8888, or RGB565 as
+** avx2_modwrite565_8 writes it: its bound is 255/63 times smaller);
+** returns the lanes written (bit i: slot s0 + i), each marked in fw->done */
 AVX2_INLINE unsigned avx2_fog_write_texels8(const TexFogWrite *fw, int s0, int m, Avx2Level l1, Avx2Level l2,
-                                            int two, const TexCoord *c, const WGT (*p)[3], const FRAGV *frac,
-                                            int rs, int rt)
+                                            int two, const TexCoord *c, const WGT (*p)[3], const uint8_t *k,
+                                            const FRAGV *frac, int rs, int rt)
 {
     __m256i g[4], a, b;
     __m256 T[4];
@@ -2567,23 +2568,56 @@ AVX2_INLINE unsigned avx2_fog_write_texels8(const TexFogWrite *fw, int s0, int m
                                  _mm256_fmadd_ps(w1, _mm256_set1_ps(fw->a[1]),
                                                  _mm256_mul_ps(w2, _mm256_set1_ps(fw->a[2]))));
     fog = _mm256_min_ps(_mm256_max_ps(fog, _mm256_setzero_ps()), _mm256_set1_ps(1.0f));
-    const __m256 k255 = _mm256_set1_ps(255.0f), half = _mm256_set1_ps(0.5f);
-    __m256i word = _mm256_slli_epi32(avx2_floor_proved(_mm256_fmadd_ps(T[3], k255, half), 0x1p-11f, &bad), 24);
+    __m256 v[3];
     for (int i = 0; i < 3; i++) {
         const __m256 fc = _mm256_set1_ps(fw->fc[i]);
-        const __m256 v = _mm256_fmadd_ps(fog, _mm256_sub_ps(T[i], fc), fc);
-        word = _mm256_or_si256(word, _mm256_slli_epi32(avx2_floor_proved(_mm256_fmadd_ps(v, k255, half), 0x1p-11f,
-                                                                         &bad), 8 * i));
+        v[i] = _mm256_fmadd_ps(fog, _mm256_sub_ps(T[i], fc), fc);
+    }
+    __m256i word;
+    if (fw->rgb565) {
+        /* dither: floor(v maxval + t), else the top bits floor(v 2^bits),
+        ** both clamped to maxval (avx2_modwrite565_8's) */
+        const __m256i x3 = _mm256_and_si256(_mm256_add_epi32(_mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)k)),
+                                                             _mm256_set1_epi32(fw->x0)),
+                                            _mm256_set1_epi32(3));
+        const __m256 t = _mm256_permutevar_ps(_mm256_setr_ps(fw->t_row[0], fw->t_row[1], fw->t_row[2], fw->t_row[3],
+                                                             fw->t_row[0], fw->t_row[1], fw->t_row[2], fw->t_row[3]),
+                                              x3);
+        static const int shift[3] = { 11, 5, 0 }, bits[3] = { 5, 6, 5 };
+        word = _mm256_setzero_si256();
+        for (int i = 0; i < 3; i++) {
+            const int maxval = (1 << bits[i]) - 1;
+            const __m256 z = fw->dither ? _mm256_fmadd_ps(v[i], _mm256_set1_ps((float)maxval), t)
+                                        : _mm256_mul_ps(v[i], _mm256_set1_ps((float)(1 << bits[i])));
+            const __m256i q = _mm256_min_epi32(avx2_floor_proved_upto(z, (float)maxval, 0x1p-11f, &bad),
+                                               _mm256_set1_epi32(maxval));
+            word = _mm256_or_si256(word, _mm256_slli_epi32(q, shift[i]));
+        }
+    } else {
+        const __m256 k255 = _mm256_set1_ps(255.0f), half = _mm256_set1_ps(0.5f);
+        word = _mm256_slli_epi32(avx2_floor_proved(_mm256_fmadd_ps(T[3], k255, half), 0x1p-11f, &bad), 24);
+        for (int i = 0; i < 3; i++)
+            word = _mm256_or_si256(word, _mm256_slli_epi32(avx2_floor_proved(_mm256_fmadd_ps(v[i], k255, half),
+                                                                             0x1p-11f, &bad), 8 * i));
     }
     const unsigned ok = ~(unsigned)_mm256_movemask_ps(bad) & ((1u << m) - 1);
-    const uint8_t *k = fw->k + s0;
-    if (ok == 0xFF && k[7] == k[0] + 7) {
-        _mm256_storeu_si256((__m256i *)(void *)&fw->dst[k[0]], word);
+    uint32_t w[8];
+    _mm256_storeu_si256((__m256i *)(void *)w, word);
+    if (fw->rgb565) {
+        uint16_t *dst = fw->dst;
+        if (ok == 0xFF && k[7] == k[0] + 7)
+            _mm_storeu_si128((__m128i *)(void *)&dst[k[0]],
+                             _mm256_castsi256_si128(_mm256_permute4x64_epi64(_mm256_packus_epi32(word, word), 0x08)));
+        else
+            for (unsigned r = ok; r; r &= r - 1)
+                dst[k[__builtin_ctz(r)]] = (uint16_t)w[__builtin_ctz(r)];
     } else {
-        uint32_t w[8];
-        _mm256_storeu_si256((__m256i *)(void *)w, word);
-        for (unsigned r = ok; r; r &= r - 1)
-            fw->dst[k[__builtin_ctz(r)]] = w[__builtin_ctz(r)];
+        uint32_t *dst = fw->dst;
+        if (ok == 0xFF && k[7] == k[0] + 7)
+            _mm256_storeu_si256((__m256i *)(void *)&dst[k[0]], word);
+        else
+            for (unsigned r = ok; r; r &= r - 1)
+                dst[k[__builtin_ctz(r)]] = w[__builtin_ctz(r)];
     }
     const int sh = s0 & 63;
     fw->done[s0 >> 6] |= (uint64_t)ok << sh;

@@ -91,7 +91,7 @@ typedef struct ChainStages {
     SpanStage write, write_rgba8, write_rgba8_alpha, write_rgba8_add, write_rgba8_logic, write_rgba8_masked;
     SpanStage write_565, write_565_alpha;
     SpanStage fog_write_rgba8, fog_write_565;  /* the fixed build's AVX2 instance */
-    SpanStage sample_fog_write_rgba8;           /* the same */
+    SpanStage sample_fog_write_rgba8, sample_fog_write_565;     /* the same */
     SpanStage rect_source;
     SpanStage color_dot3_modulate;  /* float and double builds, AVX2 */
     SpanStage coords[GLES_MAX_TEXTURE_UNITS], coords_rect[GLES_MAX_TEXTURE_UNITS];
@@ -675,9 +675,9 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     /* ... with the sampling of a lone REPLACE unit of an RGBA texture with
     ** a level of detail before them, where the CPU has AVX2 but not
     ** AVX-512 (the AVX-512 instance keeps its own kernels there) */
-    if (direct && fog_write && cs->sample_fog_write_rgba8 && texture_needs_lod(ctx->units[lone].bound)
-        && ctx_simd(ctx) < SIMD_AVX512) {
-        s[n++] = cs->sample_fog_write_rgba8;
+    if (direct && (fog_write || fog_write_565) && cs->sample_fog_write_rgba8
+        && texture_needs_lod(ctx->units[lone].bound) && ctx_simd(ctx) < SIMD_AVX512) {
+        s[n++] = fog_write ? cs->sample_fog_write_rgba8 : cs->sample_fog_write_565;
         return n;
     }
     if (direct) {

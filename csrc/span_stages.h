@@ -1404,41 +1404,55 @@ static inline int STAGE(fog_write_lanes)(GlesContext *ctx, const TriSetup *t, NU
     return STAGE(fog_in_lanes)(ctx, a, fc);
 }
 
-/* stage_fog then stage_write_rgba8 (no blend, every channel written) in
-** one pass where STAGE(fog_write_lanes) holds, the fogged colour going
-** straight to the bytes: eight lanes at a time where AVX-512 runs
-** (fx512_fog_write_rgba8), four (avx2_fog_write_rgba8x4), then the last
-** fragments by the stages' scalar code; else the two stages */
-/* the fog and write of slot j's colour, one fragment */
-static inline void STAGE(fog_write_rgba8_1)(SpanBuf *b, int j, const NUM a[3], const FRAGV fc[3], uint32_t *dst)
+/* the fog and write of slot j's colour, one fragment (rgb565: as
+** stage_write_565 writes, dithered by t_row) */
+static inline void STAGE(fog_write1)(SpanBuf *b, int j, const NUM a[3], const FRAGV fc[3], void *dst, int rgb565,
+                                     int dither, const FRAGV t_row[4])
 {
     const WGT *p = b->p[j];
     STAGE(chunk_fog)(b->c[j], frag_clamp01(frag_lerp3(a[0], a[1], a[2], p[0], p[1], p[2])), fc);
-    uint32_t *at = &dst[b->k[j]];
-    *at = v4_rgba8(v4_load(b->c[j]), *at, 0);
+    if (rgb565) {
+        ((uint16_t *)dst)[b->k[j]] = (uint16_t)v4_pack565(v4_load(b->c[j]), dither, t_row[(b->x0 + b->k[j]) & 3]);
+    } else {
+        uint32_t *at = &((uint32_t *)dst)[b->k[j]];
+        *at = v4_rgba8(v4_load(b->c[j]), *at, 0);
+    }
 }
 
-/* stage_fog_write_rgba8's pass over the slots whose bit in done (NULL:
-** none) is clear */
-static void STAGE(fog_write_rgba8_rest)(GlesContext *ctx, SpanBuf *b, const NUM a[3], const FRAGV fc[3],
-                                        const uint64_t *done)
+/* stage_fog_write_rgba8's or (rgb565) stage_fog_write_565's pass over the
+** slots whose bit in done (NULL: none) is clear: eight lanes at a time
+** where AVX-512 runs (fx512_fog_write_rgba8, fx512_fog_write_565), four
+** (avx2_fog_write_rgba8x4, avx2_fog_write_565x4), then one by one */
+static void STAGE(fog_write_rest)(GlesContext *ctx, SpanBuf *b, const NUM a[3], const FRAGV fc[3],
+                                  const uint64_t *done, int rgb565)
 {
-    uint32_t *dst = chunk_color(ctx, b, 0);
-    const int n = b->n;
+    void *dst = chunk_color(ctx, b, rgb565);
+    const int n = b->n, dither = ctx->dither;
+    FRAGV t_row[4] = { 0 };
+    if (rgb565)
+        dither_row(b, dither, t_row);
     int j = 0;
 #if SIMD_AVX512_FX
     if (!done && ctx_simd(ctx) >= SIMD_AVX512)
-        j = fx512_fog_write_rgba8(a, (const WGT (*)[3])b->p, (const FRAGV (*)[4])b->c, n, fc, dst, b->k);
+        j = rgb565 ? fx512_fog_write_565(a, (const WGT (*)[3])b->p, (const FRAGV (*)[4])b->c, n, fc, dst, b->k, b->x0,
+                                         dither, t_row)
+                   : fx512_fog_write_rgba8(a, (const WGT (*)[3])b->p, (const FRAGV (*)[4])b->c, n, fc, dst, b->k);
 #endif
     __m256i fcv[3];
     avx2_fog_color_lanes(fc, fcv);
 #define FOG_WRITE4(j) \
-    avx2_fog_write_rgba8x4((const FRAGV (*)[4])&b->c[j], avx2_fog4(a, (const WGT (*)[3])&b->p[j]), fcv, dst, &b->k[j])
+    do { \
+        const __m256i f_ = avx2_fog4(a, (const WGT (*)[3])&b->p[j]); \
+        if (rgb565) \
+            avx2_fog_write_565x4((const FRAGV (*)[4])&b->c[j], f_, fcv, dst, &b->k[j], b->x0, dither, t_row); \
+        else \
+            avx2_fog_write_rgba8x4((const FRAGV (*)[4])&b->c[j], f_, fcv, dst, &b->k[j]); \
+    } while (0)
     if (!done) {
         for (; j + 4 <= n; j += 4)
             FOG_WRITE4(j);
         for (; j < n; j++)
-            STAGE(fog_write_rgba8_1)(b, j, a, fc, dst);
+            STAGE(fog_write1)(b, j, a, fc, dst, rgb565, dither, t_row);
         return;
     }
     /* the clear bits of each word of done: four in a row at once */
@@ -1452,7 +1466,7 @@ static void STAGE(fog_write_rgba8_rest)(GlesContext *ctx, SpanBuf *b, const NUM 
                 FOG_WRITE4(base + i);
                 todo &= ~((uint64_t)0xF << i);
             } else {
-                STAGE(fog_write_rgba8_1)(b, base + i, a, fc, dst);
+                STAGE(fog_write1)(b, base + i, a, fc, dst, rgb565, dither, t_row);
                 todo &= todo - 1;
             }
         }
@@ -1460,6 +1474,9 @@ static void STAGE(fog_write_rgba8_rest)(GlesContext *ctx, SpanBuf *b, const NUM 
 #undef FOG_WRITE4
 }
 
+/* stage_fog then stage_write_rgba8 (no blend, every channel written) in
+** one pass where STAGE(fog_write_lanes) holds, the fogged colour going
+** straight to the bytes (STAGE(fog_write_rest)); else the two stages */
 static void STAGE(stage_fog_write_rgba8)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     NUM a[3];
@@ -1469,47 +1486,9 @@ static void STAGE(stage_fog_write_rgba8)(GlesContext *ctx, const TriSetup *t, Sp
         STAGE(write_rgba8)(ctx, b, 0);
         return;
     }
-    STAGE(fog_write_rgba8_rest)(ctx, b, a, fc, NULL);
+    STAGE(fog_write_rest)(ctx, b, a, fc, NULL, 0);
 }
 
-/* a lone REPLACE unit of an RGBA texture with a level of detail (its
-** sampler lod_block's), the fog and the RGBA8888 write in one stage: the
-** texels of GL_LINEAR levels fogged and written in float lanes where each
-** byte is proved (texture_span_fog_write), the rest by stage_fog_write_rgba8's
-** exact pass. The float lanes' bound needs the vertices' fog factors
-** within [-2, 2] and the fog colour in [0, 1]; else, or where the kernel
-** does not apply, the separate stages */
-static void STAGE(stage_sample_fog_write_rgba8)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
-{
-    const int u = __builtin_ctz(ctx->tex_units_on);
-    STAGE(stage_fetch)(ctx, t, b, u, FETCH_COORDS);
-    NUM a[3];
-    FRAGV fc[3];
-    const int lanes = STAGE(fog_write_lanes)(ctx, t, a, fc);
-    int fits = lanes;
-    for (int i = 0; i < 3; i++)
-        fits &= a[i] >= -2 * NUM_ONE && a[i] <= 2 * NUM_ONE && fc[i] >= 0 && fc[i] <= FRAG_ONE;
-    if (fits) {
-        uint64_t done[SPAN_CHUNK / 64] = { 0 };
-        TexFogWrite fw = { .p = (const WGT (*)[3])b->p, .dst = chunk_color(ctx, b, 0), .k = b->k, .done = done };
-        for (int i = 0; i < 3; i++) {
-            fw.a[i] = (float)((double)a[i] * 0x1p-46);
-            fw.fc[i] = (float)((double)fc[i] * 0x1p-30);
-        }
-        if (texture_span_fog_write(ctx->units[u].bound, b->n, b->tc, b->tx, b->ty, b->c[0], 4, ctx->texel_unorm8,
-                                   &fw)) {
-            STAGE(fog_write_rgba8_rest)(ctx, b, a, fc, done);
-            return;
-        }
-    }
-    STAGE(chunk_sample)(ctx, b, u, 1);
-    if (lanes)
-        STAGE(fog_write_rgba8_rest)(ctx, b, a, fc, NULL);
-    else {
-        STAGE(stage_fog)(ctx, t, b);
-        STAGE(write_rgba8)(ctx, b, 0);
-    }
-}
 #endif
 
 static void STAGE(stage_write_rgba8_alpha)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
@@ -1670,9 +1649,8 @@ static void STAGE(stage_write_565)(GlesContext *ctx, const TriSetup *t, SpanBuf 
 
 #if CHAIN_SIMD && NUM_IS_FIXED
 /* stage_fog then stage_write_565 (no blend, red, green and blue written) in
-** one pass where STAGE(fog_write_lanes) holds: eight lanes at a time where
-** AVX-512 runs (fx512_fog_write_565), four (avx2_fog_write_565x4), then the
-** last fragments by the stages' code; else the two stages */
+** one pass where STAGE(fog_write_lanes) holds (STAGE(fog_write_rest));
+** else the two stages */
 static void STAGE(stage_fog_write_565)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
 {
     NUM a[3];
@@ -1682,26 +1660,63 @@ static void STAGE(stage_fog_write_565)(GlesContext *ctx, const TriSetup *t, Span
         STAGE(stage_write_565)(ctx, t, b);
         return;
     }
-    uint16_t *dst = chunk_color(ctx, b, 1);
-    const int dither = ctx->dither, n = b->n;
-    FRAGV t_row[4];
-    dither_row(b, dither, t_row);
-    int j = 0;
-#if SIMD_AVX512_FX
-    if (ctx_simd(ctx) >= SIMD_AVX512)
-        j = fx512_fog_write_565(a, (const WGT (*)[3])b->p, (const FRAGV (*)[4])b->c, n, fc, dst, b->k, b->x0, dither,
-                                t_row);
-#endif
-    __m256i fcv[3];
-    avx2_fog_color_lanes(fc, fcv);
-    for (; j + 4 <= n; j += 4)
-        avx2_fog_write_565x4((const FRAGV (*)[4])&b->c[j], avx2_fog4(a, (const WGT (*)[3])&b->p[j]), fcv, dst,
-                             &b->k[j], b->x0, dither, t_row);
-    for (; j < n; j++) {
-        const WGT *p = b->p[j];
-        STAGE(chunk_fog)(b->c[j], frag_clamp01(frag_lerp3(a[0], a[1], a[2], p[0], p[1], p[2])), fc);
-        dst[b->k[j]] = (uint16_t)v4_pack565(v4_load(b->c[j]), dither, t_row[(b->x0 + b->k[j]) & 3]);
+    STAGE(fog_write_rest)(ctx, b, a, fc, NULL, 1);
+}
+
+/* a lone REPLACE unit of an RGBA texture with a level of detail (its
+** sampler lod_block's), the fog and the RGBA8888 or (rgb565) RGB565 write
+** in one stage: the texels of GL_LINEAR levels fogged and written in float
+** lanes where each pixel is proved (texture_span_fog_write), the rest by
+** the exact pass of stage_fog_write_rgba8 or stage_fog_write_565. The
+** float lanes' bound needs the vertices' fog factors within [-2, 2] and
+** the fog colour in [0, 1]; else, or where the kernel does not apply, the
+** separate stages */
+static inline void STAGE(sample_fog_write)(GlesContext *ctx, const TriSetup *t, SpanBuf *b, int rgb565)
+{
+    const int u = __builtin_ctz(ctx->tex_units_on);
+    STAGE(stage_fetch)(ctx, t, b, u, FETCH_COORDS);
+    NUM a[3];
+    FRAGV fc[3];
+    const int lanes = STAGE(fog_write_lanes)(ctx, t, a, fc);
+    int fits = lanes;
+    for (int i = 0; i < 3; i++)
+        fits &= a[i] >= -2 * NUM_ONE && a[i] <= 2 * NUM_ONE && fc[i] >= 0 && fc[i] <= FRAG_ONE;
+    if (fits) {
+        uint64_t done[SPAN_CHUNK / 64] = { 0 };
+        TexFogWrite fw = { .p = (const WGT (*)[3])b->p, .dst = chunk_color(ctx, b, rgb565), .k = b->k,
+                           .rgb565 = rgb565, .dither = ctx->dither, .x0 = b->x0, .done = done };
+        FRAGV t_row[4] = { 0 };
+        if (rgb565)
+            dither_row(b, ctx->dither, t_row);
+        for (int i = 0; i < 4; i++)
+            fw.t_row[i] = ctx->dither ? (float)((double)t_row[i] * 0x1p-30) : 0.0f;
+        for (int i = 0; i < 3; i++) {
+            fw.a[i] = (float)((double)a[i] * 0x1p-46);
+            fw.fc[i] = (float)((double)fc[i] * 0x1p-30);
+        }
+        if (texture_span_fog_write(ctx->units[u].bound, b->n, b->tc, b->tx, b->ty, b->c[0], 4, ctx->texel_unorm8,
+                                   &fw)) {
+            STAGE(fog_write_rest)(ctx, b, a, fc, done, rgb565);
+            return;
+        }
     }
+    STAGE(chunk_sample)(ctx, b, u, 1);
+    if (lanes) {
+        STAGE(fog_write_rest)(ctx, b, a, fc, NULL, rgb565);
+    } else {
+        STAGE(stage_fog)(ctx, t, b);
+        (rgb565 ? STAGE(stage_write_565) : STAGE(stage_write_rgba8))(ctx, t, b);
+    }
+}
+
+static void STAGE(stage_sample_fog_write_rgba8)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    STAGE(sample_fog_write)(ctx, t, b, 0);
+}
+
+static void STAGE(stage_sample_fog_write_565)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
+{
+    STAGE(sample_fog_write)(ctx, t, b, 1);
 }
 #endif
 
@@ -2096,6 +2111,7 @@ static const ChainStages STAGE(chain_stages) = {
     .fog_write_rgba8 = STAGE(stage_fog_write_rgba8),
     .fog_write_565 = STAGE(stage_fog_write_565),
     .sample_fog_write_rgba8 = STAGE(stage_sample_fog_write_rgba8),
+    .sample_fog_write_565 = STAGE(stage_sample_fog_write_565),
 #endif
 #if CHAIN_SIMD && NUM_IS_FIXED
     .fused = { .modulate_write = STAGE(stage_modulate_write), .sample_write = STAGE(stage_sample_write),

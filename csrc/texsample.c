@@ -635,19 +635,22 @@ static void lod_fog_run(const Texture *t, int level, int two, int j, int e, cons
         TexCoord cpad[8];
         WGT ppad[8][3];
         FRAGV fpad[8];
+        uint8_t kpad[8];
         const TexCoord *ci = c + i;
         const WGT (*pi)[3] = fw->p + s0 + i;
+        const uint8_t *ki = fw->k + s0 + i;
         const FRAGV *fi = frac + i;
         if (m < 8) {
             for (int q = 0; q < 8; q++) {
                 const int from = i + (q < m ? q : m - 1);
                 cpad[q] = c[from];
                 memcpy(ppad[q], fw->p[s0 + from], sizeof ppad[q]);
+                kpad[q] = fw->k[s0 + from];
                 fpad[q] = frac[from];
             }
-            ci = cpad, pi = (const WGT (*)[3])ppad, fi = fpad;
+            ci = cpad, pi = (const WGT (*)[3])ppad, ki = kpad, fi = fpad;
         }
-        const unsigned written = avx2_fog_write_texels8(fw, s0 + i, m, l1, l2, two, ci, pi, fi, rs, rt);
+        const unsigned written = avx2_fog_write_texels8(fw, s0 + i, m, l1, l2, two, ci, pi, ki, fi, rs, rt);
         for (unsigned r = ~written & ((1u << m) - 1); r; r &= r - 1) {
             const int q = i + __builtin_ctz(r);
             FRAGV *o = out + (size_t)q * stride;
