@@ -155,6 +155,22 @@ int gles_debug_modulate_write(int smooth, int rgb, int kind, unsigned int alpha_
                               const int64_t col[12], int n, const uint8_t *k, const int32_t *p, int dot3,
                               const int64_t *ct0, const int64_t *ct, int pad, int rgb565, int dither, int x0,
                               void *dst);
+/* for tests, fixed build with AVX2 (-1 elsewhere): the fused sampling, fog
+** and write of a lone REPLACE unit (avx2_fog_write_texels8) over one group
+** of eight fragments: fragment i's bilinear texels c00, c10, c01, c11 at
+** tex1[4 i ..] (RGBA8888 words) with the weights ab[2 i] along s and
+** ab[2 i + 1] along t (0..65535), and with two != 0 mixed by frac[i]
+** (0.30, below 1) with those of tex2 at the same weights; its weights w[3 i
+** ..] (0.30), the vertices' fog factors fog[0..2] (16.16, within [-2, 2])
+** and the fog colour fc[0..2] (0.30, in [0, 1]); an RGBA8888 word, or
+** (rgb565 != 0) an RGB565 pixel of column i (dithered by t_row[i & 3],
+** 0.30, where dither != 0), into out[i] where the kernel proves it.
+** Returns the proved fragments as bits (bit i: out[i] written), -1 when
+** not run (or an argument out of its range) */
+int gles_debug_fog_write_texels(const uint32_t tex1[32], const uint32_t tex2[32], const int32_t ab[16], int two,
+                                const int64_t frac[8], const int32_t w[24], const int32_t fog[3],
+                                const int64_t fc[3], int rgb565, int dither, const int64_t t_row[4],
+                                uint32_t out[8]);
 /* for tests, fixed build (0 elsewhere): a lane kernel of the vertex batch
 ** over n lanes (a multiple of 8, at most 64), through the AVX2 kernel where
 ** simd != 0 and the CPU has AVX2, else the scalar code; returns 1 when run.

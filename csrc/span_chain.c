@@ -258,6 +258,57 @@ static int debug_modwrite(int smooth, int rgb, int kind, unsigned int alpha_func
                                      unorm5, unorm6);
 }
 #endif
+#if NUM_IS_FIXED
+/* gles_debug_fog_write_texels's group: lane i's four texels at columns 2i,
+** 2i + 1 and rows 0, 1 of a 16x2 level, its coordinates placed so that
+** the bilinear weights are ab[2i], ab[2i + 1] */
+static int debug_fog_write_avx2(const uint32_t tex1[32], const uint32_t tex2[32], const int32_t ab[16], int two,
+                                const int64_t frac[8], const int32_t w[24], const int32_t fog[3],
+                                const int64_t fc[3], int rgb565, int dither, const int64_t t_row[4],
+                                uint32_t out[8])
+{
+    uint32_t level[2][32];
+    TexCoord c[8];
+    WGT p[8][3];
+    uint8_t k[8];
+    for (int i = 0; i < 8; i++) {
+        for (int l = 0; l < 2; l++) {
+            const uint32_t *src = l ? tex2 : tex1;
+            level[l][2 * i] = src[4 * i], level[l][2 * i + 1] = src[4 * i + 1];
+            level[l][16 + 2 * i] = src[4 * i + 2], level[l][16 + 2 * i + 1] = src[4 * i + 3];
+        }
+        if (ab[2 * i] < 0 || ab[2 * i] > 65535 || ab[2 * i + 1] < 0 || ab[2 * i + 1] > 65535 || frac[i] < 0
+            || frac[i] >= FRAG_ONE)
+            return -1;
+        /* s 16 - 1/2 = 2i + a / 2^16, t 2 - 1/2 = b / 2^16, in 32.32 */
+        c[i].s = (TEXC)((int64_t)(2 * i * 65536 + 32768 + ab[2 * i]) << 12);
+        c[i].t = (TEXC)((int64_t)(32768 + ab[2 * i + 1]) << 15);
+        for (int j = 0; j < 3; j++)
+            p[i][j] = w[3 * i + j];
+        k[i] = (uint8_t)i;
+    }
+    for (int j = 0; j < 3; j++)
+        if (fog[j] < -2 * NUM_ONE || fog[j] > 2 * NUM_ONE || fc[j] < 0 || fc[j] > FRAG_ONE)
+            return -1;
+    uint16_t px565[8] = { 0 };
+    uint64_t done[SPAN_CHUNK / 64] = { 0 };
+    TexFogWrite fw = { .p = (const WGT (*)[3])p, .dst = rgb565 ? (void *)px565 : (void *)out, .k = k,
+                       .rgb565 = rgb565 != 0, .dither = dither != 0, .x0 = 0, .done = done };
+    for (int j = 0; j < 4; j++)
+        fw.t_row[j] = dither ? (float)((double)t_row[j] * 0x1p-30) : 0.0f;
+    for (int j = 0; j < 3; j++) {
+        fw.a[j] = (float)((double)fog[j] * 0x1p-46);
+        fw.fc[j] = (float)((double)fc[j] * 0x1p-30);
+    }
+    const Avx2Level l1 = { (const int *)(const void *)level[0], 4, 1 }, l2 = { (const int *)(const void *)level[1], 4, 1 };
+    const unsigned ok = avx2_fog_write_texels8(&fw, 0, 8, l1, l2, two != 0, c, (const WGT (*)[3])p, k, frac, 1, 1);
+    if (rgb565)
+        for (int i = 0; i < 8; i++)
+            if ((ok >> i) & 1)
+                out[i] = px565[i];
+    return (int)ok;
+}
+#endif
 #pragma GCC pop_options
 #endif
 
@@ -311,6 +362,22 @@ int gles_debug_modulate_write(int smooth, int rgb, int kind, unsigned int alpha_
 #else
     (void)smooth, (void)rgb, (void)kind, (void)alpha_func, (void)alpha_ref, (void)col, (void)n, (void)k, (void)p,
         (void)dot3, (void)ct0, (void)ct, (void)pad, (void)rgb565, (void)dither, (void)x0, (void)dst;
+    return -1;
+#endif
+}
+
+int gles_debug_fog_write_texels(const uint32_t tex1[32], const uint32_t tex2[32], const int32_t ab[16], int two,
+                                const int64_t frac[8], const int32_t w[24], const int32_t fog[3],
+                                const int64_t fc[3], int rgb565, int dither, const int64_t t_row[4],
+                                uint32_t out[8])
+{
+#if SIMD_X86 && NUM_IS_FIXED
+    if (simd_detect() < SIMD_AVX2)
+        return -1;
+    return debug_fog_write_avx2(tex1, tex2, ab, two, frac, w, fog, fc, rgb565, dither, t_row, out);
+#else
+    (void)tex1, (void)tex2, (void)ab, (void)two, (void)frac, (void)w, (void)fog, (void)fc, (void)rgb565,
+        (void)dither, (void)t_row, (void)out;
     return -1;
 #endif
 }
