@@ -2511,8 +2511,8 @@ AVX2_INLINE void avx2_bilerp8_float(const __m256i g[4], __m256i a, __m256i b, in
 ** within 7.04u, the fog factor's weighted sum within 8.1u (the weights'
 ** magnitudes summing to at most 1 + 2^-7, the vertices' factors at most 2
 ** in magnitude), the fogged channel within 19.2u, so 255 v + 1/2 within
-** 5029u of the exact value, under the margin 2^-11 = 8192u; RGB565's
-** steps 1243u (docs/architecture.md). */
+** 5030u of the exact value, under the margin 2^-11 = 8192u; RGB565's
+** steps 1250u (docs/architecture.md). */
 
 /* the low dwords of eight int64 at q, in order */
 AVX2_INLINE __m256i avx2_low_dwords8(const int64_t *q)
