@@ -18,19 +18,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 from conftest import HAS_SIMD, make_ctx
-
-ONE = 1 << 30
-BAYER_ROW0 = [0, 8, 2, 10]       # fragment_dither_threshold's matrix, row y = 0
+from test_modulate_write import BAYER_ROW0, ONE, _clamp01, _frag_mul, _pack565, _to_unorm8
 
 pytestmark = pytest.mark.skipif(not HAS_SIMD, reason="no AVX2 instance on this CPU")
-
-
-def _clamp01(v: int) -> int:
-    return min(max(v, 0), ONE)
-
-
-def _frag_mul(a: int, b: int) -> int:
-    return (a * b + (1 << 29)) >> 30
 
 
 def _bilerp(c: list[int], a: int, b: int) -> list[int]:
@@ -66,19 +56,9 @@ def _threshold(x: int) -> int:
 
 def _pixel(v: list[int], x: int, rgb565: int, dither: int) -> int:
     """write_rgba8's word, or stage_write_565's pixel of column x (row 0)."""
-    if not rgb565:
-        return sum(((_clamp01(v[i]) * 255 + (1 << 29)) >> 30) << (8 * i) for i in range(4))
-    word = 0
-    for val, bits, shift in zip(v, (5, 6, 5), (11, 5, 0)):
-        top = (1 << bits) - 1
-        if val <= 0:
-            q = 0
-        elif dither:
-            q = (min(val, ONE) * top + _threshold(x)) >> 30
-        else:
-            q = min(val >> (30 - bits), top)
-        word |= q << shift
-    return word
+    if rgb565:
+        return _pack565(v[:3], x, dither)
+    return sum(_to_unorm8(v[i]) << (8 * i) for i in range(4))
 
 
 def _tie_distance(v: list[int], x: int, rgb565: int, dither: int) -> float:
