@@ -2577,9 +2577,8 @@ AVX2_INLINE unsigned avx2_fog_write_texels8(const TexFogWrite *fw, int s0, int m
     if (fw->rgb565) {
         /* dither: floor(v maxval + t), else the top bits floor(v 2^bits),
         ** both clamped to maxval (avx2_modwrite565_8's) */
-        const __m256i x3 = _mm256_and_si256(_mm256_add_epi32(_mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)k)),
-                                                             _mm256_set1_epi32(fw->x0)),
-                                            _mm256_set1_epi32(3));
+        const __m256i k8 = _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)k));
+        const __m256i x3 = _mm256_and_si256(_mm256_add_epi32(k8, _mm256_set1_epi32(fw->x0)), _mm256_set1_epi32(3));
         const __m256 t = _mm256_permutevar_ps(_mm256_setr_ps(fw->t_row[0], fw->t_row[1], fw->t_row[2], fw->t_row[3],
                                                              fw->t_row[0], fw->t_row[1], fw->t_row[2], fw->t_row[3]),
                                               x3);

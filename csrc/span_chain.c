@@ -300,7 +300,8 @@ static int debug_fog_write_avx2(const uint32_t tex1[32], const uint32_t tex2[32]
         fw.a[j] = (float)((double)fog[j] * 0x1p-46);
         fw.fc[j] = (float)((double)fc[j] * 0x1p-30);
     }
-    const Avx2Level l1 = { (const int *)(const void *)level[0], 4, 1 }, l2 = { (const int *)(const void *)level[1], 4, 1 };
+    const Avx2Level l1 = { (const int *)(const void *)level[0], 4, 1 };
+    const Avx2Level l2 = { (const int *)(const void *)level[1], 4, 1 };
     const unsigned ok = avx2_fog_write_texels8(&fw, 0, 8, l1, l2, two != 0, c, (const WGT (*)[3])p, k, frac, 1, 1);
     if (rgb565)
         for (int i = 0; i < 8; i++)
