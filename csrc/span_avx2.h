@@ -2502,130 +2502,6 @@ AVX2_INLINE void avx2_bilerp8_float(const __m256i g[4], __m256i a, __m256i b, in
     }
 }
 
-/* {====================================================================
-** The fog and RGBA8888 write of a lone REPLACE unit's GL_LINEAR texels
-** (one level, or two mixed by the level of detail's fraction) for eight
-** fragments in float lanes, each byte proved equal to the exact stages'
-** (sample_level's texels, lod_mix, stage_fog_write_rgba8): a texel within
-** 4.02u of the exact one (avx2_bilerp8_float), the mix T1 + f (T2 - T1)
-** within 7.04u, the fog factor's weighted sum within 8.1u (the weights'
-** magnitudes summing to at most 1 + 2^-7, the vertices' factors at most 2
-** in magnitude), the fogged channel within 19.2u, so 255 v + 1/2 within
-** 5030u of the exact value, under the margin 2^-11 = 8192u; RGB565's
-** steps 1250u (docs/architecture.md). */
-
-/* the low dwords of eight int64 at q, in order */
-AVX2_INLINE __m256i avx2_low_dwords8(const int64_t *q)
-{
-    const __m256 lo = _mm256_castsi256_ps(_mm256_loadu_si256((const __m256i *)(const void *)q));
-    const __m256 hi = _mm256_castsi256_ps(_mm256_loadu_si256((const __m256i *)(const void *)(q + 4)));
-    /* q0 q1 q4 q5 | q2 q3 q6 q7 */
-    return _mm256_permute4x64_epi64(_mm256_castps_si256(_mm256_shuffle_ps(lo, hi, _MM_SHUFFLE(2, 0, 2, 0))), 0xD8);
-}
-
-/* a level's texel words and log2 sizes, as the kernels read them */
-typedef struct Avx2Level {
-    const int *tx;
-    int log2w, log2h;
-} Avx2Level;
-
-AVX2_INLINE Avx2Level avx2_level(const TexImage *li)
-{
-    return (Avx2Level){ (const int *)(const void *)li->texels, __builtin_ctz((unsigned)li->width),
-                        __builtin_ctz((unsigned)li->height) };
-}
-
-/* slots s0..s0+m-1 (1 <= m <= 8) of a chunk, with coordinates c[0..7],
-** weights p[0..7] and pixel offsets k[0..7] (copies of the last past m):
-** level l1's texels, mixed with the next level's l2 by frac[0..7] (0.30)
-** where two, fogged and written to fw->dst (RGBA8888, or RGB565 as
-** avx2_modwrite565_8 writes it: its bound is 255/63 times smaller);
-** returns the lanes written (bit i: slot s0 + i), each marked in fw->done */
-AVX2_INLINE unsigned avx2_fog_write_texels8(const TexFogWrite *fw, int s0, int m, Avx2Level l1, Avx2Level l2,
-                                            int two, const TexCoord *c, const WGT (*p)[3], const uint8_t *k,
-                                            const FRAGV *frac, int rs, int rt)
-{
-    __m256i g[4], a, b;
-    __m256 T[4];
-    avx2_linear_texels8(l1.tx, l1.log2w, l1.log2h, c, rs, rt, !two, g, &a, &b);
-    avx2_bilerp8_float(g, a, b, 0, T);
-    if (two) {
-        __m256 T2[4];
-        avx2_linear_texels8(l2.tx, l2.log2w, l2.log2h, c, rs, rt, 0, g, &a, &b);
-        avx2_bilerp8_float(g, a, b, 0, T2);
-        /* the fractions' integers are below 2^30: their low dwords */
-        const __m256 f = _mm256_mul_ps(_mm256_cvtepi32_ps(avx2_low_dwords8(frac)), _mm256_set1_ps(0x1p-30f));
-        for (int i = 0; i < 4; i++)
-            T[i] = _mm256_fmadd_ps(f, _mm256_sub_ps(T2[i], T[i]), T[i]);
-    }
-    __m256 w0, w1, w2;
-    avx2_wgt_float8(p, &w0, &w1, &w2);
-    const __m256 mag = _mm256_castsi256_ps(_mm256_set1_epi32(0x7FFFFFFF));
-    const __m256 wsum = _mm256_add_ps(_mm256_add_ps(_mm256_and_ps(w0, mag), _mm256_and_ps(w1, mag)),
-                                      _mm256_and_ps(w2, mag));
-    __m256 bad = _mm256_cmp_ps(wsum, _mm256_set1_ps(0x1.02p0f * (float)WGT_ONE), _CMP_NLE_UQ);
-    __m256 fog = _mm256_fmadd_ps(w0, _mm256_set1_ps(fw->a[0]),
-                                 _mm256_fmadd_ps(w1, _mm256_set1_ps(fw->a[1]),
-                                                 _mm256_mul_ps(w2, _mm256_set1_ps(fw->a[2]))));
-    fog = _mm256_min_ps(_mm256_max_ps(fog, _mm256_setzero_ps()), _mm256_set1_ps(1.0f));
-    __m256 v[3];
-    for (int i = 0; i < 3; i++) {
-        const __m256 fc = _mm256_set1_ps(fw->fc[i]);
-        v[i] = _mm256_fmadd_ps(fog, _mm256_sub_ps(T[i], fc), fc);
-    }
-    __m256i word;
-    if (fw->rgb565) {
-        /* dither: floor(v maxval + t), else the top bits floor(v 2^bits),
-        ** both clamped to maxval (avx2_modwrite565_8's) */
-        const __m256i k8 = _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)k));
-        const __m256i x3 = _mm256_and_si256(_mm256_add_epi32(k8, _mm256_set1_epi32(fw->x0)), _mm256_set1_epi32(3));
-        const __m256 t = _mm256_permutevar_ps(_mm256_setr_ps(fw->t_row[0], fw->t_row[1], fw->t_row[2], fw->t_row[3],
-                                                             fw->t_row[0], fw->t_row[1], fw->t_row[2], fw->t_row[3]),
-                                              x3);
-        static const int shift[3] = { 11, 5, 0 }, bits[3] = { 5, 6, 5 };
-        word = _mm256_setzero_si256();
-        for (int i = 0; i < 3; i++) {
-            const int maxval = (1 << bits[i]) - 1;
-            const __m256 z = fw->dither ? _mm256_fmadd_ps(v[i], _mm256_set1_ps((float)maxval), t)
-                                        : _mm256_mul_ps(v[i], _mm256_set1_ps((float)(1 << bits[i])));
-            const __m256i q = _mm256_min_epi32(avx2_floor_proved_upto(z, (float)maxval, 0x1p-11f, &bad),
-                                               _mm256_set1_epi32(maxval));
-            word = _mm256_or_si256(word, _mm256_slli_epi32(q, shift[i]));
-        }
-    } else {
-        const __m256 k255 = _mm256_set1_ps(255.0f), half = _mm256_set1_ps(0.5f);
-        word = _mm256_slli_epi32(avx2_floor_proved(_mm256_fmadd_ps(T[3], k255, half), 0x1p-11f, &bad), 24);
-        for (int i = 0; i < 3; i++)
-            word = _mm256_or_si256(word, _mm256_slli_epi32(avx2_floor_proved(_mm256_fmadd_ps(v[i], k255, half),
-                                                                             0x1p-11f, &bad), 8 * i));
-    }
-    const unsigned ok = ~(unsigned)_mm256_movemask_ps(bad) & ((1u << m) - 1);
-    uint32_t w[8];
-    _mm256_storeu_si256((__m256i *)(void *)w, word);
-    if (fw->rgb565) {
-        uint16_t *dst = fw->dst;
-        if (ok == 0xFF && k[7] == k[0] + 7)
-            _mm_storeu_si128((__m128i *)(void *)&dst[k[0]],
-                             _mm256_castsi256_si128(_mm256_permute4x64_epi64(_mm256_packus_epi32(word, word), 0x08)));
-        else
-            for (unsigned r = ok; r; r &= r - 1)
-                dst[k[__builtin_ctz(r)]] = (uint16_t)w[__builtin_ctz(r)];
-    } else {
-        uint32_t *dst = fw->dst;
-        if (ok == 0xFF && k[7] == k[0] + 7)
-            _mm256_storeu_si256((__m256i *)(void *)&dst[k[0]], word);
-        else
-            for (unsigned r = ok; r; r &= r - 1)
-                dst[k[__builtin_ctz(r)]] = w[__builtin_ctz(r)];
-    }
-    const int sh = s0 & 63;
-    fw->done[s0 >> 6] |= (uint64_t)ok << sh;
-    if (sh > 56 && ((uint64_t)ok >> (64 - sh)))     /* (a valid slot past the word: s0 < 64) */
-        fw->done[(s0 >> 6) + 1] |= (uint64_t)ok >> (64 - sh);
-    return ok;
-}
-
-/* }==================================================================== */
 #else
 /* the double build's weights of fragments p[0..7] as float lanes, each
 ** rounded once */
@@ -2709,6 +2585,49 @@ AVX2_INLINE int avx2_texels_sampled8(const ModWriteTexture *tx, const TexCoord *
 }
 #endif
 
+/* the three weights of fragments p[0..7] as float lanes (avx2_wgt_float8),
+** and in *bad the lanes whose magnitudes sum past 1 + 2^-7 (or NaN): the
+** fused kernels' bounds take weights of points near the triangle */
+AVX2_INLINE void avx2_wgt_float8_near(const WGT (*p)[3], __m256 *w0, __m256 *w1, __m256 *w2, __m256 *bad)
+{
+    avx2_wgt_float8(p, w0, w1, w2);
+    const __m256 sign = _mm256_set1_ps(-0.0f);
+    const __m256 mag = _mm256_add_ps(_mm256_add_ps(_mm256_andnot_ps(sign, *w0), _mm256_andnot_ps(sign, *w1)),
+                                     _mm256_andnot_ps(sign, *w2));
+    /* (not below: larger, or NaN) */
+    *bad = _mm256_cmp_ps(mag, _mm256_set1_ps((float)(0x1.02p0 * (double)WGT_ONE)), _CMP_NLE_UQ);
+}
+
+/* eight RGBA8888 words of values y[0..3] in [0, 1]: each byte floor(255 y
+** + 1/2), and in *bad the lanes where one lies within `margin` of a
+** rounding point */
+AVX2_INLINE __m256i avx2_rgba8_proved8(const __m256 y[4], float margin, __m256 *bad)
+{
+    __m256i v[4];
+    for (int i = 0; i < 4; i++)
+        v[i] = avx2_floor_proved(_mm256_fmadd_ps(y[i], _mm256_set1_ps(255.0f), _mm256_set1_ps(0.5f)), margin, bad);
+    return avx2_pack_rgba8x8(v);
+}
+
+/* eight RGB565 words (32-bit lanes) of values y[0..2] >= 0: with dither
+** floor(y maxval + t) (t the lanes' thresholds), else the top bits floor(y
+** 2^bits), both clamped to maxval; in *bad the lanes where one lies
+** within `margin` of a rounding point that matters */
+AVX2_INLINE __m256i avx2_565_proved8(const __m256 y[3], int dither, __m256 t, float margin, __m256 *bad)
+{
+    static const int shift[3] = { 11, 5, 0 }, bits[3] = { 5, 6, 5 };
+    __m256i w = _mm256_setzero_si256();
+    for (int i = 0; i < 3; i++) {
+        const int maxval = (1 << bits[i]) - 1;
+        const __m256 z = dither ? _mm256_fmadd_ps(y[i], _mm256_set1_ps((float)maxval), t)
+                                : _mm256_mul_ps(y[i], _mm256_set1_ps((float)(1 << bits[i])));
+        const __m256i v = _mm256_min_epi32(avx2_floor_proved_upto(z, (float)maxval, margin, bad),
+                                           _mm256_set1_epi32(maxval));
+        w = _mm256_or_si256(w, _mm256_slli_epi32(v, shift[i]));
+    }
+    return w;
+}
+
 /* COMBINE DOT3 of texels T0 and colours c (in place): with the rgb lanes
 ** of both given less 1/2 (in [-1/2, 1/2]) and the alpha lanes in [0, 1],
 ** in the rgb lanes 4 sum((T0_i - 1/2)(c_i - 1/2)) clamped to [0, 1], in
@@ -2743,12 +2662,7 @@ AVX2_INLINE void avx2_modwrite_source8(const Avx2ModWrite *m, int smooth, int do
         __m256 c[4];
         if (smooth) {
             __m256 w0, w1, w2;
-            avx2_wgt_float8(p, &w0, &w1, &w2);
-            const __m256 sign = _mm256_set1_ps(-0.0f);
-            const __m256 mag = _mm256_add_ps(_mm256_add_ps(_mm256_andnot_ps(sign, w0), _mm256_andnot_ps(sign, w1)),
-                                             _mm256_andnot_ps(sign, w2));
-            /* (not below: larger, or NaN) */
-            *bad = _mm256_cmp_ps(mag, _mm256_set1_ps((float)(0x1.02p0 * (double)WGT_ONE)), _CMP_NLE_UQ);
+            avx2_wgt_float8_near(p, &w0, &w1, &w2, bad);
             /* with dot3 the rgb lanes less 1/2, from the vertex
             ** colours less 1/2 (the weights sum to 1) */
             const __m256 half = _mm256_set1_ps(0.5f), nhalf = _mm256_set1_ps(-0.5f);
@@ -2799,10 +2713,7 @@ AVX2_INLINE unsigned avx2_modwrite8(const Avx2ModWrite *m, int smooth, int kind,
                              : _mm256_min_ps(_mm256_add_ps(y[i], dv), one);
         }
     }
-    __m256i v[4];
-    for (int i = 0; i < 4; i++)
-        v[i] = avx2_floor_proved(_mm256_fmadd_ps(y[i], _mm256_set1_ps(255.0f), _mm256_set1_ps(0.5f)), margin, &bad);
-    const __m256i w = avx2_pack_rgba8x8(v);
+    const __m256i w = avx2_rgba8_proved8(y, margin, &bad);
     /* a fragment that fails the alpha test leaves the stored word */
     *out = _mm256_blendv_epi8(d, w, pass);
     return (unsigned)_mm256_movemask_ps(bad);
@@ -2828,21 +2739,118 @@ AVX2_INLINE unsigned avx2_modwrite565_8(const Avx2ModWrite *m, int smooth, int k
             y[i] = _mm256_fmadd_ps(y[i], a, _mm256_mul_ps(dv, b));
         }
     }
-    /* dither: floor(y maxval + t), else the top bits floor(y 2^bits),
-    ** both clamped to maxval */
-    const __m256 t = _mm256_permutevar_ps(m->t_row_f, x3);
-    __m256i w = _mm256_setzero_si256();
-    for (int i = 0; i < 3; i++) {
-        const int maxval = (1 << bits[i]) - 1;
-        const __m256 z = m->dither ? _mm256_fmadd_ps(y[i], _mm256_set1_ps((float)maxval), t)
-                                   : _mm256_mul_ps(y[i], _mm256_set1_ps((float)(1 << bits[i])));
-        const __m256i v = _mm256_min_epi32(avx2_floor_proved_upto(z, (float)maxval, margin, &bad),
-                                           _mm256_set1_epi32(maxval));
-        w = _mm256_or_si256(w, _mm256_slli_epi32(v, shift[i]));
-    }
+    const __m256i w = avx2_565_proved8(y, m->dither, _mm256_permutevar_ps(m->t_row_f, x3), margin, &bad);
     *out = _mm256_blendv_epi8(d, w, pass);
     return (unsigned)_mm256_movemask_ps(bad);
 }
+
+#if NUM_IS_FIXED
+/* {====================================================================
+** The fog and RGBA8888 write of a lone REPLACE unit's GL_LINEAR texels
+** (one level, or two mixed by the level of detail's fraction) for eight
+** fragments in float lanes, each byte proved equal to the exact stages'
+** (sample_level's texels, lod_mix, stage_fog_write_rgba8): a texel within
+** 4.02u of the exact one (avx2_bilerp8_float), the mix T1 + f (T2 - T1)
+** within 7.04u, the fog factor's weighted sum within 8.1u (the weights'
+** magnitudes summing to at most 1 + 2^-7, the vertices' factors at most 2
+** in magnitude), the fogged channel within 19.2u, so 255 v + 1/2 within
+** 5030u of the exact value, under the margin 2^-11 = 8192u; RGB565's
+** steps 1250u (docs/architecture.md). */
+
+/* the low dwords of eight int64 at q, in order */
+AVX2_INLINE __m256i avx2_low_dwords8(const int64_t *q)
+{
+    const __m256 lo = _mm256_castsi256_ps(_mm256_loadu_si256((const __m256i *)(const void *)q));
+    const __m256 hi = _mm256_castsi256_ps(_mm256_loadu_si256((const __m256i *)(const void *)(q + 4)));
+    /* q0 q1 q4 q5 | q2 q3 q6 q7 */
+    return _mm256_permute4x64_epi64(_mm256_castps_si256(_mm256_shuffle_ps(lo, hi, _MM_SHUFFLE(2, 0, 2, 0))), 0xD8);
+}
+
+/* a level's texel words and log2 sizes, as the kernels read them */
+typedef struct Avx2Level {
+    const int *tx;
+    int log2w, log2h;
+} Avx2Level;
+
+AVX2_INLINE Avx2Level avx2_level(const TexImage *li)
+{
+    return (Avx2Level){ (const int *)(const void *)li->texels, __builtin_ctz((unsigned)li->width),
+                        __builtin_ctz((unsigned)li->height) };
+}
+
+/* slots s0..s0+m-1 (1 <= m <= 8) of a chunk, with coordinates c[0..7],
+** weights p[0..7] and pixel offsets k[0..7] (copies of the last past m):
+** level l1's texels, mixed with the next level's l2 by frac[0..7] (0.30)
+** where two, fogged and written to fw->dst (RGBA8888, or RGB565 as
+** avx2_modwrite565_8 writes it: its bound is 255/63 times smaller);
+** returns the lanes written (bit i: slot s0 + i), each marked in fw->done */
+AVX2_INLINE unsigned avx2_fog_write_texels8(const TexFogWrite *fw, int s0, int m, Avx2Level l1, Avx2Level l2,
+                                            int two, const TexCoord *c, const WGT (*p)[3], const uint8_t *k,
+                                            const FRAGV *frac, int rs, int rt)
+{
+    __m256i g[4], a, b;
+    __m256 T[4];
+    avx2_linear_texels8(l1.tx, l1.log2w, l1.log2h, c, rs, rt, !two, g, &a, &b);
+    avx2_bilerp8_float(g, a, b, 0, T);
+    if (two) {
+        __m256 T2[4];
+        avx2_linear_texels8(l2.tx, l2.log2w, l2.log2h, c, rs, rt, 0, g, &a, &b);
+        avx2_bilerp8_float(g, a, b, 0, T2);
+        /* the fractions' integers are below 2^30: their low dwords */
+        const __m256 f = _mm256_mul_ps(_mm256_cvtepi32_ps(avx2_low_dwords8(frac)), _mm256_set1_ps(0x1p-30f));
+        for (int i = 0; i < 4; i++)
+            T[i] = _mm256_fmadd_ps(f, _mm256_sub_ps(T2[i], T[i]), T[i]);
+    }
+    __m256 w0, w1, w2, bad;
+    avx2_wgt_float8_near(p, &w0, &w1, &w2, &bad);
+    __m256 fog = _mm256_fmadd_ps(w0, _mm256_set1_ps(fw->a[0]),
+                                 _mm256_fmadd_ps(w1, _mm256_set1_ps(fw->a[1]),
+                                                 _mm256_mul_ps(w2, _mm256_set1_ps(fw->a[2]))));
+    fog = _mm256_min_ps(_mm256_max_ps(fog, _mm256_setzero_ps()), _mm256_set1_ps(1.0f));
+    __m256 v[3];
+    for (int i = 0; i < 3; i++) {
+        const __m256 fc = _mm256_set1_ps(fw->fc[i]);
+        v[i] = _mm256_fmadd_ps(fog, _mm256_sub_ps(T[i], fc), fc);
+    }
+    __m256i word;
+    if (fw->rgb565) {
+        const __m256i k8 = _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)k));
+        const __m256i x3 = _mm256_and_si256(_mm256_add_epi32(k8, _mm256_set1_epi32(fw->x0)), _mm256_set1_epi32(3));
+        const __m256 t_row = _mm256_setr_ps(fw->t_row[0], fw->t_row[1], fw->t_row[2], fw->t_row[3], fw->t_row[0],
+                                            fw->t_row[1], fw->t_row[2], fw->t_row[3]);
+        word = avx2_565_proved8(v, fw->dither, _mm256_permutevar_ps(t_row, x3), 0x1p-11f, &bad);
+    } else {
+        const __m256 y[4] = { v[0], v[1], v[2], T[3] };
+        word = avx2_rgba8_proved8(y, 0x1p-11f, &bad);
+    }
+    const unsigned ok = ~(unsigned)_mm256_movemask_ps(bad) & ((1u << m) - 1);
+    uint32_t w[8];
+    _mm256_storeu_si256((__m256i *)(void *)w, word);
+    if (fw->rgb565) {
+        uint16_t *dst = fw->dst;
+        if (ok == 0xFF && k[7] == k[0] + 7)
+            _mm_storeu_si128((__m128i *)(void *)&dst[k[0]],
+                             _mm256_castsi256_si128(_mm256_permute4x64_epi64(_mm256_packus_epi32(word, word), 0x08)));
+        else
+            for (unsigned r = ok; r; r &= r - 1)
+                dst[k[__builtin_ctz(r)]] = (uint16_t)w[__builtin_ctz(r)];
+    } else {
+        uint32_t *dst = fw->dst;
+        if (ok == 0xFF && k[7] == k[0] + 7)
+            _mm256_storeu_si256((__m256i *)(void *)&dst[k[0]], word);
+        else
+            for (unsigned r = ok; r; r &= r - 1)
+                dst[k[__builtin_ctz(r)]] = w[__builtin_ctz(r)];
+    }
+    const int sh = s0 & 63;
+    fw->done[s0 >> 6] |= (uint64_t)ok << sh;
+    if (sh > 56 && ((uint64_t)ok >> (64 - sh)))     /* (a valid slot past the word: s0 < 64) */
+        fw->done[(s0 >> 6) + 1] |= (uint64_t)ok >> (64 - sh);
+    return ok;
+}
+
+/* }==================================================================== */
+#endif
 
 /* combine_block's DOT3 (scales 1) of the texel t0 and the clamped colour
 ** c: 4 sum(frag_mul(t0_i - 1/2, c_i - 1/2)) clamped, in every lane

@@ -1304,6 +1304,52 @@ def test_lod_tangents_of_extreme_perspective_match_generic(numeric):
 # perspective planes with a level of detail: every instance of the stage
 
 
+def _mip_chain(gl: Any, rng: np.random.Generator, ramps: bool = False) -> None:
+    """A full chain of random 64x64..1x1 RGBA levels into the bound texture;
+    with ramps, a green ramp over the top half and an alpha ramp over the
+    left half of each level (channels slowly varying over many fragments)."""
+    size, level = 64, 0
+    while size >= 1:
+        img = rng.integers(0, 256, (size, size, 4), dtype=np.uint8)
+        if ramps:
+            texels = size * size
+            ramp = (np.arange(texels).reshape(size, size) * 255 // max(texels - 1, 1)).astype(np.uint8)
+            img[: size // 2, :, 1] = ramp[: size // 2]
+            img[:, : size // 2, 3] = 255 - ramp[:, : size // 2]
+        gl.glTexImage2D(C.GL_TEXTURE_2D, level, C.GL_RGBA, size, size, 0, C.GL_RGBA, C.GL_UNSIGNED_BYTE, img)
+        size //= 2
+        level += 1
+
+
+def _look_at_ground(gl: Any, pitch: float, yaw: float) -> None:
+    """The modelview of a view 1.5 above the ground plane, pitched down and yawed."""
+    gl.glMatrixMode(C.GL_MODELVIEW)
+    gl.glLoadIdentity()
+    gl.glRotatef(pitch, 1.0, 0.0, 0.0)
+    gl.glTranslatef(0.0, -1.5, 0.0)
+    gl.glRotatef(yaw, 0.0, 1.0, 0.0)
+
+
+def _ground_view(gl: Any, w: int, h: int, half_h: float, pitch: float, yaw: float) -> None:
+    """The viewport, a frustum 1.2 wide and 2 half_h high at the near plane 1 (far 400), and the view."""
+    gl.glViewport(0, 0, w, h)
+    gl.glMatrixMode(C.GL_PROJECTION)
+    gl.glLoadIdentity()
+    gl.glFrustumf(-0.6, 0.6, -half_h, half_h, 1.0, 400.0)
+    _look_at_ground(gl, pitch, yaw)
+
+
+def _ground_grid(n: int = 9) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """An n x n grid on y = 0 from x = -80 to 80 and z = -1 to -200: x, z, the
+    vertices and the triangles' indices."""
+    xs, zs = np.meshgrid(np.linspace(-80.0, 80.0, n), np.linspace(-1.0, -200.0, n))
+    verts = np.stack([xs, np.zeros_like(xs), zs], axis=-1).reshape(-1, 3)
+    i = np.arange(n - 1)
+    a = (i[:, None] * n + i[None, :]).reshape(-1)
+    idx = np.stack([a, a + 1, a + n, a + 1, a + n + 1, a + n], -1).reshape(-1).astype(np.uint16)
+    return xs, zs, verts, idx
+
+
 def _mipmapped_plane(numeric: str, flags: int, case: str) -> np.ndarray:
     """A 160x96 view of a mipmapped ground plane to the horizon, yawed and
     pitched so that w changes along each row: rows of up to 160 fragments,
@@ -1334,13 +1380,7 @@ def _mipmapped_plane(numeric: str, flags: int, case: str) -> np.ndarray:
     for unit in units:
         gl.glActiveTexture(C.GL_TEXTURE0 + unit)
         gl.glBindTexture(C.GL_TEXTURE_2D, int(gl.glGenTextures(1)))
-        size, level = 64, 0
-        while size >= 1:
-            img = rng.integers(0, 256, (size, size, 4), dtype=np.uint8)
-            gl.glTexImage2D(C.GL_TEXTURE_2D, level, C.GL_RGBA, size, size, 0, C.GL_RGBA, C.GL_UNSIGNED_BYTE,
-                            img)
-            size //= 2
-            level += 1
+        _mip_chain(gl, rng)
         minf = C.GL_LINEAR_MIPMAP_LINEAR if unit == 0 else C.GL_LINEAR
         gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MIN_FILTER, minf)
         gl.glTexParameteri(C.GL_TEXTURE_2D, C.GL_TEXTURE_MAG_FILTER, C.GL_LINEAR)
@@ -1354,24 +1394,12 @@ def _mipmapped_plane(numeric: str, flags: int, case: str) -> np.ndarray:
         gl.glFogf(C.GL_FOG_START, 3.0)
         gl.glFogf(C.GL_FOG_END, 170.0)
         gl.glFogfv(C.GL_FOG_COLOR, [0.55, 0.65, 0.8, 1.0])
-    gl.glViewport(0, 0, w, h)
-    gl.glMatrixMode(C.GL_PROJECTION)
-    gl.glLoadIdentity()
-    gl.glFrustumf(-0.6, 0.6, -0.36, 0.36, 1.0, 400.0)
-    gl.glMatrixMode(C.GL_MODELVIEW)
-    gl.glLoadIdentity()
-    gl.glRotatef(9.0, 1.0, 0.0, 0.0)
-    gl.glTranslatef(0.0, -1.5, 0.0)
-    gl.glRotatef(17.0, 0.0, 1.0, 0.0)
-    n = 9
-    xs, zs = np.meshgrid(np.linspace(-80.0, 80.0, n), np.linspace(-1.0, -200.0, n))
-    verts = np.stack([xs, np.zeros_like(xs), zs], axis=-1).reshape(-1, 3)
+    _ground_view(gl, w, h, 0.36, 9.0, 17.0)
+    xs, zs, verts, idx = _ground_grid()
+    n = xs.shape[0]
     q = 1.0 + 0.5 * rng.random(n * n) if case == "q" else np.ones(n * n)
     st = np.stack([xs.ravel() / 3.0, -zs.ravel() / 3.0], axis=-1)
     tc = np.concatenate([st * q[:, None], np.zeros((n * n, 1)), q[:, None]], axis=-1)
-    i = np.arange(n - 1)
-    a = (i[:, None] * n + i[None, :]).reshape(-1)
-    idx = np.stack([a, a + 1, a + n, a + 1, a + n + 1, a + n], -1).reshape(-1).astype(np.uint16)
     gl.glEnableClientState(C.GL_VERTEX_ARRAY)
     gl.glVertexPointer(3, C.GL_FLOAT, 0, np.ascontiguousarray(verts, dtype=np.float32))
     for unit in units:
@@ -1388,10 +1416,7 @@ def _mipmapped_plane(numeric: str, flags: int, case: str) -> np.ndarray:
         for _ in range(6):
             gl.glTranslatef(1.3, 0.0, -1.0)
             gl.glDrawArrays(C.GL_TRIANGLE_STRIP, 0, 4)
-        gl.glLoadIdentity()
-        gl.glRotatef(9.0, 1.0, 0.0, 0.0)
-        gl.glTranslatef(0.0, -1.5, 0.0)
-        gl.glRotatef(17.0, 0.0, 1.0, 0.0)
+        _look_at_ground(gl, 9.0, 17.0)
         gl.glEnable(C.GL_TEXTURE_2D)
         gl.glEnableClientState(C.GL_TEXTURE_COORD_ARRAY)
         gl.glVertexPointer(3, C.GL_FLOAT, 0, np.ascontiguousarray(verts, dtype=np.float32))
@@ -1420,15 +1445,7 @@ def _fogged_texels(seed: int, flags: int) -> np.ndarray:
     gl.glClearColor(0.0, 0.0, 0.0, 0.0)
     gl.glClear(C.GL_COLOR_BUFFER_BIT | C.GL_DEPTH_BUFFER_BIT)
     gl.glBindTexture(C.GL_TEXTURE_2D, int(gl.glGenTextures(1)))
-    size, level = 64, 0
-    while size >= 1:
-        img = rng.integers(0, 256, (size, size, 4), dtype=np.uint8)
-        ramp = (np.arange(size * size).reshape(size, size) * 255 // max(size * size - 1, 1)).astype(np.uint8)
-        img[: size // 2, :, 1] = ramp[: size // 2]
-        img[:, : size // 2, 3] = 255 - ramp[:, : size // 2]
-        gl.glTexImage2D(C.GL_TEXTURE_2D, level, C.GL_RGBA, size, size, 0, C.GL_RGBA, C.GL_UNSIGNED_BYTE, img)
-        size //= 2
-        level += 1
+    _mip_chain(gl, rng, ramps=True)
     filters = [(C.GL_LINEAR_MIPMAP_LINEAR, C.GL_LINEAR), (C.GL_LINEAR_MIPMAP_NEAREST, C.GL_LINEAR),
                (C.GL_LINEAR_MIPMAP_LINEAR, C.GL_NEAREST), (C.GL_NEAREST_MIPMAP_LINEAR, C.GL_LINEAR)]
     minf, magf = filters[seed % 4]
@@ -1446,23 +1463,11 @@ def _fogged_texels(seed: int, flags: int) -> np.ndarray:
     gl.glFogf(C.GL_FOG_END, end)
     gl.glFogfv(C.GL_FOG_COLOR, [*rng.random(3).tolist(), 1.0])
     gl.glEnable(C.GL_DEPTH_TEST)
-    gl.glViewport(0, 0, w, h)
-    gl.glMatrixMode(C.GL_PROJECTION)
-    gl.glLoadIdentity()
-    gl.glFrustumf(-0.6, 0.6, -0.35, 0.35, 1.0, 400.0)
-    gl.glMatrixMode(C.GL_MODELVIEW)
-    gl.glLoadIdentity()
-    gl.glRotatef(float(rng.uniform(5, 12)), 1.0, 0.0, 0.0)
-    gl.glTranslatef(0.0, -1.5, 0.0)
-    gl.glRotatef(float(rng.uniform(-30, 30)), 0.0, 1.0, 0.0)
-    n = 9
-    xs, zs = np.meshgrid(np.linspace(-80.0, 80.0, n), np.linspace(-1.0, -200.0, n))
-    verts = np.stack([xs, np.zeros_like(xs), zs], axis=-1).reshape(-1, 3)
+    pitch = float(rng.uniform(5, 12))
+    _ground_view(gl, w, h, 0.35, pitch, float(rng.uniform(-30, 30)))
+    xs, zs, verts, idx = _ground_grid()
     scale = float(rng.uniform(1.5, 6.0))
     st = np.stack([xs.ravel() / scale, -zs.ravel() / scale], axis=-1)
-    i = np.arange(n - 1)
-    a = (i[:, None] * n + i[None, :]).reshape(-1)
-    idx = np.stack([a, a + 1, a + n, a + 1, a + n + 1, a + n], -1).reshape(-1).astype(np.uint16)
     gl.glEnableClientState(C.GL_VERTEX_ARRAY)
     gl.glEnableClientState(C.GL_TEXTURE_COORD_ARRAY)
     # posts in front of the plane, drawn first: the depth test drops parts of its rows
