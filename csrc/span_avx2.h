@@ -761,8 +761,9 @@ AVX2_INLINE __m256i avx2_lod_log2(__m256i rho)
     return _mm256_blendv_epi8(l, _mm256_set1_epi64x(-((int64_t)1 << 40)), _mm256_cmpeq_epi64(rho, zero));
 }
 
-/* lod_choose of fragments 0..3: key[k] and frac[k] (0 where not two).
-** The six coordinates are clamped to +-2^50 as texc_clamp does (skipped
+/* lod_choose of fragments 0..3 in three steps: rho (avx2_lod_rho4),
+** lambda (avx2_lod_log2) and the decisions (avx2_lod_decide4), which give
+** key[k] and frac[k] (0 where not two). The six coordinates are clamped to +-2^50 as texc_clamp does (skipped
 ** when all lie in [-2^50, 2^50), where it changes nothing); s and t stay
 ** interleaved, each difference (|.| <= 2^51) shifted by its axis's log2
 ** size (texc_scale by a power of two, <= 2^62), and max(|a| w, |b| w) =
@@ -772,8 +773,8 @@ AVX2_INLINE __m256i avx2_lod_log2(__m256i rho)
 ** ((lambda + 2^29 + 2^30 - 1) >> 30) - 1, which is the scalar 0 for
 ** lambda <= 1/2 too, then min(d, q); for *_MIPMAP_LINEAR floor(lambda)
 ** and frac(lambda) as the shift and mask of a positive lambda. */
-AVX2_INLINE void avx2_lod_choose4(const Avx2LodParams *p, const TexCoord *c, const TexCoord *dx,
-                                  const TexCoord *dy, int32_t key[4], FRAGV frac[4])
+AVX2_INLINE __m256i avx2_lod_rho4(const Avx2LodParams *p, const TexCoord *c, const TexCoord *dx,
+                                   const TexCoord *dy)
 {
     __m256i v[6] = { _mm256_loadu_si256((const __m256i *)(const void *)&c[0]),
                      _mm256_loadu_si256((const __m256i *)(const void *)&c[2]),
@@ -796,9 +797,12 @@ AVX2_INLINE void avx2_lod_choose4(const Avx2LodParams *p, const TexCoord *c, con
     const __m256i m23 = _mm256_sllv_epi64(avx2_max64(avx2_abs64(_mm256_sub_epi64(v[3], v[1])),
                                                      avx2_abs64(_mm256_sub_epi64(v[5], v[1]))), sh);
     /* (s0 s2 s1 s3) and (t0 t2 t1 t3), back to fragment order */
-    const __m256i rho = _mm256_permute4x64_epi64(
+    return _mm256_permute4x64_epi64(
         avx2_max64(_mm256_unpacklo_epi64(m01, m23), _mm256_unpackhi_epi64(m01, m23)), 0xD8);
-    const __m256i l = avx2_lod_log2(rho);
+}
+
+AVX2_INLINE void avx2_lod_decide4(const Avx2LodParams *p, __m256i l, int32_t key[4], FRAGV frac[4])
+{
     const __m256i above = _mm256_cmpgt_epi64(l, _mm256_set1_epi64x(p->cshift));
     const __m256i lp = _mm256_and_si256(l, above);          /* lambda > 0 where above, else 0 */
     const __m256i q = _mm256_set1_epi64x(p->q);
@@ -820,6 +824,25 @@ AVX2_INLINE void avx2_lod_choose4(const Avx2LodParams *p, const TexCoord *c, con
     _mm_storeu_si128((__m128i *)(void *)key,
                      _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(k, _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6))));
     _mm256_storeu_si256((__m256i *)(void *)frac, f);
+}
+
+/* lod_choose of fragments 0..3 (above) */
+AVX2_INLINE void avx2_lod_choose4(const Avx2LodParams *p, const TexCoord *c, const TexCoord *dx,
+                                  const TexCoord *dy, int32_t key[4], FRAGV frac[4])
+{
+    avx2_lod_decide4(p, avx2_lod_log2(avx2_lod_rho4(p, c, dx, dy)), key, frac);
+}
+
+/* the same for fragments 0..7, both fours' table gathers (avx2_lod_log2's)
+** issued together: the second does not wait behind the first's arithmetic
+** (trilinear_fog's fixed build about 5% faster) */
+AVX2_INLINE void avx2_lod_choose8(const Avx2LodParams *p, const TexCoord *c, const TexCoord *dx,
+                                  const TexCoord *dy, int32_t key[8], FRAGV frac[8])
+{
+    const __m256i r0 = avx2_lod_rho4(p, c, dx, dy), r1 = avx2_lod_rho4(p, c + 4, dx + 4, dy + 4);
+    const __m256i l0 = avx2_lod_log2(r0), l1 = avx2_lod_log2(r1);
+    avx2_lod_decide4(p, l0, key, frac);
+    avx2_lod_decide4(p, l1, key + 4, frac + 4);
 }
 
 /* }==================================================================== */
@@ -1535,12 +1558,11 @@ AVX2_INLINE void v4_transpose4(V4 v[4])
 /* frag_bilerp_rgba8 of four fragments, lane k fragment k: texel words
 ** g[0..3] (c00, c10, c01, c11), weights a and b; each channel's bytes d
 ** as d / 255 (ctx->texel_unorm8's values), then the scalar code's IEEE
-** operations in its order, one channel of the four fragments at a time;
-** stored as out[k stride + channel] */
-AVX2_INLINE void v4_bilerp4(const __m128i g[4], V4 a, V4 b, FRAGV *out, size_t stride)
+** operations in its order, one channel of the four fragments at a time,
+** as lanes ch[0..3] (v4_bilerp4 stores them as out[k stride + channel]) */
+AVX2_INLINE void v4_bilerp4_channels(const __m128i g[4], V4 a, V4 b, V4 ch[4])
 {
     const V4 ia = V4_OP(sub)(V4_OP(set1)(1), a), ib = V4_OP(sub)(V4_OP(set1)(1), b);
-    V4 ch[4];
     for (int c = 0; c < 4; c++) {
         V4 v[4];
         for (int i = 0; i < 4; i++)
@@ -1549,52 +1571,92 @@ AVX2_INLINE void v4_bilerp4(const __m128i g[4], V4 a, V4 b, FRAGV *out, size_t s
         const V4 bot = V4_OP(add)(V4_OP(mul)(v[2], ia), V4_OP(mul)(v[3], a));
         ch[c] = V4_OP(add)(V4_OP(mul)(top, ib), V4_OP(mul)(bot, b));
     }
+}
+
+/* channels ch[0..3] of four fragments (lanes) stored as out[k stride + channel] */
+AVX2_INLINE void v4_store_channels4(V4 ch[4], FRAGV *out, size_t stride)
+{
     v4_transpose4(ch);      /* channels of four fragments to four fragments' channels */
     for (int k = 0; k < 4; k++)
         v4_store(out + (size_t)k * stride, ch[k]);
 }
 
+AVX2_INLINE void v4_bilerp4(const __m128i g[4], V4 a, V4 b, FRAGV *out, size_t stride)
+{
+    V4 ch[4];
+    v4_bilerp4_channels(g, a, b, ch);
+    v4_store_channels4(ch, out, stride);
+}
+
+/* the GL_LINEAR indices' weights a, b (fragments 4q..4q+3 in a[q], b[q])
+** and texel words g of the coordinates c[0..7] on a power-of-two level,
+** REPEAT or CLAMP_TO_EDGE on each axis: both fours' indices in one
+** register each, their words by avx2_texel_words8 (row loads where `rows`
+** asks and they apply, else gathers of the pairs where no pair wraps: the
+** words four gathers of four would give, in a fraction of their time); 0
+** (nothing read) where a coordinate is not finite */
+AVX2_INLINE int v4_linear_group8(const TexImage *li, const TexCoord *c, int repeat_s, int repeat_t, int rows,
+                                 V4 a[2], V4 b[2], __m256i g[4])
+{
+    const int w = li->width, h = li->height;
+    V4 sv[2], tv[2];
+    int finite = 1;
+    for (int q = 0; q < 2; q++) {
+        sv[q] = v4_coord4(&c[4 * q], 0);
+        tv[q] = v4_coord4(&c[4 * q], 1);
+        finite &= v4_finite(sv[q]) && v4_finite(tv[q]);
+    }
+    if (!finite)
+        return 0;
+    __m128i x0[2], x1[2], y0[2], y1[2];
+    for (int q = 0; q < 2; q++) {
+        v4_linear_axis(sv[q], w, repeat_s, &x0[q], &x1[q], &a[q]);
+        v4_linear_axis(tv[q], h, repeat_t, &y0[q], &y1[q], &b[q]);
+    }
+    avx2_texel_words8(li->texels, w, (int64_t)w * h, _mm256_set_m128i(x0[1], x0[0]), _mm256_set_m128i(x1[1], x1[0]),
+                      _mm256_set_m128i(y0[1], y0[0]), _mm256_set_m128i(y1[1], y1[0]), rows, g);
+    return 1;
+}
+
+/* the filtered channels (v4_bilerp4_channels) of half q of a group's
+** words g, weights a and b */
+AVX2_INLINE void v4_linear_half4(const __m256i g[4], int q, V4 a, V4 b, V4 ch[4])
+{
+    __m128i h[4];
+    for (int i = 0; i < 4; i++)
+        h[i] = q ? _mm256_extracti128_si256(g[i], 1) : _mm256_castsi256_si128(g[i]);
+    v4_bilerp4_channels(h, a, b, ch);
+}
+
 /* sample_level's GL_LINEAR of a power-of-two level for fragments 0..n-1
-** (n a multiple of 4), REPEAT or CLAMP_TO_EDGE on each axis: the indices
-** and weights of four fragments at a time in vector lanes, then their
-** texels filtered by v4_bilerp4. Eight at a time first: both fours'
-** indices in one register each, their texel words by avx2_texel_words8
-** (row loads where `rows` asks and they apply, else gathers of the pairs
-** where no pair wraps: the words four gathers of four would give, in a
-** fraction of their time); then four at a time by gathers. Stops before
-** the first four coordinates of which one is not finite (NaN and the
-** infinities take sample_level's tests); returns the number of fragments
-** done. */
+** (n a multiple of 4), REPEAT or CLAMP_TO_EDGE on each axis, filtered by
+** v4_bilerp4: two groups of eight at a time (v4_linear_group8), both
+** groups' words before either's filtering, so that the second group's
+** gathers do not wait behind the first's arithmetic (trilinear_fog's
+** double build about 6% faster); then a last group of eight, then four at
+** a time by gathers. Stops before the first four coordinates of which one
+** is not finite (NaN and the infinities take sample_level's tests);
+** returns the number of fragments done. */
 static inline int avx2_sample_linear_real(const TexImage *li, int n, const TexCoord *c, FRAGV *out, size_t stride,
                                           int repeat_s, int repeat_t, int rows)
 {
     const int w = li->width, h = li->height;
     const uint32_t *tx = li->texels;
     int j = 0;
-    for (; j + 8 <= n; j += 8) {
-        V4 sv[2], tv[2], a[2], b[2];
-        __m128i x0[2], x1[2], y0[2], y1[2];
-        int finite = 1;
-        for (int q = 0; q < 2; q++) {
-            sv[q] = v4_coord4(&c[j + 4 * q], 0);
-            tv[q] = v4_coord4(&c[j + 4 * q], 1);
-            finite &= v4_finite(sv[q]) && v4_finite(tv[q]);
-        }
-        if (!finite)
+    while (j + 8 <= n) {
+        const int groups = j + 16 <= n ? 2 : 1;
+        V4 a[2][2], b[2][2];
+        __m256i g[2][4];
+        if (!v4_linear_group8(li, c + j, repeat_s, repeat_t, rows, a[0], b[0], g[0])
+            || (groups == 2 && !v4_linear_group8(li, c + j + 8, repeat_s, repeat_t, rows, a[1], b[1], g[1])))
             break;      /* (the fours below stop at the first of them) */
-        for (int q = 0; q < 2; q++) {
-            v4_linear_axis(sv[q], w, repeat_s, &x0[q], &x1[q], &a[q]);
-            v4_linear_axis(tv[q], h, repeat_t, &y0[q], &y1[q], &b[q]);
-        }
-        __m256i g[4];
-        avx2_texel_words8(tx, w, (int64_t)w * h, _mm256_set_m128i(x0[1], x0[0]), _mm256_set_m128i(x1[1], x1[0]),
-                          _mm256_set_m128i(y0[1], y0[0]), _mm256_set_m128i(y1[1], y1[0]), rows, g);
-        const __m128i lo[4] = { _mm256_castsi256_si128(g[0]), _mm256_castsi256_si128(g[1]),
-                                _mm256_castsi256_si128(g[2]), _mm256_castsi256_si128(g[3]) };
-        const __m128i hi[4] = { _mm256_extracti128_si256(g[0], 1), _mm256_extracti128_si256(g[1], 1),
-                                _mm256_extracti128_si256(g[2], 1), _mm256_extracti128_si256(g[3], 1) };
-        v4_bilerp4(lo, a[0], b[0], out + (size_t)j * stride, stride);
-        v4_bilerp4(hi, a[1], b[1], out + (size_t)(j + 4) * stride, stride);
+        for (int k = 0; k < groups; k++)
+            for (int q = 0; q < 2; q++) {
+                V4 ch[4];
+                v4_linear_half4(g[k], q, a[k][q], b[k][q], ch);
+                v4_store_channels4(ch, out + (size_t)(j + 8 * k + 4 * q) * stride, stride);
+            }
+        j += 8 * groups;
     }
     for (; j < n; j += 4) {
         const V4 sv = v4_coord4(&c[j], 0), tv = v4_coord4(&c[j], 1);
@@ -1614,6 +1676,7 @@ static inline int avx2_sample_linear_real(const TexImage *li, int n, const TexCo
     }
     return n;
 }
+
 #endif
 
 #if SIMD_X86
@@ -2790,12 +2853,19 @@ AVX2_INLINE unsigned avx2_fog_write_texels8(const TexFogWrite *fw, int s0, int m
 {
     __m256i g[4], a, b;
     __m256 T[4];
-    avx2_linear_texels8(l1.tx, l1.log2w, l1.log2h, c, rs, rt, !two, g, &a, &b);
-    avx2_bilerp8_float(g, a, b, 0, T);
-    if (two) {
+    if (!two) {
+        avx2_linear_texels8(l1.tx, l1.log2w, l1.log2h, c, rs, rt, 1, g, &a, &b);
+        avx2_bilerp8_float(g, a, b, 0, T);
+    } else {
+        /* both levels' gathers before either's arithmetic, so that the
+        ** second level's do not wait behind the first's bilerp
+        ** (trilinear_fog about 5% faster; the same operations) */
         __m256 T2[4];
-        avx2_linear_texels8(l2.tx, l2.log2w, l2.log2h, c, rs, rt, 0, g, &a, &b);
-        avx2_bilerp8_float(g, a, b, 0, T2);
+        __m256i g2[4], a2, b2;
+        avx2_linear_texels8(l1.tx, l1.log2w, l1.log2h, c, rs, rt, 0, g, &a, &b);
+        avx2_linear_texels8(l2.tx, l2.log2w, l2.log2h, c, rs, rt, 0, g2, &a2, &b2);
+        avx2_bilerp8_float(g, a, b, 0, T);
+        avx2_bilerp8_float(g2, a2, b2, 0, T2);
         /* the fractions' integers are below 2^30: their low dwords */
         const __m256 f = _mm256_mul_ps(_mm256_cvtepi32_ps(avx2_low_dwords8(frac)), _mm256_set1_ps(0x1p-30f));
         for (int i = 0; i < 4; i++)

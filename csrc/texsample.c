@@ -531,7 +531,9 @@ AVX2_INLINE __m256d lod_log2_dd4(__m256d x)
 }
 
 /* lod_choose of fragments 0..3 in the double build (key[k], frac[k], frac 0
-** where not two). rho: the scalar double operations in lanes, as in
+** where not two), in three steps: rho (lod_rho4_d), lambda
+** (lod_lambda_ends4_d and lod_log2_dd4) and the decisions (lod_decide4_d).
+** rho: the scalar double operations in lanes, as in
 ** lod_choose4_f (s and t interleaved in two registers per array, then
 ** unpacked to one register per derivative). Lambda is lod_log2's
 ** (lod_log2_dd4, the same bits) wherever its value is used; it is not
@@ -543,8 +545,7 @@ AVX2_INLINE __m256d lod_log2_dd4(__m256d x)
 ** decision (lambda > c, min(ceil(lambda + 1/2) - 1, q) = q,
 ** floor(lambda) >= q) is the one q + 1 gives. The decisions are
 ** lod_choose4_f's in double lanes (floor(lambda) <= 1025, exact as int32). */
-AVX2_INLINE void lod_choose4_d(const LodParamsR *p, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
-                               int32_t key[4], FRAGV frac[4])
+AVX2_INLINE __m256d lod_rho4_d(const LodParamsR *p, const TexCoord *c, const TexCoord *dx, const TexCoord *dy)
 {
     const __m256d lim = _mm256_set1_pd(p->lim), nlim = _mm256_set1_pd(-p->lim);
     const __m256d sign = _mm256_set1_pd(-0.0), zero = _mm256_setzero_pd();
@@ -564,15 +565,22 @@ AVX2_INLINE void lod_choose4_d(const LodParamsR *p, const TexCoord *c, const Tex
     const __m256d d3 = _mm256_permute4x64_pd(_mm256_unpackhi_pd(d[0][0], d[0][1]), 0xD8);
     const __m256d d2 = _mm256_permute4x64_pd(_mm256_unpacklo_pd(d[1][0], d[1][1]), 0xD8);
     const __m256d d4 = _mm256_permute4x64_pd(_mm256_unpackhi_pd(d[1][0], d[1][1]), 0xD8);
-    const __m256d rho = _mm256_max_pd(d4, _mm256_max_pd(d3, _mm256_max_pd(d2, d1)));
+    return _mm256_max_pd(d4, _mm256_max_pd(d3, _mm256_max_pd(d2, d1)));
+}
 
+/* lambda of rho lanes outside the logarithm's range (above); *used: the
+** lanes whose lambda is the logarithm's, which the caller blends in */
+AVX2_INLINE __m256d lod_lambda_ends4_d(const LodParamsR *p, __m256d rho, __m256d *used)
+{
     const double top = (double)((int64_t)2 << p->q);     /* 2^(q+1); q <= 11 */
     const __m256d gt1 = _mm256_cmp_pd(rho, _mm256_set1_pd(1), _CMP_GT_OQ);
-    __m256d lam = _mm256_blendv_pd(_mm256_set1_pd(-1e30), _mm256_set1_pd(p->q + 1), gt1);
-    const __m256d used = _mm256_and_pd(gt1, _mm256_cmp_pd(rho, _mm256_set1_pd(top), _CMP_LT_OQ));
-    if (_mm256_movemask_pd(used))       /* (the lanes used are normal: 1 < rho < 2^12) */
-        lam = _mm256_blendv_pd(lam, lod_log2_dd4(rho), used);
+    *used = _mm256_and_pd(gt1, _mm256_cmp_pd(rho, _mm256_set1_pd(top), _CMP_LT_OQ));
+    return _mm256_blendv_pd(_mm256_set1_pd(-1e30), _mm256_set1_pd(p->q + 1), gt1);
+}
 
+/* the decisions (above) of lambda lanes lam */
+AVX2_INLINE void lod_decide4_d(const LodParamsR *p, __m256d lam, int32_t key[4], FRAGV frac[4])
+{
     const __m256d above = _mm256_cmp_pd(lam, _mm256_set1_pd(p->cshift), _CMP_GT_OQ);
     const __m256i pick = _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6);
     const __m128i above32 = _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(_mm256_castpd_si256(above), pick));
@@ -595,6 +603,34 @@ AVX2_INLINE void lod_choose4_d(const LodParamsR *p, const TexCoord *c, const Tex
     k = _mm_blendv_epi8(_mm_set1_epi32(p->kmag), k, above32);
     _mm_storeu_si128((__m128i *)(void *)key, k);
     _mm256_storeu_pd(frac, _mm256_and_pd(f, above));
+}
+
+AVX2_INLINE void lod_choose4_d(const LodParamsR *p, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
+                               int32_t key[4], FRAGV frac[4])
+{
+    const __m256d rho = lod_rho4_d(p, c, dx, dy);
+    __m256d used, lam = lod_lambda_ends4_d(p, rho, &used);
+    if (_mm256_movemask_pd(used))       /* (the lanes used are normal: 1 < rho < 2^12) */
+        lam = _mm256_blendv_pd(lam, lod_log2_dd4(rho), used);
+    lod_decide4_d(p, lam, key, frac);
+}
+
+/* lod_choose4_d of fragments 0..7, both fours' table gathers
+** (lod_log2_dd4's) issued together: the second does not wait behind the
+** first's arithmetic */
+AVX2_INLINE void lod_choose8_d(const LodParamsR *p, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
+                               int32_t key[8], FRAGV frac[8])
+{
+    const __m256d rho0 = lod_rho4_d(p, c, dx, dy), rho1 = lod_rho4_d(p, c + 4, dx + 4, dy + 4);
+    __m256d used0, used1;
+    __m256d lam0 = lod_lambda_ends4_d(p, rho0, &used0), lam1 = lod_lambda_ends4_d(p, rho1, &used1);
+    if (_mm256_movemask_pd(_mm256_or_pd(used0, used1))) {
+        const __m256d l0 = lod_log2_dd4(rho0), l1 = lod_log2_dd4(rho1);
+        lam0 = _mm256_blendv_pd(lam0, l0, used0);
+        lam1 = _mm256_blendv_pd(lam1, l1, used1);
+    }
+    lod_decide4_d(p, lam0, key, frac);
+    lod_decide4_d(p, lam1, key + 4, frac + 4);
 }
 #endif
 
@@ -702,6 +738,8 @@ static int lod_block(int simd, const Texture *t, int n, const TexCoord *c, const
         }
     }
 #endif
+    for (; j + 8 <= n; j += 8)
+        avx2_lod_choose8(&p, c + j, dx + j, dy + j, key + 1 + j, frac + j);
     for (; j + 4 <= n; j += 4)
         avx2_lod_choose4(&p, c + j, dx + j, dy + j, key + 1 + j, frac + j);
     if (j < n && n >= 4) {      /* the last four again: the same values where they overlap */
@@ -727,6 +765,8 @@ static int lod_block(int simd, const Texture *t, int n, const TexCoord *c, const
     if (j < n && n >= 4 && lod_choose4_f(&p, c + n - 4, dx + n - 4, dy + n - 4, key + 1 + n - 4, frac + n - 4))
         j = n;                  /* the last four again: the same values where they overlap */
 #else
+    for (; j + 8 <= n; j += 8)
+        lod_choose8_d(&p, c + j, dx + j, dy + j, key + 1 + j, frac + j);
     for (; j + 4 <= n; j += 4)
         lod_choose4_d(&p, c + j, dx + j, dy + j, key + 1 + j, frac + j);
     if (j < n && n >= 4) {
