@@ -1676,7 +1676,6 @@ static inline int avx2_sample_linear_real(const TexImage *li, int n, const TexCo
     }
     return n;
 }
-
 #endif
 
 #if SIMD_X86
