@@ -104,12 +104,6 @@ static inline __attribute__((always_inline)) void SPAN_FN(span_fused)(GlesContex
     uint32_t *dst = (uint32_t *)ctx->color + (size_t)y * (size_t)ctx->width + x0;
     uint32_t *zb = depth ? ctx->depth + (size_t)y * (size_t)ctx->width + x0 : NULL;
     const uint32_t zmax = ctx->depth_max;
-    int64_t e[3];
-    tri_edges_at(t, x0, y, e);
-#if NUM_IS_FIXED
-    if (smooth && SPAN_FN(span_smooth_stepped)(ctx, t, e, dst, zb, n, depth, blend))
-        return;
-#endif
     if (!smooth && !depth && !blend) {
         /* one word, 32 a step: four 32-byte stores to each turn of the
         ** loop, wherever the compiler places it (the compiler's loop of one
@@ -124,6 +118,12 @@ static inline __attribute__((always_inline)) void SPAN_FN(span_fused)(GlesContex
             dst[k] = word;
         return;
     }
+    int64_t e[3];
+    tri_edges_at(t, x0, y, e);
+#if NUM_IS_FIXED
+    if (smooth && SPAN_FN(span_smooth_stepped)(ctx, t, e, dst, zb, n, depth, blend))
+        return;
+#endif
     const Vertex *v0 = t->v[0], *v1 = t->v[1], *v2 = t->v[2];
     const FRAGV *c0 = t->col[0], *c1 = t->col[1], *c2 = t->col[2];
     /* a constant source: its blend term is the same for the whole span */
