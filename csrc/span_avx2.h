@@ -957,8 +957,12 @@ AVX2_INLINE void avx2_tangents_setup(const WgtTangent g[2], Avx2Tangents *c)
 ** asum| < 3 2^59), so floor(n_i 2^-k) for k >= 0 is vpsravd's of the low
 ** dword, and with kn = max(-k, 0) both of wgt_tangent's quotients are
 ** floor((m half + 2^(30 - kn)) / 2^(31 - kn)): |m half| < 2^61 (vpmuldq),
-** and the floor is a logical shift of it plus 2^62, less 2^(62 - 31 + kn). */
-AVX2_INLINE int avx2_tangents4(const Avx2Tangents *g, const __m256i l[3], __m256i den, __m256i out[2][3])
+** and the floor is a logical shift of it plus 2^62, less 2^(62 - 31 + kn).
+** Here its sums before the clamps: o[d][i - 1] = p_i + dp_i of step d (i =
+** 1, 2), and in *steps each lane's dp_i + 2^28 or-ed together (bits 29 and
+** up clear where every dp_i lies in [-2^28, 2^28)). */
+AVX2_INLINE int avx2_tangent_sums4(const Avx2Tangents *g, const __m256i l[3], __m256i den, __m256i o[2][2],
+                                   __m256i *steps)
 {
     const __m256i one = _mm256_set1_epi64x(1);
     const __m256i k = _mm256_sub_epi64(_mm256_srli_epi64(den, 32), g->ashift);
@@ -968,24 +972,93 @@ AVX2_INLINE int avx2_tangents4(const Avx2Tangents *g, const __m256i l[3], __m256
     const __m256i s = _mm256_add_epi64(_mm256_set1_epi64x(31), _mm256_and_si256(neg, k));      /* 31 - kn */
     const __m256i bias = _mm256_add_epi64(_mm256_set1_epi64x((int64_t)1 << 62), _mm256_sllv_epi64(one, _mm256_sub_epi64(s, one)));
     const __m256i unbias = _mm256_sllv_epi64(one, _mm256_sub_epi64(_mm256_set1_epi64x(62), s));
-    const __m256i lim = _mm256_set1_epi64x(((int64_t)1 << 31) - 1), nlim = _mm256_set1_epi64x(-(((int64_t)1 << 31) - 1));
     const __m256i bias29 = _mm256_set1_epi64x(((int64_t)1 << 62) + ((int64_t)1 << 29));
-    const __m256i pb[3] = { l[0], _mm256_sub_epi64(l[1], unbias), _mm256_sub_epi64(l[2], unbias) };
-    for (int d = 0; d < 2; d++) {
+    /* x + window = dp + 2^28 for the shifted quotient x = dp + unbias */
+    const __m256i window = _mm256_sub_epi64(_mm256_set1_epi64x((int64_t)1 << 28), unbias);
+    *steps = _mm256_setzero_si256();
+    for (int d = 0; d < 2; d++)
         for (int i = 1; i < 3; i++) {
             /* n = (a_i + 2^32) - ((p_i asum + 2^62 + 2^29) >> 30) */
             const __m256i n = _mm256_sub_epi64(g->a[d][i - 1],
                                                _mm256_srli_epi64(_mm256_add_epi64(_mm256_mul_epi32(l[i], g->asum[d]), bias29), 30));
             const __m256i m = _mm256_srav_epi32(n, kp);
             /* p_i + dp_i = (p_i - 2^(31 + kn)) + ((m half + 2^62 + 2^(30 - kn)) >> (31 - kn)) */
-            __m256i o = _mm256_add_epi64(pb[i], _mm256_srlv_epi64(_mm256_add_epi64(_mm256_mul_epi32(m, den), bias), s));
-            o = _mm256_blendv_epi8(o, lim, _mm256_cmpgt_epi64(o, lim));
-            out[d][i] = _mm256_blendv_epi8(o, nlim, _mm256_cmpgt_epi64(nlim, o));
+            const __m256i x = _mm256_srlv_epi64(_mm256_add_epi64(_mm256_mul_epi32(m, den), bias), s);
+            *steps = _mm256_or_si256(*steps, _mm256_add_epi64(x, window));
+            o[d][i - 1] = _mm256_add_epi64(_mm256_sub_epi64(l[i], unbias), x);
+        }
+    return 1;
+}
+
+/* the same sums clamped to +-(2^31 - 1), and o_0 = 2^30 - o_1 - o_2 clamped */
+AVX2_INLINE int avx2_tangents4(const Avx2Tangents *g, const __m256i l[3], __m256i den, __m256i out[2][3])
+{
+    __m256i o[2][2], steps;
+    if (!avx2_tangent_sums4(g, l, den, o, &steps))
+        return 0;
+    const __m256i lim = _mm256_set1_epi64x(((int64_t)1 << 31) - 1), nlim = _mm256_set1_epi64x(-(((int64_t)1 << 31) - 1));
+    for (int d = 0; d < 2; d++) {
+        for (int i = 1; i < 3; i++) {
+            const __m256i v = _mm256_blendv_epi8(o[d][i - 1], lim, _mm256_cmpgt_epi64(o[d][i - 1], lim));
+            out[d][i] = _mm256_blendv_epi8(v, nlim, _mm256_cmpgt_epi64(nlim, v));
         }
         __m256i o0 = _mm256_sub_epi64(_mm256_sub_epi64(_mm256_set1_epi64x(WGT_ONE), out[d][1]), out[d][2]);
         o0 = _mm256_blendv_epi8(o0, lim, _mm256_cmpgt_epi64(o0, lim));
         out[d][0] = _mm256_blendv_epi8(o0, nlim, _mm256_cmpgt_epi64(nlim, o0));
     }
+    return 1;
+}
+
+/* a unit's vertex coordinates for avx2_lod_coords4: s0 2^30 and the
+** differences s1 - s0, s2 - s0 (the same of t) in every lane; ok 0 where a
+** difference leaves the int32 range (what vpmuldq reads) */
+typedef struct Avx2CoordDeltas {
+    __m256i base[2], d[2][2];     /* [0]: s, [1]: t */
+    int ok;
+} Avx2CoordDeltas;
+
+AVX2_INLINE void avx2_coord_deltas_setup(const NUM sv[3], const NUM tv[3], Avx2CoordDeltas *c)
+{
+    c->ok = 1;
+    for (int a = 0; a < 2; a++) {
+        const NUM *v = a ? tv : sv;
+        c->base[a] = _mm256_set1_epi64x((int64_t)((uint64_t)(int64_t)v[0] << 30));
+        for (int i = 1; i < 3; i++) {
+            const int64_t d = (int64_t)v[i] - v[0];
+            c->ok &= d >= INT32_MIN && d <= INT32_MAX;
+            c->d[a][i - 1] = _mm256_set1_epi64x(d);
+        }
+    }
+}
+
+/* base + d1 w1 + d2 w2 rounded as avx2_texc_lerp3x4 rounds */
+AVX2_INLINE __m256i avx2_texc_delta_lerp(__m256i base, const __m256i d[2], __m256i w1, __m256i w2)
+{
+    return avx2_round_shift(_mm256_add_epi64(_mm256_add_epi64(base, _mm256_mul_epi32(d[0], w1)),
+                                             _mm256_mul_epi32(d[1], w2)), 14);
+}
+
+/* the coordinates of a unit (c: its Avx2CoordDeltas) at the weights l and
+** at the tangent weights along ea and along eb, as tc[0..3], tx[0..3] and
+** ty[0..3], where no clamp of avx2_tangents4 acts: each tangent's step
+** dp_i = o_i - p_i (i = 1, 2) in [-2^28, 2^28), so that with p_i in [0,
+** 2^30 + 1] and p_0 = 2^30 - p_1 - p_2 every o_i, and o_0 = 2^30 - o_1 -
+** o_2, lies well within +-(2^31 - 1). Then s0 o0 + s1 o1 + s2 o2 = s0 2^30
+** + (s1 - s0) o1 + (s2 - s0) o2 as integers (mod 2^64, where the three
+** products' sum wraps): one product fewer per coordinate and no clamps,
+** the same bits. 0 (nothing written) elsewhere, for avx2_tangents4. */
+AVX2_INLINE int avx2_lod_coords4(const Avx2Tangents *g, const Avx2CoordDeltas *c, const __m256i l[3], __m256i den,
+                                 TexCoord *tc, TexCoord *tx, TexCoord *ty)
+{
+    __m256i o[2][2], steps;
+    if (!avx2_tangent_sums4(g, l, den, o, &steps)
+        || !_mm256_testz_si256(steps, _mm256_set1_epi64x(~(((int64_t)1 << 29) - 1))))
+        return 0;
+    avx2_store_st4(avx2_texc_delta_lerp(c->base[0], c->d[0], l[1], l[2]),
+                   avx2_texc_delta_lerp(c->base[1], c->d[1], l[1], l[2]), tc);
+    for (int d = 0; d < 2; d++)
+        avx2_store_st4(avx2_texc_delta_lerp(c->base[0], c->d[0], o[d][0], o[d][1]),
+                       avx2_texc_delta_lerp(c->base[1], c->d[1], o[d][0], o[d][1]), d ? ty : tx);
     return 1;
 }
 

@@ -462,11 +462,17 @@ static void STAGE(stage_persp_lod)(GlesContext *ctx, const TriSetup *t, SpanBuf 
 #if NUM_IS_FIXED
     Avx2Tangents g;
     avx2_tangents_setup(tan, &g);
+    Avx2CoordDeltas cd;
+    avx2_coord_deltas_setup(sv, tv, &cd);
     for (int i = simd_from; i + 4 <= j; i += 4) {
         __m256i o[2][3];
         if (_mm256_testz_si256(dens[i / 4], dens[i / 4]))
             continue;   /* the scalar code's group (above) */
         const __m256i *const l = lanes[i / 4];      /* (the first loop's weights) */
+        if (done == i && cd.ok && avx2_lod_coords4(&g, &cd, l, dens[i / 4], &tc[i], &tx[i], &ty[i])) {
+            done += 4;
+            continue;
+        }
         if (!avx2_tangents4(&g, l, dens[i / 4], o)) {
             for (int k = i; k < i + 4; k++)
                 STAGE(persp_lod1)(t, b, k);

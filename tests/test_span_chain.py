@@ -1243,11 +1243,12 @@ def test_forced_path_is_generic_and_the_other_is_named():
 # the level of detail's tangents under extreme perspective
 
 
-def _extreme_perspective_slivers(numeric: str, flags: int, seed: int) -> np.ndarray:
+def _extreme_perspective_slivers(numeric: str, flags: int, seed: int, tc_range: float = 4.0) -> np.ndarray:
     """Thin mipmapped triangles whose vertices' w differ by up to 2^20 (clip
     coordinates sent as they are): the weights' tangents there are large
-    and their terms cancel near the far vertices. `flags` for ctx.debug (1:
-    the per-fragment reference, 32: the AVX2 instance)."""
+    and their terms cancel near the far vertices. Texture coordinates in
+    +-tc_range. `flags` for ctx.debug (1: the per-fragment reference, 32:
+    the AVX2 instance)."""
     rng = np.random.default_rng(seed)
     w, h = 48, 16
     ctx = make_ctx(numeric, w, h)
@@ -1275,7 +1276,7 @@ def _extreme_perspective_slivers(numeric: str, flags: int, seed: int) -> np.ndar
         ws[rng.integers(0, 3)] = 1.0
         for x_w, y_w, wv in zip(xs, ys, ws):
             verts.append([(2 * x_w / w - 1) * wv, (2 * y_w / h - 1) * wv, 0.0, wv])
-        tcs += rng.uniform(-4, 4, (3, 2)).tolist()
+        tcs += rng.uniform(-tc_range, tc_range, (3, 2)).tolist()
     gl.glEnableClientState(C.GL_VERTEX_ARRAY)
     gl.glVertexPointer(4, C.GL_FLOAT, 0, np.ascontiguousarray(verts, dtype=np.float32))
     gl.glEnableClientState(C.GL_TEXTURE_COORD_ARRAY)
@@ -1298,6 +1299,19 @@ def test_lod_tangents_of_extreme_perspective_match_generic(numeric):
         if has_avx512(numeric):
             np.testing.assert_array_equal(_extreme_perspective_slivers(numeric, 32, seed), ref,
                                           err_msg=f"AVX2, seed {seed}")
+
+
+@pytest.mark.parametrize("numeric", BUILDS)
+def test_lod_coordinates_far_apart_match_generic(numeric):
+    """Texture coordinates up to +-30000 apart on one triangle (in the fixed
+    build, differences past the int32 range of 16.16, which the stage's
+    shorter form of the coordinates at the tangents does not take) equal the
+    per-fragment reference's bit for bit."""
+    for seed in range(2):
+        chain = _extreme_perspective_slivers(numeric, 0, seed, 30000.0)
+        assert (chain != chain[0, 0]).any(), "nothing drawn"
+        np.testing.assert_array_equal(chain, _extreme_perspective_slivers(numeric, 1, seed, 30000.0),
+                                      err_msg=f"seed {seed}")
 
 
 # {================================================================
