@@ -634,19 +634,21 @@ AVX2_INLINE void lod_choose8_d(const LodParamsR *p, const TexCoord *c, const Tex
 }
 #endif
 
-/* lod_block's widest mix of a run's two levels in this build: its group
-** and the instance it needs (the fixed build's sixteen and the double
-** build's eight in AVX-512, the float build's eight in AVX2) */
+/* lod_block's widest mix of a run's two levels in this build and
+** instance (simd): its group and the least instance it needs (the fixed
+** build's sixteen in AVX-512, the float build's eight in AVX2, the double
+** build's eight in AVX-512 or else AVX2) */
 #if SIMD_AVX512_FX
-#define LOD_MIX fx512_sample_linear_mix
+#define LOD_MIX(simd, ...) fx512_sample_linear_mix(__VA_ARGS__)
 #define LOD_MIX_GROUP 16
 #define LOD_MIX_SIMD SIMD_AVX512
 #elif SIMD_AVX512_INSTANCE
-#define LOD_MIX avx512_sample_linear_mix_real
+#define LOD_MIX(simd, ...)                                                                                        \
+    ((simd) >= SIMD_AVX512 ? avx512_sample_linear_mix_real(__VA_ARGS__) : avx2_sample_linear_mix_real(__VA_ARGS__))
 #define LOD_MIX_GROUP 8
-#define LOD_MIX_SIMD SIMD_AVX512
+#define LOD_MIX_SIMD SIMD_AVX2
 #elif defined(GLES_NUM_FLOAT)
-#define LOD_MIX f8_sample_linear_mix
+#define LOD_MIX(simd, ...) f8_sample_linear_mix(__VA_ARGS__)
 #define LOD_MIX_GROUP 8
 #define LOD_MIX_SIMD SIMD_AVX2
 #else
@@ -817,10 +819,10 @@ static int lod_block(int simd, const Texture *t, int n, const TexCoord *c, const
             ** where they overlap), the rest as below */
             const TexImage *l1 = &t->level[level], *l2 = &t->level[level + 1];
             const int len = e - j, g = LOD_MIX_GROUP;
-            mixed = LOD_MIX(l1, l2, len, c + j, frac + j, out + (size_t)j * stride, stride, ws == GL_REPEAT,
+            mixed = LOD_MIX(simd, l1, l2, len, c + j, frac + j, out + (size_t)j * stride, stride, ws == GL_REPEAT,
                             wt == GL_REPEAT);
             if (mixed && mixed == (len & ~(g - 1)) && mixed < len
-                && LOD_MIX(l1, l2, g, c + e - g, frac + e - g, out + (size_t)(e - g) * stride, stride,
+                && LOD_MIX(simd, l1, l2, g, c + e - g, frac + e - g, out + (size_t)(e - g) * stride, stride,
                            ws == GL_REPEAT, wt == GL_REPEAT) == g)
                 mixed = len;
         }

@@ -278,7 +278,7 @@ def test_long_runs_of_one_level_pair_match_scalar(size, wrap, numeric):
     """Runs of up to 64 fragments with one footprint (so one level pair and
     one mix fraction) and scattered coordinates, near the edges too: the
     trilinear mix's groups (the fixed build's eight in AVX2 and sixteen in
-    AVX-512, the double build's eight in AVX-512) give the baseline's
+    AVX-512, the double build's eight in AVX2 and AVX-512) give the baseline's
     texels at full precision (0.30 in the fixed build), where a rounding
     off by one unit shows."""
     ctx, rng = _trilinear_ctx(numeric, size, wrap, size[0] * 7 + size[1] + 100 * WRAPS.index(wrap))
