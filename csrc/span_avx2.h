@@ -2729,28 +2729,16 @@ AVX2_INLINE int avx2_texels_ct8(const FRAGV *ct, size_t stride, int half_rgb, __
     return _mm256_movemask_ps(in) == 0xFF;
 }
 
-/* sample_level's GL_LINEAR texel of the double build at the coordinates
-** tc[0..7] on level 0 of tx, in float lanes: the texel indices and the
-** weights a and b (and 1 - a, 1 - b) in v4_linear_axis's double lanes, as
-** the exact sampler has them, each weight then rounded to float once; the
-** bilinear sum of the texels' bytes (exact integers) h0 = c00 (1 - a) +
-** c10 a, h1 = c01 (1 - a) + c11 a, then h0 (1 - b) / 255 + h1 b / 255
-** with the factors' (1 - b) / 255 and b / 255 rounded: within 8.1u of the
-** exact sampler's texel (docs/architecture.md); with half_rgb T[0..2] less
-** 1/2 in float (DOT3's operand). 0 when a coordinate is not finite. */
-AVX2_INLINE int avx2_texels_sampled8(const ModWriteTexture *tx, const TexCoord *tc, int half_rgb, __m256 T[4])
+/* the bilinear texels of v4_linear_lanes8's words g and weights a, b (the
+** exact sampler's, in double lanes) as floats T[0..3]: each of a, 1 - a,
+** b and 1 - b rounded to float once; the bilinear sum of the texels' bytes
+** (exact integers) h0 = c00 (1 - a) + c10 a, h1 = c01 (1 - a) + c11 a,
+** then h0 (1 - b) / 255 + h1 b / 255 with the factors' (1 - b) / 255 and
+** b / 255 rounded: within 8.1u of the exact sampler's texel
+** (docs/architecture.md); with half_rgb T[0..2] less 1/2 in float (DOT3's
+** operand) */
+AVX2_INLINE void v4_bilerp8_float(const __m256i g[4], const V4 a[2], const V4 b[2], int half_rgb, __m256 T[4])
 {
-    /* (each half tested before the next half's loads: as v4_coords8, the
-    ** kernel took 0.7% more instructions on combine_dot3, measured) */
-    V4 s[2], t[2], a[2], b[2];
-    for (int q = 0; q < 2; q++) {
-        s[q] = v4_coord4(&tc[4 * q], 0);
-        t[q] = v4_coord4(&tc[4 * q], 1);
-        if (!(v4_finite(s[q]) && v4_finite(t[q])))
-            return 0;
-    }
-    __m256i g[4];
-    v4_linear_lanes8(tx->texels, tx->w, tx->h, s, t, tx->repeat_s, tx->repeat_t, 1, a, b, g);
     const V4 one = V4_OP(set1)(1);
 #define TEXELS_F8(v) _mm256_set_m128(_mm256_cvtpd_ps((v)[1]), _mm256_cvtpd_ps((v)[0]))
     const V4 ia[2] = { V4_OP(sub)(one, a[0]), V4_OP(sub)(one, a[1]) };
@@ -2765,6 +2753,26 @@ AVX2_INLINE int avx2_texels_sampled8(const ModWriteTexture *tx, const TexCoord *
         if (half_rgb && i < 3)
             T[i] = _mm256_sub_ps(T[i], _mm256_set1_ps(0.5f));
     }
+}
+
+/* sample_level's GL_LINEAR texel of the double build at the coordinates
+** tc[0..7] on level 0 of tx, in float lanes (v4_bilerp8_float, the texel
+** indices and weights in v4_linear_axis's double lanes, as the exact
+** sampler has them); 0 when a coordinate is not finite */
+AVX2_INLINE int avx2_texels_sampled8(const ModWriteTexture *tx, const TexCoord *tc, int half_rgb, __m256 T[4])
+{
+    /* (each half tested before the next half's loads: as v4_coords8, the
+    ** kernel took 0.7% more instructions on combine_dot3, measured) */
+    V4 s[2], t[2], a[2], b[2];
+    for (int q = 0; q < 2; q++) {
+        s[q] = v4_coord4(&tc[4 * q], 0);
+        t[q] = v4_coord4(&tc[4 * q], 1);
+        if (!(v4_finite(s[q]) && v4_finite(t[q])))
+            return 0;
+    }
+    __m256i g[4];
+    v4_linear_lanes8(tx->texels, tx->w, tx->h, s, t, tx->repeat_s, tx->repeat_t, 1, a, b, g);
+    v4_bilerp8_float(g, a, b, half_rgb, T);
     return 1;
 }
 #endif
@@ -2928,7 +2936,7 @@ AVX2_INLINE unsigned avx2_modwrite565_8(const Avx2ModWrite *m, int smooth, int k
     return (unsigned)_mm256_movemask_ps(bad);
 }
 
-#if NUM_IS_FIXED
+#if NUM_IS_FIXED || defined(GLES_NUM_DOUBLE)
 /* {====================================================================
 ** The fog and RGBA8888 write of a lone REPLACE unit's GL_LINEAR texels
 ** (one level, or two mixed by the level of detail's fraction) for eight
@@ -2939,8 +2947,11 @@ AVX2_INLINE unsigned avx2_modwrite565_8(const Avx2ModWrite *m, int smooth, int k
 ** magnitudes summing to at most 1 + 2^-7, the vertices' factors at most 2
 ** in magnitude), the fogged channel within 19.2u, so 255 v + 1/2 within
 ** 5030u of the exact value, under the margin 2^-11 = 8192u; RGB565's
-** steps 1250u (docs/architecture.md). */
+** steps 1250u (docs/architecture.md). The double build's texels come from
+** the exact sampler's double indices and weights (v4_bilerp8_float, 8.1u),
+** its fog factors rounded to float once: 255 v + 1/2 within 6610u. */
 
+#if NUM_IS_FIXED
 /* the low dwords of eight int64 at q, in order */
 AVX2_INLINE __m256i avx2_low_dwords8(const int64_t *q)
 {
@@ -2949,6 +2960,7 @@ AVX2_INLINE __m256i avx2_low_dwords8(const int64_t *q)
     /* q0 q1 q4 q5 | q2 q3 q6 q7 */
     return _mm256_permute4x64_epi64(_mm256_castps_si256(_mm256_shuffle_ps(lo, hi, _MM_SHUFFLE(2, 0, 2, 0))), 0xD8);
 }
+#endif
 
 /* a level's texel words and log2 sizes, as the kernels read them */
 typedef struct Avx2Level {
@@ -2972,8 +2984,9 @@ AVX2_INLINE unsigned avx2_fog_write_texels8(const TexFogWrite *fw, int s0, int m
                                             int two, const TexCoord *c, const WGT (*p)[3], const uint8_t *k,
                                             const FRAGV *frac, int rs, int rt)
 {
-    __m256i g[4], a, b;
     __m256 T[4];
+#if NUM_IS_FIXED
+    __m256i g[4], a, b;
     if (!two) {
         avx2_linear_texels8(l1.tx, l1.log2w, l1.log2h, c, rs, rt, 1, g, &a, &b);
         avx2_bilerp8_float(g, a, b, 0, T);
@@ -2992,6 +3005,29 @@ AVX2_INLINE unsigned avx2_fog_write_texels8(const TexFogWrite *fw, int s0, int m
         for (int i = 0; i < 4; i++)
             T[i] = _mm256_fmadd_ps(f, _mm256_sub_ps(T2[i], T[i]), T[i]);
     }
+#else
+    /* the coordinates once for both levels, both levels' words before
+    ** either's arithmetic (as above); a coordinate not finite leaves the
+    ** group to the exact code */
+    V4 s[2], t[2], a[2], b[2];
+    __m256i g[4];
+    if (!v4_coords8(c, s, t))
+        return 0;
+    v4_linear_lanes8(l1.tx, 1 << l1.log2w, 1 << l1.log2h, s, t, rs, rt, !two, a, b, g);
+    if (!two) {
+        v4_bilerp8_float(g, a, b, 0, T);
+    } else {
+        V4 a2[2], b2[2];
+        __m256i g2[4];
+        __m256 T2[4];
+        v4_linear_lanes8(l2.tx, 1 << l2.log2w, 1 << l2.log2h, s, t, rs, rt, 0, a2, b2, g2);
+        v4_bilerp8_float(g, a, b, 0, T);
+        v4_bilerp8_float(g2, a2, b2, 0, T2);
+        const __m256 f = _mm256_set_m128(_mm256_cvtpd_ps(_mm256_loadu_pd(frac + 4)), _mm256_cvtpd_ps(_mm256_loadu_pd(frac)));
+        for (int i = 0; i < 4; i++)
+            T[i] = _mm256_fmadd_ps(f, _mm256_sub_ps(T2[i], T[i]), T[i]);
+    }
+#endif
     __m256 w0, w1, w2, bad;
     avx2_wgt_float8_near(p, &w0, &w1, &w2, &bad);
     __m256 fog = _mm256_fmadd_ps(w0, _mm256_set1_ps(fw->a[0]),

@@ -742,10 +742,11 @@ static int compose(GlesContext *ctx, SpanStage *s, int rect)
     const int fog_write_565 = fog_then_write && plain565 && cs->fog_write_565;
     /* ... with the sampling of a lone REPLACE unit of an RGBA texture with
     ** a level of detail before them, where the CPU has AVX2 but not
-    ** AVX-512 (the AVX-512 instance keeps its own kernels there) */
-    if (direct && (fog_write || fog_write_565) && cs->sample_fog_write_rgba8
+    ** AVX-512 (the AVX-512 instance keeps its own kernels there): in the
+    ** double build too, which has no fog-and-write stage of its own */
+    if (direct && fog_then_write && (plain || plain565) && cs->sample_fog_write_rgba8
         && texture_needs_lod(ctx->units[lone].bound) && ctx_simd(ctx) < SIMD_AVX512) {
-        s[n++] = fog_write ? cs->sample_fog_write_rgba8 : cs->sample_fog_write_565;
+        s[n++] = plain ? cs->sample_fog_write_rgba8 : cs->sample_fog_write_565;
         return n;
     }
     if (direct) {

@@ -1398,7 +1398,7 @@ static void STAGE(stage_write_rgba8)(GlesContext *ctx, const TriSetup *t, SpanBu
     STAGE(write_rgba8)(ctx, b, 0);
 }
 
-#if CHAIN_SIMD && NUM_IS_FIXED
+#if CHAIN_SIMD && (NUM_IS_FIXED || defined(GLES_NUM_DOUBLE))
 /* a fused fog-and-write stage's inputs: the triangle's per-vertex fog
 ** factors a and the fog colour fc; 1 where the fused pass takes them
 ** (stage_fog's lanes take the triangle) */
@@ -1424,7 +1424,9 @@ static inline void STAGE(fog_write1)(SpanBuf *b, int j, const NUM a[3], const FR
         *at = v4_rgba8(v4_load(b->c[j]), *at, 0);
     }
 }
+#endif
 
+#if CHAIN_SIMD && NUM_IS_FIXED
 /* stage_fog_write_rgba8's or (rgb565) stage_fog_write_565's pass over the
 ** slots whose bit in done (NULL: none) is clear: eight lanes at a time
 ** where AVX-512 runs (fx512_fog_write_rgba8, fx512_fog_write_565), four
@@ -1668,6 +1670,29 @@ static void STAGE(stage_fog_write_565)(GlesContext *ctx, const TriSetup *t, Span
     }
     STAGE(fog_write_rest)(ctx, b, a, fc, NULL, 1);
 }
+#endif
+
+#if CHAIN_SIMD && (NUM_IS_FIXED || defined(GLES_NUM_DOUBLE))
+#if !NUM_IS_FIXED
+/* the exact fog and write (STAGE(fog_write1)) of the slots whose bit in
+** done is clear: the double build's pass after its float lanes (the fixed
+** build's is STAGE(fog_write_rest)) */
+static void STAGE(fog_write_undone)(GlesContext *ctx, SpanBuf *b, const NUM a[3], const FRAGV fc[3],
+                                    const uint64_t *done, int rgb565)
+{
+    void *dst = chunk_color(ctx, b, rgb565);
+    FRAGV t_row[4] = { 0 };
+    if (rgb565)
+        dither_row(b, ctx->dither, t_row);
+    for (int base = 0; base < b->n; base += 64) {
+        uint64_t todo = ~done[base >> 6];
+        if (b->n - base < 64)
+            todo &= ((uint64_t)1 << (b->n - base)) - 1;
+        for (; todo; todo &= todo - 1)
+            STAGE(fog_write1)(b, base + __builtin_ctzll(todo), a, fc, dst, rgb565, ctx->dither, t_row);
+    }
+}
+#endif
 
 /* a lone REPLACE unit of an RGBA texture with a level of detail (its
 ** sampler lod_block's), the fog and the RGBA8888 or (rgb565) RGB565 write
@@ -1694,25 +1719,38 @@ static inline void STAGE(sample_fog_write)(GlesContext *ctx, const TriSetup *t, 
         FRAGV t_row[4] = { 0 };
         if (rgb565)
             dither_row(b, ctx->dither, t_row);
+        /* the kernel's float values: the fixed build's 16.16 factors
+        ** against its 0.30 weights (2^-46) and 0.30 colours (2^-30) */
+#if NUM_IS_FIXED
+        const double num_scale = 0x1p-46, frag_scale = 0x1p-30;
+#else
+        const double num_scale = 1, frag_scale = 1;
+#endif
         for (int i = 0; i < 4; i++)
-            fw.t_row[i] = ctx->dither ? (float)((double)t_row[i] * 0x1p-30) : 0.0f;
+            fw.t_row[i] = ctx->dither ? (float)((double)t_row[i] * frag_scale) : 0.0f;
         for (int i = 0; i < 3; i++) {
-            fw.a[i] = (float)((double)a[i] * 0x1p-46);
-            fw.fc[i] = (float)((double)fc[i] * 0x1p-30);
+            fw.a[i] = (float)((double)a[i] * num_scale);
+            fw.fc[i] = (float)((double)fc[i] * frag_scale);
         }
         if (texture_span_fog_write(ctx->units[u].bound, b->n, b->tc, b->tx, b->ty, b->c[0], 4, ctx->texel_unorm8,
                                    &fw)) {
+#if NUM_IS_FIXED
             STAGE(fog_write_rest)(ctx, b, a, fc, done, rgb565);
+#else
+            STAGE(fog_write_undone)(ctx, b, a, fc, done, rgb565);
+#endif
             return;
         }
     }
     STAGE(chunk_sample)(ctx, b, u, 1);
+#if NUM_IS_FIXED
     if (lanes) {
         STAGE(fog_write_rest)(ctx, b, a, fc, NULL, rgb565);
-    } else {
-        STAGE(stage_fog)(ctx, t, b);
-        (rgb565 ? STAGE(stage_write_565) : STAGE(stage_write_rgba8))(ctx, t, b);
+        return;
     }
+#endif
+    STAGE(stage_fog)(ctx, t, b);
+    (rgb565 ? STAGE(stage_write_565) : STAGE(stage_write_rgba8))(ctx, t, b);
 }
 
 static void STAGE(stage_sample_fog_write_rgba8)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
@@ -2116,6 +2154,8 @@ static const ChainStages STAGE(chain_stages) = {
 #if CHAIN_SIMD && NUM_IS_FIXED
     .fog_write_rgba8 = STAGE(stage_fog_write_rgba8),
     .fog_write_565 = STAGE(stage_fog_write_565),
+#endif
+#if CHAIN_SIMD && (NUM_IS_FIXED || defined(GLES_NUM_DOUBLE))
     .sample_fog_write_rgba8 = STAGE(stage_sample_fog_write_rgba8),
     .sample_fog_write_565 = STAGE(stage_sample_fog_write_565),
 #endif

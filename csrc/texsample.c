@@ -655,7 +655,7 @@ AVX2_INLINE void lod_choose8_d(const LodParamsR *p, const TexCoord *c, const Tex
 #define LOD_MIX_GROUP 0
 #endif
 
-#if NUM_IS_FIXED
+#if NUM_IS_FIXED || defined(GLES_NUM_DOUBLE)
 /* a run [j, e) of fragments with one GL_LINEAR level, or (two) that level
 ** and the next mixed by frac, through the fog and write of fw
 ** (avx2_fog_write_texels8) eight at a time, the last group padded with
@@ -800,7 +800,7 @@ static int lod_block(int simd, const Texture *t, int n, const TexCoord *c, const
         const int level = kj & 0xFF, two = (kj & LOD_KEY_TWO) != 0;
         const unsigned int filter = kj & LOD_KEY_LINEAR ? GL_LINEAR : GL_NEAREST;
         const int m4 = filter == GL_LINEAR ? (e - j) & ~3 : 0;
-#if NUM_IS_FIXED
+#if NUM_IS_FIXED || defined(GLES_NUM_DOUBLE)
         if (fw && filter == GL_LINEAR) {
             /* fogged and written where proved (else the exact texel) */
             lod_fog_run(t, level, two, j, e, c, frac, out, stride, unorm, ws, wt, fw, s0);
@@ -974,7 +974,7 @@ int texture_span_sample_group(const Texture *t, int simd)
 
 
 
-#if SIMD_X86 && NUM_IS_FIXED
+#if SIMD_X86 && (NUM_IS_FIXED || defined(GLES_NUM_DOUBLE))
 #pragma GCC push_options
 SIMD_TARGET_AVX2
 static int span_fog_write_avx2(const Texture *t, int n, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
@@ -988,7 +988,7 @@ static int span_fog_write_avx2(const Texture *t, int n, const TexCoord *c, const
 int texture_span_fog_write(const Texture *t, int n, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,
                            FRAGV *out, size_t stride, const FRAGV *unorm, const TexFogWrite *fw)
 {
-#if SIMD_X86 && NUM_IS_FIXED
+#if SIMD_X86 && (NUM_IS_FIXED || defined(GLES_NUM_DOUBLE))
     /* lod_block's samplers (texture_span_sampler's with a level of detail) */
     if (texture_needs_lod(t) && t->max_aniso <= 1.0)
         return span_fog_write_avx2(t, n, c, dx, dy, out, stride, unorm, fw);

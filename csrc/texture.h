@@ -50,19 +50,19 @@ int texture_needs_lod(const Texture *tex);
 ** chunk's fragment j) has the weights p[j] and the pixel k[j] of dst, an
 ** RGBA8888 word or (rgb565) an RGB565 one dithered by t_row[(x0 + k[j]) & 3] */
 typedef struct TexFogWrite {
-    float a[3];             /* the vertices' fog factors (16.16, |a| <= 2) times 2^-46 */
-    float fc[3];            /* the fog colour's channels (0.30, in [0, 1]) times 2^-30 */
+    float a[3];             /* the vertices' fog factors (|a| <= 2; the fixed build's 16.16 times 2^-46) */
+    float fc[3];            /* the fog colour's channels (in [0, 1]; the fixed build's 0.30 times 2^-30) */
     const WGT (*p)[3];
     void *dst;
     const uint8_t *k;
     int rgb565, dither, x0;
-    float t_row[4];         /* the dither thresholds (0.30) times 2^-30 */
+    float t_row[4];         /* the dither thresholds (the fixed build's 0.30 times 2^-30) */
     uint64_t *done;         /* bit j (word j / 64) set where slot j's pixel was written */
 } TexFogWrite;
 /* texture_span_sampler's texels of a lone REPLACE unit (its texture has a
 ** level of detail), then the fog with the factor from the weights and the
-** write, each pixel proved equal to the exact stages' (the fixed build's
-** AVX2 kernel); a fragment left unproved gets its texel at out + j stride,
+** write, each pixel proved equal to the exact stages' (the fixed and
+** double builds' AVX2 kernel); a fragment left unproved gets its texel at out + j stride,
 ** its bit in fw->done clear, for the exact stages. 0 (nothing done) where
 ** the kernel does not apply */
 int texture_span_fog_write(const Texture *tex, int n, const TexCoord *c, const TexCoord *dx, const TexCoord *dy,

@@ -1439,10 +1439,10 @@ def _mipmapped_plane(numeric: str, flags: int, case: str) -> np.ndarray:
     return ctx.color_buffer()
 
 
-def _fogged_texels(seed: int, flags: int) -> np.ndarray:
+def _fogged_texels(seed: int, flags: int, numeric: str = "fixed") -> np.ndarray:
     """A perspective plane of a lone REPLACE unit under fog, the state where
-    the fixed build's AVX2 instance fogs and writes the texels in float
-    lanes and proves each byte (the rest by the exact stages): random
+    the fixed and double builds' AVX2 instances fog and write the texels in
+    float lanes and prove each byte (the rest by the exact stages): random
     texels, smooth ramps among them (channels near a byte's rounding point
     over many fragments), every filter pair with GL_LINEAR in it, REPEAT or
     CLAMP_TO_EDGE, a random fog colour, and fog ranges whose vertex factors
@@ -1451,7 +1451,7 @@ def _fogged_texels(seed: int, flags: int) -> np.ndarray:
     below 12."""
     rng = np.random.default_rng(1000 + seed)
     w, h = 256, 144
-    ctx = make_ctx("fixed", w, h, depth=24, color="rgb565" if seed >= 8 else "rgba8888")
+    ctx = make_ctx(numeric, w, h, depth=24, color="rgb565" if seed >= 8 else "rgba8888")
     gl = ctx.gl
     ctx.debug(flags)
     if seed >= 12:
@@ -1500,16 +1500,19 @@ def _fogged_texels(seed: int, flags: int) -> np.ndarray:
     return ctx.color_buffer()
 
 
+@pytest.mark.parametrize("numeric", ["fixed", "double"])
 @pytest.mark.parametrize("seed", range(16))
-def test_fogged_texels_in_float_lanes_match_generic(seed):
-    """The fixed build's fog and write of a REPLACE unit's texels in float
-    lanes (each byte proved, else the exact stages) draws the per-fragment
-    reference's bits, and so do the AVX2 and baseline instances."""
-    ref = _fogged_texels(seed, 1)
+def test_fogged_texels_in_float_lanes_match_generic(seed, numeric):
+    """The fog and write of a REPLACE unit's texels in float lanes (each
+    byte proved, else the exact stages) draws the per-fragment reference's
+    bits, and so do the AVX2 and baseline instances, in the fixed build and
+    in the double build (whose texels' indices and weights are its exact
+    sampler's double values)."""
+    ref = _fogged_texels(seed, 1, numeric)
     covered = ref != ref[0, 0] if ref.ndim == 2 else (ref != ref[0, 0]).any(axis=-1)
     assert covered.mean() > 0.5, "the plane covers little"
     for name, flags in (("chain", 0), ("avx2", 32), ("baseline", 16)):
-        np.testing.assert_array_equal(_fogged_texels(seed, flags), ref, err_msg=f"{name}, seed {seed}")
+        np.testing.assert_array_equal(_fogged_texels(seed, flags, numeric), ref, err_msg=f"{name}, {seed}")
 
 
 @pytest.mark.parametrize("numeric", BUILDS)
