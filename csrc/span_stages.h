@@ -1746,11 +1746,12 @@ static inline void STAGE(sample_fog_write)(GlesContext *ctx, const TriSetup *t, 
 #if NUM_IS_FIXED
     if (lanes) {
         STAGE(fog_write_rest)(ctx, b, a, fc, NULL, rgb565);
-        return;
-    }
+    } else
 #endif
-    STAGE(stage_fog)(ctx, t, b);
-    (rgb565 ? STAGE(stage_write_565) : STAGE(stage_write_rgba8))(ctx, t, b);
+    {
+        STAGE(stage_fog)(ctx, t, b);
+        (rgb565 ? STAGE(stage_write_565) : STAGE(stage_write_rgba8))(ctx, t, b);
+    }
 }
 
 static void STAGE(stage_sample_fog_write_rgba8)(GlesContext *ctx, const TriSetup *t, SpanBuf *b)
