@@ -3023,7 +3023,8 @@ AVX2_INLINE unsigned avx2_fog_write_texels8(const TexFogWrite *fw, int s0, int m
         v4_linear_lanes8(l2.tx, 1 << l2.log2w, 1 << l2.log2h, s, t, rs, rt, 0, a2, b2, g2);
         v4_bilerp8_float(g, a, b, 0, T);
         v4_bilerp8_float(g2, a2, b2, 0, T2);
-        const __m256 f = _mm256_set_m128(_mm256_cvtpd_ps(_mm256_loadu_pd(frac + 4)), _mm256_cvtpd_ps(_mm256_loadu_pd(frac)));
+        const __m256 f = _mm256_set_m128(_mm256_cvtpd_ps(_mm256_loadu_pd(frac + 4)),
+                                         _mm256_cvtpd_ps(_mm256_loadu_pd(frac)));
         for (int i = 0; i < 4; i++)
             T[i] = _mm256_fmadd_ps(f, _mm256_sub_ps(T2[i], T[i]), T[i]);
     }
