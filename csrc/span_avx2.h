@@ -2962,6 +2962,24 @@ AVX2_INLINE __m256i avx2_low_dwords8(const int64_t *q)
 }
 #endif
 
+/* the level of detail's fractions frac[0..7] as float lanes, each rounded
+** once (the fixed build's 0.30 integers are below 2^30: their low dwords) */
+AVX2_INLINE __m256 avx2_frac_float8(const FRAGV *frac)
+{
+#if NUM_IS_FIXED
+    return _mm256_mul_ps(_mm256_cvtepi32_ps(avx2_low_dwords8(frac)), _mm256_set1_ps(0x1p-30f));
+#else
+    return _mm256_set_m128(_mm256_cvtpd_ps(_mm256_loadu_pd(frac + 4)), _mm256_cvtpd_ps(_mm256_loadu_pd(frac)));
+#endif
+}
+
+/* the two levels' texels T, T2 mixed into T by the fractions f: T + f (T2 - T) */
+AVX2_INLINE void avx2_mix_levels8(__m256 f, __m256 T[4], const __m256 T2[4])
+{
+    for (int i = 0; i < 4; i++)
+        T[i] = _mm256_fmadd_ps(f, _mm256_sub_ps(T2[i], T[i]), T[i]);
+}
+
 /* a level's texel words and log2 sizes, as the kernels read them */
 typedef struct Avx2Level {
     const int *tx;
@@ -3000,10 +3018,7 @@ AVX2_INLINE unsigned avx2_fog_write_texels8(const TexFogWrite *fw, int s0, int m
         avx2_linear_texels8(l2.tx, l2.log2w, l2.log2h, c, rs, rt, 0, g2, &a2, &b2);
         avx2_bilerp8_float(g, a, b, 0, T);
         avx2_bilerp8_float(g2, a2, b2, 0, T2);
-        /* the fractions' integers are below 2^30: their low dwords */
-        const __m256 f = _mm256_mul_ps(_mm256_cvtepi32_ps(avx2_low_dwords8(frac)), _mm256_set1_ps(0x1p-30f));
-        for (int i = 0; i < 4; i++)
-            T[i] = _mm256_fmadd_ps(f, _mm256_sub_ps(T2[i], T[i]), T[i]);
+        avx2_mix_levels8(avx2_frac_float8(frac), T, T2);
     }
 #else
     /* the coordinates once for both levels, both levels' words before
@@ -3023,10 +3038,7 @@ AVX2_INLINE unsigned avx2_fog_write_texels8(const TexFogWrite *fw, int s0, int m
         v4_linear_lanes8(l2.tx, 1 << l2.log2w, 1 << l2.log2h, s, t, rs, rt, 0, a2, b2, g2);
         v4_bilerp8_float(g, a, b, 0, T);
         v4_bilerp8_float(g2, a2, b2, 0, T2);
-        const __m256 f = _mm256_set_m128(_mm256_cvtpd_ps(_mm256_loadu_pd(frac + 4)),
-                                         _mm256_cvtpd_ps(_mm256_loadu_pd(frac)));
-        for (int i = 0; i < 4; i++)
-            T[i] = _mm256_fmadd_ps(f, _mm256_sub_ps(T2[i], T[i]), T[i]);
+        avx2_mix_levels8(avx2_frac_float8(frac), T, T2);
     }
 #endif
     __m256 w0, w1, w2, bad;

@@ -1424,13 +1424,13 @@ static inline void STAGE(fog_write1)(SpanBuf *b, int j, const NUM a[3], const FR
         *at = v4_rgba8(v4_load(b->c[j]), *at, 0);
     }
 }
-#endif
 
-#if CHAIN_SIMD && NUM_IS_FIXED
 /* stage_fog_write_rgba8's or (rgb565) stage_fog_write_565's pass over the
-** slots whose bit in done (NULL: none) is clear: eight lanes at a time
-** where AVX-512 runs (fx512_fog_write_rgba8, fx512_fog_write_565), four
-** (avx2_fog_write_rgba8x4, avx2_fog_write_565x4), then one by one */
+** slots whose bit in done (NULL: none) is clear: in the fixed build eight
+** lanes at a time where AVX-512 runs (fx512_fog_write_rgba8,
+** fx512_fog_write_565), four (avx2_fog_write_rgba8x4,
+** avx2_fog_write_565x4), then one by one; in the double build (the slots
+** its fused stage's float lanes left) one by one */
 static void STAGE(fog_write_rest)(GlesContext *ctx, SpanBuf *b, const NUM a[3], const FRAGV fc[3],
                                   const uint64_t *done, int rgb565)
 {
@@ -1439,6 +1439,7 @@ static void STAGE(fog_write_rest)(GlesContext *ctx, SpanBuf *b, const NUM a[3], 
     FRAGV t_row[4] = { 0 };
     if (rgb565)
         dither_row(b, dither, t_row);
+#if NUM_IS_FIXED
     int j = 0;
 #if SIMD_AVX512_FX
     if (!done && ctx_simd(ctx) >= SIMD_AVX512)
@@ -1463,6 +1464,14 @@ static void STAGE(fog_write_rest)(GlesContext *ctx, SpanBuf *b, const NUM a[3], 
             STAGE(fog_write1)(b, j, a, fc, dst, rgb565, dither, t_row);
         return;
     }
+#else
+    if (!done) {
+        for (int j = 0; j < n; j++)
+            STAGE(fog_write1)(b, j, a, fc, dst, rgb565, dither, t_row);
+        return;
+    }
+#define FOG_WRITE4(j) ((void)0)     /* (the double build's slots go one by one) */
+#endif
     /* the clear bits of each word of done: four in a row at once */
     for (int base = 0; base < n; base += 64) {
         uint64_t todo = ~done[base >> 6];
@@ -1470,7 +1479,7 @@ static void STAGE(fog_write_rest)(GlesContext *ctx, SpanBuf *b, const NUM a[3], 
             todo &= ((uint64_t)1 << (n - base)) - 1;
         while (todo) {
             const int i = __builtin_ctzll(todo);
-            if (((todo >> i) & 0xF) == 0xF) {
+            if (NUM_IS_FIXED && ((todo >> i) & 0xF) == 0xF) {
                 FOG_WRITE4(base + i);
                 todo &= ~((uint64_t)0xF << i);
             } else {
@@ -1481,7 +1490,9 @@ static void STAGE(fog_write_rest)(GlesContext *ctx, SpanBuf *b, const NUM a[3], 
     }
 #undef FOG_WRITE4
 }
+#endif
 
+#if CHAIN_SIMD && NUM_IS_FIXED
 /* stage_fog then stage_write_rgba8 (no blend, every channel written) in
 ** one pass where STAGE(fog_write_lanes) holds, the fogged colour going
 ** straight to the bytes (STAGE(fog_write_rest)); else the two stages */
@@ -1673,26 +1684,6 @@ static void STAGE(stage_fog_write_565)(GlesContext *ctx, const TriSetup *t, Span
 #endif
 
 #if CHAIN_SIMD && (NUM_IS_FIXED || defined(GLES_NUM_DOUBLE))
-#if !NUM_IS_FIXED
-/* the exact fog and write (STAGE(fog_write1)) of the slots whose bit in
-** done is clear: the double build's pass after its float lanes (the fixed
-** build's is STAGE(fog_write_rest)) */
-static void STAGE(fog_write_undone)(GlesContext *ctx, SpanBuf *b, const NUM a[3], const FRAGV fc[3],
-                                    const uint64_t *done, int rgb565)
-{
-    void *dst = chunk_color(ctx, b, rgb565);
-    FRAGV t_row[4] = { 0 };
-    if (rgb565)
-        dither_row(b, ctx->dither, t_row);
-    for (int base = 0; base < b->n; base += 64) {
-        uint64_t todo = ~done[base >> 6];
-        if (b->n - base < 64)
-            todo &= ((uint64_t)1 << (b->n - base)) - 1;
-        for (; todo; todo &= todo - 1)
-            STAGE(fog_write1)(b, base + __builtin_ctzll(todo), a, fc, dst, rgb565, ctx->dither, t_row);
-    }
-}
-#endif
 
 /* a lone REPLACE unit of an RGBA texture with a level of detail (its
 ** sampler lod_block's), the fog and the RGBA8888 or (rgb565) RGB565 write
@@ -1734,11 +1725,7 @@ static inline void STAGE(sample_fog_write)(GlesContext *ctx, const TriSetup *t, 
         }
         if (texture_span_fog_write(ctx->units[u].bound, b->n, b->tc, b->tx, b->ty, b->c[0], 4, ctx->texel_unorm8,
                                    &fw)) {
-#if NUM_IS_FIXED
             STAGE(fog_write_rest)(ctx, b, a, fc, done, rgb565);
-#else
-            STAGE(fog_write_undone)(ctx, b, a, fc, done, rgb565);
-#endif
             return;
         }
     }
